@@ -1,0 +1,269 @@
+//! Camera, bucket geometry and the histogram (flame.md §5.1, §5.2).
+
+use crate::flame::density::DeFilters;
+use crate::flame::filter::SpatialFilter;
+use crate::flame::model::{Affine, Flame, PaletteMode};
+
+/// One histogram bucket: R, G, B, A accumulated in "hits" (palette colour × visibility).
+/// A doubles as the hit count for density estimation (they are equal for opaque palettes).
+pub type Bucket = [f32; 4];
+
+/// Everything about the sizes of the buffers of one render.
+#[derive(Clone, Debug)]
+pub struct Geometry {
+    pub width: usize,
+    pub height: usize,
+    pub os: usize,
+    /// Total gutter g in buckets (filter gutter, grown for DE).
+    pub gutter: usize,
+    /// Extra offset δ of the filter window inside the gutter.
+    pub delta: usize,
+    /// Bucket grid size: os·W + 2g by os·H + 2g.
+    pub bw: usize,
+    pub bh: usize,
+    /// World → continuous bucket coordinates (rotation, translation and scale in one map).
+    pub bucket_from_world: Affine,
+    pub filter: SpatialFilter,
+    pub de: Option<DeFilters>,
+}
+
+impl Geometry {
+    /// Build the geometry of a flame. `de` is `None` when DE is disabled (radius 0).
+    pub fn new(flame: &Flame, de: Option<DeFilters>) -> Geometry {
+        let os = flame.supersample.max(1) as usize;
+        let (w, h) = (flame.width as usize, flame.height as usize);
+        let filter = SpatialFilter::new(flame.filter_shape, flame.filter, os as u32);
+        let mut gutter = filter.gutter;
+        let mut delta = 0;
+        if flame.estimator_radius > 0.0 {
+            let g_de = flame.estimator_radius.ceil() as usize * os + (os - 1);
+            if g_de > gutter {
+                delta = g_de - gutter;
+                gutter = g_de;
+            }
+        }
+        let bw = os * w + 2 * gutter;
+        let bh = os * h + 2 * gutter;
+        let ppu = flame.ppu();
+        let k = os as f64 * ppu;
+        let th = flame.rotate.to_radians();
+        let (s, c) = th.sin_cos();
+        let [cx, cy] = flame.center;
+        // bx = k·(cos θ·(x − cx) − sin θ·(y − cy)) + os·W/2 + g, by likewise.
+        let ox = (os * w) as f64 / 2.0 + gutter as f64;
+        let oy = (os * h) as f64 / 2.0 + gutter as f64;
+        let bucket_from_world = Affine {
+            a: k * c,
+            b: -k * s,
+            c: k * s,
+            d: k * c,
+            e: ox - k * (c * cx - s * cy),
+            f: oy - k * (s * cx + c * cy),
+        };
+        Geometry {
+            width: w,
+            height: h,
+            os,
+            gutter,
+            delta,
+            bw,
+            bh,
+            bucket_from_world,
+            filter,
+            de,
+        }
+    }
+
+    pub fn buckets(&self) -> usize {
+        self.bw * self.bh
+    }
+
+    /// World area of the image: W·H/ppu².
+    pub fn area(flame: &Flame) -> f64 {
+        let ppu = flame.ppu();
+        flame.width as f64 * flame.height as f64 / (ppu * ppu)
+    }
+
+    /// Bucket index of a world point, if it falls inside the bucket grid.
+    #[inline(always)]
+    pub fn bucket_of(&self, x: f64, y: f64) -> Option<usize> {
+        let (bx, by) = self.bucket_from_world.apply(x, y);
+        if bx >= 0.0 && by >= 0.0 && bx < self.bw as f64 && by < self.bh as f64 {
+            Some(by as usize * self.bw + bx as usize)
+        } else {
+            None
+        }
+    }
+}
+
+/// The palette prepared for plotting: RGB pre-multiplied by alpha, as f32.
+#[derive(Clone, Debug)]
+pub struct PlotPalette {
+    pub colors: Box<[[f32; 4]; 256]>,
+    pub mode: PaletteMode,
+}
+
+impl PlotPalette {
+    pub fn new(flame: &Flame) -> PlotPalette {
+        let mut colors = Box::new([[0f32; 4]; 256]);
+        for (i, c) in flame.palette.colors.iter().take(256).enumerate() {
+            let a = c[3].clamp(0.0, 1.0);
+            colors[i] = [
+                (c[0] * a) as f32,
+                (c[1] * a) as f32,
+                (c[2] * a) as f32,
+                a as f32,
+            ];
+        }
+        PlotPalette {
+            colors,
+            mode: flame.palette_mode,
+        }
+    }
+
+    /// Palette colour of colour coordinate `c` (flame.md §5.2).
+    #[inline(always)]
+    pub fn lookup(&self, c: f64) -> [f32; 4] {
+        match self.mode {
+            PaletteMode::Step => {
+                let k = (c * 256.0) as i64; // saturating cast; NaN → 0
+                self.colors[k.clamp(0, 255) as usize]
+            }
+            PaletteMode::Linear => {
+                let f = c * 256.0;
+                let mut k = f.floor();
+                let mut u = f - k;
+                if !(k >= 0.0) {
+                    k = 0.0;
+                    u = 0.0;
+                }
+                if k >= 255.0 {
+                    k = 254.0;
+                    u = 1.0;
+                }
+                let k = k as usize;
+                let (a, b) = (self.colors[k], self.colors[k + 1]);
+                let u = u as f32;
+                [
+                    a[0] + (b[0] - a[0]) * u,
+                    a[1] + (b[1] - a[1]) * u,
+                    a[2] + (b[2] - a[2]) * u,
+                    a[3] + (b[3] - a[3]) * u,
+                ]
+            }
+        }
+    }
+}
+
+/// A bucket grid of accumulators.
+#[derive(Clone, Debug)]
+pub struct Histogram {
+    pub bw: usize,
+    pub bh: usize,
+    pub data: Vec<Bucket>,
+}
+
+impl Histogram {
+    pub fn new(bw: usize, bh: usize) -> Histogram {
+        Histogram {
+            bw,
+            bh,
+            data: vec![[0.0; 4]; bw * bh],
+        }
+    }
+
+    /// Add another histogram of the same size.
+    pub fn add(&mut self, other: &Histogram) {
+        for (a, b) in self.data.iter_mut().zip(&other.data) {
+            for k in 0..4 {
+                a[k] += b[k];
+            }
+        }
+    }
+
+    pub fn clear(&mut self) {
+        self.data.fill([0.0; 4]);
+    }
+
+    /// Total hits (sum of A).
+    pub fn total(&self) -> f64 {
+        self.data.iter().map(|b| b[3] as f64).sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gradient::Gradient;
+
+    #[test]
+    fn camera_maps_center_to_image_centre_and_y_down() {
+        let f = Flame {
+            width: 100,
+            height: 50,
+            scale: 10.0,
+            center: [1.0, 2.0],
+            estimator_radius: 0.0,
+            ..Flame::default()
+        };
+        let g = Geometry::new(&f, None);
+        assert_eq!(g.gutter, 1);
+        let (bx, by) = g.bucket_from_world.apply(1.0, 2.0);
+        assert_eq!((bx, by), (51.0, 26.0));
+        // One world unit right is 10 buckets right; one unit down (+y) is 10 rows down.
+        let (bx, by) = g.bucket_from_world.apply(2.0, 3.0);
+        assert_eq!((bx, by), (61.0, 36.0));
+        // Top-left image corner (x0, y0) is bucket (g, g).
+        let (bx, by) = g.bucket_from_world.apply(1.0 - 5.0, 2.0 - 2.5);
+        assert!((bx - 1.0).abs() < 1e-12 && (by - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn positive_rotate_turns_clockwise_on_screen() {
+        let f = Flame {
+            width: 100,
+            height: 100,
+            scale: 10.0,
+            rotate: 90.0,
+            estimator_radius: 0.0,
+            ..Flame::default()
+        };
+        let g = Geometry::new(&f, None);
+        // A point to the right of the centre (+x) ends up below it on screen (+row).
+        let (bx, by) = g.bucket_from_world.apply(1.0, 0.0);
+        assert!((bx - 51.0).abs() < 1e-9 && (by - 61.0).abs() < 1e-9, "{bx} {by}");
+    }
+
+    #[test]
+    fn de_grows_the_gutter() {
+        let f = Flame {
+            width: 10,
+            height: 10,
+            estimator_radius: 9.0,
+            ..Flame::default()
+        };
+        let g = Geometry::new(&f, None);
+        assert_eq!(g.gutter, 9);
+        assert_eq!(g.delta, 8);
+        assert_eq!(g.bw, 28);
+    }
+
+    #[test]
+    fn palette_lookup_modes() {
+        let mut f = Flame {
+            palette: Gradient::grey_ramp(),
+            ..Flame::default()
+        };
+        let p = PlotPalette::new(&f);
+        assert_eq!(p.lookup(0.0)[0], 0.0);
+        assert_eq!(p.lookup(1.0)[0], 1.0);
+        assert_eq!(p.lookup(-3.0)[0], 0.0);
+        assert_eq!(p.lookup(0.5)[0], (128.0f64 / 255.0) as f32);
+        f.palette_mode = PaletteMode::Linear;
+        let p = PlotPalette::new(&f);
+        let v = p.lookup(0.5 + 0.5 / 256.0)[0];
+        let want = (128.5f64 / 255.0) as f32;
+        assert!((v - want).abs() < 1e-6);
+        assert_eq!(p.lookup(1.0)[0], 1.0);
+    }
+}

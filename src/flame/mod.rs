@@ -1,0 +1,19 @@
+//! Fractal flames and IFS: model, variations, chaos game, histogram, density estimation,
+//! tone mapping, automatic framing and the progressive renderer.
+
+pub mod chaos;
+pub mod density;
+pub mod fastmath;
+pub mod filter;
+pub mod framing;
+pub mod histogram;
+pub mod model;
+pub mod render;
+pub mod rng;
+pub mod symmetry;
+pub mod tonemap;
+pub mod variations;
+
+pub use model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
+pub use render::{RenderError, RenderOptions, Renderer, render};
+pub use tonemap::OutputFormat;

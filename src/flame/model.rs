@@ -1,0 +1,578 @@
+//! The flame / IFS data model (flame.md §2).
+
+use crate::flame::variations::{self, VarId};
+use crate::gradient::Gradient;
+
+/// An affine map in the Fractint/thesis letters: x' = a·x + b·y + e, y' = c·x + d·y + f.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Affine {
+    pub a: f64,
+    pub b: f64,
+    pub c: f64,
+    pub d: f64,
+    pub e: f64,
+    pub f: f64,
+}
+
+impl Default for Affine {
+    fn default() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl Affine {
+    pub const IDENTITY: Affine = Affine {
+        a: 1.0,
+        b: 0.0,
+        c: 0.0,
+        d: 1.0,
+        e: 0.0,
+        f: 0.0,
+    };
+
+    pub const fn new(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64) -> Self {
+        Self { a, b, c, d, e, f }
+    }
+
+    #[inline(always)]
+    pub fn apply(&self, x: f64, y: f64) -> (f64, f64) {
+        (
+            self.a * x + self.b * y + self.e,
+            self.c * x + self.d * y + self.f,
+        )
+    }
+
+    pub fn is_identity(&self) -> bool {
+        *self == Self::IDENTITY
+    }
+
+    /// Signed area ratio a·d − b·c.
+    pub fn det(&self) -> f64 {
+        self.a * self.d - self.b * self.c
+    }
+
+    /// flam3 `coefs` order: c00 c01 c10 c11 c20 c21 = a c b d e f (flame.md §1).
+    pub fn to_coefs(&self) -> [f64; 6] {
+        [self.a, self.c, self.b, self.d, self.e, self.f]
+    }
+
+    pub fn from_coefs(v: [f64; 6]) -> Self {
+        Self::new(v[0], v[2], v[1], v[3], v[4], v[5])
+    }
+
+    /// self ∘ other (apply `other` first).
+    pub fn compose(&self, other: &Affine) -> Affine {
+        Affine {
+            a: self.a * other.a + self.b * other.c,
+            b: self.a * other.b + self.b * other.d,
+            c: self.c * other.a + self.d * other.c,
+            d: self.c * other.b + self.d * other.d,
+            e: self.a * other.e + self.b * other.f + self.e,
+            f: self.c * other.e + self.d * other.f + self.f,
+        }
+    }
+
+    /// The editor triangle (O′, X′, Y′) of flame.md §1.1.
+    pub fn triangle(&self) -> [[f64; 2]; 3] {
+        [
+            [self.e, self.f],
+            [self.a + self.e, self.c + self.f],
+            [self.e - self.b, self.f - self.d],
+        ]
+    }
+
+    /// Coefficients from an editor triangle (O′, X′, Y′), flame.md §1.1.
+    pub fn from_triangle(t: [[f64; 2]; 3]) -> Self {
+        let [o, x, y] = t;
+        Affine {
+            a: x[0] - o[0],
+            c: x[1] - o[1],
+            b: o[0] - y[0],
+            d: o[1] - y[1],
+            e: o[0],
+            f: o[1],
+        }
+    }
+
+    /// Largest singular value of the linear part (contractivity).
+    pub fn max_singular_value(&self) -> f64 {
+        let (a, b, c, d) = (self.a, self.b, self.c, self.d);
+        let s1 = a * a + b * b + c * c + d * d;
+        let det = a * d - b * c;
+        let disc = (s1 * s1 - 4.0 * det * det).max(0.0).sqrt();
+        ((s1 + disc) / 2.0).sqrt()
+    }
+}
+
+/// One variation term of an xform: which variation, its weight and its parameters
+/// (in the order of [`variations::VariationInfo::params`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Var {
+    pub id: VarId,
+    pub weight: f64,
+    pub params: Vec<f64>,
+}
+
+impl Var {
+    /// A variation with its default parameters.
+    pub fn new(id: VarId, weight: f64) -> Self {
+        Self {
+            id,
+            weight,
+            params: variations::info(id).defaults(),
+        }
+    }
+
+    pub fn name(&self) -> &'static str {
+        variations::info(self.id).name
+    }
+
+    pub fn param(&self, name: &str) -> Option<f64> {
+        let info = variations::info(self.id);
+        info.params
+            .iter()
+            .position(|p| p.0 == name)
+            .map(|i| self.params[i])
+    }
+}
+
+/// One transform of the IFS (flame.md §2).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Xform {
+    pub weight: f64,
+    pub color: f64,
+    pub color_speed: f64,
+    pub opacity: f64,
+    pub coefs: Affine,
+    pub post: Affine,
+    /// Variation terms in file order; a variation appears at most once.
+    pub vars: Vec<Var>,
+    /// Xaos multipliers towards xforms 0, 1, …; missing entries are 1.
+    pub chaos: Vec<f64>,
+    /// Attributes this version of ugnis does not interpret, kept in file order for round trip
+    /// (this includes variations that are known to flam3 but not implemented here).
+    pub extra_attrs: Vec<(String, String)>,
+    /// Raw XML of child elements that are preserved verbatim (e.g. `<motion>`).
+    pub extra_children: Vec<String>,
+}
+
+impl Default for Xform {
+    fn default() -> Self {
+        Self {
+            weight: 0.5,
+            color: 0.0,
+            color_speed: 0.5,
+            opacity: 1.0,
+            coefs: Affine::IDENTITY,
+            post: Affine::IDENTITY,
+            vars: vec![Var::new(variations::LINEAR, 1.0)],
+            chaos: Vec::new(),
+            extra_attrs: Vec::new(),
+            extra_children: Vec::new(),
+        }
+    }
+}
+
+impl Xform {
+    /// A linear xform with the given affine map and weight.
+    pub fn linear(coefs: Affine, weight: f64, color: f64) -> Self {
+        Self {
+            weight,
+            color,
+            coefs,
+            ..Self::default()
+        }
+    }
+
+    pub fn var(&self, id: VarId) -> Option<&Var> {
+        self.vars.iter().find(|v| v.id == id)
+    }
+
+    pub fn var_weight(&self, id: VarId) -> f64 {
+        self.var(id).map_or(0.0, |v| v.weight)
+    }
+
+    /// Set a variation's weight (adding it with default parameters if absent; weight 0 removes it).
+    pub fn set_var(&mut self, id: VarId, weight: f64) {
+        if let Some(v) = self.vars.iter_mut().find(|v| v.id == id) {
+            v.weight = weight;
+        } else if weight != 0.0 {
+            self.vars.push(Var::new(id, weight));
+        }
+        self.vars.retain(|v| v.weight != 0.0);
+    }
+
+    /// Names and weights of variations kept for round trip but not rendered.
+    pub fn unsupported_vars(&self) -> Vec<(String, f64)> {
+        self.extra_attrs
+            .iter()
+            .filter(|(k, _)| variations::is_flam3_variation_name(k))
+            .map(|(k, v)| (k.clone(), v.trim().parse().unwrap_or(0.0)))
+            .collect()
+    }
+
+    /// Xaos multiplier towards xform `j`.
+    pub fn chaos_to(&self, j: usize) -> f64 {
+        self.chaos.get(j).copied().unwrap_or(1.0)
+    }
+}
+
+/// Spatial filter kernels (flame.md §5.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum FilterShape {
+    #[default]
+    Gaussian,
+    Hermite,
+    Box,
+    Triangle,
+    Bell,
+    Bspline,
+    Mitchell,
+    Blackman,
+    Catrom,
+    Hanning,
+    Hamming,
+    Lanczos3,
+    Lanczos2,
+    Quadratic,
+}
+
+impl FilterShape {
+    pub const ALL: [FilterShape; 14] = [
+        FilterShape::Gaussian,
+        FilterShape::Hermite,
+        FilterShape::Box,
+        FilterShape::Triangle,
+        FilterShape::Bell,
+        FilterShape::Bspline,
+        FilterShape::Mitchell,
+        FilterShape::Blackman,
+        FilterShape::Catrom,
+        FilterShape::Hanning,
+        FilterShape::Hamming,
+        FilterShape::Lanczos3,
+        FilterShape::Lanczos2,
+        FilterShape::Quadratic,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            FilterShape::Gaussian => "gaussian",
+            FilterShape::Hermite => "hermite",
+            FilterShape::Box => "box",
+            FilterShape::Triangle => "triangle",
+            FilterShape::Bell => "bell",
+            FilterShape::Bspline => "bspline",
+            FilterShape::Mitchell => "mitchell",
+            FilterShape::Blackman => "blackman",
+            FilterShape::Catrom => "catrom",
+            FilterShape::Hanning => "hanning",
+            FilterShape::Hamming => "hamming",
+            FilterShape::Lanczos3 => "lanczos3",
+            FilterShape::Lanczos2 => "lanczos2",
+            FilterShape::Quadratic => "quadratic",
+        }
+    }
+
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|f| f.name() == s)
+    }
+}
+
+/// How a colour coordinate indexes the palette (flame.md §5.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum PaletteMode {
+    #[default]
+    Step,
+    Linear,
+}
+
+impl PaletteMode {
+    pub fn name(self) -> &'static str {
+        match self {
+            PaletteMode::Step => "step",
+            PaletteMode::Linear => "linear",
+        }
+    }
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "step" => Some(PaletteMode::Step),
+            "linear" => Some(PaletteMode::Linear),
+            _ => None,
+        }
+    }
+}
+
+/// What a flame was made from (`ugnis_kind`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum FlameKind {
+    #[default]
+    Flame,
+    /// Created from (and exportable to) a Fractint `.ifs` entry.
+    Ifs,
+}
+
+impl FlameKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            FlameKind::Flame => "flame",
+            FlameKind::Ifs => "ifs",
+        }
+    }
+}
+
+/// A fractal flame: camera, render settings, palette and transforms (flame.md §2).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Flame {
+    pub name: String,
+    pub width: u32,
+    pub height: u32,
+    pub center: [f64; 2],
+    /// Pixels per world unit at zoom 0.
+    pub scale: f64,
+    pub zoom: f64,
+    /// Degrees; positive turns the picture clockwise on screen.
+    pub rotate: f64,
+    pub quality: f64,
+    pub supersample: u32,
+    pub filter: f64,
+    pub filter_shape: FilterShape,
+    pub estimator_radius: f64,
+    pub estimator_minimum: f64,
+    pub estimator_curve: f64,
+    pub brightness: f64,
+    pub contrast: f64,
+    pub gamma: f64,
+    pub gamma_threshold: f64,
+    pub vibrancy: f64,
+    pub highlight_power: f64,
+    pub background: [f64; 3],
+    pub palette_mode: PaletteMode,
+    pub palette: Gradient,
+    pub xforms: Vec<Xform>,
+    pub final_xform: Option<Xform>,
+    /// Render only this xform (flam3 `soloxform`); others get opacity 0.
+    pub solo_xform: Option<usize>,
+    /// False when the flame came without a camera (e.g. from an IFS file) and must be framed
+    /// automatically before rendering.
+    pub has_camera: bool,
+    /// Generator seed (`ugnis_seed`).
+    pub seed: Option<u64>,
+    pub kind: FlameKind,
+    /// Determinant-rule weights after triangle edits (`ugnis_auto_weights`); `None`: the
+    /// Options value.
+    pub auto_weights: Option<bool>,
+    /// Unknown flame attributes, kept in file order for round trip.
+    pub extra_attrs: Vec<(String, String)>,
+    /// Child elements preserved verbatim (e.g. `<edit>`).
+    pub extra_children: Vec<String>,
+}
+
+impl Default for Flame {
+    fn default() -> Self {
+        Self {
+            name: String::new(),
+            width: 640,
+            height: 480,
+            center: [0.0, 0.0],
+            scale: 100.0,
+            zoom: 0.0,
+            rotate: 0.0,
+            quality: 15.0,
+            supersample: 1,
+            filter: 0.5,
+            filter_shape: FilterShape::Gaussian,
+            estimator_radius: 9.0,
+            estimator_minimum: 0.0,
+            estimator_curve: 0.4,
+            brightness: 4.0,
+            contrast: 1.0,
+            gamma: 2.0,
+            gamma_threshold: 0.01,
+            vibrancy: 1.0,
+            highlight_power: -1.0,
+            background: [0.0, 0.0, 0.0],
+            palette_mode: PaletteMode::Step,
+            palette: Gradient::default(),
+            xforms: Vec::new(),
+            final_xform: None,
+            solo_xform: None,
+            has_camera: true,
+            seed: None,
+            kind: FlameKind::Flame,
+            auto_weights: None,
+            extra_attrs: Vec::new(),
+            extra_children: Vec::new(),
+        }
+    }
+}
+
+impl Flame {
+    /// Pixels per world unit: scale·2^zoom.
+    pub fn ppu(&self) -> f64 {
+        self.scale * self.zoom.exp2()
+    }
+
+    /// Total chaos-game samples: quality·4^zoom·W·H (flame.md §5.1).
+    pub fn total_samples(&self) -> u64 {
+        let n = self.quality * (4f64).powf(self.zoom) * self.width as f64 * self.height as f64;
+        if n.is_finite() && n > 0.0 {
+            n.ceil() as u64
+        } else {
+            0
+        }
+    }
+
+    /// Names of every variation that has nonzero weight somewhere (supported or not).
+    pub fn variations_used(&self) -> Vec<String> {
+        let mut out: Vec<String> = Vec::new();
+        for x in self.xforms.iter().chain(self.final_xform.iter()) {
+            for v in &x.vars {
+                if !out.iter().any(|n| n == v.name()) {
+                    out.push(v.name().to_string());
+                }
+            }
+            for (n, _) in x.unsupported_vars() {
+                if !out.contains(&n) {
+                    out.push(n);
+                }
+            }
+        }
+        out
+    }
+
+    /// Warnings for variations that are kept but not rendered:
+    /// "variation 'x' (weight w) not supported; ignored", once per name.
+    pub fn unsupported_variation_warnings(&self) -> Vec<String> {
+        let mut seen: Vec<String> = Vec::new();
+        let mut out = Vec::new();
+        for x in self.xforms.iter().chain(self.final_xform.iter()) {
+            for (n, w) in x.unsupported_vars() {
+                if w != 0.0 && !seen.contains(&n) {
+                    out.push(format!("variation '{n}' (weight {w}) not supported; ignored"));
+                    seen.push(n);
+                }
+            }
+        }
+        out
+    }
+
+    /// Resize the image keeping the framing: pixels per unit scale with the width (flam3 `ss`).
+    pub fn resize_keep_framing(&mut self, width: u32, height: u32) {
+        if self.width > 0 {
+            self.scale *= width as f64 / self.width as f64;
+        }
+        self.width = width;
+        self.height = height;
+    }
+
+    /// Determinant-rule weights (flame.md §2.1) for the given maps.
+    pub fn determinant_weights(maps: &[Affine]) -> Vec<f64> {
+        let n = maps.len();
+        if n == 0 {
+            return Vec::new();
+        }
+        let dets: Vec<f64> = maps.iter().map(|m| m.det().abs()).collect();
+        let s: f64 = dets.iter().sum();
+        if s == 0.0 || !s.is_finite() {
+            return vec![1.0 / n as f64; n];
+        }
+        let p: Vec<f64> = dets.iter().map(|d| (d / s).max(0.001)).collect();
+        let t: f64 = p.iter().sum();
+        p.iter().map(|v| v / t).collect()
+    }
+
+    /// Set every standard xform's weight by the determinant rule.
+    pub fn set_determinant_weights(&mut self) {
+        let maps: Vec<Affine> = self.xforms.iter().map(|x| x.coefs).collect();
+        for (x, w) in self.xforms.iter_mut().zip(Self::determinant_weights(&maps)) {
+            x.weight = w;
+        }
+    }
+
+    /// w_i = 1/n.
+    pub fn set_equal_weights(&mut self) {
+        let n = self.xforms.len().max(1) as f64;
+        for x in &mut self.xforms {
+            x.weight = 1.0 / n;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coefs_order_is_a_c_b_d_e_f() {
+        let m = Affine::new(0.85, 0.04, -0.04, 0.85, 0.0, 1.6);
+        assert_eq!(m.to_coefs(), [0.85, -0.04, 0.04, 0.85, 0.0, 1.6]);
+        assert_eq!(Affine::from_coefs(m.to_coefs()), m);
+    }
+
+    #[test]
+    fn triangle_round_trip() {
+        let m = Affine::new(0.3, -0.7, 0.2, 0.9, 0.5, -0.25);
+        let t = m.triangle();
+        let want = [[0.5, -0.25], [0.8, -0.05], [1.2, -1.15]];
+        for (p, q) in t.iter().zip(want) {
+            assert!((p[0] - q[0]).abs() < 1e-12 && (p[1] - q[1]).abs() < 1e-12, "{t:?}");
+        }
+        let back = Affine::from_triangle(t);
+        for (p, q) in [back.a, back.b, back.c, back.d, back.e, back.f]
+            .iter()
+            .zip([m.a, m.b, m.c, m.d, m.e, m.f])
+        {
+            assert!((p - q).abs() < 1e-15);
+        }
+        // Reference triangle is the identity.
+        assert_eq!(
+            Affine::from_triangle([[0.0, 0.0], [1.0, 0.0], [0.0, -1.0]]),
+            Affine::IDENTITY
+        );
+    }
+
+    #[test]
+    fn determinant_rule_oracles() {
+        // Thesis example (a).
+        let a = [
+            Affine::new(0.48, 0.01, -0.01, 0.47, 0.80, -0.34),
+            Affine::new(0.47, 0.01, -0.01, 0.47, -1.01, -0.28),
+            Affine::new(-0.28, 0.38, -0.96, -0.19, 0.03, -0.06),
+        ];
+        let w = Flame::determinant_weights(&a);
+        for (p, q) in w.iter().zip([0.261015, 0.255580, 0.483405]) {
+            assert!((p - q).abs() < 1e-6, "{w:?}");
+        }
+        let b = [
+            Affine::new(-0.46, -0.50, 0.58, -0.58, 0.46, -0.24),
+            Affine::new(0.52, -0.45, 0.45, 0.32, -0.85, 0.43),
+        ];
+        let w = Flame::determinant_weights(&b);
+        for (p, q) in w.iter().zip([0.601491, 0.398509]) {
+            assert!((p - q).abs() < 1e-6, "{w:?}");
+        }
+        let fern = [
+            Affine::new(0.0, 0.0, 0.0, 0.16, 0.0, 0.0),
+            Affine::new(0.85, 0.04, -0.04, 0.85, 0.0, 1.6),
+            Affine::new(0.2, -0.26, 0.23, 0.22, 0.0, 1.6),
+            Affine::new(-0.15, 0.28, 0.26, 0.24, 0.0, 0.44),
+        ];
+        let w = Flame::determinant_weights(&fern);
+        for (p, q) in w.iter().zip([0.000999, 0.772261, 0.110704, 0.116036]) {
+            assert!((p - q).abs() < 1e-6, "{w:?}");
+        }
+        assert_eq!(Flame::determinant_weights(&[Affine::new(0.0, 0.0, 0.0, 0.0, 1.0, 1.0); 4]), vec![0.25; 4]);
+    }
+
+    #[test]
+    fn compose_applies_right_first() {
+        let p = Affine::new(1.0, 2.0, 3.0, 4.0, 5.0, 6.0);
+        let q = Affine::new(0.5, -1.0, 0.25, 2.0, -3.0, 1.0);
+        let (x, y) = (0.7, -1.3);
+        let (qx, qy) = q.apply(x, y);
+        let direct = p.apply(qx, qy);
+        let comp = p.compose(&q).apply(x, y);
+        assert!((direct.0 - comp.0).abs() < 1e-12 && (direct.1 - comp.1).abs() < 1e-12);
+    }
+}

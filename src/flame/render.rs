@@ -1,0 +1,544 @@
+//! The progressive renderer: chaos game into per-thread histograms, then density estimation,
+//! spatial filter and tone mapping (flame.md §3, §5, §6).
+//!
+//! ```text
+//! let mut r = Renderer::new(&flame, &RenderOptions::default())?;
+//! while !r.is_done() {
+//!     r.run(r.total_samples() / 10, &cancel);   // one pass
+//!     show(r.preview());                        // correctly exposed mid-render
+//! }
+//! let image = r.finish();
+//! ```
+//!
+//! Determinism: the samples are cut into sub-batches of 10 000; sub-batch j is iterated with
+//! a generator seeded from (seed, j) by thread j mod T into that thread's histogram. The image
+//! therefore depends only on the flame, the seed and the thread count — not on timing or on how
+//! the work was split into passes.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use image::DynamicImage;
+use rayon::prelude::*;
+
+use crate::flame::chaos::{Chaos, ChaosError, SUB_BATCH, Scratch};
+use crate::flame::density::{DeError, DeFilters};
+use crate::flame::framing;
+use crate::flame::histogram::{Bucket, Geometry, Histogram, PlotPalette};
+use crate::flame::model::Flame;
+use crate::flame::rng::FastRng;
+use crate::flame::tonemap::{LogScale, OutputFormat, ToneMap};
+
+/// Options of one render.
+#[derive(Clone, Debug)]
+pub struct RenderOptions {
+    pub seed: u64,
+    /// Worker threads; 0 means all cores.
+    pub threads: usize,
+    /// Refuse renders whose buffers would exceed this many bytes; `None`: the memory the
+    /// system reports as available.
+    pub memory_limit: Option<u64>,
+    pub format: OutputFormat,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            threads: 0,
+            memory_limit: None,
+            format: OutputFormat::default(),
+        }
+    }
+}
+
+/// Why a render cannot run.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RenderError {
+    #[error(transparent)]
+    Chaos(#[from] ChaosError),
+    #[error(transparent)]
+    De(#[from] DeError),
+    #[error("invalid render settings: {0}")]
+    Settings(String),
+    #[error(
+        "a {width}×{height} render at supersample {os} with {threads} thread(s) needs about {need_mib} MiB \
+         ({hist_mib} MiB per histogram), but only {limit_mib} MiB are available; \
+         reduce the size, the supersample or the thread count"
+    )]
+    OutOfMemory {
+        width: u32,
+        height: u32,
+        os: u32,
+        threads: usize,
+        need_mib: u64,
+        hist_mib: u64,
+        limit_mib: u64,
+    },
+}
+
+/// Memory the render buffers will need, in bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MemoryEstimate {
+    pub histogram: u64,
+    pub total: u64,
+}
+
+/// Estimate the buffer sizes of a render before allocating anything.
+pub fn estimate_memory(flame: &Flame, threads: usize, format: OutputFormat) -> MemoryEstimate {
+    let os = flame.supersample.max(1) as u64;
+    let g = {
+        let f = crate::flame::filter::SpatialFilter::new(flame.filter_shape, flame.filter, os as u32);
+        let de = if flame.estimator_radius > 0.0 {
+            flame.estimator_radius.ceil() as u64 * os + (os - 1)
+        } else {
+            0
+        };
+        (f.gutter as u64).max(de)
+    };
+    let bw = os * flame.width as u64 + 2 * g;
+    let bh = os * flame.height as u64 + 2 * g;
+    let hist = bw * bh * std::mem::size_of::<Bucket>() as u64;
+    let px = flame.width as u64 * flame.height as u64;
+    let out_px = if format.bits16 { 8 } else { 4 };
+    // Per-thread histograms + the DE/filter accumulator + the output image.
+    let total = hist * threads as u64 + hist + px * out_px;
+    MemoryEstimate {
+        histogram: hist,
+        total,
+    }
+}
+
+/// Memory available to this process (Linux `MemAvailable`), if known.
+pub fn available_memory() -> Option<u64> {
+    let s = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = s.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
+}
+
+fn resolve_threads(t: usize) -> usize {
+    if t == 0 {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    } else {
+        t
+    }
+}
+
+/// Validate the settings that the renderer divides by.
+pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
+    let bad = |m: String| Err(RenderError::Settings(m));
+    if flame.width == 0 || flame.height == 0 {
+        return bad(format!("image size {}×{} must be at least 1×1", flame.width, flame.height));
+    }
+    if !(flame.scale > 0.0 && flame.scale.is_finite()) {
+        return bad(format!("scale {} must be positive", flame.scale));
+    }
+    if !(flame.quality > 0.0 && flame.quality.is_finite()) {
+        return bad(format!("quality {} must be positive", flame.quality));
+    }
+    if !(flame.gamma > 0.0) {
+        return bad(format!("gamma {} must be positive", flame.gamma));
+    }
+    if !(flame.contrast > 0.0) {
+        return bad(format!("contrast {} must be positive", flame.contrast));
+    }
+    if !(flame.brightness > 0.0) {
+        return bad(format!("brightness {} must be positive", flame.brightness));
+    }
+    if flame.supersample == 0 || flame.supersample > 16 {
+        return bad(format!("supersample {} must be in 1..16", flame.supersample));
+    }
+    if !(flame.filter >= 0.0 && flame.filter <= 100.0) {
+        return bad(format!("filter radius {} must be in 0..100", flame.filter));
+    }
+    if !flame.zoom.is_finite() || flame.zoom.abs() > 50.0 {
+        return bad(format!("zoom {} is out of range", flame.zoom));
+    }
+    Ok(())
+}
+
+/// A render in progress.
+pub struct Renderer {
+    flame: Flame,
+    chaos: Chaos,
+    geom: Geometry,
+    palette: PlotPalette,
+    hists: Vec<Histogram>,
+    seed: u64,
+    format: OutputFormat,
+    total: u64,
+    batches_total: u64,
+    next_batch: u64,
+    samples_done: u64,
+    badvals: u64,
+    cancelled: bool,
+}
+
+impl Renderer {
+    /// Prepare a render: validates the flame, frames it automatically when it has no camera,
+    /// estimates memory and allocates the histograms.
+    pub fn new(flame: &Flame, opts: &RenderOptions) -> Result<Renderer, RenderError> {
+        let mut flame = flame.clone();
+        validate_settings(&flame)?;
+        let chaos = Chaos::new(&flame)?;
+        if !flame.has_camera {
+            framing::apply_auto_frame(&mut flame);
+        }
+        let threads = resolve_threads(opts.threads);
+        let est = estimate_memory(&flame, threads, opts.format);
+        let limit = opts
+            .memory_limit
+            .or_else(available_memory)
+            .unwrap_or(8 << 30);
+        if est.total > limit {
+            return Err(RenderError::OutOfMemory {
+                width: flame.width,
+                height: flame.height,
+                os: flame.supersample,
+                threads,
+                need_mib: est.total >> 20,
+                hist_mib: est.histogram >> 20,
+                limit_mib: limit >> 20,
+            });
+        }
+        let de = DeFilters::new(
+            flame.estimator_radius,
+            flame.estimator_minimum,
+            flame.estimator_curve,
+            flame.supersample.max(1),
+        )?;
+        let geom = Geometry::new(&flame, de);
+        if geom.buckets() > u32::MAX as usize {
+            return Err(RenderError::Settings(format!(
+                "a {}×{} render at supersample {} has too many histogram buckets",
+                flame.width, flame.height, flame.supersample
+            )));
+        }
+        let hists = (0..threads)
+            .map(|_| Histogram::new(geom.bw, geom.bh))
+            .collect();
+        let total = flame.total_samples().max(1);
+        Ok(Renderer {
+            palette: PlotPalette::new(&flame),
+            chaos,
+            geom,
+            hists,
+            seed: opts.seed,
+            format: opts.format,
+            total,
+            batches_total: total.div_ceil(SUB_BATCH),
+            next_batch: 0,
+            samples_done: 0,
+            badvals: 0,
+            cancelled: false,
+            flame,
+        })
+    }
+
+    /// The flame as rendered (with its automatic framing applied).
+    pub fn flame(&self) -> &Flame {
+        &self.flame
+    }
+
+    pub fn total_samples(&self) -> u64 {
+        self.total
+    }
+
+    pub fn samples_done(&self) -> u64 {
+        self.samples_done
+    }
+
+    pub fn bad_values(&self) -> u64 {
+        self.badvals
+    }
+
+    pub fn threads(&self) -> usize {
+        self.hists.len()
+    }
+
+    /// Fraction of the samples done, in [0, 1].
+    pub fn fraction(&self) -> f64 {
+        self.samples_done as f64 / self.total as f64
+    }
+
+    pub fn is_done(&self) -> bool {
+        self.cancelled || self.next_batch >= self.batches_total
+    }
+
+    pub fn is_cancelled(&self) -> bool {
+        self.cancelled
+    }
+
+    /// Run one pass of about `samples` more samples (whole sub-batches, at least one) on all
+    /// threads. Returns false if `cancel` was set (checked between sub-batches, i.e. within
+    /// about a millisecond); a cancelled render is finished and cannot continue.
+    pub fn run(&mut self, samples: u64, cancel: &AtomicBool) -> bool {
+        if self.is_done() {
+            return !self.cancelled;
+        }
+        let n_batches = samples.div_ceil(SUB_BATCH).max(1);
+        let start = self.next_batch;
+        let end = (start + n_batches).min(self.batches_total);
+        let threads = self.hists.len() as u64;
+        let (chaos, geom, pal) = (&self.chaos, &self.geom, &self.palette);
+        let (seed, total) = (self.seed, self.total);
+        let results: Vec<(u64, u64, bool)> = std::thread::scope(|s| {
+            let handles: Vec<_> = self
+                .hists
+                .iter_mut()
+                .enumerate()
+                .map(|(t, hist)| {
+                    s.spawn(move || {
+                        let mut done = 0u64;
+                        let mut bad = 0u64;
+                        // First batch index ≥ start that belongs to thread t.
+                        let first = start + (t as u64 + threads - start % threads) % threads;
+                        let mut j = first;
+                        let mut buf = Vec::with_capacity(SUB_BATCH as usize);
+                        let mut scratch = Scratch::new();
+                        while j < end {
+                            if cancel.load(Ordering::Relaxed) {
+                                return (done, bad, true);
+                            }
+                            let n = SUB_BATCH.min(total - j * SUB_BATCH);
+                            let mut rng = FastRng::for_stream(seed, j);
+                            bad += iterate_into(chaos, geom, pal, hist, &mut buf, &mut scratch, n, &mut rng);
+                            done += n;
+                            j += threads;
+                        }
+                        (done, bad, false)
+                    })
+                })
+                .collect();
+            handles.into_iter().map(|h| h.join().expect("render worker panicked")).collect()
+        });
+        for (done, bad, cancelled) in results {
+            self.samples_done += done;
+            self.badvals += bad;
+            self.cancelled |= cancelled;
+        }
+        self.next_batch = end;
+        !self.cancelled
+    }
+
+    /// Run to the end, calling `progress(fraction)` after every pass of about 1/`passes` of
+    /// the work. Returns false if cancelled.
+    pub fn run_all(&mut self, passes: u64, cancel: &AtomicBool, mut progress: impl FnMut(f64)) -> bool {
+        let step = self.total.div_ceil(passes.max(1));
+        while !self.is_done() {
+            if !self.run(step, cancel) {
+                return false;
+            }
+            progress(self.fraction());
+        }
+        true
+    }
+
+    /// Density used by the log scaling: the flame's quality·4^zoom when done, otherwise the
+    /// samples actually done per pixel (so that previews are correctly exposed).
+    fn density(&self) -> f64 {
+        if self.next_batch >= self.batches_total && !self.cancelled {
+            return self.flame.quality * 4f64.powf(self.flame.zoom);
+        }
+        let px = self.flame.width as f64 * self.flame.height as f64;
+        (self.samples_done.max(1) as f64) / px
+    }
+
+    fn merged(&self) -> Histogram {
+        let mut m = self.hists[0].clone();
+        for h in &self.hists[1..] {
+            m.add(h);
+        }
+        m
+    }
+
+    /// The image as it stands (any time during the render).
+    pub fn preview(&self) -> DynamicImage {
+        let m = self.merged();
+        develop(&self.flame, &self.geom, &m, self.density(), self.format)
+    }
+
+    /// Re-develop the current histogram with other tone settings (brightness, gamma,
+    /// vibrancy, background…) taken from `tone`, without iterating again.
+    pub fn develop_with(&self, tone: &Flame) -> DynamicImage {
+        let m = self.merged();
+        let mut f = self.flame.clone();
+        f.brightness = tone.brightness;
+        f.contrast = tone.contrast;
+        f.gamma = tone.gamma;
+        f.gamma_threshold = tone.gamma_threshold;
+        f.vibrancy = tone.vibrancy;
+        f.highlight_power = tone.highlight_power;
+        f.background = tone.background;
+        develop(&f, &self.geom, &m, self.density(), self.format)
+    }
+
+    /// Finish: merge the thread histograms in place (freeing them) and develop the image.
+    pub fn finish(mut self) -> DynamicImage {
+        let density = self.density();
+        let mut hists = std::mem::take(&mut self.hists);
+        let mut first = hists.swap_remove(0);
+        for h in hists.drain(..) {
+            first.add(&h);
+        }
+        develop(&self.flame, &self.geom, &first, density, self.format)
+    }
+}
+
+/// Iterate one sub-batch into a histogram. The plotted points are first collected in `buf`
+/// and then added in a tight loop, so the cache misses of the scattered adds overlap.
+#[inline(never)]
+fn iterate_into(
+    chaos: &Chaos,
+    geom: &Geometry,
+    pal: &PlotPalette,
+    hist: &mut Histogram,
+    buf: &mut Vec<(u32, [f32; 4])>,
+    scratch: &mut Scratch,
+    n: u64,
+    rng: &mut FastRng,
+) -> u64 {
+    buf.clear();
+    let bad = chaos.run_lanes(n, rng, scratch, |x, y, c, vis| {
+        if vis <= 0.0 {
+            return;
+        }
+        if let Some(idx) = geom.bucket_of(x, y) {
+            let p = pal.lookup(c);
+            let v = vis as f32;
+            buf.push((idx as u32, [p[0] * v, p[1] * v, p[2] * v, p[3] * v]));
+        }
+    });
+    let data = &mut hist.data;
+    for &(idx, p) in buf.iter() {
+        let b = &mut data[idx as usize];
+        b[0] += p[0];
+        b[1] += p[1];
+        b[2] += p[2];
+        b[3] += p[3];
+    }
+    bad
+}
+
+/// Turn a histogram into an image: log scaling (with density estimation when enabled),
+/// spatial filter with downsampling, tone mapping.
+pub fn develop(flame: &Flame, geom: &Geometry, hist: &Histogram, density: f64, format: OutputFormat) -> DynamicImage {
+    let ls = LogScale::new(flame, density);
+    let mut acc: Vec<Bucket> = Vec::new();
+    let acc: &[Bucket] = match &geom.de {
+        Some(de) => {
+            acc.resize(geom.buckets(), [0.0; 4]);
+            de.splat(hist, &mut acc, |a| ls.factor(a as f64) as f32);
+            &acc
+        }
+        None => {
+            acc = hist
+                .data
+                .par_iter()
+                .map(|b| {
+                    let s = ls.factor(b[3] as f64) as f32;
+                    [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
+                })
+                .collect();
+            &acc
+        }
+    };
+    filter_and_tonemap(flame, geom, acc, format)
+}
+
+/// Spatial filter (separable, downsampling by os) and tone mapping into the output image.
+fn filter_and_tonemap(flame: &Flame, geom: &Geometry, acc: &[Bucket], format: OutputFormat) -> DynamicImage {
+    let (w, h, os) = (geom.width, geom.height, geom.os);
+    let taps = &geom.filter.taps;
+    let fw = geom.filter.width;
+    let delta = geom.delta;
+    let bw = geom.bw;
+    let tm = ToneMap::new(flame, format.transparent);
+    let channels = if format.transparent { 4 } else { 3 };
+    const BAND: usize = 16;
+    let row_len = w * channels;
+    // Output values 0..=255 (f64), per band of rows, then encoded.
+    let encode = |y0: usize, out8: Option<&mut [u8]>, out16: Option<&mut [u16]>| {
+        let rows = BAND.min(h - y0);
+        // Horizontally filtered acc rows needed by this band.
+        let r0 = y0 * os + delta;
+        let nr = (rows - 1) * os + fw;
+        let mut tmp = vec![[0f64; 4]; nr * w];
+        for r in 0..nr {
+            let src = &acc[(r0 + r) * bw..(r0 + r + 1) * bw];
+            for x in 0..w {
+                let mut s = [0f64; 4];
+                let base = x * os + delta;
+                for (i, &t) in taps.iter().enumerate() {
+                    let b = src[base + i];
+                    s[0] += t * b[0] as f64;
+                    s[1] += t * b[1] as f64;
+                    s[2] += t * b[2] as f64;
+                    s[3] += t * b[3] as f64;
+                }
+                tmp[r * w + x] = s;
+            }
+        }
+        let (mut o8, mut o16) = (out8, out16);
+        for yy in 0..rows {
+            for x in 0..w {
+                let mut s = [0f64; 4];
+                for (j, &t) in taps.iter().enumerate() {
+                    let b = tmp[(yy * os + j) * w + x];
+                    s[0] += t * b[0];
+                    s[1] += t * b[1];
+                    s[2] += t * b[2];
+                    s[3] += t * b[3];
+                }
+                let (rgb, alpha) = tm.pixel(s);
+                let o = yy * row_len + x * channels;
+                if let Some(buf) = o8.as_deref_mut() {
+                    buf[o] = rgb[0] as u8;
+                    buf[o + 1] = rgb[1] as u8;
+                    buf[o + 2] = rgb[2] as u8;
+                    if channels == 4 {
+                        buf[o + 3] = (255.0 * alpha) as u8;
+                    }
+                }
+                if let Some(buf) = o16.as_deref_mut() {
+                    buf[o] = (256.0 * rgb[0]) as u16;
+                    buf[o + 1] = (256.0 * rgb[1]) as u16;
+                    buf[o + 2] = (256.0 * rgb[2]) as u16;
+                    if channels == 4 {
+                        buf[o + 3] = (65535.0 * alpha) as u16;
+                    }
+                }
+            }
+        }
+    };
+    let (wu, hu) = (w as u32, h as u32);
+    if format.bits16 {
+        let mut buf = vec![0u16; row_len * h];
+        buf.par_chunks_mut(row_len * BAND)
+            .enumerate()
+            .for_each(|(b, chunk)| encode(b * BAND, None, Some(chunk)));
+        if channels == 4 {
+            DynamicImage::ImageRgba16(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+        } else {
+            DynamicImage::ImageRgb16(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+        }
+    } else {
+        let mut buf = vec![0u8; row_len * h];
+        buf.par_chunks_mut(row_len * BAND)
+            .enumerate()
+            .for_each(|(b, chunk)| encode(b * BAND, Some(chunk), None));
+        if channels == 4 {
+            DynamicImage::ImageRgba8(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+        } else {
+            DynamicImage::ImageRgb8(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+        }
+    }
+}
+
+/// Render a flame to the end in one call.
+pub fn render(flame: &Flame, opts: &RenderOptions) -> Result<DynamicImage, RenderError> {
+    let mut r = Renderer::new(flame, opts)?;
+    let never = AtomicBool::new(false);
+    r.run_all(1, &never, |_| {});
+    Ok(r.finish())
+}

@@ -1,0 +1,233 @@
+//! Log-density scaling (flame.md §5.3) and tone mapping (§6).
+
+use crate::flame::model::Flame;
+use crate::gradient::{hsv_to_rgb, rgb_to_hsv};
+
+/// ls(A) = k1·ln(1 + A·k2)/A, with A in hits (flam3's A/255).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LogScale {
+    pub k1: f64,
+    pub k2: f64,
+}
+
+impl LogScale {
+    /// `density` is quality·4^zoom for a finished render, or samples done / (W·H) for a preview.
+    pub fn new(flame: &Flame, density: f64) -> LogScale {
+        let os = flame.supersample.max(1) as f64;
+        let contrast = flame.contrast;
+        let ppu = flame.ppu();
+        let area = flame.width as f64 * flame.height as f64 / (ppu * ppu);
+        LogScale {
+            k1: contrast * flame.brightness * 255.0 * 268.0 / 256.0,
+            k2: os * os / (contrast * area * density),
+        }
+    }
+
+    #[inline(always)]
+    pub fn factor(&self, a: f64) -> f64 {
+        if a > 0.0 {
+            self.k1 * (a * self.k2).ln_1p() / a
+        } else {
+            0.0
+        }
+    }
+}
+
+/// Output encoding of the tone-mapped image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct OutputFormat {
+    /// 8 or 16 bits per channel.
+    pub bits16: bool,
+    /// Alpha channel from density instead of blending over the background.
+    pub transparent: bool,
+}
+
+/// Per-pixel tone mapping constants.
+#[derive(Clone, Copy, Debug)]
+pub struct ToneMap {
+    pub g: f64,
+    pub threshold: f64,
+    pub vibrancy: f64,
+    pub highlight_power: f64,
+    pub background: [f64; 3],
+    pub transparent: bool,
+    /// t^g / t, precomputed for the threshold blend.
+    thresh_factor: f64,
+}
+
+impl ToneMap {
+    pub fn new(flame: &Flame, transparent: bool) -> ToneMap {
+        let g = 1.0 / flame.gamma;
+        let t = flame.gamma_threshold;
+        ToneMap {
+            g,
+            threshold: t,
+            vibrancy: flame.vibrancy,
+            highlight_power: flame.highlight_power,
+            background: flame.background,
+            transparent,
+            thresh_factor: if t > 0.0 { t.powf(g) / t } else { 0.0 },
+        }
+    }
+
+    /// alpha = a^g above the threshold, a linear blend below (flame.md §6).
+    #[inline(always)]
+    pub fn gamma_alpha(&self, a: f64) -> f64 {
+        if a >= self.threshold {
+            a.powf(self.g)
+        } else {
+            let f = a / self.threshold;
+            (1.0 - f) * a * self.thresh_factor + f * a.powf(self.g)
+        }
+    }
+
+    /// Map filtered accumulators (flam3 units, channel/255 = density) to output values in
+    /// 0..=255 (not yet truncated) and the alpha in [0, 1].
+    #[inline(always)]
+    pub fn pixel(&self, acc: [f64; 4]) -> ([f64; 3], f64) {
+        let a_raw = acc[3];
+        let (alpha, ls) = if a_raw <= 0.0 {
+            (0.0, 0.0)
+        } else {
+            let a = a_raw / 255.0;
+            let alpha = self.gamma_alpha(a);
+            let ls = self.vibrancy * 256.0 * alpha / a;
+            (alpha.clamp(0.0, 1.0), ls)
+        };
+        let c = [
+            acc[0].max(0.0) / 255.0,
+            acc[1].max(0.0) / 255.0,
+            acc[2].max(0.0) / 255.0,
+        ];
+        let newrgb = highlight(c, ls, self.highlight_power);
+        let mut out = [0.0; 3];
+        for k in 0..3 {
+            let mut v = newrgb[k];
+            if self.vibrancy != 1.0 {
+                v += (1.0 - self.vibrancy) * 256.0 * c[k].powf(self.g);
+            }
+            if !self.transparent {
+                v += (1.0 - alpha) * 256.0 * self.background[k];
+            } else if alpha > 0.0 {
+                v /= alpha;
+            } else {
+                v = 0.0;
+            }
+            out[k] = v.clamp(0.0, 255.0);
+        }
+        (out, alpha)
+    }
+}
+
+/// flam3 `flam3_calc_newrgb`: scale a colour by ls with highlight handling.
+pub fn highlight(c: [f64; 3], ls: f64, hp: f64) -> [f64; 3] {
+    if ls == 0.0 || (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0) {
+        return [0.0; 3];
+    }
+    let mut m = 0;
+    for k in 1..3 {
+        if ls * c[k] > ls * c[m] {
+            m = k;
+        }
+    }
+    let maxa = ls * c[m];
+    let newls = 255.0 / c[m];
+    if maxa > 255.0 && hp >= 0.0 {
+        let col = [newls * c[0] / 255.0, newls * c[1] / 255.0, newls * c[2] / 255.0];
+        let mut hsv = rgb_to_hsv(col);
+        hsv[1] *= (newls / ls).powf(hp);
+        let col = hsv_to_rgb(hsv);
+        [255.0 * col[0], 255.0 * col[1], 255.0 * col[2]]
+    } else {
+        let lambda = if maxa <= 255.0 { 1.0 } else { (-hp).min(1.0) };
+        let s = (1.0 - lambda) * newls + lambda * ls;
+        [s * c[0], s * c[1], s * c[2]]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn oracle_flame() -> Flame {
+        Flame {
+            width: 100,
+            height: 100,
+            scale: 50.0,
+            quality: 10.0,
+            brightness: 4.0,
+            contrast: 1.0,
+            supersample: 1,
+            ..Flame::default()
+        }
+    }
+
+    #[test]
+    fn log_density_oracles() {
+        let f = oracle_flame();
+        let ls = LogScale::new(&f, 10.0);
+        for (hits, want) in [(1.0, 0.103400), (10.0, 0.934414), (100.0, 5.245945)] {
+            let a = ls.factor(hits) * hits / 255.0;
+            assert!((a - want).abs() < 1e-6, "{hits}: {a}");
+        }
+    }
+
+    #[test]
+    fn gamma_threshold_oracles() {
+        let f = Flame {
+            gamma: 4.0,
+            gamma_threshold: 0.01,
+            ..Flame::default()
+        };
+        let tm = ToneMap::new(&f, false);
+        for (a, want) in [(0.001, 0.046243), (0.005, 0.212014), (0.01, 0.316228), (0.1, 0.562341)] {
+            assert!((tm.gamma_alpha(a) - want).abs() < 1e-6, "{a}");
+        }
+    }
+
+    #[test]
+    fn single_hit_pixel_oracle() {
+        let f = Flame {
+            gamma: 4.0,
+            vibrancy: 1.0,
+            gamma_threshold: 0.01,
+            highlight_power: -1.0,
+            ..oracle_flame()
+        };
+        let ls = LogScale::new(&f, 10.0);
+        let s = ls.factor(1.0);
+        let acc = [s * 1.0, s * 0.5, 0.0, s * 1.0];
+        let tm = ToneMap::new(&f, false);
+        let (rgb, alpha) = tm.pixel(acc);
+        assert!((alpha - 0.567062).abs() < 1e-6);
+        assert_eq!([rgb[0] as u8, rgb[1] as u8, rgb[2] as u8], [145, 72, 0]);
+        // With the 0.5 Gaussian filter's centre weight the bytes are unchanged.
+        let w = 0.998659;
+        let (rgb, _) = tm.pixel([acc[0] * w, acc[1] * w, 0.0, acc[3] * w]);
+        assert_eq!([rgb[0] as u8, rgb[1] as u8, rgb[2] as u8], [145, 72, 0]);
+    }
+
+    #[test]
+    fn highlight_power_keeps_hue_when_saturating() {
+        // Very bright orange: with hp ≥ 0 the largest channel is 255 and no channel exceeds it.
+        let c = [0.8, 0.4, 0.1];
+        let out = highlight(c, 10_000.0, 1.0);
+        assert!((out[0] - 255.0).abs() < 1e-9);
+        assert!(out.iter().all(|v| *v <= 255.0 + 1e-9));
+        // hp = −1 is plain scaling.
+        let out = highlight(c, 100.0, -1.0);
+        assert_eq!(out, [80.0, 40.0, 10.0]);
+    }
+
+    #[test]
+    fn background_shows_through_empty_pixels() {
+        let f = Flame {
+            background: [1.0, 0.5, 0.0],
+            ..Flame::default()
+        };
+        let tm = ToneMap::new(&f, false);
+        let (rgb, a) = tm.pixel([0.0; 4]);
+        assert_eq!(a, 0.0);
+        assert_eq!(rgb, [255.0, 128.0, 0.0]);
+    }
+}

@@ -1,0 +1,1253 @@
+//! flam3 / Apophysis flame XML (`.flame`, `.flam3`) and ugnis `.fla` (formats.md §3, §4).
+//!
+//! Reading accepts any well-formed document and takes every `<flame>` element at any depth.
+//! Everything ugnis does not interpret — unknown attributes, `<edit>` histories, variations it
+//! cannot render — is kept and written back, so a read/write round trip is lossless.
+
+use std::cell::OnceCell;
+use std::collections::HashSet;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use quick_xml::events::Event;
+
+use crate::flame::model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
+use crate::flame::symmetry::add_symmetry;
+use crate::flame::variations::{self, LINEAR};
+use crate::gradient::{Gradient, hue_rotate};
+use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, fmt_num, parse_int, parse_number};
+use crate::io::palettes::{self, PaletteLibrary, decode_hex_colors};
+use crate::io::xml::{Attr, XmlCursor, escape_attr, scan_attrs};
+
+/// Revision of the `.fla` format this version writes.
+pub const FLA_FORMAT: u32 = 1;
+/// Flames per file (sanity limit).
+pub const MAX_FLAMES: usize = 10_000;
+/// Xforms per flame (sanity limit).
+pub const MAX_XFORMS: usize = 10_000;
+/// Largest image side accepted from a file.
+pub const MAX_SIDE: i64 = 1_000_000;
+
+/// The contents of a flame file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FlameFile {
+    /// `name` of the `<flames>` root, if any.
+    pub name: String,
+    pub flames: Vec<Flame>,
+}
+
+/// Where `palette="N"` looks up flam3's library.
+#[derive(Clone, Debug, Default)]
+pub enum LibrarySource<'a> {
+    /// Search `$FLAM3_PALETTES` and the usual install paths.
+    #[default]
+    Search,
+    /// These paths, in order.
+    Paths(Vec<PathBuf>),
+    /// An already loaded library.
+    Loaded(&'a PaletteLibrary),
+}
+
+/// Reader options.
+#[derive(Clone, Debug)]
+pub struct ReadOptions<'a> {
+    /// File name used in diagnostics.
+    pub file: String,
+    pub library: LibrarySource<'a>,
+    /// Quality for flames without a `quality` attribute (the Options main density).
+    pub default_quality: f64,
+    /// Palette for flames without colour data.
+    pub default_gradient: Gradient,
+    /// Validate as a `.fla` file (`<flames>` root, unique non-empty names).
+    pub fla: bool,
+}
+
+impl Default for ReadOptions<'_> {
+    fn default() -> Self {
+        Self {
+            file: "<input>".to_string(),
+            library: LibrarySource::Search,
+            default_quality: 15.0,
+            default_gradient: Gradient::default(),
+            fla: false,
+        }
+    }
+}
+
+struct Ctx<'t, 'o> {
+    file: &'t str,
+    map: SourceMap<'t>,
+    warnings: Vec<Diagnostic>,
+    reported_vars: HashSet<String>,
+    opts: &'o ReadOptions<'o>,
+    library: OnceCell<Result<PaletteLibrary, String>>,
+}
+
+type R<T> = Result<T, Diagnostic>;
+
+impl Ctx<'_, '_> {
+    fn err(&self, off: usize, code: &'static str, msg: impl Into<String>) -> Diagnostic {
+        Diagnostic::error(self.file, self.map.pos(off), code, msg)
+    }
+
+    fn warn(&mut self, off: usize, code: &'static str, msg: impl Into<String>) {
+        let d = Diagnostic::warning(self.file, self.map.pos(off), code, msg);
+        self.warnings.push(d);
+    }
+
+    fn num(&self, a: &Attr) -> R<f64> {
+        parse_number(a.value.trim()).map_err(|e| {
+            self.err(
+                a.offset,
+                "XML003",
+                format!("attribute '{}': {}", a.name, e.describe(a.value.trim())),
+            )
+        })
+    }
+
+    fn nums(&self, a: &Attr, code: &'static str) -> R<Vec<f64>> {
+        a.value
+            .split_whitespace()
+            .map(|t| {
+                parse_number(t).map_err(|e| {
+                    self.err(a.offset, code, format!("attribute '{}': {}", a.name, e.describe(t)))
+                })
+            })
+            .collect()
+    }
+
+    fn fixed<const N: usize>(&self, a: &Attr, code: &'static str, what: &str) -> R<[f64; N]> {
+        let v = self.nums(a, code)?;
+        v.try_into().map_err(|v: Vec<f64>| {
+            self.err(
+                a.offset,
+                code,
+                format!("attribute '{}' must hold {N} {what}, found {}", a.name, v.len()),
+            )
+        })
+    }
+
+    fn int(&self, a: &Attr) -> R<i64> {
+        parse_int(a.value.trim()).map_err(|_| {
+            self.err(
+                a.offset,
+                "XML003",
+                format!("attribute '{}': '{}' is not an integer", a.name, a.value.trim()),
+            )
+        })
+    }
+
+    fn library(&self) -> &Result<PaletteLibrary, String> {
+        self.library.get_or_init(|| {
+            let paths = match &self.opts.library {
+                LibrarySource::Loaded(l) => return Ok((*l).clone()),
+                LibrarySource::Search => palettes::default_paths(),
+                LibrarySource::Paths(p) => p.clone(),
+            };
+            match palettes::find(Some(&paths)) {
+                Some(p) => palettes::load(&p).map(|l| l.value).map_err(|d| d.to_string()),
+                None => Err(format!(
+                    "flam3-palettes.xml was not found (looked in {}); install flam3's palette file \
+                     (Debian: flam3-palette), set FLAM3_PALETTES, or pass --palettes PATH",
+                    paths
+                        .iter()
+                        .map(|p| p.display().to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            }
+        })
+    }
+}
+
+/// Read every flame of a flam3/Apophysis/ugnis XML document.
+pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut cx = Ctx {
+        file: &opts.file,
+        map: SourceMap::new(text),
+        warnings: Vec::new(),
+        reported_vars: HashSet::new(),
+        opts,
+        library: OnceCell::new(),
+    };
+    let mut cur = XmlCursor::new(text);
+    let mut out = FlameFile::default();
+    let mut depth = 0usize;
+    let mut root_seen = false;
+    let mut names: Vec<(String, usize)> = Vec::new();
+    loop {
+        let p = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+        match &p.event {
+            Event::Eof => break,
+            Event::Start(e) | Event::Empty(e) => {
+                let is_empty = matches!(p.event, Event::Empty(_));
+                let tag = e.name().as_ref().to_string();
+                if !root_seen {
+                    root_seen = true;
+                    if tag == "flames" {
+                        let attrs = scan_attrs(e, p.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        root_attrs(&mut cx, &attrs, &mut out)?;
+                    } else if opts.fla {
+                        return Err(cx.err(
+                            p.start,
+                            "FLA001",
+                            format!(
+                                "a .fla file must have a <flames> root, not <{}>",
+                                tag
+                            ),
+                        ));
+                    }
+                }
+                if tag == "flame" {
+                    if out.flames.len() >= MAX_FLAMES {
+                        return Err(cx.err(p.start, "XML003", format!("more than {MAX_FLAMES} flames in one file")));
+                    }
+                    let flame = read_flame(&mut cx, &mut cur, text, e, p.start, is_empty, out.flames.len())?;
+                    if opts.fla {
+                        if flame.name.is_empty() {
+                            return Err(cx.err(p.start, "FLA002", "every flame in a .fla file needs a non-empty name"));
+                        }
+                        if let Some((_, first)) = names.iter().find(|(n, _)| *n == flame.name) {
+                            let Pos::LineCol(l, c) = cx.map.pos(*first) else { unreachable!() };
+                            return Err(cx.err(
+                                p.start,
+                                "FLA002",
+                                format!("duplicate flame name '{}' (first used at {l}:{c})", flame.name),
+                            ));
+                        }
+                        names.push((flame.name.clone(), p.start));
+                    }
+                    out.flames.push(flame);
+                } else if !is_empty {
+                    depth += 1;
+                }
+            }
+            Event::End(_) => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    if out.flames.is_empty() {
+        return Err(Diagnostic::error(&opts.file, Pos::File, "XML002", "no <flame> element in the document"));
+    }
+    let _ = depth;
+    Ok(Parsed {
+        value: out,
+        warnings: cx.warnings,
+    })
+}
+
+fn root_attrs(cx: &mut Ctx, attrs: &[Attr], out: &mut FlameFile) -> R<()> {
+    for a in attrs {
+        match a.name {
+            "name" => out.name = a.value.to_string(),
+            "ugnis_format" => {
+                let v = cx.int(a)?;
+                if v > FLA_FORMAT as i64 {
+                    cx.warn(
+                        a.offset,
+                        "FLA003",
+                        format!("file format revision {v} is newer than this ugnis ({FLA_FORMAT}); some data may be ignored"),
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Raw palette data collected while reading a flame.
+struct PaletteData {
+    colors: Vec<Option<[f64; 4]>>,
+    any: bool,
+}
+
+fn read_flame(
+    cx: &mut Ctx,
+    cur: &mut XmlCursor,
+    text: &str,
+    e: &quick_xml::events::BytesStart,
+    start: usize,
+    is_empty: bool,
+    index: usize,
+) -> R<Flame> {
+    let attrs = scan_attrs(e, start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+    let mut f = Flame {
+        // flam3 defaults for absent attributes (formats.md §3.2).
+        width: 100,
+        height: 100,
+        scale: 50.0,
+        quality: cx.opts.default_quality,
+        gamma: 4.0,
+        has_camera: false,
+        ..Flame::default()
+    };
+    f.palette.name.clear();
+    let mut library_palette: Option<(usize, usize)> = None; // (number, offset)
+    let mut hue = 0.0;
+    let mut rotate_seen = false;
+    let mut angle: Option<f64> = None;
+    let mut contrast: Option<f64> = None;
+    let mut est = (9.0, 0.0, 0.4, start);
+    for a in &attrs {
+        let v = &a.value;
+        match a.name {
+            "name" => {
+                if v.len() > 64 {
+                    cx.warn(a.offset, "XML016", "flame name longer than 64 bytes (flam3 truncates it)");
+                }
+                f.name = v.to_string();
+            }
+            "version" | "new_linear" => {}
+            "size" => {
+                let parts: Vec<&str> = v.split_whitespace().collect();
+                let ok = parts.len() == 2
+                    && parts.iter().all(|p| parse_int(p).is_ok_and(|n| (1..=MAX_SIDE).contains(&n)));
+                if !ok {
+                    return Err(cx.err(
+                        a.offset,
+                        "XML003",
+                        format!("size '{v}' must be two integers between 1 and {MAX_SIDE}"),
+                    ));
+                }
+                f.width = parts[0].parse().unwrap_or(1);
+                f.height = parts[1].parse().unwrap_or(1);
+                f.has_camera = true;
+            }
+            "center" => {
+                let c: [f64; 2] = cx.fixed(a, "XML003", "numbers")?;
+                f.center = c;
+                f.has_camera = true;
+            }
+            "scale" => {
+                f.scale = cx.num(a)?;
+                if f.scale <= 0.0 {
+                    return Err(cx.err(a.offset, "XML013", format!("scale {} must be positive", f.scale)));
+                }
+                f.has_camera = true;
+            }
+            "rotate" => {
+                f.rotate = cx.num(a)?;
+                rotate_seen = true;
+            }
+            "angle" => angle = Some(cx.num(a)?),
+            "zoom" => f.zoom = cx.num(a)?,
+            "supersample" | "oversample" => {
+                let n = cx.int(a)?;
+                if !(1..=16).contains(&n) {
+                    return Err(cx.err(a.offset, "XML013", format!("{} {n} must be between 1 and 16", a.name)));
+                }
+                f.supersample = n as u32;
+            }
+            "filter" => {
+                f.filter = cx.num(a)?;
+                if f.filter < 0.0 {
+                    return Err(cx.err(a.offset, "XML013", "filter radius must not be negative"));
+                }
+            }
+            "filter_shape" => match FilterShape::from_name(v.trim()) {
+                Some(s) => f.filter_shape = s,
+                None => cx.warn(a.offset, "XML014", format!("unknown filter_shape '{v}'; using gaussian")),
+            },
+            "quality" => {
+                f.quality = cx.num(a)?;
+                if f.quality <= 0.0 {
+                    return Err(cx.err(a.offset, "XML013", format!("quality {} must be positive", f.quality)));
+                }
+            }
+            "background" => {
+                let b: [f64; 3] = cx.fixed(a, "XML003", "numbers")?;
+                f.background = b;
+            }
+            "brightness" => f.brightness = cx.num(a)?,
+            "gamma" => {
+                f.gamma = cx.num(a)?;
+                if f.gamma <= 0.0 {
+                    return Err(cx.err(a.offset, "XML013", format!("gamma {} must be positive", f.gamma)));
+                }
+            }
+            "gamma_threshold" => f.gamma_threshold = cx.num(a)?,
+            "vibrancy" => f.vibrancy = cx.num(a)?,
+            "highlight_power" => f.highlight_power = cx.num(a)?,
+            "hue" => hue = cx.num(a)?.rem_euclid(1.0),
+            "estimator_radius" => est.0 = cx.num(a)?,
+            "estimator_minimum" => est.1 = cx.num(a)?,
+            "estimator_curve" => {
+                est.2 = cx.num(a)?;
+                est.3 = a.offset;
+            }
+            "palette_mode" => match PaletteMode::from_name(v.trim()) {
+                Some(m) => f.palette_mode = m,
+                None => cx.warn(a.offset, "XML014", format!("unknown palette_mode '{v}'; using step")),
+            },
+            "palette" => {
+                let n = cx.int(a)?;
+                if !(0..=700).contains(&n) {
+                    return Err(cx.err(a.offset, "XML011", format!("palette number {n} is outside 0..700")));
+                }
+                library_palette = Some((n as usize, a.offset));
+            }
+            "soloxform" => {
+                let n = cx.num(a)?;
+                f.solo_xform = if n >= 0.0 { Some(n as usize) } else { None };
+            }
+            "contrast" => {
+                if contrast.is_none() {
+                    contrast = Some(cx.num(a)?);
+                }
+            }
+            "ugnis_contrast" => contrast = Some(cx.num(a)?),
+            "ugnis_seed" => {
+                f.seed = Some(v.trim().parse::<u64>().map_err(|_| {
+                    cx.err(a.offset, "FLA004", format!("ugnis_seed '{v}' must be an unsigned 64-bit integer"))
+                })?)
+            }
+            "ugnis_kind" => {
+                f.kind = match v.trim() {
+                    "flame" => FlameKind::Flame,
+                    "ifs" => FlameKind::Ifs,
+                    other => {
+                        return Err(cx.err(
+                            a.offset,
+                            "FLA004",
+                            format!("ugnis_kind '{other}' must be 'flame' or 'ifs'"),
+                        ));
+                    }
+                }
+            }
+            "ugnis_auto_weights" => {
+                f.auto_weights = match v.trim() {
+                    "0" => Some(false),
+                    "1" => Some(true),
+                    other => {
+                        return Err(cx.err(a.offset, "FLA004", format!("ugnis_auto_weights '{other}' must be 0 or 1")));
+                    }
+                }
+            }
+            "ugnis_gradient" => f.palette.name = v.to_string(),
+            other => {
+                if other.starts_with("ugnis_") {
+                    cx.warn(a.offset, "FLA005", format!("unknown attribute '{other}' kept"));
+                }
+                f.extra_attrs.push((other.to_string(), v.to_string()));
+            }
+        }
+    }
+    if !rotate_seen && let Some(ang) = angle {
+        f.rotate = -ang.to_degrees();
+    }
+    if let Some(c) = contrast {
+        if c <= 0.0 {
+            return Err(cx.err(start, "XML013", format!("contrast {c} must be positive")));
+        }
+        f.contrast = c;
+    }
+    let (r, m, k, koff) = est;
+    if !(r >= m && m >= 0.0 && k > 0.0) {
+        return Err(cx.err(
+            koff,
+            "XML012",
+            format!("estimator_radius {r} must be ≥ estimator_minimum {m} ≥ 0, and estimator_curve {k} > 0"),
+        ));
+    }
+    (f.estimator_radius, f.estimator_minimum, f.estimator_curve) = (r, m, k);
+
+    let mut pal = PaletteData {
+        colors: vec![None; 256],
+        any: false,
+    };
+    let gradient_name = std::mem::take(&mut f.palette.name);
+    if !is_empty {
+        read_flame_children(cx, cur, text, &mut f, &mut pal)?;
+    }
+    // Palette: inline colours win over a library palette (flam3 does the opposite; warn).
+    if pal.any {
+        if library_palette.is_some() {
+            cx.warn(start, "XML017", "flame has both inline colours and palette=\"N\"; using the inline colours");
+        }
+        f.palette = Gradient {
+            name: gradient_name,
+            colors: interpolate_missing(&pal.colors),
+            stops: Vec::new(),
+        };
+    } else if let Some((n, off)) = library_palette {
+        let lib = cx.library();
+        let g = match lib {
+            Ok(l) => l.get(n).cloned().ok_or_else(|| {
+                cx.err(off, "XML011", format!("palette {n} is not in {}", l.path.display()))
+            })?,
+            Err(m) => return Err(cx.err(off, "XML011", format!("flame uses library palette {n}, but {m}"))),
+        };
+        f.palette = hue_rotate(&g, hue);
+    } else {
+        cx.warn(start, "XML018", "flame has no colour data; using the default gradient");
+        f.palette = cx.opts.default_gradient.clone();
+    }
+    if f.xforms.is_empty() {
+        return Err(cx.err(start, "XML007", "cannot iterate empty flame: it has no <xform>"));
+    }
+    if f.xforms.iter().all(|x| x.weight == 0.0) {
+        return Err(cx.err(start, "XML007", "cannot iterate empty flame: all xform weights are 0"));
+    }
+    let _ = index;
+    Ok(f)
+}
+
+/// Fill undefined palette entries by linear interpolation between the nearest defined ones,
+/// wrapping around (flam3 `flam3_interp_missing_colors`).
+fn interpolate_missing(colors: &[Option<[f64; 4]>]) -> Vec<[f64; 4]> {
+    let n = colors.len();
+    let defined: Vec<usize> = (0..n).filter(|&i| colors[i].is_some()).collect();
+    (0..n)
+        .map(|i| {
+            if let Some(c) = colors[i] {
+                return c;
+            }
+            // Nearest defined below (wrapping) and above (wrapping).
+            let below = defined.iter().rev().find(|&&j| j < i).or(defined.last()).copied().unwrap_or(i);
+            let above = defined.iter().find(|&&j| j > i).or(defined.first()).copied().unwrap_or(i);
+            let (cb, ca) = (colors[below].unwrap_or([0.0; 4]), colors[above].unwrap_or([0.0; 4]));
+            let dist_b = (i + n - below) % n;
+            let span = (above + n - below) % n;
+            let t = if span == 0 { 0.0 } else { dist_b as f64 / span as f64 };
+            [
+                quantise(cb[0] + (ca[0] - cb[0]) * t),
+                quantise(cb[1] + (ca[1] - cb[1]) * t),
+                quantise(cb[2] + (ca[2] - cb[2]) * t),
+                quantise(cb[3] + (ca[3] - cb[3]) * t),
+            ]
+        })
+        .collect()
+}
+
+/// Palettes are stored with 8 bits per channel (the hex block ugnis writes), so values are
+/// rounded to multiples of 1/255 on reading; a read/write/read round trip is then exact.
+fn quantise(v: f64) -> f64 {
+    (v.clamp(0.0, 1.0) * 255.0).round() / 255.0
+}
+
+fn read_flame_children(
+    cx: &mut Ctx,
+    cur: &mut XmlCursor,
+    text: &str,
+    f: &mut Flame,
+    pal: &mut PaletteData,
+) -> R<()> {
+    loop {
+        let p = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+        match &p.event {
+            Event::End(_) => return Ok(()),
+            Event::Eof => return Err(cx.err(p.start, "XML001", "end of file inside <flame>")),
+            Event::Start(e) | Event::Empty(e) => {
+                let is_empty = matches!(p.event, Event::Empty(_));
+                let attrs = scan_attrs(e, p.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                match e.name().as_ref() {
+                    "xform" | "finalxform" => {
+                        let fin = e.name().as_ref() == "finalxform";
+                        if fin && f.final_xform.is_some() {
+                            return Err(cx.err(p.start, "XML006", "more than one <finalxform>"));
+                        }
+                        if f.xforms.len() >= MAX_XFORMS {
+                            return Err(cx.err(p.start, "XML003", format!("more than {MAX_XFORMS} xforms")));
+                        }
+                        let parity = (f.xforms.len() + f.final_xform.is_some() as usize) % 2;
+                        let mut x = read_xform(cx, &attrs, fin, parity as f64, p.start)?;
+                        if !is_empty {
+                            // Children (flam3 <motion>) are kept verbatim.
+                            loop {
+                                let c = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                                match c.event {
+                                    Event::End(_) => break,
+                                    Event::Start(_) => {
+                                        let end = cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                                        x.extra_children.push(text[c.start..end].to_string());
+                                    }
+                                    Event::Empty(_) => x.extra_children.push(text[c.start..c.end].to_string()),
+                                    Event::Eof => return Err(cx.err(c.start, "XML001", "end of file inside <xform>")),
+                                    _ => {}
+                                }
+                            }
+                        }
+                        if fin {
+                            f.final_xform = Some(x);
+                        } else {
+                            f.xforms.push(x);
+                        }
+                    }
+                    "color" => {
+                        read_color(cx, &attrs, p.start, pal)?;
+                        if !is_empty {
+                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        }
+                    }
+                    "colors" => {
+                        let count = attrs.iter().find(|a| a.name == "count");
+                        let data = attrs.iter().find(|a| a.name == "data");
+                        if let Some(d) = data {
+                            let cols = decode_hex_colors(&d.value, 8).ok_or_else(|| {
+                                cx.err(d.offset, "XML010", "colors data must be 8 hex digits per colour")
+                            })?;
+                            if let Some(c) = count {
+                                let n = cx.int(c)?;
+                                if n != cols.len() as i64 {
+                                    return Err(cx.err(
+                                        d.offset,
+                                        "XML010",
+                                        format!("colors count {n} but data holds {} colours", cols.len()),
+                                    ));
+                                }
+                            }
+                            for (i, c) in cols.iter().take(256).enumerate() {
+                                pal.colors[i] = Some([c[1] as f64 / 255.0, c[2] as f64 / 255.0, c[3] as f64 / 255.0, 1.0]);
+                                pal.any = true;
+                            }
+                        }
+                        if !is_empty {
+                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        }
+                    }
+                    "palette" => read_palette(cx, cur, &attrs, p.start, is_empty, pal)?,
+                    "symmetry" => {
+                        let Some(k) = attrs.iter().find(|a| a.name == "kind") else {
+                            return Err(cx.err(p.start, "XML003", "<symmetry> needs a 'kind' attribute"));
+                        };
+                        let kind = cx.int(k)?;
+                        if kind.abs() > 1000 {
+                            return Err(cx.err(k.offset, "XML003", format!("symmetry kind {kind} is out of range")));
+                        }
+                        add_symmetry(f, kind as i32);
+                        if !is_empty {
+                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        }
+                    }
+                    _ => {
+                        // <edit> and anything else: kept verbatim.
+                        let end = if is_empty {
+                            p.end
+                        } else {
+                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?
+                        };
+                        f.extra_children.push(text[p.start..end].to_string());
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+fn read_color(cx: &mut Ctx, attrs: &[Attr], start: usize, pal: &mut PaletteData) -> R<()> {
+    let mut index: Option<i64> = None;
+    let mut rgb = [0.0; 3];
+    let mut alpha = 255.0;
+    let mut value_off = start;
+    for a in attrs {
+        match a.name {
+            "index" => index = Some(cx.int(a).map_err(|_| cx.err(a.offset, "XML009", format!("color index '{}' is not an integer", a.value)))?),
+            "rgb" => {
+                let v: [f64; 3] = cx.fixed(a, "XML009", "numbers")?;
+                rgb = v;
+                value_off = a.offset;
+            }
+            "rgba" => {
+                let v: [f64; 4] = cx.fixed(a, "XML009", "numbers")?;
+                rgb = [v[0], v[1], v[2]];
+                alpha = v[3];
+                value_off = a.offset;
+            }
+            "a" => alpha = cx.num(a)?,
+            _ => {}
+        }
+    }
+    let i = match index {
+        Some(i) if (0..=255).contains(&i) => i as usize,
+        Some(i) => return Err(cx.err(start, "XML009", format!("color index {i} is outside 0..255"))),
+        None => return Err(cx.err(start, "XML009", "<color> without an index")),
+    };
+    let mut clamp = |v: f64| {
+        if !(0.0..=255.0).contains(&v) {
+            cx.warn(value_off, "XML015", format!("colour component {v} is outside 0..255; clamped"));
+        }
+        v.clamp(0.0, 255.0).round() / 255.0
+    };
+    let c = [clamp(rgb[0]), clamp(rgb[1]), clamp(rgb[2]), clamp(alpha)];
+    pal.colors[i] = Some(c);
+    pal.any = true;
+    Ok(())
+}
+
+fn read_palette(
+    cx: &mut Ctx,
+    cur: &mut XmlCursor,
+    attrs: &[Attr],
+    start: usize,
+    is_empty: bool,
+    pal: &mut PaletteData,
+) -> R<()> {
+    let get = |n: &str| attrs.iter().find(|a| a.name == n);
+    let legacy = ["index0", "index1", "hue0", "hue1", "blend"].iter().any(|n| get(n).is_some());
+    let modern = get("count").is_some() || get("format").is_some();
+    if legacy && modern {
+        return Err(cx.err(start, "XML010", "mixing the old (index0/hue0) and new (count/format) palette syntax"));
+    }
+    // Collect the text content.
+    let mut content = String::new();
+    let mut content_off = start;
+    if !is_empty {
+        loop {
+            let p = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+            match &p.event {
+                Event::Text(t) => {
+                    if content.is_empty() {
+                        content_off = p.start;
+                    }
+                    content.push_str(&&**t);
+                }
+                Event::End(_) => break,
+                Event::Eof => return Err(cx.err(p.start, "XML001", "end of file inside <palette>")),
+                Event::Start(_) => {
+                    cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                }
+                _ => {}
+            }
+        }
+    }
+    if legacy {
+        let idx = get("index0").map(|a| cx.int(a)).transpose()?.unwrap_or(0);
+        let hue0 = get("hue0").map(|a| cx.num(a)).transpose()?.unwrap_or(0.0);
+        cx.warn(start, "XML019", "old-style <palette index0=…>: using index0 with hue0 only");
+        let lib = cx.library();
+        let g = match lib {
+            Ok(l) => l
+                .get(idx.max(0) as usize)
+                .cloned()
+                .ok_or_else(|| cx.err(start, "XML011", format!("palette {idx} is not in the library")))?,
+            Err(m) => return Err(cx.err(start, "XML011", m.clone())),
+        };
+        let g = hue_rotate(&g, hue0);
+        for (i, c) in g.colors.iter().enumerate() {
+            pal.colors[i] = Some(*c);
+        }
+        pal.any = true;
+        return Ok(());
+    }
+    let count = match get("count") {
+        Some(a) => {
+            let n = cx.int(a)?;
+            if !(1..=256).contains(&n) {
+                return Err(cx.err(a.offset, "XML010", format!("palette count {n} is outside 1..256")));
+            }
+            n as usize
+        }
+        None => 256,
+    };
+    let dpc = match get("format").map(|a| (a.value.trim().to_string(), a.offset)) {
+        None => 6,
+        Some((f, _)) if f == "RGB" => 6,
+        Some((f, _)) if f == "RGBA" => 8,
+        Some((f, off)) => return Err(cx.err(off, "XML010", format!("palette format '{f}' must be RGB or RGBA"))),
+    };
+    for tok in content.split_whitespace() {
+        if tok.len() % dpc != 0 || !tok.bytes().all(|c| c.is_ascii_hexdigit()) {
+            return Err(cx.err(
+                content_off,
+                "XML010",
+                format!("palette data must be hex colours of {dpc} digits (whitespace only between colours)"),
+            ));
+        }
+    }
+    let cols = decode_hex_colors(&content, dpc).unwrap_or_default();
+    if cols.len() != count {
+        return Err(cx.err(
+            content_off,
+            "XML010",
+            format!("palette count is {count} but the data holds {} colours", cols.len()),
+        ));
+    }
+    for (i, c) in cols.iter().enumerate() {
+        let a = if dpc == 8 { c[3] as f64 / 255.0 } else { 1.0 };
+        pal.colors[i] = Some([c[0] as f64 / 255.0, c[1] as f64 / 255.0, c[2] as f64 / 255.0, a]);
+    }
+    pal.any = true;
+    Ok(())
+}
+
+fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize) -> R<Xform> {
+    let mut x = Xform {
+        weight: 0.0,
+        color: parity,
+        vars: Vec::new(),
+        ..Xform::default()
+    };
+    let mut color_speed: Option<f64> = None;
+    let mut symmetry: Option<f64> = None;
+    let mut params: Vec<(variations::VarId, usize, f64, String, String)> = Vec::new();
+    for a in attrs {
+        let v = a.value.trim();
+        match a.name {
+            "weight" => {
+                let w = cx.num(a).map_err(|d| Diagnostic { code: "XML005", ..d })?;
+                if w < 0.0 {
+                    return Err(cx.err(a.offset, "XML005", format!("weight {w} must not be negative")));
+                }
+                if fin && w != 0.0 {
+                    return Err(cx.err(a.offset, "XML005", "a <finalxform> has no weight"));
+                }
+                x.weight = w;
+            }
+            "color" => {
+                let c = cx.nums(a, "XML003")?;
+                if c.is_empty() || c.len() > 2 {
+                    return Err(cx.err(a.offset, "XML003", "color must be one number (or two, legacy)"));
+                }
+                x.color = c[0];
+            }
+            "color_speed" => color_speed = Some(cx.num(a)?),
+            "symmetry" => symmetry = Some(cx.num(a)?),
+            "opacity" => {
+                let o = cx.num(a)?;
+                if !(0.0..=1.0).contains(&o) {
+                    return Err(cx.err(a.offset, "XML003", format!("opacity {o} must be in 0..1")));
+                }
+                x.opacity = o;
+            }
+            "plotmode" => {
+                if v == "off" {
+                    x.opacity = 0.0;
+                }
+            }
+            "coefs" | "post" => {
+                let c: [f64; 6] = cx.fixed(a, "XML004", "numbers").map_err(|d| Diagnostic { code: "XML004", ..d })?;
+                let m = Affine::from_coefs(c);
+                if a.name == "coefs" {
+                    x.coefs = m;
+                } else {
+                    x.post = m;
+                }
+            }
+            "chaos" => {
+                let c = cx.nums(a, "XML008")?;
+                if let Some(bad) = c.iter().find(|v| **v < 0.0) {
+                    return Err(cx.err(a.offset, "XML008", format!("xaos value {bad} must not be negative")));
+                }
+                x.chaos = c;
+            }
+            "var" => {
+                let ws = cx.nums(a, "XML003")?;
+                if ws.len() > variations::COUNT {
+                    return Err(cx.err(a.offset, "XML003", format!("var holds {} weights; at most 99", ws.len())));
+                }
+                for (i, w) in ws.iter().enumerate() {
+                    if *w != 0.0 {
+                        x.set_var(i as variations::VarId, *w);
+                    }
+                }
+            }
+            "var1" => {
+                let i = cx.int(a)?;
+                if !(0..variations::COUNT as i64).contains(&i) {
+                    return Err(cx.err(a.offset, "XML003", format!("var1 index {i} is outside 0..98")));
+                }
+                x.vars.clear();
+                x.set_var(i as variations::VarId, 1.0);
+            }
+            "linear3D" => {
+                let w = cx.num(a)?;
+                let cur = x.var_weight(LINEAR);
+                x.set_var(LINEAR, cur + w);
+            }
+            name => {
+                if let Some(id) = variations::by_name(name) {
+                    let w = cx.num(a)?;
+                    if w != 0.0 {
+                        x.vars.retain(|v| v.id != id);
+                        x.vars.push(Var::new(id, w));
+                    }
+                } else if let Some((id, pi)) = variations::param_of(name) {
+                    let pv = cx.num(a)?;
+                    params.push((id, pi, pv, name.to_string(), a.value.to_string()));
+                } else {
+                    let numeric = parse_number(v).is_ok();
+                    let meta = matches!(name, "animate" | "var_color" | "name" | "motion_frequency" | "motion_function");
+                    if numeric && !meta && cx.reported_vars.insert(name.to_string()) {
+                        cx.warn(
+                            a.offset,
+                            "XML020",
+                            format!("variation '{name}' (weight {v}) not supported; ignored"),
+                        );
+                    }
+                    x.extra_attrs.push((name.to_string(), a.value.to_string()));
+                }
+            }
+        }
+    }
+    x.color_speed = match (color_speed, symmetry) {
+        (Some(s), _) => s,
+        (None, Some(sig)) => (1.0 - sig) / 2.0,
+        (None, None) => 0.5,
+    };
+    // Parameters go to their variation; parameters of absent variations are kept as-is.
+    for (id, pi, pv, name, raw) in params {
+        if let Some(var) = x.vars.iter_mut().find(|v| v.id == id) {
+            var.params[pi] = pv;
+        } else {
+            x.extra_attrs.push((name, raw));
+        }
+    }
+    let _ = start;
+    Ok(x)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing (formats.md §3.6)
+
+/// Write a whole `.fla`/`.flame` document.
+pub fn write(file: &FlameFile) -> String {
+    let mut s = String::new();
+    s.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    let _ = writeln!(
+        s,
+        "<flames name=\"{}\" ugnis_format=\"{FLA_FORMAT}\">",
+        escape_attr(&file.name)
+    );
+    let mut used: Vec<String> = Vec::new();
+    for (i, f) in file.flames.iter().enumerate() {
+        // Every flame needs a unique non-empty name.
+        let mut name = if f.name.trim().is_empty() {
+            format!("flame-{:03}", i + 1)
+        } else {
+            f.name.clone()
+        };
+        if used.contains(&name) {
+            let base = name.clone();
+            let mut k = 2;
+            while used.contains(&name) {
+                name = format!("{base}-{k}");
+                k += 1;
+            }
+        }
+        used.push(name.clone());
+        write_flame(&mut s, f, &name, "   ");
+    }
+    s.push_str("</flames>\n");
+    s
+}
+
+/// One `<flame>…</flame>` element (no declaration, no root), as embedded in PNG files.
+pub fn flame_element(f: &Flame) -> String {
+    let mut s = String::new();
+    let name = if f.name.is_empty() { "ugnis".to_string() } else { f.name.clone() };
+    write_flame(&mut s, f, &name, "");
+    s
+}
+
+fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
+    let n = fmt_num;
+    let _ = write!(
+        s,
+        "{ind}<flame name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
+         supersample=\"{}\" filter=\"{}\" filter_shape=\"{}\" quality=\"{}\" background=\"{} {} {}\" brightness=\"{}\" \
+         gamma=\"{}\" gamma_threshold=\"{}\" vibrancy=\"{}\" highlight_power=\"{}\" estimator_radius=\"{}\" \
+         estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\" new_linear=\"1\" ugnis_contrast=\"{}\"",
+        escape_attr(name),
+        crate::VERSION,
+        f.width,
+        f.height,
+        n(f.center[0]),
+        n(f.center[1]),
+        n(f.scale),
+        n(f.rotate),
+        n(f.zoom),
+        f.supersample,
+        n(f.filter),
+        f.filter_shape.name(),
+        n(f.quality),
+        n(f.background[0]),
+        n(f.background[1]),
+        n(f.background[2]),
+        n(f.brightness),
+        n(f.gamma),
+        n(f.gamma_threshold),
+        n(f.vibrancy),
+        n(f.highlight_power),
+        n(f.estimator_radius),
+        n(f.estimator_minimum),
+        n(f.estimator_curve),
+        f.palette_mode.name(),
+        n(f.contrast),
+    );
+    if let Some(seed) = f.seed {
+        let _ = write!(s, " ugnis_seed=\"{seed}\"");
+    }
+    let _ = write!(s, " ugnis_kind=\"{}\"", f.kind.name());
+    if let Some(aw) = f.auto_weights {
+        let _ = write!(s, " ugnis_auto_weights=\"{}\"", aw as u8);
+    }
+    if !f.palette.name.is_empty() {
+        let _ = write!(s, " ugnis_gradient=\"{}\"", escape_attr(&f.palette.name));
+    }
+    if let Some(solo) = f.solo_xform {
+        let _ = write!(s, " soloxform=\"{solo}\"");
+    }
+    for (k, v) in &f.extra_attrs {
+        let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
+    }
+    s.push_str(">\n");
+    let inner = format!("{ind}   ");
+    for x in &f.xforms {
+        write_xform(s, x, "xform", &inner);
+    }
+    if let Some(fx) = &f.final_xform {
+        write_xform(s, fx, "finalxform", &inner);
+    }
+    write_palette(s, &f.palette, &inner);
+    for c in &f.extra_children {
+        let _ = writeln!(s, "{inner}{}", c.trim());
+    }
+    let _ = writeln!(s, "{ind}</flame>");
+}
+
+fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
+    let n = fmt_num;
+    let _ = write!(s, "{ind}<{tag}");
+    if tag == "xform" {
+        let _ = write!(s, " weight=\"{}\"", n(x.weight));
+    }
+    let _ = write!(s, " color=\"{}\"", n(x.color));
+    if x.color_speed != 0.5 {
+        let _ = write!(s, " symmetry=\"{}\"", n(1.0 - 2.0 * x.color_speed));
+    }
+    let _ = write!(s, " color_speed=\"{}\"", n(x.color_speed));
+    if x.opacity != 1.0 {
+        let _ = write!(s, " opacity=\"{}\"", n(x.opacity));
+    }
+    for v in &x.vars {
+        let _ = write!(s, " {}=\"{}\"", v.name(), n(v.weight));
+    }
+    for v in &x.vars {
+        let info = variations::info(v.id);
+        for (i, (p, _)) in info.params.iter().enumerate() {
+            let _ = write!(s, " {}_{}=\"{}\"", info.name, p, n(v.params[i]));
+        }
+    }
+    let c = x.coefs.to_coefs();
+    let _ = write!(s, " coefs=\"{} {} {} {} {} {}\"", n(c[0]), n(c[1]), n(c[2]), n(c[3]), n(c[4]), n(c[5]));
+    if !x.post.is_identity() {
+        let p = x.post.to_coefs();
+        let _ = write!(s, " post=\"{} {} {} {} {} {}\"", n(p[0]), n(p[1]), n(p[2]), n(p[3]), n(p[4]), n(p[5]));
+    }
+    let mut chaos = x.chaos.clone();
+    while chaos.last() == Some(&1.0) {
+        chaos.pop();
+    }
+    if !chaos.is_empty() {
+        let v: Vec<String> = chaos.iter().map(|c| n(*c)).collect();
+        let _ = write!(s, " chaos=\"{}\"", v.join(" "));
+    }
+    for (k, v) in &x.extra_attrs {
+        let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
+    }
+    if x.extra_children.is_empty() {
+        s.push_str("/>\n");
+    } else {
+        s.push_str(">\n");
+        for c in &x.extra_children {
+            let _ = writeln!(s, "{ind}   {}", c.trim());
+        }
+        let _ = writeln!(s, "{ind}</{tag}>");
+    }
+}
+
+fn to8(v: f64) -> u8 {
+    (v.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+fn write_palette(s: &mut String, g: &Gradient, ind: &str) {
+    let rgba = !g.is_opaque();
+    let fmt = if rgba { "RGBA" } else { "RGB" };
+    let _ = writeln!(s, "{ind}<palette count=\"{}\" format=\"{fmt}\">", g.colors.len());
+    for line in g.colors.chunks(8) {
+        s.push_str(ind);
+        s.push_str("   ");
+        for c in line {
+            let _ = write!(s, "{:02X}{:02X}{:02X}", to8(c[0]), to8(c[1]), to8(c[2]));
+            if rgba {
+                let _ = write!(s, "{:02X}", to8(c[3]));
+            }
+        }
+        s.push('\n');
+    }
+    let _ = writeln!(s, "{ind}</palette>");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn opts() -> ReadOptions<'static> {
+        ReadOptions {
+            file: "t.flame".into(),
+            library: LibrarySource::Paths(vec![]),
+            ..ReadOptions::default()
+        }
+    }
+
+    const SIMPLE: &str = r#"<flames name="test">
+<flame name="a" size="64 48" center="0.5 -0.25" scale="20" quality="50" brightness="3" gamma="2.5">
+  <xform weight="0.5" color="0" spherical="1" coefs="0.85 -0.04 0.04 0.85 0 1.6"/>
+  <xform weight="0.25" color="1" symmetry="1" julian="0.5" julian_power="3" julian_dist="-1" coefs="1 0 0 1 0 0" post="0.5 0 0 0.5 0.1 0.2" chaos="1 0"/>
+  <finalxform color="0.5" color_speed="0" linear="1" coefs="1 0 0 1 0 0"/>
+  <color index="0" rgb="255 0 0"/>
+  <color index="255" rgb="0 0 255"/>
+  <edit date="today"><edit nick="x"/></edit>
+</flame>
+</flames>"#;
+
+    #[test]
+    fn reads_attributes_and_palette() {
+        let p = read(SIMPLE, &opts()).unwrap();
+        let ff = p.value;
+        assert_eq!(ff.name, "test");
+        let f = &ff.flames[0];
+        assert_eq!((f.width, f.height), (64, 48));
+        assert_eq!(f.center, [0.5, -0.25]);
+        assert_eq!(f.quality, 50.0);
+        assert_eq!(f.gamma, 2.5);
+        assert_eq!(f.gamma_threshold, 0.01);
+        assert_eq!(f.xforms.len(), 2);
+        let x0 = &f.xforms[0];
+        // coefs are "a c b d e f".
+        assert_eq!(x0.coefs, Affine::new(0.85, 0.04, -0.04, 0.85, 0.0, 1.6));
+        assert_eq!(x0.var_weight(variations::SPHERICAL), 0.5 * 2.0);
+        let x1 = &f.xforms[1];
+        assert_eq!(x1.color_speed, 0.0);
+        let j = x1.var(variations::JULIAN).unwrap();
+        assert_eq!(j.params, vec![3.0, -1.0]);
+        assert_eq!(x1.chaos, vec![1.0, 0.0]);
+        assert_eq!(x1.post.e, 0.1);
+        let fx = f.final_xform.as_ref().unwrap();
+        assert_eq!(fx.color_speed, 0.0);
+        // Undefined palette entries are interpolated.
+        assert_eq!(f.palette.colors[0][0], 1.0);
+        assert_eq!(f.palette.colors[255][2], 1.0);
+        assert!((f.palette.colors[128][0] - (127.0 / 255.0)).abs() < 1e-12);
+        assert_eq!(f.extra_children.len(), 1);
+        assert!(f.extra_children[0].starts_with("<edit date=\"today\">"));
+    }
+
+    #[test]
+    fn round_trip_is_lossless() {
+        let src = r#"<flame name="r" size="10 10" center="0 0" scale="5" foo="bar">
+<xform weight="1" color="0.3" linear="0.7" waves="0.3" coefs="1 2 3 4 5 6" animate="0" my_plugin="2" my_plugin_amount="0.5"/>
+<palette count="2" format="RGB">FF000000FF00</palette></flame>"#;
+        let a = read(src, &opts()).unwrap();
+        assert!(a.warnings.iter().any(|w| w.message.contains("my_plugin")));
+        let text = write(&a.value);
+        let b = read(&text, &opts()).unwrap().value;
+        assert_eq!(a.value.flames, b.flames);
+        let x = &b.flames[0].xforms[0];
+        assert!(x.extra_attrs.contains(&("my_plugin".into(), "2".into())));
+        assert!(b.flames[0].extra_attrs.contains(&("foo".into(), "bar".into())));
+        // Writing again gives the same text.
+        assert_eq!(write(&b), text);
+    }
+
+    #[test]
+    fn hex_palette_and_errors_have_positions() {
+        let bad = "<flame size=\"1 x\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>";
+        let e = read(bad, &opts()).unwrap_err();
+        assert_eq!(e.code, "XML003");
+        assert_eq!(e.line(), Some(1));
+        let e = read("<flame><xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML005");
+        let e = read("<flame>\n<xform weight=\"1\" coefs=\"1 0 0 1 0\"/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML004");
+        assert_eq!(e.pos, Pos::LineCol(2, 26));
+        let e = read("<flame><xform weight=\"0\" coefs=\"1 0 0 1 0 0\"/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML007");
+        let e = read("<flame><xform weight=\"1\"/><finalxform/><finalxform/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML006");
+        let e = read("<flames/>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML002");
+        let e = read("<flame><xform weight='1'/>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML001");
+        let e = read("<flame palette=\"3\"><xform weight='1'/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML011");
+        assert!(e.message.contains("flam3-palettes.xml"), "{e}");
+        let e = read(
+            "<flame><xform weight='1'/><palette count=\"2\" format=\"RGB\">FF00 00FF0000</palette></flame>",
+            &opts(),
+        )
+        .unwrap_err();
+        assert_eq!(e.code, "XML010");
+        let e = read("<flame estimator_radius=\"1\" estimator_minimum=\"2\"><xform weight='1'/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML012");
+        let e = read("<flame quality=\"0\"><xform weight='1'/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML013");
+        let e = read("<flame><xform weight='1' chaos='1 -1'/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML008");
+        let e = read("<flame><xform weight='1'/><color index='256' rgb='1 2 3'/></flame>", &opts()).unwrap_err();
+        assert_eq!(e.code, "XML009");
+        let e = read("<flame><xform weight='1' color='0,5'/></flame>", &opts()).unwrap_err();
+        assert!(e.message.contains("decimal separator"), "{e}");
+    }
+
+    #[test]
+    fn fla_rules() {
+        let o = ReadOptions { fla: true, ..opts() };
+        let e = read("<pick><flame name='a'><xform weight='1'/></flame></pick>", &o).unwrap_err();
+        assert_eq!(e.code, "FLA001");
+        let e = read(
+            "<flames>\n<flame name='a'><xform weight='1'/></flame>\n<flame name='a'><xform weight='1'/></flame></flames>",
+            &o,
+        )
+        .unwrap_err();
+        assert_eq!(e.code, "FLA002");
+        assert!(e.message.contains("2:1"), "{e}");
+        let e = read("<flames><flame name='a' ugnis_kind='x'><xform weight='1'/></flame></flames>", &o).unwrap_err();
+        assert_eq!(e.code, "FLA004");
+    }
+
+    #[test]
+    fn several_roots_and_pick() {
+        let src = "<pick><flame name='a'><xform weight='1' linear='1'/></flame><flame name='b'><xform weight='1'/></flame></pick>";
+        let f = read(src, &opts()).unwrap().value;
+        assert_eq!(f.flames.len(), 2);
+        assert_eq!(f.flames[1].name, "b");
+        // No colour data → default gradient with a warning.
+        let p = read(src, &opts()).unwrap();
+        assert!(p.warnings.iter().any(|w| w.code == "XML018"));
+    }
+
+    #[test]
+    fn legacy_forms() {
+        let src = "<flame angle=\"0.5\" oversample=\"2\" contrast=\"2\"><xform weight='1' var='0 0 1' coefs='1 0 0 1 0 0' plotmode='off'/><xform weight='1' var1='14'/><symmetry kind='3'/></flame>";
+        let f = &read(src, &opts()).unwrap().value.flames[0];
+        assert!((f.rotate + 0.5f64.to_degrees()).abs() < 1e-12);
+        assert_eq!(f.supersample, 2);
+        assert_eq!(f.contrast, 2.0);
+        assert_eq!(f.xforms[0].var_weight(variations::SPHERICAL), 1.0);
+        assert_eq!(f.xforms[0].opacity, 0.0);
+        assert_eq!(f.xforms[1].var_weight(variations::BENT), 1.0);
+        assert_eq!(f.xforms.len(), 4);
+    }
+
+    #[test]
+    fn writer_follows_apophysis_line_rules() {
+        let f = read(SIMPLE, &opts()).unwrap().value;
+        let t = write(&f);
+        for line in t.lines() {
+            if line.contains("<flame ") {
+                assert!(line.trim_start().starts_with("<flame ") && line.ends_with('>'));
+            }
+        }
+        assert!(t.lines().any(|l| l.trim() == "</flame>"));
+        assert!(t.contains("new_linear=\"1\""));
+        // symmetry written before color_speed when s ≠ 0.5
+        assert!(t.contains("symmetry=\"1\" color_speed=\"0\""));
+        // Palette as zero-padded upper-case hex, 8 colours per line.
+        assert!(t.contains("FF0000FE0001"), "{t}");
+        assert!(!t.contains("ugnis_kind") || t.contains("ugnis_kind=\"flame\""));
+    }
+}

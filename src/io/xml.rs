@@ -1,0 +1,179 @@
+//! Small helpers over quick-xml: events with byte positions and attribute scanning that keeps
+//! the position of every value, so errors can name line and column.
+
+use std::borrow::Cow;
+
+use quick_xml::Reader;
+use quick_xml::events::Event;
+
+/// One attribute of a start tag.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Attr<'a> {
+    pub name: &'a str,
+    /// Unescaped value.
+    pub value: Cow<'a, str>,
+    /// Byte offset of the value's first character in the source.
+    pub offset: usize,
+}
+
+/// Scan the attributes of a tag. `content` is the text between `<` and `>` (or `/>`), which
+/// starts at byte `base` of the source. Errors carry the byte offset and a message.
+pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, String)> {
+    let b = content.as_bytes();
+    let mut i = 0;
+    // Element name.
+    while i < b.len() && !b[i].is_ascii_whitespace() && b[i] != b'/' {
+        i += 1;
+    }
+    let mut out = Vec::new();
+    loop {
+        while i < b.len() && b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        if i >= b.len() || b[i] == b'/' {
+            break;
+        }
+        let ns = i;
+        while i < b.len() && b[i] != b'=' && !b[i].is_ascii_whitespace() && b[i] != b'/' {
+            i += 1;
+        }
+        let name = &content[ns..i];
+        while i < b.len() && b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        if i >= b.len() || b[i] != b'=' {
+            return Err((base + ns, format!("attribute '{name}' has no value")));
+        }
+        i += 1;
+        while i < b.len() && b[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        if i >= b.len() || (b[i] != b'"' && b[i] != b'\'') {
+            return Err((base + i, format!("value of attribute '{name}' must be quoted")));
+        }
+        let q = b[i];
+        i += 1;
+        let vs = i;
+        while i < b.len() && b[i] != q {
+            i += 1;
+        }
+        if i >= b.len() {
+            return Err((base + vs, format!("value of attribute '{name}' is not closed")));
+        }
+        let raw = &content[vs..i];
+        i += 1;
+        let value = quick_xml::escape::unescape(raw)
+            .map_err(|e| (base + vs, format!("attribute '{name}': {e}")))?;
+        if out.iter().any(|a: &Attr| a.name == name) {
+            return Err((base + ns, format!("attribute '{name}' appears twice")));
+        }
+        out.push(Attr {
+            name,
+            value,
+            offset: base + vs,
+        });
+    }
+    Ok(out)
+}
+
+/// An XML event with the byte range it occupies in the source.
+pub struct Positioned<'a> {
+    pub event: Event<'a>,
+    pub start: usize,
+    pub end: usize,
+}
+
+/// A quick-xml reader over a string that reports byte positions.
+pub struct XmlCursor<'a> {
+    reader: Reader<&'a [u8]>,
+}
+
+impl<'a> XmlCursor<'a> {
+    pub fn new(text: &'a str) -> Self {
+        let mut reader = Reader::from_str(text);
+        let c = reader.config_mut();
+        c.trim_text(false);
+        c.check_end_names = true;
+        c.expand_empty_elements = false;
+        XmlCursor { reader }
+    }
+
+    /// The next event, or an error with its byte offset.
+    pub fn next(&mut self) -> Result<Positioned<'a>, (usize, String)> {
+        let start = self.reader.buffer_position() as usize;
+        match self.reader.read_event() {
+            Ok(event) => Ok(Positioned {
+                event,
+                start,
+                end: self.reader.buffer_position() as usize,
+            }),
+            Err(e) => Err((self.reader.error_position() as usize, e.to_string())),
+        }
+    }
+
+    /// Skip to the end of the element whose start tag was just read; returns the end offset.
+    pub fn skip_element(&mut self) -> Result<usize, (usize, String)> {
+        let mut depth = 1usize;
+        loop {
+            let p = self.next()?;
+            match p.event {
+                Event::Start(_) => depth += 1,
+                Event::End(_) => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return Ok(p.end);
+                    }
+                }
+                Event::Eof => return Err((p.start, "unexpected end of file inside an element".into())),
+                _ => {}
+            }
+        }
+    }
+}
+
+/// Escape text for an attribute value.
+pub fn escape_attr(s: &str) -> Cow<'_, str> {
+    if !s.contains(['&', '<', '>', '"', '\'']) {
+        return Cow::Borrowed(s);
+    }
+    let mut o = String::with_capacity(s.len() + 8);
+    for ch in s.chars() {
+        match ch {
+            '&' => o.push_str("&amp;"),
+            '<' => o.push_str("&lt;"),
+            '>' => o.push_str("&gt;"),
+            '"' => o.push_str("&quot;"),
+            '\'' => o.push_str("&apos;"),
+            c => o.push(c),
+        }
+    }
+    Cow::Owned(o)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn attrs_with_positions() {
+        let src = r#"<xform weight="0.5" name='a &amp; b' coefs = "1 0 0 1 0 0"/>"#;
+        let content = &src[1..src.len() - 2];
+        let a = scan_attrs(content, 1).unwrap();
+        assert_eq!(a.len(), 3);
+        assert_eq!(a[0].name, "weight");
+        assert_eq!(a[0].value, "0.5");
+        assert_eq!(&src[a[0].offset..a[0].offset + 3], "0.5");
+        assert_eq!(a[1].value, "a & b");
+        assert_eq!(a[2].value, "1 0 0 1 0 0");
+        assert!(scan_attrs("x a=1", 0).is_err());
+        assert!(scan_attrs("x a", 0).is_err());
+        assert!(scan_attrs("x a=\"1", 0).is_err());
+        assert!(scan_attrs("x a=\"1\" a=\"2\"", 0).is_err());
+    }
+
+    #[test]
+    fn escaping() {
+        assert_eq!(escape_attr("plain"), "plain");
+        assert_eq!(escape_attr("a<\"b\"&"), "a&lt;&quot;b&quot;&amp;");
+    }
+}

@@ -1,0 +1,16 @@
+//! ugnis — a fractal editor's engine: fractal flames and IFS (flam3-compatible renderer),
+//! escape-time fractals and textured Bezier scenes, plus readers and writers for the file
+//! formats of Fractint, flam3, Apophysis and Ultra Fractal.
+//!
+//! The engine (`flame`, `gradient`) has no GUI dependency; `io` reads and writes files on top
+//! of it; the egui application lives in `app` behind the `gui` feature.
+
+pub mod flame;
+pub mod gradient;
+pub mod io;
+
+#[cfg(feature = "gui")]
+pub mod app;
+
+/// ugnis's version, as written into files.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

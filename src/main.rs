@@ -1,0 +1,42 @@
+//! ugnis: the desktop fractal editor (no arguments) and its command line.
+
+mod cli;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser, Debug)]
+#[command(name = "ugnis", version, about = "Fractal flames, IFS, escape-time fractals and textured Bezier scenes")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    /// File to open in the editor (when no subcommand is given)
+    file: Option<std::path::PathBuf>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Render a flame file to PNG or BMP
+    Render(cli::render::RenderArgs),
+}
+
+fn main() {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Some(Command::Render(a)) => cli::render::run(a),
+        None => run_gui(cli.file),
+    };
+    if let Err(e) = result {
+        eprintln!("error: {e:#}");
+        std::process::exit(1);
+    }
+}
+
+#[cfg(feature = "gui")]
+fn run_gui(file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
+    ugnis::app::run(file)
+}
+
+#[cfg(not(feature = "gui"))]
+fn run_gui(_file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
+    anyhow::bail!("this build has no GUI (built without the 'gui' feature); use a subcommand, see --help")
+}
