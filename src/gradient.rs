@@ -46,7 +46,13 @@ impl Gradient {
     pub fn from_rgb8(name: impl Into<String>, rgb: &[[u8; 3]]) -> Self {
         let v: Vec<[f64; 3]> = rgb
             .iter()
-            .map(|c| [c[0] as f64 / 255.0, c[1] as f64 / 255.0, c[2] as f64 / 255.0])
+            .map(|c| {
+                [
+                    c[0] as f64 / 255.0,
+                    c[1] as f64 / 255.0,
+                    c[2] as f64 / 255.0,
+                ]
+            })
             .collect();
         Self::from_rgb(name, &v)
     }
@@ -146,7 +152,11 @@ fn interpolate_stops(s: &[Stop], t: f64) -> [f64; 3] {
             for w in s.windows(2) {
                 if t <= w[1].pos {
                     let span = w[1].pos - w[0].pos;
-                    let u = if span > 0.0 { (t - w[0].pos) / span } else { 1.0 };
+                    let u = if span > 0.0 {
+                        (t - w[0].pos) / span
+                    } else {
+                        1.0
+                    };
                     return [
                         w[0].rgb[0] + (w[1].rgb[0] - w[0].rgb[0]) * u,
                         w[0].rgb[1] + (w[1].rgb[1] - w[0].rgb[1]) * u,
@@ -233,7 +243,12 @@ mod tests {
 
     #[test]
     fn hsv_round_trip() {
-        for rgb in [[1.0, 0.5, 0.0], [0.2, 0.4, 0.9], [0.0, 0.0, 0.0], [0.7, 0.7, 0.7]] {
+        for rgb in [
+            [1.0, 0.5, 0.0],
+            [0.2, 0.4, 0.9],
+            [0.0, 0.0, 0.0],
+            [0.7, 0.7, 0.7],
+        ] {
             let back = hsv_to_rgb(rgb_to_hsv(rgb));
             for k in 0..3 {
                 assert!((back[k] - rgb[k]).abs() < 1e-12, "{rgb:?} -> {back:?}");
@@ -248,8 +263,14 @@ mod tests {
         let g = Gradient::from_stops(
             "bw",
             &[
-                Stop { pos: 0.0, rgb: [0.0, 0.0, 0.0] },
-                Stop { pos: 1.0, rgb: [1.0, 1.0, 1.0] },
+                Stop {
+                    pos: 0.0,
+                    rgb: [0.0, 0.0, 0.0],
+                },
+                Stop {
+                    pos: 1.0,
+                    rgb: [1.0, 1.0, 1.0],
+                },
             ],
         );
         assert_eq!(g.colors[0][0], 0.0);

@@ -5,7 +5,11 @@ mod cli;
 use clap::{Parser, Subcommand};
 
 #[derive(Parser, Debug)]
-#[command(name = "ugnis", version, about = "Fractal flames, IFS, escape-time fractals and textured Bezier scenes")]
+#[command(
+    name = "ugnis",
+    version,
+    about = "Fractal flames, IFS, escape-time fractals and textured Bezier scenes"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -38,5 +42,7 @@ fn run_gui(file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
 
 #[cfg(not(feature = "gui"))]
 fn run_gui(_file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
-    anyhow::bail!("this build has no GUI (built without the 'gui' feature); use a subcommand, see --help")
+    anyhow::bail!(
+        "this build has no GUI (built without the 'gui' feature); use a subcommand, see --help"
+    )
 }

@@ -11,7 +11,11 @@ pub fn run(file: Option<PathBuf>) -> Result<(), eframe::Error> {
         renderer: eframe::Renderer::Glow,
         ..Default::default()
     };
-    eframe::run_native("ugnis", options, Box::new(move |_cc| Ok(Box::new(Placeholder { file }))))
+    eframe::run_native(
+        "ugnis",
+        options,
+        Box::new(move |_cc| Ok(Box::new(Placeholder { file }))),
+    )
 }
 
 struct Placeholder {

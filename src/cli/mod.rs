@@ -27,10 +27,18 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s
         .split_once(['x', 'X'])
         .ok_or_else(|| format!("size '{s}' must be WIDTHxHEIGHT, e.g. 640x480"))?;
-    let w: u32 = w.trim().parse().map_err(|_| format!("width '{w}' is not a positive integer"))?;
-    let h: u32 = h.trim().parse().map_err(|_| format!("height '{h}' is not a positive integer"))?;
+    let w: u32 = w
+        .trim()
+        .parse()
+        .map_err(|_| format!("width '{w}' is not a positive integer"))?;
+    let h: u32 = h
+        .trim()
+        .parse()
+        .map_err(|_| format!("height '{h}' is not a positive integer"))?;
     if w == 0 || h == 0 || w > 100_000 || h > 100_000 {
-        return Err(format!("size {w}x{h} must be between 1x1 and 100000x100000"));
+        return Err(format!(
+            "size {w}x{h} must be between 1x1 and 100000x100000"
+        ));
     }
     Ok((w, h))
 }

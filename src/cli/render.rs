@@ -76,7 +76,12 @@ pub fn load_flames(input: &Path, palettes: Option<&PathBuf>, strict: bool) -> Re
 }
 
 /// Pick one flame by --index or --name (default: the first).
-pub fn select(flames: Vec<Flame>, index: Option<usize>, name: Option<&str>, input: &Path) -> Result<Flame> {
+pub fn select(
+    flames: Vec<Flame>,
+    index: Option<usize>,
+    name: Option<&str>,
+    input: &Path,
+) -> Result<Flame> {
     let n = flames.len();
     if let Some(name) = name {
         return flames
@@ -85,10 +90,12 @@ pub fn select(flames: Vec<Flame>, index: Option<usize>, name: Option<&str>, inpu
             .with_context(|| format!("{}: no flame named '{name}'", input.display()));
     }
     let i = index.unwrap_or(0);
-    flames
-        .into_iter()
-        .nth(i)
-        .with_context(|| format!("{}: flame index {i} is out of range (the file holds {n})", input.display()))
+    flames.into_iter().nth(i).with_context(|| {
+        format!(
+            "{}: flame index {i} is out of range (the file holds {n})",
+            input.display()
+        )
+    })
 }
 
 pub fn run(a: RenderArgs) -> Result<()> {
@@ -106,7 +113,10 @@ pub fn run(a: RenderArgs) -> Result<()> {
     if let Some(s) = a.supersample {
         flame.supersample = s;
     }
-    let out = a.output.clone().unwrap_or_else(|| a.input.with_extension("png"));
+    let out = a
+        .output
+        .clone()
+        .unwrap_or_else(|| a.input.with_extension("png"));
     let is_bmp = io::kind_of(&out) == FileKind::Bmp;
     if !is_bmp && io::kind_of(&out) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", out.display());
@@ -123,8 +133,19 @@ pub fn run(a: RenderArgs) -> Result<()> {
             transparent: a.transparent,
         },
     };
-    let mut r = Renderer::new(&flame, &opts).with_context(|| format!("cannot render '{}'", flame.name))?;
-    let pb = super::progress_bar(1000, &format!("rendering {}", if flame.name.is_empty() { "flame" } else { &flame.name }));
+    let mut r =
+        Renderer::new(&flame, &opts).with_context(|| format!("cannot render '{}'", flame.name))?;
+    let pb = super::progress_bar(
+        1000,
+        &format!(
+            "rendering {}",
+            if flame.name.is_empty() {
+                "flame"
+            } else {
+                &flame.name
+            }
+        ),
+    );
     let never = AtomicBool::new(false);
     r.run_all(100, &never, |f| pb.set_position((f * 1000.0) as u64));
     pb.finish_and_clear();
@@ -138,7 +159,8 @@ pub fn run(a: RenderArgs) -> Result<()> {
         let mut meta = io::png::PngMeta::for_flame(&rendered);
         meta.samples = Some(samples);
         meta.error_rate = Some(rate);
-        io::png::save(&out, &img, &meta).with_context(|| format!("cannot write '{}'", out.display()))?;
+        io::png::save(&out, &img, &meta)
+            .with_context(|| format!("cannot write '{}'", out.display()))?;
     }
     Ok(())
 }

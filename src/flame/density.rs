@@ -41,11 +41,21 @@ pub enum DeError {
 
 impl DeFilters {
     /// Build the family, or `Ok(None)` when DE is off (radius 0).
-    pub fn new(radius: f64, minimum: f64, curve: f64, os: u32) -> Result<Option<DeFilters>, DeError> {
+    pub fn new(
+        radius: f64,
+        minimum: f64,
+        curve: f64,
+        os: u32,
+    ) -> Result<Option<DeFilters>, DeError> {
         if radius == 0.0 {
             return Ok(None);
         }
-        if !(radius >= minimum && minimum >= 0.0 && curve > 0.0 && radius.is_finite() && curve.is_finite()) {
+        if !(radius >= minimum
+            && minimum >= 0.0
+            && curve > 0.0
+            && radius.is_finite()
+            && curve.is_finite())
+        {
             return Err(DeError::Params(radius, minimum, curve));
         }
         let os_f = os as f64;
@@ -57,7 +67,10 @@ impl DeFilters {
         }
         let (nk, maxcount) = if nf > 100.0 {
             let nk = (100.0 + (nf - 100.0).powf(curve)).ceil() + 1.0;
-            (nk as usize, ((nk - 100.0).powf(1.0 / curve)).floor() + 100.0)
+            (
+                nk as usize,
+                ((nk - 100.0).powf(1.0 / curve)).floor() + 100.0,
+            )
         } else {
             (nf as usize, nf)
         };
@@ -185,8 +198,10 @@ impl DeFilters {
                             if i0 >= row.weights.len() {
                                 continue;
                             }
-                            let len = (row.weights.len() - i0).min(bw.saturating_sub(x_start as usize));
-                            let dst = &mut win[base + x_start as usize..base + x_start as usize + len];
+                            let len =
+                                (row.weights.len() - i0).min(bw.saturating_sub(x_start as usize));
+                            let dst =
+                                &mut win[base + x_start as usize..base + x_start as usize + len];
                             for (d, &wgt) in dst.iter_mut().zip(&row.weights[i0..i0 + len]) {
                                 d[0] += v[0] * wgt;
                                 d[1] += v[1] * wgt;
@@ -240,10 +255,25 @@ mod tests {
         assert_eq!(de.kmax, 109);
         assert_eq!(de.half, 9);
         let w = |n: f64| de.widths[de.select(n)];
-        for (n, want) in [(1.0, 10.0), (2.0, 7.5786), (3.0, 6.4439), (10.0, 3.9811), (50.0, 2.0913), (100.0, 1.5849)] {
+        for (n, want) in [
+            (1.0, 10.0),
+            (2.0, 7.5786),
+            (3.0, 6.4439),
+            (10.0, 3.9811),
+            (50.0, 2.0913),
+            (100.0, 1.5849),
+        ] {
             assert!((w(n) - want).abs() < 1e-4, "n={n}: {} vs {want}", w(n));
         }
-        for (n, k) in [(1.0, 0), (1.5, 1), (100.0, 99), (101.0, 101), (150.0, 104), (416.0, 109), (500.0, 109)] {
+        for (n, k) in [
+            (1.0, 0),
+            (1.5, 1),
+            (100.0, 99),
+            (101.0, 101),
+            (150.0, 104),
+            (416.0, 109),
+            (500.0, 109),
+        ] {
             assert_eq!(de.select(n), k, "n={n}");
         }
     }
@@ -252,7 +282,11 @@ mod tests {
     fn kernels_are_normalised() {
         let de = DeFilters::new(9.0, 0.0, 0.4, 1).unwrap().unwrap();
         for k in &de.kernels {
-            let s: f64 = k.iter().flat_map(|r| r.weights.iter()).map(|&w| w as f64).sum();
+            let s: f64 = k
+                .iter()
+                .flat_map(|r| r.weights.iter())
+                .map(|&w| w as f64)
+                .sum();
             assert!((s - 1.0).abs() < 1e-5);
         }
         assert!(DeFilters::new(0.0, 0.0, 0.4, 1).unwrap().is_none());

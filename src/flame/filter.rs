@@ -119,11 +119,19 @@ pub fn kernel(shape: FilterShape, x: f64) -> f64 {
         FilterShape::Hamming => 0.54 + 0.46 * (PI * x).cos(),
         FilterShape::Lanczos3 => {
             let t = x.abs();
-            if t < 3.0 { sinc(t) * sinc(t / 3.0) } else { 0.0 }
+            if t < 3.0 {
+                sinc(t) * sinc(t / 3.0)
+            } else {
+                0.0
+            }
         }
         FilterShape::Lanczos2 => {
             let t = x.abs();
-            if t < 2.0 { sinc(t) * sinc(t / 2.0) } else { 0.0 }
+            if t < 2.0 {
+                sinc(t) * sinc(t / 2.0)
+            } else {
+                0.0
+            }
         }
         FilterShape::Quadratic => {
             if x < -1.5 {
@@ -206,13 +214,25 @@ mod tests {
         let f = SpatialFilter::new(FilterShape::Gaussian, 0.5, 1);
         assert_eq!(f.width, 3);
         assert_eq!(f.gutter, 1);
-        assert!((f.weight(1, 1) - 0.998659).abs() < 1e-6, "{}", f.weight(1, 1));
+        assert!(
+            (f.weight(1, 1) - 0.998659).abs() < 1e-6,
+            "{}",
+            f.weight(1, 1)
+        );
         let f = SpatialFilter::new(FilterShape::Gaussian, 1.0, 1);
         assert_eq!(f.width, 5);
-        assert!((f.weight(2, 2) - 0.618694).abs() < 1e-6, "{}", f.weight(2, 2));
+        assert!(
+            (f.weight(2, 2) - 0.618694).abs() < 1e-6,
+            "{}",
+            f.weight(2, 2)
+        );
         let f = SpatialFilter::new(FilterShape::Gaussian, 0.5, 2);
         assert_eq!(f.width, 4);
-        assert!((f.weight(1, 1) - 0.241088).abs() < 1e-6, "{}", f.weight(1, 1));
+        assert!(
+            (f.weight(1, 1) - 0.241088).abs() < 1e-6,
+            "{}",
+            f.weight(1, 1)
+        );
         let f = SpatialFilter::new(FilterShape::Gaussian, 1.0, 2);
         assert_eq!(f.width, 8);
         assert_eq!(f.gutter, 3);

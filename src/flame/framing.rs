@@ -147,8 +147,11 @@ mod tests {
             ..Flame::default()
         };
         for (e, f) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)] {
-            fl.xforms
-                .push(Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, e, f), 1.0, 0.0));
+            fl.xforms.push(Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, e, f),
+                1.0,
+                0.0,
+            ));
         }
         let fr = auto_frame(&fl).unwrap();
         // The attractor is the triangle (0,0), (2,0), (0,2).

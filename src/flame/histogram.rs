@@ -88,8 +88,12 @@ impl Geometry {
     #[inline(always)]
     pub fn bucket_of(&self, x: f64, y: f64) -> Option<usize> {
         let (bx, by) = self.bucket_from_world.apply(x, y);
-        if bx >= 0.0 && by >= 0.0 && bx < self.bw as f64 && by < self.bh as f64 {
-            Some(by as usize * self.bw + bx as usize)
+        // floor(v) = trunc(v + 1) − 1 for v > −1, and anything ≤ −1 maps to a negative
+        // value: one saturating conversion per axis (NaN → −1), then unsigned range checks.
+        let ix = ((bx + 1.0) as i64).wrapping_sub(1);
+        let iy = ((by + 1.0) as i64).wrapping_sub(1);
+        if (ix as u64) < self.bw as u64 && (iy as u64) < self.bh as u64 {
+            Some(iy as usize * self.bw + ix as usize)
         } else {
             None
         }
@@ -126,8 +130,8 @@ impl PlotPalette {
     pub fn lookup(&self, c: f64) -> [f32; 4] {
         match self.mode {
             PaletteMode::Step => {
-                let k = (c * 256.0) as i64; // saturating cast; NaN → 0
-                self.colors[k.clamp(0, 255) as usize]
+                let k = (c * 256.0) as i32; // saturating cast; NaN → 0
+                self.colors[k.clamp(0, 255) as usize & 255]
             }
             PaletteMode::Linear => {
                 let f = c * 256.0;
@@ -231,7 +235,34 @@ mod tests {
         let g = Geometry::new(&f, None);
         // A point to the right of the centre (+x) ends up below it on screen (+row).
         let (bx, by) = g.bucket_from_world.apply(1.0, 0.0);
-        assert!((bx - 51.0).abs() < 1e-9 && (by - 61.0).abs() < 1e-9, "{bx} {by}");
+        assert!(
+            (bx - 51.0).abs() < 1e-9 && (by - 61.0).abs() < 1e-9,
+            "{bx} {by}"
+        );
+    }
+
+    #[test]
+    fn bucket_edges_are_half_open() {
+        let f = Flame {
+            width: 10,
+            height: 10,
+            scale: 1.0,
+            estimator_radius: 0.0,
+            filter: 0.0,
+            ..Flame::default()
+        };
+        let g = Geometry::new(&f, None);
+        assert_eq!(g.gutter, 0);
+        // World x = −5 is the left edge (bucket 0); −5 − ε is outside; +5 is outside.
+        assert_eq!(g.bucket_of(-5.0, -5.0), Some(0));
+        assert_eq!(g.bucket_of(-5.000001, -5.0), None);
+        assert_eq!(g.bucket_of(-5.5, -5.0), None);
+        assert_eq!(g.bucket_of(4.999, 4.999), Some(99));
+        assert_eq!(g.bucket_of(5.0, 0.0), None);
+        assert_eq!(g.bucket_of(f64::NAN, 0.0), None);
+        assert_eq!(g.bucket_of(1e300, 0.0), None);
+        assert_eq!(g.bucket_of(-1e300, 0.0), None);
+        assert_eq!(g.bucket_of(0.5, 1.5), Some(6 * 10 + 5));
     }
 
     #[test]

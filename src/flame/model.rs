@@ -449,7 +449,9 @@ impl Flame {
         for x in self.xforms.iter().chain(self.final_xform.iter()) {
             for (n, w) in x.unsupported_vars() {
                 if w != 0.0 && !seen.contains(&n) {
-                    out.push(format!("variation '{n}' (weight {w}) not supported; ignored"));
+                    out.push(format!(
+                        "variation '{n}' (weight {w}) not supported; ignored"
+                    ));
                     seen.push(n);
                 }
             }
@@ -516,7 +518,10 @@ mod tests {
         let t = m.triangle();
         let want = [[0.5, -0.25], [0.8, -0.05], [1.2, -1.15]];
         for (p, q) in t.iter().zip(want) {
-            assert!((p[0] - q[0]).abs() < 1e-12 && (p[1] - q[1]).abs() < 1e-12, "{t:?}");
+            assert!(
+                (p[0] - q[0]).abs() < 1e-12 && (p[1] - q[1]).abs() < 1e-12,
+                "{t:?}"
+            );
         }
         let back = Affine::from_triangle(t);
         for (p, q) in [back.a, back.b, back.c, back.d, back.e, back.f]
@@ -562,7 +567,10 @@ mod tests {
         for (p, q) in w.iter().zip([0.000999, 0.772261, 0.110704, 0.116036]) {
             assert!((p - q).abs() < 1e-6, "{w:?}");
         }
-        assert_eq!(Flame::determinant_weights(&[Affine::new(0.0, 0.0, 0.0, 0.0, 1.0, 1.0); 4]), vec![0.25; 4]);
+        assert_eq!(
+            Flame::determinant_weights(&[Affine::new(0.0, 0.0, 0.0, 0.0, 1.0, 1.0); 4]),
+            vec![0.25; 4]
+        );
     }
 
     #[test]

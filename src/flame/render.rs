@@ -20,7 +20,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use image::DynamicImage;
 use rayon::prelude::*;
 
-use crate::flame::chaos::{Chaos, ChaosError, SUB_BATCH, Scratch};
+use crate::flame::chaos::{Chaos, ChaosError, Lanes, SUB_BATCH};
 use crate::flame::density::{DeError, DeFilters};
 use crate::flame::framing;
 use crate::flame::histogram::{Bucket, Geometry, Histogram, PlotPalette};
@@ -87,7 +87,8 @@ pub struct MemoryEstimate {
 pub fn estimate_memory(flame: &Flame, threads: usize, format: OutputFormat) -> MemoryEstimate {
     let os = flame.supersample.max(1) as u64;
     let g = {
-        let f = crate::flame::filter::SpatialFilter::new(flame.filter_shape, flame.filter, os as u32);
+        let f =
+            crate::flame::filter::SpatialFilter::new(flame.filter_shape, flame.filter, os as u32);
         let de = if flame.estimator_radius > 0.0 {
             flame.estimator_radius.ceil() as u64 * os + (os - 1)
         } else {
@@ -128,7 +129,10 @@ fn resolve_threads(t: usize) -> usize {
 pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     let bad = |m: String| Err(RenderError::Settings(m));
     if flame.width == 0 || flame.height == 0 {
-        return bad(format!("image size {}×{} must be at least 1×1", flame.width, flame.height));
+        return bad(format!(
+            "image size {}×{} must be at least 1×1",
+            flame.width, flame.height
+        ));
     }
     if !(flame.scale > 0.0 && flame.scale.is_finite()) {
         return bad(format!("scale {} must be positive", flame.scale));
@@ -146,7 +150,10 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
         return bad(format!("brightness {} must be positive", flame.brightness));
     }
     if flame.supersample == 0 || flame.supersample > 16 {
-        return bad(format!("supersample {} must be in 1..16", flame.supersample));
+        return bad(format!(
+            "supersample {} must be in 1..16",
+            flame.supersample
+        ));
     }
     if !(flame.filter >= 0.0 && flame.filter <= 100.0) {
         return bad(format!("filter radius {} must be in 0..100", flame.filter));
@@ -164,6 +171,8 @@ pub struct Renderer {
     geom: Geometry,
     palette: PlotPalette,
     hists: Vec<Histogram>,
+    /// Each worker's orbits, kept between passes.
+    lanes: Vec<Box<Lanes>>,
     seed: u64,
     format: OutputFormat,
     total: u64,
@@ -217,12 +226,14 @@ impl Renderer {
         let hists = (0..threads)
             .map(|_| Histogram::new(geom.bw, geom.bh))
             .collect();
+        let lanes = (0..threads).map(|_| Lanes::new()).collect();
         let total = flame.total_samples().max(1);
         Ok(Renderer {
             palette: PlotPalette::new(&flame),
             chaos,
             geom,
             hists,
+            lanes,
             seed: opts.seed,
             format: opts.format,
             total,
@@ -286,8 +297,9 @@ impl Renderer {
             let handles: Vec<_> = self
                 .hists
                 .iter_mut()
+                .zip(self.lanes.iter_mut())
                 .enumerate()
-                .map(|(t, hist)| {
+                .map(|(t, (hist, lanes))| {
                     s.spawn(move || {
                         let mut done = 0u64;
                         let mut bad = 0u64;
@@ -295,14 +307,14 @@ impl Renderer {
                         let first = start + (t as u64 + threads - start % threads) % threads;
                         let mut j = first;
                         let mut buf = Vec::with_capacity(SUB_BATCH as usize);
-                        let mut scratch = Scratch::new();
                         while j < end {
                             if cancel.load(Ordering::Relaxed) {
                                 return (done, bad, true);
                             }
                             let n = SUB_BATCH.min(total - j * SUB_BATCH);
                             let mut rng = FastRng::for_stream(seed, j);
-                            bad += iterate_into(chaos, geom, pal, hist, &mut buf, &mut scratch, n, &mut rng);
+                            bad +=
+                                iterate_into(chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng);
                             done += n;
                             j += threads;
                         }
@@ -310,7 +322,10 @@ impl Renderer {
                     })
                 })
                 .collect();
-            handles.into_iter().map(|h| h.join().expect("render worker panicked")).collect()
+            handles
+                .into_iter()
+                .map(|h| h.join().expect("render worker panicked"))
+                .collect()
         });
         for (done, bad, cancelled) in results {
             self.samples_done += done;
@@ -323,7 +338,12 @@ impl Renderer {
 
     /// Run to the end, calling `progress(fraction)` after every pass of about 1/`passes` of
     /// the work. Returns false if cancelled.
-    pub fn run_all(&mut self, passes: u64, cancel: &AtomicBool, mut progress: impl FnMut(f64)) -> bool {
+    pub fn run_all(
+        &mut self,
+        passes: u64,
+        cancel: &AtomicBool,
+        mut progress: impl FnMut(f64),
+    ) -> bool {
         let step = self.total.div_ceil(passes.max(1));
         while !self.is_done() {
             if !self.run(step, cancel) {
@@ -385,6 +405,9 @@ impl Renderer {
     }
 }
 
+/// A plotted point waiting to be accumulated: bucket, colour coordinate, visibility.
+type Pending = (u32, f32, f32);
+
 /// Iterate one sub-batch into a histogram. The plotted points are first collected in `buf`
 /// and then added in a tight loop, so the cache misses of the scattered adds overlap.
 #[inline(never)]
@@ -393,36 +416,40 @@ fn iterate_into(
     geom: &Geometry,
     pal: &PlotPalette,
     hist: &mut Histogram,
-    buf: &mut Vec<(u32, [f32; 4])>,
-    scratch: &mut Scratch,
+    buf: &mut Vec<Pending>,
+    lanes: &mut Lanes,
     n: u64,
     rng: &mut FastRng,
 ) -> u64 {
     buf.clear();
-    let bad = chaos.run_lanes(n, rng, scratch, |x, y, c, vis| {
-        if vis <= 0.0 {
-            return;
-        }
-        if let Some(idx) = geom.bucket_of(x, y) {
-            let p = pal.lookup(c);
-            let v = vis as f32;
-            buf.push((idx as u32, [p[0] * v, p[1] * v, p[2] * v, p[3] * v]));
+    let bad = chaos.run_lanes(n, rng, lanes, |x, y, c, vis| {
+        if vis > 0.0
+            && let Some(idx) = geom.bucket_of(x, y)
+        {
+            buf.push((idx as u32, c as f32, vis as f32));
         }
     });
     let data = &mut hist.data;
-    for &(idx, p) in buf.iter() {
+    for &(idx, c, v) in buf.iter() {
+        let p = pal.lookup(c as f64);
         let b = &mut data[idx as usize];
-        b[0] += p[0];
-        b[1] += p[1];
-        b[2] += p[2];
-        b[3] += p[3];
+        b[0] += p[0] * v;
+        b[1] += p[1] * v;
+        b[2] += p[2] * v;
+        b[3] += p[3] * v;
     }
     bad
 }
 
 /// Turn a histogram into an image: log scaling (with density estimation when enabled),
 /// spatial filter with downsampling, tone mapping.
-pub fn develop(flame: &Flame, geom: &Geometry, hist: &Histogram, density: f64, format: OutputFormat) -> DynamicImage {
+pub fn develop(
+    flame: &Flame,
+    geom: &Geometry,
+    hist: &Histogram,
+    density: f64,
+    format: OutputFormat,
+) -> DynamicImage {
     let ls = LogScale::new(flame, density);
     let mut acc: Vec<Bucket> = Vec::new();
     let acc: &[Bucket] = match &geom.de {
@@ -447,7 +474,12 @@ pub fn develop(flame: &Flame, geom: &Geometry, hist: &Histogram, density: f64, f
 }
 
 /// Spatial filter (separable, downsampling by os) and tone mapping into the output image.
-fn filter_and_tonemap(flame: &Flame, geom: &Geometry, acc: &[Bucket], format: OutputFormat) -> DynamicImage {
+fn filter_and_tonemap(
+    flame: &Flame,
+    geom: &Geometry,
+    acc: &[Bucket],
+    format: OutputFormat,
+) -> DynamicImage {
     let (w, h, os) = (geom.width, geom.height, geom.os);
     let taps = &geom.filter.taps;
     let fw = geom.filter.width;
@@ -518,9 +550,13 @@ fn filter_and_tonemap(flame: &Flame, geom: &Geometry, acc: &[Bucket], format: Ou
             .enumerate()
             .for_each(|(b, chunk)| encode(b * BAND, None, Some(chunk)));
         if channels == 4 {
-            DynamicImage::ImageRgba16(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+            DynamicImage::ImageRgba16(
+                image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
+            )
         } else {
-            DynamicImage::ImageRgb16(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+            DynamicImage::ImageRgb16(
+                image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
+            )
         }
     } else {
         let mut buf = vec![0u8; row_len * h];
@@ -528,7 +564,9 @@ fn filter_and_tonemap(flame: &Flame, geom: &Geometry, acc: &[Bucket], format: Ou
             .enumerate()
             .for_each(|(b, chunk)| encode(b * BAND, Some(chunk), None));
         if channels == 4 {
-            DynamicImage::ImageRgba8(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+            DynamicImage::ImageRgba8(
+                image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
+            )
         } else {
             DynamicImage::ImageRgb8(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
         }

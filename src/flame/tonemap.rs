@@ -133,7 +133,11 @@ pub fn highlight(c: [f64; 3], ls: f64, hp: f64) -> [f64; 3] {
     let maxa = ls * c[m];
     let newls = 255.0 / c[m];
     if maxa > 255.0 && hp >= 0.0 {
-        let col = [newls * c[0] / 255.0, newls * c[1] / 255.0, newls * c[2] / 255.0];
+        let col = [
+            newls * c[0] / 255.0,
+            newls * c[1] / 255.0,
+            newls * c[2] / 255.0,
+        ];
         let mut hsv = rgb_to_hsv(col);
         hsv[1] *= (newls / ls).powf(hp);
         let col = hsv_to_rgb(hsv);
@@ -180,7 +184,12 @@ mod tests {
             ..Flame::default()
         };
         let tm = ToneMap::new(&f, false);
-        for (a, want) in [(0.001, 0.046243), (0.005, 0.212014), (0.01, 0.316228), (0.1, 0.562341)] {
+        for (a, want) in [
+            (0.001, 0.046243),
+            (0.005, 0.212014),
+            (0.01, 0.316228),
+            (0.1, 0.562341),
+        ] {
             assert!((tm.gamma_alpha(a) - want).abs() < 1e-6, "{a}");
         }
     }

@@ -171,15 +171,70 @@ pub fn is_implemented(_id: VarId) -> bool {
 /// render (a subset of well-known plugin names). Used to tell a variation from an arbitrary
 /// unknown attribute.
 const FOREIGN_VARIATIONS: &[&str] = &[
-    "linear3D", "bubble2", "cross2", "epispiral", "hemisphere", "julia3D", "juliaN", "julia3Dz",
-    "lissajous", "spirograph", "target", "truchet", "rose_wf", "polynomial", "splits3D",
-    "checks", "circlize", "circlecrop", "collideoscope", "crackle", "dc_linear", "eclipse",
-    "falloff2", "glynnia", "hypertile", "loonie2", "murl", "npolar", "ortho", "phoenix_julia",
-    "post_mirror_wf", "pre_rotate_x", "spherical3D", "sphericalN", "supershape3d", "swirl3",
-    "xheart", "zblur", "ztranslate", "zcone", "blur3D", "bwraps", "bwraps7", "cosh", "curl3D",
-    "exblur", "flipcircle", "flipy", "gdoffs", "hexes", "julian2", "juliaq", "lazyjess",
-    "mandelbrot", "nblur", "boarders2", "oscope", "pdj3d", "perspective2", "sinusoidal3d",
-    "tile_hlp", "waves2_3D", "wedge_julia_3D", "whorl3D",
+    "linear3D",
+    "bubble2",
+    "cross2",
+    "epispiral",
+    "hemisphere",
+    "julia3D",
+    "juliaN",
+    "julia3Dz",
+    "lissajous",
+    "spirograph",
+    "target",
+    "truchet",
+    "rose_wf",
+    "polynomial",
+    "splits3D",
+    "checks",
+    "circlize",
+    "circlecrop",
+    "collideoscope",
+    "crackle",
+    "dc_linear",
+    "eclipse",
+    "falloff2",
+    "glynnia",
+    "hypertile",
+    "loonie2",
+    "murl",
+    "npolar",
+    "ortho",
+    "phoenix_julia",
+    "post_mirror_wf",
+    "pre_rotate_x",
+    "spherical3D",
+    "sphericalN",
+    "supershape3d",
+    "swirl3",
+    "xheart",
+    "zblur",
+    "ztranslate",
+    "zcone",
+    "blur3D",
+    "bwraps",
+    "bwraps7",
+    "cosh",
+    "curl3D",
+    "exblur",
+    "flipcircle",
+    "flipy",
+    "gdoffs",
+    "hexes",
+    "julian2",
+    "juliaq",
+    "lazyjess",
+    "mandelbrot",
+    "nblur",
+    "boarders2",
+    "oscope",
+    "pdj3d",
+    "perspective2",
+    "sinusoidal3d",
+    "tile_hlp",
+    "waves2_3D",
+    "wedge_julia_3D",
+    "whorl3D",
 ];
 
 /// True for names of flam3 variations and well-known variations of other programs: attributes
@@ -407,8 +462,21 @@ fn sincos(a: f64) -> (f64, f64) {
 /// Signature of one variation's formula.
 pub type VarFn = fn(&Prepared, &Pre, &Affine, &mut FastRng) -> (f64, f64);
 
+/// Per-point quantities of a batch of points, as parallel arrays (all of the same length).
+/// Arrays of quantities the xform does not need may be empty.
+pub struct Soa<'a> {
+    pub x: &'a [f64],
+    pub y: &'a [f64],
+    pub sumsq: &'a [f64],
+    pub sqrt: &'a [f64],
+    pub atan: &'a [f64],
+    pub atanyx: &'a [f64],
+    pub sina: &'a [f64],
+    pub cosa: &'a [f64],
+}
+
 /// Signature of one variation applied to a batch of points: adds to `px`, `py`.
-pub type BatchFn = fn(&Prepared, &[Pre], &Affine, &mut FastRng, &mut [f64], &mut [f64]);
+pub type BatchFn = fn(&Prepared, &Soa, &Affine, &mut FastRng, &mut [f64], &mut [f64]);
 
 /// One function per variation: the match below collapses to a single arm for a constant id.
 /// (Inlining the whole match into the chaos-game loop lets LLVM speculate the transcendental
@@ -417,18 +485,43 @@ fn var_impl<const ID: u8>(v: &Prepared, t: &Pre, aff: &Affine, rng: &mut FastRng
     formula(ID, v, t, aff, rng)
 }
 
+/// The batch version: a loop the compiler can vectorise for variations without library calls.
 fn batch_impl<const ID: u8>(
     v: &Prepared,
-    pre: &[Pre],
+    s: &Soa,
     aff: &Affine,
     rng: &mut FastRng,
     px: &mut [f64],
     py: &mut [f64],
 ) {
-    for ((t, x), y) in pre.iter().zip(px.iter_mut()).zip(py.iter_mut()) {
-        let (dx, dy) = formula(ID, v, t, aff, rng);
-        *x += dx;
-        *y += dy;
+    let n = px.len();
+    let py = &mut py[..n];
+    let (x, y) = (&s.x[..n], &s.y[..n]);
+    let needs = Needs::of(ID);
+    let sumsq = &s.sumsq[..n];
+    let sqrt = &s.sqrt[..n];
+    // Arrays a variation does not need are not read (and may be empty).
+    let atan = if needs.atan { &s.atan[..n] } else { sqrt };
+    let atanyx = if needs.atanyx { &s.atanyx[..n] } else { sqrt };
+    let (sina, cosa) = if needs.sincos_a {
+        (&s.sina[..n], &s.cosa[..n])
+    } else {
+        (sqrt, sqrt)
+    };
+    for j in 0..n {
+        let t = Pre {
+            x: x[j],
+            y: y[j],
+            sumsq: sumsq[j],
+            sqrt: sqrt[j],
+            atan: atan[j],
+            atanyx: atanyx[j],
+            sina: sina[j],
+            cosa: cosa[j],
+        };
+        let (dx, dy) = formula(ID, v, &t, aff, rng);
+        px[j] += dx;
+        py[j] += dy;
     }
 }
 
@@ -782,10 +875,7 @@ fn formula(id: VarId, v: &Prepared, t: &Pre, aff: &Affine, rng: &mut FastRng) ->
         PARABOLA => {
             let (height, width) = (p[0], p[1]);
             let (sr, cr) = sincos(t.sqrt);
-            (
-                height * w * sr * sr * rng.f01(),
-                width * w * cr * rng.f01(),
-            )
+            (height * w * sr * sr * rng.f01(), width * w * cr * rng.f01())
         }
         BENT2 => {
             let nx = if x < 0.0 { x * p[0] } else { x };
@@ -1030,8 +1120,16 @@ fn formula(id: VarId, v: &Prepared, t: &Pre, aff: &Affine, rng: &mut FastRng) ->
             (nx, ny)
         }
         SPLITS => {
-            let nx = if x >= 0.0 { w * (x + p[0]) } else { w * (x - p[0]) };
-            let ny = if y >= 0.0 { w * (y + p[1]) } else { w * (y - p[1]) };
+            let nx = if x >= 0.0 {
+                w * (x + p[0])
+            } else {
+                w * (x - p[0])
+            };
+            let ny = if y >= 0.0 {
+                w * (y + p[1])
+            } else {
+                w * (y - p[1])
+            };
             (nx, ny)
         }
         STRIPES => {
@@ -1164,8 +1262,9 @@ fn formula(id: VarId, v: &Prepared, t: &Pre, aff: &Affine, rng: &mut FastRng) ->
             let spread = p[0];
             let xpw = x + w;
             let xmw = x - w;
-            let avgr =
-                w * (2.0 + spread) * ((y * y + xpw * xpw).sqrt() / (y * y + xmw * xmw).sqrt()).sqrt();
+            let avgr = w
+                * (2.0 + spread)
+                * ((y * y + xpw * xpw).sqrt() / (y * y + xmw * xmw).sqrt()).sqrt();
             let avga = (y.atan2(xmw) - y.atan2(xpw)) * 0.5;
             let (s, c) = sincos(avga);
             (avgr * c, avgr * s)
@@ -1197,7 +1296,15 @@ pub fn pre_blur(w: f64, x: f64, y: f64, rng: &mut FastRng) -> (f64, f64) {
 }
 
 /// Evaluate one variation at a point with unit weight (tests, the GUI's variation preview).
-pub fn eval(id: VarId, weight: f64, params: &[f64], aff: &Affine, x: f64, y: f64, rng: &mut FastRng) -> (f64, f64) {
+pub fn eval(
+    id: VarId,
+    weight: f64,
+    params: &[f64],
+    aff: &Affine,
+    x: f64,
+    y: f64,
+    rng: &mut FastRng,
+) -> (f64, f64) {
     let v = Prepared::new(id, weight, params);
     let t = Pre::full(x, y);
     apply(&v, &t, aff, rng)
@@ -1280,7 +1387,10 @@ mod tests {
             close(at(POLAR, x, y), (th / PI, r - 1.0), 1e-12);
             close(
                 at(BENT, x, y),
-                (if x < 0.0 { 2.0 * x } else { x }, if y < 0.0 { y / 2.0 } else { y }),
+                (
+                    if x < 0.0 { 2.0 * x } else { x },
+                    if y < 0.0 { y / 2.0 } else { y },
+                ),
                 1e-12,
             );
         }
@@ -1325,8 +1435,16 @@ mod tests {
         close(ev(POPCORN, &[], &dep, x, y), (0.569581, 1.066497), 1e-6);
         close(ev(RINGS, &[], &dep, x, y), (0.3, 0.225), 1e-6);
         close(ev(FAN, &[], &dep, x, y), (0.484357, 0.124090), 1e-6);
-        close(ev(BLOB, &[0.2, 1.0, 3.0], &Affine::IDENTITY, x, y), (0.292320, 0.389760), 1e-6);
-        close(ev(CURL, &[0.5, 0.2], &Affine::IDENTITY, x, y), (0.325444, 0.281065), 1e-6);
+        close(
+            ev(BLOB, &[0.2, 1.0, 3.0], &Affine::IDENTITY, x, y),
+            (0.292320, 0.389760),
+            1e-6,
+        );
+        close(
+            ev(CURL, &[0.5, 0.2], &Affine::IDENTITY, x, y),
+            (0.325444, 0.281065),
+            1e-6,
+        );
     }
 
     /// Formulas of flame.md §4.2 evaluated independently at several points.
@@ -1339,8 +1457,16 @@ mod tests {
             let th = f64::atan2(x, y);
             let phi = f64::atan2(y, x);
             let (sa, ca) = (x / r, y / r);
-            close(at(HANDKERCHIEF, x, y), (r * (th + r).sin(), r * (th - r).cos()), 1e-12);
-            close(at(HEART, x, y), (r * (r * th).sin(), -r * (r * th).cos()), 1e-12);
+            close(
+                at(HANDKERCHIEF, x, y),
+                (r * (th + r).sin(), r * (th - r).cos()),
+                1e-12,
+            );
+            close(
+                at(HEART, x, y),
+                (r * (r * th).sin(), -r * (r * th).cos()),
+                1e-12,
+            );
             close(
                 at(DISC, x, y),
                 (th / PI * (PI * r).sin(), th / PI * (PI * r).cos()),
@@ -1363,7 +1489,10 @@ mod tests {
             close(at(EYEFISH, x, y), (k * x, k * y), 1e-12);
             close(
                 at(EXPONENTIAL, x, y),
-                ((x - 1.0).exp() * (PI * y).cos(), (x - 1.0).exp() * (PI * y).sin()),
+                (
+                    (x - 1.0).exp() * (PI * y).cos(),
+                    (x - 1.0).exp() * (PI * y).sin(),
+                ),
                 1e-12,
             );
             close(at(POWER, x, y), (r.powf(sa) * ca, r.powf(sa) * sa), 1e-12);
@@ -1372,7 +1501,11 @@ mod tests {
                 ((PI * x).cos() * y.cosh(), -(PI * x).sin() * y.sinh()),
                 1e-12,
             );
-            close(at(BUBBLE, x, y), (x / (r2 / 4.0 + 1.0), y / (r2 / 4.0 + 1.0)), 1e-12);
+            close(
+                at(BUBBLE, x, y),
+                (x / (r2 / 4.0 + 1.0), y / (r2 / 4.0 + 1.0)),
+                1e-12,
+            );
             close(at(CYLINDER, x, y), (x.sin(), y), 1e-12);
             close(at(TANGENT, x, y), (x.sin() / y.cos(), y.tan()), 1e-12);
             let s = x * x - y * y;
@@ -1391,18 +1524,29 @@ mod tests {
             let (pa, pb, pc, pd) = (0.7, -1.3, 2.1, 0.4);
             close(
                 ev(PDJ, &[pa, pb, pc, pd], &Affine::IDENTITY, x, y),
-                ((pa * y).sin() - (pb * x).cos(), (pc * x).sin() - (pd * y).cos()),
+                (
+                    (pa * y).sin() - (pb * x).cos(),
+                    (pc * x).sin() - (pd * y).cos(),
+                ),
                 1e-12,
             );
             // blob
             let (lo, hi, wv) = (0.3, 1.2, 4.0);
             let rb = r * (lo + (hi - lo) * (0.5 + 0.5 * (wv * th).sin()));
-            close(ev(BLOB, &[lo, hi, wv], &Affine::IDENTITY, x, y), (rb * sa, rb * ca), 1e-12);
+            close(
+                ev(BLOB, &[lo, hi, wv], &Affine::IDENTITY, x, y),
+                (rb * sa, rb * ca),
+                1e-12,
+            );
             // rings2
             let val: f64 = 0.6;
             let dl = val * val + EPS;
             let rho2 = r - 2.0 * dl * ((r + dl) / (2.0 * dl)).trunc() + r * (1.0 - dl);
-            close(ev(RINGS2, &[val], &Affine::IDENTITY, x, y), (rho2 * sa, rho2 * ca), 1e-12);
+            close(
+                ev(RINGS2, &[val], &Affine::IDENTITY, x, y),
+                (rho2 * sa, rho2 * ca),
+                1e-12,
+            );
             // fan2
             let (fx, fy): (f64, f64) = (0.8, 0.3);
             let dl = PI * (fx * fx + EPS);
@@ -1434,7 +1578,10 @@ mod tests {
             );
             close(
                 ev(POPCORN, &[], &aff, x, y),
-                (x + aff.e * (3.0 * y).tan().sin(), y + aff.f * (3.0 * x).tan().sin()),
+                (
+                    x + aff.e * (3.0 * y).tan().sin(),
+                    y + aff.f * (3.0 * x).tan().sin(),
+                ),
                 1e-12,
             );
             let dl = aff.e * aff.e + EPS;
@@ -1443,7 +1590,11 @@ mod tests {
             let dl = PI * (aff.e * aff.e + EPS);
             let h = dl / 2.0;
             let al = th + if (th + aff.f) % dl > h { -h } else { h };
-            close(ev(FAN, &[], &aff, x, y), (r * al.cos(), r * al.sin()), 1e-12);
+            close(
+                ev(FAN, &[], &aff, x, y),
+                (r * al.cos(), r * al.sin()),
+                1e-12,
+            );
             // curl
             let (c1, c2) = (0.4, -0.3);
             let u = 1.0 + c1 * x + c2 * (x * x - y * y);
@@ -1457,7 +1608,10 @@ mod tests {
             // bent2
             close(
                 ev(BENT2, &[3.0, -0.5], &Affine::IDENTITY, x, y),
-                (if x < 0.0 { 3.0 * x } else { x }, if y < 0.0 { -0.5 * y } else { y }),
+                (
+                    if x < 0.0 { 3.0 * x } else { x },
+                    if y < 0.0 { -0.5 * y } else { y },
+                ),
                 1e-12,
             );
             // rectangles
@@ -1480,10 +1634,14 @@ mod tests {
                     let kf = k as f64;
                     let a1 = (phi + 2.0 * PI * kf) / pw;
                     let a2 = (2.0 * PI * kf - phi) / pw;
-                    let cands = if id == JULIAN || k % 2 == 0 { [a1, a1] } else { [a2, a2] };
-                    cands
-                        .iter()
-                        .any(|a| (got.0 - rad * a.cos()).abs() < 1e-9 && (got.1 - rad * a.sin()).abs() < 1e-9)
+                    let cands = if id == JULIAN || k % 2 == 0 {
+                        [a1, a1]
+                    } else {
+                        [a2, a2]
+                    };
+                    cands.iter().any(|a| {
+                        (got.0 - rad * a.cos()).abs() < 1e-9 && (got.1 - rad * a.sin()).abs() < 1e-9
+                    })
                 });
                 assert!(ok, "{id} at ({x},{y}) gave {got:?}");
             }
@@ -1503,9 +1661,18 @@ mod tests {
                 (m.0 + d_.0, m.1 + d_.1)
             };
             let dd = den.0 * den.0 + den.1 * den.1;
-            let q = ((num.0 * den.0 + num.1 * den.1) / dd, (num.1 * den.0 - num.0 * den.1) / dd);
+            let q = (
+                (num.0 * den.0 + num.1 * den.1) / dd,
+                (num.1 * den.0 - num.0 * den.1) / dd,
+            );
             close(
-                ev(MOBIUS, &[a_.0, a_.1, b_.0, b_.1, c_.0, c_.1, d_.0, d_.1], &Affine::IDENTITY, x, y),
+                ev(
+                    MOBIUS,
+                    &[a_.0, a_.1, b_.0, b_.1, c_.0, c_.1, d_.0, d_.1],
+                    &Affine::IDENTITY,
+                    x,
+                    y,
+                ),
                 q,
                 1e-12,
             );
@@ -1515,7 +1682,9 @@ mod tests {
     #[test]
     fn weight_scales_linear_variations() {
         let mut rng = FastRng::new(3);
-        for id in [LINEAR, SINUSOIDAL, SPHERICAL, SWIRL, HORSESHOE, POLAR, BENT, DISC, SPIRAL] {
+        for id in [
+            LINEAR, SINUSOIDAL, SPHERICAL, SWIRL, HORSESHOE, POLAR, BENT, DISC, SPIRAL,
+        ] {
             let a = eval(id, 1.0, &[], &Affine::IDENTITY, 0.7, -0.2, &mut rng);
             let b = eval(id, -2.5, &[], &Affine::IDENTITY, 0.7, -0.2, &mut rng);
             close(b, (-2.5 * a.0, -2.5 * a.1), 1e-12);
@@ -1527,16 +1696,40 @@ mod tests {
         // exp, log, sin, cos of z = x + iy against the complex formulas.
         let (x, y): (f64, f64) = (0.3, 0.4);
         close(at(EXP, x, y), (x.exp() * y.cos(), x.exp() * y.sin()), 1e-12);
-        close(at(LOG, x, y), ((x * x + y * y).sqrt().ln(), y.atan2(x)), 1e-12);
-        close(at(SIN, x, y), (x.sin() * y.cosh(), x.cos() * y.sinh()), 1e-12);
-        close(at(COS, x, y), (x.cos() * y.cosh(), -x.sin() * y.sinh()), 1e-12);
-        close(at(SINH, x, y), (x.sinh() * y.cos(), x.cosh() * y.sin()), 1e-12);
-        close(at(COSH, x, y), (x.cosh() * y.cos(), x.sinh() * y.sin()), 1e-12);
+        close(
+            at(LOG, x, y),
+            ((x * x + y * y).sqrt().ln(), y.atan2(x)),
+            1e-12,
+        );
+        close(
+            at(SIN, x, y),
+            (x.sin() * y.cosh(), x.cos() * y.sinh()),
+            1e-12,
+        );
+        close(
+            at(COS, x, y),
+            (x.cos() * y.cosh(), -x.sin() * y.sinh()),
+            1e-12,
+        );
+        close(
+            at(SINH, x, y),
+            (x.sinh() * y.cos(), x.cosh() * y.sin()),
+            1e-12,
+        );
+        close(
+            at(COSH, x, y),
+            (x.cosh() * y.cos(), x.sinh() * y.sin()),
+            1e-12,
+        );
         // tan z = sin z / cos z
         let (sr, si) = (x.sin() * y.cosh(), x.cos() * y.sinh());
         let (cr, ci) = (x.cos() * y.cosh(), -x.sin() * y.sinh());
         let d = cr * cr + ci * ci;
-        close(at(TAN, x, y), ((sr * cr + si * ci) / d, (si * cr - sr * ci) / d), 1e-12);
+        close(
+            at(TAN, x, y),
+            ((sr * cr + si * ci) / d, (si * cr - sr * ci) / d),
+            1e-12,
+        );
         // sec z = 1 / cos z
         close(at(SEC, x, y), (cr / d, -ci / d), 1e-12);
         // csc z = 1/sin z

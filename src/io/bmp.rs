@@ -50,13 +50,21 @@ mod tests {
 
     #[test]
     fn sizes_and_layout() {
-        let sizes = [((1, 1), 58), ((2, 2), 70), ((3, 2), 78), ((640, 480), 921_654)];
+        let sizes = [
+            ((1, 1), 58),
+            ((2, 2), 70),
+            ((3, 2), 78),
+            ((640, 480), 921_654),
+        ];
         for ((w, h), want) in sizes {
             let img = DynamicImage::ImageRgb8(image::RgbImage::new(w, h));
             let b = encode(&img);
             assert_eq!(b.len(), want);
             assert_eq!(&b[0..2], b"BM");
-            assert_eq!(u32::from_le_bytes(b[2..6].try_into().unwrap()) as usize, want);
+            assert_eq!(
+                u32::from_le_bytes(b[2..6].try_into().unwrap()) as usize,
+                want
+            );
         }
         // Bottom row first, BGR order; decodes back to the same picture.
         let mut img = image::RgbImage::new(3, 2);

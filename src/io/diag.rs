@@ -239,8 +239,9 @@ pub fn decode_text(bytes: &[u8], file: &str) -> (String, Option<Diagnostic>) {
 
 fn cp1252(c: u8) -> char {
     const HIGH: [char; 32] = [
-        '€', '\u{81}', '‚', 'ƒ', '„', '…', '†', '‡', 'ˆ', '‰', 'Š', '‹', 'Œ', '\u{8d}', 'Ž', '\u{8f}',
-        '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9d}', 'ž', 'Ÿ',
+        '€', '\u{81}', '‚', 'ƒ', '„', '…', '†', '‡', 'ˆ', '‰', 'Š', '‹', 'Œ', '\u{8d}', 'Ž',
+        '\u{8f}', '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9d}',
+        'ž', 'Ÿ',
     ];
     match c {
         0x80..=0x9f => HIGH[(c - 0x80) as usize],
@@ -261,7 +262,9 @@ mod tests {
         assert_eq!(parse_number("+.25"), Ok(0.25));
         assert_eq!(parse_number("1E-3"), Ok(0.001));
         assert_eq!(parse_number("0,5"), Err(NumberError::Comma));
-        for bad in ["nan", "inf", "-inf", "0x10", "", ".", "-", "1e", "1.2.3", "1 2", "e5"] {
+        for bad in [
+            "nan", "inf", "-inf", "0x10", "", ".", "-", "1e", "1.2.3", "1 2", "e5",
+        ] {
             assert_eq!(parse_number(bad), Err(NumberError::Syntax), "{bad}");
         }
         assert_eq!(parse_number("1e400"), Err(NumberError::Overflow));

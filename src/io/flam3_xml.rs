@@ -110,7 +110,11 @@ impl Ctx<'_, '_> {
             .split_whitespace()
             .map(|t| {
                 parse_number(t).map_err(|e| {
-                    self.err(a.offset, code, format!("attribute '{}': {}", a.name, e.describe(t)))
+                    self.err(
+                        a.offset,
+                        code,
+                        format!("attribute '{}': {}", a.name, e.describe(t)),
+                    )
                 })
             })
             .collect()
@@ -122,7 +126,11 @@ impl Ctx<'_, '_> {
             self.err(
                 a.offset,
                 code,
-                format!("attribute '{}' must hold {N} {what}, found {}", a.name, v.len()),
+                format!(
+                    "attribute '{}' must hold {N} {what}, found {}",
+                    a.name,
+                    v.len()
+                ),
             )
         })
     }
@@ -132,7 +140,11 @@ impl Ctx<'_, '_> {
             self.err(
                 a.offset,
                 "XML003",
-                format!("attribute '{}': '{}' is not an integer", a.name, a.value.trim()),
+                format!(
+                    "attribute '{}': '{}' is not an integer",
+                    a.name,
+                    a.value.trim()
+                ),
             )
         })
     }
@@ -145,7 +157,9 @@ impl Ctx<'_, '_> {
                 LibrarySource::Paths(p) => p.clone(),
             };
             match palettes::find(Some(&paths)) {
-                Some(p) => palettes::load(&p).map(|l| l.value).map_err(|d| d.to_string()),
+                Some(p) => palettes::load(&p)
+                    .map(|l| l.value)
+                    .map_err(|d| d.to_string()),
                 None => Err(format!(
                     "flam3-palettes.xml was not found (looked in {}); install flam3's palette file \
                      (Debian: flam3-palette), set FLAM3_PALETTES, or pass --palettes PATH",
@@ -186,34 +200,53 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
                 if !root_seen {
                     root_seen = true;
                     if tag == "flames" {
-                        let attrs = scan_attrs(e, p.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        let attrs =
+                            scan_attrs(e, p.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
                         root_attrs(&mut cx, &attrs, &mut out)?;
                     } else if opts.fla {
                         return Err(cx.err(
                             p.start,
                             "FLA001",
-                            format!(
-                                "a .fla file must have a <flames> root, not <{}>",
-                                tag
-                            ),
+                            format!("a .fla file must have a <flames> root, not <{}>", tag),
                         ));
                     }
                 }
                 if tag == "flame" {
                     if out.flames.len() >= MAX_FLAMES {
-                        return Err(cx.err(p.start, "XML003", format!("more than {MAX_FLAMES} flames in one file")));
+                        return Err(cx.err(
+                            p.start,
+                            "XML003",
+                            format!("more than {MAX_FLAMES} flames in one file"),
+                        ));
                     }
-                    let flame = read_flame(&mut cx, &mut cur, text, e, p.start, is_empty, out.flames.len())?;
+                    let flame = read_flame(
+                        &mut cx,
+                        &mut cur,
+                        text,
+                        e,
+                        p.start,
+                        is_empty,
+                        out.flames.len(),
+                    )?;
                     if opts.fla {
                         if flame.name.is_empty() {
-                            return Err(cx.err(p.start, "FLA002", "every flame in a .fla file needs a non-empty name"));
-                        }
-                        if let Some((_, first)) = names.iter().find(|(n, _)| *n == flame.name) {
-                            let Pos::LineCol(l, c) = cx.map.pos(*first) else { unreachable!() };
                             return Err(cx.err(
                                 p.start,
                                 "FLA002",
-                                format!("duplicate flame name '{}' (first used at {l}:{c})", flame.name),
+                                "every flame in a .fla file needs a non-empty name",
+                            ));
+                        }
+                        if let Some((_, first)) = names.iter().find(|(n, _)| *n == flame.name) {
+                            let Pos::LineCol(l, c) = cx.map.pos(*first) else {
+                                unreachable!()
+                            };
+                            return Err(cx.err(
+                                p.start,
+                                "FLA002",
+                                format!(
+                                    "duplicate flame name '{}' (first used at {l}:{c})",
+                                    flame.name
+                                ),
                             ));
                         }
                         names.push((flame.name.clone(), p.start));
@@ -228,7 +261,12 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         }
     }
     if out.flames.is_empty() {
-        return Err(Diagnostic::error(&opts.file, Pos::File, "XML002", "no <flame> element in the document"));
+        return Err(Diagnostic::error(
+            &opts.file,
+            Pos::File,
+            "XML002",
+            "no <flame> element in the document",
+        ));
     }
     let _ = depth;
     Ok(Parsed {
@@ -295,7 +333,11 @@ fn read_flame(
         match a.name {
             "name" => {
                 if v.len() > 64 {
-                    cx.warn(a.offset, "XML016", "flame name longer than 64 bytes (flam3 truncates it)");
+                    cx.warn(
+                        a.offset,
+                        "XML016",
+                        "flame name longer than 64 bytes (flam3 truncates it)",
+                    );
                 }
                 f.name = v.to_string();
             }
@@ -303,7 +345,9 @@ fn read_flame(
             "size" => {
                 let parts: Vec<&str> = v.split_whitespace().collect();
                 let ok = parts.len() == 2
-                    && parts.iter().all(|p| parse_int(p).is_ok_and(|n| (1..=MAX_SIDE).contains(&n)));
+                    && parts
+                        .iter()
+                        .all(|p| parse_int(p).is_ok_and(|n| (1..=MAX_SIDE).contains(&n)));
                 if !ok {
                     return Err(cx.err(
                         a.offset,
@@ -323,7 +367,11 @@ fn read_flame(
             "scale" => {
                 f.scale = cx.num(a)?;
                 if f.scale <= 0.0 {
-                    return Err(cx.err(a.offset, "XML013", format!("scale {} must be positive", f.scale)));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML013",
+                        format!("scale {} must be positive", f.scale),
+                    ));
                 }
                 f.has_camera = true;
             }
@@ -336,7 +384,11 @@ fn read_flame(
             "supersample" | "oversample" => {
                 let n = cx.int(a)?;
                 if !(1..=16).contains(&n) {
-                    return Err(cx.err(a.offset, "XML013", format!("{} {n} must be between 1 and 16", a.name)));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML013",
+                        format!("{} {n} must be between 1 and 16", a.name),
+                    ));
                 }
                 f.supersample = n as u32;
             }
@@ -348,12 +400,20 @@ fn read_flame(
             }
             "filter_shape" => match FilterShape::from_name(v.trim()) {
                 Some(s) => f.filter_shape = s,
-                None => cx.warn(a.offset, "XML014", format!("unknown filter_shape '{v}'; using gaussian")),
+                None => cx.warn(
+                    a.offset,
+                    "XML014",
+                    format!("unknown filter_shape '{v}'; using gaussian"),
+                ),
             },
             "quality" => {
                 f.quality = cx.num(a)?;
                 if f.quality <= 0.0 {
-                    return Err(cx.err(a.offset, "XML013", format!("quality {} must be positive", f.quality)));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML013",
+                        format!("quality {} must be positive", f.quality),
+                    ));
                 }
             }
             "background" => {
@@ -364,7 +424,11 @@ fn read_flame(
             "gamma" => {
                 f.gamma = cx.num(a)?;
                 if f.gamma <= 0.0 {
-                    return Err(cx.err(a.offset, "XML013", format!("gamma {} must be positive", f.gamma)));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML013",
+                        format!("gamma {} must be positive", f.gamma),
+                    ));
                 }
             }
             "gamma_threshold" => f.gamma_threshold = cx.num(a)?,
@@ -379,12 +443,20 @@ fn read_flame(
             }
             "palette_mode" => match PaletteMode::from_name(v.trim()) {
                 Some(m) => f.palette_mode = m,
-                None => cx.warn(a.offset, "XML014", format!("unknown palette_mode '{v}'; using step")),
+                None => cx.warn(
+                    a.offset,
+                    "XML014",
+                    format!("unknown palette_mode '{v}'; using step"),
+                ),
             },
             "palette" => {
                 let n = cx.int(a)?;
                 if !(0..=700).contains(&n) {
-                    return Err(cx.err(a.offset, "XML011", format!("palette number {n} is outside 0..700")));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML011",
+                        format!("palette number {n} is outside 0..700"),
+                    ));
                 }
                 library_palette = Some((n as usize, a.offset));
             }
@@ -400,7 +472,11 @@ fn read_flame(
             "ugnis_contrast" => contrast = Some(cx.num(a)?),
             "ugnis_seed" => {
                 f.seed = Some(v.trim().parse::<u64>().map_err(|_| {
-                    cx.err(a.offset, "FLA004", format!("ugnis_seed '{v}' must be an unsigned 64-bit integer"))
+                    cx.err(
+                        a.offset,
+                        "FLA004",
+                        format!("ugnis_seed '{v}' must be an unsigned 64-bit integer"),
+                    )
                 })?)
             }
             "ugnis_kind" => {
@@ -421,14 +497,22 @@ fn read_flame(
                     "0" => Some(false),
                     "1" => Some(true),
                     other => {
-                        return Err(cx.err(a.offset, "FLA004", format!("ugnis_auto_weights '{other}' must be 0 or 1")));
+                        return Err(cx.err(
+                            a.offset,
+                            "FLA004",
+                            format!("ugnis_auto_weights '{other}' must be 0 or 1"),
+                        ));
                     }
                 }
             }
             "ugnis_gradient" => f.palette.name = v.to_string(),
             other => {
                 if other.starts_with("ugnis_") {
-                    cx.warn(a.offset, "FLA005", format!("unknown attribute '{other}' kept"));
+                    cx.warn(
+                        a.offset,
+                        "FLA005",
+                        format!("unknown attribute '{other}' kept"),
+                    );
                 }
                 f.extra_attrs.push((other.to_string(), v.to_string()));
             }
@@ -464,7 +548,11 @@ fn read_flame(
     // Palette: inline colours win over a library palette (flam3 does the opposite; warn).
     if pal.any {
         if library_palette.is_some() {
-            cx.warn(start, "XML017", "flame has both inline colours and palette=\"N\"; using the inline colours");
+            cx.warn(
+                start,
+                "XML017",
+                "flame has both inline colours and palette=\"N\"; using the inline colours",
+            );
         }
         f.palette = Gradient {
             name: gradient_name,
@@ -475,20 +563,42 @@ fn read_flame(
         let lib = cx.library();
         let g = match lib {
             Ok(l) => l.get(n).cloned().ok_or_else(|| {
-                cx.err(off, "XML011", format!("palette {n} is not in {}", l.path.display()))
+                cx.err(
+                    off,
+                    "XML011",
+                    format!("palette {n} is not in {}", l.path.display()),
+                )
             })?,
-            Err(m) => return Err(cx.err(off, "XML011", format!("flame uses library palette {n}, but {m}"))),
+            Err(m) => {
+                return Err(cx.err(
+                    off,
+                    "XML011",
+                    format!("flame uses library palette {n}, but {m}"),
+                ));
+            }
         };
         f.palette = hue_rotate(&g, hue);
     } else {
-        cx.warn(start, "XML018", "flame has no colour data; using the default gradient");
+        cx.warn(
+            start,
+            "XML018",
+            "flame has no colour data; using the default gradient",
+        );
         f.palette = cx.opts.default_gradient.clone();
     }
     if f.xforms.is_empty() {
-        return Err(cx.err(start, "XML007", "cannot iterate empty flame: it has no <xform>"));
+        return Err(cx.err(
+            start,
+            "XML007",
+            "cannot iterate empty flame: it has no <xform>",
+        ));
     }
     if f.xforms.iter().all(|x| x.weight == 0.0) {
-        return Err(cx.err(start, "XML007", "cannot iterate empty flame: all xform weights are 0"));
+        return Err(cx.err(
+            start,
+            "XML007",
+            "cannot iterate empty flame: all xform weights are 0",
+        ));
     }
     let _ = index;
     Ok(f)
@@ -505,12 +615,30 @@ fn interpolate_missing(colors: &[Option<[f64; 4]>]) -> Vec<[f64; 4]> {
                 return c;
             }
             // Nearest defined below (wrapping) and above (wrapping).
-            let below = defined.iter().rev().find(|&&j| j < i).or(defined.last()).copied().unwrap_or(i);
-            let above = defined.iter().find(|&&j| j > i).or(defined.first()).copied().unwrap_or(i);
-            let (cb, ca) = (colors[below].unwrap_or([0.0; 4]), colors[above].unwrap_or([0.0; 4]));
+            let below = defined
+                .iter()
+                .rev()
+                .find(|&&j| j < i)
+                .or(defined.last())
+                .copied()
+                .unwrap_or(i);
+            let above = defined
+                .iter()
+                .find(|&&j| j > i)
+                .or(defined.first())
+                .copied()
+                .unwrap_or(i);
+            let (cb, ca) = (
+                colors[below].unwrap_or([0.0; 4]),
+                colors[above].unwrap_or([0.0; 4]),
+            );
             let dist_b = (i + n - below) % n;
             let span = (above + n - below) % n;
-            let t = if span == 0 { 0.0 } else { dist_b as f64 / span as f64 };
+            let t = if span == 0 {
+                0.0
+            } else {
+                dist_b as f64 / span as f64
+            };
             [
                 quantise(cb[0] + (ca[0] - cb[0]) * t),
                 quantise(cb[1] + (ca[1] - cb[1]) * t),
@@ -549,7 +677,11 @@ fn read_flame_children(
                             return Err(cx.err(p.start, "XML006", "more than one <finalxform>"));
                         }
                         if f.xforms.len() >= MAX_XFORMS {
-                            return Err(cx.err(p.start, "XML003", format!("more than {MAX_XFORMS} xforms")));
+                            return Err(cx.err(
+                                p.start,
+                                "XML003",
+                                format!("more than {MAX_XFORMS} xforms"),
+                            ));
                         }
                         let parity = (f.xforms.len() + f.final_xform.is_some() as usize) % 2;
                         let mut x = read_xform(cx, &attrs, fin, parity as f64, p.start)?;
@@ -560,11 +692,21 @@ fn read_flame_children(
                                 match c.event {
                                     Event::End(_) => break,
                                     Event::Start(_) => {
-                                        let end = cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                                        let end = cur
+                                            .skip_element()
+                                            .map_err(|(o, m)| cx.err(o, "XML001", m))?;
                                         x.extra_children.push(text[c.start..end].to_string());
                                     }
-                                    Event::Empty(_) => x.extra_children.push(text[c.start..c.end].to_string()),
-                                    Event::Eof => return Err(cx.err(c.start, "XML001", "end of file inside <xform>")),
+                                    Event::Empty(_) => {
+                                        x.extra_children.push(text[c.start..c.end].to_string())
+                                    }
+                                    Event::Eof => {
+                                        return Err(cx.err(
+                                            c.start,
+                                            "XML001",
+                                            "end of file inside <xform>",
+                                        ));
+                                    }
                                     _ => {}
                                 }
                             }
@@ -578,7 +720,8 @@ fn read_flame_children(
                     "color" => {
                         read_color(cx, &attrs, p.start, pal)?;
                         if !is_empty {
-                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                            cur.skip_element()
+                                .map_err(|(o, m)| cx.err(o, "XML001", m))?;
                         }
                     }
                     "colors" => {
@@ -586,7 +729,11 @@ fn read_flame_children(
                         let data = attrs.iter().find(|a| a.name == "data");
                         if let Some(d) = data {
                             let cols = decode_hex_colors(&d.value, 8).ok_or_else(|| {
-                                cx.err(d.offset, "XML010", "colors data must be 8 hex digits per colour")
+                                cx.err(
+                                    d.offset,
+                                    "XML010",
+                                    "colors data must be 8 hex digits per colour",
+                                )
                             })?;
                             if let Some(c) = count {
                                 let n = cx.int(c)?;
@@ -594,31 +741,49 @@ fn read_flame_children(
                                     return Err(cx.err(
                                         d.offset,
                                         "XML010",
-                                        format!("colors count {n} but data holds {} colours", cols.len()),
+                                        format!(
+                                            "colors count {n} but data holds {} colours",
+                                            cols.len()
+                                        ),
                                     ));
                                 }
                             }
                             for (i, c) in cols.iter().take(256).enumerate() {
-                                pal.colors[i] = Some([c[1] as f64 / 255.0, c[2] as f64 / 255.0, c[3] as f64 / 255.0, 1.0]);
+                                pal.colors[i] = Some([
+                                    c[1] as f64 / 255.0,
+                                    c[2] as f64 / 255.0,
+                                    c[3] as f64 / 255.0,
+                                    1.0,
+                                ]);
                                 pal.any = true;
                             }
                         }
                         if !is_empty {
-                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                            cur.skip_element()
+                                .map_err(|(o, m)| cx.err(o, "XML001", m))?;
                         }
                     }
                     "palette" => read_palette(cx, cur, &attrs, p.start, is_empty, pal)?,
                     "symmetry" => {
                         let Some(k) = attrs.iter().find(|a| a.name == "kind") else {
-                            return Err(cx.err(p.start, "XML003", "<symmetry> needs a 'kind' attribute"));
+                            return Err(cx.err(
+                                p.start,
+                                "XML003",
+                                "<symmetry> needs a 'kind' attribute",
+                            ));
                         };
                         let kind = cx.int(k)?;
                         if kind.abs() > 1000 {
-                            return Err(cx.err(k.offset, "XML003", format!("symmetry kind {kind} is out of range")));
+                            return Err(cx.err(
+                                k.offset,
+                                "XML003",
+                                format!("symmetry kind {kind} is out of range"),
+                            ));
                         }
                         add_symmetry(f, kind as i32);
                         if !is_empty {
-                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                            cur.skip_element()
+                                .map_err(|(o, m)| cx.err(o, "XML001", m))?;
                         }
                     }
                     _ => {
@@ -626,7 +791,8 @@ fn read_flame_children(
                         let end = if is_empty {
                             p.end
                         } else {
-                            cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?
+                            cur.skip_element()
+                                .map_err(|(o, m)| cx.err(o, "XML001", m))?
                         };
                         f.extra_children.push(text[p.start..end].to_string());
                     }
@@ -644,7 +810,15 @@ fn read_color(cx: &mut Ctx, attrs: &[Attr], start: usize, pal: &mut PaletteData)
     let mut value_off = start;
     for a in attrs {
         match a.name {
-            "index" => index = Some(cx.int(a).map_err(|_| cx.err(a.offset, "XML009", format!("color index '{}' is not an integer", a.value)))?),
+            "index" => {
+                index = Some(cx.int(a).map_err(|_| {
+                    cx.err(
+                        a.offset,
+                        "XML009",
+                        format!("color index '{}' is not an integer", a.value),
+                    )
+                })?)
+            }
             "rgb" => {
                 let v: [f64; 3] = cx.fixed(a, "XML009", "numbers")?;
                 rgb = v;
@@ -662,12 +836,22 @@ fn read_color(cx: &mut Ctx, attrs: &[Attr], start: usize, pal: &mut PaletteData)
     }
     let i = match index {
         Some(i) if (0..=255).contains(&i) => i as usize,
-        Some(i) => return Err(cx.err(start, "XML009", format!("color index {i} is outside 0..255"))),
+        Some(i) => {
+            return Err(cx.err(
+                start,
+                "XML009",
+                format!("color index {i} is outside 0..255"),
+            ));
+        }
         None => return Err(cx.err(start, "XML009", "<color> without an index")),
     };
     let mut clamp = |v: f64| {
         if !(0.0..=255.0).contains(&v) {
-            cx.warn(value_off, "XML015", format!("colour component {v} is outside 0..255; clamped"));
+            cx.warn(
+                value_off,
+                "XML015",
+                format!("colour component {v} is outside 0..255; clamped"),
+            );
         }
         v.clamp(0.0, 255.0).round() / 255.0
     };
@@ -686,10 +870,16 @@ fn read_palette(
     pal: &mut PaletteData,
 ) -> R<()> {
     let get = |n: &str| attrs.iter().find(|a| a.name == n);
-    let legacy = ["index0", "index1", "hue0", "hue1", "blend"].iter().any(|n| get(n).is_some());
+    let legacy = ["index0", "index1", "hue0", "hue1", "blend"]
+        .iter()
+        .any(|n| get(n).is_some());
     let modern = get("count").is_some() || get("format").is_some();
     if legacy && modern {
-        return Err(cx.err(start, "XML010", "mixing the old (index0/hue0) and new (count/format) palette syntax"));
+        return Err(cx.err(
+            start,
+            "XML010",
+            "mixing the old (index0/hue0) and new (count/format) palette syntax",
+        ));
     }
     // Collect the text content.
     let mut content = String::new();
@@ -705,9 +895,12 @@ fn read_palette(
                     content.push_str(&&**t);
                 }
                 Event::End(_) => break,
-                Event::Eof => return Err(cx.err(p.start, "XML001", "end of file inside <palette>")),
+                Event::Eof => {
+                    return Err(cx.err(p.start, "XML001", "end of file inside <palette>"));
+                }
                 Event::Start(_) => {
-                    cur.skip_element().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                    cur.skip_element()
+                        .map_err(|(o, m)| cx.err(o, "XML001", m))?;
                 }
                 _ => {}
             }
@@ -716,13 +909,20 @@ fn read_palette(
     if legacy {
         let idx = get("index0").map(|a| cx.int(a)).transpose()?.unwrap_or(0);
         let hue0 = get("hue0").map(|a| cx.num(a)).transpose()?.unwrap_or(0.0);
-        cx.warn(start, "XML019", "old-style <palette index0=…>: using index0 with hue0 only");
+        cx.warn(
+            start,
+            "XML019",
+            "old-style <palette index0=…>: using index0 with hue0 only",
+        );
         let lib = cx.library();
         let g = match lib {
-            Ok(l) => l
-                .get(idx.max(0) as usize)
-                .cloned()
-                .ok_or_else(|| cx.err(start, "XML011", format!("palette {idx} is not in the library")))?,
+            Ok(l) => l.get(idx.max(0) as usize).cloned().ok_or_else(|| {
+                cx.err(
+                    start,
+                    "XML011",
+                    format!("palette {idx} is not in the library"),
+                )
+            })?,
             Err(m) => return Err(cx.err(start, "XML011", m.clone())),
         };
         let g = hue_rotate(&g, hue0);
@@ -736,7 +936,11 @@ fn read_palette(
         Some(a) => {
             let n = cx.int(a)?;
             if !(1..=256).contains(&n) {
-                return Err(cx.err(a.offset, "XML010", format!("palette count {n} is outside 1..256")));
+                return Err(cx.err(
+                    a.offset,
+                    "XML010",
+                    format!("palette count {n} is outside 1..256"),
+                ));
             }
             n as usize
         }
@@ -746,7 +950,13 @@ fn read_palette(
         None => 6,
         Some((f, _)) if f == "RGB" => 6,
         Some((f, _)) if f == "RGBA" => 8,
-        Some((f, off)) => return Err(cx.err(off, "XML010", format!("palette format '{f}' must be RGB or RGBA"))),
+        Some((f, off)) => {
+            return Err(cx.err(
+                off,
+                "XML010",
+                format!("palette format '{f}' must be RGB or RGBA"),
+            ));
+        }
     };
     for tok in content.split_whitespace() {
         if tok.len() % dpc != 0 || !tok.bytes().all(|c| c.is_ascii_hexdigit()) {
@@ -762,12 +972,20 @@ fn read_palette(
         return Err(cx.err(
             content_off,
             "XML010",
-            format!("palette count is {count} but the data holds {} colours", cols.len()),
+            format!(
+                "palette count is {count} but the data holds {} colours",
+                cols.len()
+            ),
         ));
     }
     for (i, c) in cols.iter().enumerate() {
         let a = if dpc == 8 { c[3] as f64 / 255.0 } else { 1.0 };
-        pal.colors[i] = Some([c[0] as f64 / 255.0, c[1] as f64 / 255.0, c[2] as f64 / 255.0, a]);
+        pal.colors[i] = Some([
+            c[0] as f64 / 255.0,
+            c[1] as f64 / 255.0,
+            c[2] as f64 / 255.0,
+            a,
+        ]);
     }
     pal.any = true;
     Ok(())
@@ -787,9 +1005,16 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
         let v = a.value.trim();
         match a.name {
             "weight" => {
-                let w = cx.num(a).map_err(|d| Diagnostic { code: "XML005", ..d })?;
+                let w = cx.num(a).map_err(|d| Diagnostic {
+                    code: "XML005",
+                    ..d
+                })?;
                 if w < 0.0 {
-                    return Err(cx.err(a.offset, "XML005", format!("weight {w} must not be negative")));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML005",
+                        format!("weight {w} must not be negative"),
+                    ));
                 }
                 if fin && w != 0.0 {
                     return Err(cx.err(a.offset, "XML005", "a <finalxform> has no weight"));
@@ -799,7 +1024,11 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
             "color" => {
                 let c = cx.nums(a, "XML003")?;
                 if c.is_empty() || c.len() > 2 {
-                    return Err(cx.err(a.offset, "XML003", "color must be one number (or two, legacy)"));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML003",
+                        "color must be one number (or two, legacy)",
+                    ));
                 }
                 x.color = c[0];
             }
@@ -818,7 +1047,10 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                 }
             }
             "coefs" | "post" => {
-                let c: [f64; 6] = cx.fixed(a, "XML004", "numbers").map_err(|d| Diagnostic { code: "XML004", ..d })?;
+                let c: [f64; 6] = cx.fixed(a, "XML004", "numbers").map_err(|d| Diagnostic {
+                    code: "XML004",
+                    ..d
+                })?;
                 let m = Affine::from_coefs(c);
                 if a.name == "coefs" {
                     x.coefs = m;
@@ -829,14 +1061,22 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
             "chaos" => {
                 let c = cx.nums(a, "XML008")?;
                 if let Some(bad) = c.iter().find(|v| **v < 0.0) {
-                    return Err(cx.err(a.offset, "XML008", format!("xaos value {bad} must not be negative")));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML008",
+                        format!("xaos value {bad} must not be negative"),
+                    ));
                 }
                 x.chaos = c;
             }
             "var" => {
                 let ws = cx.nums(a, "XML003")?;
                 if ws.len() > variations::COUNT {
-                    return Err(cx.err(a.offset, "XML003", format!("var holds {} weights; at most 99", ws.len())));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML003",
+                        format!("var holds {} weights; at most 99", ws.len()),
+                    ));
                 }
                 for (i, w) in ws.iter().enumerate() {
                     if *w != 0.0 {
@@ -847,7 +1087,11 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
             "var1" => {
                 let i = cx.int(a)?;
                 if !(0..variations::COUNT as i64).contains(&i) {
-                    return Err(cx.err(a.offset, "XML003", format!("var1 index {i} is outside 0..98")));
+                    return Err(cx.err(
+                        a.offset,
+                        "XML003",
+                        format!("var1 index {i} is outside 0..98"),
+                    ));
                 }
                 x.vars.clear();
                 x.set_var(i as variations::VarId, 1.0);
@@ -869,7 +1113,10 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     params.push((id, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    let meta = matches!(name, "animate" | "var_color" | "name" | "motion_frequency" | "motion_function");
+                    let meta = matches!(
+                        name,
+                        "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
+                    );
                     if numeric && !meta && cx.reported_vars.insert(name.to_string()) {
                         cx.warn(
                             a.offset,
@@ -937,7 +1184,11 @@ pub fn write(file: &FlameFile) -> String {
 /// One `<flame>…</flame>` element (no declaration, no root), as embedded in PNG files.
 pub fn flame_element(f: &Flame) -> String {
     let mut s = String::new();
-    let name = if f.name.is_empty() { "ugnis".to_string() } else { f.name.clone() };
+    let name = if f.name.is_empty() {
+        "ugnis".to_string()
+    } else {
+        f.name.clone()
+    };
     write_flame(&mut s, f, &name, "");
     s
 }
@@ -1032,10 +1283,28 @@ fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
         }
     }
     let c = x.coefs.to_coefs();
-    let _ = write!(s, " coefs=\"{} {} {} {} {} {}\"", n(c[0]), n(c[1]), n(c[2]), n(c[3]), n(c[4]), n(c[5]));
+    let _ = write!(
+        s,
+        " coefs=\"{} {} {} {} {} {}\"",
+        n(c[0]),
+        n(c[1]),
+        n(c[2]),
+        n(c[3]),
+        n(c[4]),
+        n(c[5])
+    );
     if !x.post.is_identity() {
         let p = x.post.to_coefs();
-        let _ = write!(s, " post=\"{} {} {} {} {} {}\"", n(p[0]), n(p[1]), n(p[2]), n(p[3]), n(p[4]), n(p[5]));
+        let _ = write!(
+            s,
+            " post=\"{} {} {} {} {} {}\"",
+            n(p[0]),
+            n(p[1]),
+            n(p[2]),
+            n(p[3]),
+            n(p[4]),
+            n(p[5])
+        );
     }
     let mut chaos = x.chaos.clone();
     while chaos.last() == Some(&1.0) {
@@ -1066,7 +1335,11 @@ fn to8(v: f64) -> u8 {
 fn write_palette(s: &mut String, g: &Gradient, ind: &str) {
     let rgba = !g.is_opaque();
     let fmt = if rgba { "RGBA" } else { "RGB" };
-    let _ = writeln!(s, "{ind}<palette count=\"{}\" format=\"{fmt}\">", g.colors.len());
+    let _ = writeln!(
+        s,
+        "{ind}<palette count=\"{}\" format=\"{fmt}\">",
+        g.colors.len()
+    );
     for line in g.colors.chunks(8) {
         s.push_str(ind);
         s.push_str("   ");
@@ -1148,7 +1421,11 @@ mod tests {
         assert_eq!(a.value.flames, b.flames);
         let x = &b.flames[0].xforms[0];
         assert!(x.extra_attrs.contains(&("my_plugin".into(), "2".into())));
-        assert!(b.flames[0].extra_attrs.contains(&("foo".into(), "bar".into())));
+        assert!(
+            b.flames[0]
+                .extra_attrs
+                .contains(&("foo".into(), "bar".into()))
+        );
         // Writing again gives the same text.
         assert_eq!(write(&b), text);
     }
@@ -1159,14 +1436,30 @@ mod tests {
         let e = read(bad, &opts()).unwrap_err();
         assert_eq!(e.code, "XML003");
         assert_eq!(e.line(), Some(1));
-        let e = read("<flame><xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/></flame>", &opts()).unwrap_err();
+        let e = read(
+            "<flame><xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/></flame>",
+            &opts(),
+        )
+        .unwrap_err();
         assert_eq!(e.code, "XML005");
-        let e = read("<flame>\n<xform weight=\"1\" coefs=\"1 0 0 1 0\"/></flame>", &opts()).unwrap_err();
+        let e = read(
+            "<flame>\n<xform weight=\"1\" coefs=\"1 0 0 1 0\"/></flame>",
+            &opts(),
+        )
+        .unwrap_err();
         assert_eq!(e.code, "XML004");
         assert_eq!(e.pos, Pos::LineCol(2, 26));
-        let e = read("<flame><xform weight=\"0\" coefs=\"1 0 0 1 0 0\"/></flame>", &opts()).unwrap_err();
+        let e = read(
+            "<flame><xform weight=\"0\" coefs=\"1 0 0 1 0 0\"/></flame>",
+            &opts(),
+        )
+        .unwrap_err();
         assert_eq!(e.code, "XML007");
-        let e = read("<flame><xform weight=\"1\"/><finalxform/><finalxform/></flame>", &opts()).unwrap_err();
+        let e = read(
+            "<flame><xform weight=\"1\"/><finalxform/><finalxform/></flame>",
+            &opts(),
+        )
+        .unwrap_err();
         assert_eq!(e.code, "XML006");
         let e = read("<flames/>", &opts()).unwrap_err();
         assert_eq!(e.code, "XML002");
@@ -1181,13 +1474,21 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(e.code, "XML010");
-        let e = read("<flame estimator_radius=\"1\" estimator_minimum=\"2\"><xform weight='1'/></flame>", &opts()).unwrap_err();
+        let e = read(
+            "<flame estimator_radius=\"1\" estimator_minimum=\"2\"><xform weight='1'/></flame>",
+            &opts(),
+        )
+        .unwrap_err();
         assert_eq!(e.code, "XML012");
         let e = read("<flame quality=\"0\"><xform weight='1'/></flame>", &opts()).unwrap_err();
         assert_eq!(e.code, "XML013");
         let e = read("<flame><xform weight='1' chaos='1 -1'/></flame>", &opts()).unwrap_err();
         assert_eq!(e.code, "XML008");
-        let e = read("<flame><xform weight='1'/><color index='256' rgb='1 2 3'/></flame>", &opts()).unwrap_err();
+        let e = read(
+            "<flame><xform weight='1'/><color index='256' rgb='1 2 3'/></flame>",
+            &opts(),
+        )
+        .unwrap_err();
         assert_eq!(e.code, "XML009");
         let e = read("<flame><xform weight='1' color='0,5'/></flame>", &opts()).unwrap_err();
         assert!(e.message.contains("decimal separator"), "{e}");
@@ -1195,8 +1496,15 @@ mod tests {
 
     #[test]
     fn fla_rules() {
-        let o = ReadOptions { fla: true, ..opts() };
-        let e = read("<pick><flame name='a'><xform weight='1'/></flame></pick>", &o).unwrap_err();
+        let o = ReadOptions {
+            fla: true,
+            ..opts()
+        };
+        let e = read(
+            "<pick><flame name='a'><xform weight='1'/></flame></pick>",
+            &o,
+        )
+        .unwrap_err();
         assert_eq!(e.code, "FLA001");
         let e = read(
             "<flames>\n<flame name='a'><xform weight='1'/></flame>\n<flame name='a'><xform weight='1'/></flame></flames>",
@@ -1205,7 +1513,11 @@ mod tests {
         .unwrap_err();
         assert_eq!(e.code, "FLA002");
         assert!(e.message.contains("2:1"), "{e}");
-        let e = read("<flames><flame name='a' ugnis_kind='x'><xform weight='1'/></flame></flames>", &o).unwrap_err();
+        let e = read(
+            "<flames><flame name='a' ugnis_kind='x'><xform weight='1'/></flame></flames>",
+            &o,
+        )
+        .unwrap_err();
         assert_eq!(e.code, "FLA004");
     }
 

@@ -23,17 +23,27 @@ pub fn read_bytes(path: &Path) -> Result<Vec<u8>, Diagnostic> {
     let meta = std::fs::metadata(path)
         .map_err(|e| Diagnostic::error(&name, Pos::File, "IO001", format!("cannot open: {e}")))?;
     if meta.is_dir() {
-        return Err(Diagnostic::error(&name, Pos::File, "IO001", "is a directory, not a file"));
+        return Err(Diagnostic::error(
+            &name,
+            Pos::File,
+            "IO001",
+            "is a directory, not a file",
+        ));
     }
     if meta.len() > MAX_FILE_SIZE {
         return Err(Diagnostic::error(
             &name,
             Pos::File,
             "IO002",
-            format!("file is {} MiB; the limit is {} MiB", meta.len() >> 20, MAX_FILE_SIZE >> 20),
+            format!(
+                "file is {} MiB; the limit is {} MiB",
+                meta.len() >> 20,
+                MAX_FILE_SIZE >> 20
+            ),
         ));
     }
-    std::fs::read(path).map_err(|e| Diagnostic::error(&name, Pos::File, "IO001", format!("cannot read: {e}")))
+    std::fs::read(path)
+        .map_err(|e| Diagnostic::error(&name, Pos::File, "IO001", format!("cannot read: {e}")))
 }
 
 /// File kinds ugnis opens, by extension.
@@ -69,7 +79,10 @@ pub fn kind_of(path: &Path) -> FileKind {
 }
 
 /// Read the flames of any flame source: XML (.flame/.flam3/.fla), PNG with an embedded flame.
-pub fn read_flames(path: &Path, opts: &flam3_xml::ReadOptions) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
+pub fn read_flames(
+    path: &Path,
+    opts: &flam3_xml::ReadOptions,
+) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
     let name = path.display().to_string();
     let bytes = read_bytes(path)?;
     let mut o = opts.clone();
@@ -82,7 +95,12 @@ pub fn read_flames(path: &Path, opts: &flam3_xml::ReadOptions) -> Result<Parsed<
                 png::read_genome(&bytes, &name)?
             } else {
                 String::from_utf8(bytes).map_err(|e| {
-                    Diagnostic::error(&name, Pos::Byte(e.utf8_error().valid_up_to() as u64), "XML001", "file is not valid UTF-8 text")
+                    Diagnostic::error(
+                        &name,
+                        Pos::Byte(e.utf8_error().valid_up_to() as u64),
+                        "XML001",
+                        "file is not valid UTF-8 text",
+                    )
                 })?
             }
         }
@@ -96,5 +114,10 @@ pub fn read_flames(path: &Path, opts: &flam3_xml::ReadOptions) -> Result<Parsed<
 
 /// Read a Fractint `.ifs` file as flames (one per 2-D entry).
 pub fn ifs_flames(path: &Path) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
-    Err(Diagnostic::error(&path.display().to_string(), Pos::File, "IFS000", "reading .ifs files is not implemented yet"))
+    Err(Diagnostic::error(
+        &path.display().to_string(),
+        Pos::File,
+        "IFS000",
+        "reading .ifs files is not implemented yet",
+    ))
 }

@@ -120,13 +120,19 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<PaletteLibrary>, Diagnosti
         let attrs = scan_attrs(e, p.start + 1).map_err(|(o, m)| err(o, "XML001", m))?;
         let get = |n: &str| attrs.iter().find(|a| a.name == n);
         let Some(num) = get("number") else {
-            return Err(err(p.start, "PAL002", "palette without a 'number' attribute".into()));
+            return Err(err(
+                p.start,
+                "PAL002",
+                "palette without a 'number' attribute".into(),
+            ));
         };
-        let n: usize = num
-            .value
-            .trim()
-            .parse()
-            .map_err(|_| err(num.offset, "PAL002", format!("'{}' is not a palette number", num.value)))?;
+        let n: usize = num.value.trim().parse().map_err(|_| {
+            err(
+                num.offset,
+                "PAL002",
+                format!("'{}' is not a palette number", num.value),
+            )
+        })?;
         let name = get("name").map(|a| a.value.to_string()).unwrap_or_default();
         let colors = get("data").and_then(|d| decode_hex_colors(&d.value, 8));
         match colors {
@@ -135,7 +141,11 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<PaletteLibrary>, Diagnosti
                     lib.palettes.resize(n + 1, None);
                 }
                 if lib.palettes[n].is_some() {
-                    return Err(err(num.offset, "PAL002", format!("palette number {n} defined twice")));
+                    return Err(err(
+                        num.offset,
+                        "PAL002",
+                        format!("palette number {n} defined twice"),
+                    ));
                 }
                 let rgb: Vec<[u8; 3]> = c.iter().map(|v| [v[1], v[2], v[3]]).collect();
                 lib.palettes[n] = Some(Gradient::from_rgb8(name, &rgb));
@@ -146,7 +156,10 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<PaletteLibrary>, Diagnosti
                 "PAL001",
                 format!(
                     "palette {n} does not hold 256 colours ({}); skipped",
-                    other.map_or("undecodable data".to_string(), |c| format!("{} colours", c.len()))
+                    other.map_or("undecodable data".to_string(), |c| format!(
+                        "{} colours",
+                        c.len()
+                    ))
                 ),
             )),
         }

@@ -49,7 +49,10 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
             i += 1;
         }
         if i >= b.len() || (b[i] != b'"' && b[i] != b'\'') {
-            return Err((base + i, format!("value of attribute '{name}' must be quoted")));
+            return Err((
+                base + i,
+                format!("value of attribute '{name}' must be quoted"),
+            ));
         }
         let q = b[i];
         i += 1;
@@ -58,7 +61,10 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
             i += 1;
         }
         if i >= b.len() {
-            return Err((base + vs, format!("value of attribute '{name}' is not closed")));
+            return Err((
+                base + vs,
+                format!("value of attribute '{name}' is not closed"),
+            ));
         }
         let raw = &content[vs..i];
         i += 1;
@@ -124,7 +130,9 @@ impl<'a> XmlCursor<'a> {
                         return Ok(p.end);
                     }
                 }
-                Event::Eof => return Err((p.start, "unexpected end of file inside an element".into())),
+                Event::Eof => {
+                    return Err((p.start, "unexpected end of file inside an element".into()));
+                }
                 _ => {}
             }
         }
