@@ -56,8 +56,11 @@ def genome(seed, use_vars, width, height, quality, path):
         f.write(xml)
 
 
-def flam3(path, out, threads, qs=1.0):
-    env = dict(os.environ, **{"in": path, "out": out, "nthreads": str(threads), "qs": str(qs), "seed": "1"})
+def flam3(path, out, threads, qs=1.0, isaac_seed="ugnis"):
+    # flam3's iteration randomness comes from isaac_seed (default: the current time, so two
+    # renders started within one second would share their samples): always set it.
+    env = dict(os.environ, **{"in": path, "out": out, "nthreads": str(threads), "qs": str(qs), "seed": "1",
+                              "isaac_seed": isaac_seed})
     t = time.perf_counter()
     subprocess.run(["flam3-render"], env=env, capture_output=True, check=True)
     return time.perf_counter() - t
@@ -113,8 +116,8 @@ def main():
             ref = os.path.join(tmp, f"ref{seed}.png")
             f3 = os.path.join(tmp, f"f3_{seed}.png")
             ug = os.path.join(tmp, f"ug{seed}.png")
-            flam3(g, ref, a.threads, qs=a.ref_quality / a.quality)
-            flam3(g, f3, a.threads)
+            flam3(g, ref, a.threads, qs=a.ref_quality / a.quality, isaac_seed=f"ref{seed}")
+            flam3(g, f3, a.threads, isaac_seed=f"q{seed}")
             ugnis(g, ug, a.threads)
             r = load(ref)
             p_ug, p_f3 = psnr(load(ug), r), psnr(load(f3), r)

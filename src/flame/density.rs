@@ -106,7 +106,12 @@ impl DeFilters {
         }))
     }
 
+    /// Kernel of width h: coefficients G(1.5·d) for d = dist/h ≤ 1, normalised over the
+    /// square of half-size `half`; but, as flam3 splats them, only the taps within
+    /// ⌈h⌉ − 1 of the centre in both directions are kept (so the narrowest kernels lose a
+    /// little of their mass — flam3's behaviour, which the reference text does not mention).
     fn kernel(h: f64, half: i32) -> Vec<KernelRow> {
+        let reach = (h.ceil() as i32 - 1).clamp(0, half);
         let mut raw: Vec<(i32, i32, f64)> = Vec::new();
         let mut sum = 0.0;
         for dy in -half..=half {
@@ -115,7 +120,9 @@ impl DeFilters {
                 if d <= 1.0 {
                     let v = gaussian(1.5 * d);
                     sum += v;
-                    raw.push((dy, dx, v));
+                    if dx.abs() <= reach && dy.abs() <= reach {
+                        raw.push((dy, dx, v));
+                    }
                 }
             }
         }
@@ -279,32 +286,52 @@ mod tests {
     }
 
     #[test]
-    fn kernels_are_normalised() {
+    fn kernels_are_normalised_and_truncated_like_flam3() {
         let de = DeFilters::new(9.0, 0.0, 0.4, 1).unwrap().unwrap();
-        for k in &de.kernels {
-            let s: f64 = k
-                .iter()
+        let sum = |k: &Vec<KernelRow>| -> f64 {
+            k.iter()
                 .flat_map(|r| r.weights.iter())
                 .map(|&w| w as f64)
-                .sum();
-            assert!((s - 1.0).abs() < 1e-5);
-        }
+                .sum()
+        };
+        // The widest kernel (h = 10) keeps every tap of the 19×19 square: sum 1.
+        assert!((sum(&de.kernels[0]) - 1.0).abs() < 1e-5);
+        // h = 7.58: taps up to 7 away; the d ≤ 1 taps 8 away are normalised but not
+        // splatted, so the kernel sums to a little under 1.
+        let s1 = sum(&de.kernels[1]);
+        assert!(s1 < 1.0 && s1 > 0.95, "{s1}");
+        assert!(de.kernels[1].iter().all(|r| r.dy.abs() <= 7 && r.dx0 >= -7));
+        // The narrowest (h = 1) is the centre tap only: G(0) / (G(0) + 4 G(1.5)).
+        let last = &de.kernels[de.kmax];
+        assert_eq!(last.len(), 1);
+        assert_eq!(last[0].weights.len(), 1);
+        let g0 = gaussian(0.0);
+        let want = g0 / (g0 + 4.0 * gaussian(1.5));
+        assert!((last[0].weights[0] as f64 - want).abs() < 1e-6);
         assert!(DeFilters::new(0.0, 0.0, 0.4, 1).unwrap().is_none());
         assert!(DeFilters::new(1.0, 2.0, 0.4, 1).is_err());
         assert!(DeFilters::new(1.0, 0.0, 0.0, 1).is_err());
     }
 
     #[test]
-    fn splat_conserves_mass_away_from_edges() {
+    fn splat_spreads_each_bucket_with_its_kernel() {
         let de = DeFilters::new(4.0, 0.0, 0.4, 1).unwrap().unwrap();
         let mut h = Histogram::new(40, 40);
         h.data[20 * 40 + 20] = [1.0, 0.5, 0.25, 1.0];
         h.data[10 * 40 + 12] = [3.0, 3.0, 3.0, 3.0];
         let mut acc = vec![[0.0f32; 4]; 1600];
         de.splat(&h, &mut acc, |_| 2.0);
+        let kernel_sum = |n: f64| -> f64 {
+            de.kernels[de.select(n)]
+                .iter()
+                .flat_map(|r| r.weights.iter())
+                .map(|&w| w as f64)
+                .sum()
+        };
+        let want = 2.0 * kernel_sum(1.0) + 2.0 * 3.0 * kernel_sum(3.0);
         let sum: f64 = acc.iter().map(|b| b[3] as f64).sum();
-        assert!((sum - 8.0).abs() < 1e-4, "{sum}");
-        // The single hit spread over several buckets; the triple hit less so.
+        assert!((sum - want).abs() < 1e-4, "{sum} vs {want}");
+        // The single hit spread over several buckets.
         assert!(acc[20 * 40 + 20][3] < 2.0 && acc[20 * 40 + 21][3] > 0.0);
     }
 }
