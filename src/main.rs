@@ -24,7 +24,16 @@ enum Command {
 }
 
 fn main() {
-    let cli = Cli::parse();
+    // Usage errors exit with status 1 and one message, like every other bad input; --help and
+    // --version print to stdout and exit 0.
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 1 } else { 0 };
+            let _ = e.print();
+            std::process::exit(code);
+        }
+    };
     let result = match cli.command {
         Some(Command::Render(a)) => cli::render::run(a),
         None => run_gui(cli.file),
@@ -37,7 +46,7 @@ fn main() {
 
 #[cfg(feature = "gui")]
 fn run_gui(file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
-    ugnis::app::run(file)
+    ugnis::app::run(file).map_err(|e| anyhow::anyhow!("cannot start the window: {e}"))
 }
 
 #[cfg(not(feature = "gui"))]

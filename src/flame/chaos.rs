@@ -44,6 +44,12 @@ pub struct CompiledXform {
     pub opacity: f64,
 }
 
+/// |v| ≤ 1e10; false for NaN (which fails every comparison).
+#[inline(always)]
+fn within_limit(v: f64) -> bool {
+    v.abs() <= BAD_LIMIT
+}
+
 /// flam3 `adjust_percentage`: vis = o^(log₂10), with 0 ↦ 0.
 pub fn adjust_opacity(o: f64) -> f64 {
     if o <= 0.0 {
@@ -108,8 +114,7 @@ impl CompiledXform {
         if let Some(post) = &self.post {
             (px, py) = post.apply(px, py);
         }
-        // NaN fails every comparison, so `!(|v| <= limit)` catches it too.
-        if !(px.abs() <= BAD_LIMIT && py.abs() <= BAD_LIMIT) {
+        if !(within_limit(px) && within_limit(py)) {
             return (rng.f11(), rng.f11(), nc, true);
         }
         (px, py, nc, false)
@@ -276,7 +281,7 @@ impl CompiledXform {
         for j in 0..n {
             c[j] = s * col + (1.0 - s) * c[j];
             // `!(a <= l)` is also true for NaN.
-            let b = !(px[j].abs() <= BAD_LIMIT) | !(py[j].abs() <= BAD_LIMIT);
+            let b = !within_limit(px[j]) | !within_limit(py[j]);
             bad[j] = b;
             any_bad |= b;
         }
@@ -817,12 +822,14 @@ mod tests {
     fn bad_values_are_retried() {
         // A map that expands by 10⁶ escapes past 1e10 within two steps: the point is
         // replaced by a random point and nothing non-finite or huge is ever plotted.
-        let mut f = Flame::default();
-        f.xforms = vec![Xform::linear(
-            Affine::new(1e6, 0.0, 0.0, 1e6, 0.0, 0.0),
-            1.0,
-            0.0,
-        )];
+        let f = Flame {
+            xforms: vec![Xform::linear(
+                Affine::new(1e6, 0.0, 0.0, 1e6, 0.0, 0.0),
+                1.0,
+                0.0,
+            )],
+            ..Flame::default()
+        };
         let ch = Chaos::new(&f).unwrap();
         let mut rng = FastRng::new(1);
         let bad = ch.run_sub_batch(100, &mut rng, |x, y, _, _| {

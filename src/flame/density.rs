@@ -243,7 +243,7 @@ impl DeFilters {
                 n += hist.data[yy as usize * hist.bw + xx as usize][3];
             }
         }
-        if os % 2 == 0 {
+        if os.is_multiple_of(2) {
             let f = os as f32 / (os as f32 + 1.0);
             n *= f * f;
         }

@@ -5,7 +5,9 @@
 //! coefficients, errors around 1 ulp) with a two-constant Cody–Waite reduction by π/2, and are
 //! written without branches so that loops over arrays of points vectorise.
 
-use std::f64::consts::{FRAC_PI_2, PI};
+#![allow(clippy::excessive_precision)] // the published fdlibm coefficients, kept verbatim
+
+use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, FRAC_PI_4, PI};
 
 const S1: f64 = -1.666_666_666_666_663_243_48e-01;
 const S2: f64 = 8.333_333_333_322_489_461_24e-03;
@@ -24,7 +26,7 @@ const C6: f64 = -1.135_964_755_778_819_482_65e-11;
 /// π/2 split: the first 33 bits, and the rest.
 const PIO2_1: f64 = 1.570_796_326_734_125_614_17e+00;
 const PIO2_1T: f64 = 6.077_100_506_506_192_249_32e-11;
-const INV_PIO2: f64 = 6.366_197_723_675_813_824_33e-01;
+const INV_PIO2: f64 = FRAC_2_PI;
 
 #[inline(always)]
 fn kernel_sin(x: f64) -> f64 {
@@ -81,9 +83,9 @@ pub fn cos(x: f64) -> f64 {
 
 const ATANHI: [f64; 4] = [
     4.636_476_090_008_060_935_15e-01,
-    7.853_981_633_974_482_789_99e-01,
+    FRAC_PI_4,
     9.827_937_232_473_290_540_82e-01,
-    1.570_796_326_794_896_558_00e+00,
+    FRAC_PI_2,
 ];
 const ATANLO: [f64; 4] = [
     2.269_877_745_296_168_709_24e-17,

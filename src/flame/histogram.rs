@@ -137,7 +137,7 @@ impl PlotPalette {
                 let f = c * 256.0;
                 let mut k = f.floor();
                 let mut u = f - k;
-                if !(k >= 0.0) {
+                if k.is_nan() || k < 0.0 {
                     k = 0.0;
                     u = 0.0;
                 }

@@ -140,13 +140,13 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     if !(flame.quality > 0.0 && flame.quality.is_finite()) {
         return bad(format!("quality {} must be positive", flame.quality));
     }
-    if !(flame.gamma > 0.0) {
+    if flame.gamma.is_nan() || flame.gamma <= 0.0 {
         return bad(format!("gamma {} must be positive", flame.gamma));
     }
-    if !(flame.contrast > 0.0) {
+    if flame.contrast.is_nan() || flame.contrast <= 0.0 {
         return bad(format!("contrast {} must be positive", flame.contrast));
     }
-    if !(flame.brightness > 0.0) {
+    if flame.brightness.is_nan() || flame.brightness <= 0.0 {
         return bad(format!("brightness {} must be positive", flame.brightness));
     }
     if flame.supersample == 0 || flame.supersample > 16 {
@@ -411,6 +411,7 @@ type Pending = (u32, f32, f32);
 /// Iterate one sub-batch into a histogram. The plotted points are first collected in `buf`
 /// and then added in a tight loop, so the cache misses of the scattered adds overlap.
 #[inline(never)]
+#[allow(clippy::too_many_arguments)]
 fn iterate_into(
     chaos: &Chaos,
     geom: &Geometry,

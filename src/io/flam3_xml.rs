@@ -191,7 +191,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
     let mut root_seen = false;
     let mut names: Vec<(String, usize)> = Vec::new();
     loop {
-        let p = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+        let p = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
         match &p.event {
             Event::Eof => break,
             Event::Start(e) | Event::Empty(e) => {
@@ -663,7 +663,7 @@ fn read_flame_children(
     pal: &mut PaletteData,
 ) -> R<()> {
     loop {
-        let p = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+        let p = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
         match &p.event {
             Event::End(_) => return Ok(()),
             Event::Eof => return Err(cx.err(p.start, "XML001", "end of file inside <flame>")),
@@ -688,7 +688,8 @@ fn read_flame_children(
                         if !is_empty {
                             // Children (flam3 <motion>) are kept verbatim.
                             loop {
-                                let c = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                                let c =
+                                    cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
                                 match c.event {
                                     Event::End(_) => break,
                                     Event::Start(_) => {
@@ -886,13 +887,13 @@ fn read_palette(
     let mut content_off = start;
     if !is_empty {
         loop {
-            let p = cur.next().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+            let p = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
             match &p.event {
                 Event::Text(t) => {
                     if content.is_empty() {
                         content_off = p.start;
                     }
-                    content.push_str(&&**t);
+                    content.push_str(t);
                 }
                 Event::End(_) => break,
                 Event::Eof => {
@@ -959,7 +960,7 @@ fn read_palette(
         }
     };
     for tok in content.split_whitespace() {
-        if tok.len() % dpc != 0 || !tok.bytes().all(|c| c.is_ascii_hexdigit()) {
+        if !tok.len().is_multiple_of(dpc) || !tok.bytes().all(|c| c.is_ascii_hexdigit()) {
             return Err(cx.err(
                 content_off,
                 "XML010",

@@ -84,7 +84,7 @@ pub fn load(path: &Path) -> Result<Parsed<PaletteLibrary>, Diagnostic> {
 /// Decode `00RRGGBB…` colours (whitespace allowed between colours).
 pub fn decode_hex_colors(data: &str, digits_per_color: usize) -> Option<Vec<[u8; 4]>> {
     let compact: Vec<u8> = data.bytes().filter(|c| !c.is_ascii_whitespace()).collect();
-    if compact.len() % digits_per_color != 0 {
+    if !compact.len().is_multiple_of(digits_per_color) {
         return None;
     }
     let hex = |c: u8| (c as char).to_digit(16).map(|v| v as u8);
@@ -108,7 +108,7 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<PaletteLibrary>, Diagnosti
     let mut lib = PaletteLibrary::default();
     let mut warnings = Vec::new();
     loop {
-        let p = cur.next().map_err(|(o, m)| err(o, "XML001", m))?;
+        let p = cur.next_event().map_err(|(o, m)| err(o, "XML001", m))?;
         let e = match &p.event {
             Event::Eof => break,
             Event::Start(e) | Event::Empty(e) => e,

@@ -105,7 +105,7 @@ impl<'a> XmlCursor<'a> {
     }
 
     /// The next event, or an error with its byte offset.
-    pub fn next(&mut self) -> Result<Positioned<'a>, (usize, String)> {
+    pub fn next_event(&mut self) -> Result<Positioned<'a>, (usize, String)> {
         let start = self.reader.buffer_position() as usize;
         match self.reader.read_event() {
             Ok(event) => Ok(Positioned {
@@ -121,7 +121,7 @@ impl<'a> XmlCursor<'a> {
     pub fn skip_element(&mut self) -> Result<usize, (usize, String)> {
         let mut depth = 1usize;
         loop {
-            let p = self.next()?;
+            let p = self.next_event()?;
             match p.event {
                 Event::Start(_) => depth += 1,
                 Event::End(_) => {
