@@ -21,6 +21,10 @@ struct Cli {
 enum Command {
     /// Render a flame file to PNG or BMP
     Render(cli::render::RenderArgs),
+    /// List what a flame, IFS or gradient file holds
+    Info(cli::info::InfoArgs),
+    /// Convert between file formats (.ifs ↔ .fla/.flame, .png → .fla, .ugr ↔ .map, image → gradient)
+    Convert(cli::convert::ConvertArgs),
 }
 
 fn main() {
@@ -36,6 +40,8 @@ fn main() {
     };
     let result = match cli.command {
         Some(Command::Render(a)) => cli::render::run(a),
+        Some(Command::Info(a)) => cli::info::run(a),
+        Some(Command::Convert(a)) => cli::convert::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {

@@ -1,6 +1,8 @@
 //! Command-line subcommands. Each returns `anyhow::Result`; `main` prints the one error message
 //! and exits with status 1.
 
+pub mod convert;
+pub mod info;
 pub mod render;
 
 use std::io::IsTerminal;

@@ -107,6 +107,10 @@ pub fn framing_orbit(chaos: &Chaos, n: usize) -> (Vec<f64>, Vec<f64>) {
 
 /// Frame a flame for its own image size. Returns `None` when the flame cannot be iterated.
 pub fn auto_frame(flame: &Flame) -> Option<Framing> {
+    if flame.ifs3d.is_some() {
+        let (xs, ys) = crate::flame::ifs3d::framing_points(flame, FRAMING_POINTS)?;
+        return Some(frame_points(&xs, &ys, flame.width, flame.height));
+    }
     let chaos = Chaos::new(flame).ok()?;
     let (xs, ys) = framing_orbit(&chaos, FRAMING_POINTS);
     Some(frame_points(&xs, &ys, flame.width, flame.height))

@@ -7,6 +7,7 @@ pub mod fastmath;
 pub mod filter;
 pub mod framing;
 pub mod histogram;
+pub mod ifs3d;
 pub mod model;
 pub mod render;
 pub mod rng;
@@ -14,6 +15,6 @@ pub mod symmetry;
 pub mod tonemap;
 pub mod variations;
 
-pub use model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
+pub use model::{Affine, FilterShape, Flame, FlameKind, Ifs3d, NewFlame, PaletteMode, Var, Xform};
 pub use render::{RenderError, RenderOptions, Renderer, render};
 pub use tonemap::OutputFormat;

@@ -303,6 +303,65 @@ impl PaletteMode {
     }
 }
 
+/// A 3-D Fractint IFS shown through a fixed view (formats.md §2.2): rows
+/// a b c d e f g h i j k l p with x′ = a x + b y + c z + j, y′ = d x + e y + f z + k,
+/// z′ = g x + h y + i z + l.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ifs3d {
+    pub rows: Vec<[f64; 13]>,
+    /// Rotations about the x, y and z axes, degrees (applied in that order), then an
+    /// orthographic projection onto the screen plane.
+    pub view_degrees: [f64; 3],
+}
+
+impl Ifs3d {
+    /// Fractint's suggested 3-D view: 30°/30°/30°.
+    pub const FRACTINT_VIEW: [f64; 3] = [30.0, 30.0, 30.0];
+}
+
+/// Settings for new, random and imported flames (the Options dialog's "main" values,
+/// flame.md §10).
+#[derive(Clone, Debug, PartialEq)]
+pub struct NewFlame {
+    pub width: u32,
+    pub height: u32,
+    pub quality: f64,
+    pub gamma: f64,
+    pub brightness: f64,
+    pub contrast: f64,
+    pub gradient: Gradient,
+}
+
+impl Default for NewFlame {
+    fn default() -> Self {
+        NewFlame {
+            width: 640,
+            height: 480,
+            quality: 15.0,
+            gamma: 2.0,
+            brightness: 4.0,
+            contrast: 1.0,
+            gradient: crate::gradient::default_gradient(),
+        }
+    }
+}
+
+impl NewFlame {
+    /// An empty flame with these settings and the remaining flame.md §10 defaults.
+    pub fn flame(&self) -> Flame {
+        Flame {
+            width: self.width,
+            height: self.height,
+            quality: self.quality,
+            gamma: self.gamma,
+            brightness: self.brightness,
+            contrast: self.contrast,
+            palette: self.gradient.clone(),
+            ..Flame::default()
+        }
+    }
+}
+
 /// What a flame was made from (`ugnis_kind`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FlameKind {
@@ -359,6 +418,8 @@ pub struct Flame {
     /// Generator seed (`ugnis_seed`).
     pub seed: Option<u64>,
     pub kind: FlameKind,
+    /// A 3-D IFS iterated instead of the xforms (from a Fractint `(3D)` entry).
+    pub ifs3d: Option<Ifs3d>,
     /// Determinant-rule weights after triangle edits (`ugnis_auto_weights`); `None`: the
     /// Options value.
     pub auto_weights: Option<bool>,
@@ -400,6 +461,7 @@ impl Default for Flame {
             has_camera: true,
             seed: None,
             kind: FlameKind::Flame,
+            ifs3d: None,
             auto_weights: None,
             extra_attrs: Vec::new(),
             extra_children: Vec::new(),

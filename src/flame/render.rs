@@ -24,6 +24,7 @@ use crate::flame::chaos::{Chaos, ChaosError, Lanes, SUB_BATCH};
 use crate::flame::density::{DeError, DeFilters};
 use crate::flame::framing;
 use crate::flame::histogram::{Bucket, Geometry, Histogram, PlotPalette};
+use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::Flame;
 use crate::flame::rng::FastRng;
 use crate::flame::tonemap::{LogScale, OutputFormat, ToneMap};
@@ -168,6 +169,8 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
 pub struct Renderer {
     flame: Flame,
     chaos: Chaos,
+    /// Set for flames made from 3-D IFS entries: iterated instead of the xforms.
+    ifs3d: Option<Ifs3dSystem>,
     geom: Geometry,
     palette: PlotPalette,
     hists: Vec<Histogram>,
@@ -190,6 +193,13 @@ impl Renderer {
         let mut flame = flame.clone();
         validate_settings(&flame)?;
         let chaos = Chaos::new(&flame)?;
+        let ifs3d = match &flame.ifs3d {
+            Some(i) => Some(
+                Ifs3dSystem::new(i)
+                    .ok_or_else(|| RenderError::Settings("the 3-D IFS has no maps".into()))?,
+            ),
+            None => None,
+        };
         if !flame.has_camera {
             framing::apply_auto_frame(&mut flame);
         }
@@ -231,6 +241,7 @@ impl Renderer {
         Ok(Renderer {
             palette: PlotPalette::new(&flame),
             chaos,
+            ifs3d,
             geom,
             hists,
             lanes,
@@ -292,6 +303,7 @@ impl Renderer {
         let end = (start + n_batches).min(self.batches_total);
         let threads = self.hists.len() as u64;
         let (chaos, geom, pal) = (&self.chaos, &self.geom, &self.palette);
+        let ifs3d = self.ifs3d.as_ref();
         let (seed, total) = (self.seed, self.total);
         let results: Vec<(u64, u64, bool)> = std::thread::scope(|s| {
             let handles: Vec<_> = self
@@ -313,8 +325,12 @@ impl Renderer {
                             }
                             let n = SUB_BATCH.min(total - j * SUB_BATCH);
                             let mut rng = FastRng::for_stream(seed, j);
-                            bad +=
-                                iterate_into(chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng);
+                            bad += match ifs3d {
+                                None => iterate_into(
+                                    chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng,
+                                ),
+                                Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
+                            };
                             done += n;
                             j += threads;
                         }
@@ -440,6 +456,28 @@ fn iterate_into(
         b[3] += p[3] * v;
     }
     bad
+}
+
+/// Iterate a 3-D IFS sub-batch into a histogram.
+fn iterate_3d(
+    sys: &Ifs3dSystem,
+    geom: &Geometry,
+    pal: &PlotPalette,
+    hist: &mut Histogram,
+    n: u64,
+    rng: &mut FastRng,
+) -> u64 {
+    let data = &mut hist.data;
+    sys.run_sub_batch(n, rng, |x, y, c, _| {
+        if let Some(idx) = geom.bucket_of(x, y) {
+            let p = pal.lookup(c);
+            let b = &mut data[idx];
+            b[0] += p[0];
+            b[1] += p[1];
+            b[2] += p[2];
+            b[3] += p[3];
+        }
+    })
 }
 
 /// Turn a histogram into an image: log scaling (with density estimation when enabled),

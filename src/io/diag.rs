@@ -117,6 +117,28 @@ impl<'a> SourceMap<'a> {
     }
 }
 
+/// Lines with their byte offsets; LF, CRLF and lone CR end a line.
+pub fn lines(text: &str) -> Vec<(usize, &str)> {
+    let b = text.as_bytes();
+    let mut out = Vec::new();
+    let mut start = 0;
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == b'\n' || b[i] == b'\r' {
+            out.push((start, &text[start..i]));
+            if b[i] == b'\r' && b.get(i + 1) == Some(&b'\n') {
+                i += 1;
+            }
+            start = i + 1;
+        }
+        i += 1;
+    }
+    if start < b.len() {
+        out.push((start, &text[start..]));
+    }
+    out
+}
+
 /// Why a number token is rejected.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum NumberError {

@@ -558,6 +558,7 @@ fn read_flame(
             name: gradient_name,
             colors: interpolate_missing(&pal.colors),
             stops: Vec::new(),
+            map_entries: None,
         };
     } else if let Some((n, off)) = library_palette {
         let lib = cx.library();

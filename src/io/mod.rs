@@ -5,8 +5,12 @@ pub mod atomic;
 pub mod bmp;
 pub mod diag;
 pub mod flam3_xml;
+pub mod ifs;
+pub mod image_in;
+pub mod map;
 pub mod palettes;
 pub mod png;
+pub mod ugr;
 pub mod xml;
 
 use std::path::Path;
@@ -58,6 +62,8 @@ pub enum FileKind {
     Ugr,
     Map,
     Bmp,
+    Jpeg,
+    Gif,
     Unknown,
 }
 
@@ -74,6 +80,8 @@ pub fn kind_of(path: &Path) -> FileKind {
         "ugr" | "gradient" => FileKind::Ugr,
         "map" => FileKind::Map,
         "bmp" => FileKind::Bmp,
+        "jpg" | "jpeg" => FileKind::Jpeg,
+        "gif" => FileKind::Gif,
         _ => FileKind::Unknown,
     }
 }
@@ -112,12 +120,142 @@ pub fn read_flames(
     })
 }
 
-/// Read a Fractint `.ifs` file as flames (one per 2-D entry).
+/// Read a Fractint `.ifs` file (UTF-8, or Windows-1252 with a warning).
+pub fn read_ifs(path: &Path) -> Result<Parsed<ifs::IfsFile>, Diagnostic> {
+    let name = path.display().to_string();
+    let bytes = read_bytes(path)?;
+    let (text, w) = diag::decode_text(&bytes, &name);
+    let mut p = ifs::parse(&text, &name)?;
+    p.warnings.extend(w);
+    Ok(p)
+}
+
+/// Read a Fractint `.ifs` file as flames, one per entry (3-D entries through the fixed view).
 pub fn ifs_flames(path: &Path) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
-    Err(Diagnostic::error(
-        &path.display().to_string(),
-        Pos::File,
-        "IFS000",
-        "reading .ifs files is not implemented yet",
-    ))
+    ifs_flames_with(path, &crate::flame::NewFlame::default())
+}
+
+/// As [`ifs_flames`], with the display settings and gradient for the new flames.
+pub fn ifs_flames_with(
+    path: &Path,
+    defaults: &crate::flame::NewFlame,
+) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
+    let p = read_ifs(path)?;
+    Ok(Parsed {
+        value: p
+            .value
+            .entries
+            .iter()
+            .map(|e| ifs::entry_to_flame(e, defaults))
+            .collect(),
+        warnings: p.warnings,
+    })
+}
+
+/// Read the gradients of a gradient file (.ugr: several; .map: one) or make one from an image.
+pub fn read_gradients(path: &Path) -> Result<Parsed<Vec<crate::gradient::Gradient>>, Diagnostic> {
+    let name = path.display().to_string();
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    match kind_of(path) {
+        FileKind::Ugr => {
+            let bytes = read_bytes(path)?;
+            let (text, w) = diag::decode_text(&bytes, &name);
+            let mut p = ugr::parse(&text, &name)?;
+            p.warnings.extend(w);
+            Ok(p)
+        }
+        FileKind::Map => {
+            let bytes = read_bytes(path)?;
+            if bytes.contains(&0) {
+                let off = bytes.iter().position(|&b| b == 0).unwrap_or(0);
+                return Err(Diagnostic::error(
+                    &name,
+                    Pos::Byte(off as u64),
+                    "MAP003",
+                    "binary content (NUL bytes); not a text .map palette",
+                ));
+            }
+            let (text, w) = diag::decode_text(&bytes, &name);
+            let p = map::parse(&text, &name, &stem)?;
+            Ok(Parsed {
+                value: vec![p.value],
+                warnings: p.warnings.into_iter().chain(w).collect(),
+            })
+        }
+        FileKind::Png | FileKind::Bmp | FileKind::Jpeg | FileKind::Gif => Ok(Parsed {
+            value: vec![image_in::gradient_from_image(path, 1)?],
+            warnings: Vec::new(),
+        }),
+        _ => Err(Diagnostic::error(
+            &name,
+            Pos::File,
+            "IO003",
+            "not a gradient file (expected .ugr, .map, or an image)",
+        )),
+    }
+}
+
+/// Write gradients atomically as .ugr (any number) or .map (exactly one).
+pub fn write_gradients(path: &Path, gradients: &[crate::gradient::Gradient]) -> Result<(), String> {
+    let text = match kind_of(path) {
+        FileKind::Ugr => ugr::write(gradients),
+        FileKind::Map => match gradients {
+            [g] => map::write(g),
+            _ => {
+                return Err(format!(
+                    "a .map file holds one gradient; {} given (use .ugr)",
+                    gradients.len()
+                ));
+            }
+        },
+        _ => {
+            return Err(format!(
+                "{}: gradients are saved as .ugr or .map",
+                path.display()
+            ));
+        }
+    };
+    atomic::write_atomic(path, text.as_bytes())
+        .map_err(|e| format!("cannot write '{}': {e}", path.display()))
+}
+
+/// Write flames atomically as .fla/.flame/.flam3 (XML) or .ifs (linear flames only; the
+/// returned strings are warnings about what .ifs cannot keep).
+pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<String>, String> {
+    let mut warnings = Vec::new();
+    let text = match kind_of(path) {
+        FileKind::Ifs => {
+            let mut f = ifs::IfsFile::default();
+            for fl in flames {
+                let (e, w) = ifs::flame_to_entry(fl).map_err(|e| format!("'{}': {e}", fl.name))?;
+                warnings.extend(w);
+                f.entries.push(e);
+            }
+            ifs::write(&f)?
+        }
+        FileKind::Fla | FileKind::FlameXml => {
+            if let Some(f) = flames.iter().find(|f| f.ifs3d.is_some()) {
+                return Err(format!(
+                    "'{}' is a 3-D IFS entry; 3-D IFS entries cannot be represented as flames (save as .ifs)",
+                    f.name
+                ));
+            }
+            flam3_xml::write(&flam3_xml::FlameFile {
+                name: name.to_string(),
+                flames: flames.to_vec(),
+            })
+        }
+        _ => {
+            return Err(format!(
+                "{}: flames are saved as .fla, .flame, .flam3 or .ifs",
+                path.display()
+            ));
+        }
+    };
+    atomic::write_atomic(path, text.as_bytes())
+        .map_err(|e| format!("cannot write '{}': {e}", path.display()))?;
+    Ok(warnings)
 }

@@ -1,0 +1,86 @@
+//! `ugnis convert`: between .ifs and .fla/.flame, between .ugr and .map, from a PNG with an
+//! embedded flame to .fla, and from an image to a gradient.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use clap::Args;
+
+use ugnis::io::{self, FileKind};
+
+#[derive(Args, Debug)]
+pub struct ConvertArgs {
+    /// Input file
+    pub input: PathBuf,
+    /// Output file; its extension chooses the format
+    pub output: PathBuf,
+}
+
+fn is_flames(k: FileKind) -> bool {
+    matches!(k, FileKind::Fla | FileKind::FlameXml | FileKind::Ifs)
+}
+
+pub fn run(a: ConvertArgs) -> Result<()> {
+    let (ki, ko) = (io::kind_of(&a.input), io::kind_of(&a.output));
+    if is_flames(ko) {
+        let flames = match ki {
+            FileKind::Ifs => {
+                let p = io::ifs_flames(&a.input)?;
+                for w in &p.warnings {
+                    eprintln!("{w}");
+                }
+                // Frame now, so other programs get a camera.
+                p.value
+                    .into_iter()
+                    .map(|mut f| {
+                        if f.ifs3d.is_none() {
+                            ugnis::flame::framing::apply_auto_frame(&mut f);
+                        }
+                        f
+                    })
+                    .collect()
+            }
+            FileKind::Fla | FileKind::FlameXml | FileKind::Png => {
+                let p = io::read_flames(&a.input, &Default::default())?;
+                for w in &p.warnings {
+                    eprintln!("{w}");
+                }
+                p.value
+            }
+            _ => bail!("{}: cannot convert this file to flames", a.input.display()),
+        };
+        let name = a
+            .output
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        for w in io::write_flames(&a.output, &name, &flames).map_err(anyhow::Error::msg)? {
+            eprintln!("warning: {w}");
+        }
+        return Ok(());
+    }
+    if matches!(ko, FileKind::Ugr | FileKind::Map) {
+        let p = io::read_gradients(&a.input)?;
+        for w in &p.warnings {
+            eprintln!("{w}");
+        }
+        let gradients = if ko == FileKind::Map && p.value.len() > 1 {
+            eprintln!(
+                "warning: {} holds {} gradients; a .map keeps one, writing the first ('{}')",
+                a.input.display(),
+                p.value.len(),
+                p.value[0].name
+            );
+            p.value[..1].to_vec()
+        } else {
+            p.value
+        };
+        io::write_gradients(&a.output, &gradients).map_err(anyhow::Error::msg)?;
+        return Ok(());
+    }
+    bail!(
+        "cannot convert {} to {}: supported are .ifs ↔ .fla/.flame, .png (with a flame) → .fla, .ugr ↔ .map, image → .ugr/.map",
+        a.input.display(),
+        a.output.display()
+    )
+}

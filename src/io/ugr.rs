@@ -1,0 +1,371 @@
+//! Ultra Fractal / Apophysis `.ugr` gradient files (formats.md §6): several named gradients
+//! per file, keys at positions 0..399 on a circle, colour = R + 256·G + 65536·B.
+
+use std::fmt::Write as _;
+
+use crate::gradient::{Gradient, Stop};
+use crate::io::diag::{Diagnostic, Parsed, SourceMap, parse_int};
+
+/// Sanity limit on gradients per file.
+pub const MAX_GRADIENTS: usize = 10_000;
+
+struct Key {
+    index: i64,
+    color: i64,
+}
+
+/// Parse the text of a `.ugr` file.
+pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let map = SourceMap::new(text);
+    let err = |off: usize, code, msg: String| Diagnostic::error(file, map.pos(off), code, msg);
+    let mut warnings = Vec::new();
+    let mut out = Vec::new();
+    let b = text.as_bytes();
+    let mut i = 0;
+    let skip_ws = |i: &mut usize| {
+        while *i < b.len() && (b[*i] as char).is_whitespace() {
+            *i += 1;
+        }
+    };
+    loop {
+        skip_ws(&mut i);
+        if i >= b.len() {
+            break;
+        }
+        if b[i] == b';' {
+            while i < b.len() && b[i] != b'\n' && b[i] != b'\r' {
+                i += 1;
+            }
+            continue;
+        }
+        // Header: name … "{" on the same line.
+        let line_end = text[i..].find(['\n', '\r']).map_or(text.len(), |e| i + e);
+        let header = &text[i..line_end];
+        let Some(brace) = header.find('{') else {
+            return Err(err(
+                i,
+                "UGR001",
+                format!("expected 'name {{' on this line, found '{}'", header.trim()),
+            ));
+        };
+        let name = header[..brace].trim().to_string();
+        if name.is_empty() {
+            return Err(err(
+                i + brace,
+                "UGR001",
+                "'{' without a gradient name".into(),
+            ));
+        }
+        let start = i;
+        i += brace + 1;
+        // Body up to the matching "}" (quoted strings may contain braces).
+        let mut j = i;
+        let mut in_quote = false;
+        while j < b.len() && (in_quote || b[j] != b'}') {
+            if b[j] == b'"' {
+                in_quote = !in_quote;
+            }
+            j += 1;
+        }
+        if j >= b.len() {
+            return Err(err(
+                start,
+                "UGR002",
+                format!("gradient '{name}' has no closing '}}'"),
+            ));
+        }
+        let body = &text[i..j];
+        let body_off = i;
+        i = j + 1;
+        if name.contains("(3D)") {
+            continue;
+        }
+        if out.len() >= MAX_GRADIENTS {
+            return Err(err(
+                start,
+                "UGR007",
+                format!("more than {MAX_GRADIENTS} gradients"),
+            ));
+        }
+        let Some(gpos) = body.find("gradient:") else {
+            return Err(err(
+                start,
+                "UGR003",
+                format!("gradient '{name}' has no 'gradient:' section"),
+            ));
+        };
+        let section_end = body[gpos..]
+            .find("opacity:")
+            .map_or(body.len(), |o| gpos + o);
+        let section = &body[gpos + "gradient:".len()..section_end];
+        let sec_off = body_off + gpos + "gradient:".len();
+        let mut indices: Vec<(i64, usize)> = Vec::new();
+        let mut colors: Vec<(i64, usize)> = Vec::new();
+        let mut title: Option<String> = None;
+        for (tok, off) in ugr_tokens(section, sec_off) {
+            let Some((k, v)) = tok.split_once('=') else {
+                continue;
+            };
+            match k.to_ascii_lowercase().as_str() {
+                "index" => {
+                    let n = parse_int(v).map_err(|_| {
+                        err(off, "UGR006", format!("index '{v}' is not an integer"))
+                    })?;
+                    indices.push((n, off));
+                }
+                "color" => {
+                    let n = parse_int(v).map_err(|_| {
+                        err(off, "UGR006", format!("color '{v}' is not an integer"))
+                    })?;
+                    if !(0..=16_777_215).contains(&n) {
+                        return Err(err(
+                            off,
+                            "UGR006",
+                            format!("color {n} is outside 0..16777215"),
+                        ));
+                    }
+                    colors.push((n, off));
+                }
+                "title" => title = Some(v.trim_matches('"').to_string()),
+                _ => {}
+            }
+        }
+        if indices.is_empty() || colors.is_empty() {
+            return Err(err(
+                start,
+                "UGR004",
+                format!("gradient '{name}' has no index/color pair"),
+            ));
+        }
+        if indices.len() != colors.len() {
+            return Err(err(
+                start,
+                "UGR005",
+                format!(
+                    "gradient '{name}' has {} index and {} color values",
+                    indices.len(),
+                    colors.len()
+                ),
+            ));
+        }
+        let keys: Vec<Key> = indices
+            .iter()
+            .zip(&colors)
+            .map(|(&(index, _), &(color, _))| Key { index, color })
+            .collect();
+        let (g, dup) = from_keys(&name, &keys);
+        if dup {
+            warnings.push(Diagnostic::warning(
+                file,
+                map.pos(start),
+                "UGR008",
+                format!(
+                    "gradient '{name}' has two keys at the same position; the later one is used"
+                ),
+            ));
+        }
+        let _ = title;
+        out.push(g);
+    }
+    Ok(Parsed {
+        value: out,
+        warnings,
+    })
+}
+
+/// Whitespace-separated tokens with byte offsets; a `"…"` string stays in one token.
+fn ugr_tokens(s: &str, base: usize) -> Vec<(&str, usize)> {
+    let b = s.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        while i < b.len() && (b[i] as char).is_whitespace() {
+            i += 1;
+        }
+        if i >= b.len() {
+            break;
+        }
+        let st = i;
+        let mut q = false;
+        while i < b.len() && (q || !(b[i] as char).is_whitespace()) {
+            if b[i] == b'"' {
+                q = !q;
+            }
+            i += 1;
+        }
+        out.push((&s[st..i], base + st));
+    }
+    out
+}
+
+fn rgb_of(c: i64) -> [f64; 3] {
+    [
+        (c % 256) as f64,
+        ((c / 256) % 256) as f64,
+        (c / 65536) as f64,
+    ]
+}
+
+/// Build the 256-entry table from keys (formats.md §6). Returns the gradient and whether a
+/// duplicate slot was replaced.
+fn from_keys(name: &str, keys: &[Key]) -> (Gradient, bool) {
+    // slot j = round(I·255/399) of I mod 400; later duplicates replace earlier ones.
+    let mut slots: Vec<(usize, [f64; 3])> = Vec::new();
+    let mut dup = false;
+    for k in keys {
+        let i = k.index.rem_euclid(400);
+        let j = ((i as f64) * 255.0 / 399.0).round() as usize;
+        let rgb = rgb_of(k.color);
+        if let Some(s) = slots.iter_mut().find(|s| s.0 == j) {
+            s.1 = rgb;
+            dup = true;
+        } else {
+            slots.push((j, rgb));
+        }
+    }
+    slots.sort_by_key(|s| s.0);
+    let mut table = [[0.0f64; 3]; 256];
+    if slots.len() == 1 {
+        table = [slots[0].1; 256];
+    } else {
+        // Consecutive keys, plus the wrap from the last key to the first (+256).
+        for w in 0..slots.len() {
+            let (j0, c0) = slots[w];
+            let (j1, c1) = if w + 1 < slots.len() {
+                slots[w + 1]
+            } else {
+                (slots[0].0 + 256, slots[0].1)
+            };
+            let span = (j1 - j0) as f64;
+            for j in j0..j1 {
+                let u = (j - j0) as f64 / span;
+                let c = [
+                    (c0[0] + (c1[0] - c0[0]) * u).round(),
+                    (c0[1] + (c1[1] - c0[1]) * u).round(),
+                    (c0[2] + (c1[2] - c0[2]) * u).round(),
+                ];
+                table[j % 256] = c;
+            }
+        }
+    }
+    let colors = table
+        .iter()
+        .map(|c| [c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, 1.0])
+        .collect();
+    let stops = slots
+        .iter()
+        .map(|(j, c)| Stop {
+            pos: *j as f64 / 255.0,
+            rgb: [c[0] / 255.0, c[1] / 255.0, c[2] / 255.0],
+        })
+        .collect();
+    (
+        Gradient {
+            name: name.to_string(),
+            colors,
+            stops,
+            map_entries: None,
+        },
+        dup,
+    )
+}
+
+/// A gradient name as `.ugr` entry names allow (spaces → `_`).
+pub fn sanitize_name(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_whitespace() || c == '{' || c == '}' || c == '"' {
+                '_'
+            } else {
+                c
+            }
+        })
+        .collect();
+    if s.is_empty() { "gradient".into() } else { s }
+}
+
+/// Write gradients as a `.ugr` file: 256 keys at I = round(i·399/255), CRLF line ends.
+pub fn write(gradients: &[Gradient]) -> String {
+    let mut s = String::new();
+    for (gi, g) in gradients.iter().enumerate() {
+        if gi > 0 {
+            s.push_str("\r\n");
+        }
+        let name = sanitize_name(&g.name);
+        let _ = write!(
+            s,
+            "{name} {{\r\ngradient:\r\n title=\"{name}\" smooth=no\r\n"
+        );
+        for i in 0..256 {
+            let [r, gg, b] = g.rgb8(i);
+            let idx = ((i as f64) * 399.0 / 255.0).round() as i64;
+            let c = r as i64 + 256 * gg as i64 + 65536 * b as i64;
+            let _ = write!(s, " index={idx} color={c}\r\n");
+        }
+        s.push_str("}\r\n");
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A hand-written file in the syntax Ultra Fractal and Apophysis write.
+    const HAND: &str = "; gradients written by hand for the tests\r\n\
+two-tone {\r\ngradient:\r\n title=\"two tone {braces}\" smooth=yes\r\n index=0 color=255\r\n index=399 color=16711680\r\nopacity:\r\n smooth=no index=0 opacity=255\r\n}\r\n\
+\r\nwrapped {\ngradient:\n index=100 color=65280 index=300 color=255\n}\n\
+\nflat {\ngradient:\n index=7 color=8421504\n}\n\
+skip(3D) {\ngradient:\n index=0 color=0\n}\n";
+
+    #[test]
+    fn reads_keys_interpolates_and_wraps() {
+        let p = parse(HAND, "hand.ugr").unwrap();
+        let g = p.value;
+        assert_eq!(g.len(), 3);
+        assert_eq!(g[0].name, "two-tone");
+        assert_eq!(g[0].rgb8(0), [255, 0, 0]);
+        assert_eq!(g[0].rgb8(255), [0, 0, 255]);
+        assert_eq!(g[0].rgb8(128), [127, 0, 128]);
+        // Keys at slots 64 (I = 100) and 192 (I = 300): green and red, wrapping through 255 → 0.
+        let w = &g[1];
+        assert_eq!(w.rgb8(64), [0, 255, 0]);
+        assert_eq!(w.rgb8(192), [255, 0, 0]);
+        assert_eq!(w.rgb8(0), [128, 128, 0]);
+        assert!(g[2].colors.iter().all(|c| c[0] == 128.0 / 255.0));
+    }
+
+    #[test]
+    fn write_read_is_exact() {
+        for g in crate::gradient::builtin() {
+            let text = write(std::slice::from_ref(&g));
+            let back = parse(&text, "w.ugr").unwrap().value.remove(0);
+            assert_eq!(back.colors, g.colors, "{}", g.name);
+            assert_eq!(back.name, sanitize_name(&g.name));
+        }
+    }
+
+    #[test]
+    fn bad_inputs() {
+        let cases = [
+            ("name\ngradient:\n}\n", "UGR001"),
+            ("n {\ngradient:\n index=0 color=0\n", "UGR002"),
+            ("n {\n index=0 color=0\n}\n", "UGR003"),
+            ("n {\ngradient:\n title=\"x\"\n}\n", "UGR004"),
+            ("n {\ngradient:\n index=0 color=0 index=4\n}\n", "UGR005"),
+            ("n {\ngradient:\n index=0.5 color=0\n}\n", "UGR006"),
+            ("n {\ngradient:\n index=0 color=16777216\n}\n", "UGR006"),
+        ];
+        for (src, code) in cases {
+            assert_eq!(parse(src, "b.ugr").unwrap_err().code, code, "{src:?}");
+        }
+        let p = parse(
+            "n {\ngradient:\n index=0 color=0 index=400 color=255\n}\n",
+            "d.ugr",
+        )
+        .unwrap();
+        assert!(p.warnings.iter().any(|w| w.code == "UGR008"));
+    }
+}
