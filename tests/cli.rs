@@ -164,3 +164,109 @@ fn failed_output_leaves_existing_file_intact() {
     assert_eq!(std::fs::read(&out).unwrap(), b"old content");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn info_lists_file_contents_and_fails_cleanly() {
+    let (code, out, err) = ugnis(&["info", common::fixture("library.ifs").to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("8 entries") && out.contains("3dfern") && out.contains("3-D"),
+        "{out}"
+    );
+    let (code, out, _) = ugnis(&["info", common::example("features.flame").to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("features") && out.contains("+ final") && out.contains("swirl"),
+        "{out}"
+    );
+    let (code, out, _) = ugnis(&["info", common::fixture("hand.ugr").to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("2 gradient(s)") && out.contains("fire-and-ice"),
+        "{out}"
+    );
+    let dir = common::temp_dir("cli-info");
+    let bad = dir.join("bad.ifs");
+    std::fs::write(&bad, "fern {\n1 2 3\n}\n").unwrap();
+    let (code, _, err) = ugnis(&["info", bad.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(err.contains("bad.ifs:3:1: error[IFS007]"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn convert_between_formats() {
+    let dir = common::temp_dir("cli-convert");
+    let d = |n: &str| dir.join(n).to_str().unwrap().to_string();
+    // .ifs → .fla (3-D entries skipped with a warning) → .ifs again.
+    let (code, _, err) = ugnis(&[
+        "convert",
+        common::fixture("library.ifs").to_str().unwrap(),
+        &d("lib.fla"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("skipping '3dfern'"), "{err}");
+    let (code, _, err) = ugnis(&["convert", &d("lib.fla"), &d("lib.ifs")]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("lost"), "{err}");
+    let back = ugnis::io::read_ifs(std::path::Path::new(&d("lib.ifs")))
+        .unwrap()
+        .value;
+    assert_eq!(back.entries.len(), 7);
+    assert!((back.get("fern").unwrap().rows[1][5] - 1.6).abs() < 1e-12);
+    // A non-linear flame cannot become .ifs.
+    let (code, _, err) = ugnis(&[
+        "convert",
+        common::example("features.flame").to_str().unwrap(),
+        &d("f.ifs"),
+    ]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("only linear flames can be saved as .ifs"),
+        "{err}"
+    );
+    // PNG with embedded flame → .fla.
+    let png = d("s.png");
+    let (code, _, _) = ugnis(&[
+        "render",
+        common::example("sierpinski.flame").to_str().unwrap(),
+        "-o",
+        &png,
+        "--size",
+        "32x24",
+        "--quality",
+        "1",
+    ]);
+    assert_eq!(code, 0);
+    let (code, _, err) = ugnis(&["convert", &png, &d("from-png.fla")]);
+    assert_eq!(code, 0, "{err}");
+    let f = ugnis::io::read_flames(
+        std::path::Path::new(&d("from-png.fla")),
+        &Default::default(),
+    )
+    .unwrap()
+    .value;
+    assert_eq!(f[0].name, "sierpinski");
+    // .ugr ↔ .map
+    let (code, _, err) = ugnis(&[
+        "convert",
+        common::fixture("hand.ugr").to_str().unwrap(),
+        &d("h.map"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("writing the first"), "{err}");
+    let (code, _, err) = ugnis(&["convert", &d("h.map"), &d("h.ugr")]);
+    assert_eq!(code, 0, "{err}");
+    let g = ugnis::io::read_gradients(std::path::Path::new(&d("h.ugr")))
+        .unwrap()
+        .value;
+    assert_eq!(g[0].rgb8(64), [255, 0, 0]);
+    // image → gradient
+    let (code, _, err) = ugnis(&["convert", &png, &d("from-image.map")]);
+    assert_eq!(code, 0, "{err}");
+    // Unsupported pair.
+    let (code, _, err) = ugnis(&["convert", &d("h.map"), &d("x.fla")]);
+    assert_eq!(code, 1);
+    assert!(err.contains("cannot convert"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

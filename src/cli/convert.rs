@@ -23,37 +23,51 @@ fn is_flames(k: FileKind) -> bool {
 pub fn run(a: ConvertArgs) -> Result<()> {
     let (ki, ko) = (io::kind_of(&a.input), io::kind_of(&a.output));
     if is_flames(ko) {
+        let mut root: Option<String> = None;
         let flames = match ki {
             FileKind::Ifs => {
                 let p = io::ifs_flames(&a.input)?;
                 for w in &p.warnings {
                     eprintln!("{w}");
                 }
-                // Frame now, so other programs get a camera.
-                p.value
-                    .into_iter()
-                    .map(|mut f| {
-                        if f.ifs3d.is_none() {
-                            ugnis::flame::framing::apply_auto_frame(&mut f);
-                        }
-                        f
-                    })
-                    .collect()
+                let mut flames = Vec::new();
+                for mut f in p.value {
+                    if f.ifs3d.is_some() && ko != FileKind::Ifs {
+                        eprintln!(
+                            "warning: skipping '{}': 3-D IFS entries cannot be represented as flames",
+                            f.name
+                        );
+                        continue;
+                    }
+                    // Frame now, so other programs get a camera.
+                    if f.ifs3d.is_none() {
+                        ugnis::flame::framing::apply_auto_frame(&mut f);
+                    }
+                    flames.push(f);
+                }
+                if flames.is_empty() {
+                    bail!("{}: nothing to convert", a.input.display());
+                }
+                flames
             }
             FileKind::Fla | FileKind::FlameXml | FileKind::Png => {
-                let p = io::read_flames(&a.input, &Default::default())?;
+                let p = io::read_flame_file(&a.input, &Default::default())?;
                 for w in &p.warnings {
                     eprintln!("{w}");
                 }
-                p.value
+                if !p.value.name.is_empty() {
+                    root = Some(p.value.name.clone());
+                }
+                p.value.flames
             }
             _ => bail!("{}: cannot convert this file to flames", a.input.display()),
         };
-        let name = a
-            .output
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
+        let name = root.unwrap_or_else(|| {
+            a.output
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        });
         for w in io::write_flames(&a.output, &name, &flames).map_err(anyhow::Error::msg)? {
             eprintln!("warning: {w}");
         }

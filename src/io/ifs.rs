@@ -245,7 +245,7 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<IfsFile>, Diagnostic> {
             if !s.is_empty() {
                 match parse_number(s) {
                     Ok(v) => {
-                        if nums.len() >= MAX_ROWS * 13 {
+                        if nums.len() >= MAX_ROWS * if *three_d { 13 } else { 7 } {
                             return Err(err(
                                 t.start,
                                 "IFS016",

@@ -91,6 +91,18 @@ pub fn read_flames(
     path: &Path,
     opts: &flam3_xml::ReadOptions,
 ) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
+    let p = read_flame_file(path, opts)?;
+    Ok(Parsed {
+        value: p.value.flames,
+        warnings: p.warnings,
+    })
+}
+
+/// As [`read_flames`], keeping the document's `<flames name>`.
+pub fn read_flame_file(
+    path: &Path,
+    opts: &flam3_xml::ReadOptions,
+) -> Result<Parsed<flam3_xml::FlameFile>, Diagnostic> {
     let name = path.display().to_string();
     let bytes = read_bytes(path)?;
     let mut o = opts.clone();
@@ -113,11 +125,7 @@ pub fn read_flames(
             }
         }
     };
-    let p = flam3_xml::read(&text, &o)?;
-    Ok(Parsed {
-        value: p.value.flames,
-        warnings: p.warnings,
-    })
+    flam3_xml::read(&text, &o)
 }
 
 /// Read a Fractint `.ifs` file (UTF-8, or Windows-1252 with a warning).

@@ -24,7 +24,7 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic
     let b = text.as_bytes();
     let mut i = 0;
     let skip_ws = |i: &mut usize| {
-        while *i < b.len() && (b[*i] as char).is_whitespace() {
+        while *i < b.len() && b[*i].is_ascii_whitespace() {
             *i += 1;
         }
     };
@@ -180,7 +180,7 @@ fn ugr_tokens(s: &str, base: usize) -> Vec<(&str, usize)> {
     let mut out = Vec::new();
     let mut i = 0;
     while i < b.len() {
-        while i < b.len() && (b[i] as char).is_whitespace() {
+        while i < b.len() && b[i].is_ascii_whitespace() {
             i += 1;
         }
         if i >= b.len() {
@@ -188,7 +188,7 @@ fn ugr_tokens(s: &str, base: usize) -> Vec<(&str, usize)> {
         }
         let st = i;
         let mut q = false;
-        while i < b.len() && (q || !(b[i] as char).is_whitespace()) {
+        while i < b.len() && (q || !b[i].is_ascii_whitespace()) {
             if b[i] == b'"' {
                 q = !q;
             }
