@@ -186,3 +186,27 @@ fn transparent_and_16_bit_outputs() {
     let o8 = render(&f, &opts(1, 2)).unwrap();
     assert!(o8.as_rgb8().is_some());
 }
+
+#[test]
+fn recolor_reuses_the_samples() {
+    let f = example("orchid.flame");
+    let keep = RenderOptions {
+        keep_samples: true,
+        ..opts(5, 2)
+    };
+    let never = AtomicBool::new(false);
+    let mut r = Renderer::new(&f, &keep).unwrap();
+    r.run_all(1, &never, |_| {});
+    assert!(r.can_recolor());
+    let g = ugnis::gradient::builtin_named("lagoon").unwrap();
+    assert!(r.recolor(&g, f.palette_mode));
+    let recoloured = r.finish();
+    // Rendering from scratch with the new gradient gives the very same image.
+    let mut f2 = f.clone();
+    f2.palette = g;
+    let direct = render(&f2, &opts(5, 2)).unwrap();
+    assert_eq!(recoloured.as_bytes(), direct.as_bytes());
+    let mut plain = Renderer::new(&f, &opts(5, 2)).unwrap();
+    assert!(!plain.can_recolor());
+    assert!(!plain.recolor(&ugnis::gradient::Gradient::grey_ramp(), f.palette_mode));
+}

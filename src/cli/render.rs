@@ -128,6 +128,7 @@ pub fn run(a: RenderArgs) -> Result<()> {
         seed: a.seed,
         threads: a.threads,
         memory_limit: None,
+        keep_samples: false,
         format: OutputFormat {
             bits16: a.bits16,
             transparent: a.transparent,

@@ -9,6 +9,7 @@ pub mod framing;
 pub mod histogram;
 pub mod ifs3d;
 pub mod model;
+pub mod random;
 pub mod render;
 pub mod rng;
 pub mod symmetry;

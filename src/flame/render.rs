@@ -39,7 +39,13 @@ pub struct RenderOptions {
     /// system reports as available.
     pub memory_limit: Option<u64>,
     pub format: OutputFormat,
+    /// Keep every plotted sample (12 bytes each) so that [`Renderer::recolor`] can change the
+    /// palette without iterating again. Ignored above [`MAX_KEPT_SAMPLES`].
+    pub keep_samples: bool,
 }
+
+/// Largest render whose samples are kept for recolouring.
+pub const MAX_KEPT_SAMPLES: u64 = 40_000_000;
 
 impl Default for RenderOptions {
     fn default() -> Self {
@@ -48,6 +54,7 @@ impl Default for RenderOptions {
             threads: 0,
             memory_limit: None,
             format: OutputFormat::default(),
+            keep_samples: false,
         }
     }
 }
@@ -176,6 +183,8 @@ pub struct Renderer {
     hists: Vec<Histogram>,
     /// Each worker's orbits, kept between passes.
     lanes: Vec<Box<Lanes>>,
+    /// Each worker's plotted samples, when kept for recolouring.
+    logs: Option<Vec<Vec<Pending>>>,
     seed: u64,
     format: OutputFormat,
     total: u64,
@@ -237,6 +246,9 @@ impl Renderer {
             .map(|_| Histogram::new(geom.bw, geom.bh))
             .collect();
         let lanes = (0..threads).map(|_| Lanes::new()).collect();
+        let total_samples = flame.total_samples();
+        let logs = (opts.keep_samples && total_samples <= MAX_KEPT_SAMPLES)
+            .then(|| vec![Vec::new(); threads]);
         let total = flame.total_samples().max(1);
         Ok(Renderer {
             palette: PlotPalette::new(&flame),
@@ -245,6 +257,7 @@ impl Renderer {
             geom,
             hists,
             lanes,
+            logs,
             seed: opts.seed,
             format: opts.format,
             total,
@@ -305,13 +318,18 @@ impl Renderer {
         let (chaos, geom, pal) = (&self.chaos, &self.geom, &self.palette);
         let ifs3d = self.ifs3d.as_ref();
         let (seed, total) = (self.seed, self.total);
+        let mut logs: Vec<Option<&mut Vec<Pending>>> = match &mut self.logs {
+            Some(l) => l.iter_mut().map(Some).collect(),
+            None => (0..self.hists.len()).map(|_| None).collect(),
+        };
         let results: Vec<(u64, u64, bool)> = std::thread::scope(|s| {
             let handles: Vec<_> = self
                 .hists
                 .iter_mut()
                 .zip(self.lanes.iter_mut())
+                .zip(logs.iter_mut())
                 .enumerate()
-                .map(|(t, (hist, lanes))| {
+                .map(|(t, ((hist, lanes), log))| {
                     s.spawn(move || {
                         let mut done = 0u64;
                         let mut bad = 0u64;
@@ -326,9 +344,15 @@ impl Renderer {
                             let n = SUB_BATCH.min(total - j * SUB_BATCH);
                             let mut rng = FastRng::for_stream(seed, j);
                             bad += match ifs3d {
-                                None => iterate_into(
-                                    chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng,
-                                ),
+                                None => {
+                                    let b = iterate_into(
+                                        chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng,
+                                    );
+                                    if let Some(log) = log.as_deref_mut() {
+                                        log.extend_from_slice(&buf);
+                                    }
+                                    b
+                                }
                                 Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
                             };
                             done += n;
@@ -409,6 +433,36 @@ impl Renderer {
         develop(&f, &self.geom, &m, self.density(), self.format)
     }
 
+    /// True when the samples are kept and [`Renderer::recolor`] can be used.
+    pub fn can_recolor(&self) -> bool {
+        self.logs.is_some() && self.ifs3d.is_none()
+    }
+
+    /// Change the palette (and palette mode) by re-accumulating the kept samples: no iteration.
+    /// Returns false when the samples were not kept (the caller must render again).
+    pub fn recolor(
+        &mut self,
+        palette: &crate::gradient::Gradient,
+        mode: crate::flame::PaletteMode,
+    ) -> bool {
+        let Some(logs) = &self.logs else { return false };
+        if self.ifs3d.is_some() {
+            return false;
+        }
+        self.flame.palette = palette.clone();
+        self.flame.palette_mode = mode;
+        self.palette = PlotPalette::new(&self.flame);
+        let pal = &self.palette;
+        self.hists
+            .par_iter_mut()
+            .zip(logs.par_iter())
+            .for_each(|(h, log)| {
+                h.clear();
+                accumulate(pal, h, log);
+            });
+        true
+    }
+
     /// Finish: merge the thread histograms in place (freeing them) and develop the image.
     pub fn finish(mut self) -> DynamicImage {
         let density = self.density();
@@ -446,8 +500,14 @@ fn iterate_into(
             buf.push((idx as u32, c as f32, vis as f32));
         }
     });
+    accumulate(pal, hist, buf);
+    bad
+}
+
+/// Add pending samples to a histogram.
+fn accumulate(pal: &PlotPalette, hist: &mut Histogram, buf: &[Pending]) {
     let data = &mut hist.data;
-    for &(idx, c, v) in buf.iter() {
+    for &(idx, c, v) in buf {
         let p = pal.lookup(c as f64);
         let b = &mut data[idx as usize];
         b[0] += p[0] * v;
@@ -455,7 +515,6 @@ fn iterate_into(
         b[2] += p[2] * v;
         b[3] += p[3] * v;
     }
-    bad
 }
 
 /// Iterate a 3-D IFS sub-batch into a histogram.
