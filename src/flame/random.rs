@@ -321,6 +321,30 @@ pub fn generate(seed: u64, opts: &RandomOptions, defaults: &NewFlame) -> Generat
     }
 }
 
+/// Seed of flame `i` of a batch with master seed `seed`.
+pub fn batch_seed(seed: u64, i: usize) -> u64 {
+    FastRng::for_stream(seed, i as u64).u64()
+}
+
+/// A random batch (flame.md §8.5): `count` flames named random-001…, generated in parallel;
+/// each stores its own seed (`ugnis_seed`) so that it can be regenerated.
+pub fn generate_batch(
+    count: usize,
+    seed: u64,
+    opts: &RandomOptions,
+    defaults: &NewFlame,
+) -> Vec<Flame> {
+    use rayon::prelude::*;
+    (0..count)
+        .into_par_iter()
+        .map(|i| {
+            let mut f = generate(batch_seed(seed, i), opts, defaults).flame;
+            f.name = format!("random-{:03}", i + 1);
+            f
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

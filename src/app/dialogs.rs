@@ -1,0 +1,282 @@
+//! File choosers: a built-in file browser (always works, also without a desktop portal) with a
+//! button for the system dialog (rfd, xdg-portal), plus small message and confirm dialogs.
+
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{Receiver, channel};
+
+use eframe::egui;
+
+/// What a file chooser is for; decides the title, filters and whether the file must exist.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    Open,
+    SaveAs,
+    LoadGradient,
+    GradientFromImage,
+    Export,
+}
+
+impl Purpose {
+    pub fn title(self) -> &'static str {
+        match self {
+            Purpose::Open => "Open",
+            Purpose::SaveAs => "Save As",
+            Purpose::LoadGradient => "Load gradient",
+            Purpose::GradientFromImage => "Create gradient from image",
+            Purpose::Export => "Export image",
+        }
+    }
+
+    pub fn extensions(self) -> &'static [&'static str] {
+        match self {
+            Purpose::Open => &["fla", "flame", "flam3", "xml", "ifs", "png"],
+            Purpose::SaveAs => &["fla", "flame", "flam3", "ifs"],
+            Purpose::LoadGradient => &["ugr", "map", "gradient"],
+            Purpose::GradientFromImage => &["png", "jpg", "jpeg", "bmp", "gif"],
+            Purpose::Export => &["png", "bmp"],
+        }
+    }
+
+    pub fn saving(self) -> bool {
+        matches!(self, Purpose::SaveAs | Purpose::Export)
+    }
+}
+
+/// The built-in file browser.
+pub struct FileBrowser {
+    pub purpose: Purpose,
+    pub dir: PathBuf,
+    pub name: String,
+    entries: Vec<(String, bool)>,
+    error: Option<String>,
+    system: Option<Receiver<Option<PathBuf>>>,
+}
+
+impl FileBrowser {
+    pub fn new(purpose: Purpose, start: Option<&Path>, name: &str) -> FileBrowser {
+        let dir = start
+            .map(|p| {
+                if p.is_dir() {
+                    p.to_path_buf()
+                } else {
+                    p.parent().map(Path::to_path_buf).unwrap_or_default()
+                }
+            })
+            .filter(|d| d.is_dir())
+            .or_else(|| std::env::current_dir().ok())
+            .unwrap_or_else(|| PathBuf::from("."));
+        let mut b = FileBrowser {
+            purpose,
+            dir,
+            name: name.to_string(),
+            entries: Vec::new(),
+            error: None,
+            system: None,
+        };
+        b.refresh();
+        b
+    }
+
+    fn refresh(&mut self) {
+        self.entries.clear();
+        match std::fs::read_dir(&self.dir) {
+            Ok(rd) => {
+                for e in rd.flatten() {
+                    let name = e.file_name().to_string_lossy().into_owned();
+                    if name.starts_with('.') {
+                        continue;
+                    }
+                    let is_dir = e.path().is_dir();
+                    let ext_ok = Path::new(&name)
+                        .extension()
+                        .map(|x| x.to_string_lossy().to_ascii_lowercase())
+                        .is_some_and(|x| self.purpose.extensions().contains(&x.as_str()));
+                    if is_dir || ext_ok {
+                        self.entries.push((name, is_dir));
+                    }
+                }
+                self.entries.sort_by(|a, b| {
+                    b.1.cmp(&a.1)
+                        .then(a.0.to_lowercase().cmp(&b.0.to_lowercase()))
+                });
+                self.error = None;
+            }
+            Err(e) => self.error = Some(format!("{}: {e}", self.dir.display())),
+        }
+    }
+
+    /// Show the browser. Returns Some(Some(path)) when chosen, Some(None) when cancelled.
+    pub fn show(&mut self, ctx: &egui::Context) -> Option<Option<PathBuf>> {
+        // A pending system dialog answers first.
+        if let Some(rx) = &self.system
+            && let Ok(r) = rx.try_recv()
+        {
+            self.system = None;
+            match r {
+                Some(p) => return Some(Some(p)),
+                None => {
+                    self.error =
+                        Some("the system dialog was closed or is not available; choose here".into())
+                }
+            }
+        }
+        let mut result = None;
+        egui::Modal::new(egui::Id::unique("file-browser")).show(ctx, |ui| {
+            ui.set_width(520.0);
+            ui.heading(self.purpose.title());
+            ui.horizontal(|ui| {
+                if ui.button("Up").on_hover_text("parent folder").clicked()
+                    && let Some(p) = self.dir.parent()
+                {
+                    self.dir = p.to_path_buf();
+                    self.refresh();
+                }
+                let mut d = self.dir.display().to_string();
+                if ui.text_edit_singleline(&mut d).lost_focus() {
+                    let p = PathBuf::from(&d);
+                    if p.is_dir() {
+                        self.dir = p;
+                        self.refresh();
+                    }
+                }
+            });
+            egui::ScrollArea::vertical()
+                .max_height(280.0)
+                .show(ui, |ui| {
+                    let entries = self.entries.clone();
+                    for (name, is_dir) in entries {
+                        let label = if is_dir {
+                            format!("{name}/")
+                        } else {
+                            name.clone()
+                        };
+                        let r = ui.selectable_label(self.name == name, label);
+                        if r.clicked() {
+                            if is_dir {
+                                self.dir = self.dir.join(&name);
+                                self.refresh();
+                            } else {
+                                self.name = name.clone();
+                            }
+                        }
+                        if r.double_clicked() && !is_dir {
+                            result = Some(Some(self.dir.join(&name)));
+                        }
+                    }
+                });
+            ui.horizontal(|ui| {
+                ui.label("File name");
+                let r = ui.text_edit_singleline(&mut self.name);
+                if r.lost_focus()
+                    && ui.input(|i| i.key_pressed(egui::Key::Enter))
+                    && !self.name.is_empty()
+                {
+                    result = Some(Some(self.dir.join(&self.name)));
+                }
+            });
+            ui.label(format!("Types: {}", self.purpose.extensions().join(", ")));
+            if let Some(e) = &self.error {
+                ui.colored_label(egui::Color32::from_rgb(230, 150, 80), e);
+            }
+            ui.horizontal(|ui| {
+                let ok = if self.purpose.saving() {
+                    "Save"
+                } else {
+                    "Open"
+                };
+                if ui
+                    .add_enabled(!self.name.trim().is_empty(), egui::Button::new(ok))
+                    .clicked()
+                {
+                    let p = PathBuf::from(self.name.trim());
+                    result = Some(Some(if p.is_absolute() { p } else { self.dir.join(p) }));
+                }
+                if ui.button("Cancel").clicked() {
+                    result = Some(None);
+                }
+                if ui
+                    .add_enabled(self.system.is_none(), egui::Button::new("System dialog…"))
+                    .clicked()
+                {
+                    self.system = Some(system_dialog(self.purpose, &self.dir, &self.name));
+                }
+            });
+        });
+        if ctx.input(|i| i.key_pressed(egui::Key::Escape)) {
+            result = Some(None);
+        }
+        if let Some(Some(p)) = &result
+            && !self.purpose.saving()
+            && !p.is_file()
+        {
+            self.error = Some(format!("{} does not exist", p.display()));
+            return None;
+        }
+        result
+    }
+}
+
+/// Run the platform's file dialog on a thread; the answer arrives on the channel.
+fn system_dialog(purpose: Purpose, dir: &Path, name: &str) -> Receiver<Option<PathBuf>> {
+    let (tx, rx) = channel();
+    let dir = dir.to_path_buf();
+    let name = name.to_string();
+    std::thread::spawn(move || {
+        let d = rfd::FileDialog::new()
+            .set_title(purpose.title())
+            .set_directory(&dir)
+            .add_filter(purpose.title(), purpose.extensions());
+        let r = if purpose.saving() {
+            d.set_file_name(&name).save_file()
+        } else {
+            d.pick_file()
+        };
+        let _ = tx.send(r);
+    });
+    rx
+}
+
+/// The choices of a confirm dialog.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Confirm {
+    Save,
+    Discard,
+    Cancel,
+}
+
+/// "Save changes?" — shown before anything would discard unsaved work.
+pub fn confirm_discard(ctx: &egui::Context, what: &str) -> Option<Confirm> {
+    let mut r = None;
+    egui::Modal::new(egui::Id::unique("confirm-discard")).show(ctx, |ui| {
+        ui.heading("Unsaved changes");
+        ui.label(format!(
+            "The flames have unsaved changes. Save them before {what}?"
+        ));
+        ui.horizontal(|ui| {
+            if ui.button("Save").clicked() {
+                r = Some(Confirm::Save);
+            }
+            if ui.button("Discard").clicked() {
+                r = Some(Confirm::Discard);
+            }
+            if ui.button("Cancel").clicked() {
+                r = Some(Confirm::Cancel);
+            }
+        });
+    });
+    r
+}
+
+/// A message box; returns true when dismissed.
+pub fn message(ctx: &egui::Context, title: &str, text: &str) -> bool {
+    let mut done = false;
+    egui::Modal::new(egui::Id::unique("message-box")).show(ctx, |ui| {
+        ui.set_max_width(520.0);
+        ui.heading(title);
+        ui.label(text);
+        if ui.button("OK").clicked() {
+            done = true;
+        }
+    });
+    done
+}

@@ -1,0 +1,167 @@
+//! Export image: size, quality, PNG/BMP; rendered in the background with progress and Cancel.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::thread::JoinHandle;
+
+use eframe::egui;
+
+use crate::flame::render::{RenderOptions, Renderer};
+use crate::flame::{Flame, OutputFormat};
+
+/// Settings of the export dialog.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExportSettings {
+    pub width: u32,
+    pub height: u32,
+    pub quality: f64,
+    pub supersample: u32,
+    pub bits16: bool,
+    pub transparent: bool,
+    pub path: PathBuf,
+}
+
+/// A running export.
+pub struct ExportJob {
+    pub path: PathBuf,
+    progress: Arc<AtomicU64>,
+    cancel: Arc<AtomicBool>,
+    handle: Option<JoinHandle<Result<(), String>>>,
+}
+
+impl ExportJob {
+    pub fn start(flame: &Flame, s: &ExportSettings, threads: usize) -> ExportJob {
+        let mut f = flame.clone();
+        f.resize_keep_framing(s.width, s.height);
+        f.quality = s.quality;
+        f.supersample = s.supersample.max(1);
+        let progress = Arc::new(AtomicU64::new(0));
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (p, c) = (progress.clone(), cancel.clone());
+        let settings = s.clone();
+        let handle = std::thread::spawn(move || {
+            let opts = RenderOptions {
+                seed: f.seed.unwrap_or(1),
+                threads,
+                format: OutputFormat {
+                    bits16: settings.bits16,
+                    transparent: settings.transparent,
+                },
+                ..RenderOptions::default()
+            };
+            let mut r = Renderer::new(&f, &opts).map_err(|e| e.to_string())?;
+            if !r.run_all(200, &c, |fr| p.store((fr * 1e6) as u64, Ordering::Relaxed)) {
+                return Err("export cancelled".into());
+            }
+            let samples = r.samples_done();
+            let rendered = r.flame().clone();
+            let img = r.finish();
+            let is_bmp = settings
+                .path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("bmp"));
+            if is_bmp {
+                crate::io::bmp::save(&settings.path, &img)
+            } else {
+                let mut meta = crate::io::png::PngMeta::for_flame(&rendered);
+                meta.samples = Some(samples);
+                crate::io::png::save(&settings.path, &img, &meta)
+            }
+            .map_err(|e| format!("cannot write {}: {e}", settings.path.display()))
+        });
+        ExportJob {
+            path: s.path.clone(),
+            progress,
+            cancel,
+            handle: Some(handle),
+        }
+    }
+
+    pub fn fraction(&self) -> f64 {
+        self.progress.load(Ordering::Relaxed) as f64 / 1e6
+    }
+
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::SeqCst);
+    }
+
+    /// The result once the job has finished.
+    pub fn poll(&mut self) -> Option<Result<(), String>> {
+        if self.handle.as_ref().is_some_and(|h| h.is_finished()) {
+            let h = self.handle.take()?;
+            return Some(h.join().unwrap_or_else(|_| Err("export failed".into())));
+        }
+        None
+    }
+}
+
+/// The export settings dialog. Returns Some(true) to start, Some(false) to cancel; `browse`
+/// is set when the user wants to choose the file.
+pub fn dialog(ui: &mut egui::Ui, s: &mut ExportSettings, browse: &mut bool) -> Option<bool> {
+    let mut r = None;
+    egui::Grid::new("export-grid")
+        .num_columns(2)
+        .show(ui, |ui| {
+            ui.label("Size");
+            ui.horizontal(|ui| {
+                ui.add(egui::DragValue::new(&mut s.width).range(1..=30000));
+                ui.label("×");
+                ui.add(egui::DragValue::new(&mut s.height).range(1..=30000));
+            });
+            ui.end_row();
+            ui.label("Quality");
+            ui.add(
+                egui::DragValue::new(&mut s.quality)
+                    .range(0.1..=100000.0)
+                    .speed(1.0),
+            );
+            ui.end_row();
+            ui.label("Supersample");
+            ui.add(egui::DragValue::new(&mut s.supersample).range(1..=4));
+            ui.end_row();
+            ui.label("File");
+            ui.horizontal(|ui| {
+                let mut t = s.path.display().to_string();
+                if ui.text_edit_singleline(&mut t).changed() {
+                    s.path = PathBuf::from(t);
+                }
+                if ui.button("…").clicked() {
+                    *browse = true;
+                }
+            });
+            ui.end_row();
+            let png = !s
+                .path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("bmp"));
+            ui.label("PNG options");
+            ui.horizontal(|ui| {
+                ui.add_enabled(png, egui::Checkbox::new(&mut s.bits16, "16 bits"));
+                ui.add_enabled(png, egui::Checkbox::new(&mut s.transparent, "transparent"));
+            });
+            ui.end_row();
+        });
+    let ext_ok = s
+        .path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("png") || e.eq_ignore_ascii_case("bmp"));
+    if !ext_ok {
+        ui.colored_label(
+            egui::Color32::from_rgb(230, 150, 80),
+            "The file must end in .png or .bmp",
+        );
+    }
+    ui.horizontal(|ui| {
+        if ui
+            .add_enabled(ext_ok, egui::Button::new("Render"))
+            .clicked()
+        {
+            r = Some(true);
+        }
+        if ui.button("Cancel").clicked() {
+            r = Some(false);
+        }
+    });
+    r
+}
