@@ -165,8 +165,8 @@ impl FileBrowser {
                     }
                 });
             ui.horizontal(|ui| {
-                ui.label("File name");
-                let r = ui.text_edit_singleline(&mut self.name);
+                let l = ui.label("File name");
+                let r = ui.text_edit_singleline(&mut self.name).labelled_by(l.id);
                 if r.lost_focus()
                     && ui.input(|i| i.key_pressed(egui::Key::Enter))
                     && !self.name.is_empty()

@@ -473,7 +473,12 @@ pub fn canvas(
     // Interaction.
     let middle = ui.input(|i| i.pointer.middle_down());
     if resp.drag_started() {
-        let pos = resp.interact_pointer_pos().unwrap_or(rect.center());
+        // Hit-test where the button went down, not where egui recognised the drag, so the
+        // grabbed point stays under the pointer.
+        let pos = ui
+            .input(|i| i.pointer.press_origin())
+            .or(resp.interact_pointer_pos())
+            .unwrap_or(rect.center());
         let w = st.world_from_screen(pos);
         let pan = middle || resp.dragged_by(egui::PointerButton::Secondary);
         let mut drag = None;
@@ -572,7 +577,14 @@ pub fn canvas(
         };
         if let Some(t) = new_tri {
             let sel = st.selected;
-            let m = Affine::from_triangle(t);
+            let mut m = Affine::from_triangle(t);
+            if matches!(g.drag, Drag::Body)
+                && let Some(x) = xform_of(&g.before, sel)
+            {
+                // A move changes only the translation: keep the linear part bit for bit.
+                let s = st.map_of(x);
+                (m.a, m.b, m.c, m.d) = (s.a, s.b, s.c, s.d);
+            }
             let edit_post = st.edit_post;
             let f = doc.flame_mut_in_gesture();
             if let Some(x) = xform_of_mut(f, sel) {

@@ -87,9 +87,11 @@ impl GradientWindow {
     pub fn show(&mut self, ctx: &egui::Context, current: &Gradient) -> Option<GradientAction> {
         let mut action = None;
         let mut open = self.open;
+        let screen = ctx.content_rect();
         egui::Window::new("Gradient")
             .open(&mut open)
             .default_size([360.0, 480.0])
+            .default_pos([screen.right() - 400.0, screen.top() + 80.0])
             .show(ctx, |ui| {
                 ui.label(format!(
                     "Current: {}",

@@ -795,21 +795,26 @@ impl UgnisApp {
     fn handle_shortcuts(&mut self, ctx: &egui::Context) {
         let typing = ctx.memory(|m| m.focused().is_some());
         let mut fired = Vec::new();
+        // egui matches shortcuts ignoring extra Shift, so try the ones with more modifiers
+        // first (Ctrl+Shift+S is Save As, not Save).
+        let mut all: Vec<(KeyboardShortcut, Action)> = EXTRA_SHORTCUTS
+            .iter()
+            .copied()
+            .chain(
+                MENU.iter()
+                    .filter_map(|m| m.shortcut.map(|s| (s, m.action))),
+            )
+            .collect();
+        let weight = |m: Modifiers| m.shift as u8 + m.alt as u8 + (m.command || m.ctrl) as u8;
+        all.sort_by_key(|(s, _)| std::cmp::Reverse(weight(s.modifiers)));
         ctx.input_mut(|i| {
-            for (s, a) in EXTRA_SHORTCUTS {
+            for (s, a) in &all {
+                // Let text fields keep their own Ctrl+Z etc.
+                if typing && matches!(a, Action::Undo | Action::Redo) {
+                    continue;
+                }
                 if i.consume_shortcut(s) {
                     fired.push(*a);
-                }
-            }
-            for m in MENU {
-                if let Some(s) = &m.shortcut {
-                    // Let text fields keep their own Ctrl+Z etc.
-                    if typing && matches!(m.action, Action::Undo | Action::Redo) {
-                        continue;
-                    }
-                    if i.consume_shortcut(s) {
-                        fired.push(m.action);
-                    }
                 }
             }
         });
@@ -1276,6 +1281,8 @@ impl UgnisApp {
             let mut r = None;
             egui::Window::new("Options")
                 .collapsible(false)
+                .pivot(egui::Align2::CENTER_CENTER)
+                .default_pos(ctx.content_rect().center())
                 .resizable(false)
                 .show(ctx, |ui| {
                     r = options::dialog(ui, draft, tab);
@@ -1297,6 +1304,8 @@ impl UgnisApp {
             let mut r = None;
             egui::Window::new("Export image")
                 .collapsible(false)
+                .pivot(egui::Align2::CENTER_CENTER)
+                .default_pos(ctx.content_rect().center())
                 .show(ctx, |ui| {
                     r = export::dialog(ui, s, &mut browse);
                 });
@@ -1567,8 +1576,7 @@ fn keep_foreign_weights(f: &mut Flame) {
         let rule = Flame::determinant_weights(&maps);
         let total: f64 = f.xforms.iter().map(|x| x.weight).sum();
         let follows = total > 0.0
-            && f
-                .xforms
+            && f.xforms
                 .iter()
                 .zip(&rule)
                 .all(|(x, w)| (x.weight / total - w).abs() < 1e-6);

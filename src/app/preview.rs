@@ -14,6 +14,11 @@ use crate::flame::render::{RenderOptions, Renderer};
 use crate::flame::{Flame, PaletteMode};
 use crate::gradient::Gradient;
 
+/// Iteration time allowed for the first frame after an edit.
+const FIRST_FRAME_BUDGET_S: f64 = 0.028;
+/// The first frame has at least this many samples per pixel (a readable picture).
+const MIN_FIRST_QUALITY: f64 = 1.0;
+
 /// A preview to render.
 #[derive(Clone, Debug)]
 pub struct PreviewJob {
@@ -128,6 +133,8 @@ struct Active {
     renderer: Renderer,
     started: Instant,
     target_fraction: f64,
+    /// Frames sent for this job.
+    passes: u32,
 }
 
 fn worker(
@@ -138,6 +145,8 @@ fn worker(
 ) {
     let mut active: Option<Active> = None;
     let mut finished = true;
+    // Samples per second of the latest passes (exponential average).
+    let mut rate: Option<f64> = None;
     loop {
         // Take the newest job; block only when idle.
         let mut msgs = Vec::new();
@@ -188,17 +197,26 @@ fn worker(
             let opts = RenderOptions {
                 seed: 1,
                 threads: job.threads,
-                keep_samples: true,
+                // Kept for instant recolouring, except for the one-pass frames of a drag.
+                keep_samples: job.final_quality > job.first_quality,
                 ..RenderOptions::default()
             };
             match Renderer::new(&flame, &opts) {
                 Ok(r) => {
-                    let first = (job.first_quality / flame.quality).clamp(0.0, 1.0);
+                    let mut first = (job.first_quality / flame.quality).clamp(0.0, 1.0);
+                    // Keep the first frame within its time budget on this machine: fewer
+                    // samples for a costly flame (the next passes refine it).
+                    if let Some(rate) = rate {
+                        let budget = rate * FIRST_FRAME_BUDGET_S / r.total_samples().max(1) as f64;
+                        let floor = MIN_FIRST_QUALITY / flame.quality;
+                        first = first.min(budget.max(floor));
+                    }
                     active = Some(Active {
                         job: *job,
                         renderer: r,
                         started: t,
                         target_fraction: first,
+                        passes: 0,
                     });
                     finished = false;
                 }
@@ -226,16 +244,37 @@ fn worker(
         let want = ((a.target_fraction * total as f64) as u64)
             .saturating_sub(a.renderer.samples_done())
             .max(1);
-        if !a.renderer.run(want, &cancel) {
+        let t_pass = Instant::now();
+        let before = a.renderer.samples_done();
+        let ok = a.renderer.run(want, &cancel);
+        let (n, secs) = (
+            a.renderer.samples_done() - before,
+            t_pass.elapsed().as_secs_f64(),
+        );
+        if ok && n >= 50_000 && secs > 0.0 {
+            let r = n as f64 / secs;
+            rate = Some(rate.map_or(r, |old| 0.5 * old + 0.5 * r));
+        }
+        if !ok {
             // Cancelled by a newer job: it is already waiting in the channel.
             finished = false;
             active = None;
             continue;
         }
         let done = a.renderer.is_done();
+        // The first frame of an edit, and every frame of a drag (one pass at preview quality),
+        // skips density estimation so that it arrives within tens of milliseconds.
+        let first_pass = a.passes == 0;
+        a.passes += 1;
+        let quick = a.job.final_quality <= a.job.first_quality;
+        let image = if first_pass || quick {
+            a.renderer.preview_draft()
+        } else {
+            a.renderer.preview()
+        };
         let frame = PreviewFrame {
             generation: a.job.generation,
-            image: to_color_image(&a.renderer.preview()),
+            image: to_color_image(&image),
             fraction: a.renderer.fraction(),
             elapsed_ms: a.started.elapsed().as_secs_f64() * 1000.0,
             done,

@@ -1,0 +1,345 @@
+//! The editor driven through its real UI with egui_kittest: menus, shortcuts, triangle drags,
+//! undo, the delete rule, Save → Open and the unsaved-changes question.
+#![cfg(feature = "gui")]
+
+use std::path::{Path, PathBuf};
+
+use egui::accesskit::Role;
+use egui::{Key, Modifiers, Pos2, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use ugnis::app::editor::Selected;
+use ugnis::app::options::Options;
+use ugnis::app::{MENU, Start, UgnisApp};
+use ugnis::flame::{Affine, Flame};
+
+use eframe::egui;
+
+/// A private copy of an example (a test that saves must never touch the repository).
+fn example(name: &str) -> PathBuf {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples")
+        .join(name);
+    let dir = std::env::temp_dir().join(format!(
+        "ugnis-gui-{}-{:?}",
+        std::process::id(),
+        std::thread::current().id()
+    ));
+    std::fs::create_dir_all(&dir).unwrap();
+    let dst = dir.join(name);
+    std::fs::copy(&src, &dst).unwrap();
+    dst
+}
+
+fn harness(start: Start) -> Harness<'static, UgnisApp> {
+    let app = UgnisApp::new(Options::default(), start, None);
+    let mut h = Harness::builder()
+        .with_size(Vec2::new(1280.0, 860.0))
+        .build_ui_state(|ui, app: &mut UgnisApp| app.ui(ui), app);
+    h.run_steps(3);
+    h
+}
+
+fn open(name: &str) -> Harness<'static, UgnisApp> {
+    let h = harness(Start::File(example(name)));
+    assert_eq!(h.state().doc.name, name.trim_end_matches(".flame"));
+    h
+}
+
+/// Drag with the primary button from `a` to `b` in a few moves.
+fn drag(h: &mut Harness<'_, UgnisApp>, a: Pos2, b: Pos2) {
+    h.hover_at(a);
+    h.step();
+    h.drag_at(a);
+    h.step();
+    for k in 1..=4 {
+        h.hover_at(a + (b - a) * (k as f32 / 4.0));
+        h.step();
+    }
+    h.drop_at(b);
+    h.run_steps(2);
+}
+
+fn selected_coefs(app: &UgnisApp) -> Affine {
+    match app.editor.selected {
+        Selected::Xform(i) => app.doc.flame().xforms[i].coefs,
+        Selected::Final => app.doc.flame().final_xform.as_ref().unwrap().coefs,
+    }
+}
+
+fn coefs(m: &Affine) -> [f64; 6] {
+    [m.a, m.b, m.c, m.d, m.e, m.f]
+}
+
+#[test]
+fn dragging_a_vertex_reshapes_by_the_affine_maths_and_undo_is_exact() {
+    let mut h = open("sierpinski.flame");
+    let original: Flame = h.state().doc.flame().clone();
+    assert!(!h.state().doc.dirty);
+    let before = selected_coefs(h.state());
+    let tri = before.triangle();
+    // Drag vertex B (the image of X = (1, 0)) by 30 px right and 20 px down.
+    let st = &h.state().editor;
+    let from = st.screen_from_world(tri[1]);
+    assert!(st.canvas.contains(from), "vertex B must be on the canvas");
+    let to = from + Vec2::new(30.0, 20.0);
+    let (w0, w1) = (st.world_from_screen(from), st.world_from_screen(to));
+    drag(&mut h, from, to);
+
+    let after = selected_coefs(h.state());
+    let mut moved = tri;
+    moved[1] = [tri[1][0] + (w1[0] - w0[0]), tri[1][1] + (w1[1] - w0[1])];
+    let expect = Affine::from_triangle(moved);
+    for (got, want) in coefs(&after).iter().zip(coefs(&expect)) {
+        assert!((got - want).abs() < 1e-9, "{after:?} vs {expect:?}");
+    }
+    // Moving B changes only the first column: the origin (e, f) and C's column stay.
+    assert!(after.a != before.a || after.c != before.c);
+    assert_eq!(
+        (after.b, after.d, after.e, after.f),
+        (before.b, before.d, before.e, before.f)
+    );
+    assert!(h.state().doc.dirty);
+
+    // The whole drag is one undo step, and undo restores the exact flame.
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.flame(), &original);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Y);
+    h.run_steps(2);
+    assert_eq!(selected_coefs(h.state()), after);
+}
+
+#[test]
+fn dragging_inside_a_triangle_moves_it() {
+    let mut h = open("sierpinski.flame");
+    let before = selected_coefs(h.state());
+    let t = before.triangle();
+    let c = [
+        (t[0][0] + t[1][0] + t[2][0]) / 3.0,
+        (t[0][1] + t[1][1] + t[2][1]) / 3.0,
+    ];
+    let st = &h.state().editor;
+    let from = st.screen_from_world(c);
+    let to = from + Vec2::new(-25.0, 15.0);
+    let (w0, w1) = (st.world_from_screen(from), st.world_from_screen(to));
+    drag(&mut h, from, to);
+    let after = selected_coefs(h.state());
+    // Linear part unchanged, origin translated by the world delta (x' = a·x + b·y + e).
+    assert_eq!(
+        (after.a, after.b, after.c, after.d),
+        (before.a, before.b, before.c, before.d)
+    );
+    let t2 = after.triangle();
+    assert!((t2[0][0] - t[0][0] - (w1[0] - w0[0])).abs() < 1e-9);
+    assert!((t2[0][1] - t[0][1] - (w1[1] - w0[1])).abs() < 1e-9);
+}
+
+fn context_menu_delete(h: &mut Harness<'_, UgnisApp>) {
+    let p = h.state().editor.canvas.center();
+    h.event(egui::Event::PointerMoved(p));
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Secondary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    h.run_steps(2);
+    h.get_by_label("Delete triangle").click();
+    h.run_steps(2);
+}
+
+#[test]
+fn delete_is_refused_at_two_triangles() {
+    // Three transforms plus the two its <symmetry kind="-2"/> adds.
+    let mut h = open("sierpinski.flame");
+    assert_eq!(h.state().doc.flame().xforms.len(), 5);
+    for n in [4, 3, 2, 2] {
+        context_menu_delete(&mut h);
+        assert_eq!(
+            h.state().doc.flame().xforms.len(),
+            n,
+            "delete below 2 must be refused"
+        );
+    }
+    assert!(h.state().status.contains("refused"), "{}", h.state().status);
+    // Undo brings the third triangle back.
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.flame().xforms.len(), 3);
+    assert!(h.state().doc.can_undo());
+}
+
+#[test]
+fn every_menu_item_exists_with_its_shortcut() {
+    let mut h = open("sierpinski.flame");
+    for menu in ["File", "Edit", "View", "Tools"] {
+        h.get_by_role_and_label(Role::Button, menu).click();
+        h.run_steps(2);
+        for item in MENU.iter().filter(|m| m.menu == menu) {
+            // A menu button's accessible label is its text followed by its shortcut.
+            let want = match &item.shortcut {
+                Some(s) => format!("{} {}", item.label, h.ctx.format_shortcut(s)),
+                None => item.label.to_string(),
+            };
+            assert!(
+                h.query_by_role_and_label(Role::Button, &want).is_some(),
+                "{menu} › {want:?} is missing"
+            );
+        }
+        h.key_press(Key::Escape);
+        h.run_steps(2);
+    }
+    // The Variations submenu names the seven variations and Random.
+    h.get_by_role_and_label(Role::Button, "Tools").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Variations").click();
+    h.run_steps(3);
+    assert!(
+        h.query_all_by_label("Random").count() >= 2,
+        "Variations › Random missing"
+    );
+    for v in [
+        "Linear",
+        "Sinusoidal",
+        "Spherical",
+        "Swirl",
+        "Horseshoe",
+        "Polar",
+        "Bent",
+    ] {
+        assert!(h.query_by_label(v).is_some(), "Variations › {v} missing");
+    }
+}
+
+#[test]
+fn shortcuts_reach_their_commands() {
+    let mut h = open("sierpinski.flame");
+    assert!(h.state().show_editor);
+    h.key_press(Key::F4);
+    h.run_steps(2);
+    assert!(!h.state().show_editor, "F4 toggles the editor");
+    assert!(!h.state().gradients.open);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    h.run_steps(2);
+    assert!(h.state().gradients.open, "Ctrl+G opens the gradient window");
+    let before = h.state().doc.flame().clone();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::R);
+    h.run_steps(2);
+    assert_ne!(
+        h.state().doc.flame(),
+        &before,
+        "Ctrl+R makes a random flame"
+    );
+    // Tools › Variations › Swirl sets every transform to swirl, as one undo step.
+    h.get_by_role_and_label(Role::Button, "Tools").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Variations").click();
+    h.run_steps(3);
+    h.get_by_label("Swirl").click();
+    h.run_steps(2);
+    let swirl = ugnis::flame::variations::by_name("swirl").unwrap();
+    for x in &h.state().doc.flame().xforms {
+        assert_eq!(x.vars.len(), 1);
+        assert_eq!(x.vars[0].id, swirl);
+    }
+    assert!(h.state().status.to_lowercase().contains("swirl"));
+}
+
+#[test]
+fn save_then_open_round_trips() {
+    let dir = std::env::temp_dir().join(format!("ugnis-gui-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("saved.fla");
+    let _ = std::fs::remove_file(&path);
+
+    let mut h = open("orchid.flame");
+    // An edit, so that the saved file differs from the example.
+    h.state_mut().doc.edit(|f| f.xforms[0].color = 0.25);
+    let edited = h.state().doc.flame().clone();
+    h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
+    h.run_steps(2);
+    let field = h.get_by_role_and_label(Role::TextInput, "File name");
+    field.focus();
+    h.run_steps(1);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    h.get_by_role_and_label(Role::TextInput, "File name")
+        .type_text(path.to_str().unwrap());
+    h.run_steps(2);
+    // The dialog's Save button (the toolbar has one too; the dialog is drawn last).
+    h.get_all_by_role_and_label(Role::Button, "Save")
+        .last()
+        .unwrap()
+        .click();
+    h.run_steps(3);
+    assert!(path.is_file(), "Save As wrote nothing");
+    assert!(!h.state().doc.dirty);
+    assert_eq!(h.state().doc.path.as_deref(), Some(path.as_path()));
+
+    // Open it in a fresh app: the same flame comes back.
+    let h2 = harness(Start::File(path.clone()));
+    let back = h2.state().doc.flame();
+    assert_eq!(back.xforms.len(), edited.xforms.len());
+    for (a, b) in back.xforms.iter().zip(&edited.xforms) {
+        assert_eq!(a.coefs, b.coefs);
+        assert_eq!(a.color, b.color);
+        assert_eq!(a.vars, b.vars);
+    }
+    assert_eq!(back.center, edited.center);
+    assert_eq!(back.scale, edited.scale);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn closing_with_unsaved_changes_asks() {
+    let mut h = open("sierpinski.flame");
+    h.state_mut().doc.edit(|f| f.xforms[0].color = 0.5);
+    h.input_mut()
+        .viewports
+        .entry(egui::ViewportId::ROOT)
+        .or_default()
+        .events
+        .push(egui::ViewportEvent::Close);
+    h.run_steps(2);
+    assert!(
+        h.query_by_label("Unsaved changes").is_some(),
+        "no question asked"
+    );
+    // Cancel keeps the program and the edit.
+    h.get_by_role_and_label(Role::Button, "Cancel").click();
+    h.run_steps(2);
+    assert!(h.query_by_label("Unsaved changes").is_none());
+    assert!(h.state().doc.dirty);
+    assert_eq!(h.state().doc.flame().xforms[0].color, 0.5);
+}
+
+#[test]
+fn choosing_a_gradient_recolours_as_one_undo_step() {
+    let mut h = open("sierpinski.flame");
+    let before = h.state().doc.flame().clone();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    h.run_steps(2);
+    h.get_by_label("glacier").click();
+    h.run_steps(2);
+    let f = h.state().doc.flame();
+    let glacier = ugnis::gradient::builtin_named("glacier").unwrap();
+    assert_eq!(f.palette.colors, glacier.colors);
+    assert_eq!(f.xforms, before.xforms, "only the colours change");
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.flame(), &before);
+}
+
+#[test]
+fn a_failed_save_says_so_and_keeps_the_changes() {
+    let mut h = open("sierpinski.flame");
+    h.state_mut().doc.edit(|f| f.xforms[0].color = 0.75);
+    let target = Path::new("/nonexistent-ugnis-dir/out.fla");
+    assert!(!h.state_mut().save_to(target));
+    h.run_steps(2);
+    assert!(h.query_by_label("Cannot save").is_some());
+    assert!(h.state().doc.dirty);
+    assert_ne!(h.state().doc.path.as_deref(), Some(target));
+}
