@@ -25,6 +25,10 @@ enum Command {
     Info(cli::info::InfoArgs),
     /// Convert between file formats (.ifs ↔ .fla/.flame, .png → .fla, .ugr ↔ .map, image → gradient)
     Convert(cli::convert::ConvertArgs),
+    /// Generate a batch of random flames into one .fla, with thumbnails
+    Random(cli::random::RandomArgs),
+    /// Render the frames of an animation (rotating triangles or in-betweens of flames)
+    Animate(cli::animate::AnimateArgs),
 }
 
 fn main() {
@@ -42,6 +46,8 @@ fn main() {
         Some(Command::Render(a)) => cli::render::run(a),
         Some(Command::Info(a)) => cli::info::run(a),
         Some(Command::Convert(a)) => cli::convert::run(a),
+        Some(Command::Random(a)) => cli::random::run(a),
+        Some(Command::Animate(a)) => cli::animate::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {

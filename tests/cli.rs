@@ -270,3 +270,174 @@ fn convert_between_formats() {
     assert!(err.contains("cannot convert"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn random_writes_a_reproducible_batch_with_thumbnails() {
+    let dir = common::temp_dir("cli-random");
+    let out = dir.join("batch.fla");
+    let thumbs = dir.join("thumbs");
+    let args = |o: &std::path::Path| -> Vec<String> {
+        [
+            "random",
+            "--count",
+            "6",
+            "--seed",
+            "11",
+            "--min-xforms",
+            "3",
+            "--max-xforms",
+            "3",
+            "--variation",
+            "sinusoidal",
+            "--symmetry",
+            "-2",
+            "--thumbs",
+            thumbs.to_str().unwrap(),
+            "--size",
+            "40x30",
+            "--quality",
+            "5",
+            "-o",
+            o.to_str().unwrap(),
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect()
+    };
+    let a: Vec<String> = args(&out);
+    let (code, stdout, err) = ugnis(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(code, 0, "{err}");
+    assert!(stdout.contains("wrote 6 flames"), "{stdout}");
+    let flames = ugnis::io::read_flames(&out, &Default::default())
+        .unwrap()
+        .value;
+    assert_eq!(flames.len(), 6);
+    let sin = ugnis::flame::variations::by_name("sinusoidal").unwrap();
+    for (i, f) in flames.iter().enumerate() {
+        assert_eq!(f.name, format!("random-{:03}", i + 1));
+        assert!(f.seed.is_some());
+        // 3 transforms plus the mirror and one rotation of symmetry −2.
+        assert_eq!(f.xforms.len(), 5);
+        assert!(f.xforms[..3].iter().all(|x| x.vars[0].id == sin));
+        let png = thumbs.join(format!("{}.png", f.name));
+        let img = image::open(&png).unwrap();
+        assert_eq!((img.width(), img.height()), (40, 30));
+        // The thumbnail carries its flame.
+        let back = ugnis::io::read_flames(&png, &Default::default())
+            .unwrap()
+            .value;
+        assert_eq!(back[0].xforms, f.xforms);
+    }
+    // The same seed gives the same file.
+    let out2 = dir.join("again.fla");
+    let b = args(&out2);
+    let (code, _, err) = ugnis(&b.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap().replace("batch", "X"),
+        std::fs::read_to_string(&out2)
+            .unwrap()
+            .replace("again", "X")
+    );
+    // --count 1 prints nothing and writes one flame.
+    let one = dir.join("one.fla");
+    let (code, stdout, err) = ugnis(&["random", "--count", "1", "-o", one.to_str().unwrap()]);
+    assert_eq!((code, stdout.as_str(), err.as_str()), (0, "", ""));
+    assert_eq!(
+        ugnis::io::read_flames(&one, &Default::default())
+            .unwrap()
+            .value
+            .len(),
+        1
+    );
+    // Bad arguments: one clear message, exit 1.
+    for (bad, want) in [
+        (
+            vec!["random", "--variation", "nonesuch"],
+            "unknown variation",
+        ),
+        (
+            vec!["random", "--min-xforms", "5", "--max-xforms", "3"],
+            "min",
+        ),
+        (vec!["random", "--symmetry", "x"], "--symmetry"),
+        (vec!["random", "-o", "out.png"], ".fla"),
+    ] {
+        let (code, _, err) = ugnis(&bad);
+        assert_eq!(code, 1, "{bad:?}");
+        assert!(err.contains(want), "{bad:?}: {err}");
+    }
+}
+
+#[test]
+fn animate_writes_rotation_and_interpolation_frames() {
+    let dir = common::temp_dir("cli-animate");
+    let ex = common::example("sierpinski.flame");
+    let rot = dir.join("rot");
+    let (code, _, err) = ugnis(&[
+        "animate",
+        ex.to_str().unwrap(),
+        "--frames",
+        "3",
+        "-o",
+        rot.to_str().unwrap(),
+        "--size",
+        "48x36",
+        "--quality",
+        "3",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let f1 = ugnis::io::read_flames(&rot.join("frame-0001.png"), &Default::default())
+        .unwrap()
+        .value
+        .remove(0);
+    let f3 = ugnis::io::read_flames(&rot.join("frame-0003.png"), &Default::default())
+        .unwrap()
+        .value
+        .remove(0);
+    // Two steps of 2° turn every triangle by 4° about its centroid.
+    for (a, b) in f1.xforms.iter().zip(&f3.xforms) {
+        let turn = (b.coefs.c.atan2(b.coefs.a) - a.coefs.c.atan2(a.coefs.a)).to_degrees();
+        let turn = (turn + 540.0).rem_euclid(360.0) - 180.0;
+        assert!((turn.abs() - 4.0).abs() < 1e-3, "{turn}");
+    }
+    // Interpolation through a three-flame file: the first and last frames are the keys.
+    let lib = common::fixture("library.fla");
+    let keys = ugnis::io::read_flames(&lib, &Default::default())
+        .unwrap()
+        .value;
+    let int = dir.join("int");
+    let (code, _, err) = ugnis(&[
+        "animate",
+        lib.to_str().unwrap(),
+        "--mode",
+        "interpolate",
+        "--from",
+        "0",
+        "--to",
+        "1",
+        "--frames",
+        "5",
+        "-o",
+        int.to_str().unwrap(),
+        "--size",
+        "32x24",
+        "--quality",
+        "2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let last = ugnis::io::read_flames(&int.join("frame-0005.png"), &Default::default())
+        .unwrap()
+        .value
+        .remove(0);
+    for (x, y) in last.xforms.iter().zip(&keys[1].xforms) {
+        assert!(
+            x.coefs
+                .to_coefs()
+                .iter()
+                .zip(y.coefs.to_coefs())
+                .all(|(p, q)| (p - q).abs() < 1e-5)
+        );
+    }
+    assert_eq!(std::fs::read_dir(&int).unwrap().count(), 5);
+}

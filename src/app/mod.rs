@@ -16,6 +16,7 @@ use std::sync::mpsc::Receiver;
 
 use eframe::egui::{self, Key, KeyboardShortcut, Modifiers, Vec2};
 
+use crate::flame::animate::RotationAnimation;
 use crate::flame::random::{self, VariationMode};
 use crate::flame::rng::FastRng;
 use crate::flame::variations::{self, VarId};
@@ -310,8 +311,7 @@ enum Pending {
 
 struct Animation {
     before: Flame,
-    dirs: Vec<f64>,
-    step: u32,
+    anim: RotationAnimation,
     waiting_for: u64,
 }
 
@@ -631,13 +631,9 @@ impl UgnisApp {
             self.doc.end_gesture(a.before);
             self.status = "Animation stopped".into();
         } else {
-            let n = self.doc.flame().xforms.len();
             self.animation = Some(Animation {
                 before: self.doc.begin_gesture(),
-                dirs: (0..n)
-                    .map(|_| if self.rng.bit() { 1.0 } else { -1.0 })
-                    .collect(),
-                step: 0,
+                anim: RotationAnimation::new(self.rng.u64()),
                 waiting_for: 0,
             });
             self.status = "Animating".into();
@@ -654,18 +650,7 @@ impl UgnisApp {
         {
             return;
         }
-        let step = 2f64.to_radians();
-        if a.step > 0 && a.step.is_multiple_of(90) {
-            for d in &mut a.dirs {
-                *d = if self.rng.bit() { 1.0 } else { -1.0 };
-            }
-        }
-        a.step += 1;
-        let dirs = a.dirs.clone();
-        let f = self.doc.flame_mut_in_gesture();
-        for (x, d) in f.xforms.iter_mut().zip(dirs) {
-            x.coefs = rotate_xform(&x.coefs, d * step);
-        }
+        a.anim.step(self.doc.flame_mut_in_gesture());
         if let Some(p) = &self.preview {
             a.waiting_for = p.generation + 1;
         }
@@ -1459,21 +1444,6 @@ impl UgnisApp {
     }
 }
 
-/// Rotate an xform's triangle about its centroid (flame.md §9): L′ = R·L, O′ = C + R(O − C).
-pub fn rotate_xform(m: &Affine, ang: f64) -> Affine {
-    let t = m.triangle();
-    let c = [
-        (t[0][0] + t[1][0] + t[2][0]) / 3.0,
-        (t[0][1] + t[1][1] + t[2][1]) / 3.0,
-    ];
-    let (s, co) = ang.sin_cos();
-    let r = t.map(|p| {
-        let (dx, dy) = (p[0] - c[0], p[1] - c[1]);
-        [c[0] + dx * co - dy * s, c[1] + dx * s + dy * co]
-    });
-    Affine::from_triangle(r)
-}
-
 /// Flame-wide settings: name, size, camera, tone mapping.
 fn flame_settings(ui: &mut egui::Ui, doc: &mut Document) {
     let mut f = doc.flame().clone();
@@ -1589,30 +1559,5 @@ fn keep_foreign_weights(f: &mut Flame) {
 impl eframe::App for UgnisApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         UgnisApp::ui(self, ui);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn rotating_360_degrees_restores_the_triangle() {
-        let m = Affine::new(0.6, -0.2, 0.3, 0.8, 0.4, -0.1);
-        let mut r = m;
-        for _ in 0..180 {
-            r = rotate_xform(&r, 2f64.to_radians());
-            assert!((r.det() - m.det()).abs() < 1e-12);
-        }
-        for (a, b) in [
-            (r.a, m.a),
-            (r.b, m.b),
-            (r.c, m.c),
-            (r.d, m.d),
-            (r.e, m.e),
-            (r.f, m.f),
-        ] {
-            assert!((a - b).abs() <= 1e-12 * b.abs().max(1.0), "{r:?} vs {m:?}");
-        }
     }
 }

@@ -1,8 +1,10 @@
 //! Command-line subcommands. Each returns `anyhow::Result`; `main` prints the one error message
 //! and exits with status 1.
 
+pub mod animate;
 pub mod convert;
 pub mod info;
+pub mod random;
 pub mod render;
 
 use std::io::IsTerminal;

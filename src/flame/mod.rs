@@ -1,6 +1,7 @@
 //! Fractal flames and IFS: model, variations, chaos game, histogram, density estimation,
 //! tone mapping, automatic framing and the progressive renderer.
 
+pub mod animate;
 pub mod chaos;
 pub mod density;
 pub mod fastmath;
@@ -9,6 +10,7 @@ pub mod framing;
 pub mod histogram;
 pub mod ifs3d;
 pub mod model;
+pub mod mutate;
 pub mod random;
 pub mod render;
 pub mod rng;

@@ -151,6 +151,38 @@ fn random_params(id: VarId, rng: &mut FastRng) -> Vec<f64> {
     p
 }
 
+/// The variation terms of one random xform in the given mode.
+pub fn random_variations(mode: &VariationMode, rng: &mut FastRng) -> Vec<Var> {
+    match mode {
+        VariationMode::Single(id) => vec![Var {
+            params: random_params(*id, rng),
+            ..Var::new(*id, 1.0)
+        }],
+        VariationMode::Random(p) => {
+            let id = variations::THESIS_SEVEN[pick_weighted(p, rng)];
+            vec![Var::new(id, 1.0)]
+        }
+        VariationMode::Mix => {
+            let k = 2 + rng.below(2) as usize;
+            let mut vs: Vec<Var> = Vec::new();
+            while vs.len() < k {
+                let id = rng.below(variations::COUNT as u64) as VarId;
+                // pre_blur alone gives no picture; keep it out of mixes.
+                if id == variations::PRE_BLUR || vs.iter().any(|v| v.id == id) {
+                    continue;
+                }
+                vs.push(Var {
+                    params: random_params(id, rng),
+                    ..Var::new(id, rng.f01() + 0.05)
+                });
+            }
+            let s: f64 = vs.iter().map(|v| v.weight).sum();
+            vs.iter_mut().for_each(|v| v.weight /= s);
+            vs
+        }
+    }
+}
+
 /// One random candidate (flame.md §8.1 steps 1–7), not yet tested or framed.
 pub fn candidate(n: usize, opts: &RandomOptions, defaults: &NewFlame, rng: &mut FastRng) -> Flame {
     let mut f = defaults.flame();
@@ -162,34 +194,7 @@ pub fn candidate(n: usize, opts: &RandomOptions, defaults: &NewFlame, rng: &mut 
             0.0
         };
         let mut x = Xform::linear(random_affine(rng), 1.0, color);
-        x.vars = match &opts.variations {
-            VariationMode::Single(id) => vec![Var {
-                params: random_params(*id, rng),
-                ..Var::new(*id, 1.0)
-            }],
-            VariationMode::Random(p) => {
-                let id = variations::THESIS_SEVEN[pick_weighted(p, rng)];
-                vec![Var::new(id, 1.0)]
-            }
-            VariationMode::Mix => {
-                let k = 2 + rng.below(2) as usize;
-                let mut vs: Vec<Var> = Vec::new();
-                while vs.len() < k {
-                    let id = rng.below(variations::COUNT as u64) as VarId;
-                    // pre_blur alone gives no picture; keep it out of mixes.
-                    if id == variations::PRE_BLUR || vs.iter().any(|v| v.id == id) {
-                        continue;
-                    }
-                    vs.push(Var {
-                        params: random_params(id, rng),
-                        ..Var::new(id, rng.f01() + 0.05)
-                    });
-                }
-                let s: f64 = vs.iter().map(|v| v.weight).sum();
-                vs.iter_mut().for_each(|v| v.weight /= s);
-                vs
-            }
-        };
+        x.vars = random_variations(&opts.variations, rng);
         if rng.f01() < opts.post_probability {
             x.post = random_affine(rng);
         }

@@ -1,0 +1,183 @@
+//! `ugnis random`: a batch of random flames (flame.md §8) into one `.fla`, with thumbnails.
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use rayon::prelude::*;
+
+use ugnis::flame::random::{self, RandomOptions, SymmetryMode, VariationMode};
+use ugnis::flame::render::{RenderOptions, render};
+use ugnis::flame::{NewFlame, variations};
+use ugnis::io;
+
+#[derive(Args, Debug)]
+pub struct RandomArgs {
+    /// How many flames
+    #[arg(long, default_value_t = 100)]
+    pub count: usize,
+    /// Output .fla (or .flame)
+    #[arg(short, long, default_value = "random.fla")]
+    pub output: PathBuf,
+    /// Master seed; the same seed and options give the same batch (default: from the clock)
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Fewest transforms per flame
+    #[arg(long, default_value_t = 2)]
+    pub min_xforms: usize,
+    /// Most transforms per flame
+    #[arg(long, default_value_t = 6)]
+    pub max_xforms: usize,
+    /// A variation name for every transform, "random" (one of the seven thesis variations per
+    /// transform) or "mix" (2–3 of all variations per transform)
+    #[arg(long, default_value = "random")]
+    pub variation: String,
+    /// Symmetry order: N ≥ 2 rotational, −N rotational and mirror, −1 mirror, or "random"
+    #[arg(long, allow_hyphen_values = true)]
+    pub symmetry: Option<String>,
+    /// Write a PNG thumbnail of every flame (with the flame embedded) into this directory
+    #[arg(long)]
+    pub thumbs: Option<PathBuf>,
+    /// Thumbnail size WxH
+    #[arg(long, value_parser = super::parse_size, default_value = "128x128")]
+    pub size: (u32, u32),
+    /// Thumbnail quality (samples per pixel)
+    #[arg(long, default_value_t = 50.0)]
+    pub quality: f64,
+    /// Worker threads (default: all cores)
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+}
+
+/// Parse the --variation argument.
+pub fn variation_mode(s: &str) -> Result<VariationMode> {
+    Ok(match s.trim().to_ascii_lowercase().as_str() {
+        "random" => VariationMode::default(),
+        "mix" => VariationMode::Mix,
+        name => match variations::by_name(name) {
+            Some(id) => VariationMode::Single(id),
+            None => bail!(
+                "unknown variation '{s}': give a flam3 variation name (e.g. swirl), 'random' or 'mix'"
+            ),
+        },
+    })
+}
+
+/// Parse the --symmetry argument.
+pub fn symmetry_mode(s: Option<&str>) -> Result<SymmetryMode> {
+    match s.map(str::trim) {
+        None => Ok(SymmetryMode::None),
+        Some(r) if r.eq_ignore_ascii_case("random") => Ok(SymmetryMode::Random),
+        Some(n) => match n.parse::<i32>() {
+            Ok(k) if (-100..=100).contains(&k) => Ok(SymmetryMode::Order(k)),
+            _ => bail!("--symmetry '{n}' must be an order between -100 and 100, or 'random'"),
+        },
+    }
+}
+
+pub fn run(a: RandomArgs) -> Result<()> {
+    if a.count == 0 || a.count > 100_000 {
+        bail!("--count {} must be between 1 and 100000", a.count);
+    }
+    if a.min_xforms < 1 || a.min_xforms > a.max_xforms || a.max_xforms > 100 {
+        bail!(
+            "--min-xforms {} and --max-xforms {} need 1 ≤ min ≤ max ≤ 100",
+            a.min_xforms,
+            a.max_xforms
+        );
+    }
+    if !(a.quality > 0.0 && a.quality.is_finite()) {
+        bail!("--quality {} must be positive", a.quality);
+    }
+    match io::kind_of(&a.output) {
+        io::FileKind::FlameXml | io::FileKind::Fla => {}
+        _ => bail!("output '{}' must end in .fla or .flame", a.output.display()),
+    }
+    let opts = RandomOptions {
+        min_xforms: a.min_xforms,
+        max_xforms: a.max_xforms,
+        variations: variation_mode(&a.variation)?,
+        symmetry: symmetry_mode(a.symmetry.as_deref())?,
+        ..RandomOptions::default()
+    };
+    let seed = a.seed.unwrap_or_else(|| {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(1, |d| d.as_nanos() as u64)
+    });
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(a.threads)
+        .build()
+        .context("cannot start worker threads")?;
+    let work = a.count as u64 * if a.thumbs.is_some() { 2 } else { 1 };
+    let pb = super::progress_bar(work, "random flames");
+    let defaults = NewFlame::default();
+    let passed = AtomicU64::new(0);
+    let mut flames: Vec<_> = pool.install(|| {
+        (0..a.count)
+            .into_par_iter()
+            .map(|i| {
+                let g = random::generate(random::batch_seed(seed, i), &opts, &defaults);
+                if g.passed {
+                    passed.fetch_add(1, Ordering::Relaxed);
+                }
+                pb.inc(1);
+                g.flame
+            })
+            .collect()
+    });
+    let width = a.count.to_string().len().max(3);
+    for (i, f) in flames.iter_mut().enumerate() {
+        f.name = format!("random-{:0width$}", i + 1);
+    }
+    if let Some(dir) = &a.thumbs {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create '{}'", dir.display()))?;
+        let (tw, th) = a.size;
+        let results: Vec<Result<()>> = pool.install(|| {
+            flames
+                .par_iter()
+                .map(|f| {
+                    let mut t = f.clone();
+                    t.resize_keep_framing(tw, th);
+                    t.quality = a.quality;
+                    let ro = RenderOptions {
+                        seed: 1,
+                        threads: 1,
+                        ..RenderOptions::default()
+                    };
+                    let img =
+                        render(&t, &ro).with_context(|| format!("cannot render '{}'", f.name))?;
+                    let path = dir.join(format!("{}.png", f.name));
+                    io::png::save(&path, &img, &io::png::PngMeta::for_flame(f))
+                        .with_context(|| format!("cannot write '{}'", path.display()))?;
+                    pb.inc(1);
+                    Ok(())
+                })
+                .collect()
+        });
+        results.into_iter().collect::<Result<Vec<()>>>()?;
+    }
+    pb.finish_and_clear();
+    let name = a
+        .output
+        .file_stem()
+        .map_or_else(|| "random".into(), |s| s.to_string_lossy().into_owned());
+    io::write_flames(&a.output, &name, &flames)
+        .map_err(|e| anyhow::anyhow!(e))
+        .with_context(|| format!("cannot write '{}'", a.output.display()))?;
+    if a.count > 1 {
+        let ok = passed.load(Ordering::Relaxed);
+        println!(
+            "wrote {} flames to {} (seed {seed}; {ok} passed the quality check){}",
+            a.count,
+            a.output.display(),
+            a.thumbs
+                .as_ref()
+                .map(|d| format!("; thumbnails in {}", d.display()))
+                .unwrap_or_default()
+        );
+    }
+    Ok(())
+}
