@@ -343,3 +343,70 @@ fn a_failed_save_says_so_and_keeps_the_changes() {
     assert!(h.state().doc.dirty);
     assert_ne!(h.state().doc.path.as_deref(), Some(target));
 }
+
+#[test]
+fn random_batch_is_browsed_beside_the_file_and_kept_into_it() {
+    let mut h = open("sierpinski.flame");
+    let data = std::env::temp_dir().join(format!("ugnis-gui-data-{}", std::process::id()));
+    h.state_mut().data_dir = Some(data.clone());
+    let file_flames = h.state().doc.flames.clone();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::B);
+    let t = std::time::Instant::now();
+    while h.state().batch_doc().is_none() {
+        assert!(t.elapsed().as_secs() < 120, "no batch after 2 minutes");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+        h.step();
+    }
+    h.run_steps(2);
+    let batch = h.state().batch_doc().unwrap().flames.clone();
+    assert_eq!(batch.len(), 100);
+    assert_eq!(batch[1].name, "random-002");
+    // Kept as the last batch in the data directory, and the open file is untouched.
+    let saved = ugnis::io::read_flames(&data.join("last-batch.fla"), &Default::default())
+        .unwrap()
+        .value;
+    assert_eq!(saved.len(), 100);
+    assert_eq!(h.state().file_doc().flames, file_flames);
+    assert!(!h.state().file_doc().dirty);
+
+    // A click loads a batch flame into the editor.
+    h.get_by_label("random-002").click();
+    h.run_steps(2);
+    assert!(h.state().viewing_batch);
+    assert_eq!(h.state().doc.flame().name, "random-002");
+    // Keep copies it (here the first visible one, random-001) into the open file.
+    h.get_all_by_label("Keep").next().unwrap().click();
+    h.run_steps(2);
+    assert!(!h.state().viewing_batch);
+    let f = &h.state().doc;
+    assert_eq!(f.flames.len(), file_flames.len() + 1);
+    assert_eq!(f.flame().name, "random-001");
+    assert!(f.dirty);
+    // Undo in the file removes it again.
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.flames, file_flames);
+    let _ = std::fs::remove_dir_all(&data);
+}
+
+#[test]
+fn mutation_window_makes_a_mutant_current_and_undo_returns() {
+    let mut h = open("sierpinski.flame");
+    let before = h.state().doc.flame().clone();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::U);
+    h.run_steps(2);
+    assert!(h.state().mutations.open);
+    let mutants = h.state().mutations.mutants.clone();
+    assert_eq!(mutants.len(), 8);
+    assert!(mutants.iter().all(|m| m.xforms != before.xforms));
+    h.get_by_role_and_label(Role::Button, "+ transform").click();
+    h.run_steps(2);
+    let now = h.state().doc.flame().clone();
+    assert_eq!(now.xforms.len(), before.xforms.len() + 1);
+    assert_eq!(now, mutants[3]);
+    // The grid moves on: new mutants around the new centre.
+    assert_ne!(h.state().mutations.mutants, mutants);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.flame(), &before);
+}

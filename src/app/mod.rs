@@ -6,6 +6,7 @@ pub mod document;
 pub mod editor;
 pub mod export;
 pub mod gradients;
+pub mod mutations;
 pub mod options;
 pub mod preview;
 
@@ -28,6 +29,7 @@ use document::Document;
 use editor::{EditorAction, EditorState};
 use export::{ExportJob, ExportSettings};
 use gradients::{GradientAction, GradientWindow};
+use mutations::MutationWindow;
 use options::{Options, OptionsTab};
 use preview::{PreviewEvent, PreviewJob, PreviewWorker, ThumbnailWorker};
 
@@ -94,6 +96,7 @@ pub enum Action {
     /// None: "Random" (one of the seven per transform).
     SetVariation(Option<VarId>),
     ShowGradient,
+    ShowMutations,
     RandomFlame,
     ToggleAnimate,
     RandomWeights,
@@ -244,6 +247,12 @@ pub const MENU: &[MenuItem] = &[
     },
     MenuItem {
         menu: "Tools",
+        label: "Mutations…",
+        action: Action::ShowMutations,
+        shortcut: sc(Modifiers::COMMAND, Key::U),
+    },
+    MenuItem {
+        menu: "Tools",
         label: "Animate",
         action: Action::ToggleAnimate,
         shortcut: sc(Modifiers::COMMAND, Key::M),
@@ -343,6 +352,15 @@ pub struct UgnisApp {
     /// Messages for the status bar.
     pub status: String,
     pub gradients: GradientWindow,
+    /// The document not being edited: the open file while a batch flame is shown, otherwise
+    /// the last random batch (if any).
+    parked: Option<Document>,
+    /// True while the editor shows a flame of the random batch.
+    pub viewing_batch: bool,
+    pub mutations: MutationWindow,
+    /// Where the last random batch is kept (the platform data directory; none in tests
+    /// unless they set one).
+    pub data_dir: Option<PathBuf>,
     preview: Option<Preview>,
     thumbs: Option<ThumbnailWorker>,
     thumb_textures: HashMap<u64, egui::TextureHandle>,
@@ -430,6 +448,7 @@ impl UgnisApp {
             let c = c.clone();
             ThumbnailWorker::new(96, 72, 8.0, move || c.request_repaint())
         });
+        let data_dir = ctx.as_ref().and_then(|_| options::data_dir());
         let mut editor = EditorState::default();
         editor.canvas = egui::Rect::from_min_size(egui::Pos2::ZERO, Vec2::new(420.0, 360.0));
         editor.auto_zoom(doc.flame());
@@ -446,6 +465,10 @@ impl UgnisApp {
             variation_mode: VariationMode::default(),
             status: String::new(),
             gradients: GradientWindow::default(),
+            parked: data_dir.as_deref().and_then(load_last_batch),
+            data_dir,
+            viewing_batch: false,
+            mutations: MutationWindow::default(),
             preview,
             thumbs,
             thumb_textures: HashMap::new(),
@@ -473,8 +496,90 @@ impl UgnisApp {
             .unwrap_or(self.options.auto_weights)
     }
 
+    /// The open file's document (whichever document the editor shows).
+    pub fn file_doc(&self) -> &Document {
+        match (&self.parked, self.viewing_batch) {
+            (Some(p), true) => p,
+            _ => &self.doc,
+        }
+    }
+
+    /// The last random batch, if there is one.
+    pub fn batch_doc(&self) -> Option<&Document> {
+        if self.viewing_batch {
+            Some(&self.doc)
+        } else {
+            self.parked.as_ref()
+        }
+    }
+
+    /// Edit the open file again (after browsing the batch).
+    pub fn view_file(&mut self) {
+        if self.viewing_batch
+            && let Some(p) = self.parked.as_mut()
+        {
+            std::mem::swap(&mut self.doc, p);
+            self.viewing_batch = false;
+            self.editor.selected = editor::Selected::Xform(0);
+            self.editor.auto_zoom(self.doc.flame());
+        }
+    }
+
+    /// Show flame `i` of the random batch in the editor.
+    pub fn view_batch(&mut self, i: usize) {
+        if !self.viewing_batch
+            && let Some(p) = self.parked.as_mut()
+        {
+            std::mem::swap(&mut self.doc, p);
+            self.viewing_batch = true;
+        }
+        if self.viewing_batch {
+            self.doc.current = i.min(self.doc.flames.len() - 1);
+            self.editor.selected = editor::Selected::Xform(0);
+            self.editor.auto_zoom(self.doc.flame());
+        }
+    }
+
+    /// Replace the random batch.
+    pub fn set_batch(&mut self, flames: Vec<Flame>, path: Option<PathBuf>) {
+        let mut d = Document::new(flames, path);
+        d.name = "last batch".into();
+        if self.viewing_batch {
+            self.doc = d;
+            self.doc.current = 0;
+            self.editor.selected = editor::Selected::Xform(0);
+            self.editor.auto_zoom(self.doc.flame());
+        } else {
+            self.parked = Some(d);
+        }
+    }
+
+    /// Copy flame `i` of the batch (as edited) into the open file, as one undo step there,
+    /// and edit it.
+    pub fn keep_from_batch(&mut self, i: usize) {
+        let Some(f) = self.batch_doc().and_then(|b| b.flames.get(i)).cloned() else {
+            return;
+        };
+        self.view_file();
+        let name = f.name.clone();
+        self.doc.edit_document(|fl, cur| {
+            fl.push(f);
+            *cur = fl.len() - 1;
+        });
+        self.editor.selected = editor::Selected::Xform(0);
+        self.editor.auto_zoom(self.doc.flame());
+        self.status = format!("'{name}' kept in {}", self.doc.name);
+    }
+
     /// Carry out a command.
     pub fn act(&mut self, ctx: &egui::Context, a: Action) {
+        // Commands about the file work on the open file, not on the batch.
+        if matches!(
+            a,
+            Action::Open | Action::Save | Action::SaveAs | Action::Exit
+        ) {
+            self.view_file();
+        }
         match a {
             Action::Open => self.guard_dirty(Pending::BrowseOpen, "opening another file"),
             Action::Save => {
@@ -544,6 +649,7 @@ impl UgnisApp {
             Action::ZoomOut => self.preview_zoom = (self.preview_zoom / 1.25).max(0.125),
             Action::SetVariation(v) => self.set_variation(v),
             Action::ShowGradient => self.gradients.open = !self.gradients.open,
+            Action::ShowMutations => self.mutations.open = !self.mutations.open,
             Action::RandomFlame => self.random_flame(),
             Action::ToggleAnimate => self.toggle_animation(),
             Action::RandomWeights => {
@@ -924,6 +1030,7 @@ impl UgnisApp {
                 ("Gradient", "Gradient (Ctrl+G)", Action::ShowGradient),
                 ("Export", "Export image… (Ctrl+E)", Action::Export),
                 ("Batch", "Random batch (Ctrl+B)", Action::RandomBatch),
+                ("Mutate", "Mutations (Ctrl+U)", Action::ShowMutations),
                 ("Animate", "Animate (Ctrl+M)", Action::ToggleAnimate),
             ] {
                 if ui.button(label).on_hover_text(tip).clicked() {
@@ -991,67 +1098,123 @@ impl UgnisApp {
         });
     }
 
+    /// Ask the thumbnail worker for a flame's picture once; its texture when ready.
+    fn thumbnail(&mut self, f: &Flame) -> Option<egui::TextureId> {
+        let key = flame_key(f);
+        if !self.thumbs_requested.contains(&key)
+            && let Some(t) = &self.thumbs
+        {
+            t.request(key, f.clone());
+            self.thumbs_requested.insert(key);
+        }
+        self.thumb_textures.get(&key).map(|t| t.id())
+    }
+
     fn file_panel(&mut self, ui: &mut egui::Ui) {
-        ui.heading(&self.doc.name);
-        ui.label(format!("{} flame(s)", self.doc.flames.len()));
+        let file = self.file_doc();
+        let (name, n, dirty) = (file.name.clone(), file.flames.len(), file.dirty);
+        ui.heading(format!("{name}{}", if dirty { " *" } else { "" }));
+        ui.label(format!("{n} flame(s)"));
         ui.separator();
         let mut select = None;
-        let mut keep: Option<usize> = None;
-        let batch = self
-            .doc
-            .path
-            .as_ref()
-            .is_some_and(|p| options::data_dir().is_some_and(|d| p.starts_with(d)));
-        egui::ScrollArea::vertical().show(ui, |ui| {
-            for i in 0..self.doc.flames.len() {
-                let f = &self.doc.flames[i];
-                let key = flame_key(f);
-                if !self.thumbs_requested.contains(&key)
-                    && let Some(t) = &self.thumbs
-                {
-                    t.request(key, f.clone());
-                    self.thumbs_requested.insert(key);
-                }
-                let label = if f.name.is_empty() {
-                    format!("flame {}", i + 1)
-                } else {
-                    f.name.clone()
-                };
-                ui.horizontal(|ui| {
-                    let size = Vec2::new(64.0, 48.0);
-                    let r = match self.thumb_textures.get(&key) {
-                        Some(t) => {
-                            ui.add(egui::Image::new((t.id(), size)).sense(egui::Sense::click()))
-                        }
-                        None => ui.add(egui::Button::new("…").min_size(size)),
+        let batch_len = self.batch_doc().map_or(0, |b| b.flames.len());
+        let list_height = if batch_len > 0 {
+            (ui.available_height() * 0.35).max(80.0)
+        } else {
+            f32::INFINITY
+        };
+        egui::ScrollArea::vertical()
+            .id_salt("file-flames")
+            .max_height(list_height)
+            .show(ui, |ui| {
+                let flames = self.file_doc().flames.clone();
+                let current = (!self.viewing_batch).then_some(self.file_doc().current);
+                for (i, f) in flames.iter().enumerate() {
+                    let label = if f.name.is_empty() {
+                        format!("flame {}", i + 1)
+                    } else {
+                        f.name.clone()
                     };
-                    let l = ui.selectable_label(i == self.doc.current, label);
-                    if r.clicked() || l.clicked() {
-                        select = Some(i);
-                    }
-                    if batch
-                        && ui
-                            .small_button("keep")
-                            .on_hover_text("copy into a new document you can save")
-                            .clicked()
-                    {
-                        keep = Some(i);
-                    }
-                });
-            }
-        });
+                    let tex = self.thumbnail(f);
+                    ui.horizontal(|ui| {
+                        let size = Vec2::new(64.0, 48.0);
+                        let r = match tex {
+                            Some(t) => {
+                                ui.add(egui::Image::new((t, size)).sense(egui::Sense::click()))
+                            }
+                            None => ui.add(egui::Button::new("…").min_size(size)),
+                        };
+                        let l = ui.selectable_label(current == Some(i), label);
+                        if r.clicked() || l.clicked() {
+                            select = Some(i);
+                        }
+                    });
+                }
+            });
         if let Some(i) = select {
+            self.view_file();
             self.doc.current = i;
             self.editor.selected = editor::Selected::Xform(0);
             self.editor.auto_zoom(self.doc.flame());
         }
+        if batch_len == 0 {
+            return;
+        }
+        ui.separator();
+        ui.horizontal(|ui| {
+            ui.strong(format!("Last random batch ({batch_len})"));
+        });
+        ui.label("Click to edit; Keep copies into the file.");
+        // A grid of thumbnails; only the visible rows are drawn and asked for, so the
+        // pictures in view render first.
+        let cols = ((ui.available_width() / 86.0).floor() as usize).max(1);
+        let rows = batch_len.div_ceil(cols);
+        let row_h = 60.0 + 2.0 * ui.spacing().interact_size.y + 6.0;
+        let mut open = None;
+        let mut keep = None;
+        let current = self.viewing_batch.then_some(self.doc.current);
+        egui::ScrollArea::vertical()
+            .id_salt("batch-grid")
+            .show_rows(ui, row_h, rows, |ui, range| {
+                for r in range {
+                    ui.horizontal(|ui| {
+                        for c in 0..cols {
+                            let i = r * cols + c;
+                            let Some(f) = self.batch_doc().and_then(|b| b.flames.get(i)).cloned()
+                            else {
+                                break;
+                            };
+                            let tex = self.thumbnail(&f);
+                            ui.vertical(|ui| {
+                                ui.set_width(80.0);
+                                let size = Vec2::new(80.0, 60.0);
+                                let r = match tex {
+                                    Some(t) => ui.add(
+                                        egui::Image::new((t, size)).sense(egui::Sense::click()),
+                                    ),
+                                    None => ui.add(egui::Button::new("…").min_size(size)),
+                                };
+                                let l = ui.selectable_label(current == Some(i), &f.name);
+                                if r.clicked() || l.clicked() {
+                                    open = Some(i);
+                                }
+                                if ui
+                                    .small_button("Keep")
+                                    .on_hover_text("copy this flame into the open file")
+                                    .clicked()
+                                {
+                                    keep = Some(i);
+                                }
+                            });
+                        }
+                    });
+                }
+            });
+        if let Some(i) = open {
+            self.view_batch(i);
+        }
         if let Some(i) = keep {
-            let f = self.doc.flames[i].clone();
-            ui.ctx().copy_text(io::flam3_xml::flame_element(&f));
-            self.status = format!(
-                "'{}' copied; paste it into any document with Ctrl+Shift+V",
-                f.name
-            );
+            self.keep_from_batch(i);
         }
     }
 
@@ -1331,7 +1494,7 @@ impl UgnisApp {
             match rx.try_recv() {
                 Ok(flames) => {
                     self.batch_job = None;
-                    let path = options::data_dir().map(|d| d.join("last-batch.fla"));
+                    let path = self.data_dir.as_ref().map(|d| d.join("last-batch.fla"));
                     if let Some(p) = &path {
                         let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new(".")));
                         if let Err(e) = io::write_flames(p, "last-batch", &flames) {
@@ -1339,10 +1502,7 @@ impl UgnisApp {
                         }
                     }
                     self.show_files = true;
-                    self.guard_dirty(
-                        Pending::ReplaceWith(flames, path, "last-batch".into()),
-                        "replacing them with the random batch",
-                    );
+                    self.set_batch(flames, path);
                     self.status = "Random batch ready".into();
                 }
                 Err(std::sync::mpsc::TryRecvError::Empty) => {
@@ -1350,6 +1510,17 @@ impl UgnisApp {
                 }
                 Err(_) => self.batch_job = None,
             }
+        }
+        let opts = self.options.random_options(self.variation_mode.clone());
+        let centre = self.doc.flame().clone();
+        if let Some(m) = self
+            .mutations
+            .show(ctx, &centre, &opts, self.preview.is_some())
+        {
+            self.doc.edit(|f| *f = m);
+            self.editor.fix_selection(self.doc.flame());
+            self.editor.auto_zoom(self.doc.flame());
+            self.status = "Mutant chosen (Undo returns)".into();
         }
         let current = self.doc.flame().palette.clone();
         if let Some(a) = self.gradients.show(ctx, &current) {
@@ -1377,7 +1548,8 @@ impl UgnisApp {
         }
         // Close requests ask about unsaved changes.
         if ctx.input(|i| i.viewport().close_requested()) && !self.allow_close {
-            if self.doc.dirty {
+            if self.file_doc().dirty {
+                self.view_file();
                 ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
                 self.pending = Some(Pending::Exit);
                 self.confirm_what = "quitting".into();
@@ -1390,8 +1562,8 @@ impl UgnisApp {
         }
         let title = format!(
             "ugnis — {}{}",
-            self.doc.name,
-            if self.doc.dirty { " *" } else { "" }
+            self.file_doc().name,
+            if self.file_doc().dirty { " *" } else { "" }
         );
         ctx.send_viewport_cmd(egui::ViewportCommand::Title(title));
 
@@ -1522,6 +1694,18 @@ fn flame_settings(ui: &mut egui::Ui, doc: &mut Document) {
 }
 
 /// Load flames from any supported file, with the Options' defaults for IFS files.
+/// The last random batch from the data directory (absent or unreadable: none).
+fn load_last_batch(dir: &Path) -> Option<Document> {
+    let path = dir.join("last-batch.fla");
+    let flames = io::read_flames(&path, &Default::default()).ok()?.value;
+    if flames.is_empty() {
+        return None;
+    }
+    let mut d = Document::new(flames, Some(path));
+    d.name = "last batch".into();
+    Some(d)
+}
+
 fn load_any(path: &Path, options: &Options) -> Result<(Vec<Flame>, Vec<String>), String> {
     let p = match io::kind_of(path) {
         io::FileKind::Ifs => io::ifs_flames_with(path, &options.new_flame()),

@@ -74,7 +74,9 @@ pub fn mutate(
     if m.xforms.is_empty() {
         m = flame.clone();
     }
-    framing::apply_auto_frame(&mut m);
+    if kind != Mutation::Colours {
+        framing::apply_auto_frame(&mut m);
+    }
     m.seed = None;
     m
 }
@@ -100,8 +102,15 @@ fn mutate_once(
                 VariationMode::Single(_) => VariationMode::Mix,
                 m => m.clone(),
             };
-            let new = random_variations(&mode, rng);
             let x = &mut f.xforms[i];
+            // New terms: at least one the transform does not have yet.
+            let mut new = random_variations(&mode, rng);
+            for _ in 0..20 {
+                if new.iter().any(|v| x.var(v.id).is_none()) {
+                    break;
+                }
+                new = random_variations(&VariationMode::Mix, rng);
+            }
             // Blend: the old terms shrink by d, the new ones come in with weight d.
             for v in &mut x.vars {
                 v.weight *= 1.0 - d;
