@@ -496,6 +496,14 @@ impl UgnisApp {
             .unwrap_or(self.options.auto_weights)
     }
 
+    /// Settings of new random flames: the Options defaults, with the current gradient (used
+    /// when "random gradient" is off).
+    fn random_defaults(&self) -> crate::flame::NewFlame {
+        let mut d = self.options.new_flame();
+        d.gradient = self.doc.flame().palette.clone();
+        d
+    }
+
     /// The open file's document (whichever document the editor shows).
     pub fn file_doc(&self) -> &Document {
         match (&self.parked, self.viewing_batch) {
@@ -704,7 +712,7 @@ impl UgnisApp {
     fn random_flame(&mut self) {
         let seed = self.rng.u64();
         let opts = self.options.random_options(self.variation_mode.clone());
-        let mut g = random::generate(seed, &opts, &self.options.new_flame()).flame;
+        let mut g = random::generate(seed, &opts, &self.random_defaults()).flame;
         g.name = format!("random-{:08x}", seed as u32);
         let cur = self.doc.current;
         self.doc.edit_document(|fl, c| {
@@ -722,7 +730,7 @@ impl UgnisApp {
         }
         let seed = self.rng.u64();
         let opts = self.options.random_options(self.variation_mode.clone());
-        let defaults = self.options.new_flame();
+        let defaults = self.random_defaults();
         let (tx, rx) = std::sync::mpsc::channel();
         std::thread::spawn(move || {
             let _ = tx.send(random::generate_batch(100, seed, &opts, &defaults));

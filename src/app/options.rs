@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use eframe::egui;
 
 use crate::flame::NewFlame;
-use crate::flame::random::{RandomOptions, VariationMode};
+use crate::flame::random::{RandomOptions, SymmetryMode, VariationMode};
 use crate::gradient::{self, Gradient};
 
 /// All persisted options.
@@ -25,6 +25,11 @@ pub struct Options {
     pub max_xforms: usize,
     pub random_gradient: bool,
     pub probabilities: [f64; 7],
+    /// Symmetry of random flames: none, flam3's random order, or a fixed order.
+    pub symmetry: SymmetryMode,
+    /// Chance of a random post transform per transform, and of a final transform.
+    pub post_probability: f64,
+    pub final_probability: f64,
     // General
     pub default_gradient: String,
     /// Largest side of the live preview, pixels.
@@ -51,6 +56,9 @@ impl Default for Options {
             max_xforms: 6,
             random_gradient: true,
             probabilities: [1.0 / 7.0; 7],
+            symmetry: SymmetryMode::None,
+            post_probability: 0.0,
+            final_probability: 0.0,
             default_gradient: "ember".into(),
             preview_size: 640,
             threads: 0,
@@ -86,6 +94,16 @@ impl Options {
         {
             p.push("variation probabilities must be ≥ 0 and not all 0".into());
         }
+        if !(0.0..=1.0).contains(&self.post_probability)
+            || !(0.0..=1.0).contains(&self.final_probability)
+        {
+            p.push("post and final chances must be between 0 and 1".into());
+        }
+        if let SymmetryMode::Order(k) = self.symmetry
+            && !(-100..=100).contains(&k)
+        {
+            p.push("symmetry order must be between −100 and 100".into());
+        }
         if !(64..=4096).contains(&self.preview_size) {
             p.push("preview size must be between 64 and 4096 pixels".into());
         }
@@ -117,6 +135,9 @@ impl Options {
             min_xforms: self.min_xforms,
             max_xforms: self.max_xforms,
             random_gradient: self.random_gradient,
+            symmetry: self.symmetry,
+            post_probability: self.post_probability,
+            final_probability: self.final_probability,
             variations: match variations {
                 VariationMode::Random(_) => VariationMode::Random(self.probabilities),
                 v => v,
@@ -132,7 +153,8 @@ impl Options {
             "# ugnis options\nmain_quality = {}\nmain_gamma = {}\nmain_brightness = {}\nmain_contrast = {}\n\
              preview_quality = {}\npreview_gamma = {}\nanimation_quality = {}\nmin_xforms = {}\nmax_xforms = {}\n\
              random_gradient = {}\nprobabilities = {}\ndefault_gradient = {}\npreview_size = {}\nthreads = {}\n\
-             auto_weights = {}\nwidth = {}\nheight = {}\n",
+             auto_weights = {}\nwidth = {}\nheight = {}\nsymmetry = {}\npost_probability = {}\n\
+             final_probability = {}\n",
             self.main_quality,
             self.main_gamma,
             self.main_brightness,
@@ -150,6 +172,13 @@ impl Options {
             self.auto_weights,
             self.width,
             self.height,
+            match self.symmetry {
+                SymmetryMode::None => "none".to_string(),
+                SymmetryMode::Random => "random".to_string(),
+                SymmetryMode::Order(k) => k.to_string(),
+            },
+            self.post_probability,
+            self.final_probability,
         )
     }
 
@@ -201,6 +230,22 @@ impl Options {
                 "auto_weights" => v.parse().map(|x| o.auto_weights = x).is_ok(),
                 "width" => v.parse().map(|x| o.width = x).is_ok(),
                 "height" => v.parse().map(|x| o.height = x).is_ok(),
+                "symmetry" => match v {
+                    "none" => {
+                        o.symmetry = SymmetryMode::None;
+                        true
+                    }
+                    "random" => {
+                        o.symmetry = SymmetryMode::Random;
+                        true
+                    }
+                    n => n
+                        .parse()
+                        .map(|k| o.symmetry = SymmetryMode::Order(k))
+                        .is_ok(),
+                },
+                "post_probability" => v.parse().map(|x| o.post_probability = x).is_ok(),
+                "final_probability" => v.parse().map(|x| o.final_probability = x).is_ok(),
                 _ => {
                     notes.push(format!("line {}: unknown option '{k}'", n + 1));
                     true
@@ -315,6 +360,36 @@ pub fn dialog(ui: &mut egui::Ui, draft: &mut Options, tab: &mut OptionsTab) -> O
                 ui.label("Random gradient");
                 ui.checkbox(&mut draft.random_gradient, "");
                 ui.end_row();
+                ui.label("Symmetry");
+                ui.horizontal(|ui| {
+                    let fixed = matches!(draft.symmetry, SymmetryMode::Order(_));
+                    if ui
+                        .selectable_label(draft.symmetry == SymmetryMode::None, "none")
+                        .clicked()
+                    {
+                        draft.symmetry = SymmetryMode::None;
+                    }
+                    if ui
+                        .selectable_label(draft.symmetry == SymmetryMode::Random, "random")
+                        .clicked()
+                    {
+                        draft.symmetry = SymmetryMode::Random;
+                    }
+                    if ui.selectable_label(fixed, "order").clicked() && !fixed {
+                        draft.symmetry = SymmetryMode::Order(4);
+                    }
+                    if let SymmetryMode::Order(k) = &mut draft.symmetry {
+                        ui.add(egui::DragValue::new(k).range(-100..=100))
+                            .on_hover_text("N: rotational; −N: rotational and mirror; −1: mirror");
+                    }
+                });
+                ui.end_row();
+                ui.label("Chance of post transforms");
+                ui.add(egui::Slider::new(&mut draft.post_probability, 0.0..=1.0));
+                ui.end_row();
+                ui.label("Chance of a final transform");
+                ui.add(egui::Slider::new(&mut draft.final_probability, 0.0..=1.0));
+                ui.end_row();
                 ui.strong("Variation probabilities");
                 ui.end_row();
                 for (i, id) in crate::flame::variations::THESIS_SEVEN.iter().enumerate() {
@@ -414,9 +489,13 @@ mod tests {
         p.main_quality = 50.0;
         p.default_gradient = "lagoon".into();
         p.probabilities[3] = 0.5;
+        p.symmetry = SymmetryMode::Order(-3);
+        p.post_probability = 0.25;
         let (q, notes) = Options::from_text(&p.to_text());
         assert!(notes.is_empty(), "{notes:?}");
         assert_eq!(q, p);
+        p.symmetry = SymmetryMode::Random;
+        assert_eq!(Options::from_text(&p.to_text()).0, p);
     }
 
     #[test]
