@@ -18,6 +18,8 @@ struct Cli {
 }
 
 #[derive(Subcommand, Debug)]
+// Parsed once per run; boxing the larger argument sets would gain nothing.
+#[allow(clippy::large_enum_variant)]
 enum Command {
     /// Render a flame file to PNG or BMP
     Render(cli::render::RenderArgs),
@@ -27,6 +29,8 @@ enum Command {
     Convert(cli::convert::ConvertArgs),
     /// Generate a batch of random flames into one .fla, with thumbnails
     Random(cli::random::RandomArgs),
+    /// Render an escape-time fractal (Mandelbrot, Julia, Newton, …) or a saved view
+    Escape(cli::escape::EscapeArgs),
     /// Render the frames of an animation (rotating triangles or in-betweens of flames)
     Animate(cli::animate::AnimateArgs),
 }
@@ -48,6 +52,7 @@ fn main() {
         Some(Command::Convert(a)) => cli::convert::run(a),
         Some(Command::Random(a)) => cli::random::run(a),
         Some(Command::Animate(a)) => cli::animate::run(a),
+        Some(Command::Escape(a)) => cli::escape::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {

@@ -441,3 +441,109 @@ fn animate_writes_rotation_and_interpolation_frames() {
     }
     assert_eq!(std::fs::read_dir(&int).unwrap().count(), 5);
 }
+
+#[test]
+fn escape_renders_kinds_views_and_rejects_bad_input() {
+    let dir = common::temp_dir("cli-escape");
+    let png = dir.join("m.png");
+    let view = dir.join("m.esc");
+    let (code, _, err) = ugnis(&[
+        "escape",
+        "mandelbrot",
+        "--center=-0.7,0",
+        "--width",
+        "3",
+        "--size",
+        "120x90",
+        "--max-iter",
+        "200",
+        "--coloring",
+        "bands",
+        "-o",
+        png.to_str().unwrap(),
+        "--save-view",
+        view.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let img = image::open(&png).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (120, 90));
+    // The centre of the main cardioid (−0.25, 0) is inside: black; the far corner is outside.
+    let [i, j] = [((-0.25 + 2.2) / 3.0 * 120.0) as u32, 45];
+    assert_eq!(img.get_pixel(i, j).0, [0, 0, 0]);
+    assert_ne!(img.get_pixel(0, 0).0, [0, 0, 0]);
+    // The saved view renders the same picture again.
+    let again = dir.join("again.png");
+    let (code, _, err) = ugnis(&[
+        "escape",
+        "--view",
+        view.to_str().unwrap(),
+        "-o",
+        again.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(image::open(&again).unwrap().to_rgb8(), img);
+    // Every kind renders.
+    for (kind, extra) in [
+        ("julia", vec!["--c=-0.8,0.156"]),
+        ("multibrot", vec!["--power", "4"]),
+        ("newton", vec!["--poly", "1 0 0 0 -1"]),
+        ("logistic", vec![]),
+        ("cubic", vec![]),
+        (
+            "warped-julia",
+            vec!["--alpha=-0.3,0", "--turbulence", "0.2", "--polar"],
+        ),
+    ] {
+        let out = dir.join(format!("{kind}.bmp"));
+        let mut args = vec![
+            "escape",
+            kind,
+            "--size",
+            "64x48",
+            "--max-iter",
+            "100",
+            "-o",
+            out.to_str().unwrap(),
+        ];
+        args.extend(extra);
+        let (code, _, err) = ugnis(&args);
+        assert_eq!(code, 0, "{kind}: {err}");
+        assert_eq!(image::open(&out).unwrap().width(), 64);
+    }
+    // Bad input: one message, exit 1.
+    for (args, want) in [
+        (vec!["escape", "snowflake", "-o", "x.png"], "unknown kind"),
+        (vec!["escape", "julia", "--c", "abc", "-o", "x.png"], "--c"),
+        (
+            vec!["escape", "mandelbrot", "--power", "12", "-o", "x.png"],
+            "power",
+        ),
+        (vec!["escape", "mandelbrot", "-o", "x.txt"], ".png"),
+        (
+            vec![
+                "escape",
+                "mandelbrot",
+                "--width",
+                "1e-14",
+                "--center",
+                "0.3,0",
+                "-o",
+                "x.png",
+            ],
+            "limit",
+        ),
+        (
+            vec!["escape", "warped-julia", "--alpha", "1,0", "-o", "x.png"],
+            "α",
+        ),
+        (
+            vec!["escape", "--view", "/no/such.esc", "-o", "x.png"],
+            "no/such.esc",
+        ),
+    ] {
+        let (code, _, err) = ugnis(&args);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(err.contains(want), "{args:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+    }
+}

@@ -410,3 +410,119 @@ fn mutation_window_makes_a_mutant_current_and_undo_returns() {
     h.run_steps(2);
     assert_eq!(h.state().doc.flame(), &before);
 }
+
+fn escape_tab() -> Harness<'static, UgnisApp> {
+    let mut h = open("sierpinski.flame");
+    h.get_by_role_and_label(Role::Button, "Escape-time").click();
+    h.run_steps(3);
+    assert_eq!(h.state().tab, ugnis::app::Tab::Escape);
+    h
+}
+
+/// Centre of the escape canvas in screen points (the right of the controls panel).
+fn escape_canvas_point(h: &Harness<'_, UgnisApp>, fx: f32, fy: f32) -> Pos2 {
+    // The canvas fills the central panel: right of the controls, between the bars.
+    let back = h.get_by_role_and_label(Role::Button, "Reset view").rect();
+    let left = back.right() + 120.0;
+    let (top, bottom, right) = (80.0, 800.0, 1270.0);
+    Pos2::new(left + (right - left) * fx, top + (bottom - top) * fy)
+}
+
+#[test]
+fn escape_tab_clicks_open_julia_sets_and_back_returns() {
+    let mut h = escape_tab();
+    let before = h.state().escape.doc.clone();
+    assert_eq!(before.params.family.name(), "mandelbrot");
+    let p = escape_canvas_point(&h, 0.3, 0.4);
+    h.hover_at(p);
+    h.run_steps(2);
+    let c = h.state().escape.hover.expect("the cursor's c");
+    h.event(egui::Event::PointerButton {
+        pos: p,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    h.event(egui::Event::PointerButton {
+        pos: p,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    h.run_steps(3);
+    match &h.state().escape.doc.params.family {
+        ugnis::escape::Family::Julia { c: jc, power } => {
+            assert_eq!(*power, 2);
+            assert!((jc.re - c.re).abs() < 1e-12 && (jc.im - c.im).abs() < 1e-12);
+        }
+        f => panic!("clicking the Mandelbrot set should open a Julia set, got {f:?}"),
+    }
+    h.get_by_role_and_label(Role::Button, "Back").click();
+    h.run_steps(2);
+    assert_eq!(h.state().escape.doc.params.family, before.params.family);
+    assert_eq!(h.state().escape.doc.view.center, before.view.center);
+}
+
+#[test]
+fn escape_tab_rectangle_zoom_and_pan() {
+    let mut h = escape_tab();
+    let v0 = h.state().escape.doc.view;
+    // Right-drag a rectangle: the view zooms to it.
+    let a = escape_canvas_point(&h, 0.4, 0.4);
+    let b = escape_canvas_point(&h, 0.6, 0.6);
+    h.hover_at(a);
+    h.step();
+    h.event(egui::Event::PointerButton {
+        pos: a,
+        button: egui::PointerButton::Secondary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    h.step();
+    for k in 1..=4 {
+        h.hover_at(a + (b - a) * (k as f32 / 4.0));
+        h.step();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: b,
+        button: egui::PointerButton::Secondary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    h.run_steps(3);
+    let v1 = h.state().escape.doc.view;
+    assert!(v1.half_height < v0.half_height * 0.3, "{v1:?}");
+    // Dragging pans: the world point under the pointer follows it.
+    let p = escape_canvas_point(&h, 0.5, 0.5);
+    let q = p + Vec2::new(100.0, -50.0);
+    h.hover_at(p);
+    h.run_steps(2);
+    let w_before = h.state().escape.hover.unwrap();
+    h.drag_at(p);
+    h.step();
+    for k in 1..=4 {
+        h.hover_at(p + (q - p) * (k as f32 / 4.0));
+        h.step();
+    }
+    h.drop_at(q);
+    h.run_steps(2);
+    h.hover_at(q);
+    h.run_steps(2);
+    let w_after = h.state().escape.hover.unwrap();
+    let px = h
+        .state()
+        .escape
+        .doc
+        .view
+        .pixel_size(h.state().escape.doc.height);
+    assert!(
+        (w_after.re - w_before.re).abs() < 2.0 * px && (w_after.im - w_before.im).abs() < 2.0 * px,
+        "{w_before:?} → {w_after:?}"
+    );
+    // Back twice returns to the start.
+    h.get_by_role_and_label(Role::Button, "Back").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Back").click();
+    h.run_steps(2);
+    assert_eq!(h.state().escape.doc.view.center, v0.center);
+}

@@ -14,6 +14,9 @@ pub enum Purpose {
     LoadGradient,
     GradientFromImage,
     Export,
+    OpenView,
+    SaveView,
+    ExportEscape,
 }
 
 impl Purpose {
@@ -24,6 +27,9 @@ impl Purpose {
             Purpose::LoadGradient => "Load gradient",
             Purpose::GradientFromImage => "Create gradient from image",
             Purpose::Export => "Export image",
+            Purpose::OpenView => "Open escape-time view",
+            Purpose::SaveView => "Save escape-time view",
+            Purpose::ExportEscape => "Export escape-time image",
         }
     }
 
@@ -33,12 +39,16 @@ impl Purpose {
             Purpose::SaveAs => &["fla", "flame", "flam3", "ifs"],
             Purpose::LoadGradient => &["ugr", "map", "gradient"],
             Purpose::GradientFromImage => &["png", "jpg", "jpeg", "bmp", "gif"],
-            Purpose::Export => &["png", "bmp"],
+            Purpose::Export | Purpose::ExportEscape => &["png", "bmp"],
+            Purpose::OpenView | Purpose::SaveView => &["esc"],
         }
     }
 
     pub fn saving(self) -> bool {
-        matches!(self, Purpose::SaveAs | Purpose::Export)
+        matches!(
+            self,
+            Purpose::SaveAs | Purpose::Export | Purpose::SaveView | Purpose::ExportEscape
+        )
     }
 }
 

@@ -4,6 +4,7 @@
 pub mod dialogs;
 pub mod document;
 pub mod editor;
+pub mod escape_view;
 pub mod export;
 pub mod gradients;
 pub mod mutations;
@@ -27,6 +28,7 @@ use crate::io;
 use dialogs::{Confirm, FileBrowser, Purpose};
 use document::Document;
 use editor::{EditorAction, EditorState};
+use escape_view::{EscapeRequest, EscapeTab};
 use export::{ExportJob, ExportSettings};
 use gradients::{GradientAction, GradientWindow};
 use mutations::MutationWindow;
@@ -358,6 +360,8 @@ pub struct UgnisApp {
     /// True while the editor shows a flame of the random batch.
     pub viewing_batch: bool,
     pub mutations: MutationWindow,
+    pub escape: EscapeTab,
+    escape_export: Option<Receiver<Result<PathBuf, String>>>,
     /// Where the last random batch is kept (the platform data directory; none in tests
     /// unless they set one).
     pub data_dir: Option<PathBuf>,
@@ -469,6 +473,8 @@ impl UgnisApp {
             data_dir,
             viewing_batch: false,
             mutations: MutationWindow::default(),
+            escape: EscapeTab::new(ctx.is_some()),
+            escape_export: None,
             preview,
             thumbs,
             thumb_textures: HashMap::new(),
@@ -805,9 +811,25 @@ impl UgnisApp {
                     || format!("{}.fla", self.doc.name),
                     |n| n.to_string_lossy().into_owned(),
                 ),
+            Purpose::SaveView => self
+                .escape
+                .path
+                .as_ref()
+                .and_then(|p| p.file_name())
+                .map_or_else(
+                    || format!("{}.esc", self.escape.doc.params.family.name()),
+                    |n| n.to_string_lossy().into_owned(),
+                ),
+            Purpose::ExportEscape => format!("{}.png", self.escape.doc.params.family.name()),
             _ => String::new(),
         };
-        self.browser = Some(FileBrowser::new(purpose, self.doc.path.as_deref(), &name));
+        let start = match purpose {
+            Purpose::OpenView | Purpose::SaveView | Purpose::ExportEscape => {
+                self.escape.path.clone()
+            }
+            _ => self.doc.path.clone(),
+        };
+        self.browser = Some(FileBrowser::new(purpose, start.as_deref(), &name));
     }
 
     /// Open a file, replacing the document (the caller asked about unsaved changes).
@@ -887,6 +909,64 @@ impl UgnisApp {
                 if let Some(s) = &mut self.export_dialog {
                     s.path = path;
                 }
+            }
+            Purpose::OpenView => match io::escape_view::read(&path) {
+                Ok(p) => {
+                    if !p.warnings.is_empty() {
+                        let w: Vec<String> = p.warnings.iter().map(|w| w.to_string()).collect();
+                        self.message = Some(("Warnings".into(), w.join("\n")));
+                    }
+                    self.escape.load(p.value, Some(path.clone()));
+                    self.status = format!("Opened {}", path.display());
+                }
+                Err(e) => self.message = Some(("Cannot open".into(), e.to_string())),
+            },
+            Purpose::SaveView => {
+                let mut p = path;
+                if p.extension().is_none() {
+                    p.set_extension("esc");
+                }
+                match io::escape_view::save(&p, &self.escape.doc) {
+                    Ok(()) => {
+                        self.status = format!("Saved {}", p.display());
+                        self.escape.path = Some(p);
+                    }
+                    Err(e) => {
+                        self.message = Some(("Cannot save".into(), format!("{}: {e}", p.display())))
+                    }
+                }
+            }
+            Purpose::ExportEscape => {
+                let mut p = path;
+                if p.extension().is_none() {
+                    p.set_extension("png");
+                }
+                let doc = self.escape.export_doc();
+                let (tx, rx) = std::sync::mpsc::channel();
+                let out = p.clone();
+                std::thread::spawn(move || {
+                    let r = crate::escape::render(&doc.params, doc.view, doc.width, doc.height)
+                        .map_err(|e| e.to_string())
+                        .and_then(|(img, _)| {
+                            let img = image::DynamicImage::ImageRgb8(img);
+                            let res = if io::kind_of(&out) == io::FileKind::Bmp {
+                                io::bmp::save(&out, &img)
+                            } else {
+                                let meta = io::png::PngMeta {
+                                    text: vec![(
+                                        "ugnis_escape_view".into(),
+                                        io::escape_view::write(&doc),
+                                    )],
+                                    ..Default::default()
+                                };
+                                io::png::save(&out, &img, &meta)
+                            };
+                            res.map_err(|e| format!("{}: {e}", out.display()))
+                        });
+                    let _ = tx.send(r.map(|()| out));
+                });
+                self.escape_export = Some(rx);
+                self.status = format!("Exporting {}…", p.display());
             }
         }
     }
@@ -1056,6 +1136,14 @@ impl UgnisApp {
     }
 
     fn status_bar(&mut self, ui: &mut egui::Ui) {
+        if self.tab == Tab::Escape {
+            ui.horizontal(|ui| {
+                ui.label(self.escape.status_text());
+                ui.separator();
+                ui.label(&self.status);
+            });
+            return;
+        }
         ui.horizontal(|ui| {
             let f = self.doc.flame();
             ui.label(format!(
@@ -1498,6 +1586,22 @@ impl UgnisApp {
                 None => ctx.request_repaint_after(std::time::Duration::from_millis(100)),
             }
         }
+        if let Some(rx) = &self.escape_export {
+            match rx.try_recv() {
+                Ok(Ok(p)) => {
+                    self.escape_export = None;
+                    self.status = format!("Exported {}", p.display());
+                }
+                Ok(Err(e)) => {
+                    self.escape_export = None;
+                    self.message = Some(("Export failed".into(), e));
+                }
+                Err(std::sync::mpsc::TryRecvError::Empty) => {
+                    ctx.request_repaint_after(std::time::Duration::from_millis(100))
+                }
+                Err(_) => self.escape_export = None,
+            }
+        }
         if let Some(rx) = &self.batch_job {
             match rx.try_recv() {
                 Ok(flames) => {
@@ -1602,12 +1706,16 @@ impl UgnisApp {
                 egui::CentralPanel::default().show(ui, |ui| self.preview_panel(ui, dragging));
             }
             Tab::Escape => {
-                egui::CentralPanel::default().show(ui, |ui| {
-                    ui.heading("Escape-time fractals");
-                    ui.label(
-                        "Mandelbrot, Julia, Newton and warped-Julia views arrive here (issue #6).",
-                    );
-                });
+                if let Some(r) = self.escape.ui(ui) {
+                    match r {
+                        EscapeRequest::OpenView => self.browse(Purpose::OpenView),
+                        EscapeRequest::SaveView => self.browse(Purpose::SaveView),
+                        EscapeRequest::Export => self.browse(Purpose::ExportEscape),
+                    }
+                }
+                if !self.escape.status.is_empty() {
+                    self.status = std::mem::take(&mut self.escape.status);
+                }
             }
             Tab::Scene => {
                 egui::CentralPanel::default().show(ui, |ui| {

@@ -3,6 +3,7 @@
 
 pub mod animate;
 pub mod convert;
+pub mod escape;
 pub mod info;
 pub mod random;
 pub mod render;

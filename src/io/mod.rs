@@ -4,6 +4,7 @@
 pub mod atomic;
 pub mod bmp;
 pub mod diag;
+pub mod escape_view;
 pub mod flam3_xml;
 pub mod ifs;
 pub mod image_in;

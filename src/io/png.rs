@@ -19,6 +19,8 @@ pub struct PngMeta {
     pub flame_xml: Option<String>,
     pub samples: Option<u64>,
     pub error_rate: Option<f64>,
+    /// Further text chunks (keyword, ASCII text), e.g. an escape-time view.
+    pub text: Vec<(String, String)>,
 }
 
 impl PngMeta {
@@ -96,6 +98,9 @@ fn encode_to<W: std::io::Write>(
     }
     if let Some(e) = meta.error_rate {
         enc.add_text_chunk("flam3_error_rate".into(), format!("{e}"))?;
+    }
+    for (k, t) in &meta.text {
+        enc.add_ztxt_chunk(k.clone(), ascii_xml(t))?;
     }
     let mut wr = enc.write_header()?;
     wr.write_image_data(&bytes)?;
@@ -203,6 +208,7 @@ mod tests {
             flame_xml: Some("<flame name=\"žvaigždė\"/>".into()),
             samples: Some(12),
             error_rate: None,
+            text: vec![("ugnis_escape_view".into(), "kind = julia".into())],
         };
         let bytes = encode(&img, &meta).unwrap();
         let g = read_genome(&bytes, "x.png").unwrap();

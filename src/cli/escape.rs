@@ -1,0 +1,255 @@
+//! `ugnis escape`: render an escape-time fractal (or a saved view) to PNG or BMP.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result, bail};
+use clap::Args;
+
+use ugnis::escape::{C, Coloring, EscapeRenderer, Family, Fill, Sampling, Warp};
+use ugnis::io::escape_view::{self, EscapeDoc, family_from_name, parse_complex, parse_poly};
+use ugnis::io::{self, FileKind};
+use ugnis::noise::Fbm;
+
+#[derive(Args, Debug)]
+pub struct EscapeArgs {
+    /// mandelbrot, julia, multibrot, newton, logistic, cubic or warped-julia (optional with --view)
+    pub kind: Option<String>,
+    /// Start from a saved view file (.esc); the other options override it
+    #[arg(long)]
+    pub view: Option<PathBuf>,
+    /// Julia / warped-Julia parameter c as RE,IM
+    #[arg(long, allow_hyphen_values = true)]
+    pub c: Option<String>,
+    /// Power m of z^m + c (2–9)
+    #[arg(long)]
+    pub power: Option<u32>,
+    /// Newton polynomial, highest degree first (e.g. "1 0 0 -1" for z³ − 1)
+    #[arg(long, allow_hyphen_values = true)]
+    pub poly: Option<String>,
+    /// Logistic start z₀ as RE,IM (default 0.5,0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub z0: Option<String>,
+    /// Cubic z³ + z + p: p as RE,IM (default 0.171)
+    #[arg(long, allow_hyphen_values = true)]
+    pub p: Option<String>,
+    /// Centre of the view as X,Y
+    #[arg(long, allow_hyphen_values = true)]
+    pub center: Option<String>,
+    /// World width of the view
+    #[arg(long)]
+    pub width: Option<f64>,
+    /// Image size WxH
+    #[arg(long, value_parser = super::parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Maximum iterations
+    #[arg(long)]
+    pub max_iter: Option<u32>,
+    /// smooth, bands, distance, histogram or basins
+    #[arg(long)]
+    pub coloring: Option<String>,
+    /// A built-in gradient name or a .ugr/.map/image file
+    #[arg(long)]
+    pub gradient: Option<String>,
+    /// Gradient offset (fraction 0–1)
+    #[arg(long, allow_hyphen_values = true)]
+    pub offset: Option<f64>,
+    /// Gradient entries per iteration
+    #[arg(long)]
+    pub repeat: Option<f64>,
+    /// Escape radius (default 2, or 256 for smooth colourings)
+    #[arg(long)]
+    pub bailout: Option<f64>,
+    /// Mariani–Silver block filling instead of computing every pixel
+    #[arg(long)]
+    pub guess: bool,
+    /// Warped Julia: Möbius warp parameter α as RE,IM
+    #[arg(long, allow_hyphen_values = true)]
+    pub alpha: Option<String>,
+    /// Warped Julia: turbulence amount λ
+    #[arg(long)]
+    pub turbulence: Option<f64>,
+    /// Warped Julia: polar (seamless) sampling
+    #[arg(long, conflicts_with = "rect")]
+    pub polar: bool,
+    /// Warped Julia: rectangular sampling
+    #[arg(long)]
+    pub rect: bool,
+    /// Worker threads (default: all cores)
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// Also save the view as a .esc file
+    #[arg(long)]
+    pub save_view: Option<PathBuf>,
+    /// Output image (.png or .bmp)
+    #[arg(short, long)]
+    pub output: PathBuf,
+}
+
+fn complex(s: &Option<String>, what: &str) -> Result<Option<C>> {
+    match s {
+        None => Ok(None),
+        Some(v) => parse_complex(v)
+            .map(Some)
+            .with_context(|| format!("--{what} '{v}': expected RE,IM (e.g. -0.8,0.156)")),
+    }
+}
+
+/// Build the document from the arguments.
+pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
+    let mut doc = match (&a.view, &a.kind) {
+        (Some(v), _) => {
+            let p = escape_view::read(v)?;
+            for w in &p.warnings {
+                eprintln!("{w}");
+            }
+            p.value
+        }
+        (None, Some(k)) => EscapeDoc::new(family_from_name(k).with_context(|| {
+            format!("unknown kind '{k}': expected mandelbrot, julia, multibrot, newton, logistic, cubic or warped-julia")
+        })?),
+        (None, None) => bail!("give a KIND (e.g. mandelbrot) or --view FILE"),
+    };
+    if let (Some(_), Some(k)) = (&a.view, &a.kind)
+        && family_from_name(k).map(|f| f.name()) != Some(doc.params.family.name())
+    {
+        doc.params.family = family_from_name(k).with_context(|| format!("unknown kind '{k}'"))?;
+    }
+    if let Some((w, h)) = a.size {
+        let width = doc.world_width();
+        doc.width = w;
+        doc.height = h;
+        doc.view.half_height = width / 2.0 * h as f64 / w as f64;
+    }
+    let c = complex(&a.c, "c")?;
+    match &mut doc.params.family {
+        Family::Mandelbrot { power } => {
+            if let Some(p) = a.power {
+                *power = p;
+            }
+        }
+        Family::Julia { power, c: jc } => {
+            if let Some(p) = a.power {
+                *power = p;
+            }
+            if let Some(v) = c {
+                *jc = v;
+            }
+        }
+        Family::Newton { coeffs } => {
+            if let Some(s) = &a.poly {
+                *coeffs = parse_poly(s).with_context(|| {
+                    format!("--poly '{s}': expected 2–33 coefficients, highest degree first, e.g. \"1 0 0 -1\"")
+                })?;
+            }
+        }
+        Family::Logistic { z0, .. } => {
+            if let Some(v) = complex(&a.z0, "z0")? {
+                *z0 = v;
+            }
+        }
+        Family::Cubic { p } => {
+            if let Some(v) = complex(&a.p, "p")? {
+                *p = v;
+            }
+        }
+        Family::WarpedJulia(w) => {
+            let sampling = if a.polar {
+                Sampling::Polar { radius: 1.0 }
+            } else if a.rect {
+                Sampling::Rect { scale: 3.0 }
+            } else {
+                w.sampling
+            };
+            *w = Warp::new(
+                c.unwrap_or(w.c),
+                complex(&a.alpha, "alpha")?.unwrap_or(w.alpha),
+                a.turbulence.unwrap_or(w.lambda),
+                if a.turbulence.is_some() && w.lambda == 0.0 {
+                    Fbm::default()
+                } else {
+                    w.fbm
+                },
+                sampling,
+                w.zero_mean,
+            )?;
+        }
+    }
+    if let Some(v) = complex(&a.center, "center")? {
+        doc.view.center = [v.re, v.im];
+    }
+    if let Some(wd) = a.width {
+        if !(wd > 0.0 && wd.is_finite()) {
+            bail!("--width {wd} must be positive");
+        }
+        doc.view.half_height = wd / 2.0 * doc.height as f64 / doc.width as f64;
+    }
+    if let Some(n) = a.max_iter {
+        doc.params.max_iter = n;
+    }
+    if let Some(s) = &a.coloring {
+        doc.params.coloring = Coloring::from_name(s).with_context(|| {
+            format!("--coloring '{s}': expected smooth, bands, distance, histogram or basins")
+        })?;
+    }
+    if let Some(g) = &a.gradient {
+        doc.params.palette.gradient =
+            escape_view::resolve_gradient(g, None).map_err(|e| anyhow::anyhow!(e))?;
+        doc.gradient_source = g.clone();
+    }
+    if let Some(o) = a.offset {
+        doc.params.palette.offset = o;
+    }
+    if let Some(r) = a.repeat {
+        if !r.is_finite() || r <= 0.0 {
+            bail!("--repeat {r} must be positive");
+        }
+        doc.params.palette.repeat = r;
+    }
+    if let Some(b) = a.bailout {
+        if !(b > 0.0 && b.is_finite()) {
+            bail!("--bailout {b} must be positive");
+        }
+        doc.params.bailout = Some(b);
+    }
+    if a.guess {
+        doc.params.fill = Fill::Guess;
+    }
+    Ok(doc)
+}
+
+pub fn run(a: EscapeArgs) -> Result<()> {
+    let out = a.output.clone();
+    let is_bmp = io::kind_of(&out) == FileKind::Bmp;
+    if !is_bmp && io::kind_of(&out) != FileKind::Png {
+        bail!("output '{}' must end in .png or .bmp", out.display());
+    }
+    let doc = doc_from_args(&a)?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(a.threads)
+        .build()
+        .context("cannot start worker threads")?;
+    let img = pool.install(|| -> Result<image::RgbImage> {
+        if doc.params.fill == Fill::Exact {
+            Ok(ugnis::escape::render(&doc.params, doc.view, doc.width, doc.height)?.0)
+        } else {
+            let mut r = EscapeRenderer::new(&doc.params, doc.view, doc.width, doc.height)?;
+            r.run_all(&std::sync::atomic::AtomicBool::new(false));
+            Ok(r.image())
+        }
+    })?;
+    let img = image::DynamicImage::ImageRgb8(img);
+    if is_bmp {
+        io::bmp::save(&out, &img).with_context(|| format!("cannot write '{}'", out.display()))?;
+    } else {
+        let meta = io::png::PngMeta {
+            text: vec![("ugnis_escape_view".into(), escape_view::write(&doc))],
+            ..Default::default()
+        };
+        io::png::save(&out, &img, &meta)
+            .with_context(|| format!("cannot write '{}'", out.display()))?;
+    }
+    if let Some(v) = &a.save_view {
+        escape_view::save(v, &doc).with_context(|| format!("cannot write '{}'", v.display()))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,701 @@
+//! Iteration families (escape.md §2) and the scalar per-point iteration.
+
+use super::complex::C;
+use super::warp::Warp;
+
+/// What is iterated.
+#[derive(Clone, Debug, PartialEq)]
+// A handful of these exist at a time; boxing the warp would only add indirection.
+#[allow(clippy::large_enum_variant)]
+pub enum Family {
+    /// z₀ = 0, z ← z^m + c, c = pixel (m = 2: the Mandelbrot set).
+    Mandelbrot { power: u32 },
+    /// z₀ = pixel, z ← z^m + c.
+    Julia { power: u32, c: C },
+    /// Newton's method for a polynomial given by its coefficients, highest degree first.
+    Newton { coeffs: Vec<C> },
+    /// Parameter plane of λz(1 − z) (or Köse's λz(z − 1)), λ = pixel, from z₀.
+    Logistic { z0: C, kose: bool },
+    /// Julia set of z³ + z + p.
+    Cubic { p: C },
+    /// Warped quadratic Julia texture (Borowicz).
+    WarpedJulia(Warp),
+}
+
+impl Family {
+    pub fn name(&self) -> &'static str {
+        match self {
+            Family::Mandelbrot { power: 2 } => "mandelbrot",
+            Family::Mandelbrot { .. } => "multibrot",
+            Family::Julia { .. } => "julia",
+            Family::Newton { .. } => "newton",
+            Family::Logistic { .. } => "logistic",
+            Family::Cubic { .. } => "cubic",
+            Family::WarpedJulia(_) => "warped-julia",
+        }
+    }
+
+    /// Degree of the map (for smooth colouring).
+    pub fn degree(&self) -> f64 {
+        match self {
+            Family::Mandelbrot { power } | Family::Julia { power, .. } => *power as f64,
+            Family::Newton { coeffs } => (coeffs.len().max(2) - 1) as f64,
+            Family::Logistic { .. } | Family::WarpedJulia(_) => 2.0,
+            Family::Cubic { .. } => 3.0,
+        }
+    }
+
+    /// Default escape radius for integer colouring and for smooth/distance colouring
+    /// (escape.md §1, §7.4).
+    pub fn default_bailout(&self, smooth: bool) -> f64 {
+        match self {
+            Family::Logistic { kose: false, .. } => 1e6,
+            Family::WarpedJulia(_) | Family::Cubic { .. } => {
+                if smooth {
+                    256.0
+                } else {
+                    2.0
+                }
+            }
+            _ => {
+                if smooth {
+                    256.0
+                } else {
+                    2.0
+                }
+            }
+        }
+    }
+
+    /// The default view: centre and half-height.
+    pub fn default_view(&self) -> ([f64; 2], f64) {
+        match self {
+            Family::Mandelbrot { power: 2 } => ([-0.7, 0.0], 1.25),
+            Family::Mandelbrot { .. } => ([0.0, 0.0], 1.4),
+            Family::Julia { .. } => ([0.0, 0.0], 1.5),
+            Family::Newton { .. } => ([0.0, 0.0], 2.0),
+            Family::Logistic { kose: false, .. } => ([1.0, 0.0], 2.0),
+            Family::Logistic { kose: true, .. } => ([0.085, 1.073], 1.5),
+            Family::Cubic { .. } => ([0.0, 0.0], 2.1),
+            Family::WarpedJulia(_) => ([0.5, 0.5], 0.5),
+        }
+    }
+
+    /// True when the symmetric quadratic lane engine applies.
+    pub fn is_quadratic(&self) -> bool {
+        matches!(
+            self,
+            Family::Mandelbrot { power: 2 }
+                | Family::Julia { power: 2, .. }
+                | Family::WarpedJulia(_)
+        )
+    }
+}
+
+/// The result for one point.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Sample {
+    /// Iterations done (the escape iteration for escaped points; Newton steps).
+    pub n: u32,
+    /// Did not escape (or, for Newton, did not converge) within the limit.
+    pub inside: bool,
+    /// Normalised (smooth) iteration count.
+    pub nu: f64,
+    /// Exterior distance estimate b in world units (0 when not computed).
+    pub de: f32,
+    /// Newton: index of the root reached (255: none).
+    pub root: u8,
+}
+
+impl Sample {
+    pub fn inside(max_iter: u32) -> Sample {
+        Sample {
+            n: max_iter,
+            inside: true,
+            nu: max_iter as f64,
+            de: 0.0,
+            root: 255,
+        }
+    }
+
+    pub fn escaped_at_zero() -> Sample {
+        Sample {
+            n: 0,
+            inside: false,
+            nu: 0.0,
+            de: 0.0,
+            root: 255,
+        }
+    }
+}
+
+/// ν = n + 1 − ln(ln|z|)/ln m (escape.md §4.2).
+pub fn smooth_count(n: u32, z_norm2: f64, degree: f64) -> f64 {
+    let ln_abs = 0.5 * z_norm2.ln();
+    if !(ln_abs > 0.0) || !ln_abs.is_finite() {
+        return n as f64;
+    }
+    n as f64 + 1.0 - ln_abs.ln() / degree.ln()
+}
+
+/// b = 2|z| ln|z| / |z′| (escape.md §4.3).
+pub fn distance_estimate(z: C, dz: C) -> f64 {
+    let a = z.abs();
+    2.0 * a * a.ln() / dz.abs()
+}
+
+/// Iteration limits and tests for one render.
+#[derive(Clone, Copy, Debug)]
+pub struct IterSettings {
+    pub max_iter: u32,
+    /// R², compared strictly (|z|² > R²) except for the warped textures (|z| ≥ 2).
+    pub bailout2: f64,
+    pub strict: bool,
+    /// Periodicity tolerance (0: off).
+    pub period_tol: f64,
+    pub want_de: bool,
+}
+
+/// Newton's method settings and the polynomial's roots.
+#[derive(Clone, Debug)]
+pub struct NewtonSystem {
+    pub coeffs: Vec<C>,
+    pub deriv: Vec<C>,
+    pub roots: Vec<C>,
+}
+
+/// g(z) and g′(z) by Horner's scheme (coefficients highest degree first).
+pub fn horner(coeffs: &[C], z: C) -> (C, C) {
+    let mut g = C::ZERO;
+    let mut d = C::ZERO;
+    for &a in coeffs {
+        d = d * z + g;
+        g = g * z + a;
+    }
+    (g, d)
+}
+
+/// All roots of a polynomial (highest degree first) by the Aberth–Ehrlich method.
+pub fn polynomial_roots(coeffs: &[C]) -> Vec<C> {
+    // Drop leading zeros.
+    let first = coeffs
+        .iter()
+        .position(|c| c.norm2() > 0.0)
+        .unwrap_or(coeffs.len());
+    let p = &coeffs[first..];
+    let deg = p.len().saturating_sub(1);
+    if deg == 0 {
+        return Vec::new();
+    }
+    let lead = p[0];
+    let monic: Vec<C> = p.iter().map(|&a| a / lead).collect();
+    // Cauchy bound for the starting circle.
+    let bound = 1.0 + monic[1..].iter().map(|a| a.abs()).fold(0.0, f64::max);
+    let mut z: Vec<C> = (0..deg)
+        .map(|k| {
+            C::from_polar(
+                0.5 * bound,
+                0.4 + 2.0 * std::f64::consts::PI * k as f64 / deg as f64,
+            )
+        })
+        .collect();
+    for _ in 0..500 {
+        let mut moved = 0.0f64;
+        for i in 0..deg {
+            let (g, d) = horner(&monic, z[i]);
+            if g.norm2() == 0.0 {
+                continue;
+            }
+            let ratio = g / d;
+            let mut s = C::ZERO;
+            for j in 0..deg {
+                if j != i {
+                    s = s + C::ONE / (z[i] - z[j]);
+                }
+            }
+            let w = ratio / (C::ONE - ratio * s);
+            if w.is_finite() {
+                z[i] = z[i] - w;
+                moved = moved.max(w.abs());
+            }
+        }
+        if moved < 1e-15 {
+            break;
+        }
+    }
+    z
+}
+
+impl NewtonSystem {
+    pub fn new(coeffs: &[C]) -> NewtonSystem {
+        let first = coeffs
+            .iter()
+            .position(|c| c.norm2() > 0.0)
+            .unwrap_or(coeffs.len());
+        let coeffs = coeffs[first..].to_vec();
+        let deg = coeffs.len().saturating_sub(1);
+        let deriv = coeffs[..deg]
+            .iter()
+            .enumerate()
+            .map(|(k, a)| *a * (deg - k) as f64)
+            .collect();
+        let roots = polynomial_roots(&coeffs);
+        NewtonSystem {
+            coeffs,
+            deriv,
+            roots,
+        }
+    }
+
+    /// One Newton step N(z) = z − g/g′ (None where g′ = 0 or a value is not finite).
+    pub fn step(&self, z: C) -> Option<C> {
+        let (g, d) = horner(&self.coeffs, z);
+        if d.norm2() == 0.0 {
+            return None;
+        }
+        let n = z - g / d;
+        n.is_finite().then_some(n)
+    }
+
+    /// Iterate from z₀ until |Δz|² < 1e-10 (escape.md §2.6).
+    pub fn iterate(&self, z0: C, max_iter: u32) -> Sample {
+        let mut z = z0;
+        for n in 1..=max_iter {
+            let Some(next) = self.step(z) else {
+                return Sample::inside(max_iter);
+            };
+            let done = (next - z).norm2() < 1e-10;
+            z = next;
+            if done {
+                let root = self
+                    .roots
+                    .iter()
+                    .enumerate()
+                    .map(|(k, r)| (k, (*r - z).norm2()))
+                    .min_by(|a, b| a.1.total_cmp(&b.1))
+                    .filter(|(_, d)| *d < 1e-6)
+                    .map_or(255, |(k, _)| k.min(254) as u8);
+                return Sample {
+                    n,
+                    inside: false,
+                    nu: n as f64,
+                    de: 0.0,
+                    root,
+                };
+            }
+        }
+        Sample::inside(max_iter)
+    }
+}
+
+/// Main cardioid and period-2 bulb of the Mandelbrot set.
+pub fn in_cardioid_or_bulb(x: f64, y: f64) -> bool {
+    let xq = x - 0.25;
+    let q = xq * xq + y * y;
+    q * (q + xq) <= 0.25 * y * y || (x + 1.0) * (x + 1.0) + y * y <= 0.0625
+}
+
+/// Iterate one point of a polynomial family (everything except Newton) in scalar code:
+/// returns the sample. `z0`, `c` as the family defines them; `deg` for smooth colouring.
+/// `step` maps (z, c) → z′ and `dstep` (z, dz, c) → dz′ for distance estimation.
+fn iterate_poly(
+    s: &IterSettings,
+    mut z: C,
+    c: C,
+    mut dz: C,
+    deg: f64,
+    step: impl Fn(C, C) -> C,
+    dstep: impl Fn(C, C) -> C,
+) -> Sample {
+    let (mut saved, mut next_save) = (z, 2u32);
+    for n in 1..=s.max_iter {
+        if s.want_de {
+            dz = dstep(z, dz);
+        }
+        z = step(z, c);
+        let r2 = z.norm2();
+        let escaped = if s.strict {
+            !(r2 <= s.bailout2)
+        } else {
+            !(r2 < s.bailout2)
+        };
+        if escaped {
+            return Sample {
+                n,
+                inside: false,
+                nu: smooth_count(n, r2, deg),
+                de: if s.want_de {
+                    distance_estimate(z, dz) as f32
+                } else {
+                    0.0
+                },
+                root: 255,
+            };
+        }
+        if s.period_tol > 0.0 {
+            if n == next_save {
+                saved = z;
+                next_save = next_save.saturating_mul(2);
+            } else if (z.re - saved.re).abs() < s.period_tol
+                && (z.im - saved.im).abs() < s.period_tol
+            {
+                return Sample::inside(s.max_iter);
+            }
+        }
+    }
+    Sample::inside(s.max_iter)
+}
+
+/// z^m with m ≥ 1.
+fn pow(z: C, m: u32) -> C {
+    match m {
+        2 => z * z,
+        3 => z * z * z,
+        _ => z.powi(m),
+    }
+}
+
+/// The scalar iteration of a point for every family but Newton and the warped textures
+/// (whose starting values the renderer computes). `point` is the pixel's complex value.
+pub fn iterate_point(family: &Family, point: C, s: &IterSettings) -> Sample {
+    match family {
+        Family::Mandelbrot { power } => {
+            let m = *power;
+            if m == 2 && in_cardioid_or_bulb(point.re, point.im) {
+                return Sample::inside(s.max_iter);
+            }
+            iterate_poly(
+                s,
+                C::ZERO,
+                point,
+                C::ZERO,
+                m as f64,
+                |z, c| pow(z, m) + c,
+                |z, dz| pow(z, m - 1) * dz * m as f64 + C::ONE,
+            )
+        }
+        Family::Julia { power, c } => {
+            let m = *power;
+            iterate_poly(
+                s,
+                point,
+                *c,
+                C::ONE,
+                m as f64,
+                |z, c| pow(z, m) + c,
+                |z, dz| pow(z, m - 1) * dz * m as f64,
+            )
+        }
+        Family::Logistic { z0, kose } => {
+            let sign = if *kose { -1.0 } else { 1.0 };
+            // f = s·λ z (1 − z); d/dλ: dz′ = s·(z(1 − z) + λ(1 − 2z) dz).
+            let lam = point;
+            iterate_poly(
+                s,
+                *z0,
+                lam,
+                C::ZERO,
+                2.0,
+                move |z, l| l * z * (C::ONE - z) * sign,
+                move |z, dz| (z * (C::ONE - z) + lam * (C::ONE - z * 2.0) * dz) * sign,
+            )
+        }
+        Family::Cubic { p } => iterate_poly(
+            s,
+            point,
+            *p,
+            C::ONE,
+            3.0,
+            |z, p| z * z * z + z + p,
+            |z, dz| (z * z * 3.0 + C::ONE) * dz,
+        ),
+        Family::Newton { coeffs } => NewtonSystem::new(coeffs).iterate(point, s.max_iter),
+        Family::WarpedJulia(w) => {
+            let z0 = w.start(point);
+            if !z0.is_finite() {
+                return Sample::escaped_at_zero();
+            }
+            iterate_quadratic_scalar(z0, w.c, s)
+        }
+    }
+}
+
+/// z ← z² + c from z₀ (the warped textures and the lane engine's reference).
+pub fn iterate_quadratic_scalar(z0: C, c: C, s: &IterSettings) -> Sample {
+    iterate_poly(
+        s,
+        z0,
+        c,
+        C::ONE,
+        2.0,
+        |z, c| {
+            // The same operation order as the lane engine: (x + x)·y + cy.
+            C::new(
+                z.re * z.re - z.im * z.im + c.re,
+                (z.re + z.re) * z.im + c.im,
+            )
+        },
+        |z, dz| z * dz * 2.0,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn settings(max: u32, r: f64) -> IterSettings {
+        IterSettings {
+            max_iter: max,
+            bailout2: r * r,
+            strict: true,
+            period_tol: 0.0,
+            want_de: false,
+        }
+    }
+
+    fn mandel(c: C, max: u32, r: f64) -> Sample {
+        iterate_point(&Family::Mandelbrot { power: 2 }, c, &settings(max, r))
+    }
+
+    #[test]
+    fn mandelbrot_oracles_7_1() {
+        let esc = |re, im| {
+            let s = mandel(C::new(re, im), 10_000, 2.0);
+            (!s.inside).then_some(s.n)
+        };
+        assert_eq!(esc(1.0, 0.0), Some(3));
+        assert_eq!(esc(2.0, 0.0), Some(2));
+        assert_eq!(esc(-2.0, 0.0), None, "strict inequality");
+        for (re, im) in [
+            (0.0, 0.0),
+            (-1.0, 0.0),
+            (0.0, 1.0),
+            (0.0, -1.0),
+            (0.25, 0.0),
+            (-0.75, 0.0),
+        ] {
+            assert_eq!(esc(re, im), None, "{re}+{im}i is bounded");
+        }
+        assert_eq!(esc(0.2, 0.75), Some(6));
+        assert_eq!(esc(0.0, 0.64), Some(55));
+        assert_eq!(esc(0.0, -0.66), Some(17));
+        assert_eq!(esc(0.26, 0.0), Some(30));
+        assert_eq!(esc(2.1, 0.3), Some(1));
+        assert_eq!(esc(-1.5, -1.5), Some(1));
+        // Köse z² − μ: μ = −1 is c = 1.
+        assert_eq!(esc(1.0, 0.0), Some(3));
+    }
+
+    #[test]
+    fn smooth_and_distance_oracles_7_3() {
+        for (c, r, n, nu) in [
+            (C::new(1.0, 0.0), 2.0, 3, 3.313443),
+            (C::new(1.0, 0.0), 1000.0, 6, 3.295643),
+            (C::new(1.0, 0.0), 1e6, 7, 3.295643),
+            (C::new(0.2, 0.75), 2.0, 6, 6.588449),
+            (C::new(0.2, 0.75), 1000.0, 9, 6.617342),
+            (C::new(-0.75, 0.1), 2.0, 33, 34.007382),
+            (C::new(-0.75, 0.1), 1000.0, 36, 33.953334),
+        ] {
+            let s = mandel(c, 1000, r);
+            assert_eq!(s.n, n, "{c:?} R={r}");
+            assert!((s.nu - nu).abs() < 5e-7, "{c:?} R={r}: ν {} vs {nu}", s.nu);
+        }
+        let de = |f: &Family, p: C| {
+            let s = IterSettings {
+                want_de: true,
+                ..settings(10_000, 1e10)
+            };
+            iterate_point(f, p, &s).de as f64
+        };
+        let m = Family::Mandelbrot { power: 2 };
+        for (c, b) in [
+            (C::new(1.0, 0.0), 1.295310),
+            (C::new(2.0, 0.0), 4.538240),
+            (C::new(-2.5, 0.0), 1.910552),
+            (C::new(0.0, 1.1), 0.182758),
+            (C::new(-0.75, 0.1), 0.001126),
+        ] {
+            let got = de(&m, c);
+            assert!((got - b).abs() < 2e-6 * b.max(1.0), "{c:?}: {got} vs {b}");
+        }
+        let j0 = Family::Julia {
+            power: 2,
+            c: C::ZERO,
+        };
+        assert!((de(&j0, C::new(2.0, 0.0)) - 4.0 * 2f64.ln()).abs() < 1e-5);
+        let j1 = Family::Julia {
+            power: 2,
+            c: C::new(-1.0, 0.0),
+        };
+        assert!((de(&j1, C::new(2.0, 0.0)) - 1.359082).abs() < 1e-5);
+    }
+
+    #[test]
+    fn other_families_7_4() {
+        let cubic = Family::Cubic {
+            p: C::new(0.171, 0.0),
+        };
+        let esc = |f: &Family, z: C, r: f64| {
+            let s = iterate_point(f, z, &settings(5000, r));
+            (!s.inside).then_some(s.n)
+        };
+        assert_eq!(esc(&cubic, C::ZERO, 2.0), Some(6));
+        assert_eq!(esc(&cubic, C::ONE, 2.0), Some(1));
+        assert_eq!(esc(&cubic, C::new(0.5, 0.0), 2.0), Some(3));
+        assert_eq!(esc(&cubic, C::new(-0.5, 0.0), 2.0), Some(10));
+        assert_eq!(esc(&cubic, C::new(0.2, 0.0), 2.0), Some(4));
+        assert_eq!(esc(&cubic, C::new(0.0, 0.1), 2.0), Some(6));
+        let k = 1.0 / 3f64.sqrt();
+        assert_eq!(esc(&cubic, C::new(0.0, k), 2.0), None);
+        assert_eq!(esc(&cubic, C::new(0.0, -k), 2.0), None);
+
+        let logistic = Family::Logistic {
+            z0: C::new(0.5, 0.0),
+            kose: false,
+        };
+        for l in [1.0, 2.0, 3.0, 3.2, 4.0] {
+            assert_eq!(esc(&logistic, C::new(l, 0.0), 1e6), None, "λ = {l}");
+        }
+        assert_eq!(esc(&logistic, C::new(4.1, 0.0), 1e6), Some(7));
+        assert_eq!(esc(&logistic, C::new(1.0, 1.0), 1e6), Some(9));
+        let kose = Family::Logistic {
+            z0: C::new(0.25, 0.75),
+            kose: true,
+        };
+        assert_eq!(esc(&kose, C::new(1.0, 0.0), 2.0), Some(4));
+        assert_eq!(esc(&kose, C::new(2.0, 0.0), 2.0), Some(2));
+        assert_eq!(esc(&kose, C::new(3.0, 0.0), 2.0), Some(1));
+        assert_eq!(esc(&kose, C::new(-1.0, 0.0), 2.0), None);
+        assert_eq!(esc(&kose, C::new(0.5, 0.5), 2.0), None);
+        // Conjugacy w = λ(½ − z): λ(½ − f(z)) = w² + c(λ), c = λ/2 − λ²/4.
+        let (l, z) = (C::new(2.7, 0.3), C::new(0.3, 0.1));
+        let f = l * z * (C::ONE - z);
+        let w = l * (C::new(0.5, 0.0) - z);
+        let c = l * 0.5 - l * l * 0.25;
+        let lhs = l * (C::new(0.5, 0.0) - f);
+        let rhs = w * w + c;
+        assert!((lhs - rhs).abs() < 1e-12);
+        assert!((rhs - C::new(-0.1692, -0.4944)).abs() < 1e-12);
+        // Higher powers: z⁴ + c Mandelbrot has 3-fold symmetry.
+        let m4 = Family::Mandelbrot { power: 4 };
+        let rot = C::from_polar(1.0, 2.0 * std::f64::consts::PI / 3.0);
+        for p in [C::new(0.4, 0.3), C::new(-0.2, 0.9), C::new(0.7, -0.1)] {
+            let a = iterate_point(&m4, p, &settings(200, 2.0));
+            let b = iterate_point(&m4, p * rot, &settings(200, 2.0));
+            assert_eq!(a.n, b.n, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn newton_oracles_7_5() {
+        let cube = NewtonSystem::new(&[C::ONE, C::ZERO, C::ZERO, C::new(-1.0, 0.0)]);
+        let mut z = C::new(2.0, 0.0);
+        for want in [17.0 / 12.0, 1.110534, 1.010637, 1.000112, 1.0000000124] {
+            z = cube.step(z).unwrap();
+            assert!(
+                (z.re - want).abs() < 5e-7 && z.im.abs() < 1e-15,
+                "{z:?} vs {want}"
+            );
+        }
+        let s = cube.iterate(C::new(2.0, 0.0), 100);
+        assert_eq!(s.n, 6);
+        let root_of = |s: Sample| cube.roots[s.root as usize];
+        assert!((root_of(s) - C::ONE).abs() < 1e-9);
+        let w = C::new(-0.5, 0.866_025_403_784_438_6);
+        for (z0, target, n) in [
+            (C::new(-1.0, 1.0), w, 5),
+            (C::new(-1.0, -1.0), w.conj(), 5),
+            (C::new(0.0, 0.5), w, 9),
+            (C::new(-2.0, 0.0), C::ONE, 10),
+            (C::new(1.0, 1.0), C::ONE, 8),
+        ] {
+            let s = cube.iterate(z0, 100);
+            assert_eq!(s.n, n, "from {z0:?}");
+            assert!((root_of(s) - target).abs() < 1e-6, "from {z0:?}");
+        }
+        // Real form at (0.3, 0.7).
+        let (x, y) = (0.3f64, 0.7f64);
+        let r2 = x * x + y * y;
+        let xr = 2.0 * x / 3.0 + (x * x - y * y) / (3.0 * r2 * r2);
+        let yr = 2.0 * y / 3.0 - 2.0 * x * y / (3.0 * r2 * r2);
+        let n = cube.step(C::new(x, y)).unwrap();
+        assert!((n.re - xr).abs() < 1e-12 && (n.im - yr).abs() < 1e-12);
+        assert!((n.re + 0.196354).abs() < 1e-6 && (n.im - 0.050495).abs() < 1e-6);
+        // z⁴ − 1 from 2.
+        let quart = NewtonSystem::new(&[C::ONE, C::ZERO, C::ZERO, C::ZERO, C::new(-1.0, 0.0)]);
+        let mut z = C::new(2.0, 0.0);
+        for want in [1.53125, 1.218068, 1.051884, 1.003714, 1.000021] {
+            z = quart.step(z).unwrap();
+            assert!((z.re - want).abs() < 5e-7, "{z:?} vs {want}");
+        }
+        // The Urbonavičius septic.
+        let r = |v: f64| C::new(v, 0.0);
+        let sep = NewtonSystem::new(&[
+            r(1.0),
+            r(0.0),
+            r(-3.0),
+            r(0.0),
+            r(6.0),
+            r(0.0),
+            r(-3.0),
+            r(3.0),
+        ]);
+        assert!((sep.step(C::ZERO).unwrap() - C::ONE).abs() < 1e-15);
+        assert!((sep.step(C::ONE).unwrap() - r(3.0 / 7.0)).abs() < 1e-15);
+        for want in [
+            C::new(-1.208810, 0.0),
+            C::new(-1.226405, 0.774499),
+            C::new(-1.226405, -0.774499),
+            C::new(1.367403, 0.647038),
+            C::new(1.367403, -0.647038),
+            C::new(0.463407, 0.548372),
+            C::new(0.463407, -0.548372),
+        ] {
+            assert!(
+                sep.roots.iter().any(|z| (*z - want).abs() < 2e-6),
+                "root {want:?} missing from {:?}",
+                sep.roots
+            );
+        }
+    }
+
+    #[test]
+    fn newton_basins_turn_with_the_roots() {
+        // basin(e^{2πi/3} z) = basin(z) + 1 (mod 3) in the order of the roots.
+        let cube = NewtonSystem::new(&[C::ONE, C::ZERO, C::ZERO, C::new(-1.0, 0.0)]);
+        let rot = C::from_polar(1.0, 2.0 * std::f64::consts::PI / 3.0);
+        let index_of = |z: C| {
+            cube.roots
+                .iter()
+                .position(|r| (*r - z).abs() < 1e-6)
+                .unwrap()
+        };
+        let one = index_of(C::ONE);
+        let next = index_of(rot);
+        let mut checked = 0;
+        for i in -20..=20 {
+            for j in -20..=20 {
+                let z = C::new(i as f64 * 0.0731 + 0.013, j as f64 * 0.0689 - 0.007);
+                let a = cube.iterate(z, 200);
+                let b = cube.iterate(z * rot, 200);
+                if a.root == 255 || b.root == 255 {
+                    continue;
+                }
+                let ra = cube.roots[a.root as usize];
+                let rb = cube.roots[b.root as usize];
+                // The basin of z·ω is the root ω·(root of z).
+                if (ra * rot - rb).abs() < 1e-6 {
+                    checked += 1;
+                } else {
+                    // Points on the Julia set itself may go either way: skip them.
+                    let near = cube.iterate(z + C::new(1e-3, 0.0), 200).root != a.root
+                        || cube.iterate(z - C::new(1e-3, 0.0), 200).root != a.root;
+                    assert!(near, "z = {z:?}: basins {} and {}", a.root, b.root);
+                }
+            }
+        }
+        assert!(checked > 1500, "{checked}");
+        assert_ne!(one, next);
+    }
+}

@@ -1,0 +1,20 @@
+//! Escape-time fractals (escape.md): Mandelbrot, Julia, z^m + c, Newton, logistic, the cubic
+//! z³ + z + p, and the Borowicz warped-Julia textures; colouring; progressive parallel
+//! rendering with a vectorised lane engine.
+
+// Escape tests are written `!(r2 <= bailout²)` on purpose: a NaN (an overflowed orbit) must
+// count as escaped, which `r2 > bailout²` would not do.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod color;
+pub mod complex;
+pub mod family;
+pub mod lanes;
+pub mod render;
+pub mod warp;
+
+pub use color::{Coloring, Palette};
+pub use complex::C;
+pub use family::{Family, Sample};
+pub use render::{EscapeError, EscapeParams, EscapeRenderer, Fill, View, render};
+pub use warp::{Preset, Sampling, Warp};

@@ -1,0 +1,783 @@
+//! Rendering escape-time views: the view geometry (escape.md §1), parallel rows, the lane
+//! engine for quadratic families, progressive coarse-to-fine passes, optional Mariani–Silver
+//! block filling, and colouring into an image.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use image::RgbImage;
+use rayon::prelude::*;
+
+use super::color::{Coloring, Colorizer, CountHistogram, Palette};
+use super::complex::C;
+use super::family::{
+    Family, IterSettings, NewtonSystem, Sample, in_cardioid_or_bulb, iterate_point,
+    iterate_quadratic_scalar,
+};
+use super::lanes::{self, Start};
+
+/// The visible rectangle: centre and half-height (the width follows the image's aspect).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    pub center: [f64; 2],
+    pub half_height: f64,
+}
+
+impl View {
+    /// A view from Fractint-style corners.
+    pub fn from_corners(xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> View {
+        View {
+            center: [(xmin + xmax) / 2.0, (ymin + ymax) / 2.0],
+            half_height: (ymax - ymin).abs() / 2.0,
+        }
+    }
+
+    /// World point of pixel (i, j), rows from the top; the imaginary axis points up.
+    pub fn world_from_pixel(&self, i: f64, j: f64, w: u32, h: u32) -> C {
+        let (w, h) = (w as f64, h as f64);
+        C::new(
+            self.center[0] + (2.0 * (i + 0.5) / w - 1.0) * self.half_height * w / h,
+            self.center[1] - (2.0 * (j + 0.5) / h - 1.0) * self.half_height,
+        )
+    }
+
+    /// Pixel coordinates (continuous, the pixel's centre at i + 0.5) of a world point.
+    pub fn pixel_from_world(&self, p: C, w: u32, h: u32) -> [f64; 2] {
+        let (wf, hf) = (w as f64, h as f64);
+        let i = ((p.re - self.center[0]) / (self.half_height * wf / hf) + 1.0) * wf / 2.0;
+        let j = (1.0 - (p.im - self.center[1]) / self.half_height) * hf / 2.0;
+        [i, j]
+    }
+
+    /// World size of one pixel.
+    pub fn pixel_size(&self, h: u32) -> f64 {
+        2.0 * self.half_height / h.max(1) as f64
+    }
+
+    /// The view zoomed by `factor` (> 1 zooms in) keeping the world point under pixel
+    /// (i, j) fixed.
+    pub fn zoomed_at(&self, i: f64, j: f64, w: u32, h: u32, factor: f64) -> View {
+        let p = self.world_from_pixel(i - 0.5, j - 0.5, w, h);
+        let hh = self.half_height / factor;
+        View {
+            center: [
+                p.re + (self.center[0] - p.re) / factor,
+                p.im + (self.center[1] - p.im) / factor,
+            ],
+            half_height: hh,
+        }
+    }
+}
+
+/// Block filling.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Fill {
+    /// Every pixel computed (the default).
+    #[default]
+    Exact,
+    /// Mariani–Silver rectangles: filled when their whole border agrees (not for Newton).
+    Guess,
+}
+
+/// Everything that defines an escape-time picture except its size and view.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EscapeParams {
+    pub family: Family,
+    pub max_iter: u32,
+    pub coloring: Coloring,
+    /// Escape radius; None: the family's default for the colouring.
+    pub bailout: Option<f64>,
+    pub periodicity: bool,
+    pub fill: Fill,
+    pub palette: Palette,
+}
+
+impl EscapeParams {
+    pub fn new(family: Family) -> EscapeParams {
+        let coloring = if matches!(family, Family::Newton { .. }) {
+            Coloring::Basins
+        } else if matches!(family, Family::WarpedJulia(_)) {
+            Coloring::Bands
+        } else {
+            Coloring::Smooth
+        };
+        // Four gradient entries per iteration spread the outside over the whole gradient
+        // (with one, the first few dozen iterations use a fifth of it).
+        let repeat = if coloring == Coloring::Basins {
+            1.0
+        } else {
+            4.0
+        };
+        EscapeParams {
+            family,
+            max_iter: 256,
+            coloring,
+            bailout: None,
+            periodicity: true,
+            fill: Fill::Exact,
+            palette: Palette {
+                repeat,
+                ..Palette::default()
+            },
+        }
+    }
+
+    pub fn bailout(&self) -> f64 {
+        self.bailout
+            .unwrap_or_else(|| self.family.default_bailout(self.coloring.smooth()))
+    }
+}
+
+/// Why a view cannot be rendered.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EscapeError {
+    #[error(
+        "zoomed in to the limit of 64-bit floating point (pixel {pixel:.3e} at |centre| {scale:.3e}); \
+         zoom out, or use a deep-zoom program for this depth"
+    )]
+    PrecisionLimit { pixel: f64, scale: f64 },
+    #[error("image size {0}x{1} must be between 1x1 and 30000x30000")]
+    BadSize(u32, u32),
+    #[error("{0}")]
+    Settings(String),
+}
+
+/// Check a view against the f64 precision limit (escape.md §1).
+pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
+    if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
+        return Err(EscapeError::BadSize(w, h));
+    }
+    let pixel = view.pixel_size(h);
+    let scale = view.center[0].abs().max(view.center[1].abs()).max(1.0);
+    if !(pixel >= 1e-13 * scale) || !pixel.is_finite() {
+        return Err(EscapeError::PrecisionLimit { pixel, scale });
+    }
+    Ok(())
+}
+
+fn check_params(p: &EscapeParams) -> Result<(), EscapeError> {
+    if p.max_iter == 0 || p.max_iter > 100_000_000 {
+        return Err(EscapeError::Settings(format!(
+            "max iterations {} must be between 1 and 100000000",
+            p.max_iter
+        )));
+    }
+    match &p.family {
+        Family::Mandelbrot { power } | Family::Julia { power, .. } if !(2..=9).contains(power) => {
+            return Err(EscapeError::Settings(format!(
+                "power {power} must be between 2 and 9"
+            )));
+        }
+        Family::Newton { coeffs }
+            if coeffs.iter().filter(|c| c.norm2() > 0.0).count() < 2 || coeffs.len() < 2 =>
+        {
+            return Err(EscapeError::Settings(
+                "Newton needs a polynomial of degree 1 or more with a non-zero constant or linear term"
+                    .into(),
+            ));
+        }
+        _ => {}
+    }
+    let b = p.bailout();
+    if !(b > 0.0 && b.is_finite()) {
+        return Err(EscapeError::Settings(format!(
+            "escape radius {b} must be positive"
+        )));
+    }
+    Ok(())
+}
+
+/// The prepared per-render state shared by all rows.
+struct Job {
+    params: EscapeParams,
+    view: View,
+    w: u32,
+    h: u32,
+    settings: IterSettings,
+    newton: Option<NewtonSystem>,
+}
+
+impl Job {
+    fn new(params: &EscapeParams, view: View, w: u32, h: u32) -> Result<Job, EscapeError> {
+        check_params(params)?;
+        if !matches!(params.family, Family::WarpedJulia(_)) {
+            check_view(&view, w, h)?;
+        } else if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
+            return Err(EscapeError::BadSize(w, h));
+        }
+        let bail = params.bailout();
+        let warped = matches!(params.family, Family::WarpedJulia(_));
+        // Periodicity: a small fraction of a pixel (never for Newton or warped textures).
+        let period_tol = if params.periodicity
+            && !warped
+            && !matches!(params.family, Family::Newton { .. })
+            && params.coloring != Coloring::Distance
+        {
+            view.pixel_size(h) * 1e-3
+        } else {
+            0.0
+        };
+        Ok(Job {
+            newton: match &params.family {
+                Family::Newton { coeffs } => Some(NewtonSystem::new(coeffs)),
+                _ => None,
+            },
+            settings: IterSettings {
+                max_iter: params.max_iter,
+                bailout2: if warped && params.bailout.is_none() {
+                    4.0
+                } else {
+                    bail * bail
+                },
+                strict: !warped,
+                period_tol,
+                want_de: params.coloring == Coloring::Distance,
+            },
+            params: params.clone(),
+            view,
+            w,
+            h,
+        })
+    }
+
+    fn point(&self, i: u32, j: u32) -> C {
+        self.view
+            .world_from_pixel(i as f64, j as f64, self.w, self.h)
+    }
+
+    fn lane_start(&self, i: u32, j: u32) -> Start {
+        match &self.params.family {
+            Family::Mandelbrot { .. } => {
+                let c = self.point(i, j);
+                if in_cardioid_or_bulb(c.re, c.im) {
+                    Start::Inside
+                } else {
+                    Start::Iterate { z: C::ZERO, c }
+                }
+            }
+            Family::Julia { c, .. } => Start::Iterate {
+                z: self.point(i, j),
+                c: *c,
+            },
+            Family::WarpedJulia(w) => {
+                let z = w.start(w.point(i, j, self.w, self.h));
+                if z.is_finite() {
+                    Start::Iterate { z, c: w.c }
+                } else {
+                    Start::Escaped0
+                }
+            }
+            _ => unreachable!("lane engine only for quadratic families"),
+        }
+    }
+
+    /// One pixel in scalar code.
+    fn pixel(&self, i: u32, j: u32) -> Sample {
+        match (&self.params.family, &self.newton) {
+            (Family::Newton { .. }, Some(sys)) => {
+                sys.iterate(self.point(i, j), self.settings.max_iter)
+            }
+            (Family::WarpedJulia(w), _) => {
+                let z = w.start(w.point(i, j, self.w, self.h));
+                if !z.is_finite() {
+                    return Sample::escaped_at_zero();
+                }
+                iterate_quadratic_scalar(z, w.c, &self.settings)
+            }
+            (f, _) => iterate_point(f, self.point(i, j), &self.settings),
+        }
+    }
+
+    fn uses_lanes(&self) -> bool {
+        self.params.family.is_quadratic() && !self.settings.want_de
+    }
+
+    /// Compute the listed columns of row j into `row`.
+    fn compute_row(&self, j: u32, cols: impl Iterator<Item = u32>, row: &mut [Sample]) {
+        if self.uses_lanes() {
+            lanes::run(
+                &self.settings,
+                cols,
+                |i| self.lane_start(i, j),
+                |i, s| row[i as usize] = s,
+            );
+        } else {
+            for i in cols {
+                row[i as usize] = self.pixel(i, j);
+            }
+        }
+    }
+
+    /// Compute a list of (i, j) pixels, returning their samples in order.
+    fn compute_list(&self, pts: &[(u32, u32)]) -> Vec<Sample> {
+        let mut out = vec![Sample::default(); pts.len()];
+        if self.uses_lanes() {
+            lanes::run(
+                &self.settings,
+                0..pts.len() as u32,
+                |k| {
+                    let (i, j) = pts[k as usize];
+                    self.lane_start(i, j)
+                },
+                |k, s| out[k as usize] = s,
+            );
+        } else {
+            for (k, &(i, j)) in pts.iter().enumerate() {
+                out[k] = self.pixel(i, j);
+            }
+        }
+        out
+    }
+}
+
+/// Progressive passes: pixel steps 8, 4, 2, 1 (each pass adds the pixels of its grid that the
+/// coarser ones did not compute).
+const STEPS: [u32; 4] = [8, 4, 2, 1];
+
+/// A progressive escape-time render.
+pub struct EscapeRenderer {
+    job: Job,
+    samples: Vec<Sample>,
+    pass: usize,
+    cancelled: bool,
+}
+
+impl EscapeRenderer {
+    pub fn new(params: &EscapeParams, view: View, w: u32, h: u32) -> Result<Self, EscapeError> {
+        let job = Job::new(params, view, w, h)?;
+        Ok(EscapeRenderer {
+            samples: vec![Sample::default(); w as usize * h as usize],
+            job,
+            pass: 0,
+            cancelled: false,
+        })
+    }
+
+    pub fn passes(&self) -> usize {
+        if self.job.params.fill == Fill::Guess {
+            1
+        } else {
+            STEPS.len()
+        }
+    }
+
+    pub fn is_done(&self) -> bool {
+        self.pass >= self.passes() || self.cancelled
+    }
+
+    pub fn fraction(&self) -> f64 {
+        self.pass as f64 / self.passes() as f64
+    }
+
+    pub fn samples(&self) -> &[Sample] {
+        &self.samples
+    }
+
+    pub fn size(&self) -> (u32, u32) {
+        (self.job.w, self.job.h)
+    }
+
+    /// Run the next pass on the rayon pool. Returns false when cancelled (checked per row).
+    pub fn run_pass(&mut self, cancel: &AtomicBool) -> bool {
+        if self.is_done() {
+            return !self.cancelled;
+        }
+        let (w, h) = (self.job.w, self.job.h);
+        let job = &self.job;
+        if job.params.fill == Fill::Guess && job.newton.is_none() {
+            self.cancelled = !mariani_silver(job, &mut self.samples, cancel);
+            self.pass = self.passes();
+            return !self.cancelled;
+        }
+        let step = if job.params.fill == Fill::Guess {
+            1
+        } else {
+            STEPS[self.pass]
+        };
+        let first = self.pass == 0 || job.params.fill == Fill::Guess;
+        let stopped = AtomicBool::new(false);
+        self.samples
+            .par_chunks_mut(w as usize)
+            .enumerate()
+            .for_each(|(j, row)| {
+                let j = j as u32;
+                if !j.is_multiple_of(step) || stopped.load(Ordering::Relaxed) {
+                    return;
+                }
+                if cancel.load(Ordering::Relaxed) {
+                    stopped.store(true, Ordering::Relaxed);
+                    return;
+                }
+                let coarse_row = j.is_multiple_of(2 * step);
+                let cols = (0..w)
+                    .step_by(step as usize)
+                    .filter(move |i| first || !(coarse_row && i % (2 * step) == 0));
+                job.compute_row(j, cols, row);
+            });
+        let _ = h;
+        if stopped.load(Ordering::Relaxed) {
+            self.cancelled = true;
+            return false;
+        }
+        self.pass += 1;
+        true
+    }
+
+    /// Run every remaining pass.
+    pub fn run_all(&mut self, cancel: &AtomicBool) -> bool {
+        while !self.is_done() {
+            if !self.run_pass(cancel) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// The picture as it stands: pixels not computed yet take the colour of their pass's
+    /// block leader.
+    pub fn image(&self) -> RgbImage {
+        let (w, h) = (self.job.w, self.job.h);
+        let step = if self.pass == 0 || self.job.params.fill == Fill::Guess {
+            if self.pass == 0 { STEPS[0] } else { 1 }
+        } else {
+            STEPS[self.pass - 1]
+        };
+        colorize(&self.job, &self.samples, step).unwrap_or_else(|| RgbImage::new(w, h))
+    }
+}
+
+/// Colour the samples (block leaders of `step`-sized blocks stand in for the others).
+fn colorize(job: &Job, samples: &[Sample], step: u32) -> Option<RgbImage> {
+    let (w, h) = (job.w, job.h);
+    let histogram = (job.params.coloring == Coloring::Histogram).then(|| {
+        if step == 1 {
+            CountHistogram::new(samples, job.params.max_iter)
+        } else {
+            let leaders: Vec<Sample> = (0..h)
+                .step_by(step as usize)
+                .flat_map(|j| (0..w).step_by(step as usize).map(move |i| (i, j)))
+                .map(|(i, j)| samples[(j * w + i) as usize])
+                .collect();
+            CountHistogram::new(&leaders, job.params.max_iter)
+        }
+    });
+    let roots = job.newton.as_ref().map_or(0, |n| n.roots.len());
+    let cz = Colorizer {
+        coloring: job.params.coloring,
+        palette: &job.params.palette,
+        pixel: job.view.pixel_size(h),
+        roots,
+        histogram,
+    };
+    let mut buf = vec![0u8; w as usize * h as usize * 3];
+    buf.par_chunks_mut(w as usize * 3)
+        .enumerate()
+        .for_each(|(j, row)| {
+            let jl = j as u32 - j as u32 % step;
+            for i in 0..w {
+                let il = i - i % step;
+                let c = cz.color(&samples[(jl * w + il) as usize]);
+                row[i as usize * 3..i as usize * 3 + 3].copy_from_slice(&c);
+            }
+        });
+    RgbImage::from_raw(w, h, buf)
+}
+
+/// Mariani–Silver: rectangles whose border has one integer count (or is all inside; with
+/// smooth colourings only all-inside borders) are filled; others split in four down to 4×4.
+fn mariani_silver(job: &Job, samples: &mut [Sample], cancel: &AtomicBool) -> bool {
+    const TILE: u32 = 64;
+    let (w, h) = (job.w, job.h);
+    let tiles: Vec<(u32, u32)> = (0..h)
+        .step_by(TILE as usize)
+        .flat_map(|y| (0..w).step_by(TILE as usize).map(move |x| (x, y)))
+        .collect();
+    let results: Vec<Option<Vec<(u32, Sample)>>> = tiles
+        .par_iter()
+        .map(|&(x0, y0)| {
+            if cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+            let (x1, y1) = ((x0 + TILE).min(w), (y0 + TILE).min(h));
+            let tw = x1 - x0;
+            let mut local: Vec<Option<Sample>> = vec![None; (tw * (y1 - y0)) as usize];
+            let smooth = job.params.coloring.smooth();
+            let mut stack = vec![(x0, y0, x1, y1)];
+            while let Some((a, b, c, d)) = stack.pop() {
+                // The border pixels not known yet.
+                let mut border = Vec::new();
+                for i in a..c {
+                    border.push((i, b));
+                    if d - 1 > b {
+                        border.push((i, d - 1));
+                    }
+                }
+                for j in b + 1..d.saturating_sub(1) {
+                    border.push((a, j));
+                    if c - 1 > a {
+                        border.push((c - 1, j));
+                    }
+                }
+                let todo: Vec<(u32, u32)> = border
+                    .iter()
+                    .copied()
+                    .filter(|&(i, j)| local[((j - y0) * tw + i - x0) as usize].is_none())
+                    .collect();
+                for (k, s) in job.compute_list(&todo).into_iter().enumerate() {
+                    let (i, j) = todo[k];
+                    local[((j - y0) * tw + i - x0) as usize] = Some(s);
+                }
+                let first = local[((b - y0) * tw + a - x0) as usize].unwrap_or_default();
+                let same = border.iter().all(|&(i, j)| {
+                    let s = local[((j - y0) * tw + i - x0) as usize].unwrap_or_default();
+                    if smooth {
+                        s.inside && first.inside
+                    } else {
+                        s.inside == first.inside && s.n == first.n
+                    }
+                });
+                if same && c - a > 2 && d - b > 2 {
+                    for j in b + 1..d - 1 {
+                        for i in a + 1..c - 1 {
+                            let slot = &mut local[((j - y0) * tw + i - x0) as usize];
+                            if slot.is_none() {
+                                *slot = Some(first);
+                            }
+                        }
+                    }
+                } else if c - a <= 4 || d - b <= 4 {
+                    let rest: Vec<(u32, u32)> = (b..d)
+                        .flat_map(|j| (a..c).map(move |i| (i, j)))
+                        .filter(|&(i, j)| local[((j - y0) * tw + i - x0) as usize].is_none())
+                        .collect();
+                    for (k, s) in job.compute_list(&rest).into_iter().enumerate() {
+                        let (i, j) = rest[k];
+                        local[((j - y0) * tw + i - x0) as usize] = Some(s);
+                    }
+                } else {
+                    let (mx, my) = ((a + c) / 2, (b + d) / 2);
+                    stack.push((a, b, mx + 1, my + 1));
+                    stack.push((mx, b, c, my + 1));
+                    stack.push((a, my, mx + 1, d));
+                    stack.push((mx, my, c, d));
+                }
+            }
+            Some(
+                local
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, s)| {
+                        let (i, j) = (x0 + k as u32 % tw, y0 + k as u32 / tw);
+                        (j * w + i, s.unwrap_or_default())
+                    })
+                    .collect(),
+            )
+        })
+        .collect();
+    for r in results {
+        let Some(v) = r else { return false };
+        for (k, s) in v {
+            samples[k as usize] = s;
+        }
+    }
+    true
+}
+
+/// Render to the end: the image and the samples.
+pub fn render(
+    params: &EscapeParams,
+    view: View,
+    w: u32,
+    h: u32,
+) -> Result<(RgbImage, Vec<Sample>), EscapeError> {
+    let mut r = EscapeRenderer::new(params, view, w, h)?;
+    let never = AtomicBool::new(false);
+    if params.fill == Fill::Exact {
+        // One full pass (no coarse grid needed).
+        r.pass = STEPS.len() - 1;
+        r.job.params.fill = Fill::Exact;
+        let job = &r.job;
+        r.samples
+            .par_chunks_mut(w as usize)
+            .enumerate()
+            .for_each(|(j, row)| job.compute_row(j as u32, 0..w, row));
+        r.pass = STEPS.len();
+    } else {
+        r.run_all(&never);
+    }
+    let img = colorize(&r.job, &r.samples, 1).expect("image size");
+    Ok((img, r.samples))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::escape::warp::{Preset, Warp};
+
+    #[test]
+    fn view_maps_pixels_both_ways_with_y_up() {
+        let v = View {
+            center: [-0.7, 0.2],
+            half_height: 1.5,
+        };
+        let p = v.world_from_pixel(0.0, 0.0, 400, 300);
+        assert!(p.re < -0.7 && p.im > 0.2, "top-left is up and left");
+        let q = v.pixel_from_world(p, 400, 300);
+        assert!((q[0] - 0.5).abs() < 1e-9 && (q[1] - 0.5).abs() < 1e-9);
+        let z = v.zoomed_at(100.0, 50.0, 400, 300, 2.0);
+        let before = v.world_from_pixel(99.5, 49.5, 400, 300);
+        let after = z.world_from_pixel(99.5, 49.5, 400, 300);
+        assert!(
+            (before - after).abs() < 1e-12,
+            "the point under the cursor stays"
+        );
+        assert!(check_view(&v, 400, 300).is_ok());
+        let deep = View {
+            center: [-0.7, 0.2],
+            half_height: 1e-12,
+        };
+        assert!(matches!(
+            check_view(&deep, 400, 300),
+            Err(EscapeError::PrecisionLimit { .. })
+        ));
+    }
+
+    fn count_grid(params: &EscapeParams, w: u32, h: u32) -> Vec<(u32, bool)> {
+        let (view_c, hh) = params.family.default_view();
+        let view = View {
+            center: view_c,
+            half_height: hh,
+        };
+        render(params, view, w, h)
+            .unwrap()
+            .1
+            .iter()
+            .map(|s| (s.n, s.inside))
+            .collect()
+    }
+
+    #[test]
+    fn progressive_passes_and_full_render_agree() {
+        let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
+        p.coloring = Coloring::Bands;
+        let view = View {
+            center: [-0.7, 0.0],
+            half_height: 1.25,
+        };
+        let (img, samples) = render(&p, view, 97, 61).unwrap();
+        let mut r = EscapeRenderer::new(&p, view, 97, 61).unwrap();
+        let never = AtomicBool::new(false);
+        let mut frames = 0;
+        while !r.is_done() {
+            assert!(r.run_pass(&never));
+            let _ = r.image();
+            frames += 1;
+        }
+        assert_eq!(frames, 4);
+        assert_eq!(r.samples(), &samples[..]);
+        assert_eq!(r.image(), img);
+        // Cancelling stops at once.
+        let mut r2 = EscapeRenderer::new(&p, view, 97, 61).unwrap();
+        assert!(!r2.run_pass(&AtomicBool::new(true)));
+        assert!(r2.is_done());
+    }
+
+    #[test]
+    fn block_filling_agrees_with_the_full_computation() {
+        // escape.md §5.2: default view, 256×256, n_max 256, integer colouring: ≥ 99.9 %.
+        let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
+        p.coloring = Coloring::Bands;
+        p.max_iter = 256;
+        let exact = count_grid(&p, 256, 256);
+        p.fill = Fill::Guess;
+        let guessed = count_grid(&p, 256, 256);
+        let same = exact.iter().zip(&guessed).filter(|(a, b)| a == b).count();
+        let frac = same as f64 / exact.len() as f64;
+        assert!(frac >= 0.999, "{frac}");
+        // Periodicity checking does not change the picture either.
+        p.fill = Fill::Exact;
+        p.periodicity = false;
+        let slow = count_grid(&p, 256, 256);
+        let same = exact.iter().zip(&slow).filter(|(a, b)| a == b).count();
+        assert!(same as f64 / exact.len() as f64 >= 0.999);
+    }
+
+    #[test]
+    fn warped_texture_seam_symmetry_and_pole() {
+        let (w, h) = (256u32, 128u32);
+        let texture = |warp: Warp| {
+            let mut p = EscapeParams::new(Family::WarpedJulia(warp));
+            p.max_iter = 256;
+            render(
+                &p,
+                View {
+                    center: [0.5, 0.5],
+                    half_height: 0.5,
+                },
+                w,
+                h,
+            )
+            .unwrap()
+            .1
+        };
+        let plain = texture(Warp::preset(Preset::PolarJulia));
+        let pairs = |t: &[Sample]| {
+            let mut eq = 0;
+            for j in 0..h {
+                for i in 0..w / 2 {
+                    let a = t[(j * w + i) as usize];
+                    let b = t[(j * w + i + w / 2) as usize];
+                    eq += (a.n == b.n && a.inside == b.inside) as u32;
+                }
+            }
+            eq as f64 / (w * h / 2) as f64
+        };
+        let sym = pairs(&plain);
+        assert!(
+            sym >= 0.999,
+            "unwarped polar texture: t(u, v) = t(u + ½, v) for {sym}"
+        );
+        let warped = texture(Warp::preset(Preset::WarpedJulia));
+        let broken = pairs(&warped);
+        assert!(broken < 0.5, "the warp breaks the symmetry: {broken}");
+        // Seam: the last column continues into the first like any two neighbours.
+        for t in [&plain, &warped, &texture(Warp::preset(Preset::Galaxy))] {
+            let diff = |a: u32, b: u32| {
+                (0..h)
+                    .map(|j| {
+                        (t[(j * w + a) as usize].n as f64 - t[(j * w + b) as usize].n as f64).abs()
+                    })
+                    .sum::<f64>()
+            };
+            let seam = diff(w - 1, 0);
+            let typical = (1..w).map(|i| diff(i - 1, i)).sum::<f64>() / (w - 1) as f64;
+            assert!(
+                seam <= 3.0 * typical + 1.0,
+                "seam {seam} vs typical {typical}"
+            );
+        }
+        // A pole inside the image: finite output, those texels escape at 0.
+        let pole = Warp::new(
+            C::new(-0.8, 0.156),
+            C::new(2.0, 0.0),
+            0.0,
+            Default::default(),
+            crate::escape::warp::Sampling::Rect { scale: 3.0 },
+            false,
+        )
+        .unwrap();
+        let mut p = EscapeParams::new(Family::WarpedJulia(pole));
+        p.max_iter = 64;
+        let (img, s) = render(
+            &p,
+            View {
+                center: [0.5, 0.5],
+                half_height: 0.5,
+            },
+            64,
+            64,
+        )
+        .unwrap();
+        assert_eq!(img.width(), 64);
+        assert!(s.iter().all(|s| s.nu.is_finite()));
+    }
+}
