@@ -362,6 +362,8 @@ pub struct UgnisApp {
     pub mutations: MutationWindow,
     pub escape: EscapeTab,
     escape_export: Option<Receiver<Result<PathBuf, String>>>,
+    /// UI time per frame in ms when UGNIS_FRAME_TIMES is set.
+    frame_log: Option<Vec<f64>>,
     /// Where the last random batch is kept (the platform data directory; none in tests
     /// unless they set one).
     pub data_dir: Option<PathBuf>,
@@ -403,6 +405,18 @@ impl UgnisApp {
     /// thumbnails); without it (tests) nothing renders.
     pub fn new(options: Options, start: Start, ctx: Option<egui::Context>) -> UgnisApp {
         let mut message = None;
+        // A view file opens in the escape-time tab (next to a random flame).
+        let mut escape_start = None;
+        let start = match start {
+            Start::File(p) if io::kind_of(&p) == io::FileKind::EscapeView => {
+                match io::escape_view::read(&p) {
+                    Ok(v) => escape_start = Some((v.value, p)),
+                    Err(e) => message = Some(("Cannot open".to_string(), e.to_string())),
+                }
+                Start::Random(seed_from_time())
+            }
+            s => s,
+        };
         let defaults = options.new_flame();
         let random_flame = |seed: u64| {
             vec![
@@ -460,7 +474,11 @@ impl UgnisApp {
             options,
             doc,
             editor,
-            tab: Tab::Flame,
+            tab: if escape_start.is_some() {
+                Tab::Escape
+            } else {
+                Tab::Flame
+            },
             show_toolbar: true,
             show_status: true,
             show_files: true,
@@ -473,8 +491,16 @@ impl UgnisApp {
             data_dir,
             viewing_batch: false,
             mutations: MutationWindow::default(),
-            escape: EscapeTab::new(ctx.is_some()),
+            escape: {
+                let mut t = EscapeTab::new(ctx.is_some());
+                if let Some((d, p)) = escape_start.clone() {
+                    t.doc = d;
+                    t.path = Some(p);
+                }
+                t
+            },
             escape_export: None,
+            frame_log: std::env::var_os("UGNIS_FRAME_TIMES").map(|_| Vec::new()),
             preview,
             thumbs,
             thumb_textures: HashMap::new(),
@@ -1858,6 +1884,40 @@ fn keep_foreign_weights(f: &mut Flame) {
 
 impl eframe::App for UgnisApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let t = std::time::Instant::now();
         UgnisApp::ui(self, ui);
+        if let Some(log) = &mut self.frame_log {
+            log.push(t.elapsed().as_secs_f64() * 1000.0);
+            if log.len() >= 120 {
+                self.report_frame_times();
+            }
+        }
+    }
+}
+
+impl Drop for UgnisApp {
+    fn drop(&mut self) {
+        self.report_frame_times();
+    }
+}
+
+impl UgnisApp {
+    /// UGNIS_FRAME_TIMES=1: print how long the UI thread spent per frame (responsiveness),
+    /// every 120 frames and at exit.
+    fn report_frame_times(&mut self) {
+        if let Some(log) = &mut self.frame_log
+            && !log.is_empty()
+        {
+            let mut v = std::mem::take(log);
+            v.sort_by(f64::total_cmp);
+            let q = |p: f64| v[((v.len() - 1) as f64 * p) as usize];
+            eprintln!(
+                "ugnis: {} frames, UI time per frame: median {:.2} ms, p95 {:.2} ms, max {:.2} ms",
+                v.len(),
+                q(0.5),
+                q(0.95),
+                q(1.0)
+            );
+        }
     }
 }

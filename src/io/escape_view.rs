@@ -439,8 +439,12 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
         p.palette.gradient = g;
         doc.gradient_source = v.clone();
     }
-    p.palette.offset = real("offset")?.unwrap_or(0.0);
-    p.palette.repeat = real("repeat")?.unwrap_or(1.0);
+    if let Some(o) = real("offset")? {
+        p.palette.offset = o;
+    }
+    if let Some(r) = real("repeat")? {
+        p.palette.repeat = r;
+    }
     if p.palette.repeat <= 0.0 {
         return Err(err(
             get("repeat").map_or(0, |e| e.0),

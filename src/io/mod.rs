@@ -65,6 +65,8 @@ pub enum FileKind {
     Bmp,
     Jpeg,
     Gif,
+    /// ugnis escape-time view (.esc)
+    EscapeView,
     Unknown,
 }
 
@@ -83,6 +85,7 @@ pub fn kind_of(path: &Path) -> FileKind {
         "bmp" => FileKind::Bmp,
         "jpg" | "jpeg" => FileKind::Jpeg,
         "gif" => FileKind::Gif,
+        "esc" => FileKind::EscapeView,
         _ => FileKind::Unknown,
     }
 }
