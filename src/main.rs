@@ -31,6 +31,8 @@ enum Command {
     Random(cli::random::RandomArgs),
     /// Render an escape-time fractal (Mandelbrot, Julia, Newton, …) or a saved view
     Escape(cli::escape::EscapeArgs),
+    /// Render a textured Bezier scene (.toml) to PNG or BMP
+    Scene(cli::scene::SceneArgs),
     /// Render the frames of an animation (rotating triangles or in-betweens of flames)
     Animate(cli::animate::AnimateArgs),
 }
@@ -53,6 +55,7 @@ fn main() {
         Some(Command::Random(a)) => cli::random::run(a),
         Some(Command::Animate(a)) => cli::animate::run(a),
         Some(Command::Escape(a)) => cli::escape::run(a),
+        Some(Command::Scene(a)) => cli::scene::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {

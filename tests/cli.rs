@@ -547,3 +547,35 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
         assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
     }
 }
+
+#[test]
+fn scene_renders_files_and_reports_bad_ones() {
+    let dir = common::temp_dir("cli-scene");
+    let out = dir.join("jug.png");
+    let ex = common::example("teapot.toml");
+    let (code, _, err) = ugnis(&[
+        "scene",
+        ex.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "200x150",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(image::open(&out).unwrap().width(), 200);
+    let bad = dir.join("bad.toml");
+    std::fs::write(
+        &bad,
+        "[camera]\ndistance = 7\n\n[[object]]\nkind = \"jug\"\ntexture = \"missing\"\n",
+    )
+    .unwrap();
+    let (code, _, err) = ugnis(&["scene", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("bad.toml:4:1") && err.contains("no texture named 'missing'"),
+        "{err}"
+    );
+    let (code, _, err) = ugnis(&["scene", "/no/such.toml", "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(err.contains("/no/such.toml"), "{err}");
+}

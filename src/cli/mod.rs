@@ -7,6 +7,7 @@ pub mod escape;
 pub mod info;
 pub mod random;
 pub mod render;
+pub mod scene;
 
 use std::io::IsTerminal;
 

@@ -11,6 +11,7 @@ pub mod image_in;
 pub mod map;
 pub mod palettes;
 pub mod png;
+pub mod scene;
 pub mod ugr;
 pub mod xml;
 

@@ -1,0 +1,686 @@
+//! Scene files (`.toml`, documented in README): image, camera, lights, textures and objects of
+//! a textured Bézier scene. Paths inside are relative to the scene file. Codes SCN001–SCN005.
+//!
+//! ```toml
+//! [image]
+//! size = [640, 480]
+//! [camera]
+//! target = [0, 1.2, 0]
+//! distance = 7
+//! azimuth = 35
+//! polar = 75
+//! [[light]]
+//! position = [-5, 8, 6]
+//! intensity = 8
+//! [[texture]]
+//! name = "wood"
+//! kind = "fbm"
+//! [[object]]
+//! kind = "jug"
+//! texture = "wood"
+//! ```
+
+use std::path::{Path, PathBuf};
+
+use glam::{DVec3, Vec3};
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::diag::{Diagnostic, Pos, SourceMap};
+use crate::noise::Fbm;
+use crate::surface::mesh::{self, SurfacePatch, TexMap};
+use crate::surface::patch::Patch;
+use crate::surface::texture::{self, MrfParams, Texture};
+use crate::surface::transform::{self, Transform};
+use crate::surface::{Camera, Geometry, Light, Material, Object, Projection, Scene};
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct ImageSpec {
+    size: Option<[u32; 2]>,
+    background: Option<[f64; 3]>,
+    supersample: Option<u32>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct CameraSpec {
+    target: Option<[f64; 3]>,
+    distance: Option<f64>,
+    azimuth: Option<f64>,
+    polar: Option<f64>,
+    projection: Option<String>,
+    scale: Option<f64>,
+    /// Axonometric angles in degrees.
+    phi: Option<f64>,
+    theta: Option<f64>,
+    /// Dimetric: the z foreshortening.
+    fz: Option<f64>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct LightingSpec {
+    ambient: Option<f64>,
+    attenuation: Option<f64>,
+    blinn: Option<bool>,
+}
+
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum Intensity {
+    Grey(f64),
+    Rgb([f64; 3]),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightSpec {
+    position: [f64; 3],
+    intensity: Option<Intensity>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TextureSpec {
+    name: String,
+    kind: String,
+    file: Option<String>,
+    size: Option<[u32; 2]>,
+    quality: Option<f64>,
+    colors: Option<Vec<[f64; 3]>>,
+    octaves: Option<u32>,
+    lacunarity: Option<f64>,
+    gain: Option<f64>,
+    frequency: Option<f64>,
+    seed: Option<u64>,
+    cells: Option<[u32; 2]>,
+    alpha: Option<f64>,
+    beta: Option<f64>,
+    delta: Option<f64>,
+    phi: Option<f64>,
+    omega: Option<f64>,
+    sweeps: Option<u32>,
+    gradient: Option<String>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct MaterialSpec {
+    ka: Option<f64>,
+    kd: Option<f64>,
+    ks: Option<f64>,
+    n: Option<f64>,
+    color: Option<[f64; 3]>,
+    two_sided: Option<bool>,
+    bump: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Step {
+    translate: Option<[f64; 3]>,
+    scale: Option<ScaleSpec>,
+    rotate_x: Option<f64>,
+    rotate_y: Option<f64>,
+    rotate_z: Option<f64>,
+    /// Rotation about an axis: [nx, ny, nz, degrees] (through the origin) or with `through`.
+    rotate_axis: Option<[f64; 4]>,
+    through: Option<[f64; 3]>,
+    shear: Option<[f64; 6]>,
+    reflect: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum ScaleSpec {
+    Uniform(f64),
+    Axes([f64; 3]),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ObjectSpec {
+    kind: String,
+    name: Option<String>,
+    texture: Option<String>,
+    bump_texture: Option<String>,
+    material: Option<MaterialSpec>,
+    transform: Option<Vec<Step>>,
+    /// revolve: 3k + 1 profile points [r, y].
+    profile: Option<Vec<[f64; 2]>>,
+    /// tube: 4 spine points.
+    spine: Option<Vec<[f64; 3]>>,
+    radius: Option<f64>,
+    /// bezier: degrees [n, m] and the (n + 1)(m + 1) net, rows along u.
+    degree: Option<[usize; 2]>,
+    net: Option<Vec<[f64; 3]>>,
+    /// bilinear: p00, p01, p10, p11.
+    corners: Option<Vec<[f64; 3]>>,
+    /// mountain.
+    levels: Option<u32>,
+    size: Option<f64>,
+    sigma: Option<f64>,
+    h: Option<f64>,
+    seed: Option<u64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneSpec {
+    image: Option<ImageSpec>,
+    camera: Option<CameraSpec>,
+    lighting: Option<LightingSpec>,
+    light: Option<Vec<LightSpec>>,
+    texture: Option<Vec<Spanned<TextureSpec>>>,
+    object: Option<Vec<Spanned<ObjectSpec>>>,
+}
+
+/// A loaded scene with the names of its textures (by index).
+pub struct LoadedScene {
+    pub scene: Scene,
+    pub texture_names: Vec<String>,
+}
+
+fn v3(a: [f64; 3]) -> DVec3 {
+    DVec3::from_array(a)
+}
+
+fn c3(a: [f64; 3]) -> Vec3 {
+    Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32)
+}
+
+/// Build a texture from its spec; `base` resolves relative files.
+fn make_texture(t: &TextureSpec, base: &Path) -> Result<Texture, String> {
+    let [w, h] = t.size.unwrap_or([512, 512]);
+    if w == 0 || h == 0 || w > 8192 || h > 8192 {
+        return Err(format!("size {w}x{h} must be between 1x1 and 8192x8192"));
+    }
+    let (w, h) = (w as usize, h as usize);
+    let colors = t
+        .colors
+        .clone()
+        .unwrap_or_else(|| vec![[0.1, 0.1, 0.12], [0.95, 0.9, 0.8]]);
+    let (a, b) = (c3(colors[0]), c3(*colors.get(1).unwrap_or(&colors[0])));
+    let file = || -> Result<PathBuf, String> {
+        let f = t.file.as_ref().ok_or("needs file = \"…\"")?;
+        let p = base.join(f);
+        if !p.exists() {
+            return Err(format!("file '{}' does not exist", p.display()));
+        }
+        Ok(p)
+    };
+    let fbm = || Fbm {
+        octaves: t.octaves.unwrap_or(6).clamp(1, 16),
+        lacunarity: t.lacunarity.unwrap_or(2.0),
+        gain: t.gain.unwrap_or(0.5),
+        frequency: t.frequency.unwrap_or(4.0),
+        seed: t.seed.unwrap_or(1),
+    };
+    Ok(match t.kind.as_str() {
+        "image" => {
+            let p = file()?;
+            let img = image::open(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+            Texture::from_image(&img.to_rgb8())
+        }
+        "flame" => {
+            let p = file()?;
+            let mut f = super::read_flames(&p, &Default::default())
+                .map_err(|e| e.to_string())?
+                .value
+                .into_iter()
+                .next()
+                .ok_or_else(|| format!("{}: no flame", p.display()))?;
+            f.resize_keep_framing(w as u32, h as u32);
+            if let Some(q) = t.quality {
+                f.quality = q;
+            }
+            // A fixed thread count keeps the texture (and the scene) identical on every machine.
+            let opts = crate::flame::RenderOptions {
+                threads: 2,
+                ..Default::default()
+            };
+            let img = crate::flame::render(&f, &opts).map_err(|e| e.to_string())?;
+            Texture::from_image(&img.to_rgb8())
+        }
+        "escape" => {
+            let p = file()?;
+            let d = super::escape_view::read(&p)
+                .map_err(|e| e.to_string())?
+                .value;
+            let mut view = d.view;
+            // Keep the view's world width at the texture's size.
+            view.half_height = d.world_width() / 2.0 * h as f64 / w as f64;
+            let (img, _) = crate::escape::render(&d.params, view, w as u32, h as u32)
+                .map_err(|e| e.to_string())?;
+            Texture::from_image(&img)
+        }
+        "fbm" => texture::fbm_texture(w, h, fbm(), a, b),
+        "value" => texture::value_noise_texture(
+            w,
+            h,
+            t.seed.unwrap_or(1),
+            t.cells.map_or(8, |c| c[0]),
+            a,
+            b,
+        ),
+        "mrf" => {
+            let d = MrfParams::default();
+            let p = MrfParams {
+                alpha: t.alpha.unwrap_or(d.alpha),
+                beta: t.beta.unwrap_or(d.beta),
+                delta: t.delta.unwrap_or(d.delta),
+                phi: t.phi.unwrap_or(d.phi),
+                omega: t.omega.unwrap_or(d.omega),
+                sweeps: t.sweeps.unwrap_or(d.sweeps).min(1000),
+                seed: t.seed.unwrap_or(1),
+            };
+            texture::mrf_texture(w.min(1024), h.min(1024), &p, a, b)
+        }
+        "checker" => {
+            let [n, m] = t.cells.unwrap_or([8, 8]);
+            texture::checker(w, h, n.max(1) as usize, m.max(1) as usize, a, b)
+        }
+        "grid" => {
+            let [n, m] = t.cells.unwrap_or([8, 8]);
+            texture::grid(w, h, n.max(1) as usize, m.max(1) as usize, a, b)
+        }
+        "solid" => Texture::solid(a),
+        "gradient" => {
+            let name = t.gradient.as_deref().unwrap_or("ember");
+            let g = super::escape_view::resolve_gradient(name, Some(base))?;
+            // t runs along the gradient (e.g. a mountain's height).
+            let rows: Vec<Vec3> = (0..256)
+                .flat_map(|k| {
+                    let c = g.colors[k];
+                    std::iter::repeat_n(Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32), 4)
+                })
+                .collect();
+            Texture::from_texels(4, 256, rows)
+        }
+        other => {
+            return Err(format!(
+                "unknown texture kind '{other}': expected image, flame, escape, fbm, value, mrf, checker, grid, solid or gradient"
+            ));
+        }
+    })
+}
+
+fn make_transform(steps: &[Step]) -> Result<Transform, String> {
+    let mut t = Transform::IDENTITY;
+    for s in steps {
+        let mut any = 0;
+        let mut add = |m: Transform| {
+            any += 1;
+            t = t.then(&m);
+        };
+        if let Some(v) = s.scale.as_ref() {
+            add(match v {
+                ScaleSpec::Uniform(k) => Transform::scale(*k, *k, *k),
+                ScaleSpec::Axes(a) => Transform::scale(a[0], a[1], a[2]),
+            });
+        }
+        if let Some(a) = s.shear {
+            add(Transform::shear(a[0], a[1], a[2], a[3], a[4], a[5]));
+        }
+        if let Some(d) = s.rotate_x {
+            add(Transform::rot_x(d.to_radians()));
+        }
+        if let Some(d) = s.rotate_y {
+            add(Transform::rot_y(d.to_radians()));
+        }
+        if let Some(d) = s.rotate_z {
+            add(Transform::rot_z(d.to_radians()));
+        }
+        if let Some(a) = s.rotate_axis {
+            let n = DVec3::new(a[0], a[1], a[2]);
+            if n.length_squared() == 0.0 {
+                return Err("rotate_axis needs a non-zero axis".into());
+            }
+            let p = s.through.map_or(DVec3::ZERO, v3);
+            add(Transform::rot_axis_through(p, n, a[3].to_radians()));
+        }
+        if let Some(r) = &s.reflect {
+            add(match r.as_str() {
+                "xy" => Transform::reflect_xy(),
+                "yz" => Transform::reflect_yz(),
+                "xz" => Transform::reflect_xz(),
+                o => return Err(format!("reflect '{o}': expected xy, yz or xz")),
+            });
+        }
+        if let Some(v) = s.translate {
+            add(Transform::translate(v[0], v[1], v[2]));
+        }
+        if any != 1 {
+            return Err("each transform step needs exactly one operation".into());
+        }
+    }
+    Ok(t)
+}
+
+fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
+    Ok(match o.kind.as_str() {
+        "jug" => Geometry::Patches(mesh::jug()),
+        "teapot" => Geometry::Patches(mesh::teapot()),
+        "revolve" => {
+            let p = o.profile.as_ref().ok_or("needs profile = [[r, y], …]")?;
+            if p.len() < 4 || (p.len() - 1) % 3 != 0 {
+                return Err(format!(
+                    "profile has {} points: needs 3k + 1 (k ≥ 1 cubic segments)",
+                    p.len()
+                ));
+            }
+            Geometry::Patches(mesh::revolve(p))
+        }
+        "tube" => {
+            let s = o.spine.as_ref().ok_or("needs spine = 4 points")?;
+            let s: [[f64; 3]; 4] = s
+                .clone()
+                .try_into()
+                .map_err(|_| "spine needs exactly 4 points")?;
+            let r = o.radius.unwrap_or(0.1);
+            if r <= 0.0 {
+                return Err("radius must be positive".into());
+            }
+            Geometry::Patches(mesh::tube(s.map(v3), r))
+        }
+        "bezier" => {
+            let [n, m] = o.degree.unwrap_or([3, 3]);
+            let net = o.net.as_ref().ok_or("needs net = [[x, y, z], …]")?;
+            let p = Patch::bezier(n, m, net.iter().map(|p| v3(*p)).collect())
+                .map_err(|e| e.to_string())?;
+            Geometry::Patches(vec![SurfacePatch {
+                patch: p,
+                tex: TexMap::default(),
+            }])
+        }
+        "bilinear" => {
+            let c = o.corners.as_ref().ok_or("needs corners = 4 points")?;
+            let c: [[f64; 3]; 4] = c
+                .clone()
+                .try_into()
+                .map_err(|_| "corners needs exactly 4 points")?;
+            Geometry::Patches(vec![SurfacePatch {
+                patch: Patch::Bilinear { p: c.map(v3) },
+                tex: TexMap::default(),
+            }])
+        }
+        "mountain" => Geometry::Mesh(mesh::mountain(
+            o.levels.unwrap_or(7).clamp(1, 10),
+            o.size.unwrap_or(6.0),
+            o.sigma.unwrap_or(1.0),
+            o.h.unwrap_or(0.8),
+            o.seed.unwrap_or(1),
+        )),
+        other => {
+            return Err(format!(
+                "unknown object kind '{other}': expected jug, teapot, revolve, tube, bezier, bilinear or mountain"
+            ));
+        }
+    })
+}
+
+/// Parse a scene. `base` is the directory for relative files.
+pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnostic> {
+    let map = SourceMap::new(text);
+    let at = |span: Option<std::ops::Range<usize>>| span.map_or(Pos::File, |s| map.pos(s.start));
+    let spec: SceneSpec = toml::from_str(text)
+        .map_err(|e| Diagnostic::error(name, at(e.span()), "SCN001", e.message().to_string()))?;
+    let mut scene = Scene::default();
+    let img = spec.image.unwrap_or_default();
+    if let Some([w, h]) = img.size {
+        if w == 0 || h == 0 || w > 16384 || h > 16384 {
+            return Err(Diagnostic::error(
+                name,
+                Pos::File,
+                "SCN002",
+                format!("image size {w}x{h} must be between 1x1 and 16384x16384"),
+            ));
+        }
+        (scene.width, scene.height) = (w, h);
+    }
+    if let Some(b) = img.background {
+        scene.background = c3(b);
+    }
+    scene.supersample = img.supersample.unwrap_or(1).clamp(1, 4);
+    let cam = spec.camera.unwrap_or_default();
+    let d = Camera::default();
+    scene.camera = Camera {
+        target: cam.target.map_or(d.target, v3),
+        distance: cam.distance.unwrap_or(d.distance),
+        azimuth_deg: cam.azimuth.unwrap_or(d.azimuth_deg),
+        polar_deg: cam.polar.unwrap_or(d.polar_deg),
+        scale: cam.scale.unwrap_or(d.scale),
+        projection: match cam.projection.as_deref().unwrap_or("perspective") {
+            "perspective" => Projection::Perspective,
+            "orthographic" => Projection::Orthographic,
+            "stereo" => Projection::Stereo,
+            "isometric" => {
+                let (phi, theta) = transform::isometric_angles();
+                Projection::Axonometric { phi, theta }
+            }
+            "dimetric" => {
+                let (phi, theta) = transform::dimetric_angles(cam.fz.unwrap_or(0.5));
+                Projection::Axonometric { phi, theta }
+            }
+            "axonometric" => Projection::Axonometric {
+                phi: cam.phi.unwrap_or(30.0).to_radians(),
+                theta: cam.theta.unwrap_or(20.0).to_radians(),
+            },
+            o => {
+                return Err(Diagnostic::error(
+                    name,
+                    Pos::File,
+                    "SCN002",
+                    format!(
+                        "camera projection '{o}': expected perspective, orthographic, isometric, dimetric, axonometric or stereo"
+                    ),
+                ));
+            }
+        },
+    };
+    if !(scene.camera.distance > 0.0 && scene.camera.scale > 0.0) {
+        return Err(Diagnostic::error(
+            name,
+            Pos::File,
+            "SCN002",
+            "camera distance and scale must be positive",
+        ));
+    }
+    let l = spec.lighting.unwrap_or_default();
+    scene.ambient = l.ambient.unwrap_or(1.0);
+    scene.attenuation_k = l.attenuation.unwrap_or(1.0);
+    scene.blinn = l.blinn.unwrap_or(false);
+    if let Some(lights) = spec.light {
+        scene.lights = lights
+            .iter()
+            .map(|l| Light {
+                position: v3(l.position),
+                intensity: match l.intensity {
+                    None => Vec3::splat(8.0),
+                    Some(Intensity::Grey(g)) => Vec3::splat(g as f32),
+                    Some(Intensity::Rgb(c)) => c3(c),
+                },
+            })
+            .collect();
+    }
+    let mut texture_names = Vec::new();
+    for t in spec.texture.unwrap_or_default() {
+        let pos = at(Some(t.span()));
+        let t = t.into_inner();
+        if texture_names.contains(&t.name) {
+            return Err(Diagnostic::error(
+                name,
+                pos,
+                "SCN003",
+                format!("texture '{}' is defined twice", t.name),
+            ));
+        }
+        let tex = make_texture(&t, base).map_err(|m| {
+            Diagnostic::error(
+                name,
+                pos.clone(),
+                "SCN004",
+                format!("texture '{}': {m}", t.name),
+            )
+        })?;
+        scene.textures.push(tex);
+        texture_names.push(t.name);
+    }
+    for (k, o) in spec.object.unwrap_or_default().into_iter().enumerate() {
+        let pos = at(Some(o.span()));
+        let o = o.into_inner();
+        let label = o
+            .name
+            .clone()
+            .unwrap_or_else(|| format!("{} {}", o.kind, k + 1));
+        let err = |m: String| {
+            Diagnostic::error(
+                name,
+                pos.clone(),
+                "SCN005",
+                format!("object '{label}': {m}"),
+            )
+        };
+        let find = |n: &Option<String>| -> Result<Option<usize>, Diagnostic> {
+            match n {
+                None => Ok(None),
+                Some(n) => texture_names
+                    .iter()
+                    .position(|x| x == n)
+                    .map(Some)
+                    .ok_or_else(|| err(format!("no texture named '{n}'"))),
+            }
+        };
+        let m = o.material.as_ref();
+        let dm = Material::default();
+        let material = Material {
+            ka: m.and_then(|m| m.ka).unwrap_or(dm.ka),
+            kd: m.and_then(|m| m.kd).unwrap_or(dm.kd),
+            ks: m.and_then(|m| m.ks).unwrap_or(dm.ks),
+            shininess: m.and_then(|m| m.n).unwrap_or(dm.shininess),
+            color: m.and_then(|m| m.color).map_or(dm.color, c3),
+            two_sided: m.and_then(|m| m.two_sided).unwrap_or(dm.two_sided),
+            bump: m.and_then(|m| m.bump).unwrap_or(0.0),
+        };
+        scene.objects.push(Object {
+            name: label.clone(),
+            geometry: make_geometry(&o).map_err(err)?,
+            transform: make_transform(o.transform.as_deref().unwrap_or(&[])).map_err(err)?,
+            material,
+            texture: find(&o.texture)?,
+            bump_texture: find(&o.bump_texture)?,
+        });
+    }
+    Ok(LoadedScene {
+        scene,
+        texture_names,
+    })
+}
+
+/// Read a scene file.
+pub fn read(path: &Path) -> Result<LoadedScene, Diagnostic> {
+    let name = path.display().to_string();
+    let bytes = super::read_bytes(path)?;
+    let (text, _) = super::diag::decode_text(&bytes, &name);
+    parse(&text, &name, path.parent().unwrap_or(Path::new(".")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_a_full_scene() {
+        let text = r#"
+[image]
+size = [320, 240]
+background = [0.1, 0.1, 0.1]
+[camera]
+target = [0, 1, 0]
+distance = 6
+azimuth = 20
+polar = 70
+projection = "isometric"
+[lighting]
+ambient = 0.8
+[[light]]
+position = [1, 5, 5]
+intensity = [4, 4, 3]
+[[texture]]
+name = "noise"
+kind = "fbm"
+size = [64, 64]
+[[texture]]
+name = "cells"
+kind = "mrf"
+size = [32, 32]
+sweeps = 5
+[[object]]
+kind = "jug"
+texture = "noise"
+material = { ks = 0.5, n = 40, bump = 0.01 }
+transform = [{ rotate_y = 30 }, { translate = [0, 0.1, 0] }]
+[[object]]
+kind = "bezier"
+degree = [1, 1]
+net = [[0,0,0],[0,0,1],[1,0,0],[1,0,1]]
+texture = "cells"
+"#;
+        let s = parse(text, "t.toml", Path::new(".")).unwrap();
+        assert_eq!(s.scene.objects.len(), 2);
+        assert_eq!(s.texture_names, vec!["noise", "cells"]);
+        assert_eq!((s.scene.width, s.scene.height), (320, 240));
+        assert!(matches!(
+            s.scene.camera.projection,
+            Projection::Axonometric { .. }
+        ));
+        assert_eq!(s.scene.objects[0].material.shininess, 40.0);
+        assert_eq!(s.scene.lights[0].intensity, Vec3::new(4.0, 4.0, 3.0));
+    }
+
+    #[test]
+    fn bad_scenes_say_where_and_what() {
+        for (text, code, want) in [
+            ("[image]\nsize = [0, 10]\n", "SCN002", "size"),
+            (
+                "[[object]]\nkind = \"blob\"\n",
+                "SCN005",
+                "unknown object kind",
+            ),
+            (
+                "[[object]]\nkind = \"jug\"\ntexture = \"nope\"\n",
+                "SCN005",
+                "no texture named",
+            ),
+            (
+                "[[texture]]\nname = \"a\"\nkind = \"image\"\nfile = \"missing.png\"\n",
+                "SCN004",
+                "does not exist",
+            ),
+            (
+                "[camera]\nprojection = \"fisheye\"\n",
+                "SCN002",
+                "projection",
+            ),
+            (
+                "[[object]]\nkind = \"revolve\"\nprofile = [[0,0],[1,1]]\n",
+                "SCN005",
+                "3k + 1",
+            ),
+            ("[image]\nsize = [10, 10\n", "SCN001", ""),
+            ("[image]\nsizes = [10, 10]\n", "SCN001", "sizes"),
+        ] {
+            let e = parse(text, "s.toml", Path::new("/nonexistent"))
+                .err()
+                .unwrap_or_else(|| panic!("{text}"));
+            assert_eq!(e.code, code, "{text}: {e}");
+            assert!(e.to_string().contains(want), "{text}: {e}");
+            assert!(e.to_string().contains("s.toml"));
+        }
+        let e = parse("[image]\n\nsize = \"big\"\n", "s.toml", Path::new("."))
+            .err()
+            .unwrap();
+        assert_eq!(e.pos, Pos::LineCol(3, 8), "{e}");
+    }
+}

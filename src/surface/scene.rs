@@ -1,0 +1,288 @@
+//! The scene model: objects (patches or meshes) with materials and textures, lights, camera
+//! and projection (surfaces.md §3, §6, §9).
+
+use glam::{DVec3, Vec3};
+
+use super::mesh::{Mesh, SurfacePatch};
+use super::texture::Texture;
+use super::transform::Transform;
+
+/// Material of the illumination model (§6.1).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    pub ka: f64,
+    pub kd: f64,
+    pub ks: f64,
+    /// Specular exponent n.
+    pub shininess: f64,
+    /// Multiplies the texture colour.
+    pub color: Vec3,
+    pub two_sided: bool,
+    /// Blinn bump mapping amplitude (0: off) from the texture's heights.
+    pub bump: f64,
+}
+
+impl Default for Material {
+    /// The jug's material: K_a = 0.25, K_d = 0.75, k_s = 0.35, n = 24.
+    fn default() -> Self {
+        Material {
+            ka: 0.25,
+            kd: 0.75,
+            ks: 0.35,
+            shininess: 24.0,
+            color: Vec3::ONE,
+            two_sided: true,
+            bump: 0.0,
+        }
+    }
+}
+
+/// Geometry of an object.
+#[derive(Clone, Debug)]
+pub enum Geometry {
+    Patches(Vec<SurfacePatch>),
+    Mesh(Mesh),
+}
+
+/// One object.
+#[derive(Clone, Debug)]
+pub struct Object {
+    pub name: String,
+    pub geometry: Geometry,
+    pub transform: Transform,
+    pub material: Material,
+    /// Index into `Scene::textures` (None: untextured, the material colour).
+    pub texture: Option<usize>,
+    /// Optional height texture for bump mapping (defaults to the colour texture).
+    pub bump_texture: Option<usize>,
+}
+
+/// A point light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    pub position: DVec3,
+    /// I_l per channel.
+    pub intensity: Vec3,
+}
+
+/// How the view is projected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Centre of projection at the eye (k = ρ).
+    Perspective,
+    Orthographic,
+    /// Axonometric: rotate about y by φ, about x by θ, project along z.
+    Axonometric {
+        phi: f64,
+        theta: f64,
+    },
+    /// A left/right perspective pair side by side (thesis matrices A and B).
+    Stereo,
+}
+
+/// The orbit camera of §3: target T, distance ρ, azimuth θ (from +z towards +x) and polar
+/// angle φ (from +y).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    pub target: DVec3,
+    pub distance: f64,
+    pub azimuth_deg: f64,
+    pub polar_deg: f64,
+    pub projection: Projection,
+    /// Pixels per world unit at the target plane, for a 480-pixel-high image (scaled with
+    /// the image height).
+    pub scale: f64,
+}
+
+impl Default for Camera {
+    /// The jug's camera: T = (0, 1.2, 0), ρ = 7, θ = 35°, φ = 75°, S = 150.
+    fn default() -> Self {
+        Camera {
+            target: DVec3::new(0.0, 1.2, 0.0),
+            distance: 7.0,
+            azimuth_deg: 35.0,
+            polar_deg: 75.0,
+            projection: Projection::Perspective,
+            scale: 150.0,
+        }
+    }
+}
+
+impl Camera {
+    /// The eye position E = T + ρ·(sinφ sinθ, cosφ, sinφ cosθ).
+    pub fn eye(&self) -> DVec3 {
+        let (th, ph) = (self.azimuth_deg.to_radians(), self.polar_deg.to_radians());
+        self.target + DVec3::new(ph.sin() * th.sin(), ph.cos(), ph.sin() * th.cos()) * self.distance
+    }
+
+    /// The viewing transform V (world → view space, eye on +z at distance ρ).
+    pub fn view(&self) -> Transform {
+        let (th, ph) = (self.azimuth_deg.to_radians(), self.polar_deg.to_radians());
+        let x = DVec3::new(th.cos(), 0.0, -th.sin());
+        let y = DVec3::new(-ph.cos() * th.sin(), ph.sin(), -ph.cos() * th.cos());
+        let z = DVec3::new(ph.sin() * th.sin(), ph.cos(), ph.sin() * th.cos());
+        let t = self.target;
+        Transform([
+            [x.x, y.x, z.x, 0.0],
+            [x.y, y.y, z.y, 0.0],
+            [x.z, y.z, z.z, 0.0],
+            [-t.dot(x), -t.dot(y), -t.dot(z), 1.0],
+        ])
+    }
+}
+
+/// A complete scene.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub objects: Vec<Object>,
+    pub textures: Vec<Texture>,
+    pub lights: Vec<Light>,
+    /// I_a.
+    pub ambient: f64,
+    /// The attenuation constant K in I_l/(d + K).
+    pub attenuation_k: f64,
+    pub camera: Camera,
+    pub background: Vec3,
+    pub width: u32,
+    pub height: u32,
+    /// Supersampling factor per axis (1 = none).
+    pub supersample: u32,
+    /// Blinn–Phong (n·H) instead of Phong (R·S) highlights.
+    pub blinn: bool,
+}
+
+impl Default for Scene {
+    fn default() -> Self {
+        Scene {
+            objects: Vec::new(),
+            textures: Vec::new(),
+            lights: vec![Light {
+                position: DVec3::new(-5.0, 8.0, 6.0),
+                intensity: Vec3::splat(8.0),
+            }],
+            ambient: 1.0,
+            attenuation_k: 1.0,
+            camera: Camera::default(),
+            background: Vec3::ZERO,
+            width: 640,
+            height: 480,
+            supersample: 1,
+            blinn: false,
+        }
+    }
+}
+
+/// The lighting model of §6.1 for one surface point (all vectors in one space):
+/// I = I_a·K_a·c + Σ I_l/(d + K)·(K_d·c·(n̂·L̂) + k_s·(R̂·Ŝ)ⁿ), clamped to [0, 1].
+#[allow(clippy::too_many_arguments)]
+pub fn illuminate(
+    m: &Material,
+    tex: Vec3,
+    normal: DVec3,
+    point: DVec3,
+    eye: DVec3,
+    lights: &[Light],
+    ambient: f64,
+    k: f64,
+    blinn: bool,
+) -> Vec3 {
+    let base = tex * m.color;
+    let mut n = normal.normalize_or_zero();
+    let s = (eye - point).normalize_or_zero();
+    if m.two_sided && n.dot(s) < 0.0 {
+        n = -n;
+    }
+    let d = (eye - point).length();
+    let mut c = base * (ambient * m.ka) as f32;
+    for l in lights {
+        let lv = (l.position - point).normalize_or_zero();
+        let ndl = n.dot(lv).max(0.0);
+        if ndl <= 0.0 {
+            continue;
+        }
+        let spec = if blinn {
+            n.dot((lv + s).normalize_or_zero()).max(0.0)
+        } else {
+            let r = n * (2.0 * n.dot(lv)) - lv;
+            r.dot(s).max(0.0)
+        };
+        let att = 1.0 / (d + k);
+        let diffuse = base * (m.kd * ndl) as f32;
+        let specular = Vec3::splat((m.ks * spec.powf(m.shininess)) as f32);
+        c += l.intensity * att as f32 * (diffuse + specular);
+    }
+    c.clamp(Vec3::ZERO, Vec3::ONE)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lighting_oracle() {
+        // I_a = 1, K_a = 0.2, I_l = 1, K_d = 0.7, k_s = 0.3, n = 10, d = 4, K = 1, θ = 60°,
+        // α = 30° → I = 0.28423828125.
+        let m = Material {
+            ka: 0.2,
+            kd: 0.7,
+            ks: 0.3,
+            shininess: 10.0,
+            color: Vec3::ONE,
+            two_sided: false,
+            bump: 0.0,
+        };
+        let n = DVec3::Y;
+        // Light at 60° from the normal; viewer so that the mirror direction is 30° from S.
+        let th = 60f64.to_radians();
+        let lv = DVec3::new(-th.sin(), th.cos(), 0.0);
+        let r = n * (2.0 * n.dot(lv)) - lv; // at +60° on the other side
+        let a = 30f64.to_radians();
+        // Rotate r by 30° towards the normal to get S.
+        let rot = |v: DVec3, ang: f64| {
+            DVec3::new(
+                v.x * ang.cos() - v.y * ang.sin(),
+                v.x * ang.sin() + v.y * ang.cos(),
+                0.0,
+            )
+        };
+        let s = rot(r, a);
+        assert!((r.dot(s) - a.cos()).abs() < 1e-12);
+        let point = DVec3::ZERO;
+        let eye = s * 4.0;
+        let light = Light {
+            position: lv * 1000.0,
+            intensity: Vec3::ONE,
+        };
+        let i = illuminate(&m, Vec3::ONE, n, point, eye, &[light], 1.0, 1.0, false);
+        assert!((i.x as f64 - 0.28423828125).abs() < 1e-6, "{i:?}");
+        assert!((30f64.to_radians().cos().powi(10) - 0.2373046875).abs() < 1e-12);
+    }
+
+    #[test]
+    fn viewing_transform_oracles() {
+        let c = Camera {
+            target: DVec3::ZERO,
+            distance: 5.0,
+            azimuth_deg: 0.0,
+            polar_deg: 90.0,
+            ..Camera::default()
+        };
+        let v = c.view();
+        for (a, b) in
+            v.0.iter()
+                .flatten()
+                .zip(Transform::IDENTITY.0.iter().flatten())
+        {
+            assert!((a - b).abs() < 1e-12);
+        }
+        let c2 = Camera {
+            azimuth_deg: 90.0,
+            ..c
+        };
+        let p = c2.view().apply(DVec3::new(0.0, 0.0, -1.0));
+        assert!((p - DVec3::X).length() < 1e-12, "{p:?}");
+        // The eye maps to (0, 0, ρ).
+        let j = Camera::default();
+        assert!((j.view().apply(j.eye()) - DVec3::new(0.0, 0.0, 7.0)).length() < 1e-12);
+    }
+}
