@@ -526,3 +526,82 @@ fn escape_tab_rectangle_zoom_and_pan() {
     h.run_steps(2);
     assert_eq!(h.state().escape.doc.view.center, v0.center);
 }
+
+#[test]
+fn scene_tab_orbits_moves_lights_and_changes_textures() {
+    let mut h = open("sierpinski.flame");
+    h.get_by_role_and_label(Role::Button, "Scene").click();
+    h.run_steps(3);
+    assert_eq!(h.state().tab, ugnis::app::Tab::Scene);
+    let cam0 = h.state().scene.scene.camera;
+    let light0 = h.state().scene.scene.lights[0].position;
+    let p = Pos2::new(800.0, 400.0);
+    drag(&mut h, p, p + Vec2::new(40.0, -20.0));
+    let cam1 = h.state().scene.scene.camera;
+    assert!(
+        (cam1.azimuth_deg - (cam0.azimuth_deg - 12.0)).abs() < 3.0,
+        "{cam1:?}"
+    );
+    assert!(cam1.polar_deg > cam0.polar_deg);
+    assert_eq!(h.state().scene.scene.lights[0].position, light0);
+    // Ctrl+drag moves the selected light, not the camera.
+    let cam_before = h.state().scene.scene.camera;
+    h.hover_at(p);
+    h.step();
+    h.event_modifiers(
+        egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed: true,
+            modifiers: Modifiers::COMMAND,
+        },
+        Modifiers::COMMAND,
+    );
+    for k in 1..=4 {
+        h.event_modifiers(
+            egui::Event::PointerMoved(p + Vec2::new(10.0 * k as f32, 0.0)),
+            Modifiers::COMMAND,
+        );
+        h.step();
+    }
+    h.event_modifiers(
+        egui::Event::PointerButton {
+            pos: p + Vec2::new(40.0, 0.0),
+            button: egui::PointerButton::Primary,
+            pressed: false,
+            modifiers: Modifiers::COMMAND,
+        },
+        Modifiers::COMMAND,
+    );
+    h.run_steps(2);
+    assert_ne!(
+        h.state().scene.scene.lights[0].position,
+        light0,
+        "the light moved"
+    );
+    assert_eq!(
+        h.state().scene.scene.camera,
+        cam_before,
+        "the camera stayed"
+    );
+    // A procedural texture replaces the jug's texture (made in the background).
+    let flame = h.state().doc.flame().clone();
+    let esc = h.state().escape.doc.clone();
+    h.state_mut()
+        .scene
+        .set_source(ugnis::app::scene_view::TextureSource::Checker, &flame, &esc);
+    let t = std::time::Instant::now();
+    while h
+        .state()
+        .scene
+        .texture_names
+        .iter()
+        .all(|n| n != "(checker)")
+    {
+        assert!(t.elapsed().as_secs() < 30);
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.step();
+    }
+    let tex = h.state().scene.scene.objects[0].texture.unwrap();
+    assert_eq!(h.state().scene.texture_names[tex], "(checker)");
+}

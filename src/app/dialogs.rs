@@ -17,6 +17,9 @@ pub enum Purpose {
     OpenView,
     SaveView,
     ExportEscape,
+    OpenScene,
+    ExportScene,
+    SceneTexture,
 }
 
 impl Purpose {
@@ -30,6 +33,9 @@ impl Purpose {
             Purpose::OpenView => "Open escape-time view",
             Purpose::SaveView => "Save escape-time view",
             Purpose::ExportEscape => "Export escape-time image",
+            Purpose::OpenScene => "Open scene",
+            Purpose::ExportScene => "Export scene image",
+            Purpose::SceneTexture => "Texture image",
         }
     }
 
@@ -39,7 +45,9 @@ impl Purpose {
             Purpose::SaveAs => &["fla", "flame", "flam3", "ifs"],
             Purpose::LoadGradient => &["ugr", "map", "gradient"],
             Purpose::GradientFromImage => &["png", "jpg", "jpeg", "bmp", "gif"],
-            Purpose::Export | Purpose::ExportEscape => &["png", "bmp"],
+            Purpose::Export | Purpose::ExportEscape | Purpose::ExportScene => &["png", "bmp"],
+            Purpose::OpenScene => &["toml"],
+            Purpose::SceneTexture => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::OpenView | Purpose::SaveView => &["esc"],
         }
     }
@@ -47,7 +55,11 @@ impl Purpose {
     pub fn saving(self) -> bool {
         matches!(
             self,
-            Purpose::SaveAs | Purpose::Export | Purpose::SaveView | Purpose::ExportEscape
+            Purpose::SaveAs
+                | Purpose::Export
+                | Purpose::SaveView
+                | Purpose::ExportEscape
+                | Purpose::ExportScene
         )
     }
 }

@@ -10,6 +10,7 @@ pub mod gradients;
 pub mod mutations;
 pub mod options;
 pub mod preview;
+pub mod scene_view;
 
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
@@ -34,6 +35,7 @@ use gradients::{GradientAction, GradientWindow};
 use mutations::MutationWindow;
 use options::{Options, OptionsTab};
 use preview::{PreviewEvent, PreviewJob, PreviewWorker, ThumbnailWorker};
+use scene_view::{SceneRequest, SceneTab};
 
 /// Start the editor window.
 pub fn run(file: Option<PathBuf>) -> Result<(), eframe::Error> {
@@ -361,6 +363,7 @@ pub struct UgnisApp {
     pub viewing_batch: bool,
     pub mutations: MutationWindow,
     pub escape: EscapeTab,
+    pub scene: SceneTab,
     escape_export: Option<Receiver<Result<PathBuf, String>>>,
     /// UI time per frame in ms when UGNIS_FRAME_TIMES is set.
     frame_log: Option<Vec<f64>>,
@@ -499,6 +502,7 @@ impl UgnisApp {
                 }
                 t
             },
+            scene: SceneTab::new(ctx.is_some()),
             escape_export: None,
             frame_log: std::env::var_os("UGNIS_FRAME_TIMES").map(|_| Vec::new()),
             preview,
@@ -847,11 +851,15 @@ impl UgnisApp {
                     |n| n.to_string_lossy().into_owned(),
                 ),
             Purpose::ExportEscape => format!("{}.png", self.escape.doc.params.family.name()),
+            Purpose::ExportScene => "scene.png".into(),
             _ => String::new(),
         };
         let start = match purpose {
             Purpose::OpenView | Purpose::SaveView | Purpose::ExportEscape => {
                 self.escape.path.clone()
+            }
+            Purpose::OpenScene | Purpose::ExportScene | Purpose::SceneTexture => {
+                self.scene.path.clone()
             }
             _ => self.doc.path.clone(),
         };
@@ -961,6 +969,40 @@ impl UgnisApp {
                         self.message = Some(("Cannot save".into(), format!("{}: {e}", p.display())))
                     }
                 }
+            }
+            Purpose::OpenScene => match io::scene::read(&path) {
+                Ok(l) => {
+                    self.scene
+                        .load(l.scene, l.texture_names, Some(path.clone()));
+                    self.status = format!("Opened {}", path.display());
+                }
+                Err(e) => self.message = Some(("Cannot open".into(), e.to_string())),
+            },
+            Purpose::SceneTexture => self.scene.set_image_texture(&path),
+            Purpose::ExportScene => {
+                let mut p = path;
+                if p.extension().is_none() {
+                    p.set_extension("png");
+                }
+                let scene = self.scene.export_scene();
+                let (tx, rx) = std::sync::mpsc::channel();
+                let out = p.clone();
+                std::thread::spawn(move || {
+                    let r = crate::surface::render(&scene, None)
+                        .ok_or_else(|| "cancelled".to_string())
+                        .and_then(|img| {
+                            let img = image::DynamicImage::ImageRgb8(img);
+                            let res = if io::kind_of(&out) == io::FileKind::Bmp {
+                                io::bmp::save(&out, &img)
+                            } else {
+                                io::png::save(&out, &img, &Default::default())
+                            };
+                            res.map_err(|e| format!("{}: {e}", out.display()))
+                        });
+                    let _ = tx.send(r.map(|()| out));
+                });
+                self.escape_export = Some(rx);
+                self.status = format!("Exporting {}…", p.display());
             }
             Purpose::ExportEscape => {
                 let mut p = path;
@@ -1162,6 +1204,14 @@ impl UgnisApp {
     }
 
     fn status_bar(&mut self, ui: &mut egui::Ui) {
+        if self.tab == Tab::Scene {
+            ui.horizontal(|ui| {
+                ui.label(self.scene.status_text());
+                ui.separator();
+                ui.label(&self.status);
+            });
+            return;
+        }
         if self.tab == Tab::Escape {
             ui.horizontal(|ui| {
                 ui.label(self.escape.status_text());
@@ -1744,10 +1794,16 @@ impl UgnisApp {
                 }
             }
             Tab::Scene => {
-                egui::CentralPanel::default().show(ui, |ui| {
-                    ui.heading("Textured Bezier scenes");
-                    ui.label("3-D scenes wearing fractal textures arrive here (issue #7).");
-                });
+                if let Some(r) = self.scene.ui(ui, self.doc.flame(), &self.escape.doc) {
+                    match r {
+                        SceneRequest::OpenScene => self.browse(Purpose::OpenScene),
+                        SceneRequest::Export => self.browse(Purpose::ExportScene),
+                        SceneRequest::TextureImage => self.browse(Purpose::SceneTexture),
+                    }
+                }
+                if !self.scene.status.is_empty() {
+                    self.status = std::mem::take(&mut self.scene.status);
+                }
             }
         }
         self.dialogs(&ctx);
