@@ -25,7 +25,7 @@ enum Command {
     Render(cli::render::RenderArgs),
     /// List what a flame, IFS or gradient file holds
     Info(cli::info::InfoArgs),
-    /// Convert between file formats (.ifs ↔ .fla/.flame, .png → .fla, .ugr ↔ .map, image → gradient)
+    /// Convert between file formats (.ifs ↔ .fla/.flame, .png → .fla, .ugr ↔ .map ↔ .ggr, image → gradient)
     Convert(cli::convert::ConvertArgs),
     /// Generate a batch of random flames into one .fla, with thumbnails
     Random(cli::random::RandomArgs),

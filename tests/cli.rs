@@ -261,6 +261,20 @@ fn convert_between_formats() {
         .unwrap()
         .value;
     assert_eq!(g[0].rgb8(64), [255, 0, 0]);
+    // .map ↔ .ggr (GIMP) keeps every entry.
+    let (code, _, err) = ugnis(&["convert", &d("h.map"), &d("h.ggr")]);
+    assert_eq!(code, 0, "{err}");
+    let (code, _, err) = ugnis(&["convert", &d("h.ggr"), &d("back.map")]);
+    assert_eq!(code, 0, "{err}");
+    let back = ugnis::io::read_gradients(std::path::Path::new(&d("back.map")))
+        .unwrap()
+        .value;
+    for i in 0..256 {
+        assert_eq!(back[0].rgb8(i), g[0].rgb8(i), "entry {i}");
+    }
+    let (code, out, _) = ugnis(&["info", common::fixture("hand.ggr").to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(out.contains("Dusk (hand-written)"), "{out}");
     // image → gradient
     let (code, _, err) = ugnis(&["convert", &png, &d("from-image.map")]);
     assert_eq!(code, 0, "{err}");

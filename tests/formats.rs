@@ -131,6 +131,27 @@ fn hand_written_gradient_files_load() {
     assert_eq!(u[0].rgb8(255), [255, 255, 255]);
     // sea: keys at slots 0, 85 and 170, wrapping from 170 back to 0.
     assert_eq!(u[1].rgb8(85), [0, 102, 153]);
+    // GIMP: four segments (linear, curved, sine with its middle at the right end, linear
+    // fading to transparent).
+    let g = io::read_gradients(&common::fixture("hand.ggr"))
+        .unwrap()
+        .value;
+    assert_eq!(g.len(), 1);
+    assert_eq!(g[0].name, "Dusk (hand-written)");
+    assert_eq!(g[0].rgb8(0), [0, 0, 0]);
+    assert_eq!(g[0].rgb8(255), [255, 255, 255]);
+    assert_eq!(g[0].colors[255][3], 0.0);
+    // Entry 32 (x = 32/255, linear segment with its middle at 0.125): factor 0.50196.
+    assert_eq!(g[0].rgb8(32), [26, 0, 51]);
+    // Entry 127: curved segment 0.25..0.5 with middle 0.4, factor pos^(ln ½ / ln 0.6).
+    let pos: f64 = (127.0 / 255.0 - 0.25) / 0.25;
+    let f = pos.powf(0.5f64.ln() / 0.6f64.ln());
+    let want = [0.2 + 0.8 * f, 0.4 * f, 0.4 - 0.4 * f];
+    for (got, want) in g[0].colors[127].iter().zip(want) {
+        assert!((got - want).abs() < 1e-9);
+    }
+    // Entry 128 starts the sine segment: its left colour, up to (1 − cos(π·0.0039))/2.
+    assert_eq!(g[0].rgb8(128), [255, 102, 0]);
 }
 
 /// gradients/ holds the built-in gradients as .ugr (all in one file) and one .map each.

@@ -6,7 +6,7 @@ mod common;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
-use ugnis::io::{diag, flam3_xml, ifs, image_in, map, palettes, png, ugr};
+use ugnis::io::{diag, flam3_xml, ggr, ifs, image_in, map, palettes, png, ugr};
 
 const CASES: u32 = 10_000;
 
@@ -195,6 +195,24 @@ fn ugr_parser_never_panics() {
     fuzz("ugr", [4; 32], src, |b| {
         if let Ok(p) = ugr::parse(&text(b), "f.ugr") {
             let _ = ugr::write(&p.value);
+        }
+    });
+}
+
+#[test]
+fn ggr_parser_never_panics() {
+    let src = std::fs::read(common::fixture("hand.ggr")).unwrap();
+    fuzz("ggr", [12; 32], src, |b| {
+        if let Ok(p) = ggr::parse(&text(b), "f.ggr", "f") {
+            assert_eq!(p.value.colors.len(), 256);
+            assert!(
+                p.value
+                    .colors
+                    .iter()
+                    .flatten()
+                    .all(|v| (0.0..=1.0).contains(v))
+            );
+            let _ = ggr::write(&p.value);
         }
     });
 }

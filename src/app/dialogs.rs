@@ -43,7 +43,7 @@ impl Purpose {
         match self {
             Purpose::Open => &["fla", "flame", "flam3", "xml", "ifs", "png"],
             Purpose::SaveAs => &["fla", "flame", "flam3", "ifs"],
-            Purpose::LoadGradient => &["ugr", "map", "gradient"],
+            Purpose::LoadGradient => &["ugr", "map", "ggr", "gradient"],
             Purpose::GradientFromImage => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::Export | Purpose::ExportEscape | Purpose::ExportScene => &["png", "bmp"],
             Purpose::OpenScene => &["toml"],

@@ -1110,7 +1110,9 @@ impl UgnisApp {
         });
         if let Some(p) = dropped.into_iter().next() {
             match io::kind_of(&p) {
-                io::FileKind::Ugr | io::FileKind::Map => self.file_chosen(Purpose::LoadGradient, p),
+                io::FileKind::Ugr | io::FileKind::Map | io::FileKind::Ggr => {
+                    self.file_chosen(Purpose::LoadGradient, p)
+                }
                 io::FileKind::Jpeg | io::FileKind::Gif | io::FileKind::Bmp => {
                     self.file_chosen(Purpose::GradientFromImage, p)
                 }

@@ -1,4 +1,4 @@
-//! `ugnis convert`: between .ifs and .fla/.flame, between .ugr and .map, from a PNG with an
+//! `ugnis convert`: between .ifs and .fla/.flame, between .ugr, .map and .ggr, from a PNG with an
 //! embedded flame to .fla, and from an image to a gradient.
 
 use std::path::PathBuf;
@@ -73,16 +73,17 @@ pub fn run(a: ConvertArgs) -> Result<()> {
         }
         return Ok(());
     }
-    if matches!(ko, FileKind::Ugr | FileKind::Map) {
+    if matches!(ko, FileKind::Ugr | FileKind::Map | FileKind::Ggr) {
         let p = io::read_gradients(&a.input)?;
         for w in &p.warnings {
             eprintln!("{w}");
         }
-        let gradients = if ko == FileKind::Map && p.value.len() > 1 {
+        let gradients = if ko != FileKind::Ugr && p.value.len() > 1 {
             eprintln!(
-                "warning: {} holds {} gradients; a .map keeps one, writing the first ('{}')",
+                "warning: {} holds {} gradients; a .{} keeps one, writing the first ('{}')",
                 a.input.display(),
                 p.value.len(),
+                if ko == FileKind::Map { "map" } else { "ggr" },
                 p.value[0].name
             );
             p.value[..1].to_vec()
@@ -93,7 +94,7 @@ pub fn run(a: ConvertArgs) -> Result<()> {
         return Ok(());
     }
     bail!(
-        "cannot convert {} to {}: supported are .ifs ↔ .fla/.flame, .png (with a flame) → .fla, .ugr ↔ .map, image → .ugr/.map",
+        "cannot convert {} to {}: supported are .ifs ↔ .fla/.flame, .png (with a flame) → .fla, .ugr ↔ .map ↔ .ggr, image → .ugr/.map/.ggr",
         a.input.display(),
         a.output.display()
     )

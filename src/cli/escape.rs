@@ -47,7 +47,7 @@ pub struct EscapeArgs {
     /// smooth, bands, distance, histogram or basins
     #[arg(long)]
     pub coloring: Option<String>,
-    /// A built-in gradient name or a .ugr/.map/image file
+    /// A built-in gradient name or a .ugr/.map/.ggr/image file
     #[arg(long)]
     pub gradient: Option<String>,
     /// Gradient offset (fraction 0–1)

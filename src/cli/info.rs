@@ -9,7 +9,7 @@ use ugnis::io::{self, FileKind};
 
 #[derive(Args, Debug)]
 pub struct InfoArgs {
-    /// A flame (.fla/.flame/.flam3/.png), IFS (.ifs) or gradient (.ugr/.map) file
+    /// A flame (.fla/.flame/.flam3/.png), IFS (.ifs) or gradient (.ugr/.map/.ggr) file
     pub file: PathBuf,
 }
 
@@ -35,7 +35,7 @@ pub fn run(a: InfoArgs) -> Result<()> {
                 );
             }
         }
-        FileKind::Ugr | FileKind::Map => {
+        FileKind::Ugr | FileKind::Map | FileKind::Ggr => {
             let p = io::read_gradients(path)?;
             for w in &p.warnings {
                 eprintln!("{w}");

@@ -545,7 +545,7 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
     })
 }
 
-/// A gradient by built-in name or by file (.ugr, .map, or an image), relative to `base`.
+/// A gradient by built-in name or by file (.ugr, .map, .ggr, or an image), relative to `base`.
 pub fn resolve_gradient(s: &str, base: Option<&Path>) -> Result<Gradient, String> {
     if let Some(g) = gradient::builtin_named(s) {
         return Ok(g);

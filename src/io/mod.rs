@@ -6,6 +6,7 @@ pub mod bmp;
 pub mod diag;
 pub mod escape_view;
 pub mod flam3_xml;
+pub mod ggr;
 pub mod ifs;
 pub mod image_in;
 pub mod map;
@@ -63,6 +64,8 @@ pub enum FileKind {
     Ifs,
     Ugr,
     Map,
+    /// GIMP gradient (.ggr)
+    Ggr,
     Bmp,
     Jpeg,
     Gif,
@@ -83,6 +86,7 @@ pub fn kind_of(path: &Path) -> FileKind {
         "ifs" => FileKind::Ifs,
         "ugr" | "gradient" => FileKind::Ugr,
         "map" => FileKind::Map,
+        "ggr" => FileKind::Ggr,
         "bmp" => FileKind::Bmp,
         "jpg" | "jpeg" => FileKind::Jpeg,
         "gif" => FileKind::Gif,
@@ -165,7 +169,8 @@ pub fn ifs_flames_with(
     })
 }
 
-/// Read the gradients of a gradient file (.ugr: several; .map: one) or make one from an image.
+/// Read the gradients of a gradient file (.ugr: several; .map, .ggr: one) or make one from an
+/// image.
 pub fn read_gradients(path: &Path) -> Result<Parsed<Vec<crate::gradient::Gradient>>, Diagnostic> {
     let name = path.display().to_string();
     let stem = path
@@ -198,6 +203,15 @@ pub fn read_gradients(path: &Path) -> Result<Parsed<Vec<crate::gradient::Gradien
                 warnings: p.warnings.into_iter().chain(w).collect(),
             })
         }
+        FileKind::Ggr => {
+            let bytes = read_bytes(path)?;
+            let (text, w) = diag::decode_text(&bytes, &name);
+            let p = ggr::parse(&text, &name, &stem)?;
+            Ok(Parsed {
+                value: vec![p.value],
+                warnings: p.warnings.into_iter().chain(w).collect(),
+            })
+        }
         FileKind::Png | FileKind::Bmp | FileKind::Jpeg | FileKind::Gif => Ok(Parsed {
             value: vec![image_in::gradient_from_image(path, 1)?],
             warnings: Vec::new(),
@@ -206,12 +220,12 @@ pub fn read_gradients(path: &Path) -> Result<Parsed<Vec<crate::gradient::Gradien
             &name,
             Pos::File,
             "IO003",
-            "not a gradient file (expected .ugr, .map, or an image)",
+            "not a gradient file (expected .ugr, .map, .ggr, or an image)",
         )),
     }
 }
 
-/// Write gradients atomically as .ugr (any number) or .map (exactly one).
+/// Write gradients atomically as .ugr (any number), .map or .ggr (exactly one).
 pub fn write_gradients(path: &Path, gradients: &[crate::gradient::Gradient]) -> Result<(), String> {
     let text = match kind_of(path) {
         FileKind::Ugr => ugr::write(gradients),
@@ -224,9 +238,18 @@ pub fn write_gradients(path: &Path, gradients: &[crate::gradient::Gradient]) -> 
                 ));
             }
         },
+        FileKind::Ggr => match gradients {
+            [g] => ggr::write(g),
+            _ => {
+                return Err(format!(
+                    "a .ggr file holds one gradient; {} given (use .ugr)",
+                    gradients.len()
+                ));
+            }
+        },
         _ => {
             return Err(format!(
-                "{}: gradients are saved as .ugr or .map",
+                "{}: gradients are saved as .ugr, .map or .ggr",
                 path.display()
             ));
         }
