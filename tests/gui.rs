@@ -411,6 +411,57 @@ fn mutation_window_makes_a_mutant_current_and_undo_returns() {
     assert_eq!(h.state().doc.flame(), &before);
 }
 
+#[test]
+fn morph_plays_in_betweens_to_the_next_flame_without_editing() {
+    let mut h = harness(Start::File(example("gallery.fla")));
+    assert_eq!(h.state().doc.flames.len(), 4);
+    let before = h.state().doc.flame().clone();
+    h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::M);
+    h.run_steps(2);
+    let m = h
+        .state()
+        .morph
+        .as_ref()
+        .expect("Ctrl+Shift+M starts the morph");
+    assert_eq!(m.frames.len(), ugnis::app::MORPH_FRAMES);
+    // The first frame is the current flame: its xforms, then the next flame's extra ones
+    // faded out to weight 0.
+    let n0 = before.xforms.len();
+    assert!(m.frames[0].xforms[..n0] == before.xforms[..]);
+    assert!(m.frames[0].xforms[n0..].iter().all(|x| x.weight == 0.0));
+    let next = &h.state().doc.flames[1];
+    let last = &m.frames[m.frames.len() - 1];
+    assert_eq!(
+        last.xforms.len(),
+        next.xforms.len().max(before.xforms.len())
+    );
+    assert_eq!(last.palette, next.palette);
+    // The preview plays the frames (each waits for the previous one to be shown).
+    let mut seen = 0;
+    for _ in 0..400 {
+        h.run_steps(1);
+        seen = seen.max(h.state().morph.as_ref().unwrap().index);
+        if seen >= 3 {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(25));
+    }
+    assert!(seen >= 3, "the morph did not advance");
+    assert!(h.state().status.contains("orchid -> ember-swirl"));
+    // The document is untouched; any edit stops the morph.
+    assert!(h.state().doc.flame() == &before);
+    assert!(!h.state().doc.dirty);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::R);
+    h.run_steps(3);
+    assert!(h.state().morph.is_none());
+    // A single flame has nothing to morph to.
+    let mut h = open("sierpinski.flame");
+    h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::M);
+    h.run_steps(2);
+    assert!(h.state().morph.is_none());
+    assert!(h.state().status.contains("two or more flames"));
+}
+
 fn escape_tab() -> Harness<'static, UgnisApp> {
     let mut h = open("sierpinski.flame");
     h.get_by_role_and_label(Role::Button, "Escape-time").click();

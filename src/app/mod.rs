@@ -103,6 +103,8 @@ pub enum Action {
     ShowMutations,
     RandomFlame,
     ToggleAnimate,
+    /// Play flam3-style in-betweens from the current flame to the next one of the file.
+    ToggleMorph,
     RandomWeights,
     EqualWeights,
     AreaWeights,
@@ -263,6 +265,12 @@ pub const MENU: &[MenuItem] = &[
     },
     MenuItem {
         menu: "Tools",
+        label: "Morph to next flame",
+        action: Action::ToggleMorph,
+        shortcut: sc(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::M),
+    },
+    MenuItem {
+        menu: "Tools",
         label: "Random weights",
         action: Action::RandomWeights,
         shortcut: None,
@@ -328,6 +336,21 @@ struct Animation {
     waiting_for: u64,
 }
 
+/// In-betweens from one flame of the file to the next, played forth and back in the preview;
+/// the document is not changed.
+pub struct Morph {
+    /// The flame being edited when the morph started (any edit stops the morph).
+    source: Flame,
+    pub frames: Vec<Flame>,
+    pub index: usize,
+    forward: bool,
+    waiting_for: u64,
+    label: String,
+}
+
+/// Frames in one direction of a morph (about 4 s at the animation density).
+pub const MORPH_FRAMES: usize = 60;
+
 struct Preview {
     worker: PreviewWorker,
     texture: Option<egui::TextureHandle>,
@@ -383,6 +406,7 @@ pub struct UgnisApp {
     export_job: Option<ExportJob>,
     batch_job: Option<Receiver<Vec<Flame>>>,
     animation: Option<Animation>,
+    pub morph: Option<Morph>,
     rng: FastRng,
     allow_close: bool,
     expect_paste: bool,
@@ -518,6 +542,7 @@ impl UgnisApp {
             export_job: None,
             batch_job: None,
             animation: None,
+            morph: None,
             rng: FastRng::new(seed_from_time()),
             allow_close: false,
             expect_paste: false,
@@ -696,6 +721,7 @@ impl UgnisApp {
             Action::ShowMutations => self.mutations.open = !self.mutations.open,
             Action::RandomFlame => self.random_flame(),
             Action::ToggleAnimate => self.toggle_animation(),
+            Action::ToggleMorph => self.toggle_morph(),
             Action::RandomWeights => {
                 let mut rng = FastRng::new(self.rng.u64());
                 self.doc.edit(|f| {
@@ -775,7 +801,71 @@ impl UgnisApp {
         self.status = "Generating a random batch…".into();
     }
 
+    fn toggle_morph(&mut self) {
+        if self.morph.take().is_some() {
+            self.status = "Morph stopped".into();
+            return;
+        }
+        let n = self.doc.flames.len();
+        if n < 2 {
+            self.status = "Morphing needs a file with two or more flames".into();
+            return;
+        }
+        if let Some(a) = self.animation.take() {
+            self.doc.end_gesture(a.before);
+        }
+        let a = self.doc.flame().clone();
+        let b = &self.doc.flames[(self.doc.current + 1) % n];
+        let name = |f: &Flame| {
+            if f.name.is_empty() {
+                "(unnamed)".to_string()
+            } else {
+                f.name.clone()
+            }
+        };
+        let label = format!("{} -> {}", name(&a), name(b));
+        self.morph = Some(Morph {
+            frames: crate::flame::animate::interpolation_frames(
+                &[a.clone(), b.clone()],
+                MORPH_FRAMES,
+            ),
+            source: a,
+            index: 0,
+            forward: true,
+            waiting_for: 0,
+            label: label.clone(),
+        });
+        self.status = format!("Morphing {label}");
+    }
+
+    fn morph_step(&mut self) {
+        let Some(m) = self.morph.as_mut() else {
+            return;
+        };
+        if self.doc.flame() != &m.source {
+            self.morph = None;
+            self.status = "Morph stopped (the flame changed)".into();
+            return;
+        }
+        if let Some(p) = &self.preview
+            && p.shown_generation < m.waiting_for
+        {
+            return;
+        }
+        let last = m.frames.len() - 1;
+        if m.forward && m.index == last {
+            m.forward = false;
+        } else if !m.forward && m.index == 0 {
+            m.forward = true;
+        }
+        m.index = if m.forward { m.index + 1 } else { m.index - 1 }.min(last);
+        if let Some(p) = &self.preview {
+            m.waiting_for = p.generation + 1;
+        }
+    }
+
     fn toggle_animation(&mut self) {
+        self.morph = None;
         if let Some(a) = self.animation.take() {
             // Stopping keeps the coefficients; one undo step returns to the start.
             self.doc.end_gesture(a.before);
@@ -1149,6 +1239,7 @@ impl UgnisApp {
                             Action::ToggleFilePanel => Some(self.show_files),
                             Action::ToggleEditor => Some(self.show_editor),
                             Action::ToggleAnimate => Some(self.animation.is_some()),
+                            Action::ToggleMorph => Some(self.morph.is_some()),
                             _ => None,
                         };
                         let mut b = egui::Button::new(m.label).selected(checked == Some(true));
@@ -1252,6 +1343,15 @@ impl UgnisApp {
                         p.elapsed_ms
                     ));
                 }
+                ui.separator();
+            }
+            if let Some(m) = &self.morph {
+                ui.label(format!(
+                    "morph {}  {}/{}",
+                    m.label,
+                    m.index + 1,
+                    m.frames.len()
+                ));
                 ui.separator();
             }
             if let Some(j) = &self.export_job {
@@ -1394,7 +1494,10 @@ impl UgnisApp {
 
     fn preview_panel(&mut self, ui: &mut egui::Ui, dragging: bool) {
         let avail = ui.available_size();
-        let f = self.doc.flame().clone();
+        let f = match &self.morph {
+            Some(m) => m.frames[m.index].clone(),
+            None => self.doc.flame().clone(),
+        };
         // The preview keeps the flame's aspect ratio and is at most preview_size pixels.
         let ppp = ui.ctx().pixels_per_point();
         let aspect = f.width as f32 / f.height.max(1) as f32;
@@ -1411,10 +1514,11 @@ impl UgnisApp {
         }
         let px = [(w * ppp).max(16.0) as u32, (h * ppp).max(12.0) as u32];
         if let Some(p) = &mut self.preview {
-            let quick = dragging || self.animation.is_some();
+            let animating = self.animation.is_some() || self.morph.is_some();
+            let quick = dragging || animating;
             let first = self.options.preview_quality.min(f.quality);
             let final_q = if quick {
-                if self.animation.is_some() {
+                if animating {
                     self.options.animation_quality
                 } else {
                     self.options.preview_quality
@@ -1442,7 +1546,7 @@ impl UgnisApp {
                         flame: f.clone(),
                         width: px[0],
                         height: px[1],
-                        first_quality: if self.animation.is_some() {
+                        first_quality: if animating {
                             self.options.animation_quality
                         } else {
                             first
@@ -1811,6 +1915,10 @@ impl UgnisApp {
         self.dialogs(&ctx);
         if self.animation.is_some() {
             self.animate_step();
+            ctx.request_repaint();
+        }
+        if self.morph.is_some() {
+            self.morph_step();
             ctx.request_repaint();
         }
     }
