@@ -6,7 +6,7 @@ mod common;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
-use ugnis::io::{diag, flam3_xml, ggr, ifs, image_in, map, palettes, png, ugr};
+use ugnis::io::{diag, escape_view, flam3_xml, ggr, ifs, image_in, map, palettes, png, scene, ugr};
 
 const CASES: u32 = 10_000;
 
@@ -215,6 +215,42 @@ fn ggr_parser_never_panics() {
             let _ = ggr::write(&p.value);
         }
     });
+}
+
+#[test]
+fn escape_view_parser_never_panics() {
+    let mut src = Vec::new();
+    for f in ["seahorse.esc", "galaxy.esc", "newton-septic.esc"] {
+        src.extend(std::fs::read(common::root().join("examples").join(f)).unwrap());
+    }
+    fuzz("esc", [13; 32], src, |b| {
+        if let Ok(p) = escape_view::parse(&text(b), "f.esc", None) {
+            let _ = escape_view::write(&p.value);
+        }
+    });
+}
+
+/// Scenes build their textures while loading, so the cases are fewer (each still parses,
+/// validates and builds geometry and a small checker texture).
+#[test]
+fn scene_parser_never_panics() {
+    let src = std::fs::read(common::root().join("examples/teapot.toml")).unwrap();
+    let base = common::root().join("examples");
+    let cases = (cases() / 5).max(1);
+    let mut runner = TestRunner::new_with_rng(
+        Config {
+            cases,
+            failure_persistence: None,
+            ..Config::default()
+        },
+        TestRng::from_seed(RngAlgorithm::ChaCha, &[14; 32]),
+    );
+    runner
+        .run(&edits(), |e| {
+            let _ = scene::parse(&text(&apply(&src, &e)), "f.toml", &base);
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("scene: {e}"));
 }
 
 #[test]

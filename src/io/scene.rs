@@ -420,12 +420,74 @@ fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
     })
 }
 
+/// The first bare `nan`/`inf` value of a TOML text (TOML allows them; no scene setting
+/// does): its byte offset and spelling. Strings and comments are skipped.
+fn non_finite_value(text: &str) -> Option<(usize, &str)> {
+    const BAD: [&str; 6] = ["nan", "+nan", "-nan", "inf", "+inf", "-inf"];
+    let b = text.as_bytes();
+    let mut i = 0;
+    // After '=', '[' or ',' a value may start.
+    let mut value_pos = false;
+    while i < b.len() {
+        match b[i] {
+            b'#' => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            q @ (b'"' | b'\'') => {
+                i += 1;
+                while i < b.len() && b[i] != q {
+                    if q == b'"' && b[i] == b'\\' {
+                        i += 1;
+                    }
+                    i += 1;
+                }
+                i += 1;
+                value_pos = false;
+            }
+            b'=' | b'[' | b',' => {
+                value_pos = true;
+                i += 1;
+            }
+            b'{' | b'}' | b']' => {
+                value_pos = false;
+                i += 1;
+            }
+            c if c.is_ascii_whitespace() => i += 1,
+            _ => {
+                let start = i;
+                while i < b.len()
+                    && !b[i].is_ascii_whitespace()
+                    && !matches!(b[i], b',' | b']' | b'}' | b'=' | b'[' | b'{' | b'#')
+                {
+                    i += 1;
+                }
+                let tok = &text[start..i];
+                if value_pos && BAD.contains(&tok) {
+                    return Some((start, tok));
+                }
+                value_pos = false;
+            }
+        }
+    }
+    None
+}
+
 /// Parse a scene. `base` is the directory for relative files.
 pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnostic> {
     let map = SourceMap::new(text);
     let at = |span: Option<std::ops::Range<usize>>| span.map_or(Pos::File, |s| map.pos(s.start));
     let spec: SceneSpec = toml::from_str(text)
         .map_err(|e| Diagnostic::error(name, at(e.span()), "SCN001", e.message().to_string()))?;
+    if let Some((off, tok)) = non_finite_value(text) {
+        return Err(Diagnostic::error(
+            name,
+            map.pos(off),
+            "SCN001",
+            format!("'{tok}' is not a finite number; expected a number"),
+        ));
+    }
     let mut scene = Scene::default();
     let img = spec.image.unwrap_or_default();
     if let Some([w, h]) = img.size {
@@ -669,6 +731,12 @@ texture = "cells"
                 "3k + 1",
             ),
             ("[image]\nsize = [10, 10\n", "SCN001", ""),
+            ("[image]\nbackground = [0, -inf, 0]\n", "SCN001", "'-inf'"),
+            (
+                "# nan = inf\n[[light]]\nposition = [1, 2, 3]\nintensity = nan\n",
+                "SCN001",
+                "'nan'",
+            ),
             ("[image]\nsizes = [10, 10]\n", "SCN001", "sizes"),
         ] {
             let e = parse(text, "s.toml", Path::new("/nonexistent"))
