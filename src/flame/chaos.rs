@@ -62,10 +62,7 @@ pub fn adjust_opacity(o: f64) -> f64 {
 impl CompiledXform {
     pub fn new(x: &Xform, opacity: f64) -> Self {
         let mut vars = Vec::with_capacity(x.vars.len());
-        let mut needs = Needs {
-            sqrt: true,
-            ..Needs::default()
-        };
+        let mut needs = Needs::default();
         let mut pre_blur = 0.0;
         for v in &x.vars {
             if v.weight == 0.0 || !variations::is_implemented(v.id) {
@@ -231,9 +228,12 @@ impl CompiledXform {
         }
         let (x, y) = (&g.x[..n], &g.y[..n]);
         let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
-        for j in 0..n {
-            sumsq[j] = x[j] * x[j] + y[j] * y[j];
-            sqrt[j] = sumsq[j].sqrt();
+        // r² and r for the variations that read them (sin/cos of the angle divide by r).
+        if self.needs.sqrt || self.needs.sincos_a {
+            for j in 0..n {
+                sumsq[j] = x[j] * x[j] + y[j] * y[j];
+                sqrt[j] = sumsq[j].sqrt();
+            }
         }
         if self.needs.atan {
             let at = &mut g.atan[..n];

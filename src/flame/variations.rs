@@ -277,6 +277,8 @@ impl Needs {
             ..Needs::default()
         };
         match id {
+            // Formulas that read neither r² nor r: the batch path skips computing them.
+            LINEAR | SINUSOIDAL | BENT | WAVES | POPCORN | EXPONENTIAL | COSINE => n.sqrt = false,
             POLAR | HANDKERCHIEF | HEART | DISC | EX | JULIA | FAN | FAN2 | DISC2 | POLAR2 => {
                 n.atan = true;
             }
