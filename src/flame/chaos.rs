@@ -524,7 +524,7 @@ impl Chaos {
     /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; only the
     /// orbit restarts every 10 000 samples are replaced by 256 long orbits per worker.
     /// Returns the number of bad values.
-    pub fn run_lanes<F: FnMut(f64, f64, f64, f64)>(
+    pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64])>(
         &self,
         n: u64,
         rng: &mut FastRng,
@@ -622,7 +622,6 @@ impl Chaos {
             }
             // Bad-value retries, step counting, and the points to plot.
             let mut nf = 0usize;
-            let direct = self.final_xform.is_none();
             for l in 0..LANES {
                 if ln.bad[l] {
                     ln.consec[l] += 1;
@@ -636,17 +635,12 @@ impl Chaos {
                 ln.last[l] = ch;
                 if ln.step[l] >= 0 {
                     if plotted < n {
-                        let vis = self.xforms[ch as usize].vis;
-                        if direct {
-                            plot(ln.x[l], ln.y[l], ln.c[l], vis);
-                        } else {
-                            let k = nf & M;
-                            ln.fin.x[k] = ln.x[l];
-                            ln.fin.y[k] = ln.y[l];
-                            ln.fin.c[k] = ln.c[l];
-                            ln.fin_vis[k] = vis;
-                            nf += 1;
-                        }
+                        let k = nf & M;
+                        ln.fin.x[k] = ln.x[l];
+                        ln.fin.y[k] = ln.y[l];
+                        ln.fin.c[k] = ln.c[l];
+                        ln.fin_vis[k] = self.xforms[ch as usize].vis;
+                        nf += 1;
                         plotted += 1;
                     }
                 } else {
@@ -679,10 +673,8 @@ impl Chaos {
                     }
                 }
             }
-            let fin = &ln.fin;
-            for j in 0..nf.min(LANES) {
-                plot(fin.x[j], fin.y[j], fin.c[j], ln.fin_vis[j]);
-            }
+            let (fin, m) = (&ln.fin, nf.min(LANES));
+            plot(&fin.x[..m], &fin.y[..m], &fin.c[..m], &ln.fin_vis[..m]);
         }
         bad
     }
@@ -780,7 +772,11 @@ mod tests {
                     sxx += (x.abs() < 0.5) as u8 as f64;
                 };
                 if lanes {
-                    ch.run_lanes(10_000, &mut rng, &mut sc, &mut plot);
+                    ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, cs, vs| {
+                        for j in 0..xs.len() {
+                            plot(xs[j], ys[j], cs[j], vs[j]);
+                        }
+                    });
                 } else {
                     ch.run_sub_batch(10_000, &mut rng, &mut plot);
                 }

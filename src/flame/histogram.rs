@@ -84,6 +84,22 @@ impl Geometry {
         flame.width as f64 * flame.height as f64 / (ppu * ppu)
     }
 
+    /// As [`Geometry::bucket_of`] without a branch: the index (meaningless when outside)
+    /// and whether the point falls inside the bucket grid.
+    #[inline(always)]
+    pub fn bucket_index(&self, x: f64, y: f64) -> (usize, bool) {
+        let (bx, by) = self.bucket_from_world.apply(x, y);
+        let ix = ((bx + 1.0) as i64).wrapping_sub(1);
+        let iy = ((by + 1.0) as i64).wrapping_sub(1);
+        let inside = ((ix as u64) < self.bw as u64) & ((iy as u64) < self.bh as u64);
+        (
+            (iy as usize)
+                .wrapping_mul(self.bw)
+                .wrapping_add(ix as usize),
+            inside,
+        )
+    }
+
     /// Bucket index of a world point, if it falls inside the bucket grid.
     #[inline(always)]
     pub fn bucket_of(&self, x: f64, y: f64) -> Option<usize> {

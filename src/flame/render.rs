@@ -520,12 +520,17 @@ fn iterate_into(
     rng: &mut FastRng,
 ) -> u64 {
     buf.clear();
-    let bad = chaos.run_lanes(n, rng, lanes, |x, y, c, vis| {
-        if vis > 0.0
-            && let Some(idx) = geom.bucket_of(x, y)
-        {
-            buf.push((idx as u32, c as f32, vis as f32));
+    let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, cs, vs| {
+        // Branch-free compaction of the visible points that land in the histogram.
+        const L: usize = crate::flame::chaos::LANES;
+        let mut tmp = [(0u32, 0f32, 0f32); L];
+        let mut k = 0;
+        for j in 0..xs.len().min(L) {
+            let (idx, inside) = geom.bucket_index(xs[j], ys[j]);
+            tmp[k & (L - 1)] = (idx as u32, cs[j] as f32, vs[j] as f32);
+            k += (inside & (vs[j] > 0.0)) as usize;
         }
+        buf.extend_from_slice(&tmp[..k.min(L)]);
     });
     accumulate(pal, hist, buf);
     bad
