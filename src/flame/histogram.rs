@@ -89,6 +89,8 @@ impl Geometry {
     #[inline(always)]
     pub fn bucket_index(&self, x: f64, y: f64) -> (usize, bool) {
         let (bx, by) = self.bucket_from_world.apply(x, y);
+        // floor(v) = trunc(v + 1) − 1 for v > −1, and anything ≤ −1 maps to a negative
+        // value: one saturating conversion per axis (NaN → −1), then unsigned range checks.
         let ix = ((bx + 1.0) as i64).wrapping_sub(1);
         let iy = ((by + 1.0) as i64).wrapping_sub(1);
         let inside = ((ix as u64) < self.bw as u64) & ((iy as u64) < self.bh as u64);
@@ -103,16 +105,8 @@ impl Geometry {
     /// Bucket index of a world point, if it falls inside the bucket grid.
     #[inline(always)]
     pub fn bucket_of(&self, x: f64, y: f64) -> Option<usize> {
-        let (bx, by) = self.bucket_from_world.apply(x, y);
-        // floor(v) = trunc(v + 1) − 1 for v > −1, and anything ≤ −1 maps to a negative
-        // value: one saturating conversion per axis (NaN → −1), then unsigned range checks.
-        let ix = ((bx + 1.0) as i64).wrapping_sub(1);
-        let iy = ((by + 1.0) as i64).wrapping_sub(1);
-        if (ix as u64) < self.bw as u64 && (iy as u64) < self.bh as u64 {
-            Some(iy as usize * self.bw + ix as usize)
-        } else {
-            None
-        }
+        let (i, inside) = self.bucket_index(x, y);
+        inside.then_some(i)
     }
 }
 
