@@ -496,6 +496,39 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(image::open(&again).unwrap().to_rgb8(), img);
+    // Deep zoom: a 1e-18 view of the Mandelbrot set renders, and its view file keeps the
+    // centre's 32 digits.
+    let deep_png = dir.join("deep.png");
+    let deep_esc = dir.join("deep.esc");
+    let (code, _, err) = ugnis(&[
+        "escape",
+        "mandelbrot",
+        "--center=-0.743643887037158704752191506114774,0.131825904205311970493132056385139",
+        "--width",
+        "1e-18",
+        "--max-iter",
+        "12000",
+        "--size",
+        "48x36",
+        "-o",
+        deep_png.to_str().unwrap(),
+        "--save-view",
+        deep_esc.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let deep = image::open(&deep_png).unwrap().to_rgb8();
+    let mut colours: Vec<[u8; 3]> = deep.pixels().map(|p| p.0).collect();
+    colours.sort();
+    colours.dedup();
+    assert!(
+        colours.len() > 50,
+        "a deep view has structure, not one colour"
+    );
+    let text = std::fs::read_to_string(&deep_esc).unwrap();
+    assert!(
+        text.contains("center = -0.7436438870371587047521915061147"),
+        "{text}"
+    );
     // Every kind renders.
     for (kind, extra) in [
         ("julia", vec!["--c=-0.8,0.156"]),
@@ -536,7 +569,9 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
         (
             vec![
                 "escape",
-                "mandelbrot",
+                "multibrot",
+                "--power",
+                "3",
                 "--width",
                 "1e-14",
                 "--center",
@@ -544,7 +579,20 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
                 "-o",
                 "x.png",
             ],
-            "limit",
+            "limit of 64-bit",
+        ),
+        (
+            vec![
+                "escape",
+                "mandelbrot",
+                "--width",
+                "1e-30",
+                "--center",
+                "0.3,0",
+                "-o",
+                "x.png",
+            ],
+            "deep-zoom limit",
         ),
         (
             vec!["escape", "warped-julia", "--alpha", "1,0", "-o", "x.png"],

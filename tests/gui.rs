@@ -515,6 +515,59 @@ fn escape_tab_clicks_open_julia_sets_and_back_returns() {
 }
 
 #[test]
+fn escape_tab_zooms_past_f64_by_perturbation() {
+    let mut h = escape_tab();
+    let c = ugnis::io::escape_view::parse_center(
+        "-0.743643887037158704752191506114774, 0.131825904205311970493132056385139",
+    )
+    .unwrap();
+    {
+        let e = &mut h.state_mut().escape;
+        e.doc.view = e.doc.view.with_center_dd(c);
+        e.doc.view.half_height = 1e-11;
+    }
+    h.run_steps(2);
+    let (w, ht) = (h.state().escape.doc.width, h.state().escape.doc.height);
+    let mid = [w as f64 / 2.0, ht as f64 / 2.0];
+    // Twenty doublings at the centre: 1e-11 → 1e-17, far past the f64 limit.
+    for _ in 0..20 {
+        h.state_mut().escape.zoom_at(mid, 2.0);
+    }
+    h.run_steps(2);
+    let v1 = h.state().escape.doc.view;
+    assert!(v1.half_height < 1e-16, "{v1:?}");
+    assert!(
+        !h.state().escape.status.contains("limit"),
+        "{}",
+        h.state().escape.status
+    );
+    assert!(
+        h.state()
+            .escape
+            .status_text()
+            .contains("deep zoom, centre -0.74364388703715870475")
+    );
+    // A drag pans by exactly the dragged pixels, although the f64 centre cannot move.
+    let p = escape_canvas_point(&h, 0.5, 0.5);
+    let q = p + Vec2::new(80.0, 0.0);
+    drag(&mut h, p, q);
+    h.run_steps(2);
+    let v2 = h.state().escape.doc.view;
+    assert_eq!(v2.center, v1.center);
+    let moved = v1.pixel_of(&v2, 0.0, 0.0, w, ht)[0] - 0.5;
+    let ppp = h.ctx.pixels_per_point() as f64;
+    assert!((moved + 80.0 * ppp).abs() < 1.0, "moved {moved} pixels");
+    // Past the double-double limit the zoom stops with a message.
+    h.state_mut().escape.zoom_at(mid, 1e13);
+    assert!(
+        h.state().escape.status.contains("deep-zoom limit"),
+        "{}",
+        h.state().escape.status
+    );
+    assert_eq!(h.state().escape.doc.view, v2);
+}
+
+#[test]
 fn escape_tab_rectangle_zoom_and_pan() {
     let mut h = escape_tab();
     let v0 = h.state().escape.doc.view;

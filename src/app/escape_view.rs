@@ -326,10 +326,7 @@ impl EscapeTab {
         d.width = self.doc.width;
         d.height = self.doc.height;
         let (c, hh) = d.params.family.default_view();
-        d.view = View {
-            center: c,
-            half_height: hh,
-        };
+        d.view = View::new(c, hh);
         if let Family::Newton { coeffs } = &d.params.family {
             self.poly_text = escape_view::write(&d)
                 .lines()
@@ -349,10 +346,7 @@ impl EscapeTab {
         let mut d = self.doc.clone();
         d.params.family = Family::Julia { power, c };
         let (center, hh) = d.params.family.default_view();
-        d.view = View {
-            center,
-            half_height: hh,
-        };
+        d.view = View::new(center, hh);
         self.doc = d;
         self.status = format!("Julia set for c = {:.6} {:+.6}i", c.re, c.im);
     }
@@ -366,7 +360,12 @@ impl EscapeTab {
             .doc
             .view
             .zoomed_at(px[0], px[1], self.doc.width, self.doc.height, factor);
-        if let Err(e) = crate::escape::render::check_view(&v, self.doc.width, self.doc.height) {
+        if let Err(e) = crate::escape::render::check_view_for(
+            &self.doc.params.family,
+            &v,
+            self.doc.width,
+            self.doc.height,
+        ) {
             self.status = e.to_string();
             return;
         }
@@ -401,10 +400,7 @@ impl EscapeTab {
             if ui.button("Reset view").clicked() {
                 let (c, hh) = self.doc.params.family.default_view();
                 self.push_history();
-                self.doc.view = View {
-                    center: c,
-                    half_height: hh,
-                };
+                self.doc.view = View::new(c, hh);
             }
         });
         ui.separator();
@@ -647,14 +643,7 @@ impl EscapeTab {
                         let (jc, hh) = jp.family.default_view();
                         let size = [240u32, 180u32];
                         if let Some(d) = &mut self.julia {
-                            d.request(
-                                &jp,
-                                View {
-                                    center: jc,
-                                    half_height: hh,
-                                },
-                                size,
-                            );
+                            d.request(&jp, View::new(jc, hh), size);
                             d.poll(&ctx, "escape-julia");
                             if let Some(t) = &d.texture {
                                 ui.image((t.id(), Vec2::new(240.0, 180.0)));
@@ -729,13 +718,7 @@ impl EscapeTab {
             {
                 let d = (now - origin) * ppp;
                 let px = self.doc.view.pixel_size(self.doc.height);
-                self.doc.view = View {
-                    center: [
-                        v0.center[0] - d.x as f64 * px,
-                        v0.center[1] + d.y as f64 * px,
-                    ],
-                    half_height: v0.half_height,
-                };
+                self.doc.view = v0.shifted(-d.x as f64 * px, d.y as f64 * px);
             }
             if resp.drag_stopped_by(egui::PointerButton::Primary) {
                 self.pan_start = None;
@@ -749,7 +732,7 @@ impl EscapeTab {
                 let r = Rect::from_two_pos(a, b);
                 if r.width() > 4.0 && r.height() > 4.0 {
                     let c = to_px(r.center());
-                    let centre = self.doc.view.world_from_pixel(
+                    let o = self.doc.view.offset_from_pixel(
                         c[0] - 0.5,
                         c[1] - 0.5,
                         self.doc.width,
@@ -757,10 +740,15 @@ impl EscapeTab {
                     );
                     let factor = (rect.width() / r.width()).min(rect.height() / r.height()) as f64;
                     let v = View {
-                        center: [centre.re, centre.im],
                         half_height: self.doc.view.half_height / factor,
+                        ..self.doc.view.shifted(o.re, o.im)
                     };
-                    match crate::escape::render::check_view(&v, self.doc.width, self.doc.height) {
+                    match crate::escape::render::check_view_for(
+                        &self.doc.params.family,
+                        &v,
+                        self.doc.width,
+                        self.doc.height,
+                    ) {
                         Ok(()) => {
                             self.push_history();
                             self.doc.view = v;
@@ -786,21 +774,10 @@ impl EscapeTab {
                 let img_rect = match (d.shown_view, warped) {
                     // Until the new frame arrives, draw the old one where its view now lies.
                     (Some(v), false) if v != self.doc.view => {
-                        let a = self.doc.view.pixel_from_world(
-                            v.world_from_pixel(-0.5, -0.5, size[0], size[1]),
-                            size[0],
-                            size[1],
-                        );
-                        let b = self.doc.view.pixel_from_world(
-                            v.world_from_pixel(
-                                size[0] as f64 - 0.5,
-                                size[1] as f64 - 0.5,
-                                size[0],
-                                size[1],
-                            ),
-                            size[0],
-                            size[1],
-                        );
+                        let corner =
+                            |i: f64, j: f64| self.doc.view.pixel_of(&v, i, j, size[0], size[1]);
+                        let a = corner(-0.5, -0.5);
+                        let b = corner(size[0] as f64 - 0.5, size[1] as f64 - 0.5);
                         Rect::from_min_max(
                             rect.min + Vec2::new(a[0] as f32, a[1] as f32) / ppp,
                             rect.min + Vec2::new(b[0] as f32, b[1] as f32) / ppp,
@@ -842,9 +819,20 @@ impl EscapeTab {
 
     /// Status-bar text: coordinates, view width, render progress.
     pub fn status_text(&self) -> String {
-        let mut s = match self.hover {
-            Some(c) => format!("{:.10} {:+.10}i", c.re, c.im),
-            None => "—".into(),
+        let deep = crate::escape::render::is_deep(
+            &self.doc.params.family,
+            &self.doc.view,
+            self.doc.height,
+        );
+        let mut s = if deep {
+            // Pointer coordinates in f64 would all look alike here: show the exact centre.
+            let [x, y] = self.doc.view.center_dd();
+            format!("deep zoom, centre {x}, {y}")
+        } else {
+            match self.hover {
+                Some(c) => format!("{:.10} {:+.10}i", c.re, c.im),
+                None => "—".into(),
+            }
         };
         s += &format!("   width {:.3e}", self.doc.world_width());
         if let Some(d) = &self.main {

@@ -174,8 +174,10 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
             )?;
         }
     }
-    if let Some(v) = complex(&a.center, "center")? {
-        doc.view.center = [v.re, v.im];
+    if let Some(v) = &a.center {
+        let c = escape_view::parse_center(v)
+            .with_context(|| format!("--center '{v}': expected RE,IM (e.g. -0.75,0.1)"))?;
+        doc.view = doc.view.with_center_dd(c);
     }
     if let Some(wd) = a.width {
         if !(wd > 0.0 && wd.is_finite()) {

@@ -9,6 +9,8 @@ use rayon::prelude::*;
 
 use super::color::{Coloring, Colorizer, CountHistogram, Palette};
 use super::complex::C;
+use super::dd::Dd;
+use super::deep;
 use super::family::{
     Family, IterSettings, NewtonSystem, Sample, in_cardioid_or_bulb, iterate_point,
     iterate_quadratic_scalar,
@@ -16,28 +18,82 @@ use super::family::{
 use super::lanes::{self, Start};
 
 /// The visible rectangle: centre and half-height (the width follows the image's aspect).
+/// The centre is the double-double `center + center_lo` (the low parts are zero until a
+/// deep zoom needs them).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct View {
     pub center: [f64; 2],
+    pub center_lo: [f64; 2],
     pub half_height: f64,
 }
 
+/// Relative pixel size below which the Mandelbrot set is drawn by perturbation.
+pub const DEEP_BELOW: f64 = 1e-12;
+/// Relative pixel size limits: f64 arithmetic, and perturbation around a double-double centre.
+pub const F64_LIMIT: f64 = 1e-13;
+pub const DD_LIMIT: f64 = 1e-28;
+
 impl View {
+    pub fn new(center: [f64; 2], half_height: f64) -> View {
+        View {
+            center,
+            center_lo: [0.0; 2],
+            half_height,
+        }
+    }
+
     /// A view from Fractint-style corners.
     pub fn from_corners(xmin: f64, xmax: f64, ymin: f64, ymax: f64) -> View {
+        View::new(
+            [(xmin + xmax) / 2.0, (ymin + ymax) / 2.0],
+            (ymax - ymin).abs() / 2.0,
+        )
+    }
+
+    /// The centre to double-double precision.
+    pub fn center_dd(&self) -> [Dd; 2] {
+        [
+            Dd::new(self.center[0], self.center_lo[0]),
+            Dd::new(self.center[1], self.center_lo[1]),
+        ]
+    }
+
+    /// A view with the given double-double centre.
+    pub fn with_center_dd(&self, c: [Dd; 2]) -> View {
         View {
-            center: [(xmin + xmax) / 2.0, (ymin + ymax) / 2.0],
-            half_height: (ymax - ymin).abs() / 2.0,
+            center: [c[0].hi, c[1].hi],
+            center_lo: [c[0].lo, c[1].lo],
+            half_height: self.half_height,
         }
+    }
+
+    /// The view moved by (dx, dy) world units, exactly to double-double precision.
+    pub fn shifted(&self, dx: f64, dy: f64) -> View {
+        let [x, y] = self.center_dd();
+        self.with_center_dd([x + Dd::from_f64(dx), y + Dd::from_f64(dy)])
+    }
+
+    /// Offset of pixel (i, j) from the centre, in world units.
+    pub fn offset_from_pixel(&self, i: f64, j: f64, w: u32, h: u32) -> C {
+        let (w, h) = (w as f64, h as f64);
+        C::new(
+            (2.0 * (i + 0.5) / w - 1.0) * self.half_height * w / h,
+            -(2.0 * (j + 0.5) / h - 1.0) * self.half_height,
+        )
     }
 
     /// World point of pixel (i, j), rows from the top; the imaginary axis points up.
     pub fn world_from_pixel(&self, i: f64, j: f64, w: u32, h: u32) -> C {
-        let (w, h) = (w as f64, h as f64);
-        C::new(
-            self.center[0] + (2.0 * (i + 0.5) / w - 1.0) * self.half_height * w / h,
-            self.center[1] - (2.0 * (j + 0.5) / h - 1.0) * self.half_height,
-        )
+        let o = self.offset_from_pixel(i, j, w, h);
+        C::new(self.center[0] + o.re, self.center[1] + o.im)
+    }
+
+    /// Where `other`'s centre lies from this view's, in world units (double-double
+    /// difference, so it is exact at deep zoom too).
+    pub fn offset_to(&self, other: &View) -> C {
+        let [a, b] = self.center_dd();
+        let [c, d] = other.center_dd();
+        C::new((c - a).to_f64(), (d - b).to_f64())
     }
 
     /// Pixel coordinates (continuous, the pixel's centre at i + 0.5) of a world point.
@@ -48,6 +104,17 @@ impl View {
         [i, j]
     }
 
+    /// Pixel coordinates in this view of pixel (i, j) of `other` (same image size), computed
+    /// from the double-double difference of the centres (valid at deep zoom).
+    pub fn pixel_of(&self, other: &View, i: f64, j: f64, w: u32, h: u32) -> [f64; 2] {
+        let o = self.offset_to(other) + other.offset_from_pixel(i, j, w, h);
+        let (wf, hf) = (w as f64, h as f64);
+        [
+            (o.re / (self.half_height * wf / hf) + 1.0) * wf / 2.0,
+            (1.0 - o.im / self.half_height) * hf / 2.0,
+        ]
+    }
+
     /// World size of one pixel.
     pub fn pixel_size(&self, h: u32) -> f64 {
         2.0 * self.half_height / h.max(1) as f64
@@ -56,14 +123,11 @@ impl View {
     /// The view zoomed by `factor` (> 1 zooms in) keeping the world point under pixel
     /// (i, j) fixed.
     pub fn zoomed_at(&self, i: f64, j: f64, w: u32, h: u32, factor: f64) -> View {
-        let p = self.world_from_pixel(i - 0.5, j - 0.5, w, h);
-        let hh = self.half_height / factor;
+        let o = self.offset_from_pixel(i - 0.5, j - 0.5, w, h);
+        let k = 1.0 - 1.0 / factor;
         View {
-            center: [
-                p.re + (self.center[0] - p.re) / factor,
-                p.im + (self.center[1] - p.im) / factor,
-            ],
-            half_height: hh,
+            half_height: self.half_height / factor,
+            ..self.shifted(o.re * k, o.im * k)
         }
     }
 }
@@ -132,9 +196,14 @@ impl EscapeParams {
 pub enum EscapeError {
     #[error(
         "zoomed in to the limit of 64-bit floating point (pixel {pixel:.3e} at |centre| {scale:.3e}); \
-         zoom out, or use a deep-zoom program for this depth"
+         zoom out (deep zoom is available for the Mandelbrot set z² + c)"
     )]
     PrecisionLimit { pixel: f64, scale: f64 },
+    #[error(
+        "zoomed in to the deep-zoom limit (pixel {pixel:.3e} at |centre| {scale:.3e}, \
+         double-double precision); zoom out"
+    )]
+    DeepLimit { pixel: f64, scale: f64 },
     #[error("image size {0}x{1} must be between 1x1 and 30000x30000")]
     BadSize(u32, u32),
     #[error("{0}")]
@@ -146,12 +215,40 @@ pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
     if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
         return Err(EscapeError::BadSize(w, h));
     }
-    let pixel = view.pixel_size(h);
-    let scale = view.center[0].abs().max(view.center[1].abs()).max(1.0);
-    if !(pixel >= 1e-13 * scale) || !pixel.is_finite() {
+    let (pixel, scale) = (view.pixel_size(h), view_scale(view));
+    if !(pixel >= F64_LIMIT * scale) || !pixel.is_finite() {
         return Err(EscapeError::PrecisionLimit { pixel, scale });
     }
     Ok(())
+}
+
+/// Families that zoom past the f64 limit by perturbation.
+pub fn supports_deep_zoom(family: &Family) -> bool {
+    matches!(family, Family::Mandelbrot { power: 2 })
+}
+
+/// Check a view for a family: the f64 limit, or the deep-zoom limit where it applies.
+pub fn check_view_for(family: &Family, view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
+    if !supports_deep_zoom(family) {
+        return check_view(view, w, h);
+    }
+    if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
+        return Err(EscapeError::BadSize(w, h));
+    }
+    let (pixel, scale) = (view.pixel_size(h), view_scale(view));
+    if !(pixel >= DD_LIMIT * scale) || !pixel.is_finite() {
+        return Err(EscapeError::DeepLimit { pixel, scale });
+    }
+    Ok(())
+}
+
+/// True when the view is drawn by perturbation (deep zoom).
+pub fn is_deep(family: &Family, view: &View, h: u32) -> bool {
+    supports_deep_zoom(family) && view.pixel_size(h) < DEEP_BELOW * view_scale(view)
+}
+
+fn view_scale(view: &View) -> f64 {
+    view.center[0].abs().max(view.center[1].abs()).max(1.0)
 }
 
 fn check_params(p: &EscapeParams) -> Result<(), EscapeError> {
@@ -194,20 +291,24 @@ struct Job {
     h: u32,
     settings: IterSettings,
     newton: Option<NewtonSystem>,
+    /// Deep zoom: the reference orbit at the view centre.
+    reference: Option<Vec<C>>,
 }
 
 impl Job {
     fn new(params: &EscapeParams, view: View, w: u32, h: u32) -> Result<Job, EscapeError> {
         check_params(params)?;
         if !matches!(params.family, Family::WarpedJulia(_)) {
-            check_view(&view, w, h)?;
+            check_view_for(&params.family, &view, w, h)?;
         } else if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
             return Err(EscapeError::BadSize(w, h));
         }
         let bail = params.bailout();
         let warped = matches!(params.family, Family::WarpedJulia(_));
         // Periodicity: a small fraction of a pixel (never for Newton or warped textures).
+        let deep = is_deep(&params.family, &view, h);
         let period_tol = if params.periodicity
+            && !deep
             && !warped
             && !matches!(params.family, Family::Newton { .. })
             && params.coloring != Coloring::Distance
@@ -216,22 +317,24 @@ impl Job {
         } else {
             0.0
         };
+        let settings = IterSettings {
+            max_iter: params.max_iter,
+            bailout2: if warped && params.bailout.is_none() {
+                4.0
+            } else {
+                bail * bail
+            },
+            strict: !warped,
+            period_tol,
+            want_de: params.coloring == Coloring::Distance,
+        };
         Ok(Job {
+            reference: deep.then(|| deep::reference_orbit(view.center_dd(), &settings)),
             newton: match &params.family {
                 Family::Newton { coeffs } => Some(NewtonSystem::new(coeffs)),
                 _ => None,
             },
-            settings: IterSettings {
-                max_iter: params.max_iter,
-                bailout2: if warped && params.bailout.is_none() {
-                    4.0
-                } else {
-                    bail * bail
-                },
-                strict: !warped,
-                period_tol,
-                want_de: params.coloring == Coloring::Distance,
-            },
+            settings,
             params: params.clone(),
             view,
             w,
@@ -272,6 +375,12 @@ impl Job {
 
     /// One pixel in scalar code.
     fn pixel(&self, i: u32, j: u32) -> Sample {
+        if let Some(orbit) = &self.reference {
+            let dc = self
+                .view
+                .offset_from_pixel(i as f64, j as f64, self.w, self.h);
+            return deep::iterate_perturbed(orbit, dc, &self.settings);
+        }
         match (&self.params.family, &self.newton) {
             (Family::Newton { .. }, Some(sys)) => {
                 sys.iterate(self.point(i, j), self.settings.max_iter)
@@ -288,7 +397,7 @@ impl Job {
     }
 
     fn uses_lanes(&self) -> bool {
-        self.params.family.is_quadratic() && !self.settings.want_de
+        self.params.family.is_quadratic() && !self.settings.want_de && self.reference.is_none()
     }
 
     /// Compute the listed columns of row j into `row`.
@@ -615,10 +724,7 @@ mod tests {
 
     #[test]
     fn view_maps_pixels_both_ways_with_y_up() {
-        let v = View {
-            center: [-0.7, 0.2],
-            half_height: 1.5,
-        };
+        let v = View::new([-0.7, 0.2], 1.5);
         let p = v.world_from_pixel(0.0, 0.0, 400, 300);
         assert!(p.re < -0.7 && p.im > 0.2, "top-left is up and left");
         let q = v.pixel_from_world(p, 400, 300);
@@ -631,22 +737,95 @@ mod tests {
             "the point under the cursor stays"
         );
         assert!(check_view(&v, 400, 300).is_ok());
-        let deep = View {
-            center: [-0.7, 0.2],
-            half_height: 1e-12,
-        };
+        let deep = View::new([-0.7, 0.2], 1e-12);
         assert!(matches!(
             check_view(&deep, 400, 300),
             Err(EscapeError::PrecisionLimit { .. })
         ));
+        // The Mandelbrot set z² + c zooms on by perturbation, to the double-double limit.
+        let m2 = Family::Mandelbrot { power: 2 };
+        assert!(check_view_for(&m2, &deep, 400, 300).is_ok());
+        assert!(is_deep(&m2, &deep, 300));
+        assert!(!is_deep(&m2, &v, 300));
+        let m3 = Family::Mandelbrot { power: 3 };
+        assert!(check_view_for(&m3, &deep, 400, 300).is_err());
+        let too_deep = View::new([-0.7, 0.2], 1e-27);
+        assert!(matches!(
+            check_view_for(&m2, &too_deep, 400, 300),
+            Err(EscapeError::DeepLimit { .. })
+        ));
+    }
+
+    #[test]
+    fn deep_views_keep_their_centre_beyond_f64() {
+        // Pan by 1e-25 at a 1e-22 zoom: the f64 centre cannot change, the double-double does,
+        // and the pixel mapping between the two views sees the exact shift.
+        let v = View::new([-0.75, 0.1], 1e-22);
+        let p = v.shifted(1e-25, 0.0);
+        assert_eq!(p.center, v.center);
+        assert_ne!(p.center_lo, v.center_lo);
+        let px = v.pixel_of(&p, 0.0, 0.0, 400, 300);
+        let one = 2.0 * 1e-22 / 300.0;
+        assert!((px[0] - (0.5 + 1e-25 / one)).abs() < 1e-6, "{px:?}");
+        // Zooming at a pixel keeps the point under it, to double-double precision.
+        let z = v.zoomed_at(100.0, 50.0, 400, 300, 4.0);
+        let back = v.pixel_of(&z, 99.5, 49.5, 400, 300);
+        assert!((back[0] - 100.0).abs() < 1e-6 && (back[1] - 50.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn perturbation_render_agrees_with_f64_where_both_work() {
+        // Pixel 4e-13: below the perturbation threshold, above the f64 limit.
+        let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
+        p.max_iter = 3000;
+        p.periodicity = false;
+        let view = View::new([-0.743643887037151, 0.131825904205330], 8e-12);
+        let (w, h) = (48, 36);
+        assert!(is_deep(&p.family, &view, h));
+        let (_, samples) = render(&p, view, w, h).unwrap();
+        let s = IterSettings {
+            max_iter: p.max_iter,
+            bailout2: p.bailout() * p.bailout(),
+            strict: true,
+            period_tol: 0.0,
+            want_de: false,
+        };
+        // The truth: every pixel iterated directly in double-double arithmetic. (Plain f64
+        // iteration is already unreliable here: thousands of iterations amplify its rounding.)
+        let direct_dd = |c: [Dd; 2]| -> u32 {
+            let (mut x, mut y) = (Dd::ZERO, Dd::ZERO);
+            for n in 1..=s.max_iter {
+                let (xx, yy, xy) = (x * x, y * y, x * y);
+                x = xx - yy + c[0];
+                y = xy + xy + c[1];
+                if !(x.to_f64().powi(2) + y.to_f64().powi(2) <= s.bailout2) {
+                    return n;
+                }
+            }
+            s.max_iter
+        };
+        let (mut same, mut same_f64) = (0, 0);
+        let [cx, cy] = view.center_dd();
+        for j in 0..h {
+            for i in 0..w {
+                let o = view.offset_from_pixel(i as f64, j as f64, w, h);
+                let truth = direct_dd([cx + Dd::from_f64(o.re), cy + Dd::from_f64(o.im)]);
+                let got = samples[(j * w + i) as usize];
+                same += (got.n == truth) as u32;
+                let c = view.world_from_pixel(i as f64, j as f64, w, h);
+                same_f64 += (iterate_point(&p.family, c, &s).n == truth) as u32;
+            }
+        }
+        assert!(same * 100 >= w * h * 99, "{same} of {}", w * h);
+        assert!(
+            same >= same_f64,
+            "perturbation {same}, plain f64 {same_f64}"
+        );
     }
 
     fn count_grid(params: &EscapeParams, w: u32, h: u32) -> Vec<(u32, bool)> {
         let (view_c, hh) = params.family.default_view();
-        let view = View {
-            center: view_c,
-            half_height: hh,
-        };
+        let view = View::new(view_c, hh);
         render(params, view, w, h)
             .unwrap()
             .1
@@ -659,10 +838,7 @@ mod tests {
     fn progressive_passes_and_full_render_agree() {
         let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
         p.coloring = Coloring::Bands;
-        let view = View {
-            center: [-0.7, 0.0],
-            half_height: 1.25,
-        };
+        let view = View::new([-0.7, 0.0], 1.25);
         let (img, samples) = render(&p, view, 97, 61).unwrap();
         let mut r = EscapeRenderer::new(&p, view, 97, 61).unwrap();
         let never = AtomicBool::new(false);
@@ -707,17 +883,7 @@ mod tests {
         let texture = |warp: Warp| {
             let mut p = EscapeParams::new(Family::WarpedJulia(warp));
             p.max_iter = 256;
-            render(
-                &p,
-                View {
-                    center: [0.5, 0.5],
-                    half_height: 0.5,
-                },
-                w,
-                h,
-            )
-            .unwrap()
-            .1
+            render(&p, View::new([0.5, 0.5], 0.5), w, h).unwrap().1
         };
         let plain = texture(Warp::preset(Preset::PolarJulia));
         let pairs = |t: &[Sample]| {
@@ -767,16 +933,7 @@ mod tests {
         .unwrap();
         let mut p = EscapeParams::new(Family::WarpedJulia(pole));
         p.max_iter = 64;
-        let (img, s) = render(
-            &p,
-            View {
-                center: [0.5, 0.5],
-                half_height: 0.5,
-            },
-            64,
-            64,
-        )
-        .unwrap();
+        let (img, s) = render(&p, View::new([0.5, 0.5], 0.5), 64, 64).unwrap();
         assert_eq!(img.width(), 64);
         assert!(s.iter().all(|s| s.nu.is_finite()));
     }

@@ -18,6 +18,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::diag::{Diagnostic, Parsed, Pos};
+use crate::escape::dd::Dd;
 use crate::escape::{C, Coloring, EscapeParams, Family, Fill, Sampling, View, Warp};
 use crate::gradient::{self, Gradient};
 use crate::noise::Fbm;
@@ -42,10 +43,7 @@ impl EscapeDoc {
         params.palette.gradient = gradient::default_gradient();
         EscapeDoc {
             params,
-            view: View {
-                center,
-                half_height,
-            },
+            view: View::new(center, half_height),
             width: 800,
             height: 600,
             gradient_source: gradient::default_gradient().name,
@@ -99,6 +97,40 @@ pub fn parse_complex(s: &str) -> Option<C> {
         [re] => Some(C::new(num(re)?, 0.0)),
         [re, im] => Some(C::new(num(re)?, num(im)?)),
         _ => None,
+    }
+}
+
+/// Parse a centre "re, im" to double-double precision (up to 32 significant digits each,
+/// for deep zooms).
+pub fn parse_center(s: &str) -> Option<[Dd; 2]> {
+    let parts: Vec<&str> = s
+        .split(|ch: char| ch == ',' || ch.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .collect();
+    match parts.as_slice() {
+        [re] => Some([Dd::parse(re)?, Dd::ZERO]),
+        [re, im] => Some([Dd::parse(re)?, Dd::parse(im)?]),
+        _ => None,
+    }
+}
+
+/// The centre as written in a view file: shortest f64 form, or all the digits of the
+/// double-double centre when the view is a deep zoom.
+pub fn format_center(doc: &EscapeDoc) -> String {
+    if crate::escape::render::is_deep(&doc.params.family, &doc.view, doc.height) {
+        let [x, y] = doc.view.center_dd();
+        format!("{x}, {y}")
+    } else {
+        format!("{}, {}", doc.view.center[0], doc.view.center[1])
+    }
+}
+
+/// Shortest round-trip form, with an exponent for tiny values (deep-zoom widths).
+fn fmt_small(v: f64) -> String {
+    if v != 0.0 && v.abs() < 1e-4 {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
     }
 }
 
@@ -178,11 +210,10 @@ pub fn write(doc: &EscapeDoc) -> String {
     }
     let _ = writeln!(
         s,
-        "center = {}, {}\nwidth = {}\nsize = {}x{}\nmax_iter = {}\ncoloring = {}\ngradient = {}\n\
+        "center = {}\nwidth = {}\nsize = {}x{}\nmax_iter = {}\ncoloring = {}\ngradient = {}\n\
          offset = {}\nrepeat = {}\ninside = {} {} {}\nperiodicity = {}\nfill = {}",
-        doc.view.center[0],
-        doc.view.center[1],
-        doc.world_width(),
+        format_center(doc),
+        fmt_small(doc.world_width()),
         doc.width,
         doc.height,
         p.max_iter,
@@ -401,8 +432,10 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
         doc.width = w;
         doc.height = h;
     }
-    if let Some(c) = complex("center")? {
-        doc.view.center = [c.re, c.im];
+    if let Some((l, _, v)) = get("center") {
+        let c = parse_center(v)
+            .ok_or_else(|| err(*l, "ESC003", format!("center '{v}': expected 're, im'")))?;
+        doc.view = doc.view.with_center_dd(c);
     }
     if let Some(wd) = real("width")? {
         if wd <= 0.0 {
@@ -616,6 +649,33 @@ mod tests {
             assert!((b.view.half_height - d.view.half_height).abs() < 1e-12);
             assert_eq!(b.view.center, d.view.center);
         }
+    }
+
+    #[test]
+    fn deep_zoom_views_keep_every_digit() {
+        let mut d = EscapeDoc::new(Family::Mandelbrot { power: 2 });
+        let c = parse_center(
+            "-0.743643887037158704752191506114774, 0.131825904205311970493132056385139",
+        )
+        .unwrap();
+        d.view = d.view.with_center_dd(c);
+        d.view.half_height = 3e-21;
+        let text = write(&d);
+        assert!(
+            text.contains("center = -0.7436438870371587047521915061147"),
+            "{text}"
+        );
+        assert!(text.contains("width = 8e-21"), "{text}");
+        let b = parse(&text, "deep.esc", None).unwrap().value;
+        let [x, y] = b.view.center_dd();
+        assert!((x - c[0]).to_f64().abs() < 1e-31 && (y - c[1]).to_f64().abs() < 1e-31);
+        assert!((b.view.half_height / 3e-21 - 1.0).abs() < 1e-12);
+        // Writing again gives the same text.
+        assert_eq!(write(&b), text);
+        // A shallow view is written as before (shortest f64).
+        let mut s = d.clone();
+        s.view.half_height = 0.5;
+        assert!(write(&s).contains("center = -0.7436438870371587, 0.13182590420531198"));
     }
 
     #[test]
