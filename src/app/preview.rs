@@ -15,7 +15,7 @@ use crate::flame::{Flame, PaletteMode};
 use crate::gradient::Gradient;
 
 /// Iteration time allowed for the first frame after an edit.
-const FIRST_FRAME_BUDGET_S: f64 = 0.028;
+const FIRST_FRAME_BUDGET_S: f64 = 0.022;
 /// The first frame has at least this many samples per pixel (a readable picture).
 const MIN_FIRST_QUALITY: f64 = 1.0;
 
