@@ -1,5 +1,5 @@
-//! Deep zoom for the Mandelbrot set z² + c by perturbation: one reference orbit Z at the view
-//! centre C, computed in double-double arithmetic and stored as f64; every pixel c = C + δc
+//! Deep zoom for z² + c by perturbation: one reference orbit Z at the view centre C, computed
+//! in double-double arithmetic and stored as f64; every pixel c = C + δc of the Mandelbrot set
 //! then iterates only its difference δ from the reference in f64,
 //!
 //! ```text
@@ -9,7 +9,8 @@
 //! which stays accurate because δ is small where Z is not. When the pixel's orbit comes closer
 //! to 0 than its difference (|z| < |δ|), or the reference ends (it escaped), the pixel
 //! rebases onto the start of the reference (δ := z, n := 0), which removes the "glitches" of
-//! single-reference perturbation (Zhuoran's method).
+//! single-reference perturbation (Zhuoran's method). Julia sets work the same way with δ(0)
+//! the pixel's offset and no δc term; they rebase onto the orbit of 0 (the critical orbit).
 
 use super::complex::C;
 use super::dd::Dd;
@@ -18,10 +19,47 @@ use super::family::{IterSettings, Sample, distance_estimate, smooth_count};
 /// The reference orbit Z(0) = 0, Z(n+1) = Z(n)² + C, until it escapes past the bailout or
 /// reaches the iteration limit. Always at least two entries.
 pub fn reference_orbit(c: [Dd; 2], s: &IterSettings) -> Vec<C> {
+    orbit_dd([Dd::ZERO; 2], c, s)
+}
+
+/// What the pixels of a deep view iterate around.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    /// The orbit of the view centre: for the Mandelbrot set the orbit of 0 under z² + C (C
+    /// the centre), for a Julia set the orbit of the centre under z² + c.
+    pub orbit: Vec<C>,
+    /// Julia sets: the orbit of 0 under the same map. Pixels rebase onto it (a Mandelbrot
+    /// reference starts at 0 itself).
+    pub critical: Option<Vec<C>>,
+}
+
+impl Reference {
+    pub fn mandelbrot(centre: [Dd; 2], s: &IterSettings) -> Reference {
+        Reference {
+            orbit: reference_orbit(centre, s),
+            critical: None,
+        }
+    }
+
+    pub fn julia(centre: [Dd; 2], c: C, s: &IterSettings) -> Reference {
+        let c = [Dd::from_f64(c.re), Dd::from_f64(c.im)];
+        Reference {
+            orbit: orbit_dd(centre, c, s),
+            critical: Some(orbit_dd([Dd::ZERO; 2], c, s)),
+        }
+    }
+
+    fn is_julia(&self) -> bool {
+        self.critical.is_some()
+    }
+}
+
+/// The orbit of z0 under z² + c in double-double arithmetic, stored as f64.
+fn orbit_dd(z0: [Dd; 2], c: [Dd; 2], s: &IterSettings) -> Vec<C> {
     let [cx, cy] = c;
-    let (mut x, mut y) = (Dd::ZERO, Dd::ZERO);
+    let [mut x, mut y] = z0;
     let mut out = Vec::with_capacity(s.max_iter.min(1 << 20) as usize + 1);
-    out.push(C::ZERO);
+    out.push(C::new(x.to_f64(), y.to_f64()));
     for _ in 0..s.max_iter {
         let xx = x * x;
         let yy = y * y;
@@ -60,21 +98,25 @@ impl Series {
     /// of the reference. The skip is the last iteration at which the series still matches the
     /// exact perturbation of probe points on the view's border (relative error 1e-13),
     /// checked at every step up to it.
-    pub fn for_view(orbit: &[C], probes: &[C], s: &IterSettings) -> Series {
+    pub fn for_view(r: &Reference, probes: &[C], s: &IterSettings) -> Series {
+        let orbit = &r.orbit;
+        let julia = r.is_julia();
         let last = orbit.len().saturating_sub(2);
         let mut best = Series::NONE;
-        let (mut a, mut b, mut c) = (C::ZERO, C::ZERO, C::ZERO);
-        let mut d: Vec<C> = vec![C::ZERO; probes.len()];
+        // Mandelbrot: δ(0) = 0 and δc is added every step; Julia: δ(0) = δc, nothing added.
+        let (one, add) = if julia { (C::ZERO, 0.0) } else { (C::ONE, 1.0) };
+        let (mut a, mut b, mut c) = (C::ONE - one, C::ZERO, C::ZERO);
+        let mut d: Vec<C> = probes.iter().map(|&p| p * (1.0 - add)).collect();
         for n in 0..last.min(s.max_iter as usize) {
             let z = orbit[n];
             // Coefficients and the probes' exact differences at step n + 1.
             let c1 = z * c * 2.0 + a * b * 2.0;
             let b1 = z * b * 2.0 + a * a;
-            let a1 = z * a * 2.0 + C::ONE;
+            let a1 = z * a * 2.0 + one;
             (a, b, c) = (a1, b1, c1);
             let mut ok = true;
             for (dk, &dc) in d.iter_mut().zip(probes) {
-                *dk = z * *dk * 2.0 + *dk * *dk + dc;
+                *dk = z * *dk * 2.0 + *dk * *dk + dc * add;
                 let full = orbit[n + 1] + *dk;
                 // A probe that rebases or escapes ends the shared stretch.
                 if full.norm2() < dk.norm2() || !(full.norm2() <= s.bailout2) {
@@ -100,34 +142,50 @@ impl Series {
     }
 }
 
-/// One pixel at offset `dc` from the reference point.
+/// One Mandelbrot pixel at offset `dc` from the reference point (no series).
 pub fn iterate_perturbed(orbit: &[C], dc: C, s: &IterSettings) -> Sample {
-    iterate_perturbed_from(orbit, &Series::NONE, dc, s)
+    let r = Reference {
+        orbit: orbit.to_vec(),
+        critical: None,
+    };
+    iterate_perturbed_from(&r, &Series::NONE, dc, s)
 }
 
-/// One pixel at offset `dc`, starting where the series approximation leaves off.
-pub fn iterate_perturbed_from(orbit: &[C], sa: &Series, dc: C, s: &IterSettings) -> Sample {
-    let last = orbit.len() - 1;
+/// One pixel at offset `dc` from the reference point (the parameter offset for the
+/// Mandelbrot set, the starting-point offset for a Julia set), starting where the series
+/// approximation leaves off.
+pub fn iterate_perturbed_from(r: &Reference, sa: &Series, dc: C, s: &IterSettings) -> Sample {
+    let julia = r.is_julia();
+    let mut orbit: &[C] = &r.orbit;
+    let mut last = orbit.len() - 1;
     let skip = sa.skip.min(last.saturating_sub(1)).min(s.max_iter as usize);
     let dc2 = dc * dc;
+    // Mandelbrot: δ(0) = 0, δc added each step, dz/dc; Julia: δ(0) = δz0, dz/dz0.
+    let (add, one) = if julia {
+        (C::ZERO, C::ZERO)
+    } else {
+        (dc, C::ONE)
+    };
     let mut d = if skip > 0 {
         sa.a * dc + sa.b * dc2 + sa.c * dc2 * dc
+    } else if julia {
+        dc
     } else {
         C::ZERO
     };
     let mut m = skip;
-    // dz/dc for the distance estimate, on the full orbit value.
+    // The derivative for the distance estimate, on the full orbit value.
     let mut der = if skip > 0 {
         sa.a + sa.b * dc * 2.0 + sa.c * dc2 * 3.0
     } else {
-        C::ZERO
+        C::ONE - one
     };
     for n in skip as u32 + 1..=s.max_iter {
         let zm = orbit[m];
         if s.want_de {
-            der = (zm + d) * der * 2.0 + C::ONE;
+            der = (zm + d) * der * 2.0 + one;
         }
-        d = zm * d * 2.0 + d * d + dc;
+        d = zm * d * 2.0 + d * d + add;
         m += 1;
         let z = orbit[m] + d;
         let r2 = z.norm2();
@@ -150,8 +208,13 @@ pub fn iterate_perturbed_from(orbit: &[C], sa: &Series, dc: C, s: &IterSettings)
             };
         }
         if r2 < d.norm2() || m == last {
+            // Rebase onto an orbit that starts at 0.
             d = z;
             m = 0;
+            if let Some(k) = &r.critical {
+                orbit = k;
+                last = k.len() - 1;
+            }
         }
     }
     Sample::inside(s.max_iter)

@@ -1,6 +1,6 @@
 //! Escape-time fractals (escape.md): Mandelbrot, Julia, z^m + c, Newton, logistic, the cubic
 //! z³ + z + p, and the Borowicz warped-Julia textures; colouring; progressive parallel
-//! rendering with a vectorised lane engine; perturbation deep zoom for the Mandelbrot set.
+//! rendering with a vectorised lane engine; perturbation deep zoom for z² + c.
 
 // Escape tests are written `!(r2 <= bailout²)` on purpose: a NaN (an overflowed orbit) must
 // count as escaped, which `r2 > bailout²` would not do.

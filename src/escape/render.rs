@@ -196,7 +196,7 @@ impl EscapeParams {
 pub enum EscapeError {
     #[error(
         "zoomed in to the limit of 64-bit floating point (pixel {pixel:.3e} at |centre| {scale:.3e}); \
-         zoom out (deep zoom is available for the Mandelbrot set z² + c)"
+         zoom out (deep zoom is available for z² + c: the Mandelbrot set and its Julia sets)"
     )]
     PrecisionLimit { pixel: f64, scale: f64 },
     #[error(
@@ -224,7 +224,10 @@ pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
 
 /// Families that zoom past the f64 limit by perturbation.
 pub fn supports_deep_zoom(family: &Family) -> bool {
-    matches!(family, Family::Mandelbrot { power: 2 })
+    matches!(
+        family,
+        Family::Mandelbrot { power: 2 } | Family::Julia { power: 2, .. }
+    )
 }
 
 /// Check a view for a family: the f64 limit, or the deep-zoom limit where it applies.
@@ -293,7 +296,7 @@ struct Job {
     newton: Option<NewtonSystem>,
     /// Deep zoom: the reference orbit at the view centre and the series approximation
     /// that starts every pixel past the iterations they share.
-    reference: Option<(Vec<C>, deep::Series)>,
+    reference: Option<(deep::Reference, deep::Series)>,
 }
 
 impl Job {
@@ -331,7 +334,12 @@ impl Job {
         };
         Ok(Job {
             reference: deep.then(|| {
-                let orbit = deep::reference_orbit(view.center_dd(), &settings);
+                let orbit = match params.family {
+                    Family::Julia { c, .. } => {
+                        deep::Reference::julia(view.center_dd(), c, &settings)
+                    }
+                    _ => deep::Reference::mandelbrot(view.center_dd(), &settings),
+                };
                 // Probes on the border, where the series is least accurate.
                 let (wf, hf) = ((w - 1) as f64, (h - 1) as f64);
                 let probes: Vec<C> = [0.0, 0.5, 1.0]
@@ -814,7 +822,9 @@ mod tests {
                 let t = truth[(j * w + i) as usize];
                 with_sa += (job.pixel(i, j).n == t) as u32;
                 let dc = view.offset_from_pixel(i as f64, j as f64, w, h);
-                without += (deep::iterate_perturbed(orbit, dc, &job.settings).n == t) as u32;
+                let no_series =
+                    deep::iterate_perturbed_from(orbit, &deep::Series::NONE, dc, &job.settings);
+                without += (no_series.n == t) as u32;
             }
         }
         // Both agree with the truth on all but a few chaotic boundary pixels, and the series
@@ -822,6 +832,50 @@ mod tests {
         assert!(with_sa * 100 >= w * h * 99, "{with_sa} of {}", w * h);
         assert!(without * 100 >= w * h * 99, "{without} of {}", w * h);
         assert!(with_sa + 3 >= without, "with {with_sa}, without {without}");
+    }
+
+    #[test]
+    fn julia_sets_zoom_deep_too() {
+        // Around the β fixed point (1 + √(1 − 4c))/2, which lies on the Julia set, 1e-14 wide.
+        let c = C::new(-0.8, 0.156);
+        let disc = C::ONE - c * 4.0;
+        let root = C::from_polar(disc.abs().sqrt(), disc.im.atan2(disc.re) / 2.0);
+        let beta = (C::ONE + root) * 0.5;
+        let mut p = EscapeParams::new(Family::Julia { power: 2, c });
+        p.max_iter = 4000;
+        let view = View::new([beta.re, beta.im], 1e-14);
+        let (w, h) = (40, 30);
+        assert!(is_deep(&p.family, &view, h));
+        let job = Job::new(&p, view, w, h).unwrap();
+        let [cx, cy] = view.center_dd();
+        let (mut same, mut counts) = (0, Vec::new());
+        for j in 0..h {
+            for i in 0..w {
+                let o = view.offset_from_pixel(i as f64, j as f64, w, h);
+                let (mut x, mut y) = (cx + Dd::from_f64(o.re), cy + Dd::from_f64(o.im));
+                let mut truth = p.max_iter;
+                for k in 1..=p.max_iter {
+                    let (xx, yy, xy) = (x * x, y * y, x * y);
+                    x = xx - yy + Dd::from_f64(c.re);
+                    y = xy + xy + Dd::from_f64(c.im);
+                    if !(x.to_f64().powi(2) + y.to_f64().powi(2) <= job.settings.bailout2) {
+                        truth = k;
+                        break;
+                    }
+                }
+                let got = job.pixel(i, j).n;
+                same += (got == truth) as u32;
+                counts.push(truth);
+            }
+        }
+        counts.sort();
+        counts.dedup();
+        assert!(
+            counts.len() > 20,
+            "the view shows structure: {} counts",
+            counts.len()
+        );
+        assert!(same * 100 >= w * h * 99, "{same} of {}", w * h);
     }
 
     #[test]
