@@ -14,13 +14,7 @@
 
 use super::complex::C;
 use super::dd::Dd;
-use super::family::{IterSettings, Sample, distance_estimate, smooth_count};
-
-/// The reference orbit Z(0) = 0, Z(n+1) = Z(n)² + C, until it escapes past the bailout or
-/// reaches the iteration limit. Always at least two entries.
-pub fn reference_orbit(c: [Dd; 2], s: &IterSettings) -> Vec<C> {
-    orbit_dd([Dd::ZERO; 2], c, s)
-}
+use super::family::{IterSettings, Sample};
 
 /// What the pixels of a deep view iterate around.
 #[derive(Clone, Debug)]
@@ -36,7 +30,7 @@ pub struct Reference {
 impl Reference {
     pub fn mandelbrot(centre: [Dd; 2], s: &IterSettings) -> Reference {
         Reference {
-            orbit: reference_orbit(centre, s),
+            orbit: orbit_dd([Dd::ZERO; 2], centre, s),
             critical: None,
         }
     }
@@ -54,7 +48,8 @@ impl Reference {
     }
 }
 
-/// The orbit of z0 under z² + c in double-double arithmetic, stored as f64.
+/// The orbit of z0 under z² + c in double-double arithmetic, stored as f64, until it escapes
+/// past the bailout or reaches the iteration limit. Always at least two entries.
 fn orbit_dd(z0: [Dd; 2], c: [Dd; 2], s: &IterSettings) -> Vec<C> {
     let [cx, cy] = c;
     let [mut x, mut y] = z0;
@@ -142,13 +137,9 @@ impl Series {
     }
 }
 
-/// One Mandelbrot pixel at offset `dc` from the reference point (no series).
-pub fn iterate_perturbed(orbit: &[C], dc: C, s: &IterSettings) -> Sample {
-    let r = Reference {
-        orbit: orbit.to_vec(),
-        critical: None,
-    };
-    iterate_perturbed_from(&r, &Series::NONE, dc, s)
+/// One pixel at offset `dc` from the reference point, without the series approximation.
+pub fn iterate_perturbed(r: &Reference, dc: C, s: &IterSettings) -> Sample {
+    iterate_perturbed_from(r, &Series::NONE, dc, s)
 }
 
 /// One pixel at offset `dc` from the reference point (the parameter offset for the
@@ -189,23 +180,8 @@ pub fn iterate_perturbed_from(r: &Reference, sa: &Series, dc: C, s: &IterSetting
         m += 1;
         let z = orbit[m] + d;
         let r2 = z.norm2();
-        let escaped = if s.strict {
-            !(r2 <= s.bailout2)
-        } else {
-            !(r2 < s.bailout2)
-        };
-        if escaped {
-            return Sample {
-                n,
-                inside: false,
-                nu: smooth_count(n, r2, 2.0),
-                de: if s.want_de {
-                    distance_estimate(z, der) as f32
-                } else {
-                    0.0
-                },
-                root: 255,
-            };
+        if s.escaped(r2) {
+            return s.escape_sample(n, z, r2, der, 2.0);
         }
         if r2 < d.norm2() || m == last {
             // Rebase onto an orbit that starts at 0.
@@ -241,7 +217,7 @@ mod tests {
         // plain f64 is exact enough to compare counts.
         let s = settings(2000);
         let centre = [Dd::from_f64(-0.7453), Dd::from_f64(0.1127)];
-        let orbit = reference_orbit(centre, &s);
+        let orbit = Reference::mandelbrot(centre, &s);
         let mut same = 0;
         let total = 40 * 40;
         for a in 0..40 {
@@ -265,8 +241,8 @@ mod tests {
         // Reference outside the set (escapes at once); the pixel 0.5 away is inside the main
         // cardioid. Without rebasing the pixel would be lost when the reference ends.
         let s = settings(500);
-        let orbit = reference_orbit([Dd::from_f64(0.5), Dd::ZERO], &s);
-        assert!(orbit.len() < 10);
+        let orbit = Reference::mandelbrot([Dd::from_f64(0.5), Dd::ZERO], &s);
+        assert!(orbit.orbit.len() < 10);
         let p = iterate_perturbed(&orbit, C::new(-0.5, 0.0), &s);
         assert!(p.inside);
         let q = iterate_perturbed(&orbit, C::new(-0.2, 0.0), &s);
@@ -284,7 +260,7 @@ mod tests {
             Dd::parse("-0.743643887037158704752191506114774").unwrap(),
             Dd::parse("0.131825904205311970493132056385139").unwrap(),
         ];
-        let orbit = reference_orbit(centre, &s);
+        let orbit = Reference::mandelbrot(centre, &s);
         let counts: Vec<u32> = (0..16)
             .map(|k| iterate_perturbed(&orbit, C::new(k as f64 * 1e-20, 0.0), &s).n)
             .collect();

@@ -156,6 +156,35 @@ pub struct IterSettings {
     pub want_de: bool,
 }
 
+impl IterSettings {
+    /// Has an orbit with |z|² = r2 escaped? (A NaN, an overflowed orbit, has.)
+    #[inline]
+    pub fn escaped(&self, r2: f64) -> bool {
+        if self.strict {
+            !(r2 <= self.bailout2)
+        } else {
+            !(r2 < self.bailout2)
+        }
+    }
+
+    /// The sample of an orbit that escaped at iteration n with z (|z|² = r2) and derivative
+    /// dz, for a map of degree `deg`.
+    #[inline]
+    pub fn escape_sample(&self, n: u32, z: C, r2: f64, dz: C, deg: f64) -> Sample {
+        Sample {
+            n,
+            inside: false,
+            nu: smooth_count(n, r2, deg),
+            de: if self.want_de {
+                distance_estimate(z, dz) as f32
+            } else {
+                0.0
+            },
+            root: 255,
+        }
+    }
+}
+
 /// Newton's method settings and the polynomial's roots.
 #[derive(Clone, Debug)]
 pub struct NewtonSystem {
@@ -314,23 +343,8 @@ fn iterate_poly(
         }
         z = step(z, c);
         let r2 = z.norm2();
-        let escaped = if s.strict {
-            !(r2 <= s.bailout2)
-        } else {
-            !(r2 < s.bailout2)
-        };
-        if escaped {
-            return Sample {
-                n,
-                inside: false,
-                nu: smooth_count(n, r2, deg),
-                de: if s.want_de {
-                    distance_estimate(z, dz) as f32
-                } else {
-                    0.0
-                },
-                root: 255,
-            };
+        if s.escaped(r2) {
+            return s.escape_sample(n, z, r2, dz, deg);
         }
         if s.period_tol > 0.0 {
             if n == next_save {

@@ -822,8 +822,7 @@ mod tests {
                 let t = truth[(j * w + i) as usize];
                 with_sa += (job.pixel(i, j).n == t) as u32;
                 let dc = view.offset_from_pixel(i as f64, j as f64, w, h);
-                let no_series =
-                    deep::iterate_perturbed_from(orbit, &deep::Series::NONE, dc, &job.settings);
+                let no_series = deep::iterate_perturbed(orbit, dc, &job.settings);
                 without += (no_series.n == t) as u32;
             }
         }
