@@ -14,19 +14,19 @@ const BINS: usize = 48;
 fn histogram(f: &Flame, seed: u64, samples: usize) -> Vec<f64> {
     let chaos = Chaos::new(f).unwrap();
     let mut rng = FastRng::new(seed);
-    let (mut x, mut y, mut c) = (rng.f11(), rng.f11(), rng.f01());
+    let mut p = Chaos::start_point(&mut rng);
     let mut last = None;
     let mut pts = Vec::with_capacity(samples);
     for k in 0..samples as i64 + 20 {
         let i = chaos.choose(last, &mut rng);
-        let (nx, ny, nc, bad) = chaos.xforms[i].apply(x, y, c, &mut rng);
+        let (np, bad) = chaos.xforms[i].apply(p, &mut rng);
         if bad {
-            (x, y) = (rng.f11(), rng.f11());
+            (p.x, p.y) = (rng.f11(), rng.f11());
             continue;
         }
-        (x, y, c, last) = (nx, ny, nc, Some(i));
+        (p, last) = (np, Some(i));
         if k >= 20 {
-            pts.push((x, y));
+            pts.push((p.x, p.y));
         }
     }
     // r: the 99th percentile of |x|, |y| (ignore far outliers).

@@ -6,7 +6,7 @@
 use eframe::egui::{self, Color32, Pos2, Rect, Sense, Shape, Stroke, Vec2};
 
 use crate::app::document::Document;
-use crate::flame::variations::{self, VarId};
+use crate::flame::variations::{self, Form, VarId};
 use crate::flame::{Affine, Flame, Var, Xform};
 
 /// What a drag does.
@@ -797,37 +797,74 @@ pub fn panels(
                     }
                 }
             });
-            egui::Grid::new("var-grid")
-                .num_columns(2)
-                .striped(true)
-                .show(ui, |ui| {
-                    for id in 0..variations::COUNT as VarId {
-                        let info = variations::info(id);
-                        let present = x.var(id).is_some();
-                        let matches =
-                            !st.var_filter.is_empty() && info.name.contains(st.var_filter.trim());
-                        if !(present || st.show_all_vars || matches) {
+            let filter = st.var_filter.trim().to_ascii_lowercase();
+            // The variations in use first (every form), then the others that match the Find
+            // box — all of them when "all" is ticked.
+            let mut rows: Vec<(VarId, Form)> = x.vars.iter().map(|v| (v.id, v.form)).collect();
+            if st.show_all_vars || !filter.is_empty() {
+                for id in 0..variations::count() as VarId {
+                    let info = variations::info(id);
+                    if info.has(variations::flag::HIDDEN) {
+                        continue;
+                    }
+                    for form in [Form::Regular, Form::Pre, Form::Post] {
+                        if info.has(variations::flag::POST_ONLY) && form != Form::Post {
                             continue;
                         }
-                        let mut w = x.var_weight(id);
-                        ui.label(info.name);
-                        if num(ui, &mut w, 0.01) {
-                            if let Some(v) = x.vars.iter_mut().find(|v| v.id == id) {
-                                v.weight = w;
-                            } else if w != 0.0 {
-                                x.vars.push(Var::new(id, w));
-                            }
-                            x.vars.retain(|v| v.weight != 0.0);
-                        }
-                        ui.end_row();
-                        if let Some(v) = x.vars.iter_mut().find(|v| v.id == id) {
-                            for (pi, (pname, _)) in info.params.iter().enumerate() {
-                                ui.label(format!("    {}_{}", info.name, pname));
-                                num(ui, &mut v.params[pi], 0.01);
-                                ui.end_row();
-                            }
+                        let name = variations::attr_name(id, form);
+                        if (filter.is_empty() || name.to_ascii_lowercase().contains(&filter))
+                            && !rows.contains(&(id, form))
+                        {
+                            rows.push((id, form));
                         }
                     }
+                }
+            }
+            egui::ScrollArea::vertical()
+                .max_height(320.0)
+                .id_salt("var-scroll")
+                .show(ui, |ui| {
+                    egui::Grid::new("var-grid")
+                        .num_columns(2)
+                        .striped(true)
+                        .show(ui, |ui| {
+                            for &(id, form) in rows.iter().take(400) {
+                                let info = variations::info(id);
+                                let pos = x.vars.iter().position(|v| v.id == id && v.form == form);
+                                let mut w = pos.map_or(0.0, |i| x.vars[i].weight);
+                                ui.label(variations::attr_name(id, form));
+                                if num(ui, &mut w, 0.01) {
+                                    match pos {
+                                        Some(i) => x.vars[i].weight = w,
+                                        None if w != 0.0 => {
+                                            x.vars.push(Var::with_form(id, form, w));
+                                        }
+                                        None => {}
+                                    }
+                                    x.vars.retain(|v| v.weight != 0.0);
+                                }
+                                ui.end_row();
+                                if let Some(v) =
+                                    x.vars.iter_mut().find(|v| v.id == id && v.form == form)
+                                {
+                                    for pi in 0..info.params.len() {
+                                        ui.label(format!(
+                                            "    {}",
+                                            variations::param_attr_name(id, form, pi)
+                                        ));
+                                        num(ui, &mut v.params[pi], 0.01);
+                                        ui.end_row();
+                                    }
+                                }
+                            }
+                            if rows.len() > 400 {
+                                ui.label(format!(
+                                    "… {} more: type in Find to narrow the list",
+                                    rows.len() - 400
+                                ));
+                                ui.end_row();
+                            }
+                        });
                 });
             for (n, w) in x.unsupported_vars() {
                 ui.label(format!("{n} = {w} (kept, not rendered)"));

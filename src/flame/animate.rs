@@ -125,13 +125,14 @@ pub fn lerp_affine(a: &Affine, b: &Affine, t: f64) -> Affine {
 fn lerp_vars(a: &[Var], b: &[Var], t: f64) -> Vec<Var> {
     let mut out: Vec<Var> = Vec::new();
     for v in a {
-        let other = b.iter().find(|w| w.id == v.id);
+        let other = b.iter().find(|w| w.id == v.id && w.form == v.form);
         let (wb, pb) = match other {
             Some(w) => (w.weight, w.params.clone()),
             None => (0.0, v.params.clone()),
         };
         out.push(Var {
             id: v.id,
+            form: v.form,
             weight: lerp(v.weight, wb, t),
             params: v
                 .params
@@ -141,9 +142,13 @@ fn lerp_vars(a: &[Var], b: &[Var], t: f64) -> Vec<Var> {
                 .collect(),
         });
     }
-    for w in b.iter().filter(|w| !a.iter().any(|v| v.id == w.id)) {
+    for w in b
+        .iter()
+        .filter(|w| !a.iter().any(|v| v.id == w.id && v.form == w.form))
+    {
         out.push(Var {
             id: w.id,
+            form: w.form,
             weight: lerp(0.0, w.weight, t),
             params: w.params.clone(),
         });
@@ -159,6 +164,7 @@ fn lerp_xform(a: &Xform, b: &Xform, t: f64) -> Xform {
         color_speed: lerp(a.color_speed, b.color_speed, t),
         opacity: lerp(a.opacity, b.opacity, t),
         coefs: lerp_affine(&a.coefs, &b.coefs, t),
+        direct_color: lerp(a.direct_color, b.direct_color, t),
         post: lerp_affine(&a.post, &b.post, t),
         vars: lerp_vars(&a.vars, &b.vars, t),
         chaos: (0..a.chaos.len().max(b.chaos.len()))

@@ -3,7 +3,7 @@
 use crate::flame::fastmath;
 use crate::flame::model::{Affine, Flame, Xform};
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{self, Needs, Pre, Prepared};
+use crate::flame::variations::{self, Acc, Form, Prepared, SoaAcc, SoaIn, VarIn, need};
 
 /// flam3 `CHOOSE_XFORM_GRAIN`.
 pub const CHOOSE_GRAIN: usize = 16384;
@@ -34,11 +34,20 @@ pub enum ChaosError {
 pub struct CompiledXform {
     pub coefs: Affine,
     pub post: Option<Affine>,
+    /// `pre_` variations, in order: each replaces (or moves) the transformed point.
+    pub pre_vars: Vec<Prepared>,
+    /// Regular variations: their outputs are summed.
     pub vars: Vec<Prepared>,
-    pub pre_blur: f64,
-    pub needs: Needs,
+    /// `post_` variations, in order: each replaces (or moves) the summed point.
+    pub post_vars: Vec<Prepared>,
+    /// Per-point quantities the regular variations read ([`variations::need`] bits).
+    pub needs: u8,
     pub color: f64,
     pub color_speed: f64,
+    /// How much of a colour set by a variation is kept (Fractorium's `direct_color`).
+    pub direct_color: f64,
+    /// Some variation sets the colour.
+    pub sets_color: bool,
     /// Plotted visibility o^(log2 10).
     pub vis: f64,
     pub opacity: f64,
@@ -59,21 +68,36 @@ pub fn adjust_opacity(o: f64) -> f64 {
     }
 }
 
+/// A point of an orbit: position and colour coordinate.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Pt {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub c: f64,
+}
+
 impl CompiledXform {
-    pub fn new(x: &Xform, opacity: f64) -> Self {
-        let mut vars = Vec::with_capacity(x.vars.len());
-        let mut needs = Needs::default();
-        let mut pre_blur = 0.0;
+    pub fn new(x: &Xform, opacity: f64, compat: bool) -> Self {
+        let mut pre_vars = Vec::new();
+        let mut vars = Vec::new();
+        let mut post_vars = Vec::new();
+        let mut needs = 0u8;
+        let mut sets_color = false;
         for v in &x.vars {
-            if v.weight == 0.0 || !variations::is_implemented(v.id) {
+            if v.weight == 0.0 {
                 continue;
             }
-            if v.id == variations::PRE_BLUR {
-                pre_blur += v.weight;
-                continue;
+            let p = Prepared::new(v.id, v.form, v.weight, &v.params, x.coefs, compat);
+            sets_color |= p.def.has(variations::flag::SETS_COLOR);
+            match v.form {
+                Form::Pre => pre_vars.push(p),
+                Form::Regular => {
+                    needs |= p.def.needs;
+                    vars.push(p);
+                }
+                Form::Post => post_vars.push(p),
             }
-            needs = needs.union(Needs::of(v.id));
-            vars.push(Prepared::new(v.id, v.weight, &v.params));
         }
         CompiledXform {
             coefs: x.coefs,
@@ -82,39 +106,78 @@ impl CompiledXform {
             } else {
                 Some(x.post)
             },
+            pre_vars,
             vars,
-            pre_blur,
+            post_vars,
             needs,
             color: x.color,
             color_speed: x.color_speed,
+            direct_color: x.direct_color,
+            sets_color,
             vis: adjust_opacity(opacity),
             opacity,
         }
     }
 
-    /// Apply to (x, y, c). Returns the new point and whether it was a bad value (in which case
+    /// Apply to a point. Returns the new point and whether it was a bad value (in which case
     /// the point is a uniform random point of [−1, 1]² and the colour is still updated).
     #[inline(always)]
-    pub fn apply(&self, x: f64, y: f64, c: f64, rng: &mut FastRng) -> (f64, f64, f64, bool) {
-        let nc = self.color_speed * self.color + (1.0 - self.color_speed) * c;
-        let (mut tx, mut ty) = self.coefs.apply(x, y);
-        if self.pre_blur != 0.0 {
-            (tx, ty) = variations::pre_blur(self.pre_blur, tx, ty, rng);
+    pub fn apply(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
+        let blended = self.color_speed * self.color + (1.0 - self.color_speed) * p.c;
+        let (tx, ty) = self.coefs.apply(p.x, p.y);
+        let mut acc = Acc {
+            color: blended,
+            ..Acc::default()
+        };
+        let mut tr = [tx, ty, p.z];
+        for v in &self.pre_vars {
+            v.apply_pre(&mut tr, &mut acc, blended, rng);
         }
-        let pre = Pre::new(tx, ty, self.needs);
-        let (mut px, mut py) = (0.0, 0.0);
-        for v in &self.vars {
-            let (dx, dy) = variations::apply(v, &pre, &self.coefs, rng);
-            px += dx;
-            py += dy;
+        if !self.vars.is_empty() {
+            let t = VarIn::new(tr[0], tr[1], tr[2], blended, self.needs, false);
+            acc.x = 0.0;
+            acc.y = 0.0;
+            acc.z = 0.0;
+            for v in &self.vars {
+                let o = v.eval(&t, &mut acc, rng);
+                acc.x += o[0];
+                acc.y += o[1];
+                acc.z += o[2];
+            }
+        } else if !self.pre_vars.is_empty() {
+            (acc.x, acc.y, acc.z) = (tr[0], tr[1], tr[2]);
+        }
+        for v in &self.post_vars {
+            v.apply_post(&mut acc, blended, rng);
         }
         if let Some(post) = &self.post {
-            (px, py) = post.apply(px, py);
+            (acc.x, acc.y) = post.apply(acc.x, acc.y);
         }
-        if !(within_limit(px) && within_limit(py)) {
-            return (rng.f11(), rng.f11(), nc, true);
+        let mut nc = blended;
+        if self.sets_color {
+            nc = blended + self.direct_color * (acc.color - blended);
+            if nc.is_nan() {
+                nc = 0.0;
+            }
         }
-        (px, py, nc, false)
+        if !(within_limit(acc.x) && within_limit(acc.y)) {
+            let q = Pt {
+                x: rng.f11(),
+                y: rng.f11(),
+                z: acc.z,
+                c: nc,
+            };
+            return (q, true);
+        }
+        (
+            Pt {
+                x: acc.x,
+                y: acc.y,
+                z: acc.z,
+                c: nc,
+            },
+            false,
+        )
     }
 }
 
@@ -127,6 +190,7 @@ pub const LANES: usize = 256;
 pub struct Lanes {
     x: [f64; LANES],
     y: [f64; LANES],
+    z: [f64; LANES],
     c: [f64; LANES],
     /// Xform applied last (xaos row), `u16::MAX` before the first.
     last: [u16; LANES],
@@ -151,15 +215,18 @@ pub struct Lanes {
 struct Group {
     x: [f64; LANES],
     y: [f64; LANES],
+    z: [f64; LANES],
     c: [f64; LANES],
     sumsq: [f64; LANES],
     sqrt: [f64; LANES],
-    atan: [f64; LANES],
-    atanyx: [f64; LANES],
-    sina: [f64; LANES],
-    cosa: [f64; LANES],
+    atan_xy: [f64; LANES],
+    atan_yx: [f64; LANES],
+    ux: [f64; LANES],
+    uy: [f64; LANES],
     px: [f64; LANES],
     py: [f64; LANES],
+    pz: [f64; LANES],
+    pc: [f64; LANES],
     bad: [bool; LANES],
 }
 
@@ -168,15 +235,18 @@ impl Group {
         Group {
             x: [0.0; LANES],
             y: [0.0; LANES],
+            z: [0.0; LANES],
             c: [0.0; LANES],
             sumsq: [0.0; LANES],
             sqrt: [0.0; LANES],
-            atan: [0.0; LANES],
-            atanyx: [0.0; LANES],
-            sina: [0.0; LANES],
-            cosa: [0.0; LANES],
+            atan_xy: [0.0; LANES],
+            atan_yx: [0.0; LANES],
+            ux: [0.0; LANES],
+            uy: [0.0; LANES],
             px: [0.0; LANES],
             py: [0.0; LANES],
+            pz: [0.0; LANES],
+            pc: [0.0; LANES],
             bad: [false; LANES],
         }
     }
@@ -187,6 +257,7 @@ impl Lanes {
         Box::new(Lanes {
             x: [0.0; LANES],
             y: [0.0; LANES],
+            z: [0.0; LANES],
             c: [0.0; LANES],
             last: [u16::MAX; LANES],
             consec: [0; LANES],
@@ -206,88 +277,146 @@ impl Lanes {
 }
 
 impl CompiledXform {
-    /// Apply to the first `n` points of `g` (x, y, c in place; bad flags set; a bad point is
-    /// replaced by a random point of [−1, 1]²). The pre-affine points and their derived
-    /// quantities are computed as arrays, then every variation runs over the whole group.
+    /// Apply to the first `n` points of `g` (x, y, z, c in place; bad flags set; a bad point
+    /// is replaced by a random point of [−1, 1]²). The pre-affine points and their derived
+    /// quantities are computed as arrays, then every regular variation runs over the whole
+    /// group.
     #[inline(always)]
     fn apply_soa(&self, g: &mut Group, n: usize, rng: &mut FastRng) {
         let n = n.min(LANES);
         let a = self.coefs;
+        let (s, col) = (self.color_speed, self.color);
         {
+            let c = &mut g.c[..n];
+            for cj in c.iter_mut() {
+                *cj = s * col + (1.0 - s) * *cj;
+            }
             let (x, y) = (&mut g.x[..n], &mut g.y[..n]);
             for j in 0..n {
                 let (tx, ty) = a.apply(x[j], y[j]);
                 x[j] = tx;
                 y[j] = ty;
             }
-            if self.pre_blur != 0.0 {
+        }
+        if !self.pre_vars.is_empty() {
+            for j in 0..n {
+                let mut acc = Acc {
+                    color: g.c[j],
+                    ..Acc::default()
+                };
+                let mut tr = [g.x[j], g.y[j], g.z[j]];
+                for v in &self.pre_vars {
+                    v.apply_pre(&mut tr, &mut acc, g.c[j], rng);
+                }
+                (g.x[j], g.y[j], g.z[j]) = (tr[0], tr[1], tr[2]);
+                g.pc[j] = acc.color;
+            }
+        } else {
+            g.pc[..n].copy_from_slice(&g.c[..n]);
+        }
+        if !self.vars.is_empty() {
+            let needs = self.needs;
+            let (x, y) = (&g.x[..n], &g.y[..n]);
+            let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
+            if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
                 for j in 0..n {
-                    (x[j], y[j]) = variations::pre_blur(self.pre_blur, x[j], y[j], rng);
+                    sumsq[j] = x[j] * x[j] + y[j] * y[j];
+                    sqrt[j] = sumsq[j].sqrt();
                 }
             }
+            if needs & need::ATAN_XY != 0 {
+                let at = &mut g.atan_xy[..n];
+                for j in 0..n {
+                    at[j] = fastmath::atan2(x[j], y[j]);
+                }
+            }
+            if needs & need::ATAN_YX != 0 {
+                let at = &mut g.atan_yx[..n];
+                for j in 0..n {
+                    at[j] = fastmath::atan2(y[j], x[j]);
+                }
+            }
+            if needs & need::ANGLES != 0 {
+                let (ux, uy) = (&mut g.ux[..n], &mut g.uy[..n]);
+                for j in 0..n {
+                    let r = if sqrt[j] == 0.0 { f64::EPSILON } else { sqrt[j] };
+                    ux[j] = x[j] / r;
+                    uy[j] = y[j] / r;
+                }
+            }
+            let soa = SoaIn {
+                x,
+                y,
+                z: &g.z[..n],
+                sumsq,
+                sqrt,
+                ux: &g.ux[..n],
+                uy: &g.uy[..n],
+                atan_xy: &g.atan_xy[..n],
+                atan_yx: &g.atan_yx[..n],
+                color: &g.c[..n],
+            };
+            g.px[..n].fill(0.0);
+            g.py[..n].fill(0.0);
+            g.pz[..n].fill(0.0);
+            let mut acc = SoaAcc {
+                x: &mut g.px[..n],
+                y: &mut g.py[..n],
+                z: &mut g.pz[..n],
+                color: &mut g.pc[..n],
+            };
+            for v in &self.vars {
+                v.apply_batch(&soa, &mut acc, rng);
+            }
+        } else if !self.pre_vars.is_empty() {
+            g.px[..n].copy_from_slice(&g.x[..n]);
+            g.py[..n].copy_from_slice(&g.y[..n]);
+            g.pz[..n].copy_from_slice(&g.z[..n]);
+        } else {
+            g.px[..n].fill(0.0);
+            g.py[..n].fill(0.0);
+            g.pz[..n].fill(0.0);
         }
-        let (x, y) = (&g.x[..n], &g.y[..n]);
-        let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
-        // r² and r for the variations that read them (sin/cos of the angle divide by r).
-        if self.needs.sqrt || self.needs.sincos_a {
+        if !self.post_vars.is_empty() {
             for j in 0..n {
-                sumsq[j] = x[j] * x[j] + y[j] * y[j];
-                sqrt[j] = sumsq[j].sqrt();
+                let mut acc = Acc {
+                    x: g.px[j],
+                    y: g.py[j],
+                    z: g.pz[j],
+                    color: g.pc[j],
+                };
+                for v in &self.post_vars {
+                    v.apply_post(&mut acc, g.c[j], rng);
+                }
+                (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
             }
         }
-        if self.needs.atan {
-            let at = &mut g.atan[..n];
-            for j in 0..n {
-                at[j] = fastmath::atan2(x[j], y[j]);
-            }
-        }
-        if self.needs.atanyx {
-            let at = &mut g.atanyx[..n];
-            for j in 0..n {
-                at[j] = fastmath::atan2(y[j], x[j]);
-            }
-        }
-        if self.needs.sincos_a {
-            let (sa, ca) = (&mut g.sina[..n], &mut g.cosa[..n]);
-            for j in 0..n {
-                sa[j] = x[j] / sqrt[j];
-                ca[j] = y[j] / sqrt[j];
-            }
-        }
-        let soa = variations::Soa {
-            x,
-            y,
-            sumsq,
-            sqrt,
-            atan: &g.atan,
-            atanyx: &g.atanyx,
-            sina: &g.sina,
-            cosa: &g.cosa,
-        };
         let (px, py) = (&mut g.px[..n], &mut g.py[..n]);
-        px.fill(0.0);
-        py.fill(0.0);
-        for v in &self.vars {
-            (v.batch)(v, &soa, &a, rng, px, py);
-        }
         if let Some(post) = &self.post {
             for j in 0..n {
                 (px[j], py[j]) = post.apply(px[j], py[j]);
             }
         }
-        let (s, col) = (self.color_speed, self.color);
-        let (c, bad) = (&mut g.c[..n], &mut g.bad[..n]);
+        if self.sets_color {
+            let dc = self.direct_color;
+            let (c, pc) = (&mut g.c[..n], &g.pc[..n]);
+            for j in 0..n {
+                let v = c[j] + dc * (pc[j] - c[j]);
+                c[j] = if v.is_nan() { 0.0 } else { v };
+            }
+        }
+        let bad = &mut g.bad[..n];
         let mut any_bad = false;
         for j in 0..n {
-            c[j] = s * col + (1.0 - s) * c[j];
             // `!(a <= l)` is also true for NaN.
             let b = !within_limit(px[j]) | !within_limit(py[j]);
             bad[j] = b;
             any_bad |= b;
         }
-        let (x, y) = (&mut g.x[..n], &mut g.y[..n]);
+        let (x, y, z) = (&mut g.x[..n], &mut g.y[..n], &mut g.z[..n]);
         x.copy_from_slice(px);
         y.copy_from_slice(py);
+        z.copy_from_slice(&g.pz[..n]);
         if any_bad {
             for j in 0..n {
                 if bad[j] {
@@ -354,7 +483,7 @@ impl Chaos {
                     Some(s) if s < n && s != i => 0.0,
                     _ => x.opacity,
                 };
-                CompiledXform::new(x, o)
+                CompiledXform::new(x, o, true)
             })
             .collect();
         let xaos = flame
@@ -382,7 +511,7 @@ impl Chaos {
         let final_xform = flame
             .final_xform
             .as_ref()
-            .map(|f| CompiledXform::new(f, f.opacity));
+            .map(|f| CompiledXform::new(f, f.opacity, true));
         Ok(Chaos {
             xforms,
             final_xform,
@@ -404,28 +533,27 @@ impl Chaos {
 
     /// Apply the final xform (if any, with its opacity as a probability) to a copy of a point.
     #[inline(always)]
-    pub fn finalise(&self, x: f64, y: f64, c: f64, rng: &mut FastRng) -> (f64, f64, f64) {
+    pub fn finalise(&self, p: Pt, rng: &mut FastRng) -> Pt {
         match &self.final_xform {
-            Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => {
-                let (fx, fy, fc, _) = f.apply(x, y, c, rng);
-                (fx, fy, fc)
-            }
-            _ => (x, y, c),
+            Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => f.apply(p, rng).0,
+            _ => p,
         }
     }
 
-    /// Run one sub-batch of `n` plotted samples (flame.md §3.3). `plot(x, y, c, vis)` receives
+    /// A random starting point of an orbit: x, y uniform in [−1, 1], z = 0, colour in [0, 1).
+    #[inline(always)]
+    pub fn start_point(rng: &mut FastRng) -> Pt {
+        let x = rng.f11();
+        let y = rng.f11();
+        let c = rng.f01();
+        Pt { x, y, z: 0.0, c }
+    }
+
+    /// Run one sub-batch of `n` plotted samples (flame.md §3.3). `plot(p, vis)` receives
     /// every point after the fuse, final xform applied. Returns the number of bad values.
     #[inline(always)]
-    pub fn run_sub_batch<F: FnMut(f64, f64, f64, f64)>(
-        &self,
-        n: u64,
-        rng: &mut FastRng,
-        mut plot: F,
-    ) -> u64 {
-        let mut x = rng.f11();
-        let mut y = rng.f11();
-        let mut c = rng.f01();
+    pub fn run_sub_batch<F: FnMut(Pt, f64)>(&self, n: u64, rng: &mut FastRng, mut plot: F) -> u64 {
+        let mut p = Self::start_point(rng);
         let mut k: i64 = -FUSE;
         let mut consec = 0u32;
         let mut bad = 0u64;
@@ -434,83 +562,21 @@ impl Chaos {
         while k < n {
             let i = self.choose(last, rng);
             let xf = &self.xforms[i];
-            let (nx, ny, nc, is_bad) = xf.apply(x, y, c, rng);
+            let (np, is_bad) = xf.apply(p, rng);
+            p = np;
             if is_bad {
                 consec += 1;
                 bad += 1;
                 if consec < 5 {
-                    x = nx;
-                    y = ny;
-                    c = nc;
                     continue;
                 }
-                consec = 0;
-            } else {
-                consec = 0;
             }
-            x = nx;
-            y = ny;
-            c = nc;
+            consec = 0;
             last = Some(i);
             if k >= 0 {
-                let (px, py, pc) = self.finalise(x, y, c, rng);
-                plot(px, py, pc, xf.vis);
+                plot(self.finalise(p, rng), xf.vis);
             }
             k += 1;
-        }
-        bad
-    }
-}
-
-impl Chaos {
-    /// Like [`Chaos::run_sub_batch`] with `N` independent orbits advanced in turn, so that
-    /// the processor overlaps their dependency chains (sqrt, division, trigonometry).
-    /// Every orbit starts at its own random point and is fused; samples are counted over all
-    /// orbits. Returns the number of bad values.
-    #[inline(always)]
-    pub fn run_interleaved<const N: usize, F: FnMut(f64, f64, f64, f64)>(
-        &self,
-        n: u64,
-        rng: &mut FastRng,
-        mut plot: F,
-    ) -> u64 {
-        let mut x = [0.0; N];
-        let mut y = [0.0; N];
-        let mut c = [0.0; N];
-        for o in 0..N {
-            x[o] = rng.f11();
-            y[o] = rng.f11();
-            c[o] = rng.f01();
-        }
-        let mut k = [-FUSE; N];
-        let mut consec = [0u32; N];
-        let mut last: [Option<usize>; N] = [None; N];
-        let mut bad = 0u64;
-        let mut plotted = 0u64;
-        while plotted < n {
-            for o in 0..N {
-                let i = self.choose(last[o], rng);
-                let xf = &self.xforms[i];
-                let (nx, ny, nc, is_bad) = xf.apply(x[o], y[o], c[o], rng);
-                x[o] = nx;
-                y[o] = ny;
-                c[o] = nc;
-                if is_bad {
-                    consec[o] += 1;
-                    bad += 1;
-                    if consec[o] < 5 {
-                        continue;
-                    }
-                }
-                consec[o] = 0;
-                last[o] = Some(i);
-                if k[o] >= 0 && plotted < n {
-                    let (px, py, pc) = self.finalise(nx, ny, nc, rng);
-                    plot(px, py, pc, xf.vis);
-                    plotted += 1;
-                }
-                k[o] += 1;
-            }
         }
         bad
     }
@@ -524,7 +590,7 @@ impl Chaos {
     /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; only the
     /// orbit restarts every 10 000 samples are replaced by 256 long orbits per worker.
     /// Returns the number of bad values.
-    pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64])>(
+    pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
         &self,
         n: u64,
         rng: &mut FastRng,
@@ -534,9 +600,8 @@ impl Chaos {
         let nx = self.xforms.len();
         if !ln.started {
             for l in 0..LANES {
-                ln.x[l] = rng.f11();
-                ln.y[l] = rng.f11();
-                ln.c[l] = rng.f01();
+                let p = Self::start_point(rng);
+                (ln.x[l], ln.y[l], ln.z[l], ln.c[l]) = (p.x, p.y, p.z, p.c);
             }
             ln.started = true;
         }
@@ -608,6 +673,7 @@ impl Chaos {
                         let (l, j) = (l as usize & M, j & M);
                         g.x[j] = ln.x[l];
                         g.y[j] = ln.y[l];
+                        g.z[j] = ln.z[l];
                         g.c[j] = ln.c[l];
                     }
                     self.xforms[i].apply_soa(g, m, rng);
@@ -615,6 +681,7 @@ impl Chaos {
                         let (l, j) = (l as usize & M, j & M);
                         ln.x[l] = g.x[j];
                         ln.y[l] = g.y[j];
+                        ln.z[l] = g.z[j];
                         ln.c[l] = g.c[j];
                         ln.bad[l] = g.bad[j];
                     }
@@ -638,6 +705,7 @@ impl Chaos {
                         let k = nf & M;
                         ln.fin.x[k] = ln.x[l];
                         ln.fin.y[k] = ln.y[l];
+                        ln.fin.z[k] = ln.z[l];
                         ln.fin.c[k] = ln.c[l];
                         ln.fin_vis[k] = self.xforms[ch as usize].vis;
                         nf += 1;
@@ -662,6 +730,7 @@ impl Chaos {
                         let (k, j) = (k & M, j & M);
                         ln.g.x[k] = ln.fin.x[j];
                         ln.g.y[k] = ln.fin.y[j];
+                        ln.g.z[k] = ln.fin.z[j];
                         ln.g.c[k] = ln.fin.c[j];
                     }
                     f.apply_soa(&mut ln.g, ln.chosen.len(), rng);
@@ -669,12 +738,19 @@ impl Chaos {
                         let (k, j) = (k & M, j & M);
                         ln.fin.x[j] = ln.g.x[k];
                         ln.fin.y[j] = ln.g.y[k];
+                        ln.fin.z[j] = ln.g.z[k];
                         ln.fin.c[j] = ln.g.c[k];
                     }
                 }
             }
             let (fin, m) = (&ln.fin, nf.min(LANES));
-            plot(&fin.x[..m], &fin.y[..m], &fin.c[..m], &ln.fin_vis[..m]);
+            plot(
+                &fin.x[..m],
+                &fin.y[..m],
+                &fin.z[..m],
+                &fin.c[..m],
+                &ln.fin_vis[..m],
+            );
         }
         bad
     }
@@ -730,7 +806,8 @@ mod tests {
         let ch = Chaos::new(&f).unwrap();
         let mut rng = FastRng::new(5);
         let mut count = 0;
-        let bad = ch.run_sub_batch(10_000, &mut rng, |x, y, _, vis| {
+        let bad = ch.run_sub_batch(10_000, &mut rng, |p, vis| {
+            let (x, y) = (p.x, p.y);
             assert!((-1e-6..=1.0 + 1e-6).contains(&x) && (-1e-6..=1.0 + 1e-6).contains(&y));
             assert_eq!(vis, 1.0);
             count += 1;
@@ -772,13 +849,13 @@ mod tests {
                     sxx += (x.abs() < 0.5) as u8 as f64;
                 };
                 if lanes {
-                    ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, cs, vs| {
+                    ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, _zs, cs, vs| {
                         for j in 0..xs.len() {
                             plot(xs[j], ys[j], cs[j], vs[j]);
                         }
                     });
                 } else {
-                    ch.run_sub_batch(10_000, &mut rng, &mut plot);
+                    ch.run_sub_batch(10_000, &mut rng, |p, v| plot(p.x, p.y, p.c, v));
                 }
             }
             (n, sx / n, sy / n, sc2 / n, sxx / n)
@@ -806,7 +883,8 @@ mod tests {
         let ch = Chaos::new(&f).unwrap();
         let mut rng = FastRng::new(9);
         let mut prev: Option<f64> = None;
-        ch.run_sub_batch(1000, &mut rng, |_, _, c, _| {
+        ch.run_sub_batch(1000, &mut rng, |p, _| {
+            let c = p.c;
             if let Some(p) = prev {
                 assert_ne!(p, c);
             }
@@ -828,8 +906,8 @@ mod tests {
         };
         let ch = Chaos::new(&f).unwrap();
         let mut rng = FastRng::new(1);
-        let bad = ch.run_sub_batch(100, &mut rng, |x, y, _, _| {
-            assert!(x.abs() <= BAD_LIMIT && y.abs() <= BAD_LIMIT);
+        let bad = ch.run_sub_batch(100, &mut rng, |p, _| {
+            assert!(p.x.abs() <= BAD_LIMIT && p.y.abs() <= BAD_LIMIT);
         });
         assert!(bad > 0);
     }

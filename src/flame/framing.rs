@@ -72,26 +72,27 @@ pub fn framing_orbit(chaos: &Chaos, n: usize) -> (Vec<f64>, Vec<f64>) {
     let mut ys = Vec::with_capacity(n);
     let mut bad = 0usize;
     'restart: while xs.len() < n && bad < 10 * n {
-        let (mut x, mut y, mut c) = (rng.f11(), rng.f11(), rng.f01());
+        let mut p = Chaos::start_point(&mut rng);
         let mut last = None;
         for _ in 0..FUSE {
             let i = chaos.choose(last, &mut rng);
-            let (nx, ny, nc, is_bad) = chaos.xforms[i].apply(x, y, c, &mut rng);
+            let (np, is_bad) = chaos.xforms[i].apply(p, &mut rng);
             if is_bad {
                 bad += 1;
                 continue 'restart;
             }
-            (x, y, c, last) = (nx, ny, nc, Some(i));
+            (p, last) = (np, Some(i));
         }
         while xs.len() < n {
             let i = chaos.choose(last, &mut rng);
-            let (nx, ny, nc, is_bad) = chaos.xforms[i].apply(x, y, c, &mut rng);
+            let (np, is_bad) = chaos.xforms[i].apply(p, &mut rng);
             if is_bad {
                 bad += 1;
                 continue 'restart;
             }
-            (x, y, c, last) = (nx, ny, nc, Some(i));
-            let (px, py, _) = chaos.finalise(x, y, c, &mut rng);
+            (p, last) = (np, Some(i));
+            let q = chaos.finalise(p, &mut rng);
+            let (px, py) = (q.x, q.y);
             if px.is_finite() && py.is_finite() {
                 xs.push(px);
                 ys.push(py);

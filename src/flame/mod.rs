@@ -1,6 +1,7 @@
 //! Fractal flames and IFS: model, variations, chaos game, histogram, density estimation,
 //! tone mapping, automatic framing and the progressive renderer.
 
+pub mod affine;
 pub mod animate;
 pub mod chaos;
 pub mod density;

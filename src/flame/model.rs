@@ -1,137 +1,51 @@
 //! The flame / IFS data model (flame.md §2).
 
-use crate::flame::variations::{self, VarId};
+pub use crate::flame::affine::Affine;
+use crate::flame::variations::{self, Form, VarId};
 use crate::gradient::Gradient;
 
-/// An affine map in the Fractint/thesis letters: x' = a·x + b·y + e, y' = c·x + d·y + f.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Affine {
-    pub a: f64,
-    pub b: f64,
-    pub c: f64,
-    pub d: f64,
-    pub e: f64,
-    pub f: f64,
-}
-
-impl Default for Affine {
-    fn default() -> Self {
-        Self::IDENTITY
-    }
-}
-
-impl Affine {
-    pub const IDENTITY: Affine = Affine {
-        a: 1.0,
-        b: 0.0,
-        c: 0.0,
-        d: 1.0,
-        e: 0.0,
-        f: 0.0,
-    };
-
-    pub const fn new(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64) -> Self {
-        Self { a, b, c, d, e, f }
-    }
-
-    #[inline(always)]
-    pub fn apply(&self, x: f64, y: f64) -> (f64, f64) {
-        (
-            self.a * x + self.b * y + self.e,
-            self.c * x + self.d * y + self.f,
-        )
-    }
-
-    pub fn is_identity(&self) -> bool {
-        *self == Self::IDENTITY
-    }
-
-    /// Signed area ratio a·d − b·c.
-    pub fn det(&self) -> f64 {
-        self.a * self.d - self.b * self.c
-    }
-
-    /// flam3 `coefs` order: c00 c01 c10 c11 c20 c21 = a c b d e f (flame.md §1).
-    pub fn to_coefs(&self) -> [f64; 6] {
-        [self.a, self.c, self.b, self.d, self.e, self.f]
-    }
-
-    pub fn from_coefs(v: [f64; 6]) -> Self {
-        Self::new(v[0], v[2], v[1], v[3], v[4], v[5])
-    }
-
-    /// self ∘ other (apply `other` first).
-    pub fn compose(&self, other: &Affine) -> Affine {
-        Affine {
-            a: self.a * other.a + self.b * other.c,
-            b: self.a * other.b + self.b * other.d,
-            c: self.c * other.a + self.d * other.c,
-            d: self.c * other.b + self.d * other.d,
-            e: self.a * other.e + self.b * other.f + self.e,
-            f: self.c * other.e + self.d * other.f + self.f,
-        }
-    }
-
-    /// The editor triangle (O′, X′, Y′) of flame.md §1.1.
-    pub fn triangle(&self) -> [[f64; 2]; 3] {
-        [
-            [self.e, self.f],
-            [self.a + self.e, self.c + self.f],
-            [self.e - self.b, self.f - self.d],
-        ]
-    }
-
-    /// Coefficients from an editor triangle (O′, X′, Y′), flame.md §1.1.
-    pub fn from_triangle(t: [[f64; 2]; 3]) -> Self {
-        let [o, x, y] = t;
-        Affine {
-            a: x[0] - o[0],
-            c: x[1] - o[1],
-            b: o[0] - y[0],
-            d: o[1] - y[1],
-            e: o[0],
-            f: o[1],
-        }
-    }
-
-    /// Largest singular value of the linear part (contractivity).
-    pub fn max_singular_value(&self) -> f64 {
-        let (a, b, c, d) = (self.a, self.b, self.c, self.d);
-        let s1 = a * a + b * b + c * c + d * d;
-        let det = a * d - b * c;
-        let disc = (s1 * s1 - 4.0 * det * det).max(0.0).sqrt();
-        ((s1 + disc) / 2.0).sqrt()
-    }
-}
-
-/// One variation term of an xform: which variation, its weight and its parameters
-/// (in the order of [`variations::VariationInfo::params`]).
+/// One variation term of an xform: which variation, in which form (regular, `pre_`, `post_`),
+/// its weight and its parameters (in the order of [`variations::VarDef::params`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Var {
     pub id: VarId,
+    pub form: Form,
     pub weight: f64,
     pub params: Vec<f64>,
 }
 
 impl Var {
-    /// A variation with its default parameters.
+    /// A regular variation with its default parameters.
     pub fn new(id: VarId, weight: f64) -> Self {
+        Self::with_form(id, Form::Regular, weight)
+    }
+
+    /// A variation used in `form`, with its default parameters.
+    pub fn with_form(id: VarId, form: Form, weight: f64) -> Self {
         Self {
             id,
+            form,
             weight,
             params: variations::info(id).defaults(),
         }
     }
 
+    /// The variation's canonical name (without a `pre_`/`post_` prefix).
     pub fn name(&self) -> &'static str {
         variations::info(self.id).name
     }
 
+    /// The attribute name in a flame file (`pre_`/`post_` prefix included).
+    pub fn attr_name(&self) -> String {
+        variations::attr_name(self.id, self.form)
+    }
+
+    /// A parameter by its full name (`julian_power`), case-insensitive.
     pub fn param(&self, name: &str) -> Option<f64> {
         let info = variations::info(self.id);
         info.params
             .iter()
-            .position(|p| p.0 == name)
+            .position(|p| p.name.eq_ignore_ascii_case(name))
             .map(|i| self.params[i])
     }
 }
@@ -145,6 +59,9 @@ pub struct Xform {
     pub opacity: f64,
     pub coefs: Affine,
     pub post: Affine,
+    /// How much of a colour set by a "direct colour" variation is kept (Fractorium's
+    /// `direct_color`; 1 = all of it).
+    pub direct_color: f64,
     /// Variation terms in file order; a variation appears at most once.
     pub vars: Vec<Var>,
     /// Xaos multipliers towards xforms 0, 1, …; missing entries are 1.
@@ -165,6 +82,7 @@ impl Default for Xform {
             opacity: 1.0,
             coefs: Affine::IDENTITY,
             post: Affine::IDENTITY,
+            direct_color: 1.0,
             vars: vec![Var::new(variations::LINEAR, 1.0)],
             chaos: Vec::new(),
             extra_attrs: Vec::new(),
@@ -184,8 +102,11 @@ impl Xform {
         }
     }
 
+    /// The regular use of variation `id`, if any.
     pub fn var(&self, id: VarId) -> Option<&Var> {
-        self.vars.iter().find(|v| v.id == id)
+        self.vars
+            .iter()
+            .find(|v| v.id == id && v.form == Form::Regular)
     }
 
     pub fn var_weight(&self, id: VarId) -> f64 {
@@ -194,7 +115,11 @@ impl Xform {
 
     /// Set a variation's weight (adding it with default parameters if absent; weight 0 removes it).
     pub fn set_var(&mut self, id: VarId, weight: f64) {
-        if let Some(v) = self.vars.iter_mut().find(|v| v.id == id) {
+        if let Some(v) = self
+            .vars
+            .iter_mut()
+            .find(|v| v.id == id && v.form == Form::Regular)
+        {
             v.weight = weight;
         } else if weight != 0.0 {
             self.vars.push(Var::new(id, weight));
@@ -206,7 +131,7 @@ impl Xform {
     pub fn unsupported_vars(&self) -> Vec<(String, f64)> {
         self.extra_attrs
             .iter()
-            .filter(|(k, _)| variations::is_flam3_variation_name(k))
+            .filter(|(k, _)| variations::is_foreign_variation_name(k))
             .map(|(k, v)| (k.clone(), v.trim().parse().unwrap_or(0.0)))
             .collect()
     }
@@ -490,8 +415,9 @@ impl Flame {
         let mut out: Vec<String> = Vec::new();
         for x in self.xforms.iter().chain(self.final_xform.iter()) {
             for v in &x.vars {
-                if !out.iter().any(|n| n == v.name()) {
-                    out.push(v.name().to_string());
+                let n = v.attr_name();
+                if !out.contains(&n) {
+                    out.push(n);
                 }
             }
             for (n, _) in x.unsupported_vars() {

@@ -166,7 +166,7 @@ pub fn random_variations(mode: &VariationMode, rng: &mut FastRng) -> Vec<Var> {
             let k = 2 + rng.below(2) as usize;
             let mut vs: Vec<Var> = Vec::new();
             while vs.len() < k {
-                let id = rng.below(variations::COUNT as u64) as VarId;
+                let id = rng.below(variations::FLAM3_COUNT as u64) as VarId;
                 // pre_blur alone gives no picture; keep it out of mixes.
                 if id == variations::PRE_BLUR || vs.iter().any(|v| v.id == id) {
                     continue;
@@ -235,16 +235,17 @@ pub fn blows_up(f: &Flame, rng: &mut FastRng) -> bool {
     let Ok(chaos) = Chaos::new(f) else {
         return true;
     };
-    let (mut x, mut y, mut c) = (rng.f11(), rng.f11(), rng.f01());
+    let mut p = Chaos::start_point(rng);
     let (mut xmin, mut xmax, mut ymin, mut ymax) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     let mut last = None;
     for k in -FUSE..5000 {
         let i = chaos.choose(last, rng);
-        let (nx, ny, nc, bad) = chaos.xforms[i].apply(x, y, c, rng);
-        if bad || !(nx.abs() <= BAD_LIMIT && ny.abs() <= BAD_LIMIT) {
+        let (np, bad) = chaos.xforms[i].apply(p, rng);
+        if bad || !(np.x.abs() <= BAD_LIMIT && np.y.abs() <= BAD_LIMIT) {
             return true;
         }
-        (x, y, c, last) = (nx, ny, nc, Some(i));
+        (p, last) = (np, Some(i));
+        let (x, y) = (p.x, p.y);
         if k >= 0 {
             xmin = xmin.min(x);
             xmax = xmax.max(x);

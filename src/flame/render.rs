@@ -520,7 +520,7 @@ fn iterate_into(
     rng: &mut FastRng,
 ) -> u64 {
     buf.clear();
-    let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, cs, vs| {
+    let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs| {
         // Branch-free compaction of the visible points that land in the histogram.
         const L: usize = crate::flame::chaos::LANES;
         let mut tmp = [(0u32, 0f32, 0f32); L];

@@ -13,7 +13,7 @@ use quick_xml::events::Event;
 
 use crate::flame::model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
 use crate::flame::symmetry::add_symmetry;
-use crate::flame::variations::{self, LINEAR};
+use crate::flame::variations::{self, Form, LINEAR};
 use crate::gradient::{Gradient, hue_rotate};
 use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, fmt_num, parse_int, parse_number};
 use crate::io::palettes::{self, PaletteLibrary, decode_hex_colors};
@@ -79,6 +79,9 @@ struct Ctx<'t, 'o> {
     map: SourceMap<'t>,
     warnings: Vec<Diagnostic>,
     reported_vars: HashSet<String>,
+    /// Attributes of other programs that ugnis keeps but does not interpret (reported once per
+    /// file, in one line).
+    ignored_attrs: Vec<String>,
     opts: &'o ReadOptions<'o>,
     library: OnceCell<Result<PaletteLibrary, String>>,
 }
@@ -182,6 +185,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         map: SourceMap::new(text),
         warnings: Vec::new(),
         reported_vars: HashSet::new(),
+        ignored_attrs: Vec::new(),
         opts,
         library: OnceCell::new(),
     };
@@ -269,6 +273,25 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         ));
     }
     let _ = depth;
+    if !cx.ignored_attrs.is_empty() {
+        let n = cx.ignored_attrs.len();
+        let mut shown: Vec<&str> = cx.ignored_attrs.iter().take(6).map(|s| s.as_str()).collect();
+        if n > 6 {
+            shown.push("…");
+        }
+        let d = Diagnostic::warning(
+            &opts.file,
+            Pos::File,
+            "XML021",
+            format!(
+                "kept {n} attribute name{} of other programs that ugnis does not interpret ({}); \
+                 they are written back unchanged",
+                if n == 1 { "" } else { "s" },
+                shown.join(", ")
+            ),
+        );
+        cx.warnings.push(d);
+    }
     Ok(Parsed {
         value: out,
         warnings: cx.warnings,
@@ -993,6 +1016,15 @@ fn read_palette(
     Ok(())
 }
 
+/// Set the weight of a variation form (replacing an earlier attribute for the same form; weight
+/// 0 removes it).
+fn set_var(x: &mut Xform, id: variations::VarId, form: Form, w: f64) {
+    x.vars.retain(|v| !(v.id == id && v.form == form));
+    if w != 0.0 {
+        x.vars.push(Var::with_form(id, form, w));
+    }
+}
+
 fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize) -> R<Xform> {
     let mut x = Xform {
         weight: 0.0,
@@ -1002,7 +1034,7 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
     };
     let mut color_speed: Option<f64> = None;
     let mut symmetry: Option<f64> = None;
-    let mut params: Vec<(variations::VarId, usize, f64, String, String)> = Vec::new();
+    let mut params: Vec<(variations::VarId, Form, usize, f64, String, String)> = Vec::new();
     for a in attrs {
         let v = a.value.trim();
         match a.name {
@@ -1071,9 +1103,10 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                 }
                 x.chaos = c;
             }
+            "direct_color" => x.direct_color = cx.num(a)?,
             "var" => {
                 let ws = cx.nums(a, "XML003")?;
-                if ws.len() > variations::COUNT {
+                if ws.len() > variations::FLAM3_COUNT {
                     return Err(cx.err(
                         a.offset,
                         "XML003",
@@ -1081,22 +1114,27 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     ));
                 }
                 for (i, w) in ws.iter().enumerate() {
-                    if *w != 0.0 {
-                        x.set_var(i as variations::VarId, *w);
+                    if *w != 0.0
+                        && let Some((id, form)) = variations::from_flam3_index(i)
+                    {
+                        set_var(&mut x, id, form, *w);
                     }
                 }
             }
             "var1" => {
                 let i = cx.int(a)?;
-                if !(0..variations::COUNT as i64).contains(&i) {
+                let Some((id, form)) = usize::try_from(i)
+                    .ok()
+                    .and_then(variations::from_flam3_index)
+                else {
                     return Err(cx.err(
                         a.offset,
                         "XML003",
                         format!("var1 index {i} is outside 0..98"),
                     ));
-                }
+                };
                 x.vars.clear();
-                x.set_var(i as variations::VarId, 1.0);
+                set_var(&mut x, id, form, 1.0);
             }
             "linear3D" => {
                 let w = cx.num(a)?;
@@ -1104,27 +1142,28 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                 x.set_var(LINEAR, cur + w);
             }
             name => {
-                if let Some(id) = variations::by_name(name) {
+                if let Some((id, form)) = variations::parse_name(name) {
                     let w = cx.num(a)?;
-                    if w != 0.0 {
-                        x.vars.retain(|v| v.id != id);
-                        x.vars.push(Var::new(id, w));
-                    }
-                } else if let Some((id, pi)) = variations::param_of(name) {
+                    set_var(&mut x, id, form, w);
+                } else if let Some((id, form, pi)) = variations::param_of(name) {
                     let pv = cx.num(a)?;
-                    params.push((id, pi, pv, name.to_string(), a.value.to_string()));
+                    params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    let meta = matches!(
+                    if numeric && variations::is_foreign_variation_name(name) {
+                        if cx.reported_vars.insert(name.to_string()) {
+                            cx.warn(
+                                a.offset,
+                                "XML020",
+                                format!("variation '{name}' (weight {v}) not supported; ignored"),
+                            );
+                        }
+                    } else if !matches!(
                         name,
                         "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
-                    );
-                    if numeric && !meta && cx.reported_vars.insert(name.to_string()) {
-                        cx.warn(
-                            a.offset,
-                            "XML020",
-                            format!("variation '{name}' (weight {v}) not supported; ignored"),
-                        );
+                    ) && !cx.ignored_attrs.iter().any(|n| n == name)
+                    {
+                        cx.ignored_attrs.push(name.to_string());
                     }
                     x.extra_attrs.push((name.to_string(), a.value.to_string()));
                 }
@@ -1137,8 +1176,8 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
         (None, None) => 0.5,
     };
     // Parameters go to their variation; parameters of absent variations are kept as-is.
-    for (id, pi, pv, name, raw) in params {
-        if let Some(var) = x.vars.iter_mut().find(|v| v.id == id) {
+    for (id, form, pi, pv, name, raw) in params {
+        if let Some(var) = x.vars.iter_mut().find(|v| v.id == id && v.form == form) {
             var.params[pi] = pv;
         } else {
             x.extra_attrs.push((name, raw));
@@ -1275,13 +1314,16 @@ fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
     if x.opacity != 1.0 {
         let _ = write!(s, " opacity=\"{}\"", n(x.opacity));
     }
-    for v in &x.vars {
-        let _ = write!(s, " {}=\"{}\"", v.name(), n(v.weight));
+    if x.direct_color != 1.0 {
+        let _ = write!(s, " direct_color=\"{}\"", n(x.direct_color));
     }
     for v in &x.vars {
-        let info = variations::info(v.id);
-        for (i, (p, _)) in info.params.iter().enumerate() {
-            let _ = write!(s, " {}_{}=\"{}\"", info.name, p, n(v.params[i]));
+        let _ = write!(s, " {}=\"{}\"", v.attr_name(), n(v.weight));
+    }
+    for v in &x.vars {
+        for i in 0..variations::info(v.id).params.len() {
+            let name = variations::param_attr_name(v.id, v.form, i);
+            let _ = write!(s, " {name}=\"{}\"", n(v.params[i]));
         }
     }
     let c = x.coefs.to_coefs();

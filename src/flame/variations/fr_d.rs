@@ -1,0 +1,6 @@
+//! Variations (slice fr_d of the registry).
+
+#[allow(unused_imports)]
+use super::*;
+
+pub(super) static DEFS: &[VarDef] = &[];

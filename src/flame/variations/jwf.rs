@@ -1,0 +1,6 @@
+//! Variations (slice jwf of the registry).
+
+#[allow(unused_imports)]
+use super::*;
+
+pub(super) static DEFS: &[VarDef] = &[];
