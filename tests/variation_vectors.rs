@@ -127,9 +127,12 @@ fn same(a: f64, b: f64) -> bool {
     d <= 1e-9 * a.abs().max(b.abs()) || d <= 1e-13
 }
 
+/// One parameter set of the vectors file: variation, set name, settings, row indices.
+type SetRows = (String, String, Result<Set, String>, Vec<usize>);
+
 /// Every set of the vectors file, with its rows.
-fn sets(t: &Table) -> Vec<(String, String, Result<Set, String>, Vec<usize>)> {
-    let mut out: Vec<(String, String, Result<Set, String>, Vec<usize>)> = Vec::new();
+fn sets(t: &Table) -> Vec<SetRows> {
+    let mut out: Vec<SetRows> = Vec::new();
     let mut params_of_set = String::new();
     for (i, r) in t.rows.iter().enumerate() {
         let (var, ps) = (t.get(r, "variation"), t.get(r, "param_set"));
