@@ -339,7 +339,11 @@ impl CompiledXform {
             if needs & need::ANGLES != 0 {
                 let (ux, uy) = (&mut g.ux[..n], &mut g.uy[..n]);
                 for j in 0..n {
-                    let r = if sqrt[j] == 0.0 { f64::EPSILON } else { sqrt[j] };
+                    let r = if sqrt[j] == 0.0 {
+                        f64::EPSILON
+                    } else {
+                        sqrt[j]
+                    };
                     ux[j] = x[j] / r;
                     uy[j] = y[j] / r;
                 }

@@ -275,7 +275,12 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
     let _ = depth;
     if !cx.ignored_attrs.is_empty() {
         let n = cx.ignored_attrs.len();
-        let mut shown: Vec<&str> = cx.ignored_attrs.iter().take(6).map(|s| s.as_str()).collect();
+        let mut shown: Vec<&str> = cx
+            .ignored_attrs
+            .iter()
+            .take(6)
+            .map(|s| s.as_str())
+            .collect();
         if n > 6 {
             shown.push("…");
         }

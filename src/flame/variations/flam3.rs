@@ -8,9 +8,8 @@
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
-use super::{
-    Acc, EPS, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, flag, need, p,
-};
+use super::util::zeps;
+use super::{Acc, EPS, Form, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, flag, need, p, p_range};
 use crate::flame::affine::Affine;
 use crate::flame::fastmath as fm;
 use crate::flame::rng::FastRng;
@@ -124,536 +123,628 @@ pub const FLAM3_COUNT: usize = 99;
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("linear", eval::<0>)
         .needs(0)
-        .flags(flag::FLAM3)
+        .flags(zf(0) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<0>),
     VarDef::new("sinusoidal", eval::<1>)
         .needs(0)
-        .flags(flag::FLAM3)
+        .flags(zf(1) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<1>),
     VarDef::new("spherical", eval::<2>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(2) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<2>),
     VarDef::new("swirl", eval::<3>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(3) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<3>),
     VarDef::new("horseshoe", eval::<4>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(4) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<4>),
     VarDef::new("polar", eval::<5>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(5) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<5>),
     VarDef::new("handkerchief", eval::<6>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(6) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<6>),
     VarDef::new("heart", eval::<7>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(7) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<7>),
     VarDef::new("disc", eval::<8>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(8) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<8>),
     VarDef::new("spiral", eval::<9>)
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
-        .flags(flag::FLAM3)
+        .flags(zf(9) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<9>),
     VarDef::new("hyperbolic", eval::<10>)
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
-        .flags(flag::FLAM3)
+        .flags(zf(10) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<10>),
     VarDef::new("diamond", eval::<11>)
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
-        .flags(flag::FLAM3)
+        .flags(zf(11) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<11>),
     VarDef::new("ex", eval::<12>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(12) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<12>),
     VarDef::new("julia", eval::<13>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(13) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<13>),
     VarDef::new("bent", eval::<14>)
         .needs(0)
-        .flags(flag::FLAM3)
+        .flags(zf(14) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<14>),
     VarDef::new("waves", eval::<15>)
         .needs(0)
-        .flags(flag::FLAM3 | flag::USES_AFFINE)
+        .flags(zf(15) | flag::FLAM3 | flag::USES_AFFINE)
         .prepare(prepare)
         .batch(batch::<15>),
     VarDef::new("fisheye", eval::<16>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(16) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<16>),
     VarDef::new("popcorn", eval::<17>)
         .needs(0)
-        .flags(flag::FLAM3 | flag::USES_AFFINE)
+        .flags(zf(17) | flag::FLAM3 | flag::USES_AFFINE)
         .prepare(prepare)
         .batch(batch::<17>),
     VarDef::new("exponential", eval::<18>)
         .needs(0)
-        .flags(flag::FLAM3)
+        .flags(zf(18) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<18>),
     VarDef::new("power", eval::<19>)
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
-        .flags(flag::FLAM3)
+        .flags(zf(19) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<19>),
     VarDef::new("cosine", eval::<20>)
         .needs(0)
-        .flags(flag::FLAM3)
+        .flags(zf(20) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<20>),
     VarDef::new("rings", eval::<21>)
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
-        .flags(flag::FLAM3 | flag::USES_AFFINE)
+        .flags(zf(21) | flag::FLAM3 | flag::USES_AFFINE)
         .prepare(prepare)
         .batch(batch::<21>),
     VarDef::new("fan", eval::<22>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3 | flag::USES_AFFINE)
+        .flags(zf(22) | flag::FLAM3 | flag::USES_AFFINE)
         .prepare(prepare)
         .batch(batch::<22>),
     VarDef::new("blob", eval::<23>)
-        .params(&[p("blob_low", 0.0), p("blob_high", 1.0), p("blob_waves", 1.0)])
+        .params(&[
+            p("blob_low", 0.0),
+            p("blob_high", 1.0),
+            p("blob_waves", 1.0),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY | need::ANGLES)
-        .flags(flag::FLAM3)
+        .flags(zf(23) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<23>),
     VarDef::new("pdj", eval::<24>)
-        .params(&[p("pdj_a", 0.0), p("pdj_b", 0.0), p("pdj_c", 0.0), p("pdj_d", 0.0)])
+        .params(&[
+            p("pdj_a", 0.0),
+            p("pdj_b", 0.0),
+            p("pdj_c", 0.0),
+            p("pdj_d", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(24) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<24>),
     VarDef::new("fan2", eval::<25>)
         .params(&[p("fan2_x", 0.0), p("fan2_y", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(25) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<25>),
     VarDef::new("rings2", eval::<26>)
         .params(&[p("rings2_val", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
-        .flags(flag::FLAM3)
+        .flags(zf(26) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<26>),
     VarDef::new("eyefish", eval::<27>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(27) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<27>),
     VarDef::new("bubble", eval::<28>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(28) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<28>),
     VarDef::new("cylinder", eval::<29>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(29) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<29>),
     VarDef::new("perspective", eval::<30>)
         .params(&[p("perspective_angle", 0.0), p("perspective_dist", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(30) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<30>),
     VarDef::new("noise", eval::<31>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(31) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<31>),
     VarDef::new("julian", eval::<32>)
         .params(&[p("julian_power", 1.0), p("julian_dist", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(32) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<32>),
     VarDef::new("juliascope", eval::<33>)
         .params(&[p("juliascope_power", 1.0), p("juliascope_dist", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(33) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<33>),
     VarDef::new("blur", eval::<34>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(34) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<34>),
     VarDef::new("gaussian_blur", eval::<35>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(35) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<35>),
     VarDef::new("radial_blur", eval::<36>)
         .params(&[p("radial_blur_angle", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(36) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<36>),
     VarDef::new("pie", eval::<37>)
-        .params(&[p("pie_slices", 6.0), p("pie_rotation", 0.0), p("pie_thickness", 0.5)])
+        .params(&[
+            p("pie_slices", 6.0),
+            p("pie_rotation", 0.0),
+            p("pie_thickness", 0.5),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(37) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<37>),
     VarDef::new("ngon", eval::<38>)
-        .params(&[p("ngon_sides", 5.0), p("ngon_power", 3.0), p("ngon_circle", 1.0), p("ngon_corners", 2.0)])
+        .params(&[
+            p("ngon_sides", 5.0),
+            p("ngon_power", 3.0),
+            p("ngon_circle", 1.0),
+            p("ngon_corners", 2.0),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3)
+        .flags(zf(38) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<38>),
     VarDef::new("curl", eval::<39>)
         .params(&[p("curl_c1", 1.0), p("curl_c2", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(39) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<39>),
     VarDef::new("rectangles", eval::<40>)
         .params(&[p("rectangles_x", 1.0), p("rectangles_y", 1.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(40) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<40>),
     VarDef::new("arch", eval::<41>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(41) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<41>),
     VarDef::new("tangent", eval::<42>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(42) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<42>),
     VarDef::new("square", eval::<43>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(43) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<43>),
     VarDef::new("rays", eval::<44>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(44) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<44>),
     VarDef::new("blade", eval::<45>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(45) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<45>),
     VarDef::new("secant2", eval::<46>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(46) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<46>),
     VarDef::new("twintrian", eval::<47>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(47) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<47>),
     VarDef::new("cross", eval::<48>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(48) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<48>),
     VarDef::new("disc2", eval::<49>)
         .params(&[p("disc2_rot", 0.0), p("disc2_twist", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(49) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<49>),
     VarDef::new("super_shape", eval::<50>)
-        .params(&[p("super_shape_rnd", 0.0), p("super_shape_m", 0.0), p("super_shape_n1", 1.0), p("super_shape_n2", 1.0), p("super_shape_n3", 1.0), p("super_shape_holes", 0.0)])
+        .params(&[
+            p("super_shape_rnd", 0.0),
+            p("super_shape_m", 0.0),
+            p("super_shape_n1", 1.0),
+            p("super_shape_n2", 1.0),
+            p("super_shape_n3", 1.0),
+            p("super_shape_holes", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(50) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<50>),
     VarDef::new("flower", eval::<51>)
         .params(&[p("flower_petals", 0.0), p("flower_holes", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(51) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<51>),
     VarDef::new("conic", eval::<52>)
         .params(&[p("conic_eccentricity", 1.0), p("conic_holes", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(52) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<52>),
     VarDef::new("parabola", eval::<53>)
         .params(&[p("parabola_height", 0.0), p("parabola_width", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(53) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<53>),
     VarDef::new("bent2", eval::<54>)
         .params(&[p("bent2_x", 1.0), p("bent2_y", 1.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(54) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<54>),
     VarDef::new("bipolar", eval::<55>)
         .params(&[p("bipolar_shift", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(55) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<55>),
     VarDef::new("boarders", eval::<56>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(56) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<56>),
     VarDef::new("butterfly", eval::<57>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(57) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<57>),
     VarDef::new("cell", eval::<58>)
         .params(&[p("cell_size", 1.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(58) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<58>),
     VarDef::new("cpow", eval::<59>)
         .params(&[p("cpow_r", 1.0), p("cpow_i", 0.0), p("cpow_power", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(59) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<59>),
     VarDef::new("curve", eval::<60>)
-        .params(&[p("curve_xamp", 0.0), p("curve_yamp", 0.0), p("curve_xlength", 1.0), p("curve_ylength", 1.0)])
+        .params(&[
+            p("curve_xamp", 0.0),
+            p("curve_yamp", 0.0),
+            p("curve_xlength", 1.0),
+            p("curve_ylength", 1.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(60) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<60>),
     VarDef::new("edisc", eval::<61>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(61) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<61>),
     VarDef::new("elliptic", eval::<62>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(62) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<62>),
     VarDef::new("escher", eval::<63>)
         .params(&[p("escher_beta", 0.0)])
-        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3)
+        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX | need::ATAN_XY)
+        .flags(zf(63) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<63>),
     VarDef::new("foci", eval::<64>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(64) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<64>),
     VarDef::new("lazysusan", eval::<65>)
-        .params(&[p("lazysusan_spin", 0.0), p("lazysusan_space", 0.0), p("lazysusan_twist", 0.0), p("lazysusan_x", 0.0), p("lazysusan_y", 0.0)])
+        .params(&[
+            p("lazysusan_spin", 0.0),
+            p("lazysusan_space", 0.0),
+            p("lazysusan_twist", 0.0),
+            p("lazysusan_x", 0.0),
+            p("lazysusan_y", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(65) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<65>),
     VarDef::new("loonie", eval::<66>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(66) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<66>),
     VarDef::new("pre_blur", eval::<67>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3 | flag::HIDDEN)
+        .flags(zf(67) | flag::FLAM3 | flag::HIDDEN)
         .prepare(prepare)
         .batch(batch::<67>),
     VarDef::new("modulus", eval::<68>)
         .params(&[p("modulus_x", 0.0), p("modulus_y", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(68) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<68>),
     VarDef::new("oscilloscope", eval::<69>)
-        .params(&[p("oscilloscope_separation", 1.0), p("oscilloscope_frequency", PI), p("oscilloscope_amplitude", 1.0), p("oscilloscope_damping", 0.0)])
+        .params(&[
+            p("oscilloscope_separation", 1.0),
+            p("oscilloscope_frequency", PI),
+            p("oscilloscope_amplitude", 1.0),
+            p("oscilloscope_damping", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(69) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<69>),
     VarDef::new("polar2", eval::<70>)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
-        .flags(flag::FLAM3)
+        .flags(zf(70) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<70>),
     VarDef::new("popcorn2", eval::<71>)
-        .params(&[p("popcorn2_x", 0.0), p("popcorn2_y", 0.0), p("popcorn2_c", 0.0)])
+        .params(&[
+            p("popcorn2_x", 0.0),
+            p("popcorn2_y", 0.0),
+            p("popcorn2_c", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(71) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<71>),
     VarDef::new("scry", eval::<72>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(72) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<72>),
     VarDef::new("separation", eval::<73>)
-        .params(&[p("separation_x", 0.0), p("separation_xinside", 0.0), p("separation_y", 0.0), p("separation_yinside", 0.0)])
+        .params(&[
+            p("separation_x", 0.0),
+            p("separation_xinside", 0.0),
+            p("separation_y", 0.0),
+            p("separation_yinside", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(73) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<73>),
     VarDef::new("split", eval::<74>)
         .params(&[p("split_xsize", 0.0), p("split_ysize", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(74) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<74>),
     VarDef::new("splits", eval::<75>)
         .params(&[p("splits_x", 0.0), p("splits_y", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(75) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<75>),
     VarDef::new("stripes", eval::<76>)
         .params(&[p("stripes_space", 0.0), p("stripes_warp", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(76) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<76>),
     VarDef::new("wedge", eval::<77>)
-        .params(&[p("wedge_angle", 0.0), p("wedge_hole", 0.0), p("wedge_count", 1.0), p("wedge_swirl", 0.0)])
+        .params(&[
+            p("wedge_angle", 0.0),
+            p("wedge_hole", 0.0),
+            p("wedge_count", 1.0),
+            p("wedge_swirl", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3)
+        .flags(zf(77) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<77>),
     VarDef::new("wedge_julia", eval::<78>)
-        .params(&[p("wedge_julia_angle", 0.0), p("wedge_julia_count", 1.0), p("wedge_julia_power", 1.0), p("wedge_julia_dist", 0.0)])
+        .params(&[
+            p("wedge_julia_angle", 0.0),
+            p("wedge_julia_count", 1.0),
+            p("wedge_julia_power", 1.0),
+            p("wedge_julia_dist", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3 | flag::RANDOM)
+        .flags(zf(78) | flag::FLAM3 | flag::RANDOM)
         .prepare(prepare)
         .batch(batch::<78>),
     VarDef::new("wedge_sph", eval::<79>)
-        .params(&[p("wedge_sph_angle", 0.0), p("wedge_sph_count", 1.0), p("wedge_sph_hole", 0.0), p("wedge_sph_swirl", 0.0)])
+        .params(&[
+            p("wedge_sph_angle", 0.0),
+            p("wedge_sph_count", 1.0),
+            p("wedge_sph_hole", 0.0),
+            p("wedge_sph_swirl", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3)
+        .flags(zf(79) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<79>),
     VarDef::new("whorl", eval::<80>)
         .params(&[p("whorl_inside", 0.0), p("whorl_outside", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3)
+        .flags(zf(80) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<80>),
     VarDef::new("waves2", eval::<81>)
-        .params(&[p("waves2_freqx", 0.0), p("waves2_scalex", 0.0), p("waves2_freqy", 0.0), p("waves2_scaley", 0.0)])
+        .params(&[
+            p("waves2_freqx", 0.0),
+            p("waves2_scalex", 0.0),
+            p("waves2_freqy", 0.0),
+            p("waves2_scaley", 0.0),
+            p("waves2_freqz", 0.0),
+            p("waves2_scalez", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(81) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<81>),
     VarDef::new("exp", eval::<82>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(82) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<82>),
     VarDef::new("log", eval::<83>)
+        .params(&[p_range(
+            "log_base",
+            std::f64::consts::E,
+            f64::EPSILON,
+            f64::INFINITY,
+        )])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .flags(flag::FLAM3)
+        .flags(zf(83) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<83>),
     VarDef::new("sin", eval::<84>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(84) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<84>),
     VarDef::new("cos", eval::<85>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(85) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<85>),
     VarDef::new("tan", eval::<86>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(86) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<86>),
     VarDef::new("sec", eval::<87>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(87) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<87>),
     VarDef::new("csc", eval::<88>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(88) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<88>),
     VarDef::new("cot", eval::<89>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(89) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<89>),
     VarDef::new("sinh", eval::<90>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(90) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<90>),
     VarDef::new("cosh", eval::<91>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(91) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<91>),
     VarDef::new("tanh", eval::<92>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(92) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<92>),
     VarDef::new("sech", eval::<93>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(93) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<93>),
     VarDef::new("csch", eval::<94>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(94) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<94>),
     VarDef::new("coth", eval::<95>)
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(95) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<95>),
     VarDef::new("auger", eval::<96>)
-        .params(&[p("auger_freq", 1.0), p("auger_weight", 0.5), p("auger_sym", 0.0), p("auger_scale", 1.0)])
+        .params(&[
+            p("auger_freq", 1.0),
+            p("auger_weight", 0.5),
+            p("auger_sym", 0.0),
+            p("auger_scale", 1.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(96) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<96>),
     VarDef::new("flux", eval::<97>)
         .params(&[p("flux_spread", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(97) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<97>),
     VarDef::new("mobius", eval::<98>)
-        .params(&[p("mobius_re_a", 0.0), p("mobius_im_a", 0.0), p("mobius_re_b", 0.0), p("mobius_im_b", 0.0), p("mobius_re_c", 0.0), p("mobius_im_c", 0.0), p("mobius_re_d", 0.0), p("mobius_im_d", 0.0)])
+        .params(&[
+            p("mobius_re_a", 0.0),
+            p("mobius_im_a", 0.0),
+            p("mobius_re_b", 0.0),
+            p("mobius_im_b", 0.0),
+            p("mobius_re_c", 0.0),
+            p("mobius_im_c", 0.0),
+            p("mobius_re_d", 0.0),
+            p("mobius_im_d", 0.0),
+        ])
         .needs(need::SUMSQ | need::SQRT)
-        .flags(flag::FLAM3)
+        .flags(zf(98) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<98>),
 ];
@@ -661,73 +752,101 @@ pub(super) static DEFS: &[VarDef] = &[
 /// Derived values in slots 8–11 (parameters occupy slots 0–7).
 fn prepare(v: &mut Prepared) {
     let id = v.id;
+    let w = v.w;
+    let compat = v.compat;
     let p = &mut v.p;
     p.resize(12, 0.0);
     match id {
-            PERSPECTIVE => {
-                let ang = p[0] * PI / 2.0;
-                p[8] = ang.sin();
-                p[9] = p[1] * ang.cos();
-            }
-            JULIAN | JULIASCOPE => {
-                p[8] = p[0].abs();
-                p[9] = p[1] / p[0] / 2.0;
-            }
-            RADIAL_BLUR => {
-                let ang = p[0] * PI / 2.0;
-                p[8] = ang.sin();
-                p[9] = ang.cos();
-            }
-            DISC2 => {
-                let (rot, twist) = (p[0], p[1]);
-                p[8] = rot * PI;
-                let mut sinadd = twist.sin();
-                let mut cosadd = twist.cos() - 1.0;
-                if twist > 2.0 * PI {
-                    let k = 1.0 + twist - 2.0 * PI;
-                    cosadd *= k;
-                    sinadd *= k;
-                }
-                if twist < -2.0 * PI {
-                    let k = 1.0 + twist + 2.0 * PI;
-                    cosadd *= k;
-                    sinadd *= k;
-                }
-                p[9] = sinadd;
-                p[10] = cosadd;
-            }
-            SUPER_SHAPE => {
-                p[8] = p[1] / 4.0;
-                p[9] = -1.0 / p[2];
-            }
-            NGON => {
-                p[8] = p[1] / 2.0;
-                p[9] = 2.0 * PI / p[0];
-            }
-            CPOW => {
-                p[8] = 2.0 * PI / p[2];
-                p[9] = p[0] / p[2];
-                p[10] = p[1] / p[2];
-            }
-            CURVE => {
-                p[8] = (p[2] * p[2]).max(1e-20);
-                p[9] = (p[3] * p[3]).max(1e-20);
-            }
-            ESCHER => {
-                p[8] = 0.5 * (1.0 + p[0].cos());
-                p[9] = 0.5 * p[0].sin();
-            }
-            WEDGE_JULIA => {
-                // params: angle, count, power, dist
-                p[8] = 1.0 - p[0] * p[1] / (2.0 * PI);
-                p[9] = p[2].abs();
-                p[10] = p[3] / p[2] / 2.0;
-            }
-            OSCILLOSCOPE => {
-                p[8] = 2.0 * PI * p[1];
-            }
-            _ => {}
+        PERSPECTIVE => {
+            let ang = p[0] * PI / 2.0;
+            p[8] = ang.sin();
+            p[9] = p[1] * ang.cos();
         }
+        JULIAN | JULIASCOPE => {
+            p[0] = zeps(p[0]);
+            p[8] = p[0].abs();
+            p[9] = p[1] / p[0] / 2.0;
+        }
+        RADIAL_BLUR => {
+            let ang = p[0] * PI / 2.0;
+            p[8] = ang.sin();
+            p[9] = ang.cos();
+        }
+        DISC2 => {
+            let (rot, twist) = (p[0], p[1]);
+            p[8] = rot * PI;
+            let mut sinadd = twist.sin();
+            let mut cosadd = twist.cos() - 1.0;
+            if twist > 2.0 * PI {
+                let k = 1.0 + twist - 2.0 * PI;
+                cosadd *= k;
+                sinadd *= k;
+            }
+            if twist < -2.0 * PI {
+                let k = 1.0 + twist + 2.0 * PI;
+                cosadd *= k;
+                sinadd *= k;
+            }
+            p[9] = sinadd;
+            p[10] = cosadd;
+        }
+        SUPER_SHAPE => {
+            p[8] = p[1] / 4.0;
+            p[9] = -1.0 / p[2];
+        }
+        NGON => {
+            p[8] = -0.5 * p[1];
+            p[9] = 2.0 * PI / p[0];
+            p[10] = 1.0 / p[9];
+        }
+        CPOW => {
+            p[8] = 2.0 * PI / p[2];
+            p[9] = p[0] / p[2];
+            p[10] = p[1] / p[2];
+        }
+        CURVE => {
+            if compat {
+                p[8] = 1.0 / (p[2] * p[2]).max(1e-20);
+                p[9] = 1.0 / (p[3] * p[3]).max(1e-20);
+            } else {
+                p[8] = 1.0 / zeps(p[2]);
+                p[9] = 1.0 / zeps(p[3]);
+            }
+        }
+        ESCHER => {
+            p[8] = 0.5 * (1.0 + p[0].cos());
+            p[9] = 0.5 * p[0].sin();
+        }
+        WEDGE_JULIA => {
+            // params: angle, count, power, dist
+            p[8] = 1.0 - p[0] * p[1] / (2.0 * PI);
+            p[9] = p[2].abs();
+            p[10] = p[3] / p[2] / 2.0;
+        }
+        FAN2 => {
+            p[8] = PI * zeps(p[0] * p[0]);
+            p[9] = 0.5 * p[8];
+        }
+        RINGS2 => p[8] = zeps(p[0] * p[0]),
+        BIPOLAR => {
+            p[8] = -FRAC_PI_2 * p[0];
+            p[9] = w * std::f64::consts::FRAC_2_PI;
+            p[10] = w * 0.25 * std::f64::consts::FRAC_2_PI;
+        }
+        LOONIE => p[8] = w * w,
+        SCRY => p[8] = 1.0 / zeps(w),
+        WEDGE_SPH => {
+            p[8] = 1.0 - p[0] * p[1] * (1.0 / PI) * 0.5;
+        }
+        OSCILLOSCOPE => {
+            p[8] = 2.0 * PI * p[1];
+        }
+        LOG => {
+            // Natural logarithm of r for base e; another base scales it.
+            p[8] = w * 0.5 / p[0].ln();
+        }
+        _ => {}
+    }
 }
 
 #[inline(always)]
@@ -735,9 +854,110 @@ fn sincos(a: f64) -> (f64, f64) {
     fm::sin_cos(a)
 }
 
+/// A uniform integer in 0..n as a float; n = 0 draws a full 32-bit integer (as Fractorium's
+/// generator does, so that a |power| below 1 picks an arbitrary root).
+#[inline(always)]
+fn rand_below(rng: &mut FastRng, n: u64) -> f64 {
+    if n == 0 {
+        rng.u32() as f64
+    } else {
+        rng.below(n) as f64
+    }
+}
+
+/// √(1 + u) − 1 without cancellation for small u.
+#[inline(always)]
+fn sqrt1pm1(u: f64) -> f64 {
+    u / ((1.0 + u).sqrt() + 1.0)
+}
+
+/// The output z (Fractorium extends flam3's variations to 3-D points): most carry w·z along,
+/// a few compute a z of their own; the others leave it to the framework (0 for a regular
+/// variation). A flame whose variations are all flam3's never feeds z back into x and y.
+#[inline(always)]
+fn z_out(id: u16, v: &Prepared, t: &VarIn) -> f64 {
+    match id {
+        LINEAR | SINUSOIDAL | SPHERICAL | SWIRL | HORSESHOE | POLAR | DISC | SPIRAL
+        | HYPERBOLIC | PDJ | FAN2 | RINGS2 | EYEFISH | NOISE | JULIAN | JULIASCOPE | BLUR
+        | GAUSSIAN_BLUR | RADIAL_BLUR | NGON | RECTANGLES | SQUARE | CROSS | ESCHER | FOCI
+        | LAZYSUSAN | LOONIE | POLAR2 | SEPARATION | SPLITS | WEDGE | LOG | AUGER | MOBIUS => {
+            v.w * t.z
+        }
+        BUBBLE => v.w * (2.0 / zeps((0.25 * t.sumsq + 1.0) - 1.0)),
+        CYLINDER => v.w * t.x.cos(),
+        WAVES2 => v.w * (t.z + v.p[5] * (t.sqrt * v.p[4]).sin()),
+        FLUX => t.z,
+        BIPOLAR => {
+            let g = t.sumsq + 1.0 - 2.0 * t.x;
+            let fg = (t.sumsq + 1.0 + 2.0 * t.x) / zeps(g);
+            if g == 0.0 || fg <= 0.0 {
+                if v.compat && v.form == Form::Regular {
+                    0.0
+                } else {
+                    t.z
+                }
+            } else {
+                v.w * t.z
+            }
+        }
+        _ => 0.0,
+    }
+}
+
+/// `WRITES_Z` for the variations that compute their z.
+const fn zf(id: u16) -> u32 {
+    if writes_z(id) { flag::WRITES_Z } else { 0 }
+}
+
+/// Variations whose output z is not the framework's default.
+const fn writes_z(id: u16) -> bool {
+    matches!(
+        id,
+        LINEAR
+            | SINUSOIDAL
+            | SPHERICAL
+            | SWIRL
+            | HORSESHOE
+            | POLAR
+            | DISC
+            | SPIRAL
+            | HYPERBOLIC
+            | PDJ
+            | FAN2
+            | RINGS2
+            | EYEFISH
+            | NOISE
+            | JULIAN
+            | JULIASCOPE
+            | BLUR
+            | GAUSSIAN_BLUR
+            | RADIAL_BLUR
+            | NGON
+            | RECTANGLES
+            | SQUARE
+            | CROSS
+            | ESCHER
+            | FOCI
+            | LAZYSUSAN
+            | LOONIE
+            | POLAR2
+            | SEPARATION
+            | SPLITS
+            | WEDGE
+            | LOG
+            | AUGER
+            | MOBIUS
+            | BUBBLE
+            | CYLINDER
+            | WAVES2
+            | FLUX
+            | BIPOLAR
+    )
+}
+
 fn eval<const ID: u16>(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (x, y) = formula(ID, v, t, &v.aff, rng);
-    [x, y, 0.0]
+    [x, y, z_out(ID, v, t)]
 }
 
 /// The batch version: a loop the compiler can vectorise for variations without library calls.
@@ -748,11 +968,12 @@ fn batch<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut Fas
     let (ax, ay) = (&mut acc.x[..n], &mut acc.y[..n]);
     let (x, y, sumsq, sqrt) = (&s.x[..n], &s.y[..n], &s.sumsq[..n], &s.sqrt[..n]);
     let (ux, uy, atan_xy, atan_yx) = (&s.ux[..n], &s.uy[..n], &s.atan_xy[..n], &s.atan_yx[..n]);
+    let (z, az) = (&s.z[..n], &mut acc.z[..n]);
     for j in 0..n {
         let t = VarIn {
             x: x[j],
             y: y[j],
-            z: 0.0,
+            z: z[j],
             sumsq: sumsq[j],
             sqrt: sqrt[j],
             ux: ux[j],
@@ -764,6 +985,9 @@ fn batch<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut Fas
         let (dx, dy) = formula(ID, v, &t, &v.aff, rng);
         ax[j] += dx;
         ay[j] += dy;
+        if writes_z(ID) {
+            az[j] += z_out(ID, v, &t);
+        }
     }
 }
 
@@ -776,7 +1000,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         LINEAR => (w * x, w * y),
         SINUSOIDAL => (w * fm::sin(x), w * fm::sin(y)),
         SPHERICAL => {
-            let r2 = w / (t.sumsq + EPS);
+            let r2 = w / zeps(t.sumsq);
             (r2 * x, r2 * y)
         }
         SWIRL => {
@@ -784,7 +1008,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * (s * x - c * y), w * (c * x + s * y))
         }
         HORSESHOE => {
-            let r = w / (t.sqrt + EPS);
+            let r = w / zeps(t.sqrt);
             ((x - y) * (x + y) * r, 2.0 * x * y * r)
         }
         POLAR => {
@@ -813,13 +1037,13 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * s * a, w * c * a)
         }
         SPIRAL => {
-            let r = t.sqrt + EPS;
+            let r = zeps(t.sqrt);
             let r1 = w / r;
             let (s, c) = sincos(r);
             (r1 * (t.uy + s), r1 * (t.ux - c))
         }
         HYPERBOLIC => {
-            let r = t.sqrt + EPS;
+            let r = zeps(t.sqrt);
             (w * t.ux / r, w * t.uy * r)
         }
         DIAMOND => {
@@ -850,8 +1074,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * nx, w * ny)
         }
         WAVES => {
-            let dx2 = 1.0 / (aff.e * aff.e + EPS);
-            let dy2 = 1.0 / (aff.f * aff.f + EPS);
+            let dx2 = 1.0 / zeps(aff.e * aff.e);
+            let dy2 = 1.0 / zeps(aff.f * aff.f);
             (
                 w * (x + aff.b * fm::sin(y * dx2)),
                 w * (y + aff.d * fm::sin(x * dy2)),
@@ -881,13 +1105,13 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * c * y.cosh(), -w * s * y.sinh())
         }
         RINGS => {
-            let dx = aff.e * aff.e + EPS;
+            let dx = zeps(aff.e * aff.e);
             let r = t.sqrt;
             let r = w * ((r + dx) % (2.0 * dx) - dx + r * (1.0 - dx));
             (r * t.uy, r * t.ux)
         }
         FAN => {
-            let dx = PI * (aff.e * aff.e + EPS);
+            let dx = PI * zeps(aff.e * aff.e);
             let dx2 = 0.5 * dx;
             let mut a = t.atan_xy;
             let r = w * t.sqrt;
@@ -908,23 +1132,24 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * (nx2 - nx1), w * (ny1 - ny2))
         }
         FAN2 => {
-            let dy = p[1];
-            let dx = PI * (p[0] * p[0] + EPS);
-            let dx2 = 0.5 * dx;
+            let (dx, dx2) = (p[8], p[9]);
             let mut a = t.atan_xy;
             let r = w * t.sqrt;
-            let tt = a + dy - dx * ((a + dy) / dx).trunc();
-            if tt > dx2 {
+            if (a + p[1]) % dx > dx2 {
                 a -= dx2;
             } else {
                 a += dx2;
             }
             let (s, c) = sincos(a);
-            (r * s, r * c)
+            if v.compat {
+                (r * s, r * c)
+            } else {
+                (r * c, r * s)
+            }
         }
         RINGS2 => {
             let mut r = t.sqrt;
-            let dx = p[0] * p[0] + EPS;
+            let dx = p[8];
             r += -2.0 * dx * ((r + dx) / (2.0 * dx)).trunc() + r * (1.0 - dx);
             (w * t.ux * r, w * t.uy * r)
         }
@@ -938,8 +1163,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         CYLINDER => (w * fm::sin(x), w * y),
         PERSPECTIVE => {
-            let tt = 1.0 / (p[1] - y * p[8]);
-            (w * p[1] * x * tt, w * p[9] * y * tt)
+            let d = w / zeps(p[1] - y * p[8]);
+            (d * p[1] * x, d * p[9] * y)
         }
         NOISE => {
             let a = rng.f01() * 2.0 * PI;
@@ -948,20 +1173,33 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (x * r * c, y * r * s)
         }
         JULIAN => {
-            let trnd = (p[8] * rng.f01()).trunc();
-            let a = (t.atan_yx + 2.0 * PI * trnd) / p[0];
             let r = w * t.sumsq.powf(p[9]);
+            let a = if v.compat {
+                let k = rand_below(rng, p[8] as u64);
+                (t.atan_yx + 2.0 * PI * k) / p[0]
+            } else {
+                let root = (p[0] * rng.f01()).trunc();
+                (t.atan_yx + root * 2.0 * PI) / p[0]
+            };
             let (s, c) = sincos(a);
             (r * c, r * s)
         }
         JULIASCOPE => {
-            let trnd = (p[8] * rng.f01()).trunc();
-            let a = if (trnd as i64) & 1 == 0 {
-                (2.0 * PI * trnd + t.atan_yx) / p[0]
-            } else {
-                (2.0 * PI * trnd - t.atan_yx) / p[0]
-            };
             let r = w * t.sumsq.powf(p[9]);
+            let a = if v.compat {
+                let k = (p[8] * rng.f01()).trunc();
+                if (k as i64) & 1 == 0 {
+                    (2.0 * PI * k + t.atan_yx) / p[0]
+                } else {
+                    (2.0 * PI * k - t.atan_yx) / p[0]
+                }
+            } else {
+                // Roots alternate between the angle and its mirror image.
+                let root = (p[0] * rng.f01()).floor();
+                let odd = root - 2.0 * (root * 0.5).floor() == 1.0;
+                let sgn = if odd { -1.0 } else { 1.0 };
+                (t.atan_yx * sgn + root * 2.0 * PI) / zeps(p[0])
+            };
             let (s, c) = sincos(a);
             (r * c, r * s)
         }
@@ -995,20 +1233,24 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         NGON => {
             let (circle, corners) = (p[2], p[3]);
-            let r_factor = t.sumsq.powf(p[8]);
+            let r_factor = if x == 0.0 && y == 0.0 {
+                0.0
+            } else {
+                t.sumsq.powf(p[8])
+            };
             let b = p[9];
-            let mut phi = t.atan_yx - b * (t.atan_yx / b).floor();
-            if phi > b / 2.0 {
+            let mut phi = t.atan_yx - b * (t.atan_yx * p[10]).floor();
+            if phi > 0.5 * b {
                 phi -= b;
             }
-            let amp = (corners * (1.0 / (fm::cos(phi) + EPS) - 1.0) + circle) / (r_factor + EPS);
-            (w * x * amp, w * y * amp)
+            let amp = (corners * (1.0 / fm::cos(phi) - 1.0) + circle) * w * r_factor;
+            (amp * x, amp * y)
         }
         CURL => {
             let (c1, c2) = (p[0], p[1]);
             let re = 1.0 + c1 * x + c2 * (x * x - y * y);
-            let im = c1 * y + 2.0 * c2 * x * y;
-            let r = w / (re * re + im * im);
+            let im = (c1 + 2.0 * c2 * x) * y;
+            let r = w / zeps(re * re + im * im);
             ((x * re + y * im) * r, (y * re - x * im) * r)
         }
         RECTANGLES => {
@@ -1034,7 +1276,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         SQUARE => (w * (rng.f01() - 0.5), w * (rng.f01() - 0.5)),
         RAYS => {
             let ang = w * rng.f01() * PI;
-            let r = w / (t.sumsq + EPS);
+            let r = w / zeps(t.sumsq);
             let tanr = w * ang.tan() * r;
             (tanr * fm::cos(x), tanr * fm::sin(y))
         }
@@ -1054,14 +1296,17 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let r = rng.f01() * w * t.sqrt;
             let (s, c) = sincos(r);
             let mut diff = (s * s).log10() + c;
-            if !diff.is_finite() {
+            if diff.is_nan() {
                 diff = -30.0;
             }
             (w * x * diff, w * x * (diff - s * PI))
         }
         CROSS => {
-            let s = x * x - y * y;
-            let r = w * (1.0 / (s * s + EPS)).sqrt();
+            let r = if v.compat {
+                w / zeps(((x - y) * (x + y)).abs())
+            } else {
+                w / zeps(x * x - y * y)
+            };
             (x * r, y * r)
         }
         DISC2 => {
@@ -1087,8 +1332,9 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         CONIC => {
             let (ecc, holes) = (p[0], p[1]);
-            let ct = x / t.sqrt;
-            let r = w * (rng.f01() - holes) * ecc / (1.0 + ecc * ct) / t.sqrt;
+            let z = zeps(t.sqrt);
+            let ct = x / z;
+            let r = w * (rng.f01() - holes) * ecc / (1.0 + ecc * ct) / z;
             (r * x, r * y)
         }
         PARABOLA => {
@@ -1105,17 +1351,26 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let x2y2 = t.sumsq;
             let tt = x2y2 + 1.0;
             let x2 = 2.0 * x;
-            let ps = -FRAC_PI_2 * p[0];
-            let mut ny = 0.5 * (2.0 * y).atan2(x2y2 - 1.0) + ps;
+            let mut ny = 0.5 * (2.0 * y).atan2(x2y2 - 1.0) + p[8];
             if ny > FRAC_PI_2 {
                 ny = -FRAC_PI_2 + (ny + FRAC_PI_2) % PI;
             } else if ny < -FRAC_PI_2 {
                 ny = FRAC_PI_2 - (FRAC_PI_2 - ny) % PI;
             }
-            (
-                w * 0.25 * (2.0 / PI) * ((tt + x2) / (tt - x2)).ln(),
-                w * (2.0 / PI) * ny,
-            )
+            let f = tt + x2;
+            let g = tt - x2;
+            let fg = f / zeps(g);
+            if g == 0.0 || fg <= 0.0 {
+                // Off the map (on the poles): nothing, or the point itself for pre_/post_ forms
+                // and without flam3 compatibility.
+                if v.compat && v.form == Form::Regular {
+                    (0.0, 0.0)
+                } else {
+                    (x, y)
+                }
+            } else {
+                (p[10] * fg.ln(), p[9] * ny)
+            }
         }
         BOARDERS => {
             let rx = x.round_ties_even();
@@ -1151,7 +1406,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         BUTTERFLY => {
             let wx = w * 1.302_940_031_741_119_8;
             let y2 = y * 2.0;
-            let r = wx * ((y * x).abs() / (EPS + x * x + y2 * y2)).sqrt();
+            let r = wx * ((y * x).abs() / zeps(x * x + y2 * y2)).sqrt();
             (r * x, r * y2)
         }
         CELL => {
@@ -1188,17 +1443,21 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (m * c, m * s)
         }
         CURVE => (
-            w * (x + p[0] * (-y * y / p[8]).exp()),
-            w * (y + p[1] * (-x * x / p[9]).exp()),
+            w * (x + p[0] * (-y * y * p[8]).exp()),
+            w * (y + p[1] * (-x * x * p[9]).exp()),
         ),
         EDISC => {
             let tmp = t.sumsq + 1.0;
             let tmp2 = 2.0 * x;
             let r1 = (tmp + tmp2).sqrt();
             let r2 = (tmp - tmp2).sqrt();
-            let xmax = (r1 + r2) * 0.5;
+            let xmax = zeps((r1 + r2) * 0.5);
             let a1 = (xmax + (xmax - 1.0).sqrt()).ln();
-            let a2 = -(x / xmax).acos();
+            let a2 = if v.compat {
+                -(x / xmax).clamp(-1.0, 1.0).acos()
+            } else {
+                (x / xmax).acos()
+            };
             let ww = w / 11.57034632;
             let (mut snv, csv) = sincos(a1);
             let snhu = a2.sinh();
@@ -1209,20 +1468,21 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (ww * cshu * csv, ww * snhu * snv)
         }
         ELLIPTIC => {
-            let tmp = t.sumsq + 1.0;
+            // Written with √(1+u) − 1 and ln(1+u) so that points near the x axis keep their
+            // precision.
             let x2 = 2.0 * x;
-            let xmax = 0.5 * ((tmp + x2).sqrt() + (tmp - x2).sqrt());
-            let a = x / xmax;
-            let b = 1.0 - a * a;
-            let ssx = xmax - 1.0;
+            let xmaxm1 = 0.5 * (sqrt1pm1(t.sumsq + x2) + sqrt1pm1(t.sumsq - x2));
+            let a = x / (1.0 + xmaxm1);
+            let ssx = if xmaxm1 < 0.0 { 0.0 } else { xmaxm1.sqrt() };
             let ww = w / FRAC_PI_2;
-            let b = if b < 0.0 { 0.0 } else { b.sqrt() };
-            let ssx = if ssx < 0.0 { 0.0 } else { ssx.sqrt() };
-            let ny = ww * (xmax + ssx).ln();
-            (ww * a.atan2(b), if y > 0.0 { ny } else { -ny })
+            let ny = ww * (xmaxm1 + ssx).ln_1p();
+            (
+                ww * a.clamp(-1.0, 1.0).asin(),
+                if y > 0.0 { ny } else { -ny },
+            )
         }
         ESCHER => {
-            let a = t.atan_yx;
+            let a = if v.compat { t.atan_yx } else { t.atan_xy };
             let lnr = 0.5 * t.sumsq.ln();
             let m = w * (p[8] * lnr - p[9] * a).exp();
             let n = p[8] * a + p[9] * lnr;
@@ -1231,9 +1491,9 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         FOCI => {
             let expx = x.exp() * 0.5;
-            let expnx = 0.25 / expx;
+            let expnx = 0.25 / zeps(expx);
             let (sn, cn) = sincos(y);
-            let tmp = w / (expx + expnx - cn);
+            let tmp = w / zeps(expx + expnx - cn);
             (tmp * (expx - expnx), tmp * sn)
         }
         LAZYSUSAN => {
@@ -1243,26 +1503,23 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let r = (xx * xx + yy * yy).sqrt();
             if r < w {
                 let a = yy.atan2(xx) + spin + twist * (w - r);
-                let r = w * r;
                 let (s, c) = sincos(a);
-                (r * c + lx, r * s - ly)
+                (w * (r * c + lx), w * (r * s - ly))
             } else {
-                let r = w * (1.0 + space / r);
-                (r * xx + lx, r * yy - ly)
+                let r = 1.0 + space / zeps(r);
+                (w * (r * xx + lx), w * (r * yy - ly))
             }
         }
         LOONIE => {
             let r2 = t.sumsq;
-            let w2 = w * w;
-            if r2 < w2 {
+            let w2 = p[8];
+            if r2 < w2 && r2 != 0.0 {
                 let r = w * (w2 / r2 - 1.0).sqrt();
                 (r * x, r * y)
             } else {
                 (w * x, w * y)
             }
         }
-        // pre_blur moves the point before the other variations (see `pre_blur`); it adds
-        // nothing to the sum itself.
         PRE_BLUR => (0.0, 0.0),
         MODULUS => {
             let (mx, my) = (p[0], p[1]);
@@ -1305,8 +1562,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             w * (y + p[1] * fm::sin((x * p[2]).tan())),
         ),
         SCRY => {
-            let tt = t.sumsq;
-            let r = 1.0 / (t.sqrt * (tt + 1.0 / (w + EPS)));
+            let r = 1.0 / zeps(t.sqrt * (t.sumsq + p[8]));
             (x * r, y * r)
         }
         SEPARATION => {
@@ -1371,8 +1627,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         WEDGE_JULIA => {
             let (angle, count, power) = (p[0], p[1], p[2]);
             let r = w * t.sumsq.powf(p[10]);
-            let trnd = (p[9] * rng.f01()).trunc();
-            let mut a = (t.atan_yx + 2.0 * PI * trnd) / power;
+            let k = rand_below(rng, p[9] as u64);
+            let mut a = (t.atan_yx + 2.0 * PI * k) / power;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
             a = a * p[8] + c * angle;
             let (s, co) = sincos(a);
@@ -1380,13 +1636,13 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         WEDGE_SPH => {
             let (angle, count, hole, swirl) = (p[0], p[1], p[2], p[3]);
-            let r = 1.0 / (t.sqrt + EPS);
+            let r = 1.0 / zeps(t.sqrt);
             let mut a = t.atan_yx + swirl * r;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
-            let comp_fac = 1.0 - angle * count * (1.0 / PI) * 0.5;
-            a = a * comp_fac + c * angle;
+            a = a * p[8] + c * angle;
             let r = w * (r + hole);
-            let (s, co) = sincos(a);
+            // The angle is huge near the origin: the exact reduction of the std library.
+            let (s, co) = a.sin_cos();
             (r * co, r * s)
         }
         WHORL => {
@@ -1412,62 +1668,132 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let (s, c) = sincos(y);
             (w * e * c, w * e * s)
         }
-        LOG => (w * 0.5 * t.sumsq.ln(), w * t.atan_yx),
+        LOG => (t.sumsq.ln() * p[8], w * t.atan_yx),
         SIN => {
+            let (x, y) = if v.compat {
+                (x, y)
+            } else {
+                (x * FRAC_PI_2, y * FRAC_PI_2)
+            };
             let (s, c) = sincos(x);
             (w * s * y.cosh(), w * c * y.sinh())
         }
         COS => {
+            let (x, y) = if v.compat {
+                (x, y)
+            } else {
+                (x * FRAC_PI_2, y * FRAC_PI_2)
+            };
             let (s, c) = sincos(x);
-            (w * c * y.cosh(), -w * s * y.sinh())
+            (w * c * y.cosh(), -(w * s * y.sinh()))
         }
         TAN => {
-            let (s, c) = sincos(2.0 * x);
-            let den = 1.0 / (c + (2.0 * y).cosh());
-            (w * den * s, w * den * (2.0 * y).sinh())
+            if v.compat {
+                let (s, c) = sincos(2.0 * x);
+                let den = 1.0 / zeps(c + (2.0 * y).cosh());
+                (w * den * s, w * den * (2.0 * y).sinh())
+            } else {
+                let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
+                let den = w / zeps(fm::cos(x) + y.cosh());
+                (fm::sin(x) * den, y.sinh() * den)
+            }
         }
         SEC => {
+            let (x, y) = if v.compat { (x, y) } else { (x * PI, y * PI) };
             let (s, c) = sincos(x);
-            let den = 2.0 / (fm::cos(2.0 * x) + (2.0 * y).cosh());
-            (w * den * c * y.cosh(), w * den * s * y.sinh())
+            let den = w * (2.0 / zeps(fm::cos(2.0 * x) + (2.0 * y).cosh()));
+            (den * c * y.cosh(), den * s * y.sinh())
         }
         CSC => {
-            let (s, c) = sincos(x);
-            let den = 2.0 / ((2.0 * y).cosh() - fm::cos(2.0 * x));
-            (w * den * s * y.cosh(), -w * den * c * y.sinh())
+            if v.compat {
+                let (s, c) = sincos(x);
+                let den = 2.0 / zeps((2.0 * y).cosh() - fm::cos(2.0 * x));
+                (w * den * s * y.cosh(), -(w * den * c * y.sinh()))
+            } else {
+                let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
+                let (s, c) = sincos(x);
+                let sh = y.sinh();
+                let den = 2.0 * w / (1.0 + 2.0 * sh * sh - fm::cos(2.0 * x));
+                (den * s * y.cosh(), den * c * sh)
+            }
         }
         COT => {
-            let (s, c) = sincos(2.0 * x);
-            let den = 1.0 / ((2.0 * y).cosh() - c);
-            (w * den * s, -w * den * (2.0 * y).sinh())
+            if v.compat {
+                let (s, c) = sincos(2.0 * x);
+                let den = 1.0 / zeps((2.0 * y).cosh() - c);
+                (w * den * s, w * den * -(2.0 * y).sinh())
+            } else {
+                let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
+                let (s, c) = sincos(x);
+                let den = w / zeps(y.cosh() - c);
+                (den * s, den * y.sinh())
+            }
         }
         SINH => {
+            let (x, y) = if v.compat {
+                (x, y)
+            } else {
+                (x * FRAC_PI_4, y * FRAC_PI_4)
+            };
             let (s, c) = sincos(y);
             (w * x.sinh() * c, w * x.cosh() * s)
         }
         COSH => {
+            let (x, y) = if v.compat {
+                (x, y)
+            } else {
+                (x * FRAC_PI_2, y * FRAC_PI_2)
+            };
             let (s, c) = sincos(y);
             (w * x.cosh() * c, w * x.sinh() * s)
         }
         TANH => {
-            let (s, c) = sincos(2.0 * y);
-            let den = 1.0 / (c + (2.0 * x).cosh());
-            (w * den * (2.0 * x).sinh(), w * den * s)
+            if v.compat {
+                let (s, c) = sincos(2.0 * y);
+                let den = 1.0 / zeps(c + (2.0 * x).cosh());
+                (w * den * (2.0 * x).sinh(), w * den * s)
+            } else {
+                let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
+                let (s, c) = sincos(y);
+                let den = w / zeps(c + x.cosh());
+                (den * x.sinh(), den * s)
+            }
         }
         SECH => {
-            let (s, c) = sincos(y);
-            let den = 2.0 / (fm::cos(2.0 * y) + (2.0 * x).cosh());
-            (w * den * c * x.cosh(), -w * den * s * x.sinh())
+            if v.compat {
+                let (s, c) = sincos(y);
+                let den = 2.0 / zeps(fm::cos(2.0 * y) + (2.0 * x).cosh());
+                (w * den * c * x.cosh(), -(w * den * s * x.sinh()))
+            } else {
+                let (x, y) = (x * FRAC_PI_4, y * FRAC_PI_4);
+                let (s, c) = sincos(y);
+                let den = w * (2.0 / zeps(fm::cos(y * 2.0) + (x * 2.0).cosh()));
+                (den * c * x.cosh(), den * s * x.sinh())
+            }
         }
         CSCH => {
-            let (s, c) = sincos(y);
-            let den = 2.0 / ((2.0 * x).cosh() - fm::cos(2.0 * y));
-            (w * den * x.sinh() * c, -w * den * x.cosh() * s)
+            if v.compat {
+                let (s, c) = sincos(y);
+                let den = 2.0 / zeps((2.0 * x).cosh() - fm::cos(2.0 * y));
+                (w * den * x.sinh() * c, -(w * den * x.cosh() * s))
+            } else {
+                let (x, y) = (x * FRAC_PI_4, y * FRAC_PI_4);
+                let (s, c) = sincos(y);
+                let den = w * (2.0 / zeps((2.0 * x).cosh() - fm::cos(2.0 * y)));
+                (den * x.sinh() * c, den * x.cosh() * s)
+            }
         }
         COTH => {
-            let (s, c) = sincos(2.0 * y);
-            let den = 1.0 / ((2.0 * x).cosh() - c);
-            (w * den * (2.0 * x).sinh(), w * den * s)
+            if v.compat {
+                let (s, c) = sincos(2.0 * y);
+                let den = 1.0 / zeps((2.0 * x).cosh() - c);
+                (w * den * (2.0 * x).sinh(), w * den * s)
+            } else {
+                let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
+                let (s, c) = sincos(y);
+                let den = w / zeps(x.cosh() - c);
+                (den * x.sinh(), den * s)
+            }
         }
         AUGER => {
             let (freq, aw, sym, scale) = (p[0], p[1], p[2], p[3]);
@@ -1495,7 +1821,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let im_u = rea * y + ima * x + imb;
             let re_v = rec * x - imc * y + red;
             let im_v = rec * y + imc * x + imd;
-            let rad_v = w / (re_v * re_v + im_v * im_v);
+            let rad_v = w / zeps(re_v * re_v + im_v * im_v);
             (
                 rad_v * (re_u * re_v + im_u * im_v),
                 rad_v * (im_u * re_v - re_u * im_v),
@@ -1504,4 +1830,3 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         _ => (0.0, 0.0),
     }
 }
-

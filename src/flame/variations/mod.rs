@@ -174,9 +174,15 @@ impl Param {
                     c
                 }
             }
-            ParamKind::Int => (v + 0.5).floor().clamp(lo, hi).clamp(-2147483648.0, 2147483647.0),
+            ParamKind::Int => (v + 0.5)
+                .floor()
+                .clamp(lo, hi)
+                .clamp(-2147483648.0, 2147483647.0),
             ParamKind::IntNonZero => {
-                let i = (v + 0.5).floor().clamp(lo, hi).clamp(-2147483648.0, 2147483647.0);
+                let i = (v + 0.5)
+                    .floor()
+                    .clamp(lo, hi)
+                    .clamp(-2147483648.0, 2147483647.0);
                 if i == 0.0 {
                     if v < 0.0 { -1.0 } else { 1.0 }
                 } else {
