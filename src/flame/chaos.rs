@@ -432,11 +432,78 @@ impl CompiledXform {
     }
 }
 
+/// The 3-D camera of a flame, ready to project points (Apophysis 7X's model, as Fractorium and
+/// JWildfire use it): turn by the yaw about z, then by the pitch about x, divide by the
+/// perspective factor 1 − p·z′, and with depth of field move each point by a random offset
+/// proportional to its depth.
+#[derive(Clone, Debug)]
+pub struct Projection {
+    /// Rows: x′, y′, z′ as combinations of (x, y, z − zpos).
+    m: [[f64; 3]; 3],
+    perspective: f64,
+    zpos: f64,
+    /// 0.1 · cam_dof.
+    blur: f64,
+    blur_curve: f64,
+    /// Half the image size in world units (the blur curve is relative to it).
+    half: [f64; 2],
+}
+
+impl Projection {
+    /// The projection of `flame`'s camera, or `None` for the flat view.
+    pub fn of(flame: &Flame) -> Option<Projection> {
+        let c = &flame.cam;
+        if c.is_flat() {
+            return None;
+        }
+        let (sp, cp) = c.pitch.sin_cos();
+        let (sy, cy) = (-c.yaw).sin_cos();
+        let ppu = flame.ppu();
+        Some(Projection {
+            m: [[cy, -sy, 0.0], [cp * sy, cp * cy, -sp], [sp * sy, sp * cy, cp]],
+            perspective: c.perspective,
+            zpos: c.zpos,
+            blur: 0.1 * c.dof,
+            blur_curve: c.blur_curve,
+            half: [
+                flame.width as f64 / 2.0 / ppu,
+                flame.height as f64 / 2.0 / ppu,
+            ],
+        })
+    }
+
+    /// The plotted position of a point.
+    #[inline(always)]
+    pub fn project(&self, x: f64, y: f64, z: f64, rng: &mut FastRng) -> (f64, f64) {
+        let m = &self.m;
+        let z = z - self.zpos;
+        let px = m[0][0] * x + m[0][1] * y;
+        let py = m[1][0] * x + m[1][1] * y + m[1][2] * z;
+        let pz = m[2][0] * x + m[2][1] * y + m[2][2] * z;
+        let zr = variations::util::zeps(1.0 - self.perspective * pz);
+        if self.blur == 0.0 {
+            return (px / zr, py / zr);
+        }
+        let t = rng.f01() * std::f64::consts::TAU;
+        let scale = if self.blur_curve != 0.0 {
+            let d = (px / self.half[0]).hypot(py / self.half[1]) * 10.0;
+            d * d / (4.0 * self.blur_curve)
+        } else {
+            1.0
+        };
+        let dr = rng.f01() * self.blur * scale * pz;
+        let (s, c) = t.sin_cos();
+        ((px + dr * c) / zr, (py + dr * s) / zr)
+    }
+}
+
 /// A flame compiled for the chaos game.
 #[derive(Clone, Debug)]
 pub struct Chaos {
     pub xforms: Vec<CompiledXform>,
     pub final_xform: Option<CompiledXform>,
+    /// The 3-D camera, if the flame has one.
+    pub projection: Option<Projection>,
     /// Row 0: plain weights. Rows 1..=n: xaos rows after xform i − 1 (only when xaos is used),
     /// CHOOSE_GRAIN entries each, concatenated.
     tables: Vec<u16>,
@@ -519,6 +586,7 @@ impl Chaos {
         Ok(Chaos {
             xforms,
             final_xform,
+            projection: Projection::of(flame),
             tables,
             xaos,
         })
@@ -541,6 +609,18 @@ impl Chaos {
         match &self.final_xform {
             Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => f.apply(p, rng).0,
             _ => p,
+        }
+    }
+
+    /// Where a point is plotted: through the 3-D camera, if any (z is kept).
+    #[inline(always)]
+    pub fn project(&self, p: Pt, rng: &mut FastRng) -> Pt {
+        match &self.projection {
+            Some(pr) => {
+                let (x, y) = pr.project(p.x, p.y, p.z, rng);
+                Pt { x, y, ..p }
+            }
+            None => p,
         }
     }
 
@@ -578,7 +658,8 @@ impl Chaos {
             consec = 0;
             last = Some(i);
             if k >= 0 {
-                plot(self.finalise(p, rng), xf.vis);
+                let q = self.finalise(p, rng);
+                plot(self.project(q, rng), xf.vis);
             }
             k += 1;
         }
@@ -745,6 +826,12 @@ impl Chaos {
                         ln.fin.z[j] = ln.g.z[k];
                         ln.fin.c[j] = ln.g.c[k];
                     }
+                }
+            }
+            if let Some(pr) = &self.projection {
+                let fin = &mut ln.fin;
+                for j in 0..nf.min(LANES) {
+                    (fin.x[j], fin.y[j]) = pr.project(fin.x[j], fin.y[j], fin.z[j], rng);
                 }
             }
             let (fin, m) = (&ln.fin, nf.min(LANES));

@@ -92,6 +92,7 @@ pub fn framing_orbit(chaos: &Chaos, n: usize) -> (Vec<f64>, Vec<f64>) {
             }
             (p, last) = (np, Some(i));
             let q = chaos.finalise(p, &mut rng);
+            let q = chaos.project(q, &mut rng);
             let (px, py) = (q.x, q.y);
             if px.is_finite() && py.is_finite() {
                 xs.push(px);

@@ -305,6 +305,36 @@ impl FlameKind {
     }
 }
 
+/// The 3-D camera of Apophysis 7X, Fractorium and JWildfire: points carry z through the chaos
+/// game and are turned (yaw about z, then pitch about x), seen in perspective and blurred by
+/// depth before they are plotted. All zero: the flat flam3 view.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Camera3d {
+    /// Radians (`cam_pitch`).
+    pub pitch: f64,
+    /// Radians (`cam_yaw`).
+    pub yaw: f64,
+    /// Perspective strength (`cam_perspective` / `cam_persp`): 1/distance of the eye.
+    pub perspective: f64,
+    /// Height of the focal plane (`cam_zpos`).
+    pub zpos: f64,
+    /// Depth-of-field blur (`cam_dof`).
+    pub dof: f64,
+    /// How the blur grows away from the centre (Fractorium's `blur_curve`; 0: uniform).
+    pub blur_curve: f64,
+}
+
+impl Camera3d {
+    /// No 3-D projection at all.
+    pub fn is_flat(&self) -> bool {
+        self.pitch == 0.0
+            && self.yaw == 0.0
+            && self.perspective == 0.0
+            && self.zpos == 0.0
+            && self.dof == 0.0
+    }
+}
+
 /// A fractal flame: camera, render settings, palette and transforms (flame.md §2).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Flame {
@@ -315,6 +345,10 @@ pub struct Flame {
     /// Pixels per world unit at zoom 0.
     pub scale: f64,
     pub zoom: f64,
+    /// JWildfire's `cam_zoom`: a further factor on the scale (1 = none).
+    pub cam_zoom: f64,
+    /// The 3-D camera (flat by default).
+    pub cam: Camera3d,
     /// Degrees; positive turns the picture clockwise on screen.
     pub rotate: f64,
     pub quality: f64,
@@ -363,6 +397,8 @@ impl Default for Flame {
             center: [0.0, 0.0],
             scale: 100.0,
             zoom: 0.0,
+            cam_zoom: 1.0,
+            cam: Camera3d::default(),
             rotate: 0.0,
             quality: 15.0,
             supersample: 1,
@@ -395,9 +431,9 @@ impl Default for Flame {
 }
 
 impl Flame {
-    /// Pixels per world unit: scale·2^zoom.
+    /// Pixels per world unit: scale·2^zoom·cam_zoom.
     pub fn ppu(&self) -> f64 {
-        self.scale * self.zoom.exp2()
+        self.scale * self.zoom.exp2() * self.cam_zoom
     }
 
     /// Total chaos-game samples: quality·4^zoom·W·H (flame.md §5.1).

@@ -409,6 +409,23 @@ fn read_flame(
             }
             "angle" => angle = Some(cx.num(a)?),
             "zoom" => f.zoom = cx.num(a)?,
+            "cam_zoom" => {
+                let z = cx.num(a)?;
+                if !(z > 0.0 && z.is_finite()) {
+                    return Err(cx.err(
+                        a.offset,
+                        "XML013",
+                        format!("cam_zoom {z} must be positive"),
+                    ));
+                }
+                f.cam_zoom = z;
+            }
+            "cam_pitch" => f.cam.pitch = cx.num(a)?,
+            "cam_yaw" => f.cam.yaw = cx.num(a)?,
+            "cam_perspective" | "cam_persp" => f.cam.perspective = cx.num(a)?,
+            "cam_zpos" => f.cam.zpos = cx.num(a)?,
+            "cam_dof" => f.cam.dof = cx.num(a)?,
+            "blur_curve" => f.cam.blur_curve = cx.num(a)?,
             "supersample" | "oversample" => {
                 let n = cx.int(a)?;
                 if !(1..=16).contains(&n) {
@@ -1286,6 +1303,24 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     }
     if let Some(solo) = f.solo_xform {
         let _ = write!(s, " soloxform=\"{solo}\"");
+    }
+    if f.cam_zoom != 1.0 {
+        let _ = write!(s, " cam_zoom=\"{}\"", n(f.cam_zoom));
+    }
+    let c = &f.cam;
+    if !c.is_flat() || c.blur_curve != 0.0 {
+        let _ = write!(
+            s,
+            " cam_pitch=\"{}\" cam_yaw=\"{}\" cam_perspective=\"{}\" cam_zpos=\"{}\" cam_dof=\"{}\"",
+            n(c.pitch),
+            n(c.yaw),
+            n(c.perspective),
+            n(c.zpos),
+            n(c.dof)
+        );
+        if c.blur_curve != 0.0 {
+            let _ = write!(s, " blur_curve=\"{}\"", n(c.blur_curve));
+        }
     }
     for (k, v) in &f.extra_attrs {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
