@@ -73,13 +73,15 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_juliaq),
-    VarDef::new("Kaleidoscope", kaleidoscope).params(&[
-        p("Kaleidoscope_pull", 0.0),
-        p("Kaleidoscope_rotate", 1.0),
-        p("Kaleidoscope_line_up", 1.0),
-        p("Kaleidoscope_x", 0.0),
-        p("Kaleidoscope_y", 0.0),
-    ]),
+    VarDef::new("Kaleidoscope", kaleidoscope)
+        .params(&[
+            p("Kaleidoscope_pull", 0.0),
+            p("Kaleidoscope_rotate", 1.0),
+            p("Kaleidoscope_line_up", 1.0),
+            p("Kaleidoscope_x", 0.0),
+            p("Kaleidoscope_y", 0.0),
+        ])
+        .prepare(prep_kaleidoscope),
     VarDef::new("lazyjess", lazyjess)
         .params(&[
             p_nonzero("lazyjess_n", 4.0, 2.0, INF),
@@ -597,13 +599,19 @@ fn juliaq(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 // ---------------------------------------------------------------------------------------------
 // K, L.
 
+fn prep_kaleidoscope(v: &mut Prepared) {
+    // 45° in radians as Fractorium forms it; its sine and cosine differ in the last bit.
+    let quarter = 45.0 * (PI / 180.0);
+    v.p.push(quarter.sin());
+    v.p.push(quarter.cos());
+}
+
 /// Kaleidoscope: rotates the plane by 45° (scaling by `rotate`) and splits it along y = 0, the
 /// two halves being pushed apart by `pull` and shifted by `line_up`; the weight is not used.
 fn kaleidoscope(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let q = &v.p;
     let (pull, rotate, line_up, sx, sy) = (q[0], q[1], q[2], q[3], q[4]);
-    let quarter = 45.0 * (PI / 180.0);
-    let (s45, c45) = (quarter.sin(), quarter.cos());
+    let (s45, c45) = (q[5], q[6]);
     let x = ((rotate * t.x) * c45 - t.y * s45 + line_up) + sx;
     let y = if t.y > 0.0 {
         ((rotate * t.y) * c45 + t.x * s45 + pull + line_up) + sy
