@@ -679,10 +679,13 @@ pub fn parse_name(attr: &str) -> Option<(VarId, Form)> {
         return Some((GAUSSIAN_BLUR, Form::Pre));
     }
     if let Some(&id) = REGISTRY.names.get(&key) {
-        if info(id).has(flag::POST_ONLY) {
-            return None;
-        }
-        return Some((id, Form::Regular));
+        // Post-only variations are registered under their `post_` name.
+        let form = if info(id).has(flag::POST_ONLY) {
+            Form::Post
+        } else {
+            Form::Regular
+        };
+        return Some((id, form));
     }
     for (prefix, form) in [("pre_", Form::Pre), ("post_", Form::Post)] {
         if let Some(rest) = key.strip_prefix(prefix)
@@ -690,12 +693,6 @@ pub fn parse_name(attr: &str) -> Option<(VarId, Form)> {
         {
             return Some((id, form));
         }
-    }
-    // Post-only variations are registered under their `post_` name.
-    if let Some(&id) = REGISTRY.names.get(&key)
-        && info(id).has(flag::POST_ONLY)
-    {
-        return Some((id, Form::Post));
     }
     None
 }
