@@ -251,6 +251,63 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::SETS_COLOR)
         .prepare(snowflake_prepare),
+    VarDef::new("polarplot3d_wf", polarplot3d_wf)
+        .params(&[
+            p_int("polarplot3d_wf_preset_id", 2.0, NINF, INF),
+            p("polarplot3d_wf_tmin", -PI),
+            p("polarplot3d_wf_tmax", PI),
+            p("polarplot3d_wf_umin", 0.0),
+            p("polarplot3d_wf_umax", PI),
+            p("polarplot3d_wf_rmin", -2.0),
+            p("polarplot3d_wf_rmax", 2.0),
+            p_int("polarplot3d_wf_cylindrical", 0.0, NINF, INF),
+            p_int("polarplot3d_wf_direct_color", 1.0, NINF, INF),
+            p_int("polarplot3d_wf_color_mode", 2.0, NINF, INF),
+            p_int("polarplot3d_wf_blend_colormap", 1.0, 0.0, 1.0),
+            p("polarplot3d_wf_displ_amount", 0.1),
+            p_int("polarplot3d_wf_blend_displ_map", 1.0, 0.0, 1.0),
+            p("polarplot3d_wf_param_a", 0.0),
+            p("polarplot3d_wf_param_b", 0.0),
+            p("polarplot3d_wf_param_c", 0.0),
+            p("polarplot3d_wf_param_d", 0.0),
+            p("polarplot3d_wf_param_e", 0.0),
+            p("polarplot3d_wf_param_f", 0.0),
+        ])
+        .flags(
+            flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::USES_COLOR,
+        )
+        .prepare(polarplot_prepare),
+    VarDef::new("knots3D", knots3d)
+        .params(&[
+            p_int("knots3D_presetId", 0.0, NINF, INF),
+            p_int("knots3D_steps", 1000.0, 1.0, 1_000_000.0),
+            p("knots3D_radius", 1.05),
+            p_int("knots3D_facets", 4.0, 1.0, 1000.0),
+            p("knots3D_param_a", 0.0),
+            p("knots3D_param_b", 0.0),
+            p("knots3D_param_c", 0.0),
+            p("knots3D_param_d", 0.0),
+            p("knots3D_param_e", 0.0),
+            p("knots3D_param_f", 0.0),
+            p("knots3D_param_g", 0.0),
+            p("knots3D_param_h", 0.0),
+            p("knots3D_scale_x", 0.02),
+            p("knots3D_scale_y", 0.02),
+            p("knots3D_scale_z", 0.02),
+            p("knots3D_offset_x", 0.0),
+            p("knots3D_offset_y", 0.0),
+            p("knots3D_offset_z", 0.0),
+            p_int("knots3D_subdiv_level", 0.0, 0.0, 6.0),
+            p_int("knots3D_subdiv_smooth_passes", 12.0, 0.0, 24.0),
+            p("knots3D_subdiv_smooth_lambda", 0.42),
+            p("knots3D_subdiv_smooth_mu", -0.45),
+            p_int("knots3D_blend_colormap", 1.0, 0.0, 1.0),
+            p("knots3D_displ_amount", 0.1),
+            p_int("knots3D_blend_displ_map", 1.0, 0.0, 1.0),
+            p_int("knots3D_receive_only_shadows", 0.0, 0.0, 1.0),
+        ])
+        .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z)
+        .prepare(knots3d_prepare),
 ];
 
 // ---------------------------------------------------------------------------------------------
@@ -652,6 +709,8 @@ fn post_mirror_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
 // ---------------------------------------------------------------------------------------------
 // crop_stars
 
+// JWildfire rounds π to 6 decimals here; kept so that the star's edges agree.
+#[allow(clippy::approx_constant)]
 fn crop_stars_prepare(v: &mut Prepared) {
     let (radius, n, r2) = (v.p[0], v.p[1], v.p[2]);
     // Inner angle of a sector and the star's external angle; JWildfire uses 6-digit π here.
@@ -695,9 +754,9 @@ fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
     let d = (px * px + py * py).sqrt() * signum_java(px);
     // JWildfire hides (d > 0) outside, or (d <= 0) inside when inverted; NaN is kept.
     let keep = if invert == 0.0 {
-        !(d > 0.0)
+        d.is_nan() || d <= 0.0
     } else {
-        !(d <= 0.0)
+        d.is_nan() || d > 0.0
     };
     acc.x = 0.0;
     acc.y = 0.0;
@@ -949,13 +1008,11 @@ fn nsudoku_prepare(v: &mut Prepared) {
         }
         v.p.push(size * (n / level) / 9.0);
         v.p.push(if 1.0 - 1.0 / n == 0.0 { 0.0 } else { hole });
-        for i in 0..9 {
-            for j in 0..9 {
-                // Cell (i, j) shows row j, column i of the row-permuted grid.
-                let row = perm[j] as usize - 1;
-                v.p.push(base[row][i] as f64);
-            }
-        }
+        // Cell (i, j) shows row j, column i of the row-permuted grid.
+        v.p.extend((0..9).flat_map(|i| {
+            perm.iter()
+                .map(move |&row| base[row as usize - 1][i] as f64)
+        }));
         layers += 1;
         // Later layers use permutations sharing no row position with this one.
         candidates.retain(|c| c.iter().zip(&perm).all(|(a, b)| a != b));
@@ -1145,10 +1202,970 @@ fn snowflake_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
     [v.w * pt[0], v.w * pt[1], 0.0]
 }
 
+// ---------------------------------------------------------------------------------------------
+// polarplot3d_wf
+
+fn polarplot_prepare(v: &mut Prepared) {
+    let sorted = |a: f64, b: f64| if a > b { (b, a - b) } else { (a, b - a) };
+    let (tmin, dt) = sorted(v.p[1], v.p[2]);
+    let (umin, du) = sorted(v.p[3], v.p[4]);
+    let (rmin, dr) = sorted(v.p[5], v.p[6]);
+    v.p.extend_from_slice(&[tmin, dt, umin, du, rmin, dr]);
+}
+
+/// The radius r(t, u) of polarplot3d_wf's stock formula `preset` (JWildfire's presets 0–9) with
+/// parameters a, b, c; `None` for other ids (custom formulas, which ugnis cannot read).
+fn polar_preset(preset: f64, t: f64, u: f64, a: f64, b: f64, c: f64) -> Option<f64> {
+    Some(match preset as i32 {
+        0 | 1 => (a * u).sin() + b,
+        2 => u,
+        3 => ((a * t).sin() + (b * u).cos()) + c,
+        4 | 5 => (a * t + b * u).sin() + c,
+        6 => (a * t).sin() + b * u,
+        7 => t / (a + u) + b,
+        8 => u * u + a,
+        9 => (a * t + (b * u).sin()).cos() + c,
+        _ => return None,
+    })
+}
+
+/// polarplot3d_wf: a surface r = f(t, u) in spherical coordinates (t the azimuth, u the polar
+/// angle) or cylindrical ones (r·cos t, r·sin t, u), sampled at uniformly random (t, u); the
+/// colour can follow t, u, r or t·u. Only JWildfire's stock formulas (by preset id) are known.
+fn polarplot3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let q = &v.p;
+    let (tmin, dt, umin, du, rmin, dr) = (q[19], q[20], q[21], q[22], q[23], q[24]);
+    let rt = rng.f01();
+    let ru = rng.f01();
+    let t = tmin + rt * dt;
+    let u = umin + ru * du;
+    let Some(r) = polar_preset(q[0], t, u, q[13], q[14], q[15]) else {
+        return [0.0; 3];
+    };
+    let (st, ct) = t.sin_cos();
+    let out = if q[7] == 0.0 {
+        let (su, cu) = u.sin_cos();
+        [r * su * ct, r * su * st, r * cu]
+    } else {
+        [r * ct, r * st, u]
+    };
+    if q[8] > 0.0 {
+        let c = match q[9] as i32 {
+            1 => (t - tmin) / dt,
+            2 => (u - umin) / du,
+            3 => (r - rmin) / dr,
+            4 => (t - tmin) / dt * (u - umin) / du,
+            _ => acc.color,
+        };
+        acc.color = c.clamp(0.0, 1.0);
+    }
+    [v.w * out[0], v.w * out[1], v.w * out[2]]
+}
+
+// ---------------------------------------------------------------------------------------------
+// knots3D
+
+/// One term c·cos(k·t) (c·sin(k·t) when the flag is set) of a Fourier knot coordinate.
+type KnotTerm = (f64, f64, bool);
+
+enum KnotCurve {
+    /// x, y and z as sums of terms.
+    Fourier([&'static [KnotTerm]; 3]),
+    /// ((a + b·cos(c·t))·cos(d·t), (a + b·cos(c·t))·sin(d·t), b·sin(c·t)).
+    Torus,
+    /// (a·cos(b·t + e), a·cos(c·t + f), a·cos(d·t + g)).
+    Lissajous,
+}
+
+/// knots3D's stock curves, by preset id (JWildfire's knots3d_wf presets 0-23): Fourier sums
+/// Σ c·cos(k·t) / c·sin(k·t) per axis, torus knots and Lissajous knots.
+static KNOT_CURVES: [KnotCurve; 24] = [
+    KnotCurve::Fourier([
+        &[(-10.0, 1.0, false), (-2.0, 5.0, false), (15.0, 2.0, true)],
+        &[(-15.0, 2.0, false), (10.0, 1.0, true), (-2.0, 5.0, true)],
+        &[(10.0, 3.0, false)],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-22.0, 1.0, false),
+            (-128.0, 1.0, true),
+            (-44.0, 3.0, false),
+            (-78.0, 3.0, true),
+        ],
+        &[
+            (-10.0, 2.0, false),
+            (-27.0, 2.0, true),
+            (38.0, 4.0, false),
+            (46.0, 4.0, true),
+        ],
+        &[(70.0, 3.0, false), (-40.0, 3.0, true)],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-22.0, 1.0, false),
+            (-128.0, 1.0, true),
+            (-44.0, 3.0, false),
+            (-78.0, 3.0, true),
+        ],
+        &[
+            (11.0, 1.0, false),
+            (-43.0, 3.0, false),
+            (34.0, 5.0, false),
+            (-39.0, 5.0, true),
+        ],
+        &[
+            (70.0, 3.0, false),
+            (-40.0, 3.0, true),
+            (8.0, 5.0, false),
+            (-9.0, 5.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[(10.0, 1.0, false), (10.0, 3.0, false)],
+        &[(6.0, 1.0, true), (10.0, 3.0, true)],
+        &[(4.0, 3.0, true), (-10.0, 6.0, true)],
+    ]),
+    KnotCurve::Torus,
+    KnotCurve::Torus,
+    KnotCurve::Fourier([
+        &[
+            (41.0, 1.0, false),
+            (-18.0, 1.0, true),
+            (-83.0, 2.0, false),
+            (-83.0, 2.0, true),
+            (-11.0, 3.0, false),
+            (27.0, 3.0, true),
+        ],
+        &[
+            (6.0, 1.0, false),
+            (27.0, 1.0, true),
+            (-113.0, 2.0, false),
+            (30.0, 2.0, true),
+            (11.0, 3.0, false),
+            (-27.0, 3.0, true),
+        ],
+        &[
+            (45.0, 1.0, true),
+            (-30.0, 2.0, false),
+            (113.0, 2.0, true),
+            (-11.0, 3.0, false),
+            (27.0, 3.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (32.0, 1.0, false),
+            (-51.0, 1.0, true),
+            (-104.0, 2.0, false),
+            (-34.0, 2.0, true),
+            (104.0, 3.0, false),
+            (-91.0, 3.0, true),
+        ],
+        &[
+            (94.0, 1.0, false),
+            (41.0, 1.0, true),
+            (113.0, 2.0, false),
+            (-68.0, 3.0, false),
+            (-124.0, 3.0, true),
+        ],
+        &[
+            (16.0, 1.0, false),
+            (73.0, 1.0, true),
+            (-211.0, 2.0, false),
+            (-39.0, 2.0, true),
+            (-99.0, 3.0, false),
+            (-21.0, 3.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (88.0, 1.0, false),
+            (115.0, 1.0, true),
+            (-475.0, 2.0, false),
+            (-127.0, 2.0, true),
+            (-87.0, 3.0, false),
+            (36.0, 3.0, true),
+            (11.0, 4.0, false),
+            (-19.0, 4.0, true),
+        ],
+        &[
+            (89.0, 1.0, false),
+            (-32.0, 1.0, true),
+            (-172.0, 2.0, false),
+            (294.0, 2.0, true),
+            (76.0, 3.0, false),
+            (102.0, 3.0, true),
+            (-61.0, 4.0, false),
+            (113.0, 4.0, true),
+        ],
+        &[
+            (44.0, 1.0, false),
+            (-69.0, 1.0, true),
+            (34.0, 2.0, false),
+            (223.0, 2.0, true),
+            (16.0, 3.0, false),
+            (120.0, 3.0, true),
+            (42.0, 4.0, false),
+            (-125.0, 4.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-33.0, 1.0, false),
+            (43.0, 1.0, true),
+            (214.0, 2.0, true),
+            (-101.0, 3.0, false),
+            (-47.0, 3.0, true),
+            (11.0, 4.0, true),
+        ],
+        &[
+            (-57.0, 1.0, false),
+            (99.0, 1.0, true),
+            (-54.0, 2.0, false),
+            (-159.0, 2.0, true),
+            (-117.0, 3.0, false),
+            (-5.0, 3.0, true),
+            (-31.0, 4.0, false),
+            (-45.0, 4.0, true),
+        ],
+        &[
+            (34.0, 1.0, false),
+            (-21.0, 1.0, true),
+            (-100.0, 2.0, false),
+            (-93.0, 2.0, true),
+            (-27.0, 3.0, false),
+            (-16.0, 3.0, true),
+            (52.0, 4.0, false),
+            (84.0, 4.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (12.0, 1.0, false),
+            (20.0, 1.0, true),
+            (-163.0, 2.0, false),
+            (76.0, 2.0, true),
+            (-87.0, 3.0, false),
+            (-15.0, 3.0, true),
+            (-21.0, 4.0, false),
+            (14.0, 4.0, true),
+            (24.0, 5.0, false),
+            (-50.0, 5.0, true),
+        ],
+        &[
+            (29.0, 1.0, false),
+            (78.0, 1.0, true),
+            (-180.0, 2.0, false),
+            (58.0, 2.0, true),
+            (88.0, 3.0, false),
+            (72.0, 3.0, true),
+            (-14.0, 4.0, true),
+        ],
+        &[
+            (-30.0, 1.0, false),
+            (-78.0, 1.0, true),
+            (-111.0, 2.0, false),
+            (37.0, 2.0, true),
+            (-67.0, 3.0, false),
+            (-51.0, 3.0, true),
+            (31.0, 4.0, false),
+            (8.0, 4.0, true),
+            (-11.0, 5.0, false),
+            (65.0, 5.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-6.0, 1.0, false),
+            (-21.0, 1.0, true),
+            (-195.0, 2.0, false),
+            (92.0, 2.0, true),
+            (-64.0, 3.0, false),
+            (-23.0, 3.0, true),
+            (-6.0, 4.0, false),
+            (13.0, 4.0, true),
+            (24.0, 5.0, false),
+            (15.0, 5.0, true),
+            (41.0, 6.0, true),
+        ],
+        &[
+            (-21.0, 1.0, false),
+            (-24.0, 1.0, true),
+            (-207.0, 2.0, false),
+            (-72.0, 2.0, true),
+            (112.0, 3.0, false),
+            (-7.0, 3.0, true),
+            (-13.0, 4.0, false),
+            (-40.0, 4.0, true),
+            (-27.0, 5.0, false),
+            (-3.0, 5.0, true),
+            (-17.0, 6.0, false),
+        ],
+        &[
+            (-18.0, 1.0, false),
+            (-13.0, 1.0, true),
+            (113.0, 2.0, false),
+            (-107.0, 2.0, true),
+            (86.0, 3.0, false),
+            (-9.0, 3.0, true),
+            (-26.0, 4.0, false),
+            (-7.0, 4.0, true),
+            (24.0, 5.0, false),
+            (33.0, 5.0, true),
+            (21.0, 6.0, false),
+            (31.0, 6.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-40.0, 1.0, false),
+            (32.0, 1.0, true),
+            (69.0, 2.0, false),
+            (-12.0, 2.0, true),
+            (120.0, 3.0, false),
+            (-52.0, 3.0, true),
+            (-56.0, 4.0, false),
+            (46.0, 4.0, true),
+            (-17.0, 5.0, true),
+            (14.0, 6.0, false),
+            (19.0, 6.0, true),
+        ],
+        &[
+            (90.0, 1.0, false),
+            (89.0, 1.0, true),
+            (-142.0, 2.0, false),
+            (147.0, 2.0, true),
+            (74.0, 3.0, false),
+            (85.0, 3.0, true),
+            (-56.0, 4.0, true),
+            (23.0, 5.0, false),
+            (16.0, 6.0, false),
+            (7.0, 6.0, true),
+        ],
+        &[
+            (52.0, 1.0, false),
+            (64.0, 1.0, true),
+            (53.0, 2.0, false),
+            (35.0, 2.0, true),
+            (77.0, 3.0, false),
+            (-87.0, 3.0, true),
+            (101.0, 4.0, false),
+            (-19.0, 4.0, true),
+            (-5.0, 5.0, false),
+            (2.0, 5.0, true),
+            (3.0, 6.0, false),
+            (9.0, 6.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (54.0, 1.0, false),
+            (-4.0, 1.0, true),
+            (-239.0, 2.0, false),
+            (-44.0, 2.0, true),
+            (-45.0, 3.0, false),
+            (-17.0, 3.0, true),
+            (-33.0, 4.0, false),
+            (-27.0, 4.0, true),
+            (19.0, 5.0, false),
+            (19.0, 5.0, true),
+            (-8.0, 6.0, false),
+            (15.0, 6.0, true),
+        ],
+        &[
+            (-16.0, 1.0, false),
+            (-43.0, 1.0, true),
+            (11.0, 2.0, false),
+            (170.0, 2.0, true),
+            (-22.0, 3.0, false),
+            (41.0, 3.0, true),
+            (21.0, 4.0, false),
+            (2.0, 5.0, false),
+            (-12.0, 5.0, true),
+            (-43.0, 6.0, false),
+            (26.0, 6.0, true),
+        ],
+        &[
+            (-55.0, 1.0, true),
+            (-78.0, 2.0, false),
+            (189.0, 2.0, true),
+            (-38.0, 3.0, false),
+            (41.0, 3.0, true),
+            (10.0, 4.0, false),
+            (-16.0, 4.0, true),
+            (-38.0, 5.0, false),
+            (18.0, 5.0, true),
+            (22.0, 6.0, false),
+            (-15.0, 6.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (10.0, 1.0, false),
+            (115.0, 1.0, true),
+            (-184.0, 2.0, false),
+            (10.0, 2.0, true),
+            (101.0, 3.0, true),
+            (23.0, 4.0, false),
+            (55.0, 4.0, true),
+            (-38.0, 5.0, false),
+            (-6.0, 5.0, true),
+            (-14.0, 6.0, false),
+            (8.0, 6.0, true),
+            (16.0, 6.0, false),
+            (14.0, 6.0, true),
+        ],
+        &[
+            (42.0, 1.0, false),
+            (-104.0, 1.0, true),
+            (-252.0, 2.0, false),
+            (47.0, 2.0, true),
+            (-21.0, 3.0, false),
+            (-65.0, 3.0, true),
+            (-23.0, 4.0, false),
+            (-23.0, 4.0, true),
+            (36.0, 5.0, false),
+            (-10.0, 5.0, true),
+            (-13.0, 6.0, false),
+            (2.0, 6.0, true),
+            (-18.0, 7.0, false),
+            (-9.0, 7.0, true),
+        ],
+        &[
+            (30.0, 1.0, true),
+            (20.0, 2.0, false),
+            (19.0, 2.0, true),
+            (6.0, 3.0, false),
+            (-31.0, 3.0, true),
+            (-4.0, 4.0, false),
+            (-24.0, 4.0, true),
+            (-44.0, 5.0, false),
+            (-50.0, 5.0, true),
+            (31.0, 6.0, false),
+            (39.0, 6.0, true),
+            (-16.0, 7.0, false),
+            (23.0, 7.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-14.0, 1.0, false),
+            (-19.0, 1.0, true),
+            (-53.0, 2.0, false),
+            (-120.0, 2.0, true),
+            (71.0, 3.0, false),
+            (-50.0, 3.0, true),
+            (-47.0, 4.0, false),
+            (-86.0, 4.0, true),
+            (9.0, 5.0, false),
+            (-5.0, 5.0, true),
+            (12.0, 6.0, false),
+            (22.0, 6.0, true),
+        ],
+        &[
+            (-11.0, 1.0, false),
+            (13.0, 1.0, true),
+            (-294.0, 2.0, false),
+            (112.0, 2.0, true),
+            (29.0, 3.0, false),
+            (-22.0, 3.0, true),
+            (4.0, 4.0, false),
+            (11.0, 4.0, true),
+            (-6.0, 5.0, false),
+            (-14.0, 6.0, false),
+            (18.0, 6.0, true),
+        ],
+        &[
+            (28.0, 1.0, false),
+            (9.0, 1.0, true),
+            (-39.0, 2.0, false),
+            (-60.0, 2.0, true),
+            (-60.0, 3.0, false),
+            (21.0, 3.0, true),
+            (50.0, 4.0, false),
+            (-11.0, 4.0, true),
+            (44.0, 5.0, false),
+            (-63.0, 5.0, true),
+            (14.0, 6.0, false),
+            (9.0, 6.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (32.0, 1.0, false),
+            (10.0, 1.0, true),
+            (-12.0, 2.0, false),
+            (10.0, 2.0, true),
+            (48.0, 3.0, false),
+            (75.0, 3.0, true),
+            (-32.0, 4.0, false),
+            (12.0, 4.0, true),
+            (3.0, 5.0, false),
+            (-8.0, 5.0, true),
+            (-2.0, 6.0, false),
+            (-4.0, 6.0, true),
+        ],
+        &[
+            (-16.0, 1.0, false),
+            (-10.0, 1.0, true),
+            (-90.0, 2.0, false),
+            (129.0, 2.0, true),
+            (-6.0, 3.0, false),
+            (-8.0, 3.0, true),
+            (-19.0, 4.0, false),
+            (-6.0, 4.0, true),
+            (-8.0, 5.0, false),
+            (6.0, 5.0, true),
+            (4.0, 6.0, false),
+            (13.0, 6.0, true),
+        ],
+        &[
+            (-12.0, 1.0, false),
+            (1.0, 1.0, true),
+            (-55.0, 2.0, false),
+            (32.0, 2.0, true),
+            (-10.0, 3.0, false),
+            (-13.0, 3.0, true),
+            (2.0, 4.0, false),
+            (26.0, 4.0, true),
+            (17.0, 5.0, false),
+            (9.0, 5.0, true),
+            (15.0, 6.0, false),
+            (-21.0, 6.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (5.0, 1.0, false),
+            (5.0, 1.0, true),
+            (-163.0, 2.0, false),
+            (-80.0, 2.0, true),
+            (-28.0, 3.0, false),
+            (15.0, 3.0, true),
+            (-20.0, 4.0, false),
+            (13.0, 4.0, true),
+            (-11.0, 5.0, false),
+            (-12.0, 5.0, true),
+            (4.0, 6.0, false),
+            (-19.0, 6.0, true),
+            (12.0, 7.0, false),
+            (2.0, 7.0, true),
+        ],
+        &[
+            (-31.0, 1.0, false),
+            (6.0, 1.0, true),
+            (-113.0, 2.0, false),
+            (81.0, 2.0, true),
+            (87.0, 3.0, false),
+            (4.0, 3.0, true),
+            (5.0, 4.0, false),
+            (18.0, 4.0, true),
+            (-4.0, 5.0, false),
+            (11.0, 5.0, true),
+            (-17.0, 6.0, false),
+            (5.0, 6.0, true),
+            (-6.0, 7.0, false),
+            (-13.0, 7.0, true),
+        ],
+        &[
+            (-11.0, 1.0, false),
+            (-3.0, 1.0, true),
+            (21.0, 2.0, false),
+            (31.0, 2.0, true),
+            (8.0, 3.0, false),
+            (2.0, 3.0, true),
+            (2.0, 4.0, false),
+            (13.0, 4.0, true),
+            (27.0, 5.0, false),
+            (7.0, 5.0, true),
+            (-8.0, 6.0, false),
+            (-29.0, 6.0, true),
+            (11.0, 7.0, false),
+            (-8.0, 7.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-17.0, 1.0, false),
+            (80.0, 1.0, true),
+            (-70.0, 2.0, false),
+            (-190.0, 2.0, true),
+            (-26.0, 3.0, false),
+            (-145.0, 3.0, true),
+            (-62.0, 4.0, false),
+            (-31.0, 4.0, true),
+            (26.0, 5.0, false),
+            (13.0, 5.0, true),
+            (-2.0, 6.0, false),
+            (8.0, 6.0, true),
+            (-10.0, 7.0, false),
+            (9.0, 7.0, true),
+        ],
+        &[
+            (102.0, 1.0, false),
+            (-151.0, 1.0, true),
+            (-36.0, 2.0, false),
+            (-25.0, 2.0, true),
+            (200.0, 3.0, false),
+            (-18.0, 3.0, true),
+            (-30.0, 4.0, false),
+            (28.0, 4.0, true),
+            (-7.0, 5.0, false),
+            (2.0, 5.0, true),
+            (13.0, 6.0, false),
+            (-11.0, 6.0, true),
+            (-5.0, 7.0, false),
+            (-1.0, 7.0, true),
+        ],
+        &[
+            (58.0, 1.0, false),
+            (-17.0, 1.0, true),
+            (-5.0, 2.0, false),
+            (-27.0, 2.0, true),
+            (66.0, 3.0, false),
+            (-38.0, 3.0, true),
+            (28.0, 4.0, false),
+            (-80.0, 4.0, true),
+            (-35.0, 5.0, false),
+            (28.0, 5.0, true),
+            (-26.0, 6.0, false),
+            (-34.0, 6.0, true),
+            (32.0, 7.0, false),
+            (1.0, 7.0, true),
+        ],
+    ]),
+    KnotCurve::Fourier([
+        &[
+            (-5.0, 1.0, false),
+            (8.0, 2.0, false),
+            (83.0, 2.0, true),
+            (87.0, 3.0, false),
+            (100.0, 3.0, true),
+            (-5.0, 4.0, false),
+            (22.0, 4.0, true),
+            (-10.0, 5.0, false),
+            (10.0, 5.0, true),
+            (-2.0, 6.0, false),
+            (-10.0, 6.0, true),
+            (5.0, 7.0, false),
+            (6.0, 7.0, true),
+        ],
+        &[
+            (17.0, 1.0, false),
+            (21.0, 1.0, true),
+            (-174.0, 2.0, false),
+            (13.0, 2.0, true),
+            (-15.0, 3.0, false),
+            (3.0, 3.0, true),
+            (-9.0, 4.0, false),
+            (46.0, 4.0, true),
+            (16.0, 5.0, false),
+            (-25.0, 5.0, true),
+            (-21.0, 6.0, false),
+            (7.0, 6.0, true),
+            (-9.0, 7.0, false),
+            (-3.0, 7.0, true),
+        ],
+        &[
+            (-28.0, 1.0, false),
+            (9.0, 1.0, true),
+            (110.0, 2.0, false),
+            (4.0, 2.0, true),
+            (11.0, 3.0, false),
+            (-6.0, 3.0, true),
+            (-46.0, 4.0, false),
+            (-17.0, 4.0, true),
+            (32.0, 5.0, false),
+            (-9.0, 5.0, true),
+            (-12.0, 6.0, false),
+            (-9.0, 6.0, true),
+            (-9.0, 7.0, false),
+            (18.0, 7.0, true),
+        ],
+    ]),
+    KnotCurve::Lissajous,
+    KnotCurve::Lissajous,
+    KnotCurve::Lissajous,
+    KnotCurve::Lissajous,
+];
+/// Point `step` of `steps` along a knot curve (t = 2π·step/steps); `k` = params a…h.
+fn knot_point(curve: &KnotCurve, k: &[f64], step: usize, steps: f64) -> [f64; 3] {
+    let t = 2.0 * PI * step as f64 / steps;
+    match curve {
+        KnotCurve::Fourier(axes) => axes.map(|terms| {
+            terms.iter().fold(0.0, |s, &(c, m, sine)| {
+                let a = m * t;
+                s + c * if sine { a.sin() } else { a.cos() }
+            })
+        }),
+        KnotCurve::Torus => {
+            let ring = k[0] + k[1] * (k[2] * t).cos();
+            let (sd, cd) = (k[3] * t).sin_cos();
+            [ring * cd, ring * sd, k[1] * (k[2] * t).sin()]
+        }
+        KnotCurve::Lissajous => [
+            k[0] * (k[1] * t + k[4]).cos(),
+            k[0] * (k[2] * t + k[5]).cos(),
+            k[0] * (k[3] * t + k[6]).cos(),
+        ],
+    }
+}
+
+/// An affine rotation through `angle` about the axis through `at` with direction `dir` (as in
+/// Ammeraal's "Interactive 3D Computer Graphics"): rows of a 4×3 matrix.
+struct AxisRotation([f64; 12]);
+
+impl AxisRotation {
+    fn new(at: [f64; 3], dir: [f64; 3], angle: f64) -> Self {
+        let (sal, cal) = angle.sin_cos();
+        let cal1 = 1.0 - cal;
+        let [v1, v2, v3] = dir;
+        let rho = (v1 * v1 + v2 * v2 + v3 * v3).sqrt();
+        let (theta, cph, sph) = if rho == 0.0 {
+            (0.0, 1.0, 0.0)
+        } else {
+            let theta = if v1 == 0.0 {
+                if v2 >= 0.0 { 0.5 * PI } else { 1.5 * PI }
+            } else if v1 < 0.0 {
+                (v2 / v1).atan() + PI
+            } else {
+                (v2 / v1).atan()
+            };
+            let cph = v3 / rho;
+            (theta, cph, (1.0 - cph * cph).sqrt())
+        };
+        let (sth, cth) = theta.sin_cos();
+        let cph2 = cph * cph;
+        let sph2 = 1.0 - cph2;
+        let cth2 = cth * cth;
+        let sth2 = 1.0 - cth2;
+        let r11 = (cal * cph2 + sph2) * cth2 + cal * sth2;
+        let r12 = sal * cph + cal1 * sph2 * cth * sth;
+        let r13 = sph * (cph * cth * cal1 - sal * sth);
+        let r21 = sph2 * cth * sth * cal1 - sal * cph;
+        let r22 = sth2 * (cal * cph2 + sph2) + cal * cth2;
+        let r23 = sph * (cph * sth * cal1 + sal * cth);
+        let r31 = sph * (cph * cth * cal1 + sal * sth);
+        let r32 = sph * (cph * sth * cal1 - sal * cth);
+        let r33 = cal * sph2 + cph2;
+        let [a1, a2, a3] = at;
+        let r41 = a1 - a1 * r11 - a2 * r21 - a3 * r31;
+        let r42 = a2 - a1 * r12 - a2 * r22 - a3 * r32;
+        let r43 = a3 - a1 * r13 - a2 * r23 - a3 * r33;
+        AxisRotation([r11, r12, r13, r21, r22, r23, r31, r32, r33, r41, r42, r43])
+    }
+
+    fn apply(&self, p: [f64; 3]) -> [f64; 3] {
+        let r = &self.0;
+        [
+            p[0] * r[0] + p[1] * r[3] + p[2] * r[6] + r[9],
+            p[0] * r[1] + p[1] * r[4] + p[2] * r[7] + r[10],
+            p[0] * r[2] + p[1] * r[5] + p[2] * r[8] + r[11],
+        ]
+    }
+}
+
+/// JWildfire's `Tools.FTOI`: round half away from zero, saturating.
+fn ftoi(v: f64) -> i32 {
+    if v > 0.0 {
+        (v + 0.5) as i32
+    } else if v < 0.0 {
+        (-(v.abs() + 0.5)) as i32
+    } else {
+        0
+    }
+}
+
+/// A mesh with single-precision vertices merged when they agree to 1e-4, as JWildfire stores
+/// them.
+#[derive(Default)]
+struct KnotMesh {
+    vertices: Vec<[f32; 3]>,
+    index: std::collections::HashMap<(i32, i32, i32), usize>,
+    faces: Vec<[usize; 3]>,
+}
+
+impl KnotMesh {
+    fn add(&mut self, p: [f64; 3]) {
+        let key = (ftoi(p[0] * 1e4), ftoi(p[1] * 1e4), ftoi(p[2] * 1e4));
+        if !self.index.contains_key(&key) {
+            self.index.insert(key, self.vertices.len());
+            self.vertices.push([p[0] as f32, p[1] as f32, p[2] as f32]);
+        }
+    }
+    fn get(&self, i: usize) -> Option<[f64; 3]> {
+        self.vertices
+            .get(i)
+            .map(|v| [v[0] as f64, v[1] as f64, v[2] as f64])
+    }
+}
+
+/// Sweeps a ring of `facets` points (radius `radius`) along the knot curve, rotating it from
+/// one curve segment to the next about the intersection line of the segments' planes; then
+/// joins consecutive rings with triangles.
+fn knot_tube(curve: &KnotCurve, k: &[f64], steps: usize, radius: f64, facets: usize) -> KnotMesh {
+    let mut mesh = KnotMesh::default();
+    let pt = |i: usize| knot_point(curve, k, i, steps as f64);
+    let (c0, c1, c2) = (pt(0), pt(1), pt(2));
+    let n = facets;
+    // Normal (a, b, c) of the plane of the current ring, and its offset d.
+    let (mut a, mut b, mut c) = (c2[0] - c0[0], c2[1] - c0[1], c2[2] - c0[2]);
+    let mut d = a * c1[0] + b * c1[1] + c * c1[2];
+    let tiny = |x: f64| x.abs() < 1e-5;
+    let (mut rx, mut ry, mut rz) = if tiny(a) && tiny(b) {
+        (0.0, c, -b)
+    } else {
+        (b, -a, 0.0)
+    };
+    let len = (rx * rx + ry * ry + rz * rz).sqrt();
+    rx /= len;
+    ry /= len;
+    rz /= len;
+    mesh.add([
+        c1[0] + rx * radius,
+        c1[1] + ry * radius,
+        c1[2] + rz * radius,
+    ]);
+    let turn = AxisRotation::new(c1, [a, b, c], 2.0 * PI / n as f64);
+    for i in 1..n {
+        let Some(prev) = mesh.get(i - 1) else { break };
+        mesh.add(turn.apply(prev));
+    }
+    'rings: for j in 1..steps {
+        let prev_ring = (j - 1) * n;
+        let pa = pt(j - 1);
+        let pb = pt(j);
+        let (dx, dy, dz) = (pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]);
+        let c1 = a * a + b * b + c * c;
+        let c2 = a * dx + b * dy + c * dz;
+        let c0 = d - a * pa[0] - b * pa[1] - c * pa[2];
+        let mid = [
+            0.5 * (pa[0] + pb[0]),
+            0.5 * (pa[1] + pb[1]),
+            0.5 * (pa[2] + pb[2]),
+        ];
+        let d0 = dx * mid[0] + dy * mid[1] + dz * mid[2];
+        let e1 = dx * a + dy * b + dz * c;
+        let e2 = dx * dx + dy * dy + dz * dz;
+        let e0 = d0 - dx * pa[0] - dy * pa[1] - dz * pa[2];
+        let denom = c1 * e2 - c2 * e1;
+        if denom.abs() < 1e-12 {
+            // Same direction: the ring is repeated (and merges with the previous one).
+            for i in 0..n {
+                let Some(v) = mesh.get(prev_ring + i) else {
+                    break 'rings;
+                };
+                mesh.add(v);
+            }
+        } else {
+            let lambda = (c0 * e2 - c2 * e0) / denom;
+            let mu = (c1 * e0 - c0 * e1) / denom;
+            let centre = [
+                pa[0] + lambda * a + mu * dx,
+                pa[1] + lambda * b + mu * dy,
+                pa[2] + lambda * c + mu * dz,
+            ];
+            let ap = [pa[0] - centre[0], pa[1] - centre[1], pa[2] - centre[2]];
+            let bp = [pb[0] - centre[0], pb[1] - centre[1], pb[2] - centre[2]];
+            let axis = [
+                ap[1] * bp[2] - bp[1] * ap[2],
+                bp[0] * ap[2] - ap[0] * bp[2],
+                ap[0] * bp[1] - bp[0] * ap[1],
+            ];
+            let cosphi = (ap[0] * bp[0] + ap[1] * bp[1] + ap[2] * bp[2])
+                / ((ap[0] * ap[0] + ap[1] * ap[1] + ap[2] * ap[2])
+                    * (bp[0] * bp[0] + bp[1] * bp[1] + bp[2] * bp[2]))
+                    .sqrt();
+            let phi = if cosphi == 0.0 {
+                0.5 * PI
+            } else {
+                ((1.0 - cosphi * cosphi).sqrt() / cosphi).atan()
+            };
+            let rot = AxisRotation::new(centre, axis, phi);
+            for i in 0..n {
+                let Some(v) = mesh.get(prev_ring + i) else {
+                    break 'rings;
+                };
+                mesh.add(rot.apply(v));
+            }
+            let normal = AxisRotation::new([0.0; 3], axis, phi).apply([a, b, c]);
+            (a, b, c) = (normal[0], normal[1], normal[2]);
+        }
+        d = a * pb[0] + b * pb[1] + c * pb[2];
+    }
+    // Two triangles per quad between rings j-1 and j (vertex indices as JWildfire numbers them).
+    for j in 1..steps {
+        let cur = j * n;
+        let prev = cur - n;
+        for i in 0..n.saturating_sub(1) {
+            mesh.faces.push([cur + i + 1, prev + i, prev + i + 1]);
+            mesh.faces.push([prev + i, cur + i + 1, cur + i]);
+        }
+        mesh.faces.push([cur, prev + n - 1, prev]);
+        mesh.faces.push([prev + n - 1, cur, cur + n - 1]);
+    }
+    mesh
+}
+
+/// Offset in `v.p` of knots3D's face list (count, then 9 coordinates per triangle).
+const KNOT_FACES: usize = 26;
+
+fn knots3d_prepare(v: &mut Prepared) {
+    v.p.push(0.0);
+    let preset = v.p[0];
+    if !(0.0..24.0).contains(&preset) {
+        return;
+    }
+    let curve = &KNOT_CURVES[preset as usize];
+    let (steps, radius, facets) = (v.p[1] as usize, v.p[2], v.p[3] as usize);
+    let k: [f64; 8] = v.p[4..12].try_into().unwrap_or([0.0; 8]);
+    let mesh = knot_tube(curve, &k, steps, radius, facets);
+    let (scale, offset) = ([v.p[12], v.p[13], v.p[14]], [v.p[15], v.p[16], v.p[17]]);
+    let placed: Vec<[f64; 3]> = mesh
+        .vertices
+        .iter()
+        .map(|p| std::array::from_fn(|i| (p[i] as f64 * scale[i] + offset[i]) as f32 as f64))
+        .collect();
+    let mut count = 0;
+    for f in &mesh.faces {
+        // Faces that point past the merged vertex list are left out.
+        if f.iter().all(|&i| i < placed.len()) {
+            for &i in f {
+                v.p.extend_from_slice(&placed[i]);
+            }
+            count += 1;
+        }
+    }
+    v.p[KNOT_FACES] = count as f64;
+}
+
+/// knots3D: a tube of `facets` sides and radius `radius` around one of JWildfire's stock knot
+/// curves (preset id), as a triangle mesh scaled and offset; points are uniform on a random
+/// triangle. Custom formulas (preset -1) are not supported and give no output.
+fn knots3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let q = &v.p;
+    let n = q[KNOT_FACES] as usize;
+    if n == 0 {
+        return [0.0; 3];
+    }
+    let k = ((rng.f01() * n as f64) as usize).min(n - 1);
+    let f = &q[KNOT_FACES + 1 + 9 * k..][..9];
+    let s = rng.f01().sqrt();
+    let r2 = rng.f01();
+    let (a, b, c) = (1.0 - s, s * (1.0 - r2), r2 * s);
+    [
+        v.w * (a * f[0] + b * f[3] + c * f[6]),
+        v.w * (a * f[1] + b * f[4] + c * f[7]),
+        v.w * (a * f[2] + b * f[5] + c * f[8]),
+    ]
+}
+
 #[cfg(test)]
 mod tests {
     //! Reference numbers come from running JWildfire's own variation code (harness outside the
     //! project, JWildfire's random draws replayed from the same `FastRng` stream).
+
+    use std::f64::consts::PI;
 
     use crate::flame::affine::Affine;
     use crate::flame::rng::FastRng;
@@ -1473,15 +2490,17 @@ mod tests {
 
     #[test]
     fn crop_stars_matches_jwildfire() {
-        let pts: &[[f64; 3]] = &[
-            [0.1, 0.05, 0.2],
-            [-0.2, 0.1, -0.5],
-            [0.05, 0.3, 1.1],
-            [0.25, -0.15, 0.3],
-            [-0.1, -0.3, -0.8],
-            [0.0, -0.2, -0.25],
-            [0.3, 0.0, 0.0],
-        ];
+        // A 7×7 grid around the star.
+        let grid: Vec<[f64; 3]> = (0..49)
+            .map(|k| {
+                [
+                    -0.33 + 0.11 * (k / 7) as f64,
+                    -0.31 + 0.1 * (k % 7) as f64,
+                    0.2,
+                ]
+            })
+            .collect();
+        let pts = &grid[..];
         let n5: &[(&str, f64)] = &[
             ("crop_stars_n", 5.0),
             ("crop_stars_r2", 0.7),
@@ -1635,6 +2654,202 @@ mod tests {
         }
         for q in quad {
             assert!((q as f64 - 5000.0).abs() < 300.0, "{quad:?}");
+        }
+    }
+
+    #[test]
+    fn polarplot3d_wf_matches_jwildfire() {
+        let pts: &[[f64; 3]] = &PTS[..3];
+        let want = [
+            POLAR_0, POLAR_1, POLAR_2, POLAR_3, POLAR_4, POLAR_5, POLAR_6, POLAR_7, POLAR_8,
+            POLAR_9,
+        ];
+        let mut rng = FastRng::new(SEED);
+        for (i, want) in want.iter().enumerate() {
+            let params = [
+                ("polarplot3d_wf_preset_id", i as f64),
+                ("polarplot3d_wf_param_a", 1.3),
+                ("polarplot3d_wf_param_b", 0.7),
+                ("polarplot3d_wf_param_c", 0.4),
+                ("polarplot3d_wf_cylindrical", (i % 2) as f64),
+                ("polarplot3d_wf_color_mode", (i % 6) as f64),
+                ("polarplot3d_wf_tmin", 1.5),
+                ("polarplot3d_wf_tmax", -2.0),
+                ("polarplot3d_wf_umin", 0.2),
+                ("polarplot3d_wf_umax", 2.9),
+                ("polarplot3d_wf_rmin", 1.0),
+                ("polarplot3d_wf_rmax", -1.5),
+            ];
+            let v = make("polarplot3d_wf", &params, 0.9);
+            check(
+                &format!("polarplot3d_wf {i}"),
+                &run(&v, pts, 0.37, &mut rng),
+                want,
+            );
+        }
+        // A custom formula (unknown preset) draws nothing.
+        let v = make("polarplot3d_wf", &[("polarplot3d_wf_preset_id", -1.0)], 1.0);
+        assert_eq!(run(&v, pts, 0.37, &mut rng), vec![[0.0, 0.0, 0.0, 0.37]; 3]);
+    }
+
+    #[test]
+    // The Lissajous presets use 1.5707963 (not π/2) for their phases.
+    #[allow(clippy::approx_constant)]
+    fn knots3d_matches_jwildfire() {
+        const KNOT_PARAMS: [&str; 8] = [
+            "knots3D_param_a",
+            "knots3D_param_b",
+            "knots3D_param_c",
+            "knots3D_param_d",
+            "knots3D_param_e",
+            "knots3D_param_f",
+            "knots3D_param_g",
+            "knots3D_param_h",
+        ];
+        // (preset, steps, radius, facets, params a…h, scale, offset, weight, expected, faces)
+        #[allow(clippy::type_complexity)]
+        let cases: [(
+            f64,
+            f64,
+            f64,
+            f64,
+            [f64; 8],
+            f64,
+            [f64; 3],
+            f64,
+            &[[f64; 4]],
+            f64,
+        ); 4] = [
+            (
+                0.0, 1000.0, 1.05, 4.0, [0.0; 8], 0.02, [0.0; 3], 1.0, KNOT_0, 7992.0,
+            ),
+            (
+                4.0,
+                300.0,
+                2.5,
+                5.0,
+                [100.0, 25.0, 5.0, 3.0, 0.0, 0.0, 0.0, 0.0],
+                0.01,
+                [0.1, -0.2, 0.3],
+                0.8,
+                KNOT_4,
+                2990.0,
+            ),
+            (
+                21.0,
+                200.0,
+                3.0,
+                3.0,
+                [100.0, 1.0, 5.0, 3.0, 0.0, 1.5707963, 1.5707963, 0.0],
+                0.015,
+                [0.0; 3],
+                1.2,
+                KNOT_21,
+                1194.0,
+            ),
+            (
+                14.0, 500.0, 1.0, 6.0, [0.0; 8], 0.005, [0.0; 3], 1.0, KNOT_14, 5988.0,
+            ),
+        ];
+        let mut rng = FastRng::new(SEED);
+        for (preset, steps, radius, facets, k, scale, off, w, want, faces) in cases {
+            let mut params = vec![
+                ("knots3D_presetId", preset),
+                ("knots3D_steps", steps),
+                ("knots3D_radius", radius),
+                ("knots3D_facets", facets),
+                ("knots3D_scale_x", scale),
+                ("knots3D_scale_y", scale),
+                ("knots3D_scale_z", scale),
+                ("knots3D_offset_x", off[0]),
+                ("knots3D_offset_y", off[1]),
+                ("knots3D_offset_z", off[2]),
+            ];
+            params.extend(KNOT_PARAMS.iter().copied().zip(k));
+            let v = make("knots3D", &params, w);
+            assert_eq!(v.p[super::KNOT_FACES], faces, "preset {preset}");
+            check("knots3D", &run(&v, &PTS, 0.5, &mut rng), want);
+        }
+        // A custom formula (preset -1) draws nothing.
+        let v = make("knots3D", &[("knots3D_presetId", -1.0)], 1.0);
+        assert_eq!(
+            run(&v, &PTS[..1], 0.5, &mut rng),
+            vec![[0.0, 0.0, 0.0, 0.5]]
+        );
+    }
+
+    #[test]
+    fn julian2dc_is_a_root_of_the_affine_image() {
+        let params: &[(&str, f64)] = &[
+            ("julian2dc_power", 2.0),
+            ("julian2dc_a", 0.9),
+            ("julian2dc_b", -0.3),
+            ("julian2dc_c", 0.2),
+            ("julian2dc_d", 1.1),
+            ("julian2dc_e", 0.05),
+            ("julian2dc_f", -0.4),
+        ];
+        let w = 0.8;
+        let mut rng = FastRng::new(SEED);
+        let mut branches = [0usize; 2];
+        for col in [0.0, 1.0, 0.35] {
+            let mut p = params.to_vec();
+            p.push(("julian2dc_col", col));
+            let v = make("julian2dc", &p, w);
+            for pt in PTS {
+                let a = eval_prepared(&v, pt, Acc::default(), true, &mut rng);
+                let (x, y) = (
+                    0.9 * pt[0] - 0.3 * pt[1] + 0.05,
+                    0.2 * pt[0] + 1.1 * pt[1] - 0.4,
+                );
+                // (out / w)² is the affine image.
+                let (ox, oy) = (a.x / w, a.y / w);
+                assert!((ox * ox - oy * oy - x).abs() < 1e-12 && (2.0 * ox * oy - y).abs() < 1e-12);
+                let angle = oy.atan2(ox);
+                let branch = ((angle - 0.5 * y.atan2(x)) / PI).round();
+                branches[branch.rem_euclid(2.0) as usize] += 1;
+                let r = w * (x * x + y * y).sqrt().sqrt();
+                let want = (r * col + angle / (2.0 * PI) * (1.0 - col)).abs() % 1.0;
+                // The colour uses the branch angle (before wrapping into (-π, π]).
+                let alt = (r * col + (angle + 2.0 * PI) / (2.0 * PI) * (1.0 - col)).abs() % 1.0;
+                assert!(
+                    (a.color - want).abs() < 1e-12 || (a.color - alt).abs() < 1e-12,
+                    "{a:?} {want} {alt}"
+                );
+            }
+        }
+        assert!(branches[0] > 0 && branches[1] > 0, "{branches:?}");
+    }
+
+    #[test]
+    fn names_and_parameters_resolve() {
+        for d in super::DEFS {
+            let (id, form) = parse_name(d.name)
+                .or_else(|| {
+                    Some((
+                        all().iter().position(|e| e.name == d.name)? as VarId,
+                        Form::Post,
+                    ))
+                })
+                .unwrap();
+            assert_eq!(info(id).name, d.name);
+            if d.has(crate::flame::variations::flag::POST_ONLY) {
+                assert_eq!(form, Form::Post);
+            }
+            for (k, p) in d.params.iter().enumerate() {
+                assert!(p.name.starts_with(d.name), "{}", p.name);
+                let (pid, _, pk) = param_of(p.name).unwrap();
+                assert_eq!((pid, pk), (id, k), "{}", p.name);
+            }
+            // Defaults give finite output at an ordinary point.
+            let v = make(d.name, &[], 1.0);
+            let mut rng = FastRng::new(SEED);
+            let a = eval_prepared(&v, [0.3, -0.2, 0.1], Acc::default(), true, &mut rng);
+            assert!(
+                a.x.is_finite() && a.y.is_finite() && a.z.is_finite(),
+                "{} {a:?}",
+                d.name
+            );
         }
     }
 
@@ -2000,10 +3215,52 @@ mod tests {
 
     // cs default w1.2 (randoms used: 0)
     const CS_DEF: &[[f64; 4]] = &[
-        [0.12, 0.06, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
-        [0.3, -0.18, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [-0.264, -0.13199999999999998, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [-0.132, -0.13199999999999998, 0.0, 0.5],
+        [-0.132, -0.011999999999999943, 0.0, 0.5],
+        [-0.132, 0.10800000000000003, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, -0.13199999999999998, 0.0, 0.5],
+        [0.0, -0.011999999999999943, 0.0, 0.5],
+        [0.0, 0.10800000000000003, 0.0, 0.5],
+        [0.0, 0.22799999999999998, 0.0, 0.5],
+        [0.0, 0.3480000000000001, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.13199999999999998, -0.13199999999999998, 0.0, 0.5],
+        [0.13199999999999998, -0.011999999999999943, 0.0, 0.5],
+        [0.13199999999999998, 0.10800000000000003, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.264, -0.13199999999999998, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
@@ -2011,18 +3268,102 @@ mod tests {
 
     // cs invert w1 (randoms used: 0)
     const CS_INV: &[[f64; 4]] = &[
+        [-0.33, -0.31, 0.0, 0.5],
+        [-0.33, -0.21, 0.0, 0.5],
+        [-0.33, -0.10999999999999999, 0.0, 0.5],
+        [-0.33, -0.009999999999999953, 0.0, 0.5],
+        [-0.33, 0.09000000000000002, 0.0, 0.5],
+        [-0.33, 0.19, 0.0, 0.5],
+        [-0.33, 0.2900000000000001, 0.0, 0.5],
+        [-0.22000000000000003, -0.31, 0.0, 0.5],
+        [-0.22000000000000003, -0.21, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
-        [-0.2, 0.1, 0.0, 0.5],
-        [0.05, 0.3, 0.0, 0.5],
+        [-0.22000000000000003, -0.009999999999999953, 0.0, 0.5],
+        [-0.22000000000000003, 0.09000000000000002, 0.0, 0.5],
+        [-0.22000000000000003, 0.19, 0.0, 0.5],
+        [-0.22000000000000003, 0.2900000000000001, 0.0, 0.5],
+        [-0.11000000000000001, -0.31, 0.0, 0.5],
+        [-0.11000000000000001, -0.21, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
-        [-0.1, -0.3, 0.0, 0.5],
-        [0.0, -0.2, 0.0, 0.5],
-        [0.3, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [-0.11000000000000001, 0.19, 0.0, 0.5],
+        [-0.11000000000000001, 0.2900000000000001, 0.0, 0.5],
+        [0.0, -0.31, 0.0, 0.5],
+        [0.0, -0.21, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.10999999999999999, -0.31, 0.0, 0.5],
+        [0.10999999999999999, -0.21, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.10999999999999999, 0.19, 0.0, 0.5],
+        [0.10999999999999999, 0.2900000000000001, 0.0, 0.5],
+        [0.22000000000000003, -0.31, 0.0, 0.5],
+        [0.22000000000000003, -0.21, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.22000000000000003, -0.009999999999999953, 0.0, 0.5],
+        [0.22000000000000003, 0.09000000000000002, 0.0, 0.5],
+        [0.22000000000000003, 0.19, 0.0, 0.5],
+        [0.22000000000000003, 0.2900000000000001, 0.0, 0.5],
+        [0.33, -0.31, 0.0, 0.5],
+        [0.33, -0.21, 0.0, 0.5],
+        [0.33, -0.10999999999999999, 0.0, 0.5],
+        [0.33, -0.009999999999999953, 0.0, 0.5],
+        [0.33, 0.09000000000000002, 0.0, 0.5],
+        [0.33, 0.19, 0.0, 0.5],
+        [0.33, 0.2900000000000001, 0.0, 0.5],
     ];
 
     // cs n5 w0.8 (randoms used: 0)
     const CS_N5: &[[f64; 4]] = &[
-        [0.08000000000000002, 0.04000000000000001, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [-0.08800000000000002, -0.088, 0.0, 0.5],
+        [-0.08800000000000002, -0.007999999999999964, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, -0.007999999999999964, 0.0, 0.5],
+        [0.0, 0.07200000000000002, 0.0, 0.5],
+        [0.0, 0.15200000000000002, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.088, -0.088, 0.0, 0.5],
+        [0.088, -0.007999999999999964, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
+        [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
         [0.0, 0.0, 0.0, 0.5],
@@ -2341,6 +3682,385 @@ mod tests {
             -0.05773338721782807,
             0.0,
             0.5252480402588844,
+        ],
+    ];
+    // polar preset 0 (randoms used: 6)
+    const POLAR_0: &[[f64; 4]] = &[
+        [
+            0.9401664843327137,
+            -0.06056700551217851,
+            1.0044619808180884,
+            0.37,
+        ],
+        [
+            -0.10794363348136447,
+            -0.8175589972547397,
+            1.0325311653707188,
+            0.37,
+        ],
+        [
+            0.3694579918129906,
+            -0.6755755792817791,
+            -0.5137197284253534,
+            0.37,
+        ],
+    ];
+
+    // polar preset 1 (randoms used: 12)
+    const POLAR_1: &[[f64; 4]] = &[
+        [
+            0.2640947065958182,
+            -0.6409086654393177,
+            2.12630240268391,
+            0.23430448170746768,
+        ],
+        [
+            0.6512437469154144,
+            -0.4695381453597726,
+            2.0411479715951772,
+            0.3929506731982927,
+        ],
+        [
+            0.6305924997166926,
+            -1.190632803066821,
+            0.6385405765460179,
+            0.2617919447304331,
+        ],
+    ];
+
+    // polar preset 2 (randoms used: 18)
+    const POLAR_2: &[[f64; 4]] = &[
+        [
+            0.4518157689981463,
+            -1.0178518396901266,
+            0.3231246390610246,
+            0.4031093358218728,
+        ],
+        [
+            1.3156707311233613,
+            0.20816480329332507,
+            -1.825992937727013,
+            0.8560555938334198,
+        ],
+        [
+            1.3511954215614583,
+            -0.8549494972400805,
+            -0.45181631611632656,
+            0.6096984527426877,
+        ],
+    ];
+
+    // polar preset 3 (randoms used: 24)
+    const POLAR_3: &[[f64; 4]] = &[
+        [
+            -0.035352422910976254,
+            0.005815448768760096,
+            2.3172422106552006,
+            0.5840766449961237,
+        ],
+        [
+            0.8935596879356489,
+            0.582402277096967,
+            1.8871782902335372,
+            1.0,
+        ],
+        [
+            0.42636121526545706,
+            -0.1374760708207684,
+            1.3579158557540083,
+            0.7991009699455904,
+        ],
+    ];
+
+    // polar preset 4 (randoms used: 30)
+    const POLAR_4: &[[f64; 4]] = &[
+        [
+            0.001794256429355979,
+            0.28672735537079164,
+            0.057926219326461206,
+            0.07027326250678893,
+        ],
+        [
+            0.40454997873502774,
+            0.7037600720491897,
+            -0.15626798247554635,
+            0.5036557698162177,
+        ],
+        [
+            0.34331640034143207,
+            0.6486701186154914,
+            0.9778698800506729,
+            0.1448474965353759,
+        ],
+    ];
+
+    // polar preset 5 (randoms used: 36)
+    const POLAR_5: &[[f64; 4]] = &[
+        [
+            0.05151852924531744,
+            0.31266152259751995,
+            1.8040014267588664,
+            0.37,
+        ],
+        [
+            0.04178373682993048,
+            0.13868242935656985,
+            2.213221400611786,
+            0.37,
+        ],
+        [
+            -0.0757477212670569,
+            0.3714226222885521,
+            1.0504455922722449,
+            0.37,
+        ],
+    ];
+
+    // polar preset 6 (randoms used: 42)
+    const POLAR_6: &[[f64; 4]] = &[
+        [
+            0.8993788416683474,
+            0.15088090779344332,
+            0.3236866534039932,
+            0.37,
+        ],
+        [
+            1.2580771361686978,
+            1.410014114050802,
+            -0.5513304125587889,
+            0.37,
+        ],
+        [
+            -0.21047576971163778,
+            -0.4977991619988967,
+            -1.0591427949927639,
+            0.37,
+        ],
+    ];
+
+    // polar preset 7 (randoms used: 48)
+    const POLAR_7: &[[f64; 4]] = &[
+        [
+            0.39922467299522074,
+            -0.2856674523925565,
+            2.4467892991276874,
+            0.3939743272624229,
+        ],
+        [
+            0.4068149258278953,
+            -0.21693100230179613,
+            1.1785264327327951,
+            0.43146097299330155,
+        ],
+        [
+            0.007534771585789019,
+            -0.06825455659678666,
+            0.9380045843413127,
+            0.15404305940527832,
+        ],
+    ];
+
+    // polar preset 8 (randoms used: 54)
+    const POLAR_8: &[[f64; 4]] = &[
+        [
+            0.4846784567428753,
+            -0.1492250592941951,
+            1.2098090276763678,
+            0.07293802479428912,
+        ],
+        [
+            1.0883498688225322,
+            -2.6994940979701028,
+            0.4826115727514756,
+            0.44684494049889717,
+        ],
+        [
+            2.6139151941685532,
+            2.229810541391295,
+            -6.775792519537915,
+            0.9156693080944034,
+        ],
+    ];
+
+    // polar preset 9 (randoms used: 60)
+    const POLAR_9: &[[f64; 4]] = &[
+        [
+            -0.07612440694670185,
+            -0.4925387786717664,
+            2.164876687601288,
+            0.3784947683014694,
+        ],
+        [
+            0.016284847295833068,
+            0.018299605057009297,
+            1.321387502306692,
+            0.6108872724123613,
+        ],
+        [
+            0.960843356506103,
+            -0.8050630373019632,
+            1.1641176996204077,
+            1.0,
+        ],
+    ];
+
+    // knots preset 0 verts 4000 faces 7992 v0 -11.797076 -16.048721 9.998223 vlast -11.960164 -13.99425 9.712923
+    const KNOT_0: &[[f64; 4]] = &[
+        [
+            0.37677389633019537,
+            -0.24845656209356126,
+            -0.11293492222215035,
+            0.5,
+        ],
+        [
+            0.10967749717030195,
+            0.37671332301613214,
+            -0.18613477492419822,
+            0.5,
+        ],
+        [
+            0.009565921902322576,
+            0.4687422579476865,
+            -0.059889223735898445,
+            0.5,
+        ],
+        [
+            -0.10355039554406947,
+            0.14440488156246345,
+            -0.05809525407549899,
+            0.5,
+        ],
+        [
+            0.01538398368439449,
+            0.44424210679222265,
+            -0.025274038965751557,
+            0.5,
+        ],
+        [
+            -0.42362108550312005,
+            -0.12254557889779635,
+            -0.17790080885974952,
+            0.5,
+        ],
+    ];
+
+    // knots preset 4 verts 1500 faces 2990 v0 127.10475 8.083897 2.6132116 vlast 123.005005 0.28214753 -0.010362493
+    const KNOT_4: &[[f64; 4]] = &[
+        [
+            -0.4967794737776732,
+            -0.5017553691264934,
+            0.09844543110414716,
+            0.5,
+        ],
+        [
+            0.5354058846841226,
+            0.2624145156908297,
+            0.21215684172102858,
+            0.5,
+        ],
+        [
+            -0.42138941826641824,
+            0.31040460702074574,
+            0.08697581968409673,
+            0.5,
+        ],
+        [
+            -0.039293120518537686,
+            -1.1040168065675533,
+            0.12958099853556249,
+            0.5,
+        ],
+        [
+            0.10994154835744774,
+            0.4575738488145398,
+            0.36323995399987924,
+            0.5,
+        ],
+        [
+            -0.7933227294530033,
+            -0.24191180212626537,
+            0.4480163047718446,
+            0.5,
+        ],
+    ];
+
+    // knots preset 21 verts 600 faces 1194 v0 96.950714 -15.624288 -9.410829 vlast 99.57845 -1.3502281 2.0729973
+    const KNOT_21: &[[f64; 4]] = &[
+        [
+            -1.2875897753432066,
+            -1.224129238496178,
+            1.3605863253395232,
+            0.5,
+        ],
+        [
+            -1.416312601683565,
+            -0.6116941703820012,
+            1.51169980663846,
+            0.5,
+        ],
+        [
+            -1.4807135564587868,
+            0.242752512327842,
+            -1.6666084508609973,
+            0.5,
+        ],
+        [
+            -1.515995811391429,
+            -0.7753419591155298,
+            -1.8049097487512629,
+            0.5,
+        ],
+        [
+            -1.7517300193097634,
+            -0.6213078312533346,
+            -0.3485787868595981,
+            0.5,
+        ],
+        [
+            -1.7483943827860162,
+            -1.986319269249661,
+            -1.3161141246426284,
+            0.5,
+        ],
+    ];
+
+    // knots preset 14 verts 3000 faces 5988 v0 -177.78893 -254.74458 -6.6459246 vlast -186.71043 -248.55331 -6.413316
+    const KNOT_14: &[[f64; 4]] = &[
+        [
+            -1.4081217602221636,
+            -0.8665852101516152,
+            -0.0013389691115515527,
+            0.5,
+        ],
+        [
+            -0.6602971760934945,
+            -1.8592439484394507,
+            0.021303902104756148,
+            0.5,
+        ],
+        [
+            0.6750682619936513,
+            0.9031618228808195,
+            0.5936168598246476,
+            0.5,
+        ],
+        [
+            0.7817929329268889,
+            1.3610346162605353,
+            0.272514188138534,
+            0.5,
+        ],
+        [
+            0.6153346323602453,
+            1.5048096400496445,
+            -0.8028456078952729,
+            0.5,
+        ],
+        [
+            0.16290739893573786,
+            1.1737979412465203,
+            -0.8255954231888349,
+            0.5,
         ],
     ];
 }
