@@ -1,10 +1,12 @@
 //! Variations (slice jwf of the registry): JWildfire variations that real flame files use, plus
-//! `julian2dc` (an Apophysis direct-colour plugin that JWildfire files also carry).
+//! `julian2dc` (Georg Kiehne's Apophysis direct-colour plugin).
 //!
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
 //! written anew. JWildfire conventions kept: `atan_xy` is its `getPrecalcAtan` (atan2(x, y)),
 //! weights multiply the output linearly, integer parameters are rounded, and random numbers are
-//! drawn with `rng.f01()` in the order JWildfire draws them.
+//! drawn with `rng.f01()` in the order JWildfire draws them (so that the tests can replay
+//! JWildfire's own code on the same stream). Variations that build a structure once (snow
+//! crystal, sudoku layers, knot mesh) keep it in `v.p` after their parameters.
 
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_4, PI, TAU};
 
