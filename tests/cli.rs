@@ -121,7 +121,7 @@ fn unsupported_variations_warn_and_strict_refuses() {
     let f = dir.join("plugin.flame");
     std::fs::write(
         &f,
-        "<flame name=\"p\" size=\"40 30\" scale=\"10\"><xform weight=\"1\" linear=\"1\" hemisphere=\"0.5\" coefs=\"0.5 0 0 0.5 0 0\"/>\
+        "<flame name=\"p\" size=\"40 30\" scale=\"10\"><xform weight=\"1\" linear=\"1\" frobnicate_wf=\"0.5\" frobnicate_wf_fx_priority=\"0\" coefs=\"0.5 0 0 0.5 0 0\"/>\
          <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 1 0\"/></flame>",
     )
     .unwrap();
@@ -136,7 +136,7 @@ fn unsupported_variations_warn_and_strict_refuses() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(
-        err.contains("variation 'hemisphere' (weight 0.5) not supported; ignored"),
+        err.contains("variation 'frobnicate_wf' (weight 0.5) not supported; ignored"),
         "{err}"
     );
     let (code, _, err) = ugnis(&[

@@ -460,7 +460,11 @@ impl Projection {
         let (sy, cy) = (-c.yaw).sin_cos();
         let ppu = flame.ppu();
         Some(Projection {
-            m: [[cy, -sy, 0.0], [cp * sy, cp * cy, -sp], [sp * sy, sp * cy, cp]],
+            m: [
+                [cy, -sy, 0.0],
+                [cp * sy, cp * cy, -sp],
+                [sp * sy, sp * cy, cp],
+            ],
             perspective: c.perspective,
             zpos: c.zpos,
             blur: 0.1 * c.dof,

@@ -19,6 +19,8 @@ pub mod symmetry;
 pub mod tonemap;
 pub mod variations;
 
-pub use model::{Affine, Camera3d, FilterShape, Flame, FlameKind, Ifs3d, NewFlame, PaletteMode, Var, Xform};
+pub use model::{
+    Affine, Camera3d, FilterShape, Flame, FlameKind, Ifs3d, NewFlame, PaletteMode, Var, Xform,
+};
 pub use render::{RenderError, RenderOptions, Renderer, render};
 pub use tonemap::OutputFormat;

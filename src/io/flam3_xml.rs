@@ -13,7 +13,7 @@ use quick_xml::events::Event;
 
 use crate::flame::model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
 use crate::flame::symmetry::add_symmetry;
-use crate::flame::variations::{self, Form, LINEAR};
+use crate::flame::variations::{self, Form};
 use crate::gradient::{Gradient, hue_rotate};
 use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, fmt_num, parse_int, parse_number};
 use crate::io::palettes::{self, PaletteLibrary, decode_hex_colors};
@@ -1158,11 +1158,6 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                 x.vars.clear();
                 set_var(&mut x, id, form, 1.0);
             }
-            "linear3D" => {
-                let w = cx.num(a)?;
-                let cur = x.var_weight(LINEAR);
-                x.set_var(LINEAR, cur + w);
-            }
             name => {
                 if let Some((id, form)) = variations::parse_name(name) {
                     let w = cx.num(a)?;
@@ -1172,7 +1167,11 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    if numeric && variations::is_foreign_variation_name(name) {
+                    // JWildfire writes NAME_fx_priority beside every variation it writes.
+                    let marked = attrs
+                        .iter()
+                        .any(|b| b.name.strip_suffix("_fx_priority") == Some(name));
+                    if numeric && (marked || variations::is_foreign_variation_name(name)) {
                         if cx.reported_vars.insert(name.to_string()) {
                             cx.warn(
                                 a.offset,
@@ -1197,6 +1196,30 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
         (None, Some(sig)) => (1.0 - sig) / 2.0,
         (None, None) => 0.5,
     };
+    // JWildfire marks a variation used before (< 0) or after (> 0) the others with
+    // NAME_fx_priority.
+    for a in attrs {
+        if let Some(name) = a.name.strip_suffix("_fx_priority")
+            && let Ok(p) = parse_number(a.value.trim())
+            && p != 0.0
+            && let Some((id, Form::Regular)) = variations::parse_name(name)
+        {
+            let form = if p < 0.0 { Form::Pre } else { Form::Post };
+            for var in x
+                .vars
+                .iter_mut()
+                .filter(|v| v.id == id && v.form == Form::Regular)
+            {
+                var.form = form;
+            }
+            for p in params
+                .iter_mut()
+                .filter(|p| p.0 == id && p.1 == Form::Regular)
+            {
+                p.1 = form;
+            }
+        }
+    }
     // Parameters go to their variation; parameters of absent variations are kept as-is.
     for (id, form, pi, pv, name, raw) in params {
         if let Some(var) = x.vars.iter_mut().find(|v| v.id == id && v.form == form) {

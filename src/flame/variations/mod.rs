@@ -674,7 +674,7 @@ pub fn by_name(name: &str) -> Option<VarId> {
 /// The variation and form an attribute name denotes: `NAME`, `pre_NAME` or `post_NAME`
 /// (case-insensitive). flam3's `pre_blur` is the `pre_` form of `gaussian_blur`.
 pub fn parse_name(attr: &str) -> Option<(VarId, Form)> {
-    let key = attr.to_ascii_lowercase();
+    let key = unalias(&attr.to_ascii_lowercase());
     if key == "pre_blur" {
         return Some((GAUSSIAN_BLUR, Form::Pre));
     }
@@ -729,12 +729,37 @@ const PARAM_ALIASES: &[(&str, &str)] = &[
     ("im_c", "mobius_im_c"),
     ("re_d", "mobius_re_d"),
     ("im_d", "mobius_im_d"),
+    // JWildfire writes waves2_radial's parameters with a "w2r" infix.
+    ("waves2_radial_w2r_freqx", "waves2_radial_freqx"),
+    ("waves2_radial_w2r_scalex", "waves2_radial_scalex"),
+    ("waves2_radial_w2r_freqy", "waves2_radial_freqy"),
+    ("waves2_radial_w2r_scaley", "waves2_radial_scaley"),
+    ("waves2_radial_w2r_null", "waves2_radial_null"),
+    ("waves2_radial_w2r_distance", "waves2_radial_distance"),
 ];
+
+/// Variation names other programs use for a variation of the registry (lower case), also as
+/// the prefix of its parameters.
+const NAME_ALIASES: &[(&str, &str)] = &[("flower_db", "flowerdb")];
+
+/// `key` (lower case) with an alias prefix replaced by the registry's name.
+fn unalias(key: &str) -> String {
+    for (alias, name) in NAME_ALIASES {
+        for prefix in ["", "pre_", "post_"] {
+            if let Some(rest) = key.strip_prefix(prefix).and_then(|k| k.strip_prefix(alias))
+                && (rest.is_empty() || rest.starts_with('_'))
+            {
+                return format!("{prefix}{name}{rest}");
+            }
+        }
+    }
+    key.to_string()
+}
 
 /// If `attr` names a parameter — `PARAM`, `pre_PARAM` or `post_PARAM` — the variation, form
 /// and parameter index (case-insensitive; known aliases accepted).
 pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
-    let key = attr.to_ascii_lowercase();
+    let key = unalias(&attr.to_ascii_lowercase());
     let lookup = |k: &str| -> Option<(VarId, usize)> {
         if let Some(&r) = REGISTRY.params.get(k) {
             return Some(r);
