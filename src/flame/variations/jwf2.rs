@@ -478,29 +478,29 @@ const P_NG12: &[Param] = &[
     p("sym_ng12_SpY", 0.0),
 ];
 // JWildfire names the first parameter of sym_ng13 "Prop. Sep" and that of 14-17 "Prop. Sep."
-// (with a space, so a file carrying them is not well-formed XML).
+// (with a space, so a file carrying them is not well-formed XML); ugnis writes `prop_sep`.
 const P_NG13: &[Param] = &[
-    p("sym_ng13_Prop. Sep", 0.0),
+    p("sym_ng13_prop_sep", 0.0),
     p("sym_ng13_StepX", 0.0),
     p("sym_ng13_StepY", 0.0),
 ];
 const P_NG14: &[Param] = &[
-    p("sym_ng14_Prop. Sep.", 0.0),
+    p("sym_ng14_prop_sep", 0.0),
     p("sym_ng14_StepX", 0.0),
     p("sym_ng14_StepY", 0.0),
 ];
 const P_NG15: &[Param] = &[
-    p("sym_ng15_Prop. Sep.", 0.0),
+    p("sym_ng15_prop_sep", 0.0),
     p("sym_ng15_StepX", 0.0),
     p("sym_ng15_StepY", 0.0),
 ];
 const P_NG16: &[Param] = &[
-    p("sym_ng16_Prop. Sep.", 0.0),
+    p("sym_ng16_prop_sep", 0.0),
     p("sym_ng16_StepX", 0.0),
     p("sym_ng16_StepY", 0.0),
 ];
 const P_NG17: &[Param] = &[
-    p("sym_ng17_Prop. Sep.", 0.0),
+    p("sym_ng17_prop_sep", 0.0),
     p("sym_ng17_StepX", 0.0),
     p("sym_ng17_StepY", 0.0),
 ];

@@ -736,6 +736,19 @@ const PARAM_ALIASES: &[(&str, &str)] = &[
     ("waves2_radial_w2r_scaley", "waves2_radial_scaley"),
     ("waves2_radial_w2r_null", "waves2_radial_null"),
     ("waves2_radial_w2r_distance", "waves2_radial_distance"),
+    // JWildfire 7 wrote the direct-colour variations' z settings the other way round.
+    ("dc_mandala_z_scale", "dc_mandala_scale_z"),
+    ("dc_mandala_z_offset", "dc_mandala_offset_z"),
+    ("dc_inversion_z_scale", "dc_inversion_scale_z"),
+    ("dc_inversion_z_offset", "dc_inversion_offset_z"),
+    ("dc_poincaredisc_z_scale", "dc_poincaredisc_scale_z"),
+    ("dc_poincaredisc_z_offset", "dc_poincaredisc_offset_z"),
+    ("dc_circuits_z_scale", "dc_circuits_scale_z"),
+    ("dc_circuits_z_offset", "dc_circuits_offset_z"),
+    ("dc_turbulence_z_scale", "dc_turbulence_scale_z"),
+    ("dc_turbulence_z_offset", "dc_turbulence_offset_z"),
+    ("dc_gabornoise_z_scale", "dc_gabornoise_scale_z"),
+    ("dc_gabornoise_z_offset", "dc_gabornoise_offset_z"),
 ];
 
 /// Variation names other programs use for a variation of the registry (lower case), also as
