@@ -1229,10 +1229,20 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    // JWildfire writes NAME_fx_priority beside every variation it writes.
-                    let marked = attrs
-                        .iter()
-                        .any(|b| b.name.strip_suffix("_fx_priority") == Some(name));
+                    // JWildfire writes NAME_fx_priority beside every variation it writes;
+                    // in other programs' files a variation is followed by its NAME_parameters.
+                    let jwildfire = attrs.iter().any(|b| b.name.ends_with("_fx_priority"));
+                    let marked = if jwildfire {
+                        attrs
+                            .iter()
+                            .any(|b| b.name.strip_suffix("_fx_priority") == Some(name))
+                    } else {
+                        attrs.iter().any(|b| {
+                            b.name
+                                .strip_prefix(name)
+                                .is_some_and(|r| r.len() > 1 && r.starts_with('_'))
+                        })
+                    };
                     if numeric && (marked || variations::is_foreign_variation_name(name)) {
                         if cx.reported_vars.insert(name.to_string()) {
                             cx.warn(

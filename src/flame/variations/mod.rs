@@ -437,9 +437,9 @@ impl VarDef {
         self.flags & f != 0
     }
 
-    /// Is a 3-D variation (reads or writes z).
+    /// Is a 3-D variation (its output depends on z).
     pub fn is_3d(&self) -> bool {
-        self.has(flag::USES_Z | flag::WRITES_Z) && self.name != "linear"
+        self.has(flag::USES_Z)
     }
 }
 
