@@ -258,7 +258,10 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<24>),
     VarDef::new("fan2", eval::<25>)
-        .params(&[p("fan2_x", 0.7071067811865476), p("fan2_y", -0.7071067811865476)])
+        .params(&[
+            p("fan2_x", 0.7071067811865476),
+            p("fan2_y", -0.7071067811865476),
+        ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(zf(25) | flag::FLAM3)
         .prepare(prepare)
