@@ -1587,7 +1587,7 @@ mod tests {
     fn reads_flames_of_other_programs() {
         let p = read(&foreign(), &opts()).unwrap();
         let f = &p.value.flames[0];
-        assert_eq!(f.cam.pitch, 1.0471975511966);
+        assert!((f.cam.pitch - std::f64::consts::FRAC_PI_3).abs() < 1e-12);
         assert_eq!(
             (f.cam.yaw, f.cam.perspective, f.cam.zpos, f.cam.dof),
             (0.25, 0.3, 0.5, 0.2)

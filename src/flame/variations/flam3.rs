@@ -259,8 +259,8 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<24>),
     VarDef::new("fan2", eval::<25>)
         .params(&[
-            p("fan2_x", 0.7071067811865476),
-            p("fan2_y", -0.7071067811865476),
+            p("fan2_x", std::f64::consts::FRAC_1_SQRT_2),
+            p("fan2_y", -std::f64::consts::FRAC_1_SQRT_2),
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(zf(25) | flag::FLAM3)
