@@ -10,7 +10,7 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_4, PI, TAU};
 
-use super::util::sqr;
+use super::util::{Mwc, atan2_approx, signum_java, sqr, wang_hash};
 use super::{Acc, Prepared, V3, VarDef, VarIn, flag, need, p, p_int, p_int_nonzero, p_range};
 use crate::flame::rng::FastRng;
 
@@ -526,16 +526,6 @@ fn glitchy1_prepare(v: &mut Prepared) {
     v.p.push(a.cos());
 }
 
-/// Bob Jenkins' 32-bit integer mix, scaled to about [-1, 1].
-fn jenkins_hash(a: i32) -> f64 {
-    let mut a = (a ^ 61) ^ (a >> 16);
-    a = a.wrapping_add(a << 3);
-    a ^= a >> 4;
-    a = a.wrapping_mul(0x27d4_eb2d);
-    a ^= a >> 15;
-    a as f64 / i32::MAX as f64
-}
-
 /// Mirrors `c` about `shift` in every `n`-th band of width 1/scale (glitchy1's folding).
 fn glitch_fold(c: f64, scale: f64, shift: f64, n: f64) -> f64 {
     if scale == 0.0 {
@@ -564,12 +554,12 @@ fn glitchy1(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let ww = q[14] * (k * uu - h * t.y);
     let block = |c: f64| -> i32 {
         let b = (c * width).floor() as i32;
-        (b as f64 + (2.0 - 4.0 * jenkins_hash(b.wrapping_mul(seed).wrapping_add(1)))) as i32
+        (b as f64 + (2.0 - 4.0 * wang_hash(b.wrapping_mul(seed).wrapping_add(1)))) as i32
     };
     let (bu, bv, bw) = (block(uu), block(vv), block(ww));
     let base = bu.wrapping_add(bv);
-    let len = jenkins_hash(base.wrapping_add(bw.wrapping_mul(seed.wrapping_neg())))
-        + jenkins_hash(base.wrapping_add(bw.wrapping_mul(seed) / 2));
+    let len = wang_hash(base.wrapping_add(bw.wrapping_mul(seed.wrapping_neg())))
+        + wang_hash(base.wrapping_add(bw.wrapping_mul(seed) / 2));
     let s = v.w * len;
     [s * x, s * y, s * z]
 }
@@ -724,17 +714,6 @@ fn crop_stars_prepare(v: &mut Prepared) {
     v.p.extend_from_slice(&[an, acos, asin, ecos, esin, radius * asin / esin]);
 }
 
-/// The fast atan2 approximation JWildfire's GLSL helpers use (error up to about 0.07 rad).
-fn atan2_approx(y: f64, x: f64) -> f64 {
-    let ay = y.abs();
-    let a = if x >= 0.0 {
-        FRAC_PI_4 - FRAC_PI_4 * ((x - ay) / (x + ay))
-    } else {
-        3.0 * FRAC_PI_4 - FRAC_PI_4 * ((x + ay) / (ay - x))
-    };
-    if y < 0.0 { -a } else { a }
-}
-
 /// crop_stars: keeps the points inside a star (n points, outer radius `radius`, inner angle set
 /// by r2) and sends the others to the origin (`invert` swaps inside and outside). It replaces
 /// the xform's sum so far, as JWildfire's crop variations do.
@@ -766,17 +745,6 @@ fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
         [v.w * t.x, v.w * t.y, 0.0]
     } else {
         [0.0, 0.0, 0.0]
-    }
-}
-
-/// Java's `Math.signum`: 0 for ±0 (and NaN for NaN).
-fn signum_java(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        x
     }
 }
 
@@ -1048,29 +1016,6 @@ fn nsudoku(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 // ---------------------------------------------------------------------------------------------
 // snowflake_wf
 
-/// George Marsaglia's multiply-with-carry pair, as JWildfire seeds and scales it.
-struct Marsaglia {
-    u: i32,
-    v: i32,
-}
-
-impl Marsaglia {
-    fn new(seed: i64) -> Self {
-        let s = (seed << 16) as i32;
-        Marsaglia { u: s, v: s >> 16 }
-    }
-    fn next(&mut self) -> f64 {
-        self.v = 36969i32
-            .wrapping_mul(self.v & 65535)
-            .wrapping_add(self.v >> 16);
-        self.u = 18000i32
-            .wrapping_mul(self.u & 65535)
-            .wrapping_add(self.u >> 16);
-        let r = (self.v << 16).wrapping_add(self.u);
-        (r as f64 * (1.0 / i32::MAX as f64)).abs()
-    }
-}
-
 /// Ratio JWildfire uses to lay the hexagonal grid out on a square canvas.
 const SNOW_STRETCH: f64 = 1.5 / 1.7321;
 
@@ -1088,9 +1033,9 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
         let m = n as i64 + offsets[k];
         (m >= 0 && m < ci).then_some(m as usize)
     };
-    let mut rnd = Marsaglia::new(q[8] as i64);
+    let mut rnd = Mwc::new(q[8] as i64);
     let mut field: Vec<f64> = (0..cells)
-        .map(|_| bg + (noise - 2.0 * noise * rnd.next()))
+        .map(|_| bg + (noise - 2.0 * noise * rnd.next_f64()))
         .collect();
     field[cells / 2] = 1.0;
     let mut diffusing = vec![0.0; cells];
@@ -1159,7 +1104,7 @@ const SNOW_POINTS: usize = 14;
 fn snowflake_prepare(v: &mut Prepared) {
     let canvas = snow_crystal(&v.p);
     let (scale, jitter) = (v.p[9], v.p[10].clamp(0.0, 1.0));
-    let mut rnd = Marsaglia::new(v.p[8] as i64);
+    let mut rnd = Mwc::new(v.p[8] as i64);
     let count_at = v.p.len();
     v.p.push(0.0);
     let rows = canvas.len() as f64;
@@ -1168,7 +1113,7 @@ fn snowflake_prepare(v: &mut Prepared) {
         let cols = row.len() as f64;
         for (j, &val) in row.iter().enumerate() {
             // The jitter draw happens for every cell so that growth keeps earlier points fixed.
-            let a = if jitter > 1e-8 { rnd.next() } else { 0.0 };
+            let a = if jitter > 1e-8 { rnd.next_f64() } else { 0.0 };
             if (val as f64) > 1e-8 {
                 let mut x = (i as f64 - rows * 0.5) * scale / rows;
                 let mut y = (j as f64 - cols * 0.5) * scale / cols * SNOW_STRETCH;

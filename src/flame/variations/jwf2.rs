@@ -17,6 +17,7 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
+use super::util::{Mwc, atan2_approx, fract, signum_java};
 use super::*;
 
 // ---------------------------------------------------------------------------------------------
@@ -793,38 +794,12 @@ const P_SVENSSON: &[Param] = &[
 // ---------------------------------------------------------------------------------------------
 // dla3d_wf: diffusion-limited aggregation in 3-D
 
-/// George Marsaglia's multiply-with-carry pair, with JWildfire's seeding and scaling (32-bit
-/// wrapping arithmetic); the aggregate is grown with it so that a seed gives JWildfire's shape.
-#[derive(Clone, Debug)]
-struct Mwc {
-    u: i32,
-    v: i32,
-}
-
-impl Mwc {
-    fn new(seed: i64) -> Mwc {
-        let s = seed.wrapping_shl(16) as i32;
-        Mwc { u: s, v: s >> 16 }
-    }
-
-    fn next(&mut self) -> f64 {
-        self.v = 36969i32
-            .wrapping_mul(self.v & 65535)
-            .wrapping_add(self.v >> 16);
-        self.u = 18000i32
-            .wrapping_mul(self.u & 65535)
-            .wrapping_add(self.u >> 16);
-        let bits = (self.v << 16).wrapping_add(self.u);
-        (bits as f64 * (1.0 / 2147483647.0)).abs()
-    }
-}
-
 impl Draw for Mwc {
     fn unit(&mut self) -> f64 {
-        self.next()
+        self.next_f64()
     }
     fn index(&mut self, n: usize) -> usize {
-        let i = (self.next() * n as f64) as usize;
+        let i = (self.next_f64() * n as f64) as usize;
         i.min(n - 1)
     }
 }
@@ -979,8 +954,8 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
     let mut misses = 0;
     let mut steps_left = DLA_MAX_STEPS;
     while nodes.len() < max_nodes && misses < DLA_MAX_MISSES && steps_left > 0 {
-        let phi = rnd.next() * (PI + PI);
-        let theta = rnd.next() * (PI + PI);
+        let phi = rnd.next_f64() * (PI + PI);
+        let theta = rnd.next_f64() * (PI + PI);
         let (sp, cp) = phi.sin_cos();
         let (st, ct) = theta.sin_cos();
         let (mut x, mut y, mut z) = (inner * st * cp, inner * st * sp, inner * ct);
@@ -990,7 +965,7 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
                 break;
             }
             steps_left -= 1;
-            match (rnd.next() * 6.0) as i32 {
+            match (rnd.next_f64() * 6.0) as i32 {
                 0 => x = x + 0.9 + force[0],
                 1 => y = y - 0.9 + force[1],
                 2 => x = x - 0.9 + force[0],
@@ -1200,29 +1175,10 @@ const P_DLA: &[Param] = &[
 // ---------------------------------------------------------------------------------------------
 // dc_*: pattern variations that scatter points over a square and colour them
 
-/// JWildfire's GLSL helper `atan2`: a cheap first-order approximation of the angle.
-fn atan2_fast(y: f64, x: f64) -> f64 {
-    let q = PI / 4.0;
-    let q3 = 3.0 * q;
-    let ay = y.abs();
-    let a = if x >= 0.0 {
-        q - q * ((x - ay) / (x + ay))
-    } else {
-        q3 - q * ((x + ay) / (ay - x))
-    };
-    if y < 0.0 { -a } else { a }
-}
-
 /// GLSL `mod`: x − y·⌊x/y⌋.
 #[inline(always)]
 fn gmod(x: f64, y: f64) -> f64 {
     x - y * (x / y).floor()
-}
-
-/// GLSL `fract`.
-#[inline(always)]
-fn fract(x: f64) -> f64 {
-    x - x.floor()
 }
 
 /// GLSL-helper min and max (the second argument wins only when strictly better).
@@ -1236,21 +1192,9 @@ fn gmax(x: f64, y: f64) -> f64 {
     if x < y { y } else { x }
 }
 
-/// Java's `Math.signum`.
-#[inline(always)]
-fn signum(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        x
-    }
-}
-
 /// Folds a point into the wedge [0, k] of a kaleidoscope with mirror angle k.
 fn kaleido(x: f64, y: f64, k: f64) -> (f64, f64) {
-    let ang = (gmod(atan2_fast(y, x), 2.0 * k) - k).abs();
+    let ang = (gmod(atan2_approx(y, x), 2.0 * k) - k).abs();
     let len = (x * x + y * y).sqrt();
     (len * ang.cos(), len * ang.sin())
 }
@@ -1554,7 +1498,7 @@ fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
         let o = gmin(gmax(gmin(zx, zy).abs(), -l + 0.25), (l - 0.25).abs());
         ot = gmin(ot, o);
         ot2 = gmin(l * 0.1, ot2);
-        m = gmax(m, i as f64 * (1.0 - signum(ot - o).abs()));
+        m = gmax(m, i as f64 * (1.0 - signum_java(ot - o).abs()));
         if budget <= 0.0 {
             break;
         }
@@ -1728,7 +1672,7 @@ fn gabor_rgb(q: &[f64], centres: &[f64], x: f64, y: f64) -> [f64; 3] {
     let uy = (y * zoom) * 45.0;
     let mut a = 0.0;
     for c in centres.chunks_exact(2) {
-        a += atan2_fast(ux - c[0], uy - c[1]);
+        a += atan2_approx(ux - c[0], uy - c[1]);
     }
     [
         a.cos() * 0.6 + 0.6,
@@ -2276,9 +2220,9 @@ mod tests {
     fn mwc_matches_jwildfire_sequence_shape() {
         // Seeds whose low 16 bits are 0 leave the generator at 0 forever.
         let mut m = Mwc::new(65536 * 3);
-        assert!((0..10).all(|_| m.next() == 0.0));
+        assert!((0..10).all(|_| m.next_f64() == 0.0));
         let mut m = Mwc::new(42);
-        let xs: Vec<f64> = (0..1000).map(|_| m.next()).collect();
+        let xs: Vec<f64> = (0..1000).map(|_| m.next_f64()).collect();
         assert!(xs.iter().all(|x| (0.0..=1.000000001).contains(x)));
         let mean = xs.iter().sum::<f64>() / 1000.0;
         assert!((mean - 0.5).abs() < 0.05);

@@ -39,6 +39,8 @@ mod fr_e;
 mod fr_f;
 mod jwf;
 mod jwf2;
+mod noise;
+pub mod util;
 
 /// flam3's `EPS`, the guard its formulas add to denominators.
 pub const EPS: f64 = 1e-10;
@@ -967,56 +969,5 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
             }
             acc
         }
-    }
-}
-
-/// Helpers for formulas.
-pub mod util {
-    /// `x`, or `f64::EPSILON` when it is exactly 0 (Fractorium's pole guard).
-    #[inline(always)]
-    pub fn zeps(x: f64) -> f64 {
-        if x == 0.0 { f64::EPSILON } else { x }
-    }
-
-    /// -1 for negative values, else 1.
-    #[inline(always)]
-    pub fn sign_nz(x: f64) -> f64 {
-        if x < 0.0 { -1.0 } else { 1.0 }
-    }
-
-    /// -1, 0 or 1.
-    #[inline(always)]
-    pub fn sign(x: f64) -> f64 {
-        if x < 0.0 {
-            -1.0
-        } else if x > 0.0 {
-            1.0
-        } else {
-            0.0
-        }
-    }
-
-    /// C's `fmod` (the remainder has the sign of `a`): Rust's `%` on f64.
-    #[inline(always)]
-    pub fn fmod(a: f64, b: f64) -> f64 {
-        a % b
-    }
-
-    /// Round half away from zero (C's `round`).
-    #[inline(always)]
-    pub fn round(x: f64) -> f64 {
-        x.round()
-    }
-
-    /// (sin a, cos a).
-    #[inline(always)]
-    pub fn sincos(a: f64) -> (f64, f64) {
-        a.sin_cos()
-    }
-
-    /// x².
-    #[inline(always)]
-    pub fn sqr(x: f64) -> f64 {
-        x * x
     }
 }
