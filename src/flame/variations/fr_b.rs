@@ -1844,12 +1844,7 @@ fn falloff(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let az = centred(rng);
     let w = v.w;
     let r = (sqr(t.x - x0) + sqr(t.y - y0) + sqr(t.z - z0)).sqrt();
-    let base = if invert != 0.0 {
-        (1.0 - r).max(0.0)
-    } else {
-        r.max(0.0)
-    };
-    let rs = ((base - mindist) * (0.04 * scatter)).max(0.0);
+    let rs = falloff_amount(r, invert, mindist, 0.04 * scatter);
     match kind as i32 {
         0 => [
             w * (t.x + mx * ax * rs),
@@ -1857,13 +1852,8 @@ fn falloff(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
             w * (t.z + mz * az * rs),
         ],
         1 => {
-            let rad = r + mx * ax * rs;
-            let phi = t.atan_yx + my * ay * rs;
-            let sigma = (if r == 0.0 { 0.0 } else { t.z / r }).asin() + mz * az * rs;
-            let (ss, sc) = sigma.sin_cos();
-            let (ps, pc) = phi.sin_cos();
-            let (ss, sc) = (ss * w, sc * w);
-            [rad * sc * pc, rad * sc * ps, rad * ss]
+            let elevation = if r == 0.0 { 0.0 } else { t.z / r };
+            radial_falloff(t, w, r, elevation, rs, [ax, ay, az], [mx, my, mz])
         }
         _ => {
             let scale = rs.clamp(0.0, 0.9) + 0.1;
@@ -1889,12 +1879,7 @@ fn falloff2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let rc = centred(rng);
     let w = v.w;
     let da = (sqr(t.x - x0) + sqr(t.y - y0) + sqr(t.z - z0)).sqrt();
-    let db = if invert != 0.0 {
-        (1.0 - da).max(0.0)
-    } else {
-        da.max(0.0)
-    };
-    let dist = ((db - mindist) * (0.04 * scatter)).max(0.0);
+    let dist = falloff_amount(da, invert, mindist, 0.04 * scatter);
     let o = match kind as i32 {
         0 => [
             (t.x + mx * rx * dist) * w,
@@ -1906,18 +1891,44 @@ fn falloff2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
                 return [t.x * w, t.y * w, t.z * w];
             }
             let rin = zeps((t.sumsq + t.z * t.z).sqrt());
-            let r = rin + mx * rx * dist;
-            let phi = t.atan_yx + my * ry * dist;
-            let sigma = (t.z / rin).asin() + mz * rz * dist;
-            let (ss, sc) = sigma.sin_cos();
-            let (ps, pc) = phi.sin_cos();
-            let (ss, sc) = (ss * w, sc * w);
-            [r * sc * pc, r * sc * ps, r * ss]
+            radial_falloff(t, w, rin, t.z / rin, dist, [rx, ry, rz], [mx, my, mz])
         }
         _ => gaussian_falloff(t, w, dist, [rx, ry, rz], [mx, my, mz]),
     };
-    acc.color = ((acc.color + mc * rc * dist) % 1.0).abs();
+    acc.color = falloff_color(acc.color, mc * rc * dist);
     o
+}
+
+/// How strongly the falloff blurs act at distance `r` from their centre (1 − r with
+/// `invert`): the part beyond `mindist`, times `k`, never negative.
+#[inline(always)]
+fn falloff_amount(r: f64, invert: f64, mindist: f64, k: f64) -> f64 {
+    let base = if invert != 0.0 {
+        (1.0 - r).max(0.0)
+    } else {
+        r.max(0.0)
+    };
+    ((base - mindist) * k).max(0.0)
+}
+
+/// The colour of the falloff blurs: shifted by `shift`, wrapped into [0, 1) by |c mod 1|.
+#[inline(always)]
+fn falloff_color(color: f64, shift: f64) -> f64 {
+    ((color + shift) % 1.0).abs()
+}
+
+/// The "radial" style of the falloff blurs: the point's spherical coordinates (radius `rin`,
+/// azimuth, elevation asin(`elevation`)) each jittered by `dist` times a random number `r` and
+/// a multiplier `m`.
+#[inline(always)]
+fn radial_falloff(t: &VarIn, w: f64, rin: f64, elevation: f64, dist: f64, r: V3, m: V3) -> V3 {
+    let rad = rin + m[0] * r[0] * dist;
+    let phi = t.atan_yx + m[1] * r[1] * dist;
+    let sigma = elevation.asin() + m[2] * r[2] * dist;
+    let (ss, sc) = sigma.sin_cos();
+    let (ps, pc) = phi.sin_cos();
+    let (ss, sc) = (ss * w, sc * w);
+    [rad * sc * pc, rad * sc * ps, rad * ss]
 }
 
 /// The "Gaussian" style of falloff2/falloff3: offsets along a random spherical direction.
@@ -1952,16 +1963,11 @@ fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         (t.x - cx).abs().max((t.y - cy).abs().max((t.z - cz).abs()))
     };
     let rmax = 0.04 * strength;
-    let base = if invert != 0.0 {
-        (1.0 - radius).max(0.0)
-    } else {
-        radius.max(0.0)
-    };
-    let dist = ((base - mindist) * rmax).max(0.0);
+    let dist = falloff_amount(radius, invert, mindist, rmax);
     match kind as i32 {
         0 => {
             let o = gaussian_falloff(t, w, dist, [rx, ry, rz], [mx, my, mz]);
-            acc.color = ((acc.color + mc * rc * dist) % 1.0).abs();
+            acc.color = falloff_color(acc.color, mc * rc * dist);
             o
         }
         1 => {
@@ -1969,14 +1975,8 @@ fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
                 return [t.x * w, t.y * w, t.z * w];
             }
             let rin = (t.sumsq + t.z * t.z).sqrt();
-            let r = rin + mx * rx * dist;
-            let phi = t.atan_yx + my * ry * dist;
-            let sigma = (t.z / rin).asin() + mz * rz * dist;
-            let (ss, sc) = sigma.sin_cos();
-            let (ps, pc) = phi.sin_cos();
-            let (ss, sc) = (ss * w, sc * w);
-            acc.color = ((acc.color + mc * rc * dist) % 1.0).abs();
-            [r * sc * pc, r * sc * ps, r * ss]
+            acc.color = falloff_color(acc.color, mc * rc * dist);
+            radial_falloff(t, w, rin, t.z / rin, dist, [rx, ry, rz], [mx, my, mz])
         }
         _ => {
             let coeff = if rmax <= f64::EPSILON {
@@ -1989,7 +1989,7 @@ fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
                 (t.y + log_map(my) * log_scale(ry) * coeff) * w,
                 (t.z + log_map(mz) * log_scale(rz) * coeff) * w,
             ];
-            acc.color = ((acc.color + log_map(mc) * log_scale(rc) * coeff) % 1.0).abs();
+            acc.color = falloff_color(acc.color, log_map(mc) * log_scale(rc) * coeff);
             o
         }
     }

@@ -588,48 +588,13 @@ fn glynnia2_prepare(v: &mut Prepared) {
     v.p.push(k);
 }
 
-/// A random choice between two square-root–like maps of the plane (Glynn's "glynnia"), with
-/// different branches inside and outside the unit circle.
-fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let w = v.w;
-    let v2 = v.p[0];
+/// Glynn's two square-root–like maps of the plane, one picked at random: on the `outer` side
+/// (of the unit circle for glynnia, of the x axis for glynnia2) as they are, on the other side
+/// mirrored and with their poles guarded.
+#[inline(always)]
+fn glynnia_maps(w: f64, v2: f64, t: &VarIn, outer: bool, rng: &mut FastRng) -> V3 {
     let r = t.sqrt;
-    if v.compat {
-        if r > 1.0 {
-            if rng.f01() > 0.5 {
-                let d = (r + t.x).sqrt();
-                [v2 * d, -(v2 / d * t.y), 0.0]
-            } else {
-                let d = r + t.x;
-                let k = w / (r * (t.y * t.y + d * d)).sqrt();
-                [k * d, k * t.y, 0.0]
-            }
-        } else if rng.f01() > 0.5 {
-            let d = zeps((r + t.x).sqrt());
-            [-(v2 * d), -(v2 / d * t.y), 0.0]
-        } else {
-            let d = r + t.x;
-            let k = w / zeps((r * (t.y * t.y + d * d)).sqrt());
-            [-(k * d), k * t.y, 0.0]
-        }
-    } else {
-        let side = if t.sumsq > 1.0 { 1.0 } else { -1.0 };
-        let root = (r + t.x).sqrt();
-        if rng.f01() < 0.5 {
-            [v2 * side * root, v2 * (-t.y / zeps(root)), 0.0]
-        } else {
-            let k = v2 / zeps(r);
-            [k * side * root, k * (t.y / zeps(root)), 0.0]
-        }
-    }
-}
-
-/// glynnia with the branch chosen by the upper half-plane (y > 0) instead of the unit circle.
-fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let w = v.w;
-    let v2 = v.p[0];
-    let r = t.sqrt;
-    if r > 0.0 && t.y > 0.0 {
+    if outer {
         if rng.f01() > 0.5 {
             let d = (r + t.x).sqrt();
             [v2 * d, -(v2 / d * t.y), 0.0]
@@ -646,6 +611,30 @@ fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         let k = w / zeps((r * (t.y * t.y + d * d)).sqrt());
         [-(k * d), k * t.y, 0.0]
     }
+}
+
+/// A random choice between two square-root–like maps of the plane (Glynn's "glynnia"), with
+/// different branches inside and outside the unit circle.
+fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let v2 = v.p[0];
+    if v.compat {
+        glynnia_maps(v.w, v2, t, t.sqrt > 1.0, rng)
+    } else {
+        let r = t.sqrt;
+        let side = if t.sumsq > 1.0 { 1.0 } else { -1.0 };
+        let root = (r + t.x).sqrt();
+        if rng.f01() < 0.5 {
+            [v2 * side * root, v2 * (-t.y / zeps(root)), 0.0]
+        } else {
+            let k = v2 / zeps(r);
+            [k * side * root, k * (t.y / zeps(root)), 0.0]
+        }
+    }
+}
+
+/// glynnia with the branch chosen by the upper half-plane (y > 0) instead of the unit circle.
+fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    glynnia_maps(v.w, v.p[0], t, t.sqrt > 0.0 && t.y > 0.0, rng)
 }
 
 /// The shared outside rule of the GlynnSim family: with probability contrast·α^pow

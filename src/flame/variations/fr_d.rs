@@ -7,7 +7,9 @@
 
 use std::f64::consts::{E, FRAC_1_PI, FRAC_PI_2, PI, SQRT_2, TAU};
 
-use super::util::{crand, mix, rand_size, sign, signed_pow, sqr, trunc_i32, wang_hash, zeps};
+use super::util::{
+    cpp_max, crand, mix, rand_size, sign, signed_pow, sqr, trunc_i32, wang_hash, zeps,
+};
 use super::*;
 
 const INF: f64 = f64::INFINITY;
@@ -407,12 +409,6 @@ const MIRROR_FLAGS: u32 = flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::W
 // ---------------------------------------------------------------------------------------------
 // Shared helpers.
 
-/// `std::max` semantics: `b` only when `a < b` (NaN in `a` is kept).
-#[inline(always)]
-fn c_max(a: f64, b: f64) -> f64 {
-    if a < b { b } else { a }
-}
-
 /// Derived value shared by the loonies: the squared weight.
 fn prep_weight_squared(v: &mut Prepared) {
     let w2 = v.w * v.w;
@@ -809,7 +805,7 @@ fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
             let nx = xr * cos_a - yr * sin_a;
             yr = xr * sin_a + yr * cos_a;
             xr = nx;
-            r2 = c_max(r2, xr * cos_s + yr.abs() * sin_s);
+            r2 = cpp_max(r2, xr * cos_s + yr.abs() * sin_s);
             turns += 1;
         }
         r2 = r2 * cos_c + t.sqrt * sin_c;

@@ -1805,108 +1805,57 @@ fn ztranslate(v: &Prepared, _: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 // ---------------------------------------------------------------------------------------------
 // Registry entries.
 
-const SHAPE_X: &[Param] = &[
-    p("x_hypergon", 0.0),
-    p_int("x_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("x_hypergon_r", 1.0),
-    p("x_star", 0.0),
-    p_int("x_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("x_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("x_lituus", 0.0),
-    p("x_lituus_a", 1.0),
-    p("x_super", 0.0),
-    p("x_super_m", 1.0),
-    p("x_super_n1", 1.0),
-    p("x_super_n2", 1.0),
-    p("x_super_n3", 1.0),
-];
+/// The thirteen shape parameters of the w/x/y/z family, `PREFIX_hypergon` … `PREFIX_super_n3`,
+/// after any leading ones given.
+macro_rules! shape_params {
+    ($pre:literal $(, $lead:expr)*) => {
+        &[
+            $($lead,)*
+            p(concat!($pre, "_hypergon"), 0.0),
+            p_int(concat!($pre, "_hypergon_n"), 4.0, 3.0, f64::INFINITY),
+            p(concat!($pre, "_hypergon_r"), 1.0),
+            p(concat!($pre, "_star"), 0.0),
+            p_int(concat!($pre, "_star_n"), 5.0, 3.0, f64::INFINITY),
+            p_range(concat!($pre, "_star_slope"), 2.0, f64::EPSILON, FRAC_PI_2),
+            p(concat!($pre, "_lituus"), 0.0),
+            p(concat!($pre, "_lituus_a"), 1.0),
+            p(concat!($pre, "_super"), 0.0),
+            p(concat!($pre, "_super_m"), 1.0),
+            p(concat!($pre, "_super_n1"), 1.0),
+            p(concat!($pre, "_super_n2"), 1.0),
+            p(concat!($pre, "_super_n3"), 1.0),
+        ]
+    };
+}
 
-const SHAPE_Y: &[Param] = &[
-    p("y_hypergon", 0.0),
-    p_int("y_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("y_hypergon_r", 1.0),
-    p("y_star", 0.0),
-    p_int("y_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("y_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("y_lituus", 0.0),
-    p("y_lituus_a", 1.0),
-    p("y_super", 0.0),
-    p("y_super_m", 1.0),
-    p("y_super_n1", 1.0),
-    p("y_super_n2", 1.0),
-    p("y_super_n3", 1.0),
-];
+const SHAPE_X: &[Param] = shape_params!("x");
+const SHAPE_Y: &[Param] = shape_params!("y");
+const SHAPE_Z: &[Param] = shape_params!("z");
+const SHAPE_W: &[Param] = shape_params!("w", p_cyclic("w_angle", 0.0, -PI, PI));
 
-const SHAPE_Z: &[Param] = &[
-    p("z_hypergon", 0.0),
-    p_int("z_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("z_hypergon_r", 1.0),
-    p("z_star", 0.0),
-    p_int("z_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("z_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("z_lituus", 0.0),
-    p("z_lituus_a", 1.0),
-    p("z_super", 0.0),
-    p("z_super_m", 1.0),
-    p("z_super_n1", 1.0),
-    p("z_super_n2", 1.0),
-    p("z_super_n3", 1.0),
-];
+/// synth's parameters: five global ones, then six per wave layer (`synth_L`, `_type`, `_skew`,
+/// `_frq`, `_phs`, `_layer`) for the layers named.
+macro_rules! synth_params {
+    ($($layer:literal),*) => {
+        &[
+            p("synth_a", 0.0),
+            p_int("synth_mode", 3.0, 0.0, 26.0),
+            p("synth_power", -2.0),
+            p("synth_mix", 0.0),
+            p_int("synth_smooth", 0.0, 0.0, 1.0),
+            $(
+                p(concat!("synth_", $layer), 0.0),
+                p_int(concat!("synth_", $layer, "_type"), 0.0, 0.0, 8.0),
+                p(concat!("synth_", $layer, "_skew"), 0.0),
+                p(concat!("synth_", $layer, "_frq"), 1.0),
+                p(concat!("synth_", $layer, "_phs"), 0.0),
+                p_int(concat!("synth_", $layer, "_layer"), 0.0, 0.0, 3.0),
+            )*
+        ]
+    };
+}
 
-const SHAPE_W: &[Param] = &[
-    p_cyclic("w_angle", 0.0, -PI, PI),
-    p("w_hypergon", 0.0),
-    p_int("w_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("w_hypergon_r", 1.0),
-    p("w_star", 0.0),
-    p_int("w_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("w_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("w_lituus", 0.0),
-    p("w_lituus_a", 1.0),
-    p("w_super", 0.0),
-    p("w_super_m", 1.0),
-    p("w_super_n1", 1.0),
-    p("w_super_n2", 1.0),
-    p("w_super_n3", 1.0),
-];
-
-const SYNTH_PARAMS: &[Param] = &[
-    p("synth_a", 0.0),
-    p_int("synth_mode", 3.0, 0.0, 26.0),
-    p("synth_power", -2.0),
-    p("synth_mix", 0.0),
-    p_int("synth_smooth", 0.0, 0.0, 1.0),
-    p("synth_b", 0.0),
-    p_int("synth_b_type", 0.0, 0.0, 8.0),
-    p("synth_b_skew", 0.0),
-    p("synth_b_frq", 1.0),
-    p("synth_b_phs", 0.0),
-    p_int("synth_b_layer", 0.0, 0.0, 3.0),
-    p("synth_c", 0.0),
-    p_int("synth_c_type", 0.0, 0.0, 8.0),
-    p("synth_c_skew", 0.0),
-    p("synth_c_frq", 1.0),
-    p("synth_c_phs", 0.0),
-    p_int("synth_c_layer", 0.0, 0.0, 3.0),
-    p("synth_d", 0.0),
-    p_int("synth_d_type", 0.0, 0.0, 8.0),
-    p("synth_d_skew", 0.0),
-    p("synth_d_frq", 1.0),
-    p("synth_d_phs", 0.0),
-    p_int("synth_d_layer", 0.0, 0.0, 3.0),
-    p("synth_e", 0.0),
-    p_int("synth_e_type", 0.0, 0.0, 8.0),
-    p("synth_e_skew", 0.0),
-    p("synth_e_frq", 1.0),
-    p("synth_e_phs", 0.0),
-    p_int("synth_e_layer", 0.0, 0.0, 3.0),
-    p("synth_f", 0.0),
-    p_int("synth_f_type", 0.0, 0.0, 8.0),
-    p("synth_f_skew", 0.0),
-    p("synth_f_frq", 1.0),
-    p("synth_f_phs", 0.0),
-    p_int("synth_f_layer", 0.0, 0.0, 3.0),
-];
+const SYNTH_PARAMS: &[Param] = synth_params!("b", "c", "d", "e", "f");
 
 const POLAR_NEEDS: u8 = need::SUMSQ | need::SQRT | need::ATAN_YX;
 

@@ -17,7 +17,7 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-use super::util::{Mwc, atan2_approx, fract, signum_java};
+use super::util::{Mwc, atan2_approx, cpp_max, cpp_min, fract, signum_java};
 use super::*;
 
 // ---------------------------------------------------------------------------------------------
@@ -1181,17 +1181,6 @@ fn gmod(x: f64, y: f64) -> f64 {
     x - y * (x / y).floor()
 }
 
-/// GLSL-helper min and max (the second argument wins only when strictly better).
-#[inline(always)]
-fn gmin(x: f64, y: f64) -> f64 {
-    if y < x { y } else { x }
-}
-
-#[inline(always)]
-fn gmax(x: f64, y: f64) -> f64 {
-    if x < y { y } else { x }
-}
-
 /// Folds a point into the wedge [0, k] of a kaleidoscope with mirror angle k.
 fn kaleido(x: f64, y: f64, k: f64) -> (f64, f64) {
     let ang = (gmod(atan2_approx(y, x), 2.0 * k) - k).abs();
@@ -1360,7 +1349,7 @@ fn inversion_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
         vy = iy;
         let (qx, qy) = (vx * vx, vy * vy);
         l = (qx * qx + qy * qy).sqrt();
-        l_min = gmin(l, l_min);
+        l_min = cpp_min(l, l_min);
     }
     let tt = 2.1 + time * 0.025;
     let base = [
@@ -1429,14 +1418,14 @@ fn poincare_rgb(q: &[f64], d: &[f64], x: f64, y: f64) -> [f64; 3] {
     let mut circle_folds = 0.0;
     for _ in 0..trunc_i(q[1]) {
         zy = zy.abs();
-        let t = 2.0 * gmin(0.0, zx * nx + zy * ny);
+        let t = 2.0 * cpp_min(0.0, zx * nx + zy * ny);
         if t < 0.0 {
             line_folds += 1.0;
         }
         zx -= nx * t;
         zy -= ny * t;
         zx -= cx;
-        let k = gmax(cr * cr / (zx * zx + zy * zy), 1.0);
+        let k = cpp_max(cr * cr / (zx * zx + zy * zy), 1.0);
         if k != 1.0 {
             circle_folds += 1.0;
         }
@@ -1495,10 +1484,10 @@ fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
         zx = zx.abs() / d - t;
         zy = zy.abs() / d - t;
         let l = (zx * zx + zy * zy).sqrt();
-        let o = gmin(gmax(gmin(zx, zy).abs(), -l + 0.25), (l - 0.25).abs());
-        ot = gmin(ot, o);
-        ot2 = gmin(l * 0.1, ot2);
-        m = gmax(m, i as f64 * (1.0 - signum_java(ot - o).abs()));
+        let o = cpp_min(cpp_max(cpp_min(zx, zy).abs(), -l + 0.25), (l - 0.25).abs());
+        ot = cpp_min(ot, o);
+        ot2 = cpp_min(l * 0.1, ot2);
+        m = cpp_max(m, i as f64 * (1.0 - signum_java(ot - o).abs()));
         if budget <= 0.0 {
             break;
         }
@@ -1506,8 +1495,8 @@ fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
     }
     m += 1.0;
     let w = intensity * zoom * m;
-    let circ = (gmax(0.0, w - ot2) / w).powf(6.0);
-    let glow = gmax((gmax(0.0, w - ot) / w).powf(0.25), circ);
+    let circ = (cpp_max(0.0, w - ot2) / w).powf(6.0);
+    let glow = cpp_max((cpp_max(0.0, w - ot) / w).powf(0.25), circ);
     let base = [0.1 + 0.45, 0.1 + 0.75, 0.1 + m * 0.1];
     let len = (base[0] * base[0] + base[1] * base[1] + base[2] * base[2]).sqrt();
     let shade = 0.4 + gmod(m / 9.0 - t * pulse + ot2 * 2.0, 1.0);

@@ -95,6 +95,20 @@ pub fn signed_pow_or_id(x: f64, e: f64) -> f64 {
     }
 }
 
+/// C++'s `std::max(a, b)`: `b` only when `a < b`, so a NaN in `a` is kept and a NaN in `b` is
+/// ignored (unlike `f64::max`, which ignores either). GLSL helper code written in Java has the
+/// same rule.
+#[inline(always)]
+pub fn cpp_max(a: f64, b: f64) -> f64 {
+    if a < b { b } else { a }
+}
+
+/// C++'s `std::min(a, b)`: `b` only when `b < a` (a NaN in `a` is kept).
+#[inline(always)]
+pub fn cpp_min(a: f64, b: f64) -> f64 {
+    if b < a { b } else { a }
+}
+
 /// √x, or 0 for x ≤ 0: the "safe" square root of Fractorium's formulas, for radicands that
 /// are mathematically non-negative but can come out slightly negative after rounding. NaN
 /// stays NaN.
