@@ -1249,21 +1249,45 @@ fn star_offset(
     (z * c, z * s)
 }
 
+/// The last step of the depth blurs: a point at distance `rad` beyond `radius` is moved by a
+/// kernel offset drawn by `offset`, scaled by `amount` of the distance past the radius (points
+/// within the radius stay, and draw nothing); the result is weighted.
+#[inline(always)]
+fn depth_push(
+    w: f64,
+    t: &VarIn,
+    rad: f64,
+    radius: f64,
+    rng: &mut FastRng,
+    offset: impl FnOnce(&mut FastRng) -> (f64, f64),
+    amount: impl FnOnce(f64) -> f64,
+) -> V3 {
+    let (mut bx, mut by) = (0.0, 0.0);
+    if rad > radius {
+        let (ox, oy) = offset(rng);
+        let aux = amount(rad - radius);
+        bx = aux * ox;
+        by = aux * oy;
+    }
+    [w * (t.x + bx), w * (t.y + by), 0.0]
+}
+
 /// Blurs points beyond `radius` with a star-shaped kernel whose size grows linearly with the
 /// distance past the radius.
 fn depth_blur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let q = &v.p;
     let radius = q[3];
     let rad = t.sqrt;
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (length, blur10, power2, step, sa, ca) = (q[4], q[5], q[6], q[7], q[8], q[9]);
-        let (sx, sy) = star_offset(rng, power2, length, sa, ca, step, false);
-        let aux = blur10 * (rad - radius);
-        bx = aux * sx;
-        by = aux * sy;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    let (length, blur10, power2, step, sa, ca) = (q[4], q[5], q[6], q[7], q[8], q[9]);
+    depth_push(
+        v.w,
+        t,
+        rad,
+        radius,
+        rng,
+        |r| star_offset(r, power2, length, sa, ca, step, false),
+        |d| blur10 * d,
+    )
 }
 
 fn depth_blur2_prepare(v: &mut Prepared) {
@@ -1291,14 +1315,15 @@ fn depth_blur2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
     let (length, blur10, power2, step, sa, ca, imx, imy) =
         (q[9], q[10], q[11], q[12], q[13], q[14], q[15], q[16]);
     let rad = (sqr((t.x - x0) * imx) + sqr((t.y - y0) * imy)).sqrt();
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (sx, sy) = star_offset(rng, power2, length, sa, ca, step, true);
-        let aux = blur10 * ((rad - radius).ln() * ex).exp();
-        bx = aux * sx;
-        by = aux * sy;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    depth_push(
+        v.w,
+        t,
+        rad,
+        radius,
+        rng,
+        |r| star_offset(r, power2, length, sa, ca, step, true),
+        |d| blur10 * (d.ln() * ex).exp(),
+    )
 }
 
 /// A standard normal radius and a uniform angle: (r·cos, r·sin).
@@ -1313,14 +1338,9 @@ fn gaussian_offset(rng: &mut FastRng) -> (f64, f64) {
 fn depth_gaussian(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (blur, radius) = (v.p[0], v.p[1]);
     let rad = t.sqrt;
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (gx, gy) = gaussian_offset(rng);
-        let aux = blur / 10.0 * (rad - radius);
-        bx = aux * gx;
-        by = aux * gy;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    depth_push(v.w, t, rad, radius, rng, gaussian_offset, |d| {
+        blur / 10.0 * d
+    })
 }
 
 fn depth_gaussian2_prepare(v: &mut Prepared) {
@@ -1335,14 +1355,9 @@ fn depth_gaussian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -
     let (radius, x0, y0, ex) = (q[1], q[2], q[3], q[6]);
     let (blur10, kx, ky) = (q[7], q[8], q[9]);
     let rad = (sqr((t.x - x0) / kx) + sqr((t.y - y0) / ky)).sqrt();
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (gx, gy) = gaussian_offset(rng);
-        let aux = blur10 * ((rad - radius).ln() * ex).exp();
-        bx = aux * gx;
-        by = aux * gy;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    depth_push(v.w, t, rad, radius, rng, gaussian_offset, |d| {
+        blur10 * (d.ln() * ex).exp()
+    })
 }
 
 /// A random direction with the radius of a regular polygon's boundary in that direction
@@ -1372,14 +1387,15 @@ fn depth_ngon(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
     let radius = q[2];
     let (side, half, blur10) = (q[3], q[4], q[5]);
     let rad = t.sqrt;
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (px, py) = polygon_offset(rng, side, half);
-        let aux = blur10 * (rad - radius);
-        bx = aux * px;
-        by = aux * py;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    depth_push(
+        v.w,
+        t,
+        rad,
+        radius,
+        rng,
+        |r| polygon_offset(r, side, half),
+        |d| blur10 * d,
+    )
 }
 
 fn depth_ngon2_prepare(v: &mut Prepared) {
@@ -1400,25 +1416,15 @@ fn depth_ngon2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
     let q = &v.p;
     let (radius, x0, y0, ex) = (q[2], q[3], q[4], q[7]);
     let (side, half, blur10, kx, ky) = (q[8], q[9], q[10], q[11], q[12]);
-    let (mut bx, mut by) = (0.0, 0.0);
+    let polygon = |r: &mut FastRng| polygon_offset(r, side, half);
     if v.compat {
-        let rad = t.sqrt;
-        if rad > radius {
-            let (px, py) = polygon_offset(rng, side, half);
-            let aux = blur10 * (rad - radius);
-            bx = aux * px;
-            by = aux * py;
-        }
+        depth_push(v.w, t, t.sqrt, radius, rng, polygon, |d| blur10 * d)
     } else {
         let rad = (sqr(t.x - x0) * kx + sqr(t.y - y0) * ky).sqrt();
-        if rad > radius {
-            let (px, py) = polygon_offset(rng, side, half);
-            let aux = blur10 * ((rad - radius).ln() * ex).exp();
-            bx = aux * px;
-            by = aux * py;
-        }
+        depth_push(v.w, t, rad, radius, rng, polygon, |d| {
+            blur10 * (d.ln() * ex).exp()
+        })
     }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
 }
 
 /// A random direction with a radius distributed like acos(2u−1)/π (sharpened by `power`).
@@ -1439,14 +1445,15 @@ fn sine_offset(rng: &mut FastRng, power: f64) -> (f64, f64) {
 fn depth_sine(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (power, blur, radius) = (v.p[0], v.p[1], v.p[2]);
     let rad = t.sqrt;
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (sx, sy) = sine_offset(rng, power);
-        let aux = blur / 10.0 * (rad - radius);
-        bx = aux * sx;
-        by = aux * sy;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    depth_push(
+        v.w,
+        t,
+        rad,
+        radius,
+        rng,
+        |r| sine_offset(r, power),
+        |d| blur / 10.0 * d,
+    )
 }
 
 fn depth_sine2_prepare(v: &mut Prepared) {
@@ -1466,14 +1473,15 @@ fn depth_sine2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
     } else {
         (sqr(t.x - x0) * kx + sqr(t.y - y0) * ky).sqrt()
     };
-    let (mut bx, mut by) = (0.0, 0.0);
-    if rad > radius {
-        let (sx, sy) = sine_offset(rng, power);
-        let aux = blur10 * ((rad - radius).ln() * ex).exp();
-        bx = aux * sx;
-        by = aux * sy;
-    }
-    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
+    depth_push(
+        v.w,
+        t,
+        rad,
+        radius,
+        rng,
+        |r| sine_offset(r, power),
+        |d| blur10 * (d.ln() * ex).exp(),
+    )
 }
 
 // ---------------------------------------------------------------------------------------------

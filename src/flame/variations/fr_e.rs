@@ -618,16 +618,22 @@ fn sigmoid_prep(v: &mut Prepared) {
 // Spherical3D, SphericalN, spherivoid, sphyp3D, spiralwing, Spirograph, SplitBrdr
 // ---------------------------------------------------------------------------------------------
 
+/// A uniform number in [0, 1) raised to the power `pw` (drawn as e^(pw·ln u); u itself when
+/// pw = 1): the radial profile of sineblur and sphereblur.
+#[inline(always)]
+fn powered_unit(rng: &mut FastRng, pw: f64) -> f64 {
+    if pw == 1.0 {
+        rng.f01()
+    } else {
+        (rng.f01().ln() * pw).exp()
+    }
+}
+
 /// A disc of radius w filled with a density that follows acos (denser at the rim); `power`
 /// reshapes the radial profile.
 fn sineblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (s, c) = (rng.f01() * TAU).sin_cos();
-    let pw = v.p[0];
-    let u = if pw == 1.0 {
-        rng.f01()
-    } else {
-        (rng.f01().ln() * pw).exp()
-    };
+    let u = powered_unit(rng, v.p[0]);
     let r = v.w * ((u * 2.0 - 1.0).acos() / PI);
     [r * c, r * s, 0.0]
 }
@@ -758,12 +764,7 @@ fn spher(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 fn sphereblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let ang = rng.f01() * TAU;
     let polar = (rng.f01() * 2.0 - 1.0).acos();
-    let pw = v.p[0];
-    let u = if pw == 1.0 {
-        rng.f01()
-    } else {
-        (rng.f01().ln() * pw).exp()
-    };
+    let u = powered_unit(rng, v.p[0]);
     let r = v.w * (((u * 2.0 - 1.0).acos() / PI).ln() / 1.5).exp();
     let (s, c) = ang.sin_cos();
     let (sz, cz) = polar.sin_cos();

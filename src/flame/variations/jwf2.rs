@@ -430,6 +430,13 @@ fn prep_bg7(v: &mut Prepared) {
     );
 }
 
+/// `NAME_StepX` and `NAME_StepY` (both 0 by default), after any leading parameters given.
+macro_rules! sym_steps {
+    ($name:literal $(, $lead:expr)*) => {
+        &[$($lead,)* p(concat!($name, "_StepX"), 0.0), p(concat!($name, "_StepY"), 0.0)]
+    };
+}
+
 const P_NG1: &[Param] = &[p("sym_ng1_StepX", 0.5), p("sym_ng1_StepY", 0.5)];
 const P_NG2: &[Param] = &[p("sym_ng2_StepX", 2.0), p("sym_ng2_StepY", 2.0)];
 const P_NG3: &[Param] = &[
@@ -480,38 +487,18 @@ const P_NG12: &[Param] = &[
 ];
 // JWildfire names the first parameter of sym_ng13 "Prop. Sep" and that of 14-17 "Prop. Sep."
 // (with a space, so a file carrying them is not well-formed XML); ugnis writes `prop_sep`.
-const P_NG13: &[Param] = &[
-    p("sym_ng13_prop_sep", 0.0),
-    p("sym_ng13_StepX", 0.0),
-    p("sym_ng13_StepY", 0.0),
-];
-const P_NG14: &[Param] = &[
-    p("sym_ng14_prop_sep", 0.0),
-    p("sym_ng14_StepX", 0.0),
-    p("sym_ng14_StepY", 0.0),
-];
-const P_NG15: &[Param] = &[
-    p("sym_ng15_prop_sep", 0.0),
-    p("sym_ng15_StepX", 0.0),
-    p("sym_ng15_StepY", 0.0),
-];
-const P_NG16: &[Param] = &[
-    p("sym_ng16_prop_sep", 0.0),
-    p("sym_ng16_StepX", 0.0),
-    p("sym_ng16_StepY", 0.0),
-];
-const P_NG17: &[Param] = &[
-    p("sym_ng17_prop_sep", 0.0),
-    p("sym_ng17_StepX", 0.0),
-    p("sym_ng17_StepY", 0.0),
-];
-const P_BG1: &[Param] = &[p("sym_bg1_StepX", 0.0), p("sym_bg1_StepY", 0.0)];
-const P_BG2: &[Param] = &[p("sym_bg2_StepX", 0.0), p("sym_bg2_StepY", 0.0)];
-const P_BG3: &[Param] = &[p("sym_bg3_StepX", 0.0), p("sym_bg3_StepY", 0.0)];
-const P_BG4: &[Param] = &[p("sym_bg4_StepX", 0.0), p("sym_bg4_StepY", 0.0)];
-const P_BG5: &[Param] = &[p("sym_bg5_StepX", 0.0), p("sym_bg5_StepY", 0.0)];
-const P_BG6: &[Param] = &[p("sym_bg6_StepX", 0.0), p("sym_bg6_StepY", 0.0)];
-const P_BG7: &[Param] = &[p("sym_bg7_StepX", 0.0), p("sym_bg7_StepY", 0.0)];
+const P_NG13: &[Param] = sym_steps!("sym_ng13", p("sym_ng13_prop_sep", 0.0));
+const P_NG14: &[Param] = sym_steps!("sym_ng14", p("sym_ng14_prop_sep", 0.0));
+const P_NG15: &[Param] = sym_steps!("sym_ng15", p("sym_ng15_prop_sep", 0.0));
+const P_NG16: &[Param] = sym_steps!("sym_ng16", p("sym_ng16_prop_sep", 0.0));
+const P_NG17: &[Param] = sym_steps!("sym_ng17", p("sym_ng17_prop_sep", 0.0));
+const P_BG1: &[Param] = sym_steps!("sym_bg1");
+const P_BG2: &[Param] = sym_steps!("sym_bg2");
+const P_BG3: &[Param] = sym_steps!("sym_bg3");
+const P_BG4: &[Param] = sym_steps!("sym_bg4");
+const P_BG5: &[Param] = sym_steps!("sym_bg5");
+const P_BG6: &[Param] = sym_steps!("sym_bg6");
+const P_BG7: &[Param] = sym_steps!("sym_bg7");
 
 const SYM: u32 = flag::JWILDFIRE | flag::RANDOM;
 

@@ -543,14 +543,7 @@ impl Prepared {
     pub fn apply_pre(&self, tr: &mut V3, acc: &mut Acc, color: f64, rng: &mut FastRng) {
         let t = VarIn::new(tr[0], tr[1], tr[2], color, self.def.needs, false);
         let o = self.eval(&t, acc, rng);
-        match self.def.assign {
-            Assign::Set => *tr = o,
-            Assign::Sum => {
-                tr[0] += o[0];
-                tr[1] += o[1];
-                tr[2] += o[2];
-            }
-        }
+        self.assign(tr, o);
     }
 
     /// Apply as a `post_` form to the xform's summed output `acc`.
@@ -558,18 +551,29 @@ impl Prepared {
     pub fn apply_post(&self, acc: &mut Acc, color: f64, rng: &mut FastRng) {
         let t = VarIn::new(acc.x, acc.y, acc.z, color, self.def.needs, false);
         let o = self.eval(&t, acc, rng);
+        self.assign_acc(acc, o);
+    }
+
+    /// Combines the output `o` of a `pre_`/`post_` form with the point `p` it transformed:
+    /// replaces it or adds to it, as [`VarDef::assign`] says.
+    #[inline(always)]
+    fn assign(&self, p: &mut V3, o: V3) {
         match self.def.assign {
-            Assign::Set => {
-                acc.x = o[0];
-                acc.y = o[1];
-                acc.z = o[2];
-            }
+            Assign::Set => *p = o,
             Assign::Sum => {
-                acc.x += o[0];
-                acc.y += o[1];
-                acc.z += o[2];
+                p[0] += o[0];
+                p[1] += o[1];
+                p[2] += o[2];
             }
         }
+    }
+
+    /// [`Prepared::assign`] to the point held in `acc`.
+    #[inline(always)]
+    fn assign_acc(&self, acc: &mut Acc, o: V3) {
+        let mut p = [acc.x, acc.y, acc.z];
+        self.assign(&mut p, o);
+        [acc.x, acc.y, acc.z] = p;
     }
 
     /// Apply a regular use to a batch (specialised version if the variation has one).
@@ -934,14 +938,7 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
             let mut tr = t;
             let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
             let o = v.eval(&tin, &mut acc, rng);
-            match v.def.assign {
-                Assign::Set => tr = o,
-                Assign::Sum => {
-                    tr[0] += o[0];
-                    tr[1] += o[1];
-                    tr[2] += o[2];
-                }
-            }
+            v.assign(&mut tr, o);
             Acc {
                 x: tr[0],
                 y: tr[1],
@@ -955,18 +952,7 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
             acc.z = t[2];
             let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
             let o = v.eval(&tin, &mut acc, rng);
-            match v.def.assign {
-                Assign::Set => {
-                    acc.x = o[0];
-                    acc.y = o[1];
-                    acc.z = o[2];
-                }
-                Assign::Sum => {
-                    acc.x += o[0];
-                    acc.y += o[1];
-                    acc.z += o[2];
-                }
-            }
+            v.assign_acc(&mut acc, o);
             acc
         }
     }
