@@ -252,7 +252,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("snowflake_wf_dc_color_offset", 0.1),
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::SETS_COLOR)
-        .prepare(snowflake_prepare),
+        .shared(&[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10], snowflake_points),
     VarDef::new("polarplot3d_wf", polarplot3d_wf)
         .params(&[
             p_int("polarplot3d_wf_preset_id", 2.0, NINF, INF),
@@ -309,7 +309,10 @@ pub(super) static DEFS: &[VarDef] = &[
             p_int("knots3D_receive_only_shadows", 0.0, 0.0, 1.0),
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z)
-        .prepare(knots3d_prepare),
+        .shared(
+            &[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17],
+            knots3d_faces,
+        ),
 ];
 
 // ---------------------------------------------------------------------------------------------
@@ -1098,15 +1101,13 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
     canvas
 }
 
-/// Offset in `v.p` of snowflake_wf's point list (count, then x, y, intensity per point).
-const SNOW_POINTS: usize = 14;
-
-fn snowflake_prepare(v: &mut Prepared) {
-    let canvas = snow_crystal(&v.p);
-    let (scale, jitter) = (v.p[9], v.p[10].clamp(0.0, 1.0));
-    let mut rnd = Mwc::new(v.p[8] as i64);
-    let count_at = v.p.len();
-    v.p.push(0.0);
+/// snowflake_wf's shared data: the count of points, then x, y and intensity per point (from
+/// parameters 0–10: the crystal's growth, its seed, scale and jitter).
+fn snowflake_points(q: &[f64]) -> Vec<f64> {
+    let canvas = snow_crystal(q);
+    let (scale, jitter) = (q[9], q[10].clamp(0.0, 1.0));
+    let mut rnd = Mwc::new(q[8] as i64);
+    let mut out = vec![0.0];
     let rows = canvas.len() as f64;
     let mut count = 0;
     for (i, row) in canvas.iter().enumerate() {
@@ -1122,26 +1123,27 @@ fn snowflake_prepare(v: &mut Prepared) {
                     x += jitter * c;
                     y += jitter * s;
                 }
-                v.p.extend_from_slice(&[x, y, val as f64]);
+                out.extend_from_slice(&[x, y, val as f64]);
                 count += 1;
             }
         }
     }
-    v.p[count_at] = count as f64;
+    out[0] = count as f64;
+    out
 }
 
 /// snowflake_wf: a random cell of a simulated snow crystal (Reiter's cellular growth model);
 /// with `dc_color` the colour follows the cell's frozen amount (the input point is ignored).
 fn snowflake_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let count = q[SNOW_POINTS] as usize;
+    let (q, pts) = (&v.p, v.data());
+    let count = pts[0] as usize;
     // With fewer than two cells JWildfire falls back to the origin with intensity 0.
     let pt = if count < 2 {
         &[0.0; 3][..]
     } else {
         // JWildfire rounds to the nearest index, so the first and last cells are half as likely.
         let k = (rng.f01() * (count - 1) as f64 + 0.5) as usize;
-        &q[SNOW_POINTS + 1 + 3 * k..]
+        &pts[1 + 3 * k..]
     };
     if q[11] > 0.0 {
         acc.color = pt[2] * q[12] + q[13];
@@ -1607,20 +1609,19 @@ fn knot_tube(curve: &KnotCurve, k: &[f64], steps: usize, radius: f64, facets: us
     mesh
 }
 
-/// Offset in `v.p` of knots3D's face list (count, then 9 coordinates per triangle).
-const KNOT_FACES: usize = 26;
-
-fn knots3d_prepare(v: &mut Prepared) {
-    v.p.push(0.0);
-    let preset = v.p[0];
+/// knots3D's shared data: the count of triangles, then 9 coordinates per triangle (from
+/// parameters 0–17: the curve, the tube and its placement).
+fn knots3d_faces(q: &[f64]) -> Vec<f64> {
+    let mut out = vec![0.0];
+    let preset = q[0];
     if !(0.0..24.0).contains(&preset) {
-        return;
+        return out;
     }
     let curve = &KNOT_CURVES[preset as usize];
-    let (steps, radius, facets) = (v.p[1] as usize, v.p[2], v.p[3] as usize);
-    let k: [f64; 8] = v.p[4..12].try_into().unwrap_or([0.0; 8]);
+    let (steps, radius, facets) = (q[1] as usize, q[2], q[3] as usize);
+    let k: [f64; 8] = q[4..12].try_into().unwrap_or([0.0; 8]);
     let mesh = knot_tube(curve, &k, steps, radius, facets);
-    let (scale, offset) = ([v.p[12], v.p[13], v.p[14]], [v.p[15], v.p[16], v.p[17]]);
+    let (scale, offset) = ([q[12], q[13], q[14]], [q[15], q[16], q[17]]);
     let placed: Vec<[f64; 3]> = mesh
         .vertices
         .iter()
@@ -1631,25 +1632,26 @@ fn knots3d_prepare(v: &mut Prepared) {
         // Faces that point past the merged vertex list are left out.
         if f.iter().all(|&i| i < placed.len()) {
             for &i in f {
-                v.p.extend_from_slice(&placed[i]);
+                out.extend_from_slice(&placed[i]);
             }
             count += 1;
         }
     }
-    v.p[KNOT_FACES] = count as f64;
+    out[0] = count as f64;
+    out
 }
 
 /// knots3D: a tube of `facets` sides and radius `radius` around one of JWildfire's stock knot
 /// curves (preset id), as a triangle mesh scaled and offset; points are uniform on a random
 /// triangle. Custom formulas (preset -1) are not supported and give no output.
 fn knots3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let n = q[KNOT_FACES] as usize;
+    let q = v.data();
+    let n = q[0] as usize;
     if n == 0 {
         return [0.0; 3];
     }
     let k = ((rng.f01() * n as f64) as usize).min(n - 1);
-    let f = &q[KNOT_FACES + 1 + 9 * k..][..9];
+    let f = &q[1 + 9 * k..][..9];
     let s = rng.f01().sqrt();
     let r2 = rng.f01();
     let (a, b, c) = (1.0 - s, s * (1.0 - r2), r2 * s);
@@ -2087,8 +2089,8 @@ mod tests {
             ("snowflake_wf_dc_color_offset", 0.2),
         ];
         // Number of crystal cells JWildfire finds for these settings.
-        assert_eq!(make("snowflake_wf", a, 1.0).p[super::SNOW_POINTS], 200.0);
-        assert_eq!(make("snowflake_wf", b, 1.0).p[super::SNOW_POINTS], 94.0);
+        assert_eq!(make("snowflake_wf", a, 1.0).data()[0], 200.0);
+        assert_eq!(make("snowflake_wf", b, 1.0).data()[0], 94.0);
         let mut rng = FastRng::new(SEED);
         run_cases(
             &mut rng,
@@ -2101,7 +2103,7 @@ mod tests {
 
     #[test]
     fn snowflake_wf_default_crystal_size() {
-        assert_eq!(make("snowflake_wf", &[], 1.0).p[super::SNOW_POINTS], 1622.0);
+        assert_eq!(make("snowflake_wf", &[], 1.0).data()[0], 1622.0);
     }
 
     #[test]
@@ -2267,7 +2269,7 @@ mod tests {
             ];
             params.extend(KNOT_PARAMS.iter().copied().zip(k));
             let v = make("knots3D", &params, w);
-            assert_eq!(v.p[super::KNOT_FACES], faces, "preset {preset}");
+            assert_eq!(v.data()[0], faces, "preset {preset}");
             check("knots3D", &run(&v, &PTS, 0.5, &mut rng), want);
         }
         // A custom formula (preset -1) draws nothing.

@@ -505,13 +505,13 @@ const SYM: u32 = flag::JWILDFIRE | flag::RANDOM;
 // ---------------------------------------------------------------------------------------------
 // Line drawings: hilbert_js, rsquares_js, tree_js
 
-/// Derived values of a line drawing: line threshold, point threshold, line thickness, point
-/// thickness, then the segments as (x1, y1, x2, y2).
+/// Derived values of a line drawing, after its parameters: line threshold, point threshold,
+/// line thickness, point thickness. The segments, (x1, y1, x2, y2) each, are its shared data.
 const LA_HEAD: usize = 4;
 
-/// Stores the thresholds that split the draws between segments and end-point dots (from the
-/// truncated show_lines / show_points weights) and the segments.
-fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64, segs: &[[f64; 4]]) {
+/// Appends the thresholds that split the draws between segments and end-point dots (from the
+/// truncated show_lines / show_points weights) and the thicknesses.
+fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64) {
     let lines = lines.trunc();
     let points = points.trunc();
     let total = lines + points;
@@ -522,16 +522,18 @@ fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64, segs: &
         lt / 100.0,
         pt / 100.0,
     ]);
-    v.p.reserve(segs.len() * 4);
-    for s in segs {
-        v.p.extend_from_slice(s);
-    }
 }
 
-/// One point of segment `seg`: somewhere along it (jittered by the line thickness), or near
-/// its start (within the point thickness), or the origin when neither is shown.
-fn la_sample<R: Draw>(d: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
-    let s = &d[LA_HEAD + 4 * seg..LA_HEAD + 4 * seg + 4];
+/// Segments as the flat list of a line drawing's shared data.
+fn la_segments(segs: Vec<[f64; 4]>) -> Vec<f64> {
+    segs.into_iter().flatten().collect()
+}
+
+/// One point of segment `seg` of `segs`: somewhere along it (jittered by the line thickness),
+/// or near its start (within the point thickness), or the origin when neither is shown; `d`
+/// holds the derived values ([`LA_HEAD`]).
+fn la_sample<R: Draw>(d: &[f64], segs: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
+    let s = &segs[4 * seg..4 * seg + 4];
     let (x1, y1, x2, y2) = (s[0], s[1], s[2], s[3]);
     let pick = r.unit();
     if pick < d[0] {
@@ -573,13 +575,13 @@ fn la_sample<R: Draw>(d: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
 /// one per call; over many calls both cover every segment equally).
 #[inline]
 fn la_eval(v: &Prepared, rng: &mut FastRng) -> (f64, f64) {
-    let d = &v.p[n_params(v)..];
-    let count = (d.len() - LA_HEAD) / 4;
+    let segs = v.data();
+    let count = segs.len() / 4;
     if count == 0 {
         return (0.0, 0.0);
     }
     let seg = rng.index(count);
-    la_sample(d, seg, rng)
+    la_sample(&v.p[n_params(v)..], segs, seg, rng)
 }
 
 /// Turtle that records each forward move as a segment; angles in degrees.
@@ -636,16 +638,22 @@ impl Turtle {
     }
 }
 
-fn prep_hilbert(v: &mut Prepared) {
+/// hilbert_js's segments (from the level, parameter 0).
+fn hilbert_segments(q: &[f64]) -> Vec<f64> {
     let mut t = Turtle {
         x: 0.0,
         y: 0.0,
         heading: 0.0,
         segs: Vec::new(),
     };
-    t.hilbert(v.p[0] as i64);
+    t.hilbert(q[0] as i64);
+    la_segments(t.segs)
+}
+
+/// Derived values of hilbert_js and rsquares_js (same parameter layout).
+fn prep_la5(v: &mut Prepared) {
     let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[3], v.p[4]);
-    la_store(v, lines, lt, points, pt, &t.segs);
+    la_store(v, lines, lt, points, pt);
 }
 
 /// Squares of side `size` centred at (x, y), with four squares of side size/2.2 centred on
@@ -667,11 +675,11 @@ fn rsquares(segs: &mut Vec<[f64; 4]>, n: i64, x: f64, y: f64, size: f64) {
     rsquares(segs, n - 1, r, t, s);
 }
 
-fn prep_rsquares(v: &mut Prepared) {
+/// rsquares_js's segments (from the level, parameter 0).
+fn rsquares_segments(q: &[f64]) -> Vec<f64> {
     let mut segs = Vec::new();
-    rsquares(&mut segs, v.p[0] as i64, 0.5, 0.5, 1.0);
-    let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[3], v.p[4]);
-    la_store(v, lines, lt, points, pt, &segs);
+    rsquares(&mut segs, q[0] as i64, 0.5, 0.5, 1.0);
+    la_segments(segs)
 }
 
 /// Branch shape of tree_js: bend and branch angles in radians, length ratio of the side
@@ -696,16 +704,21 @@ fn tree(segs: &mut Vec<[f64; 4]>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64,
     tree(segs, s, n - 1, tx, ty, a + s.bend, len * (1.0 - s.ratio));
 }
 
-fn prep_tree(v: &mut Prepared) {
+/// tree_js's segments (from the level and the bend, branch and ratio parameters 0, 3–5).
+fn tree_segments(q: &[f64]) -> Vec<f64> {
     let shape = TreeShape {
-        bend: v.p[3].to_radians(),
-        branch: v.p[4].to_radians(),
-        ratio: v.p[5],
+        bend: q[3].to_radians(),
+        branch: q[4].to_radians(),
+        ratio: q[5],
     };
     let mut segs = Vec::new();
-    tree(&mut segs, &shape, v.p[0] as i64, 0.0, 0.0, PI / 2.0, 2.0);
+    tree(&mut segs, &shape, q[0] as i64, 0.0, 0.0, PI / 2.0, 2.0);
+    la_segments(segs)
+}
+
+fn prep_tree(v: &mut Prepared) {
     let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[6], v.p[7]);
-    la_store(v, lines, lt, points, pt, &segs);
+    la_store(v, lines, lt, points, pt);
 }
 
 /// hilbert_js: points along a Hilbert curve of the given order (unit steps from the origin),
@@ -992,11 +1005,13 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
     nodes
 }
 
-fn prep_dla(v: &mut Prepared) {
-    let max_nodes = v.p[0].max(0.0) as usize;
-    let seed = v.p[1] as i64;
-    let glue = v.p[6].max(0.1);
-    let force = [v.p[7], v.p[8], v.p[9]];
+/// dla3d_wf's shared data: [`DLA_STRIDE`] values per node (from the node count, seed, glue
+/// radius and force, parameters 0, 1 and 6–9).
+fn dla_nodes(q: &[f64]) -> Vec<f64> {
+    let max_nodes = q[0].max(0.0) as usize;
+    let seed = q[1] as i64;
+    let glue = q[6].max(0.1);
+    let force = [q[7], q[8], q[9]];
     let nodes = dla_grow(max_nodes, seed, glue, force);
     // Relative depth: a node's depth over the deepest depth below it (itself included).
     let mut deepest: Vec<u32> = nodes.iter().map(|n| n.depth).collect();
@@ -1010,17 +1025,18 @@ fn prep_dla(v: &mut Prepared) {
         .zip(&deepest)
         .map(|(n, &d)| n.depth as f64 / d as f64)
         .collect();
-    v.p.reserve(nodes.len() * DLA_STRIDE);
+    let mut out = Vec::with_capacity(nodes.len() * DLA_STRIDE);
     for (i, n) in nodes.iter().enumerate() {
-        v.p.extend_from_slice(&[n.x, n.y, n.z, rel[i]]);
+        out.extend_from_slice(&[n.x, n.y, n.z, rel[i]]);
         match n.parent {
             Some(par) => {
                 let q = &nodes[par];
-                v.p.extend_from_slice(&[1.0, q.x, q.y, q.z, rel[par]]);
+                out.extend_from_slice(&[1.0, q.x, q.y, q.z, rel[par]]);
             }
-            None => v.p.extend_from_slice(&[0.0; 5]),
+            None => out.extend_from_slice(&[0.0; 5]),
         }
     }
+    out
 }
 
 /// A point on a sphere of radius `r` around (x, y, z), JWildfire's way (θ drawn over a full
@@ -1117,8 +1133,7 @@ fn dla_sample<R: Draw>(prm: &[f64], nodes: &[f64], r: &mut R) -> Option<([f64; 3
 /// blur radius is 0), coloured by relative depth when dc_color is on. JWildfire hides the
 /// point where nothing is drawn; ugnis cannot hide it and adds nothing instead.
 fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let np = n_params(v);
-    match dla_sample(&v.p[..np], &v.p[np..], rng) {
+    match dla_sample(&v.p, v.data(), rng) {
         Some((pos, color)) => {
             if v.p[5] > 0.0 {
                 acc.color = color.clamp(0.0, 1.0);
@@ -1782,14 +1797,17 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hilbert_js", hilbert_js)
         .params(P_HILBERT)
         .flags(flag::JWILDFIRE | flag::RANDOM)
-        .prepare(prep_hilbert),
+        .shared(&[0], hilbert_segments)
+        .prepare(prep_la5),
     VarDef::new("rsquares_js", rsquares_js)
         .params(P_RSQUARES)
         .flags(flag::JWILDFIRE | flag::RANDOM)
-        .prepare(prep_rsquares),
+        .shared(&[0], rsquares_segments)
+        .prepare(prep_la5),
     VarDef::new("tree_js", tree_js)
         .params(P_TREE)
         .flags(flag::JWILDFIRE | flag::RANDOM)
+        .shared(&[0, 3, 4, 5], tree_segments)
         .prepare(prep_tree),
     VarDef::new("svensson_js", svensson_js)
         .params(P_SVENSSON)
@@ -1797,7 +1815,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("dla3d_wf", dla3d_wf)
         .params(P_DLA)
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR)
-        .prepare(prep_dla),
+        .shared(&[0, 1, 6, 7, 8, 9], dla_nodes),
     VarDef::new("dc_mandala", dc_mandala)
         .params(P_DC_MANDALA)
         .flags(DC_FLAGS),
@@ -1938,12 +1956,13 @@ mod tests {
         for (name, params, segs, samples) in LINE_CASES {
             let v = prep(name, params);
             let d = &v.p[v.def.params.len()..];
-            assert_all_close(name, &d[LA_HEAD..], segs);
+            assert_eq!(d.len(), LA_HEAD);
+            assert_all_close(name, v.data(), segs);
             let count = segs.len() / 4;
             let mut mwc = Mwc::new(777);
             let mut got = Vec::new();
             for k in 0..samples.len() / 2 {
-                let (x, y) = la_sample(d, k % count, &mut mwc);
+                let (x, y) = la_sample(d, v.data(), k % count, &mut mwc);
                 got.push(x);
                 got.push(y);
             }
@@ -1960,11 +1979,7 @@ mod tests {
             ("tree_js", 4.0, 121),
         ] {
             let v = prep(name, &[level]);
-            assert_eq!(
-                (v.p.len() - v.def.params.len() - LA_HEAD) / 4,
-                count,
-                "{name}"
-            );
+            assert_eq!(v.data().len() / 4, count, "{name}");
         }
         // Neither lines nor points: nothing drawn. tree_js doubles its output.
         let mut rng = FastRng::new(3);
@@ -1972,7 +1987,7 @@ mod tests {
         let a = eval_prepared(&v, [0.2, 0.1, 0.0], Acc::default(), true, &mut rng);
         assert_eq!((a.x, a.y), (0.0, 0.0));
         let v = prep_w("tree_js", &[1.0, 0.0, 0.5, 15.0, 37.0, 0.65, 1.0, 0.0], 0.5);
-        let tips = &v.p[v.def.params.len() + LA_HEAD..];
+        let tips = v.data();
         for _ in 0..50 {
             let a = eval_prepared(&v, [0.2, 0.1, 0.0], Acc::default(), true, &mut rng);
             let hit = tips.chunks(4).any(|s| close(a.x, s[0]) && close(a.y, s[1]));
@@ -2004,7 +2019,7 @@ mod tests {
             let mut params = vec![case[0], case[1], 0.5, 0.01, 1.4, 1.0, case[2]];
             params.extend_from_slice(&case[3..6]);
             let v = prep("dla3d_wf", &params);
-            let got = &v.p[v.def.params.len()..];
+            let got = v.data();
             assert_eq!(got.len() / DLA_STRIDE, want.len() / 5, "node count");
             for (g, w) in got.chunks(DLA_STRIDE).zip(want.chunks(5)) {
                 assert_all_close("node", &g[..4], &w[..4]);
@@ -2027,10 +2042,9 @@ mod tests {
                 case[7],
             ];
             let v = prep("dla3d_wf", &params);
-            let np = v.def.params.len();
             let mut mwc = Mwc::new(case[1] as i64);
             for w in want.chunks(4) {
-                match dla_sample(&v.p[..np], &v.p[np..], &mut mwc) {
+                match dla_sample(&v.p, v.data(), &mut mwc) {
                     Some((pos, c)) => assert_all_close("sample", &[pos[0], pos[1], pos[2], c], w),
                     None => assert!(w[0].is_nan(), "hidden where JWildfire draws"),
                 }
@@ -2053,7 +2067,7 @@ mod tests {
         }
         // A seed whose generator is stuck at 0 grows nothing (JWildfire would hang).
         let v = prep("dla3d_wf", &[50.0, 65536.0]);
-        assert_eq!(v.p.len() - v.def.params.len(), DLA_STRIDE);
+        assert_eq!(v.data().len(), DLA_STRIDE);
     }
 
     fn dc_rgb_of(name: &str, v: &Prepared, x: f64, y: f64, glow: &mut f64) -> [f64; 3] {

@@ -22,8 +22,8 @@
 //! (x' = A·x + B·y + C, y' = D·x + E·y + F).
 
 use std::collections::HashMap;
-use std::sync::LazyLock;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, LazyLock};
 
 pub use crate::flame::affine::Affine;
 use crate::flame::rng::FastRng;
@@ -40,7 +40,10 @@ mod fr_f;
 mod jwf;
 mod jwf2;
 mod noise;
+pub mod shared;
 pub mod util;
+
+pub use shared::{BuildFn, SharedDef};
 
 /// flam3's `EPS`, the guard its formulas add to denominators.
 pub const EPS: f64 = 1e-10;
@@ -380,6 +383,9 @@ pub struct VarDef {
     pub assign: Assign,
     pub eval: EvalFn,
     pub prepare: Option<PrepareFn>,
+    /// Expensive data built from some parameters, shared between prepared copies
+    /// ([`Prepared::data`]).
+    pub shared: Option<SharedDef>,
     /// A specialised batch version of a regular use (optional; the generic loop is used
     /// otherwise).
     pub batch: Option<BatchFn>,
@@ -402,6 +408,7 @@ impl VarDef {
             assign: Assign::Set,
             eval,
             prepare: None,
+            shared: None,
             batch: None,
         }
     }
@@ -424,6 +431,12 @@ impl VarDef {
     }
     pub const fn prepare(mut self, f: PrepareFn) -> VarDef {
         self.prepare = Some(f);
+        self
+    }
+    /// Data built by `build` from the parameters at the indices `key`, kept in
+    /// [`Prepared::data`] and shared between the prepared copies with the same key values.
+    pub const fn shared(mut self, key: &'static [usize], build: BuildFn) -> VarDef {
+        self.shared = Some(SharedDef { key, build });
         self
     }
     pub const fn batch(mut self, f: BatchFn) -> VarDef {
@@ -484,6 +497,9 @@ pub struct Prepared {
     /// Fractorium's flam3-compatibility switch (on by default).
     pub compat: bool,
     pub state: VarState,
+    /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
+    /// shared through a process-wide cache); `None` for the variations without.
+    pub data: Option<Arc<[f64]>>,
 }
 
 impl Prepared {
@@ -510,11 +526,21 @@ impl Prepared {
             aff,
             compat,
             state: VarState::default(),
+            data: None,
         };
+        if let Some(sd) = &def.shared {
+            v.data = Some(shared::data(id, sd, &v.p));
+        }
         if let Some(f) = def.prepare {
             f(&mut v);
         }
         v
+    }
+
+    /// The shared data ([`Prepared::data`]); empty for a variation without.
+    #[inline(always)]
+    pub fn data(&self) -> &[f64] {
+        self.data.as_deref().unwrap_or(&[])
     }
 
     /// The output z of a formula that does not compute one: 0 for a regular variation, the
