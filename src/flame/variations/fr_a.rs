@@ -8,8 +8,8 @@ use std::f64::consts::{FRAC_1_PI, FRAC_2_PI, FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 use super::noise::simplex_noise3;
 use super::util::{
-    Cplx, bipolar, crand, floor_i64, from_bipolar, lattice_noise_2d, lrint, safe_sqrt, sign,
-    sign_nz, sine_hash, sqr, square_arc, trunc_i32, zeps,
+    Cplx, bipolar, crand, floor_i64, from_bipolar, lattice_noise_2d, lrint, quat_mul_conj,
+    safe_sqrt, sign, sign_nz, sine_hash, sqr, square_arc, trunc_i32, zeps,
 };
 use super::*;
 
@@ -1404,13 +1404,7 @@ fn cothq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (sh, ch) = (t.x.sinh(), t.x.cosh());
     let d = ch * s / zeps(m);
     let b = sh * s / zeps(m);
-    let sc = sh * c;
-    let cc = ch * c;
-    [
-        (sc * cc + d * b * yz2) * k,
-        (-sc * b * t.y + d * t.y * cc) * k,
-        (-sc * b * t.z + d * t.z * cc) * k,
-    ]
+    quat_mul_conj(sh * c, d, ch * c, b, t.y, t.z, k)
 }
 
 /// Quaternion cotangent of (x, y, z) taken as x + y·i + z·j (Fractorium's form, normalised by
@@ -1423,13 +1417,8 @@ fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (sh, ch) = (m.sinh(), m.cosh());
     let d = c * sh / zeps(m);
     let b = -s * sh / zeps(m);
-    let sc = s * ch;
-    let cc = c * ch;
-    [
-        (sc * cc + d * b * yz2) * k,
-        -(-sc * b * t.y + d * t.y * cc) * k,
-        -(-sc * b * t.z + d * t.z * cc) * k,
-    ]
+    let [x, y, z] = quat_mul_conj(s * ch, d, c * ch, b, t.y, t.z, k);
+    [x, -y, -z]
 }
 
 // Derived values of cpow2, after its four parameters.

@@ -9,8 +9,8 @@
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_3, FRAC_PI_4, FRAC_PI_6, PI, TAU};
 
 use super::util::{
-    bessel_j1, erf, fract, jacobi_elliptic, lattice_noise, rand_size, sine_hash, sqr, trunc_i32,
-    zeps,
+    bessel_j1, erf, fract, jacobi_elliptic, lattice_noise, quat_mul_conj, rand_size, sine_hash,
+    sqr, trunc_i32, zeps,
 };
 use super::*;
 
@@ -447,13 +447,7 @@ fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ch = x.cosh();
     let d = ch * s / zeps(yz_len);
     let b = sh * s / zeps(yz_len);
-    let p_mix = sh * c;
-    let q_mix = c * ch;
-    [
-        (p_mix * q_mix + d * b * yz_sq) * k,
-        (-p_mix * b * y + d * y * q_mix) * k,
-        (-p_mix * b * z + d * z * q_mix) * k,
-    ]
+    quat_mul_conj(sh * c, d, c * ch, b, y, z, k)
 }
 
 /// tanq: the tangent of the quaternion (x, y, z, 0).
@@ -467,13 +461,7 @@ fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ch = yz_len.cosh();
     let d = c * sh / zeps(yz_len);
     let b = -s * sh / zeps(yz_len);
-    let p_mix = s * ch;
-    let q_mix = c * ch;
-    [
-        (p_mix * q_mix + d * b * yz_sq) * k,
-        (-p_mix * b * y + d * y * q_mix) * k,
-        (-p_mix * b * z + d * z * q_mix) * k,
-    ]
+    quat_mul_conj(s * ch, d, c * ch, b, y, z, k)
 }
 
 /// Derived value of the target family: half the ring width.

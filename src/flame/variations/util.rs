@@ -620,6 +620,23 @@ fn mul_recover(
 }
 
 // ---------------------------------------------------------------------------------------------
+// Quaternions (x, y, z, 0) whose imaginary parts point the same way
+
+/// k·P·conj(Q) for the quaternions P = p0 + p1·v and Q = q0 + q1·v that share the imaginary
+/// direction v = (0, y, z) (so they commute): the quotient P/Q of the quaternion tan, tanh, cot
+/// and coth variations, k being the weight over the norm they divide by. `p1` and `q1` are
+/// per unit of |v|.
+#[inline(always)]
+pub fn quat_mul_conj(p0: f64, p1: f64, q0: f64, q1: f64, y: f64, z: f64, k: f64) -> [f64; 3] {
+    let v2 = y * y + z * z;
+    [
+        (p0 * q0 + p1 * q1 * v2) * k,
+        (-p0 * q1 * y + p1 * y * q0) * k,
+        (-p0 * q1 * z + p1 * z * q0) * k,
+    ]
+}
+
+// ---------------------------------------------------------------------------------------------
 // Special functions
 
 /// The error function erf(x), to about 1e-15 relative (10 ulp at worst, near |x| = 2.5).
