@@ -9,8 +9,8 @@
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_3, FRAC_PI_4, FRAC_PI_6, PI, TAU};
 
 use super::util::{
-    bessel_j1, erf, fract, jacobi_elliptic, lattice_noise, quat_mul_conj, rand_size, sine_hash,
-    sqr, trunc_i32, zeps,
+    bessel_j1, erf, fract, jacobi_sn, lattice_noise, quat_mul_conj, rand_size, sine_hash, sqr,
+    trunc_i32, zeps,
 };
 use super::*;
 
@@ -1434,7 +1434,7 @@ fn waves2b(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let csy = div_or_inverse(unity, unity + sqr(t.y)) * siy + sinfy;
     let wave = |u: f64, pw: f64, freq: f64| -> f64 {
         if (0.0..1e-4).contains(&pw) {
-            jacobi_elliptic(u * freq, jacok).0
+            jacobi_sn(u * freq, jacok)
         } else if pw < 0.0 && pw > -1e-4 {
             bessel_j1(u * freq)
         } else {

@@ -20,6 +20,7 @@ const UNSKEW: f64 = 0.1666666;
 /// Lattice coordinates are taken with Rust's saturating float-to-integer conversion (NaN
 /// becomes 0) and wrapped into the 1024-entry tables, so any input is safe; a NaN coordinate
 /// gives 0 (no corner is close enough to contribute).
+#[inline]
 pub fn simplex_noise3(p: [f64; 3]) -> f64 {
     let s = (p[0] + p[1] + p[2]) * SKEW;
     let i = (p[0] + s).floor() as i64;
@@ -84,6 +85,7 @@ pub fn simplex_noise3(p: [f64; 3]) -> f64 {
 /// Sum of `octaves` simplex-noise layers, layer k divided by `amps`ᵏ (a zero amplitude
 /// replaced by `f64::EPSILON`) while the position is scaled by `freqs` per layer. As in
 /// Fractorium, the frequency step is applied twice to x, once to y and not to z.
+#[inline]
 pub fn fractal_noise(p: [f64; 3], amps: f64, freqs: f64, octaves: i32) -> f64 {
     let (mut n, mut a) = (0.0, 1.0);
     let mut u = p;

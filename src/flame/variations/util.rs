@@ -165,10 +165,17 @@ pub fn floor_i64(x: f64) -> i64 {
     }
 }
 
-/// [`floor_i64`] as a double.
+/// [`floor_i64`] as a double, computed in floating point: ⌊x⌋ in the i64 range, −2⁶³ for NaN
+/// and x ≥ 2⁶³, 2⁶³ − 1 (as a double, 2⁶³) for x < −2⁶³.
 #[inline(always)]
 pub fn floor_f(x: f64) -> f64 {
-    floor_i64(x) as f64
+    if (-TWO_63..TWO_63).contains(&x) {
+        x.floor()
+    } else if x < -TWO_63 {
+        i64::MAX as f64
+    } else {
+        i64::MIN as f64
+    }
 }
 
 /// Apophysis' `LRint` as Fractorium has it: round half away from zero by converting x ± ½ to a
@@ -420,6 +427,7 @@ impl Cplx {
     }
 
     /// Principal square root (cut along the negative reals, side chosen by the sign of im).
+    #[inline]
     pub fn sqrt(self) -> Cplx {
         let (x, y) = (self.re, self.im);
         if !x.is_finite() || !y.is_finite() {
@@ -463,6 +471,7 @@ impl Cplx {
     }
 
     /// Principal logarithm: ln|z| + i·arg z.
+    #[inline]
     pub fn ln(self) -> Cplx {
         let (x, y) = (self.re, self.im);
         if x.is_nan() || y.is_nan() {
@@ -644,6 +653,7 @@ pub fn quat_mul_conj(p0: f64, p1: f64, q0: f64, q1: f64, y: f64, z: f64, k: f64)
 /// Stegun 7.1.6), whose terms are all positive, so nothing cancels; up to 6.5 the complementary
 /// function by its continued fraction (A&S 7.1.14) evaluated bottom-up; beyond, 1 to double
 /// precision. Odd by construction: erf(−x) = −erf(x) exactly.
+#[inline]
 pub fn erf(x: f64) -> f64 {
     if x.is_nan() {
         return x;
@@ -680,6 +690,7 @@ pub fn erf(x: f64) -> f64 {
 /// "Numerical Recipes", §6.1): about 1e-15 relative, and exactly 0 at the zeros 1 and 2; +∞
 /// at 0 and for +∞, NaN for NaN. Negative arguments give +∞ (the variations that use it pass
 /// a radius).
+#[inline]
 pub fn ln_gamma(x: f64) -> f64 {
     const G: f64 = 7.0;
     const C: [f64; 9] = [
@@ -719,6 +730,7 @@ pub fn ln_gamma(x: f64) -> f64 {
 /// Σ (−1)ᵏ (x/2)^(2k+1) / (k!(k+1)!) up to |x| = 12, Hankel's asymptotic expansion
 /// √(2/(πx))·(P cos χ − Q sin χ), χ = x − 3π/4, beyond (summed until its terms stop
 /// shrinking; Abramowitz & Stegun 9.2.5).
+#[inline]
 pub fn bessel_j1(x: f64) -> f64 {
     let ax = x.abs();
     if ax < 12.0 {
@@ -773,6 +785,7 @@ pub fn bessel_j1(x: f64) -> f64 {
 /// stops once two means agree to 3·10⁻⁴ relative, after at most 8 steps, which the
 /// variations' shapes depend on. mc = 0 is the hyperbolic limit (tanh u, sech u, sech u); a
 /// negative mc is handled by the reciprocal-modulus transformation.
+#[inline(always)]
 pub fn jacobi_elliptic(u: f64, mc: f64) -> (f64, f64, f64) {
     if mc == 0.0 {
         let sech = 1.0 / u.cosh();
@@ -828,6 +841,12 @@ pub fn jacobi_elliptic(u: f64, mc: f64) -> (f64, f64, f64) {
     } else {
         (sn, cn, dn)
     }
+}
+
+/// sn(u | 1 − mc) alone: [`jacobi_elliptic`]'s first value, without computing the others.
+#[inline]
+pub fn jacobi_sn(u: f64, mc: f64) -> f64 {
+    jacobi_elliptic(u, mc).0
 }
 
 /// acosh(x), accurate near 1 where the textbook ln(x + √(x² − 1)) (and std's `acosh`) lose
