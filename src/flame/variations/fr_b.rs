@@ -16,6 +16,24 @@ use super::*;
 const INF: f64 = f64::INFINITY;
 const NEG_INF: f64 = f64::NEG_INFINITY;
 
+/// The parameters of the anisotropic depth blurs (`NAME` = depth_blur2, depth_gaussian2, …):
+/// any leading ones given, then blur, radius, centre (x0, y0), distance multipliers and the
+/// exponent of the growth.
+macro_rules! depth2_params {
+    ($name:literal $(, $lead:expr)*) => {
+        &[
+            $($lead,)*
+            p(concat!($name, "_blur"), 1.0),
+            p(concat!($name, "_radius"), 1.0),
+            p(concat!($name, "_x0"), 0.0),
+            p(concat!($name, "_y0"), 0.0),
+            p(concat!($name, "_mulx"), 1.0),
+            p(concat!($name, "_muly"), 1.0),
+            p(concat!($name, "_exp"), 1.0),
+        ]
+    };
+}
+
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("crob", crob)
         .params(&[
@@ -189,17 +207,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(depth_blur_prepare),
     VarDef::new("depth_blur2", depth_blur2)
-        .params(&[
+        .params(depth2_params!(
+            "depth_blur2",
             p("depth_blur2_power", 5.0),
-            p("depth_blur2_range", 0.401623),
-            p("depth_blur2_blur", 1.0),
-            p("depth_blur2_radius", 1.0),
-            p("depth_blur2_x0", 0.0),
-            p("depth_blur2_y0", 0.0),
-            p("depth_blur2_mulx", 1.0),
-            p("depth_blur2_muly", 1.0),
-            p("depth_blur2_exp", 1.0),
-        ])
+            p("depth_blur2_range", 0.401623)
+        ))
         .flags(flag::RANDOM)
         .prepare(depth_blur2_prepare),
     VarDef::new("depth_gaussian", depth_gaussian)
@@ -210,15 +222,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM),
     VarDef::new("depth_gaussian2", depth_gaussian2)
-        .params(&[
-            p("depth_gaussian2_blur", 1.0),
-            p("depth_gaussian2_radius", 1.0),
-            p("depth_gaussian2_x0", 0.0),
-            p("depth_gaussian2_y0", 0.0),
-            p("depth_gaussian2_mulx", 1.0),
-            p("depth_gaussian2_muly", 1.0),
-            p("depth_gaussian2_exp", 1.0),
-        ])
+        .params(depth2_params!("depth_gaussian2"))
         .flags(flag::RANDOM)
         .prepare(depth_gaussian2_prepare),
     VarDef::new("depth_ngon", depth_ngon)
@@ -231,16 +235,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(depth_ngon_prepare),
     VarDef::new("depth_ngon2", depth_ngon2)
-        .params(&[
-            p("depth_ngon2_power", 5.0),
-            p("depth_ngon2_blur", 1.0),
-            p("depth_ngon2_radius", 1.0),
-            p("depth_ngon2_x0", 0.0),
-            p("depth_ngon2_y0", 0.0),
-            p("depth_ngon2_mulx", 1.0),
-            p("depth_ngon2_muly", 1.0),
-            p("depth_ngon2_exp", 1.0),
-        ])
+        .params(depth2_params!("depth_ngon2", p("depth_ngon2_power", 5.0)))
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(depth_ngon2_prepare),
@@ -253,16 +248,10 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM),
     VarDef::new("depth_sine2", depth_sine2)
-        .params(&[
-            p_range("depth_sine2_power", 1.0, 0.0, INF),
-            p("depth_sine2_blur", 1.0),
-            p("depth_sine2_radius", 1.0),
-            p("depth_sine2_x0", 0.0),
-            p("depth_sine2_y0", 0.0),
-            p("depth_sine2_mulx", 1.0),
-            p("depth_sine2_muly", 1.0),
-            p("depth_sine2_exp", 1.0),
-        ])
+        .params(depth2_params!(
+            "depth_sine2",
+            p_range("depth_sine2_power", 1.0, 0.0, INF)
+        ))
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(depth_sine2_prepare),
     VarDef::new("disc3d", disc3d)

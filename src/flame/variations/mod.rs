@@ -20,6 +20,11 @@
 //! polar angle); `ux` = x/r, `uy` = y/r, with r replaced by `f64::EPSILON` when it is 0.
 //! Fractorium's affine letters A B C D E F are [`Affine`]'s a b e c d f
 //! (x' = A·x + B·y + C, y' = D·x + E·y + F).
+//!
+//! Helpers the formulas share live in [`util`] (the C/x86 and Java behaviours the source
+//! programs rely on, hashes, coordinate systems, complex numbers, special functions) and in
+//! `noise` (simplex noise); data that takes long to build (grown aggregates, crystals, meshes,
+//! recursive drawings) is built once per parameter values and shared through [`shared`].
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
