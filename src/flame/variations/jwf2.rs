@@ -524,11 +524,6 @@ fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64) {
     ]);
 }
 
-/// Segments as the flat list of a line drawing's shared data.
-fn la_segments(segs: Vec<[f64; 4]>) -> Vec<f64> {
-    segs.into_iter().flatten().collect()
-}
-
 /// One point of segment `seg` of `segs`: somewhere along it (jittered by the line thickness),
 /// or near its start (within the point thickness), or the origin when neither is shown; `d`
 /// holds the derived values ([`LA_HEAD`]).
@@ -589,7 +584,8 @@ struct Turtle {
     x: f64,
     y: f64,
     heading: f64,
-    segs: Vec<[f64; 4]>,
+    /// Segments, (x1, y1, x2, y2) each.
+    segs: Vec<f64>,
 }
 
 impl Turtle {
@@ -598,7 +594,7 @@ impl Turtle {
         let a = self.heading.to_radians();
         self.x += a.cos();
         self.y += a.sin();
-        self.segs.push([x0, y0, self.x, self.y]);
+        self.segs.extend_from_slice(&[x0, y0, self.x, self.y]);
     }
 
     /// Hilbert curve of order n, entered turning left.
@@ -647,7 +643,7 @@ fn hilbert_segments(q: &[f64]) -> Vec<f64> {
         segs: Vec::new(),
     };
     t.hilbert(q[0] as i64);
-    la_segments(t.segs)
+    t.segs
 }
 
 /// Derived values of hilbert_js and rsquares_js (same parameter layout).
@@ -658,16 +654,15 @@ fn prep_la5(v: &mut Prepared) {
 
 /// Squares of side `size` centred at (x, y), with four squares of side size/2.2 centred on
 /// its corners, recursively, as segments (left side up, top, right side down, bottom).
-fn rsquares(segs: &mut Vec<[f64; 4]>, n: i64, x: f64, y: f64, size: f64) {
+fn rsquares(segs: &mut Vec<f64>, n: i64, x: f64, y: f64, size: f64) {
     if n == 0 {
         return;
     }
     let h = size / 2.0;
     let (l, r, b, t) = (x - h, x + h, y - h, y + h);
-    segs.push([l, b, l, t]);
-    segs.push([l, t, r, t]);
-    segs.push([r, t, r, b]);
-    segs.push([r, b, l, b]);
+    for side in [[l, b, l, t], [l, t, r, t], [r, t, r, b], [r, b, l, b]] {
+        segs.extend_from_slice(&side);
+    }
     let s = size / 2.2;
     rsquares(segs, n - 1, l, b, s);
     rsquares(segs, n - 1, l, t, s);
@@ -679,7 +674,7 @@ fn rsquares(segs: &mut Vec<[f64; 4]>, n: i64, x: f64, y: f64, size: f64) {
 fn rsquares_segments(q: &[f64]) -> Vec<f64> {
     let mut segs = Vec::new();
     rsquares(&mut segs, q[0] as i64, 0.5, 0.5, 1.0);
-    la_segments(segs)
+    segs
 }
 
 /// Branch shape of tree_js: bend and branch angles in radians, length ratio of the side
@@ -692,10 +687,10 @@ struct TreeShape {
 
 /// A branch from (x, y) in direction `a` of length `len`, then (for n > 0) three sub-trees
 /// from its tip.
-fn tree(segs: &mut Vec<[f64; 4]>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64, len: f64) {
+fn tree(segs: &mut Vec<f64>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64, len: f64) {
     let tx = x + a.cos() * len;
     let ty = y + a.sin() * len;
-    segs.push([x, y, tx, ty]);
+    segs.extend_from_slice(&[x, y, tx, ty]);
     if n == 0 {
         return;
     }
@@ -713,7 +708,7 @@ fn tree_segments(q: &[f64]) -> Vec<f64> {
     };
     let mut segs = Vec::new();
     tree(&mut segs, &shape, q[0] as i64, 0.0, 0.0, PI / 2.0, 2.0);
-    la_segments(segs)
+    segs
 }
 
 fn prep_tree(v: &mut Prepared) {
