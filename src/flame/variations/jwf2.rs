@@ -576,7 +576,7 @@ fn la_eval(v: &Prepared, rng: &mut FastRng) -> (f64, f64) {
         return (0.0, 0.0);
     }
     let seg = rng.index(count);
-    la_sample(&v.p[n_params(v)..], segs, seg, rng)
+    la_sample(&v.p[n_params(v)..][..LA_HEAD], segs, seg, rng)
 }
 
 /// Turtle that records each forward move as a segment; angles in degrees.
