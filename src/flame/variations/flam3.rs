@@ -6,9 +6,9 @@
 //! exactly as flam3 accumulates it (a few variations use the weight non-linearly, e.g. `whorl`,
 //! `loonie`, `lazysusan`, `scry`, `flux`).
 
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4, PI};
 
-use super::util::zeps;
+use super::util::{rand_size, zeps};
 use super::{Acc, EPS, Form, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, flag, need, p, p_range};
 use crate::flame::affine::Affine;
 use crate::flame::fastmath as fm;
@@ -258,10 +258,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<24>),
     VarDef::new("fan2", eval::<25>)
-        .params(&[
-            p("fan2_x", std::f64::consts::FRAC_1_SQRT_2),
-            p("fan2_y", -std::f64::consts::FRAC_1_SQRT_2),
-        ])
+        .params(&[p("fan2_x", FRAC_1_SQRT_2), p("fan2_y", -FRAC_1_SQRT_2)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(zf(25) | flag::FLAM3)
         .prepare(prepare)
@@ -857,17 +854,6 @@ fn sincos(a: f64) -> (f64, f64) {
     fm::sin_cos(a)
 }
 
-/// A uniform integer in 0..n as a float; n = 0 draws a full 32-bit integer (as Fractorium's
-/// generator does, so that a |power| below 1 picks an arbitrary root).
-#[inline(always)]
-fn rand_below(rng: &mut FastRng, n: u64) -> f64 {
-    if n == 0 {
-        rng.u32() as f64
-    } else {
-        rng.below(n) as f64
-    }
-}
-
 /// √(1 + u) − 1 without cancellation for small u.
 #[inline(always)]
 fn sqrt1pm1(u: f64) -> f64 {
@@ -1178,7 +1164,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         JULIAN => {
             let r = w * t.sumsq.powf(p[9]);
             let a = if v.compat {
-                let k = rand_below(rng, p[8] as u64);
+                let k = rand_size(rng, p[8]);
                 (t.atan_yx + 2.0 * PI * k) / p[0]
             } else {
                 let root = (p[0] * rng.f01()).trunc();
@@ -1630,7 +1616,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         WEDGE_JULIA => {
             let (angle, count, power) = (p[0], p[1], p[2]);
             let r = w * t.sumsq.powf(p[10]);
-            let k = rand_below(rng, p[9] as u64);
+            let k = rand_size(rng, p[9]);
             let mut a = (t.atan_yx + 2.0 * PI * k) / power;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
             a = a * p[8] + c * angle;
