@@ -197,8 +197,9 @@ fn ray_casting_agrees_with_the_z_buffer_where_no_shadow_falls() {
         "z-buffer vs ray casting outside shadows: {:.2} % of {outside} pixels within 12/255, mean difference {mean:.2}/255; {in_shadow} pixels in shadow",
         agree * 100.0
     );
-    assert!(agree >= 0.98, "agreement {agree}");
-    assert!(mean < 2.0, "mean difference {mean}");
+    // Measured: 99.89 % of the 27 091 unshadowed pixels, mean difference 0.19/255.
+    assert!(agree >= 0.995, "agreement {agree}");
+    assert!(mean < 0.5, "mean difference {mean}");
     // And the unshadowed ray-cast picture agrees with the z-buffer everywhere.
     let close_all = z
         .pixels()
@@ -238,7 +239,8 @@ fn new_examples_render_with_both_renderers() {
             .count() as f64
             / (160.0 * 120.0);
         eprintln!("{name}: z-buffer vs unshadowed ray casting agree on {:.2} %", agree * 100.0);
-        assert!(agree >= 0.97, "{name}: {agree}");
+        // Measured: 99.75 % (jug), 100 % (quaternion Julia, Menger sponge).
+        assert!(agree >= 0.99, "{name}: {agree}");
     }
 }
 
