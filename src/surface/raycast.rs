@@ -684,6 +684,49 @@ mod tests {
     }
 
     #[test]
+    fn every_projection_casts_the_rays_the_z_buffer_projects() {
+        // The untextured jug under each projection: the ray caster (no shadows) and the
+        // z-buffer agree pixel for pixel within 12/255 almost everywhere, so the rays go
+        // through the same points the z-buffer projects to.
+        let mut base = Scene {
+            width: 96,
+            height: 72,
+            shadows: false,
+            ..Scene::default()
+        };
+        base.objects.push(Object {
+            name: "jug".into(),
+            geometry: Geometry::Patches(crate::surface::mesh::jug()),
+            transform: Transform::rot_y(0.4),
+            material: Material::default(),
+            texture: None,
+            bump_texture: None,
+        });
+        let (phi, theta) = crate::surface::transform::isometric_angles();
+        for (name, p, w) in [
+            ("perspective", Projection::Perspective, 96),
+            ("orthographic", Projection::Orthographic, 96),
+            ("isometric", Projection::Axonometric { phi, theta }, 96),
+            ("stereo", Projection::Stereo, 192),
+        ] {
+            let mut s = base.clone();
+            s.camera.projection = p;
+            s.width = w;
+            let z = crate::surface::raster::render_zbuffer(&s, None).unwrap();
+            s.renderer = Renderer::RayCast;
+            let r = render(&s, None).unwrap();
+            let close = z
+                .pixels()
+                .zip(r.pixels())
+                .filter(|(a, b)| (0..3).all(|c| a.0[c].abs_diff(b.0[c]) <= 12))
+                .count() as f64
+                / (w * 72) as f64;
+            let drawn = r.pixels().filter(|p| p.0 != [0, 0, 0]).count();
+            assert!(close >= 0.98 && drawn > 1000, "{name}: {close} ({drawn} drawn)");
+        }
+    }
+
+    #[test]
     fn shadows_fall_where_the_light_is_blocked() {
         // A small square above a floor, light straight above: the floor under the square is
         // dark (ambient only), the floor beside it is lit; without shadows both are lit.
