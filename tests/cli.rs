@@ -658,7 +658,10 @@ fn scene_ray_casts_new_kinds_and_refuses_what_does_not_fit() {
         "off",
     ]);
     assert_eq!(code, 0, "{err}");
-    assert!(stdout.contains("8000 cubes") && stdout.contains("2.72683"), "{stdout}");
+    assert!(
+        stdout.contains("8000 cubes") && stdout.contains("2.72683"),
+        "{stdout}"
+    );
     assert_eq!(image::open(&out).unwrap().width(), 160);
     // The quaternion Julia example through the z-buffer (marched per pixel there).
     let q = common::example("quaternion-julia.toml");

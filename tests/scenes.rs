@@ -175,7 +175,10 @@ fn ray_casting_agrees_with_the_z_buffer_where_no_shadow_falls() {
     );
     for ((s, p), m) in shadowed.pixels().zip(plain.pixels()).zip(&mask) {
         if *m {
-            assert!((0..3).all(|c| s.0[c] <= p.0[c]), "{s:?} brighter than {p:?}");
+            assert!(
+                (0..3).all(|c| s.0[c] <= p.0[c]),
+                "{s:?} brighter than {p:?}"
+            );
         }
     }
     // Elsewhere the two renderers agree: the same pixel within 12/255 almost everywhere
@@ -213,11 +216,7 @@ fn ray_casting_agrees_with_the_z_buffer_where_no_shadow_falls() {
 #[test]
 fn new_examples_render_with_both_renderers() {
     use ugnis::surface::Renderer;
-    for name in [
-        "jug-raycast.toml",
-        "quaternion-julia.toml",
-        "menger.toml",
-    ] {
+    for name in ["jug-raycast.toml", "quaternion-julia.toml", "menger.toml"] {
         let s = example_scene(name, 160, 120);
         let bg = s.background;
         let bgc = image::Rgb([bg.x, bg.y, bg.z].map(|v| (v * 255.0).round() as u8));
@@ -238,7 +237,10 @@ fn new_examples_render_with_both_renderers() {
             .filter(|(a, b)| diff(a, b) <= 12)
             .count() as f64
             / (160.0 * 120.0);
-        eprintln!("{name}: z-buffer vs unshadowed ray casting agree on {:.2} %", agree * 100.0);
+        eprintln!(
+            "{name}: z-buffer vs unshadowed ray casting agree on {:.2} %",
+            agree * 100.0
+        );
         // Measured: 99.75 % (jug), 100 % (quaternion Julia, Menger sponge).
         assert!(agree >= 0.99, "{name}: {agree}");
     }

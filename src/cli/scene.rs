@@ -51,7 +51,10 @@ pub fn run(a: SceneArgs) -> Result<()> {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
     }
     if a.threads > 1024 {
-        bail!("--threads {} must be at most 1024 (0: all cores)", a.threads);
+        bail!(
+            "--threads {} must be at most 1024 (0: all cores)",
+            a.threads
+        );
     }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(a.threads)

@@ -464,7 +464,9 @@ fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
             let slice = match o.slice.as_deref() {
                 None => d.slice,
                 Some(n) => SliceAxis::from_name(n).ok_or_else(|| {
-                    format!("slice '{n}': expected the fixed component \"1\", \"i\", \"j\" or \"k\"")
+                    format!(
+                        "slice '{n}': expected the fixed component \"1\", \"i\", \"j\" or \"k\""
+                    )
                 })?,
             };
             let j = QuaternionJulia {
@@ -825,13 +827,20 @@ c = [-1, 0.2]
             panic!("menger is a mesh")
         };
         // Edge 3: the corners lie at ±1.5.
-        let max = m.positions.iter().map(|p| p.abs().max_element()).fold(0.0, f64::max);
+        let max = m
+            .positions
+            .iter()
+            .map(|p| p.abs().max_element())
+            .fold(0.0, f64::max);
         assert_eq!(max, 1.5);
         let Geometry::QuaternionJulia(j) = &s.objects[1].geometry else {
             panic!("quaternion julia")
         };
         assert_eq!(j.c, [-0.2, 0.8, 0.1, 0.0]);
-        assert_eq!((j.slice, j.slice_value, j.iterations), (SliceAxis::J, 0.25, 9));
+        assert_eq!(
+            (j.slice, j.slice_value, j.iterations),
+            (SliceAxis::J, 0.25, 9)
+        );
         let Geometry::QuaternionJulia(j) = &s.objects[2].geometry else {
             panic!("quaternion julia")
         };
@@ -840,9 +849,13 @@ c = [-1, 0.2]
         let d = parse("", "d.toml", Path::new(".")).unwrap().scene;
         assert_eq!((d.renderer, d.shadows), (Renderer::ZBuffer, true));
         // A bad render value points at its line.
-        let e = parse("\nrender = 3\n", "s.toml", Path::new(".")).err().unwrap();
+        let e = parse("\nrender = 3\n", "s.toml", Path::new("."))
+            .err()
+            .unwrap();
         assert_eq!(e.code, "SCN001");
-        let e = parse("\n\nrender = \"x\"\n", "s.toml", Path::new(".")).err().unwrap();
+        let e = parse("\n\nrender = \"x\"\n", "s.toml", Path::new("."))
+            .err()
+            .unwrap();
         assert_eq!(e.pos, Pos::LineCol(3, 10), "{e}");
     }
 
@@ -883,7 +896,11 @@ c = [-1, 0.2]
                 "'nan'",
             ),
             ("[image]\nsizes = [10, 10]\n", "SCN001", "sizes"),
-            ("render = \"pathtrace\"\n", "SCN002", "expected \"zbuffer\" or \"raycast\""),
+            (
+                "render = \"pathtrace\"\n",
+                "SCN002",
+                "expected \"zbuffer\" or \"raycast\"",
+            ),
             ("shadows = true\n", "SCN002", "needs render = \"raycast\""),
             (
                 "[[object]]\nkind = \"menger\"\nstep = 5\n",

@@ -210,16 +210,12 @@ impl Bvh {
             }
             let (mut best, mut best_cost) = (0, f64::INFINITY);
             for split in 1..BINS {
-                let (mut lb, mut rb) = (Aabb::EMPTY, Aabb::EMPTY);
-                let (mut ln, mut rn) = (0, 0);
-                for k in 0..split {
-                    lb = lb.union(&bin_box[k]);
-                    ln += bin_n[k];
-                }
-                for k in split..BINS {
-                    rb = rb.union(&bin_box[k]);
-                    rn += bin_n[k];
-                }
+                let side = |bins: std::ops::Range<usize>| {
+                    bins.fold((Aabb::EMPTY, 0), |(b, n), k| {
+                        (b.union(&bin_box[k]), n + bin_n[k])
+                    })
+                };
+                let ((lb, ln), (rb, rn)) = (side(0..split), side(split..BINS));
                 if ln == 0 || rn == 0 {
                     continue;
                 }
@@ -263,7 +259,13 @@ impl Bvh {
     }
 
     /// The nearest hit in (t_min, t_max): (triangle, t, b1, b2).
-    pub fn nearest(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<(u32, f64, f64, f64)> {
+    pub fn nearest(
+        &self,
+        o: DVec3,
+        d: DVec3,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<(u32, f64, f64, f64)> {
         if self.nodes.is_empty() {
             return None;
         }
@@ -278,7 +280,8 @@ impl Bvh {
             let node = &self.nodes[ni];
             if node.count > 0 {
                 for &ti in &self.order[node.first as usize..(node.first + node.count) as usize] {
-                    if let Some((t, b1, b2)) = self.tris[ti as usize].intersect(o, d, t_min, t_far) {
+                    if let Some((t, b1, b2)) = self.tris[ti as usize].intersect(o, d, t_min, t_far)
+                    {
                         t_far = t;
                         best = Some((ti, t, b1, b2));
                     }
@@ -341,7 +344,11 @@ impl Bvh {
             }
             if node.count > 0 {
                 for &ti in &self.order[node.first as usize..(node.first + node.count) as usize] {
-                    if Some(ti) != skip && self.tris[ti as usize].intersect(o, d, t_min, t_max).is_some() {
+                    if Some(ti) != skip
+                        && self.tris[ti as usize]
+                            .intersect(o, d, t_min, t_max)
+                            .is_some()
+                    {
                         return true;
                     }
                 }
@@ -380,8 +387,14 @@ mod tests {
             .intersect(DVec3::new(0.25, 0.5, 2.0), -DVec3::Z, 0.0, 10.0)
             .unwrap();
         assert!((tt - 2.0).abs() < 1e-15 && (b1 - 0.25).abs() < 1e-15 && (b2 - 0.5).abs() < 1e-15);
-        assert!(t.intersect(DVec3::new(0.8, 0.8, 2.0), -DVec3::Z, 0.0, 10.0).is_none());
-        assert!(t.intersect(DVec3::new(0.2, 0.2, 2.0), DVec3::Z, 0.0, 10.0).is_none());
+        assert!(
+            t.intersect(DVec3::new(0.8, 0.8, 2.0), -DVec3::Z, 0.0, 10.0)
+                .is_none()
+        );
+        assert!(
+            t.intersect(DVec3::new(0.2, 0.2, 2.0), DVec3::Z, 0.0, 10.0)
+                .is_none()
+        );
         assert_eq!(
             t.plane_barycentrics(DVec3::new(2.0, 3.0, 1.0), -DVec3::Z),
             Some((2.0, 3.0))
@@ -395,13 +408,20 @@ mod tests {
         let mut hits = 0;
         for k in 0..400 {
             let a = k as f64 * 0.618;
-            let o = DVec3::new(0.5 + 0.8 * a.cos(), 1.0 + 0.3 * (a * 1.7).sin(), 0.5 + 0.8 * a.sin());
+            let o = DVec3::new(
+                0.5 + 0.8 * a.cos(),
+                1.0 + 0.3 * (a * 1.7).sin(),
+                0.5 + 0.8 * a.sin(),
+            );
             let target = DVec3::new((k % 20) as f64 / 19.0, 0.0, (k / 20) as f64 / 19.0);
             let d = (target - o).normalize();
             let brute = tris
                 .iter()
                 .enumerate()
-                .filter_map(|(i, t)| t.intersect(o, d, 1e-9, f64::INFINITY).map(|h| (i as u32, h.0)))
+                .filter_map(|(i, t)| {
+                    t.intersect(o, d, 1e-9, f64::INFINITY)
+                        .map(|h| (i as u32, h.0))
+                })
                 .min_by(|a, b| a.1.total_cmp(&b.1));
             let fast = bvh.nearest(o, d, 1e-9, f64::INFINITY).map(|h| (h.0, h.1));
             // The same nearest distance (rays through a shared edge may report either

@@ -262,7 +262,14 @@ mod tests {
         // The centre and the six face centres are gone; the corners and edges stay.
         let c = cells(1);
         assert!(!c.contains(&[1, 1, 1]));
-        for f in [[1, 1, 0], [1, 0, 1], [0, 1, 1], [1, 1, 2], [1, 2, 1], [2, 1, 1]] {
+        for f in [
+            [1, 1, 0],
+            [1, 0, 1],
+            [0, 1, 1],
+            [1, 1, 2],
+            [1, 2, 1],
+            [2, 1, 1],
+        ] {
             assert!(!c.contains(&f));
         }
         assert!(c.contains(&[0, 0, 0]) && c.contains(&[1, 0, 0]) && c.contains(&[2, 2, 2]));
@@ -297,7 +304,11 @@ mod tests {
                 let n = (b - a).cross(c - a).normalize();
                 assert!((n - m.normals[t[0] as usize]).length() < 1e-9);
             }
-            assert!(m.positions.iter().all(|p| p.abs().max_element() <= 1.0 + 1e-12));
+            assert!(
+                m.positions
+                    .iter()
+                    .all(|p| p.abs().max_element() <= 1.0 + 1e-12)
+            );
         }
         // Step 0 is the cube: six squares.
         assert_eq!(mesh(0, 1.0).triangles.len(), 12);
@@ -306,7 +317,15 @@ mod tests {
         let m4 = mesh(4, 1.0);
         let faces = exposed_faces(4) as usize;
         assert_eq!(faces, 336_384);
-        assert!(m4.triangles.len() < faces * 2 * 6 / 10, "{} triangles", m4.triangles.len());
-        assert!(m4.positions.len() < faces * 2, "{} vertices", m4.positions.len());
+        assert!(
+            m4.triangles.len() < faces * 2 * 6 / 10,
+            "{} triangles",
+            m4.triangles.len()
+        );
+        assert!(
+            m4.positions.len() < faces * 2,
+            "{} vertices",
+            m4.positions.len()
+        );
     }
 }

@@ -325,12 +325,7 @@ mod tests {
 
     #[test]
     fn hamilton_product_rules() {
-        let (one, i, j, k) = (
-            Quaternion::ONE,
-            Quaternion::I,
-            Quaternion::J,
-            Quaternion::K,
-        );
+        let (one, i, j, k) = (Quaternion::ONE, Quaternion::I, Quaternion::J, Quaternion::K);
         for u in [i, j, k] {
             assert_eq!(u * u, -one);
             assert_eq!(u.square(), -one);
@@ -399,11 +394,7 @@ mod tests {
                 let z = C::new(x as f64 * 0.1, y as f64 * 0.1);
                 let complex = iterate_quadratic_scalar(z, C::new(-0.8, 0.156), &s);
                 let quat = esc(&jc, Quaternion([z.re, z.im, 0.0, 0.0]), 200);
-                assert_eq!(
-                    quat,
-                    (!complex.inside).then_some(complex.n),
-                    "z = {z:?}"
-                );
+                assert_eq!(quat, (!complex.inside).then_some(complex.n), "z = {z:?}");
             }
         }
     }

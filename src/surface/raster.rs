@@ -9,8 +9,8 @@ use glam::{DVec3, Vec3};
 use image::RgbImage;
 use rayon::prelude::*;
 
-use super::mesh::{Mesh, projected_extent, resolution_for, tessellate};
 use super::mesh::SurfacePatch;
+use super::mesh::{Mesh, projected_extent, resolution_for, tessellate};
 use super::scene::{Geometry, Object, Projection, Scene, illuminate_visible};
 use super::transform::Transform;
 
@@ -255,7 +255,9 @@ pub(crate) fn shade(
     let tex = obj
         .texture
         .and_then(|i| scene.textures.get(i))
-        .map_or(Vec3::ONE, |tx| tx.sample(st[0] as f32, st[1] as f32, p.footprint));
+        .map_or(Vec3::ONE, |tx| {
+            tx.sample(st[0] as f32, st[1] as f32, p.footprint)
+        });
     if obj.material.bump != 0.0
         && let Some(bt) = obj
             .bump_texture

@@ -53,7 +53,10 @@ pub(crate) fn world_sphere(o: &Object) -> Option<(DVec3, f64)> {
         Geometry::Mesh(m) => m.positions.iter().map(|q| o.transform.apply(*q)).collect(),
         Geometry::QuaternionJulia(j) => {
             let r = j.escape_radius();
-            return Some((o.transform.apply(DVec3::ZERO), r * linear_stretch(&o.transform)));
+            return Some((
+                o.transform.apply(DVec3::ZERO),
+                r * linear_stretch(&o.transform),
+            ));
         }
     };
     if pts.is_empty() {
@@ -138,7 +141,13 @@ impl Implicit {
     }
 
     /// The shading data at ray parameter t, and the world-space surface threshold there.
-    pub(crate) fn surface_point(&self, o: DVec3, d: DVec3, t: f64, eye: &Eye) -> (SurfacePoint, f64) {
+    pub(crate) fn surface_point(
+        &self,
+        o: DVec3,
+        d: DVec3,
+        t: f64,
+        eye: &Eye,
+    ) -> (SurfacePoint, f64) {
         let (lo, ld, l) = self.local(o, d);
         let eps = self.eps(eye, t, l);
         let p = lo + ld * (t * l);
@@ -400,7 +409,14 @@ impl World<'_> {
 
     /// Is the segment o + t·d, t in (0, t_max), blocked? `skip`: (object, triangle) the ray
     /// starts on; `eps`: surface threshold for ray-marched objects.
-    fn occluded(&self, o: DVec3, d: DVec3, t_max: f64, skip: Option<(usize, u32)>, eps: f64) -> bool {
+    fn occluded(
+        &self,
+        o: DVec3,
+        d: DVec3,
+        t_max: f64,
+        skip: Option<(usize, u32)>,
+        eps: f64,
+    ) -> bool {
         self.objs.iter().enumerate().any(|(k, p)| {
             if !sphere_may_hit(p.centre, p.radius, o, d, 0.0, t_max) {
                 return false;
@@ -417,7 +433,14 @@ impl World<'_> {
 
     /// Shade the ray's hit; `next` holds the rays of the neighbouring pixels to the right
     /// and below, for the texture footprint.
-    fn shade_hit(&self, hit: Hit, o: DVec3, d: DVec3, eye: &Eye, next: [(DVec3, DVec3); 2]) -> Vec3 {
+    fn shade_hit(
+        &self,
+        hit: Hit,
+        o: DVec3,
+        d: DVec3,
+        eye: &Eye,
+        next: [(DVec3, DVec3); 2],
+    ) -> Vec3 {
         let scene = self.scene;
         match hit {
             Hit::Implicit { obj, t } => {
@@ -436,7 +459,13 @@ impl World<'_> {
                 };
                 self.finish(&sp, eye, &visible)
             }
-            Hit::Tri { obj, tri, t, b1, b2 } => {
+            Hit::Tri {
+                obj,
+                tri,
+                t,
+                b1,
+                b2,
+            } => {
                 let p = &self.objs[obj];
                 let o_ref = &scene.objects[p.object];
                 let (bvh, sp) = match &p.kind {
@@ -450,7 +479,8 @@ impl World<'_> {
                         let b0 = 1.0 - b1 - b2;
                         let mix = |k: usize| uw[0][k] * b0 + uw[1][k] * b1 + uw[2][k] * b2;
                         let (u0, w0) = (mix(0), mix(1));
-                        let cell = bvh.tris[tri as usize].e1.length() + bvh.tris[tri as usize].e2.length();
+                        let cell =
+                            bvh.tris[tri as usize].e1.length() + bvh.tris[tri as usize].e2.length();
                         let (u, w, tt) = if o_ref.transform.is_affine() {
                             refine(&spatch.patch, &o_ref.transform, o, d, (u0, w0, t), cell)
                                 .unwrap_or((u0, w0, t))
@@ -488,7 +518,8 @@ impl World<'_> {
                             f(idx[0]) * wt[0] + f(idx[1]) * wt[1] + f(idx[2]) * wt[2]
                         };
                         let st_v = idx.map(|i| [mesh.tex[i][0] as f64, mesh.tex[i][1] as f64]);
-                        let st = [0, 1].map(|c| st_v[0][c] * wt[0] + st_v[1][c] * wt[1] + st_v[2][c] * wt[2]);
+                        let st = [0, 1]
+                            .map(|c| st_v[0][c] * wt[0] + st_v[1][c] * wt[1] + st_v[2][c] * wt[2]);
                         let (ts, tt_) = if mesh.tangents.len() == mesh.positions.len() {
                             (mix3(&|i| mesh.tangents[i].0), mix3(&|i| mesh.tangents[i].1))
                         } else {
@@ -517,12 +548,22 @@ impl World<'_> {
                 let face = g.normal().normalize_or_zero();
                 let visible = |j: usize| {
                     let lp = scene.lights[j].position;
-                    let side = if face.dot(lp - on_tri) >= 0.0 { face } else { -face };
+                    let side = if face.dot(lp - on_tri) >= 0.0 {
+                        face
+                    } else {
+                        -face
+                    };
                     let from = on_tri + side * self.shadow_eps;
                     let to = lp - from;
                     let dist = to.length();
                     dist <= 0.0
-                        || !self.occluded(from, to / dist, dist, Some((obj, tri)), eye.pixel_size(t))
+                        || !self.occluded(
+                            from,
+                            to / dist,
+                            dist,
+                            Some((obj, tri)),
+                            eye.pixel_size(t),
+                        )
                 };
                 self.finish(&sp, eye, &visible)
             }
@@ -541,12 +582,7 @@ impl World<'_> {
 /// Largest change of (s, t) to the neighbouring pixels: their rays meet the hit triangle's
 /// plane at other barycentrics (the ray-differential form of the z-buffer's per-triangle
 /// footprint).
-fn footprint(
-    g: &TriGeom,
-    st: [[f64; 2]; 3],
-    next: [(DVec3, DVec3); 2],
-    here: (f64, f64),
-) -> f32 {
+fn footprint(g: &TriGeom, st: [[f64; 2]; 3], next: [(DVec3, DVec3); 2], here: (f64, f64)) -> f32 {
     let at = |(b1, b2): (f64, f64)| {
         let b0 = 1.0 - b1 - b2;
         [0, 1].map(|c| st[0][c] * b0 + st[1][c] * b1 + st[2][c] * b2)
@@ -563,7 +599,13 @@ fn footprint(
 }
 
 /// Render one eye into a w×h buffer (linear RGB); None when cancelled.
-fn render_eye(scene: &Scene, eye: &Eye, w: usize, h: usize, cancel: Option<&AtomicBool>) -> Option<Vec<Vec3>> {
+fn render_eye(
+    scene: &Scene,
+    eye: &Eye,
+    w: usize,
+    h: usize,
+    cancel: Option<&AtomicBool>,
+) -> Option<Vec<Vec3>> {
     let mut eye = *eye;
     eye.place_ray_start(scene);
     let eye = &eye;
@@ -646,11 +688,39 @@ mod tests {
         // largest z, z = 2 (t = 8); the far one z = −2.
         let (t0, t1) = ray_sphere(DVec3::new(0.0, 0.0, 10.0), -DVec3::Z, DVec3::ZERO, 2.0).unwrap();
         assert_eq!((10.0 - t0, 10.0 - t1), (2.0, -2.0));
-        assert!(sphere_may_hit(DVec3::ZERO, 2.0, DVec3::new(1.9, 0.0, 10.0), -DVec3::Z, 0.0, 100.0));
-        assert!(!sphere_may_hit(DVec3::ZERO, 2.0, DVec3::new(2.1, 0.0, 10.0), -DVec3::Z, 0.0, 100.0));
+        assert!(sphere_may_hit(
+            DVec3::ZERO,
+            2.0,
+            DVec3::new(1.9, 0.0, 10.0),
+            -DVec3::Z,
+            0.0,
+            100.0
+        ));
+        assert!(!sphere_may_hit(
+            DVec3::ZERO,
+            2.0,
+            DVec3::new(2.1, 0.0, 10.0),
+            -DVec3::Z,
+            0.0,
+            100.0
+        ));
         // Behind the ray's start, or beyond the nearest hit so far: skipped.
-        assert!(!sphere_may_hit(DVec3::ZERO, 2.0, DVec3::new(0.0, 0.0, 10.0), DVec3::Z, 0.0, 100.0));
-        assert!(!sphere_may_hit(DVec3::ZERO, 2.0, DVec3::new(0.0, 0.0, 10.0), -DVec3::Z, 0.0, 5.0));
+        assert!(!sphere_may_hit(
+            DVec3::ZERO,
+            2.0,
+            DVec3::new(0.0, 0.0, 10.0),
+            DVec3::Z,
+            0.0,
+            100.0
+        ));
+        assert!(!sphere_may_hit(
+            DVec3::ZERO,
+            2.0,
+            DVec3::new(0.0, 0.0, 10.0),
+            -DVec3::Z,
+            0.0,
+            5.0
+        ));
     }
 
     fn plane(y: f64, half: f64) -> SurfacePatch {
@@ -677,8 +747,15 @@ mod tests {
             let o = target + DVec3::new(3.0, 1.0, 4.0);
             let d = (target - o).normalize();
             let t_true = (target - o).length();
-            let (ru, rw, rt) = refine(&sp.patch, &xf, o, d, (u + 0.02, w - 0.02, t_true + 0.01), 1.0)
-                .expect("converges");
+            let (ru, rw, rt) = refine(
+                &sp.patch,
+                &xf,
+                o,
+                d,
+                (u + 0.02, w - 0.02, t_true + 0.01),
+                1.0,
+            )
+            .expect("converges");
             assert!((ru - u).abs() < 1e-9 && (rw - w).abs() < 1e-9 && (rt - t_true).abs() < 1e-9);
         }
     }
@@ -722,7 +799,10 @@ mod tests {
                 .count() as f64
                 / (w * 72) as f64;
             let drawn = r.pixels().filter(|p| p.0 != [0, 0, 0]).count();
-            assert!(close >= 0.98 && drawn > 1000, "{name}: {close} ({drawn} drawn)");
+            assert!(
+                close >= 0.98 && drawn > 1000,
+                "{name}: {close} ({drawn} drawn)"
+            );
         }
     }
 
@@ -759,7 +839,8 @@ mod tests {
         s.objects.push(obj("floor", plane(0.0, 3.0), Vec3::ONE));
         // A red square one unit above the floor; the light comes from +x at 45°, so the
         // shadow lies one unit towards −x, beside the square as seen from above.
-        s.objects.push(obj("blocker", plane(1.0, 0.5), Vec3::new(1.0, 0.0, 0.0)));
+        s.objects
+            .push(obj("blocker", plane(1.0, 0.5), Vec3::new(1.0, 0.0, 0.0)));
         s.lights[0].position = DVec3::new(20.0, 20.0, 0.0);
         let img = render(&s, None).unwrap();
         let mut no = s.clone();

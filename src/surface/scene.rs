@@ -205,7 +205,18 @@ pub fn illuminate(
     k: f64,
     blinn: bool,
 ) -> Vec3 {
-    illuminate_visible(m, tex, normal, point, eye, lights, ambient, k, blinn, &|_| true)
+    illuminate_visible(
+        m,
+        tex,
+        normal,
+        point,
+        eye,
+        lights,
+        ambient,
+        k,
+        blinn,
+        &|_| true,
+    )
 }
 
 /// `illuminate` with a visibility test per light (shadows): `visible(j)` is asked only for
