@@ -481,21 +481,26 @@ impl World<'_> {
                         let (u0, w0) = (mix(0), mix(1));
                         let cell =
                             bvh.tris[tri as usize].e1.length() + bvh.tris[tri as usize].e2.length();
-                        let (u, w, tt) = if o_ref.transform.is_affine() {
-                            refine(&spatch.patch, &o_ref.transform, o, d, (u0, w0, t), cell)
-                                .unwrap_or((u0, w0, t))
-                        } else {
-                            (u0, w0, t)
-                        };
                         let xf = &o_ref.transform;
+                        let exact = if xf.is_affine() {
+                            refine(&spatch.patch, xf, o, d, (u0, w0, t), cell)
+                        } else {
+                            None
+                        };
+                        let (u, w) = exact.map_or((u0, w0), |(u, w, _)| (u, w));
                         let (q, qu, qw) = spatch.patch.eval_with_derivs(u, w);
                         let (pu, pw) = (xf.apply_dir(qu), xf.apply_dir(qw));
                         let mut normal = pu.cross(pw);
                         if normal.length_squared() <= 1e-24 {
                             normal = xf.apply_normal(spatch.patch.normal(u, w));
                         }
-                        let pos = if tt == t { o + d * t } else { xf.apply(q) };
-                        let (ts, tt_) = spatch.tex.tangents(pu, pw);
+                        // The exact patch point, or the tessellation's where Newton failed.
+                        let pos = if exact.is_some() {
+                            xf.apply(q)
+                        } else {
+                            o + d * t
+                        };
+                        let (tan_s, tan_t) = spatch.tex.tangents(pu, pw);
                         let st_v = uw.map(|c| spatch.tex.at(c[0], c[1]));
                         let footprint = footprint(&bvh.tris[tri as usize], st_v, next, (b1, b2));
                         (
@@ -506,8 +511,8 @@ impl World<'_> {
                                 normal: normal.normalize_or(DVec3::Y),
                                 st: spatch.tex.at(u, w),
                                 footprint,
-                                ts,
-                                tt: tt_,
+                                ts: tan_s,
+                                tt: tan_t,
                             },
                         )
                     }
@@ -520,7 +525,7 @@ impl World<'_> {
                         let st_v = idx.map(|i| [mesh.tex[i][0] as f64, mesh.tex[i][1] as f64]);
                         let st = [0, 1]
                             .map(|c| st_v[0][c] * wt[0] + st_v[1][c] * wt[1] + st_v[2][c] * wt[2]);
-                        let (ts, tt_) = if mesh.tangents.len() == mesh.positions.len() {
+                        let (tan_s, tan_t) = if mesh.tangents.len() == mesh.positions.len() {
                             (mix3(&|i| mesh.tangents[i].0), mix3(&|i| mesh.tangents[i].1))
                         } else {
                             (DVec3::X, DVec3::Y)
@@ -534,8 +539,8 @@ impl World<'_> {
                                 normal: mix3(&|i| mesh.normals[i]).normalize_or(DVec3::Y),
                                 st,
                                 footprint,
-                                ts,
-                                tt: tt_,
+                                ts: tan_s,
+                                tt: tan_t,
                             },
                         )
                     }
