@@ -302,3 +302,26 @@ fn menger_scene_reports_its_numbers() {
     let want = ugnis::surface::menger::numbers(3).area * 4.0;
     assert!((area - want).abs() < 1e-9, "{area} vs {want}");
 }
+
+#[test]
+fn every_scene_example_is_rendered_by_a_test() {
+    // The two example tests above render these; a new example must join one of them.
+    let covered = [
+        "jug.toml",
+        "julia-vase.toml",
+        "teapot.toml",
+        "mountain.toml",
+        "jug-raycast.toml",
+        "quaternion-julia.toml",
+        "menger.toml",
+    ];
+    let mut found: Vec<String> = std::fs::read_dir(common::root().join("examples"))
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.ends_with(".toml"))
+        .collect();
+    found.sort();
+    let mut want: Vec<String> = covered.iter().map(|s| s.to_string()).collect();
+    want.sort();
+    assert_eq!(found, want);
+}

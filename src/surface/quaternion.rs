@@ -219,7 +219,7 @@ impl QuaternionJulia {
             q = q.square() + c;
             let m2 = q.norm2();
             trap = trap.min(m2);
-            if !(m2 <= r2) {
+            if m2 > r2 || m2.is_nan() {
                 let a = m2.sqrt();
                 return Orbit {
                     escaped_at: Some(n),
