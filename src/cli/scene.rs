@@ -20,7 +20,7 @@ pub struct SceneArgs {
     /// Supersampling per axis (1–4; default: the scene's own)
     #[arg(long)]
     pub supersample: Option<u32>,
-    /// Worker threads (default: all cores)
+    /// Worker threads (default: all cores; at most 4 per core)
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
 }
@@ -30,12 +30,13 @@ pub fn run(a: SceneArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&a.output) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
     }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(a.threads)
-        .build()
-        .context("cannot start worker threads")?;
+    super::check_output(&a.output)?;
+    let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
         let mut loaded = io::scene::read(&a.file)?;
+        for w in &loaded.warnings {
+            eprintln!("{w}");
+        }
         if let Some((w, h)) = a.size {
             loaded.scene.width = w;
             loaded.scene.height = h;
@@ -46,7 +47,12 @@ pub fn run(a: SceneArgs) -> Result<()> {
             }
             loaded.scene.supersample = s;
         }
-        ugnis::surface::render(&loaded.scene, None).context("rendering was cancelled")
+        super::check_interrupted()?;
+        match ugnis::surface::try_render(&loaded.scene, Some(super::interrupt_flag())) {
+            Ok(img) => Ok(img),
+            Err(ugnis::surface::RenderError::Cancelled) => Err(super::Interrupted.into()),
+            Err(e) => Err(e).with_context(|| format!("cannot render '{}'", a.file.display())),
+        }
     })?;
     let img = image::DynamicImage::ImageRgb8(img);
     if is_bmp {

@@ -27,6 +27,8 @@ pub const MAX_FLAMES: usize = 10_000;
 pub const MAX_XFORMS: usize = 10_000;
 /// Largest image side accepted from a file.
 pub const MAX_SIDE: i64 = 1_000_000;
+/// Warnings of one kind listed per file; the rest are counted in one line.
+pub const MAX_WARNINGS_PER_CODE: usize = 20;
 
 /// The contents of a flame file.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -82,6 +84,9 @@ struct Ctx<'t, 'o> {
     /// Attributes of other programs that ugnis keeps but does not interpret (reported once per
     /// file, in one line).
     ignored_attrs: Vec<String>,
+    ignored_set: HashSet<String>,
+    /// Warnings per code so far; past [`MAX_WARNINGS_PER_CODE`] they are only counted.
+    warn_counts: std::collections::HashMap<&'static str, usize>,
     opts: &'o ReadOptions<'o>,
     library: OnceCell<Result<PaletteLibrary, String>>,
 }
@@ -94,6 +99,11 @@ impl Ctx<'_, '_> {
     }
 
     fn warn(&mut self, off: usize, code: &'static str, msg: impl Into<String>) {
+        let n = self.warn_counts.entry(code).or_insert(0);
+        *n += 1;
+        if *n > MAX_WARNINGS_PER_CODE {
+            return;
+        }
         let d = Diagnostic::warning(self.file, self.map.pos(off), code, msg);
         self.warnings.push(d);
     }
@@ -186,6 +196,8 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         warnings: Vec::new(),
         reported_vars: HashSet::new(),
         ignored_attrs: Vec::new(),
+        ignored_set: HashSet::new(),
+        warn_counts: Default::default(),
         opts,
         library: OnceCell::new(),
     };
@@ -273,6 +285,21 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         ));
     }
     let _ = depth;
+    let mut hidden: Vec<(&str, usize)> = cx
+        .warn_counts
+        .iter()
+        .filter(|(_, n)| **n > MAX_WARNINGS_PER_CODE)
+        .map(|(c, n)| (*c, n - MAX_WARNINGS_PER_CODE))
+        .collect();
+    hidden.sort();
+    for (code, n) in hidden {
+        cx.warnings.push(Diagnostic::warning(
+            &opts.file,
+            Pos::File,
+            code,
+            format!("{n} more warnings like the above are not shown"),
+        ));
+    }
     if !cx.ignored_attrs.is_empty() {
         let n = cx.ignored_attrs.len();
         let mut shown: Vec<&str> = cx
@@ -589,6 +616,24 @@ fn read_flame(
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
         read_flame_children(cx, cur, text, &mut f, &mut pal)?;
+    }
+    // A xaos row has one multiplier per xform; longer rows (written for a flame that had
+    // more xforms) are cut, with a word.
+    let n = f.xforms.len();
+    for (k, x) in f.xforms.iter_mut().enumerate() {
+        if x.chaos.len() > n {
+            let extra = x.chaos.len() - n;
+            x.chaos.truncate(n);
+            cx.warn(
+                start,
+                "XML022",
+                format!(
+                    "xaos row of xform {} has {} values for {n} xforms; the last {extra} are ignored",
+                    k + 1,
+                    n + extra
+                ),
+            );
+        }
     }
     // Palette: inline colours win over a library palette (flam3 does the opposite; warn).
     if pal.any {
@@ -1057,6 +1102,11 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
     let mut color_speed: Option<f64> = None;
     let mut symmetry: Option<f64> = None;
     let mut params: Vec<(variations::VarId, Form, usize, f64, String, String)> = Vec::new();
+    // JWildfire writes NAME_fx_priority beside every variation it writes.
+    let marked_vars: HashSet<&str> = attrs
+        .iter()
+        .filter_map(|b| b.name.strip_suffix("_fx_priority"))
+        .collect();
     for a in attrs {
         let v = a.value.trim();
         match a.name {
@@ -1167,10 +1217,7 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    // JWildfire writes NAME_fx_priority beside every variation it writes.
-                    let marked = attrs
-                        .iter()
-                        .any(|b| b.name.strip_suffix("_fx_priority") == Some(name));
+                    let marked = marked_vars.contains(name);
                     if numeric && (marked || variations::is_foreign_variation_name(name)) {
                         if cx.reported_vars.insert(name.to_string()) {
                             cx.warn(
@@ -1182,7 +1229,7 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     } else if !matches!(
                         name,
                         "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
-                    ) && !cx.ignored_attrs.iter().any(|n| n == name)
+                    ) && cx.ignored_set.insert(name.to_string())
                     {
                         cx.ignored_attrs.push(name.to_string());
                     }

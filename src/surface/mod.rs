@@ -11,7 +11,7 @@ pub mod transform;
 
 pub use mesh::{Mesh, SurfacePatch, TexMap};
 pub use patch::Patch;
-pub use raster::render;
+pub use raster::{RenderError, render, try_render};
 pub use scene::{Camera, Geometry, Light, Material, Object, Projection, Scene};
 pub use texture::Texture;
 pub use transform::Transform;

@@ -167,6 +167,22 @@ fn top_left(a: [f64; 3], b: [f64; 3], positive: bool) -> bool {
     }
 }
 
+/// Tessellation grid of an object's patches for one eye (adapted to their projected size).
+fn patch_resolution(
+    o: &super::scene::Object,
+    patches: &[super::mesh::SurfacePatch],
+    eye: &Eye,
+) -> usize {
+    let to_screen = |q: DVec3| {
+        let c = eye.clip(o.transform.apply(q));
+        (c[3] > 1e-3).then(|| {
+            let s = eye.screen(c);
+            [s[0], s[1]]
+        })
+    };
+    resolution_for(projected_extent(patches, to_screen))
+}
+
 /// World-space meshes of all objects for one eye (tessellation adapted to projected size).
 fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
     scene
@@ -174,19 +190,146 @@ fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
         .par_iter()
         .map(|o| match &o.geometry {
             Geometry::Patches(p) => {
-                let to_screen = |q: DVec3| {
-                    let c = eye.clip(o.transform.apply(q));
-                    (c[3] > 1e-3).then(|| {
-                        let s = eye.screen(c);
-                        [s[0], s[1]]
-                    })
-                };
-                let n = resolution_for(projected_extent(p, to_screen));
-                tessellate(p, n).transformed(&o.transform)
+                tessellate(p, patch_resolution(o, p, eye)).transformed(&o.transform)
             }
             Geometry::Mesh(m) => m.transformed(&o.transform),
         })
         .collect()
+}
+
+/// Bytes of one mesh vertex (position, normal, texture coordinates, tangents) and triangle.
+const MESH_VERTEX: u64 = 24 + 24 + 8 + 48;
+const MESH_TRIANGLE: u64 = 12;
+
+/// Memory a scene render needs, part by part, estimated before tessellating.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MemoryEstimate {
+    /// Vertices and triangles after tessellation (all eyes).
+    pub vertices: u64,
+    pub triangles: u64,
+    /// Meshes, clipped vertices, screen triangles and their bins.
+    pub geometry: u64,
+    /// Colour buffers at the supersampled size and the output image.
+    pub pixels: u64,
+    pub total: u64,
+}
+
+/// The pixel size a scene renders at (supersampled), and the eyes with their widths.
+fn eyes(scene: &Scene) -> (usize, usize, Vec<(Eye, usize)>) {
+    let ss = scene.supersample.clamp(1, 4) as usize;
+    let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
+    let eyes = if let Projection::Stereo = scene.camera.projection {
+        let half = w / 2;
+        let k = scene.camera.distance;
+        vec![
+            (eye_for(scene, half, h, k / 20.0), half),
+            (eye_for(scene, half, h, -k / 20.0), half),
+        ]
+    } else {
+        vec![(eye_for(scene, w, h, 0.0), w)]
+    };
+    (w, h, eyes)
+}
+
+/// Estimate the memory of a render (the textures, already made, are not counted): the
+/// tessellation the renderer will choose, every triangle visible, colour buffers per eye.
+pub fn estimate_memory(scene: &Scene) -> MemoryEstimate {
+    let (w, h, eyes) = eyes(scene);
+    let (mut vertices, mut triangles) = (0u64, 0u64);
+    for (eye, _) in &eyes {
+        for o in &scene.objects {
+            let (v, t) = match &o.geometry {
+                Geometry::Patches(p) => {
+                    let n = patch_resolution(o, p, eye).max(1) as u64;
+                    (
+                        p.len() as u64 * (n + 1) * (n + 1),
+                        p.len() as u64 * 2 * n * n,
+                    )
+                }
+                Geometry::Mesh(m) => (m.positions.len() as u64, m.triangles.len() as u64),
+            };
+            vertices = vertices.saturating_add(v);
+            triangles = triangles.saturating_add(t);
+        }
+    }
+    // Per eye the meshes and the shared vertex array live together; eyes render one after
+    // the other, but a stereo pair keeps the left picture while the right one is made.
+    let geometry = vertices
+        .saturating_mul(MESH_VERTEX + std::mem::size_of::<Vert>() as u64 + 24)
+        .saturating_add(
+            triangles.saturating_mul(MESH_TRIANGLE + std::mem::size_of::<Tri>() as u64 + 8),
+        );
+    let px = (w * h) as u64;
+    let colour = std::mem::size_of::<Vec3>() as u64;
+    let pixels = px * colour * if eyes.len() > 1 { 2 } else { 1 }
+        + (scene.width as u64 * scene.height as u64) * 3 * 2;
+    MemoryEstimate {
+        vertices,
+        triangles,
+        geometry,
+        pixels,
+        total: geometry.saturating_add(pixels),
+    }
+}
+
+/// Largest scene image side.
+pub const MAX_SIDE: u32 = 16_384;
+
+/// Why a scene cannot be rendered.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum RenderError {
+    #[error("{0}")]
+    Settings(String),
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::memory::MemoryError),
+    #[error("rendering was cancelled")]
+    Cancelled,
+}
+
+/// Check a scene's size and memory before rendering it (`configured`: a memory limit instead
+/// of the system's budget).
+pub fn check(scene: &Scene, configured: Option<u64>) -> Result<MemoryEstimate, RenderError> {
+    let (w, h) = (scene.width, scene.height);
+    if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
+        return Err(RenderError::Settings(format!(
+            "image size {w}x{h} must be between 1x1 and {MAX_SIDE}x{MAX_SIDE}"
+        )));
+    }
+    if !(1..=4).contains(&scene.supersample) {
+        return Err(RenderError::Settings(format!(
+            "supersample {} must be between 1 and 4",
+            scene.supersample
+        )));
+    }
+    if let Projection::Stereo = scene.camera.projection
+        && w < 2
+    {
+        return Err(RenderError::Settings(format!(
+            "a stereo pair puts two pictures side by side: the width ({w}) must be at least 2"
+        )));
+    }
+    let est = estimate_memory(scene);
+    crate::memory::check(
+        est.total,
+        configured,
+        || {
+            format!(
+                "a {w}×{h} scene at supersample {} with {} objects ({} triangles)",
+                scene.supersample,
+                scene.objects.len(),
+                est.triangles
+            )
+        },
+        || {
+            let mut h = String::from("reduce the image size");
+            if scene.supersample > 1 {
+                h.push_str(&format!(" or the supersample ({})", scene.supersample));
+            }
+            h.push_str(", or use fewer objects or profile segments");
+            h
+        },
+    )?;
+    Ok(est)
 }
 
 const BAND: usize = 16;
@@ -516,25 +659,32 @@ fn to_image(buf: &[Vec3], w: usize, h: usize, ss: usize) -> RgbImage {
     img
 }
 
-/// Render the scene (width×height; a stereo pair puts the left eye on the left half).
-/// Returns None when cancelled.
-pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
+/// Render the scene (width×height; a stereo pair puts the left eye on the left half) after
+/// checking its size and memory ([`check`]). Cancelling returns [`RenderError::Cancelled`].
+pub fn try_render(scene: &Scene, cancel: Option<&AtomicBool>) -> Result<RgbImage, RenderError> {
+    check(scene, None)?;
     let ss = scene.supersample.clamp(1, 4) as usize;
-    let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
-    if let Projection::Stereo = scene.camera.projection {
-        let half = w / 2;
-        let k = scene.camera.distance;
-        let left = render_eye(scene, &eye_for(scene, half, h, k / 20.0), half, h, cancel)?;
-        let right = render_eye(scene, &eye_for(scene, half, h, -k / 20.0), half, h, cancel)?;
+    let (w, h, eyes) = eyes(scene);
+    if let [(left_eye, half), (right_eye, _)] = eyes.as_slice() {
+        let half = *half;
+        let left = render_eye(scene, left_eye, half, h, cancel).ok_or(RenderError::Cancelled)?;
+        let right = render_eye(scene, right_eye, half, h, cancel).ok_or(RenderError::Cancelled)?;
         let mut buf = vec![scene.background; w * h];
         for y in 0..h {
             buf[y * w..y * w + half].copy_from_slice(&left[y * half..(y + 1) * half]);
             buf[y * w + half..y * w + 2 * half].copy_from_slice(&right[y * half..(y + 1) * half]);
         }
-        return Some(to_image(&buf, w, h, ss));
+        return Ok(to_image(&buf, w, h, ss));
     }
-    let buf = render_eye(scene, &eye_for(scene, w, h, 0.0), w, h, cancel)?;
-    Some(to_image(&buf, w, h, ss))
+    let (eye, _) = &eyes[0];
+    let buf = render_eye(scene, eye, w, h, cancel).ok_or(RenderError::Cancelled)?;
+    Ok(to_image(&buf, w, h, ss))
+}
+
+/// As [`try_render`], None for every failure (cancelled, too large, invalid size); kept for
+/// callers that only show a picture when there is one.
+pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
+    try_render(scene, cancel).ok()
 }
 
 /// The screen position (pixels) of a world point under the scene's camera (None behind the
