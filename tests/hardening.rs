@@ -84,7 +84,8 @@ fn small_flame(dir: &Path, quality: &str) -> PathBuf {
             "<flame name=\"q\" size=\"32 24\" scale=\"8\" quality=\"{quality}\">\
              <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\
              <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 1 0\"/>\
-             <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 1\"/></flame>"
+             <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 1\"/>\
+             <color index=\"0\" rgb=\"255 200 100\"/><color index=\"255\" rgb=\"40 80 255\"/></flame>"
         ),
     )
     .unwrap();
@@ -448,11 +449,7 @@ fn quality_limits_give_clear_errors_wherever_the_number_comes_from() {
     // In the file, and in a PNG's embedded genome.
     let big = small_flame(&dir, "1e12");
     let (code, _, err) = ugnis(&["render", s(&big), "-o", s(&out)]);
-    assert_clean_error(
-        code,
-        &err,
-        &["quality 1000000000000 is outside 0.01..1000000"],
-    );
+    assert_clean_error(code, &err, &["quality 1e12 is outside 0.01..1000000"]);
     let ok = small_flame(&dir, "1");
     let (code, _, err) = ugnis(&["render", s(&ok), "-o", s(&out)]);
     assert_eq!(code, 0, "{err}");
@@ -469,7 +466,7 @@ fn quality_limits_give_clear_errors_wherever_the_number_comes_from() {
     )
     .unwrap();
     let (code, _, err) = ugnis(&["render", s(&bad_png), "-o", s(&dir.join("x.png"))]);
-    assert_clean_error(code, &err, &["quality 1000000000000 is outside"]);
+    assert_clean_error(code, &err, &["quality 1e12 is outside"]);
     // A scene texture.
     let sc = dir.join("t.toml");
     std::fs::write(
@@ -482,7 +479,7 @@ fn quality_limits_give_clear_errors_wherever_the_number_comes_from() {
     )
     .unwrap();
     let (code, _, err) = ugnis(&["scene", s(&sc), "-o", s(&dir.join("s.png"))]);
-    assert_clean_error(code, &err, &["SCN004", "quality 1000000000000 is outside"]);
+    assert_clean_error(code, &err, &["SCN004", "quality 1e12 is outside"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -735,7 +732,7 @@ fn writers_and_readers_agree() {
         vec!["--offset", "nan"],
         vec!["--offset", "inf"],
         vec!["--width", "NaN"],
-        vec!["--bailout", "-inf"],
+        vec!["--bailout=-inf"],
     ] {
         let mut a = vec![
             "escape",

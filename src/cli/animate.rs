@@ -8,7 +8,7 @@ use clap::{Args, ValueEnum};
 
 use ugnis::flame::Flame;
 use ugnis::flame::animate::{RotationAnimation, interpolate};
-use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer};
+use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, short_num};
 use ugnis::io;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -67,7 +67,10 @@ pub fn run(a: AnimateArgs) -> Result<()> {
     if let Some(q) = a.quality
         && !(MIN_QUALITY..=MAX_QUALITY).contains(&q)
     {
-        bail!("--quality {q} must be between {MIN_QUALITY} and {MAX_QUALITY}");
+        bail!(
+            "--quality {} must be between {MIN_QUALITY} and {MAX_QUALITY}",
+            short_num(q)
+        );
     }
     if a.output.exists() && !a.output.is_dir() {
         bail!("output '{}' is not a directory", a.output.display());

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
-use ugnis::escape::{C, Coloring, EscapeRenderer, Family, Sampling, Warp};
+use ugnis::escape::{C, Coloring, EscapeRenderer, Family, Fill, Sampling, Warp};
 use ugnis::io::escape_view::{self, EscapeDoc, family_from_name, parse_complex, parse_poly};
 use ugnis::io::{self, FileKind};
 use ugnis::noise::Fbm;

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
-use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer};
+use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, short_num};
 use ugnis::flame::{Flame, OutputFormat};
 use ugnis::io::flam3_xml::{LibrarySource, ReadOptions};
 use ugnis::io::{self, FileKind};
@@ -117,7 +117,10 @@ pub fn run(a: RenderArgs) -> Result<()> {
     }
     if let Some(q) = a.quality {
         if !(MIN_QUALITY..=MAX_QUALITY).contains(&q) {
-            bail!("--quality {q} must be between {MIN_QUALITY} and {MAX_QUALITY}");
+            bail!(
+                "--quality {} must be between {MIN_QUALITY} and {MAX_QUALITY}",
+                short_num(q)
+            );
         }
         flame.quality = q;
     }

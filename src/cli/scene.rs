@@ -31,6 +31,13 @@ pub fn run(a: SceneArgs) -> Result<()> {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
     }
     super::check_output(&a.output)?;
+    // The size is checked before the scene's textures are made (which takes a while).
+    if let Some((w, h)) = a.size {
+        let max = ugnis::surface::raster::MAX_SIDE;
+        if w > max || h > max {
+            bail!("--size {w}x{h}: a scene image is at most {max}x{max}");
+        }
+    }
     let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
         let mut loaded = io::scene::read(&a.file)?;

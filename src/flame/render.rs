@@ -195,6 +195,15 @@ pub fn available_memory() -> Option<u64> {
     crate::memory::available_memory()
 }
 
+/// A number for a message: plain, or with an exponent when very large or small (1e12, 1e-300).
+pub fn short_num(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && !(1e-3..1e9).contains(&v.abs()) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
 /// Validate the settings that the renderer divides by, and the limits of the work.
 pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     let bad = |m: String| Err(RenderError::Settings(m));
@@ -213,7 +222,7 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     if !(MIN_QUALITY..=MAX_QUALITY).contains(&flame.quality) {
         return bad(format!(
             "quality {} is outside {MIN_QUALITY}..{MAX_QUALITY} samples per pixel",
-            flame.quality
+            short_num(flame.quality)
         ));
     }
     if flame.gamma.is_nan() || flame.gamma <= 0.0 {
@@ -242,7 +251,10 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
         return bad(format!(
             "{samples:.3e} samples (quality {} × 4^zoom {} × {}×{} pixels) are more than the \
              limit of {MAX_TOTAL_SAMPLES:.0e}; lower the quality, the zoom or the size",
-            flame.quality, flame.zoom, flame.width, flame.height
+            short_num(flame.quality),
+            flame.zoom,
+            flame.width,
+            flame.height
         ));
     }
     Ok(())

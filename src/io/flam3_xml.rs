@@ -84,7 +84,8 @@ struct Ctx<'t, 'o> {
     /// Attributes of other programs that ugnis keeps but does not interpret (reported once per
     /// file, in one line).
     ignored_attrs: Vec<String>,
-    ignored_set: HashSet<String>,
+    /// Hashes of all of them (for counting distinct names without keeping every name).
+    ignored_set: HashSet<u64>,
     /// Warnings per code so far; past [`MAX_WARNINGS_PER_CODE`] they are only counted.
     warn_counts: std::collections::HashMap<&'static str, usize>,
     opts: &'o ReadOptions<'o>,
@@ -92,6 +93,11 @@ struct Ctx<'t, 'o> {
 }
 
 type R<T> = Result<T, Diagnostic>;
+
+fn name_hash(name: &str) -> u64 {
+    use std::hash::{BuildHasher, BuildHasherDefault};
+    BuildHasherDefault::<std::collections::hash_map::DefaultHasher>::default().hash_one(name)
+}
 
 impl Ctx<'_, '_> {
     fn err(&self, off: usize, code: &'static str, msg: impl Into<String>) -> Diagnostic {
@@ -300,8 +306,8 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
             format!("{n} more warnings like the above are not shown"),
         ));
     }
-    if !cx.ignored_attrs.is_empty() {
-        let n = cx.ignored_attrs.len();
+    if !cx.ignored_set.is_empty() {
+        let n = cx.ignored_set.len();
         let mut shown: Vec<&str> = cx
             .ignored_attrs
             .iter()
@@ -1229,7 +1235,8 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     } else if !matches!(
                         name,
                         "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
-                    ) && cx.ignored_set.insert(name.to_string())
+                    ) && cx.ignored_set.insert(name_hash(name))
+                        && cx.ignored_attrs.len() < 6
                     {
                         cx.ignored_attrs.push(name.to_string());
                     }

@@ -314,9 +314,10 @@ pub fn check(scene: &Scene, configured: Option<u64>) -> Result<MemoryEstimate, R
         configured,
         || {
             format!(
-                "a {w}×{h} scene at supersample {} with {} objects ({} triangles)",
+                "a {w}×{h} scene at supersample {} with {} object{} ({} triangles)",
                 scene.supersample,
                 scene.objects.len(),
+                if scene.objects.len() == 1 { "" } else { "s" },
                 est.triangles
             )
         },
