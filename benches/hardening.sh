@@ -21,7 +21,7 @@ run() {
   shift
   /usr/bin/time -f '%e %M' -o time.txt "$@" >out.txt 2>err.txt
   local code=$?
-  read -r secs kib <time.txt
+  read -r secs kib < <(tail -1 time.txt)
   printf '%-58s %8s %7s MiB %5s   %s\n' "$name" "$secs" "$((kib / 1024))" "$code" \
     "$(grep -v '^ *Command exited' err.txt | head -1 | cut -c1-110)"
 }
@@ -51,7 +51,7 @@ open('rev10k.toml', 'w').write(f'[[object]]\nkind = "revolve"\nprofile = [{prof}
 prof = ', '.join(f'[{1 + (k % 3) * 0.1}, {k * 0.001}]' for k in range(3001))
 open('rev1k.toml', 'w').write(f'[[object]]\nkind = "revolve"\nprofile = [{prof}]\n')
 open('objs800k.toml', 'w').write('[[object]]\nkind = "jug"\n' * 800000)
-open('objs10k.toml', 'w').write('[[object]]\nkind = "jug"\n' * 10000)
+open('objs5k.toml', 'w').write('[[object]]\nkind = "jug"\n' * 5000)
 open('stereo.toml', 'w').write('[camera]\nprojection = "stereo"\n[[object]]\nkind = "jug"\n')
 open('big.ugr', 'w').write(''.join(f'g{k} {{\ngradient:\n index=0 color={k}\n}}\n' for k in range(10000)))
 open('long.map', 'w').write(''.join(f'{k % 256} 0 0\n' for k in range(10000)))
@@ -65,7 +65,7 @@ run "scene jug --size 16000x16000 --supersample 4" "$UGNIS" scene "$JUG" --size 
 run "scene: revolve with 10,000 segments" "$UGNIS" scene rev10k.toml -o s.png
 run "scene: revolve with 1,000 segments (the limit)" "$UGNIS" scene rev1k.toml -o s.png --size 320x240
 run "scene: 800,000 objects" "$UGNIS" scene objs800k.toml -o s.png
-run "scene: 10,000 jugs (the limit), 320x240" "$UGNIS" scene objs10k.toml -o s.png --size 320x240
+run "scene: 5,000 jugs (100,000 patches, the limit), 320x240" "$UGNIS" scene objs5k.toml -o s.png --size 320x240
 run "convert tall.png (1x1,100,000) g.ugr" "$UGNIS" convert tall.png g.ugr
 run "convert wide.png (1,100,000x1) g.map" "$UGNIS" convert wide.png g.map
 run "escape --gradient tall.png" "$UGNIS" escape mandelbrot --gradient tall.png --size 64x48 -o e.png
@@ -81,7 +81,7 @@ run "render quality=\"1e12\" in the file" "$UGNIS" render q.flame -o r.png
 run "render --quality 1e-300" "$UGNIS" render ok.flame --quality 1e-300 -o r.png
 run "info symlink to /dev/zero" "$UGNIS" info zero.flame
 run "info FIFO" timeout 10 "$UGNIS" info fifo.flame
-run "random --count 10000 --min-xforms 100 (refused)" "$UGNIS" random --count 10000 --min-xforms 100 --max-xforms 100 -o r.fla
+run "random --count 10000 --min-xforms 100 --variation mix" "$UGNIS" random --count 10000 --min-xforms 100 --max-xforms 100 --variation mix -o r.fla
 run "random --count 2000 --min-xforms 100 --max-xforms 100" "$UGNIS" random --count 2000 --min-xforms 100 --max-xforms 100 --seed 1 -o r.fla
 run "info of that batch ($(($(stat -c %s r.fla 2>/dev/null || echo 0) >> 20)) MiB)" "$UGNIS" info r.fla
 run "escape --offset nan --save-view v.esc" "$UGNIS" escape mandelbrot --offset nan --save-view v.esc -o e.png

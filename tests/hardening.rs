@@ -175,6 +175,30 @@ fn huge_scenes_are_refused_before_tessellating() {
         .unwrap();
     assert_eq!(e.code, "SCN007", "{e}");
     assert!(e.message.contains("more than 10000 objects"), "{e}");
+    // A profile of 1000 segments (the limit) is coarsened to the triangle budget and fits.
+    let profile: Vec<String> = (0..=3000)
+        .map(|k| format!("[{}, {}]", 1.0 + (k % 3) as f64 * 0.1, k as f64 * 0.001))
+        .collect();
+    let text = format!(
+        "[[object]]\nkind = \"revolve\"\nprofile = [{}]\n",
+        profile.join(", ")
+    );
+    let rev = ugnis::io::scene::parse(&text, "r.toml", &dir)
+        .unwrap()
+        .scene;
+    let est = ugnis::surface::raster::estimate_memory(&rev);
+    assert!(
+        est.triangles <= ugnis::surface::raster::MAX_TRIANGLES,
+        "{est:?}"
+    );
+    assert!(
+        est.triangles > ugnis::surface::raster::MAX_TRIANGLES / 2,
+        "{est:?}"
+    );
+    assert!(
+        ugnis::surface::raster::check(&rev, Some(1 << 30)).is_ok(),
+        "{est:?}"
+    );
     // The estimate of a large but legal scene against a small budget.
     let mut sc = ugnis::io::scene::read(&jug).unwrap().scene;
     let est = ugnis::surface::raster::estimate_memory(&sc);
@@ -692,6 +716,8 @@ fn writers_and_readers_agree() {
         "100",
         "--max-xforms",
         "100",
+        "--variation",
+        "mix",
         "-o",
         s(&fla),
     ]);

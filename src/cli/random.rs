@@ -76,10 +76,29 @@ pub fn symmetry_mode(s: Option<&str>) -> Result<SymmetryMode> {
     }
 }
 
-/// Bytes of a written random flame: the header and palette, and each transform (measured on
-/// batches of every variation mode, rounded up).
-const FLAME_BYTES: u64 = 3_000;
-const XFORM_BYTES: u64 = 400;
+/// Bytes of a written random flame: the header and palette, each transform (one variation,
+/// or a mix of two or three with their parameters) and each symmetry transform; the means of
+/// batches of 200, rounded up.
+const FLAME_BYTES: u64 = 2_600;
+const XFORM_BYTES: u64 = 240;
+const MIX_XFORM_BYTES: u64 = 360;
+const SYMMETRY_XFORM_BYTES: u64 = 170;
+
+/// The expected size of a batch's file.
+fn batch_bytes(count: usize, opts: &RandomOptions) -> u64 {
+    let xforms = (opts.min_xforms + opts.max_xforms) as u64 / 2;
+    let per_xform = if opts.variations == VariationMode::Mix {
+        MIX_XFORM_BYTES
+    } else {
+        XFORM_BYTES
+    };
+    let symmetry = match opts.symmetry {
+        SymmetryMode::None => 0,
+        SymmetryMode::Random => 3,
+        SymmetryMode::Order(k) => k.unsigned_abs() as u64,
+    };
+    count as u64 * (FLAME_BYTES + xforms * per_xform + symmetry * SYMMETRY_XFORM_BYTES)
+}
 
 pub fn run(a: RandomArgs) -> Result<()> {
     let max_count = ugnis::io::flam3_xml::MAX_FLAMES;
@@ -107,9 +126,16 @@ pub fn run(a: RandomArgs) -> Result<()> {
         io::FileKind::FlameXml | io::FileKind::Fla => {}
         _ => bail!("output '{}' must end in .fla or .flame", a.output.display()),
     }
-    // The batch must be readable again: refuse at once what would exceed the read limit.
-    let mean_xforms = (a.min_xforms + a.max_xforms) as u64 / 2;
-    let bytes = a.count as u64 * (FLAME_BYTES + mean_xforms * XFORM_BYTES);
+    let opts = RandomOptions {
+        min_xforms: a.min_xforms,
+        max_xforms: a.max_xforms,
+        variations: variation_mode(&a.variation)?,
+        symmetry: symmetry_mode(a.symmetry.as_deref())?,
+        ..RandomOptions::default()
+    };
+    // The batch must be readable again: refuse at once what would exceed the read limit (the
+    // writer checks the exact size again).
+    let bytes = batch_bytes(a.count, &opts);
     let limit = io::max_file_size(kind);
     if bytes > limit {
         bail!(
@@ -123,13 +149,6 @@ pub fn run(a: RandomArgs) -> Result<()> {
         );
     }
     super::check_output(&a.output)?;
-    let opts = RandomOptions {
-        min_xforms: a.min_xforms,
-        max_xforms: a.max_xforms,
-        variations: variation_mode(&a.variation)?,
-        symmetry: symmetry_mode(a.symmetry.as_deref())?,
-        ..RandomOptions::default()
-    };
     let seed = a.seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)

@@ -40,6 +40,8 @@ pub const MAX_OBJECTS: usize = 10_000;
 pub const MAX_TEXTURES: usize = 256;
 /// Most lights in a scene.
 pub const MAX_LIGHTS: usize = 256;
+/// Most Bézier patches in a scene (a jug has 20, the teapot 32).
+pub const MAX_PATCHES: usize = 100_000;
 /// Most cubic segments of a surface of revolution's profile (four patches each).
 pub const MAX_PROFILE_SEGMENTS: usize = 1000;
 /// Highest degree of a Bézier patch in either direction.
@@ -774,6 +776,7 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
         scene.textures.push(tex);
         texture_names.push(t.name);
     }
+    let mut patches = 0usize;
     for (k, o) in spec.object.unwrap_or_default().into_iter().enumerate() {
         let pos = at(Some(o.span()));
         let o = o.into_inner();
@@ -828,9 +831,23 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
             })
             .map_err(err)?;
         }
+        let geometry = make_geometry(&o).map_err(err)?;
+        if let Geometry::Patches(p) = &geometry {
+            patches += p.len();
+            if patches > MAX_PATCHES {
+                return Err(Diagnostic::error(
+                    name,
+                    pos.clone(),
+                    "SCN007",
+                    format!(
+                        "object '{label}' brings the scene to more than {MAX_PATCHES} patches, the most a scene holds"
+                    ),
+                ));
+            }
+        }
         scene.objects.push(Object {
             name: label.clone(),
-            geometry: make_geometry(&o).map_err(err)?,
+            geometry,
             transform: make_transform(o.transform.as_deref().unwrap_or(&[])).map_err(err)?,
             material,
             texture: find(&o.texture)?,

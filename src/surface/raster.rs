@@ -183,23 +183,65 @@ fn patch_resolution(
     resolution_for(projected_extent(patches, to_screen))
 }
 
+/// Most triangles the patches of a scene are tessellated into (for one eye). Each object's
+/// grid follows its projected size (about 6 pixels a cell); when the sum would exceed this,
+/// every grid is coarsened by the same factor, so that memory and time stay bounded for
+/// scenes of thousands of patches, whose cells are then a few pixels larger.
+pub const MAX_TRIANGLES: u64 = 1_500_000;
+
+/// The tessellation grid of every object for one eye (0 for meshes), within
+/// [`MAX_TRIANGLES`].
+fn resolutions(scene: &Scene, eye: &Eye) -> Vec<usize> {
+    let mut n: Vec<usize> = scene
+        .objects
+        .iter()
+        .map(|o| match &o.geometry {
+            Geometry::Patches(p) => patch_resolution(o, p, eye),
+            Geometry::Mesh(_) => 0,
+        })
+        .collect();
+    let patch_triangles = |n: &[usize]| -> u64 {
+        scene
+            .objects
+            .iter()
+            .zip(n)
+            .map(|(o, &k)| match &o.geometry {
+                Geometry::Patches(p) => p.len() as u64 * 2 * (k * k) as u64,
+                Geometry::Mesh(_) => 0,
+            })
+            .sum()
+    };
+    let total = patch_triangles(&n);
+    if total > MAX_TRIANGLES {
+        let k = (MAX_TRIANGLES as f64 / total as f64).sqrt();
+        for v in n.iter_mut().filter(|v| **v > 0) {
+            *v = ((*v as f64 * k).floor() as usize).max(1);
+        }
+    }
+    n
+}
+
 /// World-space meshes of all objects for one eye (tessellation adapted to projected size).
 fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
+    let n = resolutions(scene, eye);
     scene
         .objects
         .par_iter()
-        .map(|o| match &o.geometry {
-            Geometry::Patches(p) => {
-                tessellate(p, patch_resolution(o, p, eye)).transformed(&o.transform)
-            }
+        .zip(n.par_iter())
+        .map(|(o, &k)| match &o.geometry {
+            Geometry::Patches(p) => tessellate(p, k).transformed(&o.transform),
             Geometry::Mesh(m) => m.transformed(&o.transform),
         })
         .collect()
 }
 
-/// Bytes of one mesh vertex (position, normal, texture coordinates, tangents) and triangle.
-const MESH_VERTEX: u64 = 24 + 24 + 8 + 48;
-const MESH_TRIANGLE: u64 = 12;
+/// Bytes per tessellated vertex while rendering: the mesh (position, normal, texture
+/// coordinates, tangents) and its transformed copy, the clipped vertex array (with the copy
+/// made while it is filled) and the screen positions.
+const BYTES_PER_VERTEX: u64 = 2 * (24 + 24 + 8 + 48) + 2 * std::mem::size_of::<Vert>() as u64 + 24;
+/// Bytes per triangle: its indices in the mesh, the screen triangle (with the slack of a
+/// growing vector) and its entries in the row bins.
+const BYTES_PER_TRIANGLE: u64 = 12 + 3 * std::mem::size_of::<Tri>() as u64 / 2 + 16;
 
 /// Memory a scene render needs, part by part, estimated before tessellating.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -235,12 +277,14 @@ fn eyes(scene: &Scene) -> (usize, usize, Vec<(Eye, usize)>) {
 /// tessellation the renderer will choose, every triangle visible, colour buffers per eye.
 pub fn estimate_memory(scene: &Scene) -> MemoryEstimate {
     let (w, h, eyes) = eyes(scene);
+    // Eyes render one after the other: the larger tessellation counts.
     let (mut vertices, mut triangles) = (0u64, 0u64);
     for (eye, _) in &eyes {
-        for o in &scene.objects {
-            let (v, t) = match &o.geometry {
+        let (mut v, mut t) = (0u64, 0u64);
+        for (o, k) in scene.objects.iter().zip(resolutions(scene, eye)) {
+            let (dv, dt) = match &o.geometry {
                 Geometry::Patches(p) => {
-                    let n = patch_resolution(o, p, eye).max(1) as u64;
+                    let n = k.max(1) as u64;
                     (
                         p.len() as u64 * (n + 1) * (n + 1),
                         p.len() as u64 * 2 * n * n,
@@ -248,19 +292,18 @@ pub fn estimate_memory(scene: &Scene) -> MemoryEstimate {
                 }
                 Geometry::Mesh(m) => (m.positions.len() as u64, m.triangles.len() as u64),
             };
-            vertices = vertices.saturating_add(v);
-            triangles = triangles.saturating_add(t);
+            v = v.saturating_add(dv);
+            t = t.saturating_add(dt);
         }
+        vertices = vertices.max(v);
+        triangles = triangles.max(t);
     }
-    // Per eye the meshes and the shared vertex array live together; eyes render one after
-    // the other, but a stereo pair keeps the left picture while the right one is made.
     let geometry = vertices
-        .saturating_mul(MESH_VERTEX + std::mem::size_of::<Vert>() as u64 + 24)
-        .saturating_add(
-            triangles.saturating_mul(MESH_TRIANGLE + std::mem::size_of::<Tri>() as u64 + 8),
-        );
+        .saturating_mul(BYTES_PER_VERTEX)
+        .saturating_add(triangles.saturating_mul(BYTES_PER_TRIANGLE));
     let px = (w * h) as u64;
     let colour = std::mem::size_of::<Vec3>() as u64;
+    // A stereo pair keeps the left picture while the right one is made, then joins them.
     let pixels = px * colour * if eyes.len() > 1 { 2 } else { 1 }
         + (scene.width as u64 * scene.height as u64) * 3 * 2;
     MemoryEstimate {
