@@ -330,6 +330,20 @@ fn long_image_strips_make_their_gradient() {
         s(&out),
     ]);
     assert_eq!(code, 0, "{err}");
+    // In a view file and as a scene's gradient texture.
+    let v = dir.join("v.esc");
+    std::fs::write(&v, "kind = julia\nsize = 32x24\ngradient = tall.png\n").unwrap();
+    let (code, _, err) = ugnis(&["escape", "--view", s(&v), "-o", s(&out)]);
+    assert_eq!(code, 0, "{err}");
+    let sc = dir.join("g.toml");
+    std::fs::write(
+        &sc,
+        "[[texture]]\nname = \"g\"\nkind = \"gradient\"\ngradient = \"wide.png\"\n\
+         [[object]]\nkind = \"jug\"\ntexture = \"g\"\n",
+    )
+    .unwrap();
+    let loaded = ugnis::io::scene::read(&sc).unwrap();
+    assert_eq!(loaded.scene.textures.len(), 1);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -247,7 +247,8 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
         return bad(format!("zoom {} is out of range", flame.zoom));
     }
     let samples = flame.quality * 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
-    if !(samples <= MAX_TOTAL_SAMPLES) {
+    // NaN (from an infinite zoom factor times zero) is refused too.
+    if samples.is_nan() || samples > MAX_TOTAL_SAMPLES {
         return bad(format!(
             "{samples:.3e} samples (quality {} × 4^zoom {} × {}×{} pixels) are more than the \
              limit of {MAX_TOTAL_SAMPLES:.0e}; lower the quality, the zoom or the size",

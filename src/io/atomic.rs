@@ -39,8 +39,14 @@ impl Drop for Registered {
 /// Remove every temporary file a save is writing now (for an interrupt handler that is about
 /// to end the process, when destructors will not run). Returns how many were removed.
 pub fn remove_pending() -> usize {
+    remove_pending_where(|_| true)
+}
+
+fn remove_pending_where(select: impl Fn(&Path) -> bool) -> usize {
     let Ok(v) = PENDING.lock() else { return 0 };
-    v.iter().filter(|p| std::fs::remove_file(p).is_ok()).count()
+    v.iter()
+        .filter(|p| select(p) && std::fs::remove_file(p).is_ok())
+        .count()
 }
 
 /// The directory a file is saved in ("." for a bare name).
@@ -200,6 +206,17 @@ mod tests {
         })
         .unwrap();
         assert!(!PENDING.lock().unwrap().iter().any(|q| q.starts_with(&dir)));
+        // An interrupt handler removes the file being written; the save then fails cleanly
+        // and the old file stays.
+        let r = write_atomic_with(&p, |f| {
+            f.write_all(b"half")?;
+            // (Only this test's file: other tests may be saving at the same time.)
+            assert_eq!(remove_pending_where(|q| q.starts_with(&dir)), 1);
+            Ok(())
+        });
+        assert!(r.is_err());
+        assert_eq!(std::fs::read(&p).unwrap(), b"x");
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -137,7 +137,7 @@ fn parse_legacy(text: &str, file: &str, numbers: usize) -> Result<Parsed<IfsFile
         name = "ifs".into();
     }
     // 3-D rows have 13 numbers; a count that only 13 divides is a 3-D system.
-    let three_d = numbers % 7 != 0 && numbers % 13 == 0;
+    let three_d = !numbers.is_multiple_of(7) && numbers.is_multiple_of(13);
     let wrapped = format!(
         "{name}{} {{\n{text}\n}}\n",
         if three_d { " (3D)" } else { "" }
