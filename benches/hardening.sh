@@ -51,7 +51,8 @@ open('rev10k.toml', 'w').write(f'[[object]]\nkind = "revolve"\nprofile = [{prof}
 prof = ', '.join(f'[{1 + (k % 3) * 0.1}, {k * 0.001}]' for k in range(3001))
 open('rev1k.toml', 'w').write(f'[[object]]\nkind = "revolve"\nprofile = [{prof}]\n')
 open('objs800k.toml', 'w').write('[[object]]\nkind = "jug"\n' * 800000)
-open('objs5k.toml', 'w').write('[[object]]\nkind = "jug"\n' * 5000)
+open('objs1250.toml', 'w').write('[[object]]\nkind = "jug"\n' * 1250)
+open('objs1251.toml', 'w').write('[[object]]\nkind = "jug"\n' * 1251)
 open('stereo.toml', 'w').write('[camera]\nprojection = "stereo"\n[[object]]\nkind = "jug"\n')
 open('big.ugr', 'w').write(''.join(f'g{k} {{\ngradient:\n index=0 color={k}\n}}\n' for k in range(10000)))
 open('long.map', 'w').write(''.join(f'{k % 256} 0 0\n' for k in range(10000)))
@@ -65,7 +66,8 @@ run "scene jug --size 16000x16000 --supersample 4" "$UGNIS" scene "$JUG" --size 
 run "scene: revolve with 10,000 segments" "$UGNIS" scene rev10k.toml -o s.png
 run "scene: revolve with 1,000 segments (the limit)" "$UGNIS" scene rev1k.toml -o s.png --size 320x240
 run "scene: 800,000 objects" "$UGNIS" scene objs800k.toml -o s.png
-run "scene: 5,000 jugs (100,000 patches, the limit), 320x240" "$UGNIS" scene objs5k.toml -o s.png --size 320x240
+run "scene: 1,250 jugs (25,000 patches, the limit), 320x240" "$UGNIS" scene objs1250.toml -o s.png --size 320x240
+run "scene: 1,251 jugs" "$UGNIS" scene objs1251.toml -o s.png --size 320x240
 run "convert tall.png (1x1,100,000) g.ugr" "$UGNIS" convert tall.png g.ugr
 run "convert wide.png (1,100,000x1) g.map" "$UGNIS" convert wide.png g.map
 run "escape --gradient tall.png" "$UGNIS" escape mandelbrot --gradient tall.png --size 64x48 -o e.png

@@ -175,6 +175,13 @@ fn huge_scenes_are_refused_before_tessellating() {
         .unwrap();
     assert_eq!(e.code, "SCN007", "{e}");
     assert!(e.message.contains("more than 10000 objects"), "{e}");
+    // Too many patches (1251 jugs of 20).
+    let many = "[[object]]\nkind = \"jug\"\n".repeat(1251);
+    let e = ugnis::io::scene::parse(&many, "m.toml", &dir)
+        .err()
+        .unwrap();
+    assert_eq!(e.code, "SCN007", "{e}");
+    assert!(e.message.contains("more than 25000 patches"), "{e}");
     // A profile of 1000 segments (the limit) is coarsened to the triangle budget and fits.
     let profile: Vec<String> = (0..=3000)
         .map(|k| format!("[{}, {}]", 1.0 + (k % 3) as f64 * 0.1, k as f64 * 0.001))

@@ -41,7 +41,7 @@ pub const MAX_TEXTURES: usize = 256;
 /// Most lights in a scene.
 pub const MAX_LIGHTS: usize = 256;
 /// Most Bézier patches in a scene (a jug has 20, the teapot 32).
-pub const MAX_PATCHES: usize = 100_000;
+pub const MAX_PATCHES: usize = 25_000;
 /// Most cubic segments of a surface of revolution's profile (four patches each).
 pub const MAX_PROFILE_SEGMENTS: usize = 1000;
 /// Highest degree of a Bézier patch in either direction.
