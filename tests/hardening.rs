@@ -593,8 +593,10 @@ fn ctrl_c_stops_a_render_and_leaves_nothing_behind() {
     let mut line = String::new();
     err.read_line(&mut line).unwrap();
     assert!(line.contains("rendering"), "{line}");
-    let ok = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
+    // The shell's built-in kill (no procps needed).
+    let ok = Command::new("sh")
+        .arg("-c")
+        .arg(format!("kill -INT {}", child.id()))
         .status()
         .unwrap();
     assert!(ok.success());
