@@ -56,6 +56,12 @@ pub struct CompiledXform {
     pub bad_limit: f64,
 }
 
+/// |v| ≤ limit; false for NaN (which fails every comparison).
+#[inline(always)]
+fn within(v: f64, limit: f64) -> bool {
+    v.abs() <= limit
+}
+
 /// Largest magnitude of a good coordinate for flames of Fractorium's variations: Fractorium
 /// only treats NaN as a bad value (its trig and quaternion variations bring far-away points
 /// back), so only NaN and infinity are bad there.
@@ -163,7 +169,7 @@ impl CompiledXform {
                 nc = 0.0;
             }
         }
-        if !(acc.x.abs() <= self.bad_limit && acc.y.abs() <= self.bad_limit) {
+        if !(within(acc.x, self.bad_limit) && within(acc.y, self.bad_limit)) {
             let q = Pt {
                 x: rng.f11(),
                 y: rng.f11(),
@@ -416,7 +422,7 @@ impl CompiledXform {
         let mut any_bad = false;
         for j in 0..n {
             // `!(a <= l)` is also true for NaN.
-            let b = !(px[j].abs() <= self.bad_limit) | !(py[j].abs() <= self.bad_limit);
+            let b = !within(px[j], self.bad_limit) | !within(py[j], self.bad_limit);
             bad[j] = b;
             any_bad |= b;
         }
