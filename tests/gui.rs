@@ -8,7 +8,7 @@ use egui::accesskit::Role;
 use egui::{Key, Modifiers, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ugnis::app::editor::Selected;
+use ugnis::app::flame_tab::triangles::Selected;
 use ugnis::app::options::Options;
 use ugnis::app::{MENU, Start, UgnisApp};
 use ugnis::flame::{Affine, Flame};
@@ -42,7 +42,7 @@ fn harness(start: Start) -> Harness<'static, UgnisApp> {
 
 fn open(name: &str) -> Harness<'static, UgnisApp> {
     let h = harness(Start::File(example(name)));
-    assert_eq!(h.state().doc.name, name.trim_end_matches(".flame"));
+    assert_eq!(h.state().flame.doc().name, name.trim_end_matches(".flame"));
     h
 }
 
@@ -61,9 +61,9 @@ fn drag(h: &mut Harness<'_, UgnisApp>, a: Pos2, b: Pos2) {
 }
 
 fn selected_coefs(app: &UgnisApp) -> Affine {
-    match app.editor.selected {
-        Selected::Xform(i) => app.doc.flame().xforms[i].coefs,
-        Selected::Final => app.doc.flame().final_xform.as_ref().unwrap().coefs,
+    match app.flame.editor.selected {
+        Selected::Xform(i) => app.flame.doc().flame().xforms[i].coefs,
+        Selected::Final => app.flame.doc().flame().final_xform.as_ref().unwrap().coefs,
     }
 }
 
@@ -74,12 +74,12 @@ fn coefs(m: &Affine) -> [f64; 6] {
 #[test]
 fn dragging_a_vertex_reshapes_by_the_affine_maths_and_undo_is_exact() {
     let mut h = open("sierpinski.flame");
-    let original: Flame = h.state().doc.flame().clone();
-    assert!(!h.state().doc.dirty);
+    let original: Flame = h.state().flame.doc().flame().clone();
+    assert!(!h.state().flame.doc().dirty);
     let before = selected_coefs(h.state());
     let tri = before.triangle();
     // Drag vertex B (the image of X = (1, 0)) by 30 px right and 20 px down.
-    let st = &h.state().editor;
+    let st = &h.state().flame.editor;
     let from = st.screen_from_world(tri[1]);
     assert!(st.canvas.contains(from), "vertex B must be on the canvas");
     let to = from + Vec2::new(30.0, 20.0);
@@ -99,12 +99,12 @@ fn dragging_a_vertex_reshapes_by_the_affine_maths_and_undo_is_exact() {
         (after.b, after.d, after.e, after.f),
         (before.b, before.d, before.e, before.f)
     );
-    assert!(h.state().doc.dirty);
+    assert!(h.state().flame.doc().dirty);
 
     // The whole drag is one undo step, and undo restores the exact flame.
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run_steps(2);
-    assert_eq!(h.state().doc.flame(), &original);
+    assert_eq!(h.state().flame.doc().flame(), &original);
     h.key_press_modifiers(Modifiers::COMMAND, Key::Y);
     h.run_steps(2);
     assert_eq!(selected_coefs(h.state()), after);
@@ -119,7 +119,7 @@ fn dragging_inside_a_triangle_moves_it() {
         (t[0][0] + t[1][0] + t[2][0]) / 3.0,
         (t[0][1] + t[1][1] + t[2][1]) / 3.0,
     ];
-    let st = &h.state().editor;
+    let st = &h.state().flame.editor;
     let from = st.screen_from_world(c);
     let to = from + Vec2::new(-25.0, 15.0);
     let (w0, w1) = (st.world_from_screen(from), st.world_from_screen(to));
@@ -136,7 +136,7 @@ fn dragging_inside_a_triangle_moves_it() {
 }
 
 fn context_menu_delete(h: &mut Harness<'_, UgnisApp>) {
-    let p = h.state().editor.canvas.center();
+    let p = h.state().flame.editor.canvas.center();
     h.event(egui::Event::PointerMoved(p));
     for pressed in [true, false] {
         h.event(egui::Event::PointerButton {
@@ -155,21 +155,25 @@ fn context_menu_delete(h: &mut Harness<'_, UgnisApp>) {
 fn delete_is_refused_at_two_triangles() {
     // Three transforms plus the two its <symmetry kind="-2"/> adds.
     let mut h = open("sierpinski.flame");
-    assert_eq!(h.state().doc.flame().xforms.len(), 5);
+    assert_eq!(h.state().flame.doc().flame().xforms.len(), 5);
     for n in [4, 3, 2, 2] {
         context_menu_delete(&mut h);
         assert_eq!(
-            h.state().doc.flame().xforms.len(),
+            h.state().flame.doc().flame().xforms.len(),
             n,
             "delete below 2 must be refused"
         );
     }
-    assert!(h.state().status.contains("refused"), "{}", h.state().status);
+    assert!(
+        h.state().status().contains("refused"),
+        "{}",
+        h.state().status()
+    );
     // Undo brings the third triangle back.
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run_steps(2);
-    assert_eq!(h.state().doc.flame().xforms.len(), 3);
-    assert!(h.state().doc.can_undo());
+    assert_eq!(h.state().flame.doc().flame().xforms.len(), 3);
+    assert!(h.state().flame.doc().can_undo());
 }
 
 #[test]
@@ -217,19 +221,22 @@ fn every_menu_item_exists_with_its_shortcut() {
 #[test]
 fn shortcuts_reach_their_commands() {
     let mut h = open("sierpinski.flame");
-    assert!(h.state().show_editor);
+    assert!(h.state().flame.show_editor);
     h.key_press(Key::F4);
     h.run_steps(2);
-    assert!(!h.state().show_editor, "F4 toggles the editor");
-    assert!(!h.state().gradients.open);
+    assert!(!h.state().flame.show_editor, "F4 toggles the editor");
+    assert!(!h.state().flame.gradients.open);
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     h.run_steps(2);
-    assert!(h.state().gradients.open, "Ctrl+G opens the gradient window");
-    let before = h.state().doc.flame().clone();
+    assert!(
+        h.state().flame.gradients.open,
+        "Ctrl+G opens the gradient window"
+    );
+    let before = h.state().flame.doc().flame().clone();
     h.key_press_modifiers(Modifiers::COMMAND, Key::R);
     h.run_steps(2);
     assert_ne!(
-        h.state().doc.flame(),
+        h.state().flame.doc().flame(),
         &before,
         "Ctrl+R makes a random flame"
     );
@@ -241,11 +248,11 @@ fn shortcuts_reach_their_commands() {
     h.get_by_label("Swirl").click();
     h.run_steps(2);
     let swirl = ugnis::flame::variations::by_name("swirl").unwrap();
-    for x in &h.state().doc.flame().xforms {
+    for x in &h.state().flame.doc().flame().xforms {
         assert_eq!(x.vars.len(), 1);
         assert_eq!(x.vars[0].id, swirl);
     }
-    assert!(h.state().status.to_lowercase().contains("swirl"));
+    assert!(h.state().status().to_lowercase().contains("swirl"));
 }
 
 #[test]
@@ -257,8 +264,11 @@ fn save_then_open_round_trips() {
 
     let mut h = open("orchid.flame");
     // An edit, so that the saved file differs from the example.
-    h.state_mut().doc.edit(|f| f.xforms[0].color = 0.25);
-    let edited = h.state().doc.flame().clone();
+    h.state_mut()
+        .flame
+        .doc_mut()
+        .edit(|f| f.xforms[0].color = 0.25);
+    let edited = h.state().flame.doc().flame().clone();
     h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
     h.run_steps(2);
     let field = h.get_by_role_and_label(Role::TextInput, "File name");
@@ -275,12 +285,12 @@ fn save_then_open_round_trips() {
         .click();
     h.run_steps(3);
     assert!(path.is_file(), "Save As wrote nothing");
-    assert!(!h.state().doc.dirty);
-    assert_eq!(h.state().doc.path.as_deref(), Some(path.as_path()));
+    assert!(!h.state().flame.doc().dirty);
+    assert_eq!(h.state().flame.doc().path.as_deref(), Some(path.as_path()));
 
     // Open it in a fresh app: the same flame comes back.
     let h2 = harness(Start::File(path.clone()));
-    let back = h2.state().doc.flame();
+    let back = h2.state().flame.doc().flame();
     assert_eq!(back.xforms.len(), edited.xforms.len());
     for (a, b) in back.xforms.iter().zip(&edited.xforms) {
         assert_eq!(a.coefs, b.coefs);
@@ -295,7 +305,10 @@ fn save_then_open_round_trips() {
 #[test]
 fn closing_with_unsaved_changes_asks() {
     let mut h = open("sierpinski.flame");
-    h.state_mut().doc.edit(|f| f.xforms[0].color = 0.5);
+    h.state_mut()
+        .flame
+        .doc_mut()
+        .edit(|f| f.xforms[0].color = 0.5);
     h.input_mut()
         .viewports
         .entry(egui::ViewportId::ROOT)
@@ -311,54 +324,57 @@ fn closing_with_unsaved_changes_asks() {
     h.get_by_role_and_label(Role::Button, "Cancel").click();
     h.run_steps(2);
     assert!(h.query_by_label("Unsaved changes").is_none());
-    assert!(h.state().doc.dirty);
-    assert_eq!(h.state().doc.flame().xforms[0].color, 0.5);
+    assert!(h.state().flame.doc().dirty);
+    assert_eq!(h.state().flame.doc().flame().xforms[0].color, 0.5);
 }
 
 #[test]
 fn choosing_a_gradient_recolours_as_one_undo_step() {
     let mut h = open("sierpinski.flame");
-    let before = h.state().doc.flame().clone();
+    let before = h.state().flame.doc().flame().clone();
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     h.run_steps(2);
     h.get_by_label("glacier").click();
     h.run_steps(2);
-    let f = h.state().doc.flame();
+    let f = h.state().flame.doc().flame();
     let glacier = ugnis::gradient::builtin_named("glacier").unwrap();
     assert_eq!(f.palette.colors, glacier.colors);
     assert_eq!(f.xforms, before.xforms, "only the colours change");
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run_steps(2);
-    assert_eq!(h.state().doc.flame(), &before);
+    assert_eq!(h.state().flame.doc().flame(), &before);
 }
 
 #[test]
 fn a_failed_save_says_so_and_keeps_the_changes() {
     let mut h = open("sierpinski.flame");
-    h.state_mut().doc.edit(|f| f.xforms[0].color = 0.75);
+    h.state_mut()
+        .flame
+        .doc_mut()
+        .edit(|f| f.xforms[0].color = 0.75);
     let target = Path::new("/nonexistent-ugnis-dir/out.fla");
     assert!(!h.state_mut().save_to(target));
     h.run_steps(2);
     assert!(h.query_by_label("Cannot save").is_some());
-    assert!(h.state().doc.dirty);
-    assert_ne!(h.state().doc.path.as_deref(), Some(target));
+    assert!(h.state().flame.doc().dirty);
+    assert_ne!(h.state().flame.doc().path.as_deref(), Some(target));
 }
 
 #[test]
 fn random_batch_is_browsed_beside_the_file_and_kept_into_it() {
     let mut h = open("sierpinski.flame");
     let data = std::env::temp_dir().join(format!("ugnis-gui-data-{}", std::process::id()));
-    h.state_mut().data_dir = Some(data.clone());
-    let file_flames = h.state().doc.flames.clone();
+    h.state_mut().flame.data_dir = Some(data.clone());
+    let file_flames = h.state().flame.doc().flames.clone();
     h.key_press_modifiers(Modifiers::COMMAND, Key::B);
     let t = std::time::Instant::now();
-    while h.state().batch_doc().is_none() {
+    while h.state().flame.batch.as_ref().is_none() {
         assert!(t.elapsed().as_secs() < 120, "no batch after 2 minutes");
         std::thread::sleep(std::time::Duration::from_millis(50));
         h.step();
     }
     h.run_steps(2);
-    let batch = h.state().batch_doc().unwrap().flames.clone();
+    let batch = h.state().flame.batch.as_ref().unwrap().flames.clone();
     assert_eq!(batch.len(), 100);
     assert_eq!(batch[1].name, "random-002");
     // Kept as the last batch in the data directory, and the open file is untouched.
@@ -366,60 +382,61 @@ fn random_batch_is_browsed_beside_the_file_and_kept_into_it() {
         .unwrap()
         .value;
     assert_eq!(saved.len(), 100);
-    assert_eq!(h.state().file_doc().flames, file_flames);
-    assert!(!h.state().file_doc().dirty);
+    assert_eq!(h.state().flame.file.flames, file_flames);
+    assert!(!h.state().flame.file.dirty);
 
     // A click loads a batch flame into the editor.
     h.get_by_label("random-002").click();
     h.run_steps(2);
-    assert!(h.state().viewing_batch);
-    assert_eq!(h.state().doc.flame().name, "random-002");
+    assert!(h.state().flame.viewing_batch());
+    assert_eq!(h.state().flame.doc().flame().name, "random-002");
     // Keep copies it (here the first visible one, random-001) into the open file.
     h.get_all_by_label("Keep").next().unwrap().click();
     h.run_steps(2);
-    assert!(!h.state().viewing_batch);
-    let f = &h.state().doc;
+    assert!(!h.state().flame.viewing_batch());
+    let f = &h.state().flame.doc();
     assert_eq!(f.flames.len(), file_flames.len() + 1);
     assert_eq!(f.flame().name, "random-001");
     assert!(f.dirty);
     // Undo in the file removes it again.
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run_steps(2);
-    assert_eq!(h.state().doc.flames, file_flames);
+    assert_eq!(h.state().flame.doc().flames, file_flames);
     let _ = std::fs::remove_dir_all(&data);
 }
 
 #[test]
 fn mutation_window_makes_a_mutant_current_and_undo_returns() {
     let mut h = open("sierpinski.flame");
-    let before = h.state().doc.flame().clone();
+    let before = h.state().flame.doc().flame().clone();
     h.key_press_modifiers(Modifiers::COMMAND, Key::U);
     h.run_steps(2);
-    assert!(h.state().mutations.open);
-    let mutants = h.state().mutations.mutants.clone();
+    assert!(h.state().flame.mutations.open);
+    let mutants = h.state().flame.mutations.mutants.clone();
     assert_eq!(mutants.len(), 8);
     assert!(mutants.iter().all(|m| m.xforms != before.xforms));
     h.get_by_role_and_label(Role::Button, "+ transform").click();
     h.run_steps(2);
-    let now = h.state().doc.flame().clone();
+    let now = h.state().flame.doc().flame().clone();
     assert_eq!(now.xforms.len(), before.xforms.len() + 1);
     assert_eq!(now, mutants[3]);
     // The grid moves on: new mutants around the new centre.
-    assert_ne!(h.state().mutations.mutants, mutants);
+    assert_ne!(h.state().flame.mutations.mutants, mutants);
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run_steps(2);
-    assert_eq!(h.state().doc.flame(), &before);
+    assert_eq!(h.state().flame.doc().flame(), &before);
 }
 
 #[test]
 fn morph_plays_in_betweens_to_the_next_flame_without_editing() {
     let mut h = harness(Start::File(example("gallery.fla")));
-    assert_eq!(h.state().doc.flames.len(), 4);
-    let before = h.state().doc.flame().clone();
+    assert_eq!(h.state().flame.doc().flames.len(), 4);
+    let before = h.state().flame.doc().flame().clone();
     h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::M);
     h.run_steps(2);
     let m = h
         .state()
+        .flame
         .morph
         .as_ref()
         .expect("Ctrl+Shift+M starts the morph");
@@ -429,7 +446,7 @@ fn morph_plays_in_betweens_to_the_next_flame_without_editing() {
     let n0 = before.xforms.len();
     assert!(m.frames[0].xforms[..n0] == before.xforms[..]);
     assert!(m.frames[0].xforms[n0..].iter().all(|x| x.weight == 0.0));
-    let next = &h.state().doc.flames[1];
+    let next = &h.state().flame.doc().flames[1];
     let last = &m.frames[m.frames.len() - 1];
     assert_eq!(
         last.xforms.len(),
@@ -440,26 +457,26 @@ fn morph_plays_in_betweens_to_the_next_flame_without_editing() {
     let mut seen = 0;
     for _ in 0..400 {
         h.run_steps(1);
-        seen = seen.max(h.state().morph.as_ref().unwrap().index);
+        seen = seen.max(h.state().flame.morph.as_ref().unwrap().index);
         if seen >= 3 {
             break;
         }
         std::thread::sleep(std::time::Duration::from_millis(25));
     }
     assert!(seen >= 3, "the morph did not advance");
-    assert!(h.state().status.contains("orchid -> ember-swirl"));
+    assert!(h.state().status().contains("orchid -> ember-swirl"));
     // The document is untouched; any edit stops the morph.
-    assert!(h.state().doc.flame() == &before);
-    assert!(!h.state().doc.dirty);
+    assert!(h.state().flame.doc().flame() == &before);
+    assert!(!h.state().flame.doc().dirty);
     h.key_press_modifiers(Modifiers::COMMAND, Key::R);
     h.run_steps(3);
-    assert!(h.state().morph.is_none());
+    assert!(h.state().flame.morph.is_none());
     // A single flame has nothing to morph to.
     let mut h = open("sierpinski.flame");
     h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::M);
     h.run_steps(2);
-    assert!(h.state().morph.is_none());
-    assert!(h.state().status.contains("two or more flames"));
+    assert!(h.state().flame.morph.is_none());
+    assert!(h.state().status().contains("two or more flames"));
 }
 
 fn escape_tab() -> Harness<'static, UgnisApp> {
@@ -537,9 +554,9 @@ fn escape_tab_zooms_past_f64_by_perturbation() {
     let v1 = h.state().escape.doc.view;
     assert!(v1.half_height < 1e-16, "{v1:?}");
     assert!(
-        !h.state().escape.status.contains("limit"),
+        !h.state().escape.notices.status.contains("limit"),
         "{}",
-        h.state().escape.status
+        h.state().escape.notices.status
     );
     assert!(
         h.state()
@@ -560,9 +577,9 @@ fn escape_tab_zooms_past_f64_by_perturbation() {
     // Past the double-double limit the zoom stops with a message.
     h.state_mut().escape.zoom_at(mid, 1e13);
     assert!(
-        h.state().escape.status.contains("deep-zoom limit"),
+        h.state().escape.notices.status.contains("deep-zoom limit"),
         "{}",
-        h.state().escape.status
+        h.state().escape.notices.status
     );
     assert_eq!(h.state().escape.doc.view, v2);
 }
@@ -689,11 +706,11 @@ fn scene_tab_orbits_moves_lights_and_changes_textures() {
         "the camera stayed"
     );
     // A procedural texture replaces the jug's texture (made in the background).
-    let flame = h.state().doc.flame().clone();
+    let flame = h.state().flame.doc().flame().clone();
     let esc = h.state().escape.doc.clone();
     h.state_mut()
         .scene
-        .set_source(ugnis::app::scene_view::TextureSource::Checker, &flame, &esc);
+        .set_source(ugnis::app::scene_tab::TextureSource::Checker, &flame, &esc);
     let t = std::time::Instant::now();
     while h
         .state()

@@ -2,9 +2,10 @@
 //! button for the system dialog (rfd, xdg-portal), plus small message and confirm dialogs.
 
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{Receiver, channel};
 
 use eframe::egui;
+
+use super::worker::{Repaint, TaskWorker, task_worker};
 
 /// What a file chooser is for; decides the title, filters and whether the file must exist.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,11 +72,18 @@ pub struct FileBrowser {
     pub name: String,
     entries: Vec<(String, bool)>,
     error: Option<String>,
-    system: Option<Receiver<Option<PathBuf>>>,
+    /// The platform's dialog, run in the background while this one waits.
+    system: Option<TaskWorker<Option<PathBuf>>>,
+    repaint: Repaint,
 }
 
 impl FileBrowser {
-    pub fn new(purpose: Purpose, start: Option<&Path>, name: &str) -> FileBrowser {
+    pub fn new(
+        purpose: Purpose,
+        start: Option<&Path>,
+        name: &str,
+        repaint: Repaint,
+    ) -> FileBrowser {
         let dir = start
             .map(|p| {
                 if p.is_dir() {
@@ -94,6 +102,7 @@ impl FileBrowser {
             entries: Vec::new(),
             error: None,
             system: None,
+            repaint,
         };
         b.refresh();
         b
@@ -130,8 +139,8 @@ impl FileBrowser {
     /// Show the browser. Returns Some(Some(path)) when chosen, Some(None) when cancelled.
     pub fn show(&mut self, ctx: &egui::Context) -> Option<Option<PathBuf>> {
         // A pending system dialog answers first.
-        if let Some(rx) = &self.system
-            && let Ok(r) = rx.try_recv()
+        if let Some(w) = &self.system
+            && let Some(r) = w.poll().pop()
         {
             self.system = None;
             match r {
@@ -220,7 +229,10 @@ impl FileBrowser {
                     .add_enabled(self.system.is_none(), egui::Button::new("System dialog…"))
                     .clicked()
                 {
-                    self.system = Some(system_dialog(self.purpose, &self.dir, &self.name));
+                    let r = self.repaint.clone();
+                    let w = task_worker("ugnis-file-dialog", move || r());
+                    w.submit(system_dialog(self.purpose, &self.dir, &self.name));
+                    self.system = Some(w);
                 }
             });
         });
@@ -238,24 +250,34 @@ impl FileBrowser {
     }
 }
 
-/// Run the platform's file dialog on a thread; the answer arrives on the channel.
-fn system_dialog(purpose: Purpose, dir: &Path, name: &str) -> Receiver<Option<PathBuf>> {
-    let (tx, rx) = channel();
+impl Drop for FileBrowser {
+    fn drop(&mut self) {
+        // The platform's dialog cannot be closed from here: let it finish on its own.
+        if let Some(w) = self.system.take() {
+            w.detach();
+        }
+    }
+}
+
+/// The platform's file dialog, as a background task.
+fn system_dialog(
+    purpose: Purpose,
+    dir: &Path,
+    name: &str,
+) -> crate::app::worker::Task<Option<PathBuf>> {
     let dir = dir.to_path_buf();
     let name = name.to_string();
-    std::thread::spawn(move || {
+    Box::new(move |_, _| {
         let d = rfd::FileDialog::new()
             .set_title(purpose.title())
             .set_directory(&dir)
             .add_filter(purpose.title(), purpose.extensions());
-        let r = if purpose.saving() {
+        if purpose.saving() {
             d.set_file_name(&name).save_file()
         } else {
             d.pick_file()
-        };
-        let _ = tx.send(r);
-    });
-    rx
+        }
+    })
 }
 
 /// The choices of a confirm dialog.

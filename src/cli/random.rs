@@ -165,7 +165,6 @@ pub fn run(a: RandomArgs) -> Result<()> {
         .file_stem()
         .map_or_else(|| "random".into(), |s| s.to_string_lossy().into_owned());
     io::write_flames(&a.output, &name, &flames)
-        .map_err(|e| anyhow::anyhow!(e))
         .with_context(|| format!("cannot write '{}'", a.output.display()))?;
     if a.count > 1 {
         let ok = passed.load(Ordering::Relaxed);

@@ -1,12 +1,10 @@
 //! Export image: size, quality, PNG/BMP; rendered in the background with progress and Cancel.
 
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::thread::JoinHandle;
 
 use eframe::egui;
 
+use crate::app::worker::{TaskWorker, task_worker};
 use crate::flame::render::{RenderOptions, Renderer};
 use crate::flame::{Flame, OutputFormat};
 
@@ -22,25 +20,26 @@ pub struct ExportSettings {
     pub path: PathBuf,
 }
 
-/// A running export.
+/// A running export, with progress and Cancel.
 pub struct ExportJob {
     pub path: PathBuf,
-    progress: Arc<AtomicU64>,
-    cancel: Arc<AtomicBool>,
-    handle: Option<JoinHandle<Result<(), String>>>,
+    worker: TaskWorker<Result<(), String>>,
 }
 
 impl ExportJob {
-    pub fn start(flame: &Flame, s: &ExportSettings, threads: usize) -> ExportJob {
+    pub fn start(
+        flame: &Flame,
+        s: &ExportSettings,
+        threads: usize,
+        repaint: impl Fn() + Send + 'static,
+    ) -> ExportJob {
         let mut f = flame.clone();
         f.resize_keep_framing(s.width, s.height);
         f.quality = s.quality;
         f.supersample = s.supersample.max(1);
-        let progress = Arc::new(AtomicU64::new(0));
-        let cancel = Arc::new(AtomicBool::new(false));
-        let (p, c) = (progress.clone(), cancel.clone());
         let settings = s.clone();
-        let handle = std::thread::spawn(move || {
+        let worker = task_worker("ugnis-export", repaint);
+        worker.submit(Box::new(move |cancel, progress| {
             let opts = RenderOptions {
                 seed: f.seed.unwrap_or(1),
                 threads,
@@ -51,7 +50,7 @@ impl ExportJob {
                 ..RenderOptions::default()
             };
             let mut r = Renderer::new(&f, &opts).map_err(|e| e.to_string())?;
-            if !r.run_all(200, &c, |fr| p.store((fr * 1e6) as u64, Ordering::Relaxed)) {
+            if !r.run_all(200, cancel, progress) {
                 return Err("export cancelled".into());
             }
             let samples = r.samples_done();
@@ -69,30 +68,24 @@ impl ExportJob {
                 crate::io::png::save(&settings.path, &img, &meta)
             }
             .map_err(|e| format!("cannot write {}: {e}", settings.path.display()))
-        });
+        }));
         ExportJob {
             path: s.path.clone(),
-            progress,
-            cancel,
-            handle: Some(handle),
+            worker,
         }
     }
 
     pub fn fraction(&self) -> f64 {
-        self.progress.load(Ordering::Relaxed) as f64 / 1e6
+        self.worker.progress()
     }
 
     pub fn cancel(&self) {
-        self.cancel.store(true, Ordering::SeqCst);
+        self.worker.cancel();
     }
 
     /// The result once the job has finished.
     pub fn poll(&mut self) -> Option<Result<(), String>> {
-        if self.handle.as_ref().is_some_and(|h| h.is_finished()) {
-            let h = self.handle.take()?;
-            return Some(h.join().unwrap_or_else(|_| Err("export failed".into())));
-        }
-        None
+        self.worker.poll().pop()
     }
 }
 

@@ -1,13 +1,14 @@
-//! The triangle editor (flame.md §1.1): every xform drawn as the image of the reference
-//! triangle O = (0, 0), X = (1, 0), Y = (0, −1); drag inside to move, drag a vertex to reshape,
-//! rotate and scale modes about the triangle's centre or the world origin, post and final
-//! xforms, grid, wheel zoom and pan, and numeric panels for everything.
+//! The triangle editor: every xform drawn as the image of the reference triangle O = (0, 0),
+//! X = (1, 0), Y = (0, −1) (the triangle of an affine map x' = a·x + b·y + e,
+//! y' = c·x + d·y + f has the corners O′ = (e, f), X′ = (a + e, c + f), Y′ = (e − b, f − d));
+//! drag inside to move, drag a vertex to reshape, rotate and scale modes about the triangle's
+//! centre or the world origin, post and final xforms, grid, wheel zoom and pan.
 
 use eframe::egui::{self, Color32, Pos2, Rect, Sense, Shape, Stroke, Vec2};
 
-use crate::app::document::Document;
-use crate::flame::variations::{self, Form, VarId};
-use crate::flame::{Affine, Flame, Var, Xform};
+use super::document::Document;
+use crate::app::a11y::named;
+use crate::flame::{Affine, Flame, Xform};
 
 /// What a drag does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -75,8 +76,6 @@ pub struct EditorState {
     /// Variation list filter in the panel.
     pub var_filter: String,
     pub show_all_vars: bool,
-    /// A message for the status bar (e.g. "Delete refused").
-    pub notice: Option<String>,
 }
 
 impl Default for EditorState {
@@ -95,7 +94,6 @@ impl Default for EditorState {
             gesture: None,
             var_filter: String::new(),
             show_all_vars: false,
-            notice: None,
         }
     }
 }
@@ -139,7 +137,7 @@ impl EditorState {
         if self.edit_post { x.post } else { x.coefs }
     }
 
-    fn set_map(&self, x: &mut Xform, m: Affine) {
+    pub fn set_map(&self, x: &mut Xform, m: Affine) {
         if self.edit_post {
             x.post = m;
         } else {
@@ -181,14 +179,14 @@ impl EditorState {
     }
 }
 
-fn xform_of(f: &Flame, s: Selected) -> Option<&Xform> {
+pub fn xform_of(f: &Flame, s: Selected) -> Option<&Xform> {
     match s {
         Selected::Xform(i) => f.xforms.get(i),
         Selected::Final => f.final_xform.as_ref(),
     }
 }
 
-fn xform_of_mut(f: &mut Flame, s: Selected) -> Option<&mut Xform> {
+pub fn xform_of_mut(f: &mut Flame, s: Selected) -> Option<&mut Xform> {
     match s {
         Selected::Xform(i) => f.xforms.get_mut(i),
         Selected::Final => f.final_xform.as_mut(),
@@ -247,8 +245,8 @@ pub struct CanvasOutput {
     pub action: Option<EditorAction>,
 }
 
-/// Delete the selected xform, refused below 2 (flame.md §1.1). Returns an explanation when
-/// refused.
+/// Delete the selected xform, refused below 2 (a flame needs two maps to be more than a single
+/// curve; the thesis program's rule). Returns an explanation when refused.
 pub fn delete_selected(doc: &mut Document, st: &mut EditorState) -> Result<(), String> {
     match st.selected {
         Selected::Final => {
@@ -290,7 +288,8 @@ pub fn duplicate_selected(doc: &mut Document, st: &mut EditorState, auto_weights
     st.selected = Selected::Xform(doc.flame().xforms.len() - 1);
 }
 
-/// Add a new linear xform (the editor defaults of flame.md §2).
+/// Add a new linear xform: weight 0.5, colour 1, a half-size square beside the reference
+/// triangle.
 pub fn add_xform(doc: &mut Document, st: &mut EditorState, auto_weights: bool) {
     doc.edit(|f| {
         let n = f.xforms.len() + 1;
@@ -655,7 +654,7 @@ pub fn toolbar(ui: &mut egui::Ui, st: &mut EditorState, flame: &Flame) -> Option
             action = Some(EditorAction::AutoZoom);
         }
         ui.separator();
-        egui::ComboBox::from_id_salt("xform-select")
+        let r = egui::ComboBox::from_id_salt("xform-select")
             .selected_text(match st.selected {
                 Selected::Xform(i) => format!("Transform {}", i + 1),
                 Selected::Final => "Final".to_string(),
@@ -672,217 +671,9 @@ pub fn toolbar(ui: &mut egui::Ui, st: &mut EditorState, flame: &Flame) -> Option
                     ui.selectable_value(&mut st.selected, Selected::Final, "Final");
                 }
             });
+        named(r.response, "Selected transform");
     });
     action
-}
-
-/// A numeric field; returns true when changed.
-fn num(ui: &mut egui::Ui, v: &mut f64, speed: f64) -> bool {
-    ui.add(egui::DragValue::new(v).speed(speed).max_decimals(6))
-        .changed()
-}
-
-/// The numeric panels of the selected xform. Returns true when the flame changed.
-pub fn panels(
-    ui: &mut egui::Ui,
-    doc: &mut Document,
-    st: &mut EditorState,
-    auto_weights: bool,
-) -> bool {
-    st.fix_selection(doc.flame());
-    let sel = st.selected;
-    let Some(x0) = xform_of(doc.flame(), sel).cloned() else {
-        ui.label("No transform selected");
-        return false;
-    };
-    let mut x = x0.clone();
-    let mut m = st.map_of(&x);
-    let mut tri = m.triangle();
-    let mut tri_changed = false;
-    let mut coef_changed = false;
-    egui::CollapsingHeader::new(if st.edit_post {
-        "Post triangle"
-    } else {
-        "Triangle"
-    })
-    .default_open(true)
-    .show(ui, |ui| {
-        egui::Grid::new("tri-grid").num_columns(3).show(ui, |ui| {
-            for (k, l) in ["A (O)", "B (X)", "C (Y)"].iter().enumerate() {
-                ui.label(*l);
-                tri_changed |= num(ui, &mut tri[k][0], 0.01);
-                tri_changed |= num(ui, &mut tri[k][1], 0.01);
-                ui.end_row();
-            }
-        });
-        ui.label("Coefficients  x' = a·x + b·y + e,  y' = c·x + d·y + f");
-        egui::Grid::new("coef-grid").num_columns(6).show(ui, |ui| {
-            for (l, v) in [("a", &mut m.a), ("b", &mut m.b), ("e", &mut m.e)] {
-                ui.label(l);
-                coef_changed |= num(ui, v, 0.01);
-            }
-            ui.end_row();
-            for (l, v) in [("c", &mut m.c), ("d", &mut m.d), ("f", &mut m.f)] {
-                ui.label(l);
-                coef_changed |= num(ui, v, 0.01);
-            }
-            ui.end_row();
-        });
-        ui.horizontal(|ui| {
-            if ui.button("Reset").on_hover_text("identity map").clicked() {
-                m = Affine::IDENTITY;
-                coef_changed = true;
-            }
-            if ui.button("Flip H").clicked() {
-                m = Affine::new(-1.0, 0.0, 0.0, 1.0, 0.0, 0.0).compose(&m);
-                coef_changed = true;
-            }
-            if ui.button("Flip V").clicked() {
-                m = Affine::new(1.0, 0.0, 0.0, -1.0, 0.0, 0.0).compose(&m);
-                coef_changed = true;
-            }
-            ui.label(format!("det {:.4}", m.det()));
-        });
-    });
-    if tri_changed {
-        st.set_map(&mut x, Affine::from_triangle(tri));
-    } else if coef_changed {
-        st.set_map(&mut x, m);
-    }
-    egui::CollapsingHeader::new("Weight and colour")
-        .default_open(true)
-        .show(ui, |ui| {
-            egui::Grid::new("wc-grid").num_columns(2).show(ui, |ui| {
-                if sel != Selected::Final {
-                    ui.label("Weight");
-                    ui.add_enabled(
-                        !auto_weights,
-                        egui::DragValue::new(&mut x.weight)
-                            .speed(0.01)
-                            .range(0.0..=1e6),
-                    )
-                    .on_disabled_hover_text(
-                        "weights follow the triangle areas (Options › General)",
-                    );
-                    ui.end_row();
-                }
-                ui.label("Colour");
-                ui.add(egui::Slider::new(&mut x.color, 0.0..=1.0));
-                ui.end_row();
-                ui.label("Colour speed");
-                ui.add(egui::Slider::new(&mut x.color_speed, 0.0..=1.0));
-                ui.end_row();
-                ui.label("Opacity");
-                ui.add(egui::Slider::new(&mut x.opacity, 0.0..=1.0));
-                ui.end_row();
-            });
-        });
-    egui::CollapsingHeader::new("Variations")
-        .default_open(true)
-        .show(ui, |ui| {
-            ui.horizontal(|ui| {
-                ui.label("Find");
-                ui.text_edit_singleline(&mut st.var_filter);
-                ui.checkbox(&mut st.show_all_vars, "all");
-                if ui
-                    .button("Normalise")
-                    .on_hover_text("divide the weights by their sum")
-                    .clicked()
-                {
-                    let s: f64 = x.vars.iter().map(|v| v.weight).sum();
-                    if s != 0.0 {
-                        for v in &mut x.vars {
-                            v.weight /= s;
-                        }
-                    }
-                }
-            });
-            let filter = st.var_filter.trim().to_ascii_lowercase();
-            // The variations in use first (every form), then the others that match the Find
-            // box — all of them when "all" is ticked.
-            let mut rows: Vec<(VarId, Form)> = x.vars.iter().map(|v| (v.id, v.form)).collect();
-            if st.show_all_vars || !filter.is_empty() {
-                for id in 0..variations::count() as VarId {
-                    let info = variations::info(id);
-                    if info.has(variations::flag::HIDDEN) {
-                        continue;
-                    }
-                    for form in [Form::Regular, Form::Pre, Form::Post] {
-                        if info.has(variations::flag::POST_ONLY) && form != Form::Post {
-                            continue;
-                        }
-                        let name = variations::attr_name(id, form);
-                        if (filter.is_empty() || name.to_ascii_lowercase().contains(&filter))
-                            && !rows.contains(&(id, form))
-                        {
-                            rows.push((id, form));
-                        }
-                    }
-                }
-            }
-            egui::ScrollArea::vertical()
-                .max_height(320.0)
-                .id_salt("var-scroll")
-                .show(ui, |ui| {
-                    egui::Grid::new("var-grid")
-                        .num_columns(2)
-                        .striped(true)
-                        .show(ui, |ui| {
-                            for &(id, form) in rows.iter().take(400) {
-                                let info = variations::info(id);
-                                let pos = x.vars.iter().position(|v| v.id == id && v.form == form);
-                                let mut w = pos.map_or(0.0, |i| x.vars[i].weight);
-                                ui.label(variations::attr_name(id, form));
-                                if num(ui, &mut w, 0.01) {
-                                    match pos {
-                                        Some(i) => x.vars[i].weight = w,
-                                        None if w != 0.0 => {
-                                            x.vars.push(Var::with_form(id, form, w));
-                                        }
-                                        None => {}
-                                    }
-                                    x.vars.retain(|v| v.weight != 0.0);
-                                }
-                                ui.end_row();
-                                if let Some(v) =
-                                    x.vars.iter_mut().find(|v| v.id == id && v.form == form)
-                                {
-                                    for pi in 0..info.params.len() {
-                                        ui.label(format!(
-                                            "    {}",
-                                            variations::param_attr_name(id, form, pi)
-                                        ));
-                                        num(ui, &mut v.params[pi], 0.01);
-                                        ui.end_row();
-                                    }
-                                }
-                            }
-                            if rows.len() > 400 {
-                                ui.label(format!(
-                                    "… {} more: type in Find to narrow the list",
-                                    rows.len() - 400
-                                ));
-                                ui.end_row();
-                            }
-                        });
-                });
-            for (n, w) in x.unsupported_vars() {
-                ui.label(format!("{n} = {w} (kept, not rendered)"));
-            }
-        });
-    if x != x0 {
-        let geometry = x.coefs != x0.coefs;
-        doc.edit(|f| {
-            if let Some(t) = xform_of_mut(f, sel) {
-                *t = x;
-            }
-            if auto_weights && geometry && sel != Selected::Final {
-                f.set_determinant_weights();
-            }
-        });
-        return true;
-    }
-    false
 }
 
 #[cfg(test)]
