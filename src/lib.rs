@@ -10,6 +10,7 @@ pub mod flame;
 pub mod gradient;
 pub mod io;
 pub mod noise;
+pub mod palette;
 pub mod rng;
 pub mod surface;
 

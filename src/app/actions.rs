@@ -7,6 +7,7 @@ use crate::flame::variations::{self, VarId};
 /// Every command of the menus, toolbar and shortcuts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Action {
+    New,
     Open,
     Save,
     SaveAs,
@@ -38,6 +39,13 @@ pub enum Action {
     EqualWeights,
     AreaWeights,
     ShowOptions,
+    ShowPaletteEditor,
+    ShowVariationFilter,
+    /// Random flames draw their variations from the variations filter.
+    UseVariationFilter,
+    ShowShortcuts,
+    ShowPanelHelp,
+    ShowAbout,
 }
 
 /// A menu entry: menu, label, action, shortcut.
@@ -70,10 +78,11 @@ const fn item(
 }
 
 /// The menus, in order (the thesis program's, with Apophysis conventions where it is silent).
-pub const MENUS: [&str; 4] = ["File", "Edit", "View", "Tools"];
+pub const MENUS: [&str; 5] = ["File", "Edit", "View", "Tools", "Help"];
 
 /// The menu entries.
 pub const MENU: &[MenuItem] = &[
+    item("File", "New", Action::New, sc(CMD, Key::N)),
     item("File", "Open…", Action::Open, sc(CMD, Key::O)),
     item("File", "Save", Action::Save, sc(CMD, Key::S)),
     item("File", "Save As…", Action::SaveAs, sc(CMD_SHIFT, Key::S)),
@@ -121,6 +130,12 @@ pub const MENU: &[MenuItem] = &[
     item("Tools", "Gradient", Action::ShowGradient, sc(CMD, Key::G)),
     item(
         "Tools",
+        "Palette editor…",
+        Action::ShowPaletteEditor,
+        sc(CMD_SHIFT, Key::G),
+    ),
+    item(
+        "Tools",
         "Random flame",
         Action::RandomFlame,
         sc(CMD, Key::R),
@@ -148,10 +163,24 @@ pub const MENU: &[MenuItem] = &[
     ),
     item(
         "Tools",
+        "Variations filter…",
+        Action::ShowVariationFilter,
+        None,
+    ),
+    item(
+        "Tools",
         "Options…",
         Action::ShowOptions,
         sc(CMD, Key::Comma),
     ),
+    item(
+        "Help",
+        "Keyboard shortcuts",
+        Action::ShowShortcuts,
+        sc(Modifiers::NONE, Key::F1),
+    ),
+    item("Help", "What the panels do", Action::ShowPanelHelp, None),
+    item("Help", "About ugnis", Action::ShowAbout, None),
 ];
 
 /// Shortcuts that are not shown in a menu: Ctrl+Shift+Z redo.

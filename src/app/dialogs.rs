@@ -19,6 +19,7 @@ pub enum Purpose {
     SaveView,
     ExportEscape,
     OpenScene,
+    SaveScene,
     ExportScene,
     SceneTexture,
 }
@@ -35,6 +36,7 @@ impl Purpose {
             Purpose::SaveView => "Save escape-time view",
             Purpose::ExportEscape => "Export escape-time image",
             Purpose::OpenScene => "Open scene",
+            Purpose::SaveScene => "Save scene",
             Purpose::ExportScene => "Export scene image",
             Purpose::SceneTexture => "Texture image",
         }
@@ -47,7 +49,7 @@ impl Purpose {
             Purpose::LoadGradient => &["ugr", "map", "ggr", "gradient"],
             Purpose::GradientFromImage => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::Export | Purpose::ExportEscape | Purpose::ExportScene => &["png", "bmp"],
-            Purpose::OpenScene => &["toml"],
+            Purpose::OpenScene | Purpose::SaveScene => &["toml"],
             Purpose::SceneTexture => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::OpenView | Purpose::SaveView => &["esc"],
         }
@@ -59,10 +61,18 @@ impl Purpose {
             Purpose::SaveAs
                 | Purpose::Export
                 | Purpose::SaveView
+                | Purpose::SaveScene
                 | Purpose::ExportEscape
                 | Purpose::ExportScene
         )
     }
+}
+
+/// `dir` as an absolute path without `.` and `..` (as it is when it cannot be resolved).
+fn absolute_dir(dir: &Path) -> PathBuf {
+    std::fs::canonicalize(dir)
+        .or_else(|_| std::path::absolute(dir))
+        .unwrap_or_else(|_| dir.to_path_buf())
 }
 
 /// The built-in file browser.
@@ -95,6 +105,9 @@ impl FileBrowser {
             .filter(|d| d.is_dir())
             .or_else(|| std::env::current_dir().ok())
             .unwrap_or_else(|| PathBuf::from("."));
+        // A relative folder (from a relative file name on the command line) has no parent to
+        // go up to: work with the absolute one.
+        let dir = absolute_dir(&dir);
         let mut b = FileBrowser {
             purpose,
             dir,
@@ -156,18 +169,35 @@ impl FileBrowser {
             ui.set_width(520.0);
             ui.heading(self.purpose.title());
             ui.horizontal(|ui| {
-                if ui.button("Up").on_hover_text("parent folder").clicked()
+                if ui.button("Up").on_hover_text("the parent folder").clicked()
                     && let Some(p) = self.dir.parent()
                 {
                     self.dir = p.to_path_buf();
                     self.refresh();
                 }
+                if ui
+                    .button("Home")
+                    .on_hover_text("your home folder")
+                    .clicked()
+                    && let Some(h) = std::env::var_os("HOME")
+                {
+                    self.dir = absolute_dir(Path::new(&h));
+                    self.refresh();
+                }
                 let mut d = self.dir.display().to_string();
-                if ui.text_edit_singleline(&mut d).lost_focus() {
-                    let p = PathBuf::from(&d);
+                let l = ui.label("Folder");
+                if ui
+                    .text_edit_singleline(&mut d)
+                    .labelled_by(l.id)
+                    .on_hover_text("type a folder and press Enter")
+                    .lost_focus()
+                {
+                    let p = self.dir.join(&d);
                     if p.is_dir() {
-                        self.dir = p;
+                        self.dir = absolute_dir(&p);
                         self.refresh();
+                    } else if d != self.dir.display().to_string() {
+                        self.error = Some(format!("{}: not a folder", p.display()));
                     }
                 }
             });

@@ -13,6 +13,8 @@ use crate::io;
 #[derive(Clone, Debug)]
 pub(super) enum Pending {
     Exit,
+    /// File › New in the flame tab.
+    New,
     Open(PathBuf),
     BrowseOpen,
 }
@@ -31,6 +33,11 @@ impl UgnisApp {
     pub(super) fn run_pending(&mut self, p: Pending) {
         match p {
             Pending::Exit => self.allow_close = true,
+            Pending::New => {
+                let f = crate::app::flame_tab::commands::new_flame(&self.options);
+                self.flame.replace_file(vec![f], None, "untitled".into());
+                self.flame.notices.status("New flame");
+            }
             Pending::Open(path) => self.open_path(&path),
             Pending::BrowseOpen => self.browse(Purpose::Open),
         }
@@ -50,6 +57,7 @@ impl UgnisApp {
                 format!("{}.fla", self.flame.file.name),
             ),
             Purpose::SaveView => name_of(&self.escape.path, format!("{family}.esc")),
+            Purpose::SaveScene => name_of(&self.scene.path, "scene.toml".into()),
             Purpose::ExportEscape => format!("{family}.png"),
             Purpose::ExportScene => "scene.png".into(),
             Purpose::Export => self
@@ -65,9 +73,10 @@ impl UgnisApp {
             Purpose::OpenView | Purpose::SaveView | Purpose::ExportEscape => {
                 self.escape.path.clone()
             }
-            Purpose::OpenScene | Purpose::ExportScene | Purpose::SceneTexture => {
-                self.scene.path.clone()
-            }
+            Purpose::OpenScene
+            | Purpose::SaveScene
+            | Purpose::ExportScene
+            | Purpose::SceneTexture => self.scene.path.clone(),
             Purpose::Export => self.flame.export_dialog.as_ref().map(|s| s.path.clone()),
             _ => self.flame.file.path.clone(),
         };
@@ -101,6 +110,7 @@ impl UgnisApp {
                 if !warnings.is_empty() {
                     self.flame.notices.message("Warnings", warnings.join("\n"));
                 }
+                self.remember(path);
             }
             Err(e) => self.flame.notices.message("Cannot open", e),
         }
@@ -108,7 +118,11 @@ impl UgnisApp {
 
     /// Save the open file (atomically). Returns true on success.
     pub fn save_to(&mut self, path: &Path) -> bool {
-        self.flame.save_to(path)
+        let ok = self.flame.save_to(path);
+        if ok {
+            self.remember(path);
+        }
+        ok
     }
 
     /// The user chose `path` for `purpose`.
@@ -161,10 +175,29 @@ impl UgnisApp {
                     s.path = path;
                 }
             }
-            Purpose::OpenView => self.escape.open(&path),
-            Purpose::SaveView => self.escape.save(&with_ext(path, "esc")),
+            Purpose::OpenView => {
+                if self.escape.open(&path) {
+                    self.remember(&path);
+                }
+            }
+            Purpose::SaveView => {
+                let p = with_ext(path, "esc");
+                if self.escape.save(&p) {
+                    self.remember(&p);
+                }
+            }
             Purpose::ExportEscape => self.escape.export(with_ext(path, "png")),
-            Purpose::OpenScene => self.scene.open(&path),
+            Purpose::OpenScene => {
+                if self.scene.open(&path) {
+                    self.remember(&path);
+                }
+            }
+            Purpose::SaveScene => {
+                let p = with_ext(path, "toml");
+                if self.scene.save(&p) {
+                    self.remember(&p);
+                }
+            }
             Purpose::SceneTexture => self.scene.set_image_texture(&path),
             Purpose::ExportScene => self.scene.export(with_ext(path, "png")),
         }

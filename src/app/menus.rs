@@ -83,36 +83,83 @@ impl UgnisApp {
             Action::ToggleMorph => Some(f.morph.is_some()),
             _ => None,
         };
-        let enabled = match a {
-            Action::Undo => f.doc().can_undo(),
-            Action::Redo => f.doc().can_redo(),
-            Action::RandomBatch => !f.batch_running(),
+        let enabled = match (a, self.tab) {
+            (Action::Undo, Tab::Flame) => f.doc().can_undo(),
+            (Action::Redo, Tab::Flame) => f.doc().can_redo(),
+            (Action::Undo, Tab::Escape) => self.escape.can_go_back(),
+            (Action::Redo, Tab::Escape) => self.escape.can_go_forward(),
+            (Action::Undo | Action::Redo, Tab::Scene) => false,
+            (Action::RandomBatch, _) => !f.batch_running(),
             _ => true,
         };
         (checked, enabled)
     }
 
+    /// Tools › Random variations: Random, the seven, the variations filter.
+    fn variations_menu(&self, ui: &mut egui::Ui, chosen: &mut Option<Action>) {
+        ui.menu_button("Random variations", |ui| {
+            for (label, v) in VARIATION_MENU {
+                let sel = match (&self.flame.variation_mode, v) {
+                    (VariationMode::Single(a), Some(b)) => *a == b,
+                    (VariationMode::Random(_), None) => true,
+                    _ => false,
+                };
+                if ui.selectable_label(sel, label).clicked() {
+                    *chosen = Some(Action::SetVariation(v));
+                    ui.close();
+                }
+            }
+            ui.separator();
+            let sel = matches!(self.flame.variation_mode, VariationMode::FromList(_));
+            if ui
+                .selectable_label(sel, "From the variations filter")
+                .on_hover_text("one or two of the ticked variations per transform")
+                .clicked()
+            {
+                *chosen = Some(Action::UseVariationFilter);
+                ui.close();
+            }
+        })
+        .response
+        .on_hover_text("which variations Random flame and Random batch use");
+    }
+
+    /// File › Recent: the files opened or saved lately.
+    fn recent_menu(&self, ui: &mut egui::Ui, open: &mut Option<PathBuf>) {
+        ui.menu_button("Recent", |ui| {
+            if self.options.recent_files.is_empty() {
+                ui.label("(none yet)");
+            }
+            for p in &self.options.recent_files {
+                let name = p.file_name().map_or_else(
+                    || p.display().to_string(),
+                    |n| n.to_string_lossy().into_owned(),
+                );
+                if ui
+                    .button(name)
+                    .on_hover_text(p.display().to_string())
+                    .clicked()
+                {
+                    *open = Some(p.clone());
+                    ui.close();
+                }
+            }
+        });
+    }
+
     pub(super) fn menu_bar(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         let mut chosen = None;
+        let mut recent = None;
         egui::MenuBar::new().ui(ui, |ui| {
             for menu in MENUS {
                 ui.menu_button(menu, |ui| {
                     for m in MENU.iter().filter(|m| m.menu == menu) {
-                        if menu == "Tools" && m.action == Action::ToggleEditor {
-                            ui.menu_button("Variations", |ui| {
-                                for (label, v) in VARIATION_MENU {
-                                    let sel = match (&self.flame.variation_mode, v) {
-                                        (VariationMode::Single(a), Some(b)) => *a == b,
-                                        (VariationMode::Random(_), None) => true,
-                                        _ => false,
-                                    };
-                                    if ui.selectable_label(sel, label).clicked() {
-                                        chosen = Some(Action::SetVariation(v));
-                                        ui.close();
-                                    }
-                                }
-                            });
+                        if m.action == Action::ToggleEditor {
+                            self.variations_menu(ui, &mut chosen);
+                        }
+                        if m.action == Action::Save {
+                            self.recent_menu(ui, &mut recent);
                         }
                         let (checked, enabled) = self.menu_state(m.action);
                         let mut b = egui::Button::new(m.label).selected(checked == Some(true));
@@ -126,37 +173,103 @@ impl UgnisApp {
                     }
                 });
             }
+            // The tabs, at the right of the menu bar: always in reach, whatever the width.
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                for (t, label, tip) in [
+                    (Tab::Scene, "Scene", "textured Bézier scenes"),
+                    (
+                        Tab::Escape,
+                        "Escape-time",
+                        "Mandelbrot, Julia and relatives",
+                    ),
+                    (Tab::Flame, "Flame", "fractal flames and IFS"),
+                ] {
+                    ui.selectable_value(&mut self.tab, t, label)
+                        .on_hover_text(tip);
+                }
+            });
         });
         if let Some(a) = chosen {
             self.act(&ctx, a);
         }
+        if let Some(p) = recent {
+            self.open_recent(&p);
+        }
     }
 
+    /// The toolbar: the current tab's commands.
     pub(super) fn toolbar(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         let mut chosen = None;
-        ui.horizontal(|ui| {
-            for (label, tip, a) in [
+        let buttons: &[(&str, &str, Action)] = match self.tab {
+            Tab::Flame => &[
                 ("Random", "Random flame (Ctrl+R)", Action::RandomFlame),
-                ("Open", "Open… (Ctrl+O)", Action::Open),
-                ("Save", "Save (Ctrl+S)", Action::Save),
+                ("New", "New flame (Ctrl+N)", Action::New),
+                ("Open", "Open a flame or IFS file (Ctrl+O)", Action::Open),
+                ("Save", "Save the flames (Ctrl+S)", Action::Save),
                 ("Undo", "Undo (Ctrl+Z)", Action::Undo),
                 ("Redo", "Redo (Ctrl+Y)", Action::Redo),
-                ("Editor", "Triangle editor (F4)", Action::ToggleEditor),
-                ("Gradient", "Gradient (Ctrl+G)", Action::ShowGradient),
+                (
+                    "Editor",
+                    "Show or hide the triangle editor (F4)",
+                    Action::ToggleEditor,
+                ),
+                (
+                    "Gradient",
+                    "Gradient library (Ctrl+G)",
+                    Action::ShowGradient,
+                ),
+                (
+                    "Palette",
+                    "Palette editor (Ctrl+Shift+G)",
+                    Action::ShowPaletteEditor,
+                ),
                 ("Export", "Export image… (Ctrl+E)", Action::Export),
-                ("Batch", "Random batch (Ctrl+B)", Action::RandomBatch),
-                ("Mutate", "Mutations (Ctrl+U)", Action::ShowMutations),
-                ("Animate", "Animate (Ctrl+M)", Action::ToggleAnimate),
-            ] {
-                if ui.button(label).on_hover_text(tip).clicked() {
-                    chosen = Some(a);
+                (
+                    "Batch",
+                    "Random batch of 100 flames (Ctrl+B)",
+                    Action::RandomBatch,
+                ),
+                (
+                    "Mutate",
+                    "Mutations of this flame (Ctrl+U)",
+                    Action::ShowMutations,
+                ),
+                (
+                    "Animate",
+                    "Turn the triangles (Ctrl+M)",
+                    Action::ToggleAnimate,
+                ),
+            ],
+            Tab::Escape => &[
+                (
+                    "New",
+                    "The Mandelbrot set's default view (Ctrl+N)",
+                    Action::New,
+                ),
+                ("Open", "Open a view file (.esc) (Ctrl+O)", Action::Open),
+                ("Save", "Save the view (Ctrl+S)", Action::Save),
+                ("Export", "Export image… (Ctrl+E)", Action::Export),
+            ],
+            Tab::Scene => &[
+                ("New", "The default scene (Ctrl+N)", Action::New),
+                ("Open", "Open a scene file (.toml) (Ctrl+O)", Action::Open),
+                ("Save", "Save the scene (Ctrl+S)", Action::Save),
+                ("Export", "Export image… (Ctrl+E)", Action::Export),
+            ],
+        };
+        ui.horizontal_wrapped(|ui| {
+            for (label, tip, a) in buttons {
+                let (_, enabled) = self.menu_state(*a);
+                if ui
+                    .add_enabled(enabled, egui::Button::new(*label))
+                    .on_hover_text(*tip)
+                    .on_disabled_hover_text(*tip)
+                    .clicked()
+                {
+                    chosen = Some(*a);
                 }
             }
-            ui.separator();
-            ui.selectable_value(&mut self.tab, Tab::Flame, "Flame");
-            ui.selectable_value(&mut self.tab, Tab::Escape, "Escape-time");
-            ui.selectable_value(&mut self.tab, Tab::Scene, "Scene");
         });
         if let Some(a) = chosen {
             self.act(&ctx, a);

@@ -9,17 +9,20 @@
 //! * One folder per tab, each owning its document, background worker and panels:
 //!   [`flame_tab`] (flames: file and batch, live preview, triangle editor, gradient,
 //!   mutations, export), [`escape_tab`] (escape-time fractals), [`scene_tab`] (textured
-//!   Bézier scenes).
+//!   Bézier scenes). [`commands`] says what every command does in which tab; [`help`] holds
+//!   the Help menu's windows.
 //! * Shared pieces: [`worker`] (the one background worker: newest job wins, cancel,
 //!   progress, join on drop), [`notice`] (status lines and message boxes), [`options`] (the
 //!   persisted settings and their dialog), [`dialogs`] (file browser, message and confirm).
 
 pub mod a11y;
 pub mod actions;
+pub mod commands;
 pub mod dialogs;
 pub mod escape_tab;
 pub mod files;
 pub mod flame_tab;
+pub mod help;
 pub mod menus;
 pub mod notice;
 pub mod options;
@@ -57,6 +60,7 @@ pub fn run(file: Option<PathBuf>) -> Result<(), eframe::Error> {
             };
             let (options, problem) = options::Options::load();
             let mut app = UgnisApp::new(options, start, Some(ctx));
+            app.persist_options(true);
             if let Some(p) = problem {
                 app.flame.notices.message("Options", p);
             }

@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::flame::NewFlame;
 use crate::flame::random::{RandomOptions, SymmetryMode, VariationMode};
+use crate::flame::variations::{self, Form, VarId};
 use crate::gradient::{self, Gradient};
 
 /// All persisted options.
@@ -44,7 +45,18 @@ pub struct Options {
     /// Size of new flames.
     pub width: u32,
     pub height: u32,
+    /// The variations filter: the names (NAME, pre_NAME, post_NAME) random flames may use.
+    pub variation_filter: Vec<String>,
+    /// Random flames draw their variations from the filter.
+    pub use_variation_filter: bool,
+    /// Files opened or saved lately, newest first.
+    pub recent_files: Vec<PathBuf>,
 }
+
+/// Most recent files kept.
+pub const RECENT_FILES: usize = 10;
+/// Most names the variations filter keeps (every name with its forms is about 1,400).
+pub const MAX_FILTER_NAMES: usize = 5000;
 
 impl Default for Options {
     fn default() -> Self {
@@ -69,6 +81,9 @@ impl Default for Options {
             auto_weights: true,
             width: 640,
             height: 480,
+            variation_filter: Vec::new(),
+            use_variation_filter: false,
+            recent_files: Vec::new(),
         }
     }
 }
@@ -115,7 +130,45 @@ impl Options {
         if self.width == 0 || self.height == 0 || self.width > 20000 || self.height > 20000 {
             p.push("new flame size must be between 1 and 20000 pixels".into());
         }
+        if self.variation_filter.len() > MAX_FILTER_NAMES {
+            p.push(format!(
+                "the variations filter holds at most {MAX_FILTER_NAMES} names"
+            ));
+        }
+        if self.recent_files.len() > 100 {
+            p.push("at most 100 recent files".into());
+        }
         p
+    }
+
+    /// The variations filter as variations (unknown names are left out).
+    pub fn filter_list(&self) -> Vec<(VarId, Form)> {
+        self.variation_filter
+            .iter()
+            .filter_map(|n| variations::parse_name(n))
+            .collect()
+    }
+
+    /// How random flames choose variations at start: the filter when it is in use, otherwise
+    /// one of the seven thesis variations per transform.
+    pub fn variation_mode(&self) -> VariationMode {
+        if self.use_variation_filter {
+            VariationMode::FromList(self.filter_list())
+        } else {
+            VariationMode::Random(self.probabilities)
+        }
+    }
+
+    /// Put `path` first in the recent files.
+    pub fn remember(&mut self, path: &std::path::Path) {
+        // The options file is text: a name that is not Unicode is not kept.
+        if path.to_str().is_none() {
+            return;
+        }
+        let p = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        self.recent_files.retain(|q| q != &p);
+        self.recent_files.insert(0, p);
+        self.recent_files.truncate(RECENT_FILES);
     }
 
     pub fn gradient(&self) -> Gradient {
@@ -298,12 +351,42 @@ mod tests {
         p.probabilities[3] = 0.5;
         p.symmetry = SymmetryMode::Order(-3);
         p.post_probability = 0.25;
+        p.variation_filter = vec!["julia".into(), "pre_blur".into()];
+        p.use_variation_filter = true;
+        p.remember(std::path::Path::new("/tmp/a.flame"));
         assert_eq!(Options::from_text(&p.to_text()), Ok(p.clone()));
+        assert_eq!(
+            p.filter_list(),
+            vec![
+                variations::parse_name("julia").unwrap(),
+                variations::parse_name("pre_blur").unwrap()
+            ]
+        );
+        assert!(matches!(p.variation_mode(), VariationMode::FromList(l) if l.len() == 2));
         p.symmetry = SymmetryMode::Random;
         assert_eq!(Options::from_text(&p.to_text()), Ok(p));
         // Absent keys keep their defaults.
         assert_eq!(Options::from_text("threads = 3\n").unwrap().threads, 3);
         assert_eq!(Options::from_text("").unwrap(), Options::default());
+    }
+
+    #[test]
+    fn recent_files_are_newest_first_without_repeats() {
+        let mut o = Options::default();
+        for k in 0..15 {
+            o.remember(std::path::Path::new(&format!("/tmp/f{k}.fla")));
+        }
+        o.remember(std::path::Path::new("/tmp/f10.fla"));
+        assert_eq!(o.recent_files.len(), RECENT_FILES);
+        assert_eq!(o.recent_files[0], std::path::Path::new("/tmp/f10.fla"));
+        assert_eq!(o.recent_files[1], std::path::Path::new("/tmp/f14.fla"));
+        assert_eq!(
+            o.recent_files
+                .iter()
+                .filter(|p| p.ends_with("f10.fla"))
+                .count(),
+            1
+        );
     }
 
     #[test]

@@ -2,6 +2,7 @@
 
 use eframe::egui;
 
+use super::a11y::named;
 use super::options::Options;
 use crate::flame::random::SymmetryMode;
 use crate::gradient;
@@ -18,15 +19,21 @@ pub enum OptionsTab {
 /// The Options dialog. Returns true when the user pressed OK with valid options.
 pub fn dialog(ui: &mut egui::Ui, draft: &mut Options, tab: &mut OptionsTab) -> Option<bool> {
     let mut result = None;
+    // One width for every tab: the window does not move when the tab changes.
+    ui.set_width(440.0);
     ui.horizontal(|ui| {
-        ui.selectable_value(tab, OptionsTab::Display, "Display");
-        ui.selectable_value(tab, OptionsTab::Random, "Random");
-        ui.selectable_value(tab, OptionsTab::General, "General");
+        ui.selectable_value(tab, OptionsTab::Display, "Display")
+            .on_hover_text("densities, gamma, brightness and contrast");
+        ui.selectable_value(tab, OptionsTab::Random, "Random")
+            .on_hover_text("how random flames are made");
+        ui.selectable_value(tab, OptionsTab::General, "General")
+            .on_hover_text("gradient, preview size, new flame size, threads, weights");
     });
     ui.separator();
     let num = |ui: &mut egui::Ui, label: &str, v: &mut f64, speed: f64| {
-        ui.label(label);
-        ui.add(egui::DragValue::new(v).speed(speed).range(0.0..=1e6));
+        let l = ui.label(label);
+        ui.add(egui::DragValue::new(v).speed(speed).range(0.0..=1e6))
+            .labelled_by(l.id);
         ui.end_row();
     };
     match tab {
@@ -51,14 +58,18 @@ pub fn dialog(ui: &mut egui::Ui, draft: &mut Options, tab: &mut OptionsTab) -> O
         }
         OptionsTab::Random => {
             egui::Grid::new("opt-random").num_columns(2).show(ui, |ui| {
-                ui.label("Transforms, minimum");
-                ui.add(egui::DragValue::new(&mut draft.min_xforms).range(2..=100));
+                let l = ui.label("Transforms, minimum");
+                ui.add(egui::DragValue::new(&mut draft.min_xforms).range(2..=100))
+                    .labelled_by(l.id);
                 ui.end_row();
-                ui.label("Transforms, maximum");
-                ui.add(egui::DragValue::new(&mut draft.max_xforms).range(2..=100));
+                let l = ui.label("Transforms, maximum");
+                ui.add(egui::DragValue::new(&mut draft.max_xforms).range(2..=100))
+                    .labelled_by(l.id);
                 ui.end_row();
-                ui.label("Random gradient");
-                ui.checkbox(&mut draft.random_gradient, "");
+                let l = ui.label("Random gradient");
+                ui.checkbox(&mut draft.random_gradient, "")
+                    .labelled_by(l.id)
+                    .on_hover_text("each random flame gets a gradient of the library");
                 ui.end_row();
                 ui.label("Symmetry");
                 ui.horizontal(|ui| {
@@ -84,21 +95,24 @@ pub fn dialog(ui: &mut egui::Ui, draft: &mut Options, tab: &mut OptionsTab) -> O
                     }
                 });
                 ui.end_row();
-                ui.label("Chance of post transforms");
-                ui.add(egui::Slider::new(&mut draft.post_probability, 0.0..=1.0));
+                let l = ui.label("Chance of post transforms");
+                ui.add(egui::Slider::new(&mut draft.post_probability, 0.0..=1.0))
+                    .labelled_by(l.id);
                 ui.end_row();
-                ui.label("Chance of a final transform");
-                ui.add(egui::Slider::new(&mut draft.final_probability, 0.0..=1.0));
+                let l = ui.label("Chance of a final transform");
+                ui.add(egui::Slider::new(&mut draft.final_probability, 0.0..=1.0))
+                    .labelled_by(l.id);
                 ui.end_row();
                 ui.strong("Variation probabilities");
                 ui.end_row();
                 for (i, id) in crate::flame::variations::THESIS_SEVEN.iter().enumerate() {
-                    ui.label(crate::flame::variations::info(*id).name);
+                    let l = ui.label(crate::flame::variations::info(*id).name);
                     ui.add(
                         egui::DragValue::new(&mut draft.probabilities[i])
                             .speed(0.01)
                             .range(0.0..=1.0),
-                    );
+                    )
+                    .labelled_by(l.id);
                     ui.end_row();
                 }
             });
@@ -120,21 +134,33 @@ pub fn dialog(ui: &mut egui::Ui, draft: &mut Options, tab: &mut OptionsTab) -> O
                             }
                         });
                     ui.end_row();
-                    ui.label("Preview size (pixels)");
-                    ui.add(egui::DragValue::new(&mut draft.preview_size).range(64..=4096));
+                    let l = ui.label("Preview size (pixels)");
+                    ui.add(egui::DragValue::new(&mut draft.preview_size).range(64..=4096))
+                        .labelled_by(l.id);
                     ui.end_row();
                     ui.label("New flame size");
                     ui.horizontal(|ui| {
-                        ui.add(egui::DragValue::new(&mut draft.width).range(1..=20000));
+                        named(
+                            ui.add(egui::DragValue::new(&mut draft.width).range(1..=20000)),
+                            "New flame width",
+                        );
                         ui.label("×");
-                        ui.add(egui::DragValue::new(&mut draft.height).range(1..=20000));
+                        named(
+                            ui.add(egui::DragValue::new(&mut draft.height).range(1..=20000)),
+                            "New flame height",
+                        );
                     });
                     ui.end_row();
-                    ui.label("Render threads (0 = all)");
-                    ui.add(egui::DragValue::new(&mut draft.threads).range(0..=256));
+                    let l = ui.label("Render threads (0 = all)");
+                    ui.add(egui::DragValue::new(&mut draft.threads).range(0..=256))
+                        .labelled_by(l.id);
                     ui.end_row();
-                    ui.label("Weights from triangle areas after edits");
-                    ui.checkbox(&mut draft.auto_weights, "");
+                    let l = ui.label("Weights from triangle areas after edits");
+                    ui.checkbox(&mut draft.auto_weights, "")
+                        .labelled_by(l.id)
+                        .on_hover_text(
+                            "for new and random flames; a typed weight turns it off for that flame",
+                        );
                     ui.end_row();
                 });
         }

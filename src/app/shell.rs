@@ -7,11 +7,12 @@ use std::path::PathBuf;
 
 use eframe::egui;
 
-use super::actions::Action;
 use super::dialogs::{self, Confirm, FileBrowser, Purpose};
 use super::escape_tab::{EscapeRequest, EscapeTab};
 use super::files::{Pending, load_any};
+use super::flame_tab::first_flame::striking_flame;
 use super::flame_tab::{FlameRequest, FlameTab};
+use super::help::{self, HelpPage};
 use super::options::Options;
 use super::options_dialog::{self, OptionsTab};
 use super::scene_tab::{SceneRequest, SceneTab};
@@ -49,11 +50,15 @@ pub struct UgnisApp {
     pub(super) confirm_what: String,
     /// Message boxes waiting to be shown, oldest first.
     messages: VecDeque<(String, String)>,
-    options_dialog: Option<(Options, OptionsTab)>,
+    pub(super) options_dialog: Option<(Options, OptionsTab)>,
     pub(super) allow_close: bool,
     pub(super) expect_paste: bool,
     /// The window title last sent (sending it every frame would keep the app awake).
     title: String,
+    /// The open Help window.
+    pub help: Option<HelpPage>,
+    /// Whether option changes are written to the options file (off in tests).
+    persist: bool,
     ctx: Option<egui::Context>,
     /// UI time per frame in ms when UGNIS_FRAME_TIMES is set.
     frame_log: Option<Vec<f64>>,
@@ -90,7 +95,7 @@ impl UgnisApp {
         let (flames, path) = match start {
             Start::Flames(f) if !f.is_empty() => (f, None),
             Start::Flames(_) => (random_flame(1), None),
-            Start::Random(seed) => (random_flame(seed), None),
+            Start::Random(seed) => (vec![striking_flame(seed, &options)], None),
             Start::File(p) => match load_any(&p, &options) {
                 Ok((f, w)) => {
                     if !w.is_empty() {
@@ -104,7 +109,7 @@ impl UgnisApp {
                 }
             },
         };
-        let flame = FlameTab::new(flames, path, ctx.as_ref(), seed_from_time());
+        let flame = FlameTab::new(flames, path, ctx.as_ref(), seed_from_time(), &options);
         let mut escape = EscapeTab::new(ctx.as_ref());
         let tab = match escape_start {
             Some((d, p)) => {
@@ -130,6 +135,8 @@ impl UgnisApp {
             allow_close: false,
             expect_paste: false,
             title: String::new(),
+            help: None,
+            persist: false,
             ctx,
             frame_log: std::env::var_os("UGNIS_FRAME_TIMES").map(|_| Vec::new()),
         }
@@ -140,84 +147,38 @@ impl UgnisApp {
         repaint_of(self.ctx.as_ref())
     }
 
+    /// Write option changes to the options file from now on (the real application; tests
+    /// leave the user's options alone).
+    pub fn persist_options(&mut self, on: bool) {
+        self.persist = on;
+    }
+
+    /// Save the options if they are persisted; a failure is told in a message box.
+    pub(super) fn save_options(&mut self) {
+        if self.persist
+            && let Err(e) = self.options.save()
+        {
+            self.messages.push_back(("Options".into(), e));
+        }
+    }
+
+    /// Remember a file opened or saved in the recent files.
+    pub(super) fn remember(&mut self, path: &std::path::Path) {
+        self.options.remember(path);
+        self.save_options();
+    }
+
+    /// The file chooser, if one is open.
+    pub fn file_browser(&self) -> Option<&FileBrowser> {
+        self.browser.as_ref()
+    }
+
     /// The status line of the current tab.
     pub fn status(&self) -> &str {
         match self.tab {
             Tab::Flame => &self.flame.notices.status,
             Tab::Escape => &self.escape.notices.status,
             Tab::Scene => &self.scene.notices.status,
-        }
-    }
-
-    /// Carry out a command.
-    pub fn act(&mut self, ctx: &egui::Context, a: Action) {
-        // Commands about the file work on the open file, not on the batch.
-        if matches!(
-            a,
-            Action::Open | Action::Save | Action::SaveAs | Action::Exit
-        ) {
-            self.flame.view_file();
-        }
-        let o = &self.options;
-        match a {
-            Action::Open => self.guard_dirty(Pending::BrowseOpen, "opening another file"),
-            Action::Save => {
-                match self
-                    .flame
-                    .file
-                    .path
-                    .clone()
-                    .filter(|p| io::kind_of(p) != io::FileKind::Png)
-                {
-                    Some(p) => {
-                        self.save_to(&p);
-                    }
-                    None => self.browse(Purpose::SaveAs),
-                }
-            }
-            Action::SaveAs => self.browse(Purpose::SaveAs),
-            Action::LoadGradient => self.browse(Purpose::LoadGradient),
-            Action::GradientFromImage => self.browse(Purpose::GradientFromImage),
-            Action::Export => self.flame.open_export_dialog(o),
-            Action::RandomBatch => self.flame.start_batch(o),
-            Action::Exit => self.guard_dirty(Pending::Exit, "quitting"),
-            Action::Undo => self.flame.undo(),
-            Action::Redo => self.flame.redo(),
-            Action::CopyFlame => {
-                ctx.copy_text(io::flam3_xml::flame_element(self.flame.doc().flame()));
-                self.flame.notices.status("Flame copied as XML");
-            }
-            Action::PasteFlame => {
-                self.expect_paste = true;
-                ctx.send_viewport_cmd(egui::ViewportCommand::RequestPaste);
-            }
-            Action::ToggleToolbar => self.show_toolbar = !self.show_toolbar,
-            Action::ToggleStatusBar => self.show_status = !self.show_status,
-            Action::ToggleFilePanel => self.flame.show_files = !self.flame.show_files,
-            Action::ToggleEditor => self.flame.show_editor = !self.flame.show_editor,
-            Action::FitPreview => self.flame.preview_zoom = 1.0,
-            Action::ZoomIn => self.flame.preview_zoom = (self.flame.preview_zoom * 1.25).min(8.0),
-            Action::ZoomOut => {
-                self.flame.preview_zoom = (self.flame.preview_zoom / 1.25).max(0.125)
-            }
-            Action::SetVariation(v) => {
-                let label = super::actions::VARIATION_MENU
-                    .iter()
-                    .find(|m| m.1 == v)
-                    .map_or("", |m| m.0);
-                self.flame.set_variation(o, v, label)
-            }
-            Action::ShowGradient => self.flame.gradients.open = !self.flame.gradients.open,
-            Action::ShowMutations => self.flame.mutations.open = !self.flame.mutations.open,
-            Action::RandomFlame => self.flame.random_flame(o),
-            Action::ToggleAnimate => self.flame.toggle_animation(),
-            Action::ToggleMorph => self.flame.toggle_morph(),
-            Action::RandomWeights => self.flame.random_weights(),
-            Action::EqualWeights => self.flame.equal_weights(),
-            Action::AreaWeights => self.flame.area_weights(),
-            Action::ShowOptions => {
-                self.options_dialog = Some((self.options.clone(), OptionsTab::default()))
-            }
         }
     }
 
@@ -289,10 +250,13 @@ impl UgnisApp {
         }
         if let Some((draft, tab)) = &mut self.options_dialog {
             let mut r = None;
+            // Anchored at its top centre with a fixed width: the tabs stay where they are when
+            // the contents change height.
+            let r0 = ctx.content_rect();
             egui::Window::new("Options")
                 .collapsible(false)
-                .pivot(egui::Align2::CENTER_CENTER)
-                .default_pos(ctx.content_rect().center())
+                .pivot(egui::Align2::CENTER_TOP)
+                .default_pos([r0.center().x, r0.top() + 60.0])
                 .resizable(false)
                 .show(ctx, |ui| {
                     r = options_dialog::dialog(ui, draft, tab);
@@ -300,9 +264,7 @@ impl UgnisApp {
             match r {
                 Some(true) => {
                     self.options = draft.clone();
-                    if let Err(e) = self.options.save() {
-                        self.messages.push_back(("Options".into(), e));
-                    }
+                    self.save_options();
                     self.options_dialog = None;
                 }
                 Some(false) => self.options_dialog = None,
@@ -361,11 +323,29 @@ impl UgnisApp {
                     .ui(ui, self.flame.doc().flame(), &self.escape.doc)
                 {
                     Some(SceneRequest::OpenScene) => self.browse(Purpose::OpenScene),
+                    Some(SceneRequest::SaveScene) => self.browse(Purpose::SaveScene),
                     Some(SceneRequest::Export) => self.browse(Purpose::ExportScene),
                     Some(SceneRequest::TextureImage) => self.browse(Purpose::SceneTexture),
                     None => {}
                 }
             }
+        }
+        if self.flame.variation_filter.show(&ctx, &mut self.options) {
+            if self.options.use_variation_filter {
+                self.flame.variation_mode =
+                    crate::flame::random::VariationMode::FromList(self.options.filter_list());
+            } else if matches!(
+                self.flame.variation_mode,
+                crate::flame::random::VariationMode::FromList(_)
+            ) {
+                self.flame.variation_mode = VariationMode::Random(self.options.probabilities);
+            }
+            self.save_options();
+        }
+        if let Some(p) = self.help
+            && !help::show(&ctx, p)
+        {
+            self.help = None;
         }
         match self.flame.windows(&ctx, &self.options) {
             Some(FlameRequest::LoadGradient) => self.browse(Purpose::LoadGradient),

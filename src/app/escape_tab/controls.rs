@@ -4,6 +4,7 @@
 use eframe::egui;
 
 use super::{EscapeRequest, EscapeTab, KINDS};
+use crate::app::a11y::named;
 use crate::escape::{C, Coloring, Family, Fill, Preset, Sampling, View, Warp};
 use crate::gradient;
 use crate::io::escape_view;
@@ -26,7 +27,11 @@ impl EscapeTab {
             {
                 self.go_forward();
             }
-            if ui.button("Reset view").clicked() {
+            if ui
+                .button("Reset view")
+                .on_hover_text("the fractal's whole default view")
+                .clicked()
+            {
                 let (c, hh) = self.doc.params.family.default_view();
                 self.push_history();
                 self.doc.view = View::new(c, hh);
@@ -35,7 +40,7 @@ impl EscapeTab {
         ui.separator();
         let current = self.doc.params.family.name();
         let mut chosen = None;
-        egui::ComboBox::from_label("Fractal")
+        let fractal = egui::ComboBox::from_label("Fractal")
             .selected_text(
                 KINDS
                     .iter()
@@ -49,6 +54,9 @@ impl EscapeTab {
                     }
                 }
             });
+        fractal
+            .response
+            .on_hover_text("the family of escape-time fractals");
         if let Some(k) = chosen
             && k != current
         {
@@ -61,21 +69,33 @@ impl EscapeTab {
                 let cpx = |ui: &mut egui::Ui, label: &str, c: &mut C| {
                     ui.label(label);
                     ui.horizontal(|ui| {
-                        ui.add(egui::DragValue::new(&mut c.re).speed(0.001).max_decimals(8));
-                        ui.add(egui::DragValue::new(&mut c.im).speed(0.001).max_decimals(8));
+                        named(
+                            ui.add(egui::DragValue::new(&mut c.re).speed(0.001).max_decimals(8)),
+                            &format!("{label} real part"),
+                        )
+                        .on_hover_text("real part");
+                        named(
+                            ui.add(egui::DragValue::new(&mut c.im).speed(0.001).max_decimals(8)),
+                            &format!("{label} imaginary part"),
+                        )
+                        .on_hover_text("imaginary part");
                         ui.label("i");
                     });
                     ui.end_row();
                 };
                 match &mut doc.params.family {
                     Family::Mandelbrot { power } => {
-                        ui.label("Power m");
-                        ui.add(egui::DragValue::new(power).range(2..=9));
+                        let l = ui.label("Power m");
+                        ui.add(egui::DragValue::new(power).range(2..=9))
+                            .labelled_by(l.id)
+                            .on_hover_text("the power of z in z^m + c");
                         ui.end_row();
                     }
                     Family::Julia { power, c } => {
-                        ui.label("Power m");
-                        ui.add(egui::DragValue::new(power).range(2..=9));
+                        let l = ui.label("Power m");
+                        ui.add(egui::DragValue::new(power).range(2..=9))
+                            .labelled_by(l.id)
+                            .on_hover_text("the power of z in z^m + c");
                         ui.end_row();
                         cpx(ui, "c", c);
                     }
@@ -144,24 +164,27 @@ impl EscapeTab {
                         }
                     }
                 }
-                ui.label("Max iterations");
+                let l = ui.label("Max iterations");
                 ui.add(
                     egui::DragValue::new(&mut doc.params.max_iter)
                         .range(1..=1_000_000)
                         .speed(10.0),
-                );
+                )
+                .labelled_by(l.id)
+                .on_hover_text("iterations before a point counts as inside (more: finer edges)");
                 ui.end_row();
                 ui.label("Colouring");
-                egui::ComboBox::from_id_salt("escape-coloring")
+                let r = egui::ComboBox::from_id_salt("escape-coloring")
                     .selected_text(doc.params.coloring.name())
                     .show_ui(ui, |ui| {
                         for c in Coloring::ALL {
                             ui.selectable_value(&mut doc.params.coloring, c, c.name());
                         }
                     });
+                named(r.response, "Colouring").on_hover_text("how escape counts become colours");
                 ui.end_row();
                 ui.label("Gradient");
-                egui::ComboBox::from_id_salt("escape-gradient")
+                let r = egui::ComboBox::from_id_salt("escape-gradient")
                     .selected_text(doc.gradient_source.clone())
                     .show_ui(ui, |ui| {
                         for g in gradient::builtin() {
@@ -174,20 +197,26 @@ impl EscapeTab {
                             }
                         }
                     });
+                named(r.response, "Gradient").on_hover_text("the colours of the picture");
                 ui.end_row();
-                ui.label("Offset");
-                ui.add(egui::Slider::new(&mut doc.params.palette.offset, 0.0..=1.0));
+                let l = ui.label("Offset");
+                ui.add(egui::Slider::new(&mut doc.params.palette.offset, 0.0..=1.0))
+                    .labelled_by(l.id)
+                    .on_hover_text("shift the colours along the gradient");
                 ui.end_row();
-                ui.label("Repeat");
+                let l = ui.label("Repeat");
                 ui.add(
                     egui::DragValue::new(&mut doc.params.palette.repeat)
                         .range(0.01..=256.0)
                         .speed(0.05),
-                );
+                )
+                .labelled_by(l.id)
+                .on_hover_text("how many times the gradient repeats");
                 ui.end_row();
-                ui.label("Block guessing");
+                let l = ui.label("Block guessing");
                 let mut guess = doc.params.fill == Fill::Guess;
                 ui.checkbox(&mut guess, "")
+                    .labelled_by(l.id)
                     .on_hover_text("Mariani–Silver: faster, may miss thin filaments");
                 doc.params.fill = if guess { Fill::Guess } else { Fill::Exact };
                 ui.end_row();
@@ -205,18 +234,38 @@ impl EscapeTab {
         ui.separator();
         ui.horizontal(|ui| {
             ui.label("Export size");
-            ui.add(egui::DragValue::new(&mut self.export_size[0]).range(16..=20000));
+            named(
+                ui.add(egui::DragValue::new(&mut self.export_size[0]).range(16..=20000)),
+                "Export width",
+            )
+            .on_hover_text("width of the exported picture in pixels");
             ui.label("×");
-            ui.add(egui::DragValue::new(&mut self.export_size[1]).range(16..=20000));
+            named(
+                ui.add(egui::DragValue::new(&mut self.export_size[1]).range(16..=20000)),
+                "Export height",
+            )
+            .on_hover_text("height of the exported picture in pixels");
         });
         ui.horizontal(|ui| {
-            if ui.button("Export image…").clicked() {
+            if ui
+                .button("Export image…")
+                .on_hover_text("render the view at the export size (PNG keeps the view)")
+                .clicked()
+            {
                 req = Some(EscapeRequest::Export);
             }
-            if ui.button("Open view…").clicked() {
+            if ui
+                .button("Open view…")
+                .on_hover_text("open a view file (.esc)")
+                .clicked()
+            {
                 req = Some(EscapeRequest::OpenView);
             }
-            if ui.button("Save view…").clicked() {
+            if ui
+                .button("Save view…")
+                .on_hover_text("save this view as a .esc file")
+                .clicked()
+            {
                 req = Some(EscapeRequest::SaveView);
             }
         });

@@ -123,6 +123,10 @@ impl EscapeTab {
         !self.back.is_empty()
     }
 
+    pub fn can_go_forward(&self) -> bool {
+        !self.forward.is_empty()
+    }
+
     /// Switch to a family with its default view (one history step).
     pub fn set_kind(&mut self, kind: &str) {
         let Some(f) = family_from_name(kind) else {
@@ -188,8 +192,15 @@ impl EscapeTab {
         self.path = path;
     }
 
-    /// Open a view file.
-    pub fn open(&mut self, path: &Path) {
+    /// File › New: the Mandelbrot set's default view (one history step).
+    pub fn new_view(&mut self) {
+        self.set_kind("mandelbrot");
+        self.path = None;
+        self.notices.status("New view");
+    }
+
+    /// Open a view file; true when it opened.
+    pub fn open(&mut self, path: &Path) -> bool {
         match io::escape_view::read(path) {
             Ok(p) => {
                 if !p.warnings.is_empty() {
@@ -198,21 +209,28 @@ impl EscapeTab {
                 }
                 self.load(p.value, Some(path.to_path_buf()));
                 self.notices.status(format!("Opened {}", path.display()));
+                true
             }
-            Err(e) => self.notices.message("Cannot open", e.to_string()),
+            Err(e) => {
+                self.notices.message("Cannot open", e.to_string());
+                false
+            }
         }
     }
 
-    /// Save the view file.
-    pub fn save(&mut self, path: &Path) {
+    /// Save the view file; true when it was written.
+    pub fn save(&mut self, path: &Path) -> bool {
         match io::escape_view::save(path, &self.doc) {
             Ok(()) => {
                 self.notices.status(format!("Saved {}", path.display()));
                 self.path = Some(path.to_path_buf());
+                true
             }
-            Err(e) => self
-                .notices
-                .message("Cannot save", format!("{}: {e}", path.display())),
+            Err(e) => {
+                self.notices
+                    .message("Cannot save", format!("{}: {e}", path.display()));
+                false
+            }
         }
     }
 
@@ -283,8 +301,10 @@ impl EscapeTab {
             self.go_forward();
         }
         let mut req = None;
+        let width = ui.available_width();
         egui::Panel::left("escape-controls")
-            .default_size(300.0)
+            .default_size(300.0f32.min(width * 0.4))
+            .max_size((width * 0.45).max(160.0))
             .resizable(true)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {

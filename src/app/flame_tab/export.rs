@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use eframe::egui;
 
+use crate::app::a11y::named;
 use crate::app::worker::{TaskWorker, task_worker};
 use crate::flame::render::{RenderOptions, Renderer};
 use crate::flame::{Flame, OutputFormat};
@@ -18,6 +19,8 @@ pub struct ExportSettings {
     pub bits16: bool,
     pub transparent: bool,
     pub path: PathBuf,
+    /// Width and height keep the flame's proportions.
+    pub lock_aspect: bool,
 }
 
 /// A running export, with progress and Cancel.
@@ -98,28 +101,57 @@ pub fn dialog(ui: &mut egui::Ui, s: &mut ExportSettings, browse: &mut bool) -> O
         .show(ui, |ui| {
             ui.label("Size");
             ui.horizontal(|ui| {
-                ui.add(egui::DragValue::new(&mut s.width).range(1..=30000));
+                let aspect = s.width as f64 / s.height.max(1) as f64;
+                let w = named(
+                    ui.add(egui::DragValue::new(&mut s.width).range(1..=30000)),
+                    "Export width",
+                )
+                .on_hover_text("width in pixels");
                 ui.label("×");
-                ui.add(egui::DragValue::new(&mut s.height).range(1..=30000));
+                let h = named(
+                    ui.add(egui::DragValue::new(&mut s.height).range(1..=30000)),
+                    "Export height",
+                )
+                .on_hover_text("height in pixels");
+                ui.checkbox(&mut s.lock_aspect, "keep proportions")
+                    .on_hover_text("changing one side changes the other");
+                if s.lock_aspect {
+                    if w.changed() {
+                        s.height = ((s.width as f64 / aspect).round() as u32).clamp(1, 30000);
+                    } else if h.changed() {
+                        s.width = ((s.height as f64 * aspect).round() as u32).clamp(1, 30000);
+                    }
+                }
             });
             ui.end_row();
-            ui.label("Quality");
+            let l = ui.label("Quality");
             ui.add(
                 egui::DragValue::new(&mut s.quality)
                     .range(0.1..=100000.0)
                     .speed(1.0),
-            );
+            )
+            .labelled_by(l.id)
+            .on_hover_text("samples per pixel (more: smoother, slower)");
             ui.end_row();
-            ui.label("Supersample");
-            ui.add(egui::DragValue::new(&mut s.supersample).range(1..=4));
+            let l = ui.label("Supersample");
+            ui.add(egui::DragValue::new(&mut s.supersample).range(1..=4))
+                .labelled_by(l.id)
+                .on_hover_text("render this many times larger and shrink (smoother edges)");
             ui.end_row();
             ui.label("File");
             ui.horizontal(|ui| {
                 let mut t = s.path.display().to_string();
-                if ui.text_edit_singleline(&mut t).changed() {
+                if named(ui.text_edit_singleline(&mut t), "Export file")
+                    .on_hover_text("where the picture is written (.png or .bmp)")
+                    .changed()
+                {
                     s.path = PathBuf::from(t);
                 }
-                if ui.button("…").clicked() {
+                if ui
+                    .button("Choose…")
+                    .on_hover_text("choose the file")
+                    .clicked()
+                {
                     *browse = true;
                 }
             });

@@ -5,22 +5,23 @@
 
 pub mod canvas;
 pub mod controls;
+pub mod save;
 pub mod textures;
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use eframe::egui::{self, Vec2};
-use glam::{DVec3, Vec3};
+use glam::DVec3;
 
 use crate::app::notice::Notices;
 use crate::app::worker::{JobContext, Repaint, TaskWorker, Worker, repaint_of, task_worker};
 use crate::escape::EscapeDoc;
 use crate::flame::Flame;
 use crate::io;
-use crate::noise::Fbm;
-use crate::surface::texture::{self, Texture};
-use crate::surface::{Geometry, Material, Object, Scene, Transform, mesh};
+use crate::surface::texture::Texture;
+use crate::surface::{Object, Scene};
 
 /// A scene to render.
 pub struct SceneJob {
@@ -52,6 +53,7 @@ fn render(job: SceneJob, cx: &JobContext<SceneFrame>) {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SceneRequest {
     OpenScene,
+    SaveScene,
     Export,
     TextureImage,
 }
@@ -69,25 +71,15 @@ pub enum TextureSource {
     None,
 }
 
-/// The default scene: the reference jug wearing an fBm texture (no files needed).
-pub fn default_scene() -> (Scene, Vec<String>) {
-    let mut s = Scene::default();
-    s.textures.push(texture::fbm_texture(
-        512,
-        256,
-        Fbm::default(),
-        Vec3::new(0.35, 0.12, 0.05),
-        Vec3::new(0.95, 0.75, 0.45),
-    ));
-    s.objects.push(Object {
-        name: "jug".into(),
-        geometry: Geometry::Patches(mesh::jug()),
-        transform: Transform::IDENTITY,
-        material: Material::default(),
-        texture: Some(0),
-        bump_texture: None,
-    });
-    (s, vec!["fbm".into()])
+/// The default scene: the reference jug wearing an fBm texture (no files needed), with the
+/// scene file it comes from.
+pub fn default_scene() -> (Scene, Vec<String>, toml::Table) {
+    let l = io::scene::parse(save::DEFAULT_SCENE, "default scene", Path::new("."))
+        .expect("the default scene parses");
+    let t = save::DEFAULT_SCENE
+        .parse::<toml::Table>()
+        .expect("the default scene parses");
+    (l.scene, l.texture_names, t)
 }
 
 /// A texture made in the background: (object, texture, name) or an error.
@@ -113,13 +105,19 @@ pub struct SceneTab {
     texture_job: Option<TaskWorker<TextureResult>>,
     export_job: Option<TaskWorker<Result<PathBuf, String>>>,
     repaint: Repaint,
+    /// The scene file as read (or the default scene's), written over when saving.
+    source: toml::Table,
+    /// The folder its relative file names are relative to.
+    base_dir: Option<PathBuf>,
+    /// Where the textures made in the tab came from, by texture name.
+    origins: HashMap<String, save::Origin>,
 }
 
 impl SceneTab {
     /// A new tab; with `ctx` the background renderer starts (none in tests).
     pub fn new(ctx: Option<&egui::Context>) -> SceneTab {
         let render = ctx.is_some();
-        let (scene, texture_names) = default_scene();
+        let (scene, texture_names, source) = default_scene();
         SceneTab {
             scene,
             texture_names,
@@ -138,14 +136,28 @@ impl SceneTab {
             texture_job: None,
             export_job: None,
             repaint: repaint_of(ctx),
+            source,
+            base_dir: None,
+            origins: HashMap::new(),
         }
     }
 
-    /// Replace the scene (after opening a file).
-    pub fn load(&mut self, scene: Scene, names: Vec<String>, path: Option<PathBuf>) {
+    /// Replace the scene (after opening a file) and the file it came from.
+    pub fn load(
+        &mut self,
+        scene: Scene,
+        names: Vec<String>,
+        path: Option<PathBuf>,
+        source: toml::Table,
+    ) {
         self.scene = scene;
         self.texture_names = names;
+        self.base_dir = path
+            .as_ref()
+            .and_then(|p| p.parent().map(Path::to_path_buf));
         self.path = path;
+        self.source = source;
+        self.origins.clear();
         self.selected_object = 0;
         self.selected_light = 0;
         self.version += 1;
@@ -193,14 +205,35 @@ impl SceneTab {
             },
         }
     }
-    /// Open a scene file.
-    pub fn open(&mut self, path: &Path) {
-        match io::scene::read(path) {
-            Ok(l) => {
-                self.load(l.scene, l.texture_names, Some(path.to_path_buf()));
+    /// File › New: the default scene.
+    pub fn new_scene(&mut self) {
+        let (scene, names, source) = default_scene();
+        self.load(scene, names, None, source);
+        self.notices.status("New scene");
+    }
+
+    /// Open a scene file; true when it opened.
+    pub fn open(&mut self, path: &Path) -> bool {
+        let source = std::fs::read_to_string(path)
+            .ok()
+            .and_then(|t| t.parse::<toml::Table>().ok());
+        match (io::scene::read(path), source) {
+            (Ok(l), Some(source)) => {
+                self.load(l.scene, l.texture_names, Some(path.to_path_buf()), source);
                 self.notices.status(format!("Opened {}", path.display()));
+                true
             }
-            Err(e) => self.notices.message("Cannot open", e.to_string()),
+            (Err(e), _) => {
+                self.notices.message("Cannot open", e.to_string());
+                false
+            }
+            (Ok(_), None) => {
+                self.notices.message(
+                    "Cannot open",
+                    format!("{}: cannot be read again", path.display()),
+                );
+                false
+            }
         }
     }
 
@@ -269,8 +302,10 @@ impl SceneTab {
         }
         self.poll_jobs();
         let mut req = None;
+        let width = ui.available_width();
         egui::Panel::left("scene-controls")
-            .default_size(320.0)
+            .default_size(320.0f32.min(width * 0.4))
+            .max_size((width * 0.45).max(160.0))
             .resizable(true)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| req = self.controls(ui, flame, escape));

@@ -4,6 +4,7 @@
 
 use glam::Vec3;
 
+use super::save::Origin;
 use super::{SceneTab, TextureSource};
 use crate::app::worker::task_worker;
 use crate::escape::EscapeDoc;
@@ -18,8 +19,7 @@ impl SceneTab {
     pub fn set_source(&mut self, src: TextureSource, flame: &Flame, escape: &EscapeDoc) {
         let slot = self.selected_object;
         let name = |n: &str| n.to_string();
-        let task: crate::app::worker::Task<super::TextureResult>;
-        match src {
+        let task: crate::app::worker::Task<super::TextureResult> = match src {
             TextureSource::Scene(i) => {
                 if let Some(o) = self.scene.objects.get_mut(slot) {
                     o.texture = Some(i);
@@ -35,11 +35,15 @@ impl SceneTab {
                 return;
             }
             TextureSource::CurrentFlame => {
+                self.origins.insert(
+                    "(current flame)".into(),
+                    Origin::Flame(Box::new(flame.clone())),
+                );
                 let mut f = flame.clone();
-                task = Box::new(move |_, _| {
+                Box::new(move |_, _| {
                     f.resize_keep_framing(512, 384);
                     f.quality = f.quality.min(40.0);
-                    let r = crate::flame::render(
+                    crate::flame::render(
                         &f,
                         &crate::flame::RenderOptions {
                             threads: 2,
@@ -53,19 +57,22 @@ impl SceneTab {
                             name("(current flame)"),
                         )
                     })
-                    .map_err(|e| e.to_string());
-                    r
-                });
+                    .map_err(|e| e.to_string())
+                })
             }
             TextureSource::CurrentEscape => {
+                self.origins.insert(
+                    "(current escape view)".into(),
+                    Origin::Escape(Box::new(escape.clone())),
+                );
                 let d = escape.clone();
-                task = Box::new(move |_, _| {
+                Box::new(move |_, _| {
                     let (w, h) = (1024u32, 512u32);
                     let mut view = d.view;
                     if !matches!(d.params.family, Family::WarpedJulia(_)) {
                         view.half_height = d.world_width() / 2.0 * h as f64 / w as f64;
                     }
-                    let r = crate::escape::render(&d.params, view, w, h)
+                    crate::escape::render(&d.params, view, w, h)
                         .map(|(img, _)| {
                             (
                                 slot,
@@ -73,12 +80,11 @@ impl SceneTab {
                                 name("(current escape view)"),
                             )
                         })
-                        .map_err(|e| e.to_string());
-                    r
-                });
+                        .map_err(|e| e.to_string())
+                })
             }
             TextureSource::Fbm | TextureSource::Mrf | TextureSource::Checker => {
-                task = Box::new(move |_, _| {
+                Box::new(move |_, _| {
                     let (a, b) = (Vec3::new(0.2, 0.15, 0.1), Vec3::new(0.9, 0.85, 0.7));
                     let (t, n) = match src {
                         TextureSource::Fbm => (
@@ -95,9 +101,9 @@ impl SceneTab {
                         ),
                     };
                     Ok((slot, t, name(n)))
-                });
+                })
             }
-        }
+        };
         let r = self.repaint.clone();
         let w = task_worker("ugnis-texture", move || r());
         w.submit(task);
@@ -112,6 +118,8 @@ impl SceneTab {
                 let n = path
                     .file_name()
                     .map_or("image".into(), |s| s.to_string_lossy().into_owned());
+                self.origins
+                    .insert(n.clone(), Origin::Image(path.to_path_buf()));
                 self.install_texture(self.selected_object, Texture::from_image(&img.to_rgb8()), n);
             }
             Err(e) => self.notices.status = format!("{}: {e}", path.display()),
@@ -119,11 +127,8 @@ impl SceneTab {
     }
 
     pub(super) fn install_texture(&mut self, slot: usize, t: Texture, name: String) {
-        let i = match self
-            .texture_names
-            .iter()
-            .position(|n| *n == name && name.starts_with('('))
-        {
+        // A texture of the same name is replaced: names stay unique, as scene files need.
+        let i = match self.texture_names.iter().position(|n| *n == name) {
             Some(i) => {
                 self.scene.textures[i] = t;
                 i
