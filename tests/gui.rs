@@ -808,6 +808,14 @@ fn the_file_chooser_works_from_a_relative_folder() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     std::env::set_current_dir(root).unwrap();
     let mut h = harness(Start::File(PathBuf::from("examples/orchid.flame")));
+    // Attributes of other programs (kept and written back) are told in the status line, not
+    // in a message box that would stand in the way.
+    assert!(
+        h.state()
+            .status()
+            .contains("attribute names of other programs")
+    );
+    assert!(h.query_by_label("Warnings").is_none());
     h.key_press_modifiers(Modifiers::COMMAND, Key::E);
     h.run_steps(2);
     h.get_by_role_and_label(Role::Button, "Choose…").click();

@@ -97,7 +97,11 @@ impl UgnisApp {
             return;
         }
         match load_any(path, &self.options) {
-            Ok((flames, warnings)) => {
+            Ok(Loaded {
+                flames,
+                warnings,
+                notes,
+            }) => {
                 let name = path
                     .file_stem()
                     .map(|s| s.to_string_lossy().into_owned())
@@ -107,6 +111,9 @@ impl UgnisApp {
                 self.flame
                     .notices
                     .status(format!("Opened {}", path.display()));
+                if let Some(n) = notes.first() {
+                    self.flame.notices.status(n.clone());
+                }
                 if !warnings.is_empty() {
                     self.flame.notices.message("Warnings", warnings.join("\n"));
                 }
@@ -205,7 +212,7 @@ impl UgnisApp {
 }
 
 /// Load flames from any supported file, with the Options' defaults for IFS files.
-pub fn load_any(path: &Path, options: &Options) -> Result<(Vec<Flame>, Vec<String>), String> {
+pub fn load_any(path: &Path, options: &Options) -> Result<Loaded, String> {
     let p = match io::kind_of(path) {
         io::FileKind::Ifs => io::ifs_flames_with(path, &options.new_flame()),
         _ => io::read_flames(path, &Default::default()),
@@ -218,7 +225,29 @@ pub fn load_any(path: &Path, options: &Options) -> Result<(Vec<Flame>, Vec<Strin
     for f in &mut flames {
         keep_foreign_weights(f);
     }
-    Ok((flames, p.warnings.iter().map(|w| w.to_string()).collect()))
+    // Attributes of other programs are kept and written back: worth a status line, not a
+    // message box that must be dismissed before anything else.
+    let (notes, warnings): (Vec<_>, Vec<_>) = p
+        .warnings
+        .iter()
+        .partition(|w| INFORMATIONAL.contains(&w.code));
+    Ok(Loaded {
+        flames,
+        warnings: warnings.iter().map(|w| w.to_string()).collect(),
+        notes: notes.iter().map(|w| w.to_string()).collect(),
+    })
+}
+
+/// Reader diagnostics that lose nothing (kept and written back unchanged).
+const INFORMATIONAL: &[&str] = &["XML021"];
+
+/// The flames of a file with what reading them had to say.
+pub struct Loaded {
+    pub flames: Vec<Flame>,
+    /// Shown in a message box.
+    pub warnings: Vec<String>,
+    /// Shown in the status line.
+    pub notes: Vec<String>,
 }
 
 /// A flame from another program keeps its own weights: triangle edits re-derive weights from

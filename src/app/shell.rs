@@ -9,7 +9,7 @@ use eframe::egui;
 
 use super::dialogs::{self, Confirm, FileBrowser, Purpose};
 use super::escape_tab::{EscapeRequest, EscapeTab};
-use super::files::{Pending, load_any};
+use super::files::{Loaded, Pending, load_any};
 use super::flame_tab::first_flame::striking_flame;
 use super::flame_tab::{FlameRequest, FlameTab};
 use super::help::{self, HelpPage};
@@ -75,6 +75,7 @@ impl UgnisApp {
     /// thumbnails); without it (tests) nothing renders.
     pub fn new(options: Options, start: Start, ctx: Option<egui::Context>) -> UgnisApp {
         let mut messages = Vec::new();
+        let mut start_note = None;
         // A view file opens in the escape-time tab (next to a random flame).
         let mut escape_start = None;
         let start = match start {
@@ -97,11 +98,16 @@ impl UgnisApp {
             Start::Flames(_) => (random_flame(1), None),
             Start::Random(seed) => (vec![striking_flame(seed, &options)], None),
             Start::File(p) => match load_any(&p, &options) {
-                Ok((f, w)) => {
-                    if !w.is_empty() {
-                        messages.push(("Warnings".to_string(), w.join("\n")));
+                Ok(Loaded {
+                    flames,
+                    warnings,
+                    notes,
+                }) => {
+                    if !warnings.is_empty() {
+                        messages.push(("Warnings".to_string(), warnings.join("\n")));
                     }
-                    (f, Some(p))
+                    start_note = notes.into_iter().next();
+                    (flames, Some(p))
                 }
                 Err(e) => {
                     messages.push(("Cannot open".to_string(), e));
@@ -109,7 +115,10 @@ impl UgnisApp {
                 }
             },
         };
-        let flame = FlameTab::new(flames, path, ctx.as_ref(), seed_from_time(), &options);
+        let mut flame = FlameTab::new(flames, path, ctx.as_ref(), seed_from_time(), &options);
+        if let Some(n) = start_note {
+            flame.notices.status(n);
+        }
         let mut escape = EscapeTab::new(ctx.as_ref());
         let tab = match escape_start {
             Some((d, p)) => {
