@@ -14,7 +14,7 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use ugnis::app::preview::{PreviewEvent, PreviewJob, PreviewWorker};
+use ugnis::app::flame_tab::preview::{PreviewEvent, PreviewJob, PreviewWorker};
 use ugnis::flame::Flame;
 use ugnis::flame::random::{self, RandomOptions, VariationMode};
 

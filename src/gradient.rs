@@ -771,7 +771,7 @@ fn dist2(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 /// The result is smooth, keeps the photograph's main colours and their proportions, and is the
 /// same for the same image and seed.
 pub fn from_pixels(name: &str, pixels: &[[u8; 3]], seed: u64) -> Gradient {
-    use crate::flame::rng::FastRng;
+    use crate::rng::FastRng;
     if pixels.is_empty() {
         return Gradient::grey_ramp();
     }
@@ -947,7 +947,7 @@ mod image_tests {
     #[test]
     fn photo_like_image_gives_its_colours_in_a_smooth_order() {
         // Sky blue 50 %, sand 30 %, dark green 20 %, with noise.
-        let mut rng = crate::flame::rng::FastRng::new(1);
+        let mut rng = crate::rng::FastRng::new(1);
         let mut px = Vec::new();
         for i in 0..10_000 {
             let base: [f64; 3] = if i % 10 < 5 {

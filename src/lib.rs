@@ -12,6 +12,8 @@ pub mod gradient;
 pub mod io;
 pub mod memory;
 pub mod noise;
+pub mod palette;
+pub mod rng;
 pub mod surface;
 pub mod threads;
 

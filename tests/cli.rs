@@ -643,6 +643,52 @@ fn scene_renders_files_and_reports_bad_ones() {
 }
 
 #[test]
+fn random_draws_only_from_the_variations_list() {
+    let dir = common::temp_dir("cli-random-list");
+    let out = dir.join("list.fla");
+    let (code, _, err) = ugnis(&[
+        "random",
+        "--count",
+        "4",
+        "--seed",
+        "5",
+        "--variations",
+        "julia,pre_blur,swirl",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    use ugnis::flame::variations::{self, Form};
+    let allowed = [
+        variations::parse_name("julia").unwrap(),
+        variations::parse_name("pre_blur").unwrap(),
+        variations::parse_name("swirl").unwrap(),
+        (variations::LINEAR, Form::Regular),
+    ];
+    for f in ugnis::io::read_flames(&out, &Default::default())
+        .unwrap()
+        .value
+    {
+        for x in &f.xforms {
+            for v in &x.vars {
+                assert!(allowed.contains(&(v.id, v.form)), "{:?}", (v.id, v.form));
+            }
+        }
+    }
+    // Unknown names are named in the message.
+    let (code, _, err) = ugnis(&[
+        "random",
+        "--variations",
+        "julia,no_such_thing",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1);
+    assert!(err.contains("no_such_thing"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn scene_ray_casts_new_kinds_and_refuses_what_does_not_fit() {
     let dir = common::temp_dir("cli-scene-raycast");
     let out = dir.join("menger.png");

@@ -99,8 +99,10 @@ fn three_d_fern_matches_its_reference() {
     // Saving a 3-D entry as .fla is refused with the documented message.
     let dir = common::temp_dir("fern3d");
     let e = io::write_flames(&dir.join("f.fla"), "x", std::slice::from_ref(fern)).unwrap_err();
+    assert!(matches!(e, io::WriteError::Ifs3dAsFlame { .. }), "{e:?}");
     assert!(
-        e.contains("3-D IFS entries cannot be represented as flames"),
+        e.to_string()
+            .contains("3-D IFS entries cannot be represented as flames"),
         "{e}"
     );
     // …but it round-trips through .ifs.

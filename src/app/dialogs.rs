@@ -2,9 +2,10 @@
 //! button for the system dialog (rfd, xdg-portal), plus small message and confirm dialogs.
 
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{Receiver, channel};
 
 use eframe::egui;
+
+use super::worker::{Repaint, TaskWorker, task_worker};
 
 /// What a file chooser is for; decides the title, filters and whether the file must exist.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,6 +19,7 @@ pub enum Purpose {
     SaveView,
     ExportEscape,
     OpenScene,
+    SaveScene,
     ExportScene,
     SceneTexture,
 }
@@ -34,6 +36,7 @@ impl Purpose {
             Purpose::SaveView => "Save escape-time view",
             Purpose::ExportEscape => "Export escape-time image",
             Purpose::OpenScene => "Open scene",
+            Purpose::SaveScene => "Save scene",
             Purpose::ExportScene => "Export scene image",
             Purpose::SceneTexture => "Texture image",
         }
@@ -46,7 +49,7 @@ impl Purpose {
             Purpose::LoadGradient => &["ugr", "map", "ggr", "gradient"],
             Purpose::GradientFromImage => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::Export | Purpose::ExportEscape | Purpose::ExportScene => &["png", "bmp"],
-            Purpose::OpenScene => &["toml"],
+            Purpose::OpenScene | Purpose::SaveScene => &["toml"],
             Purpose::SceneTexture => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::OpenView | Purpose::SaveView => &["esc"],
         }
@@ -58,10 +61,18 @@ impl Purpose {
             Purpose::SaveAs
                 | Purpose::Export
                 | Purpose::SaveView
+                | Purpose::SaveScene
                 | Purpose::ExportEscape
                 | Purpose::ExportScene
         )
     }
+}
+
+/// `dir` as an absolute path without `.` and `..` (as it is when it cannot be resolved).
+fn absolute_dir(dir: &Path) -> PathBuf {
+    std::fs::canonicalize(dir)
+        .or_else(|_| std::path::absolute(dir))
+        .unwrap_or_else(|_| dir.to_path_buf())
 }
 
 /// The built-in file browser.
@@ -71,11 +82,18 @@ pub struct FileBrowser {
     pub name: String,
     entries: Vec<(String, bool)>,
     error: Option<String>,
-    system: Option<Receiver<Option<PathBuf>>>,
+    /// The platform's dialog, run in the background while this one waits.
+    system: Option<TaskWorker<Option<PathBuf>>>,
+    repaint: Repaint,
 }
 
 impl FileBrowser {
-    pub fn new(purpose: Purpose, start: Option<&Path>, name: &str) -> FileBrowser {
+    pub fn new(
+        purpose: Purpose,
+        start: Option<&Path>,
+        name: &str,
+        repaint: Repaint,
+    ) -> FileBrowser {
         let dir = start
             .map(|p| {
                 if p.is_dir() {
@@ -87,6 +105,9 @@ impl FileBrowser {
             .filter(|d| d.is_dir())
             .or_else(|| std::env::current_dir().ok())
             .unwrap_or_else(|| PathBuf::from("."));
+        // A relative folder (from a relative file name on the command line) has no parent to
+        // go up to: work with the absolute one.
+        let dir = absolute_dir(&dir);
         let mut b = FileBrowser {
             purpose,
             dir,
@@ -94,6 +115,7 @@ impl FileBrowser {
             entries: Vec::new(),
             error: None,
             system: None,
+            repaint,
         };
         b.refresh();
         b
@@ -130,8 +152,8 @@ impl FileBrowser {
     /// Show the browser. Returns Some(Some(path)) when chosen, Some(None) when cancelled.
     pub fn show(&mut self, ctx: &egui::Context) -> Option<Option<PathBuf>> {
         // A pending system dialog answers first.
-        if let Some(rx) = &self.system
-            && let Ok(r) = rx.try_recv()
+        if let Some(w) = &self.system
+            && let Some(r) = w.poll().pop()
         {
             self.system = None;
             match r {
@@ -147,18 +169,35 @@ impl FileBrowser {
             ui.set_width(520.0);
             ui.heading(self.purpose.title());
             ui.horizontal(|ui| {
-                if ui.button("Up").on_hover_text("parent folder").clicked()
+                if ui.button("Up").on_hover_text("the parent folder").clicked()
                     && let Some(p) = self.dir.parent()
                 {
                     self.dir = p.to_path_buf();
                     self.refresh();
                 }
+                if ui
+                    .button("Home")
+                    .on_hover_text("your home folder")
+                    .clicked()
+                    && let Some(h) = std::env::var_os("HOME")
+                {
+                    self.dir = absolute_dir(Path::new(&h));
+                    self.refresh();
+                }
                 let mut d = self.dir.display().to_string();
-                if ui.text_edit_singleline(&mut d).lost_focus() {
-                    let p = PathBuf::from(&d);
+                let l = ui.label("Folder");
+                if ui
+                    .text_edit_singleline(&mut d)
+                    .labelled_by(l.id)
+                    .on_hover_text("type a folder and press Enter")
+                    .lost_focus()
+                {
+                    let p = self.dir.join(&d);
                     if p.is_dir() {
-                        self.dir = p;
+                        self.dir = absolute_dir(&p);
                         self.refresh();
+                    } else if d != self.dir.display().to_string() {
+                        self.error = Some(format!("{}: not a folder", p.display()));
                     }
                 }
             });
@@ -220,7 +259,10 @@ impl FileBrowser {
                     .add_enabled(self.system.is_none(), egui::Button::new("System dialog…"))
                     .clicked()
                 {
-                    self.system = Some(system_dialog(self.purpose, &self.dir, &self.name));
+                    let r = self.repaint.clone();
+                    let w = task_worker("ugnis-file-dialog", move || r());
+                    w.submit(system_dialog(self.purpose, &self.dir, &self.name));
+                    self.system = Some(w);
                 }
             });
         });
@@ -238,24 +280,34 @@ impl FileBrowser {
     }
 }
 
-/// Run the platform's file dialog on a thread; the answer arrives on the channel.
-fn system_dialog(purpose: Purpose, dir: &Path, name: &str) -> Receiver<Option<PathBuf>> {
-    let (tx, rx) = channel();
+impl Drop for FileBrowser {
+    fn drop(&mut self) {
+        // The platform's dialog cannot be closed from here: let it finish on its own.
+        if let Some(w) = self.system.take() {
+            w.detach();
+        }
+    }
+}
+
+/// The platform's file dialog, as a background task.
+fn system_dialog(
+    purpose: Purpose,
+    dir: &Path,
+    name: &str,
+) -> crate::app::worker::Task<Option<PathBuf>> {
     let dir = dir.to_path_buf();
     let name = name.to_string();
-    std::thread::spawn(move || {
+    Box::new(move |_, _| {
         let d = rfd::FileDialog::new()
             .set_title(purpose.title())
             .set_directory(&dir)
             .add_filter(purpose.title(), purpose.extensions());
-        let r = if purpose.saving() {
+        if purpose.saving() {
             d.set_file_name(&name).save_file()
         } else {
             d.pick_file()
-        };
-        let _ = tx.send(r);
-    });
-    rx
+        }
+    })
 }
 
 /// The choices of a confirm dialog.

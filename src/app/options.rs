@@ -1,16 +1,20 @@
-//! The Options dialog's settings (flame.md §10), persisted as `key = value` lines in the
-//! platform config directory (`$XDG_CONFIG_HOME/ugnis/options.txt`, `~/.config/ugnis/…`).
+//! The Options dialog's settings, persisted as TOML in the platform config directory
+//! (`$XDG_CONFIG_HOME/ugnis/options.toml`, `~/.config/ugnis/…`). The defaults are the thesis
+//! program's Options dialog (main density 15, gamma 2, brightness 4, contrast 1; preview
+//! density 5; animation density 1; 2–6 transforms; each of the seven variations 1/7).
 
 use std::path::PathBuf;
 
-use eframe::egui;
+use serde::{Deserialize, Serialize};
 
 use crate::flame::NewFlame;
 use crate::flame::random::{RandomOptions, SymmetryMode, VariationMode};
+use crate::flame::variations::{self, Form, VarId};
 use crate::gradient::{self, Gradient};
 
 /// All persisted options.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct Options {
     // Display
     pub main_quality: f64,
@@ -26,6 +30,7 @@ pub struct Options {
     pub random_gradient: bool,
     pub probabilities: [f64; 7],
     /// Symmetry of random flames: none, flam3's random order, or a fixed order.
+    #[serde(with = "symmetry_text")]
     pub symmetry: SymmetryMode,
     /// Chance of a random post transform per transform, and of a final transform.
     pub post_probability: f64,
@@ -40,7 +45,18 @@ pub struct Options {
     /// Size of new flames.
     pub width: u32,
     pub height: u32,
+    /// The variations filter: the names (NAME, pre_NAME, post_NAME) random flames may use.
+    pub variation_filter: Vec<String>,
+    /// Random flames draw their variations from the filter.
+    pub use_variation_filter: bool,
+    /// Files opened or saved lately, newest first.
+    pub recent_files: Vec<PathBuf>,
 }
+
+/// Most recent files kept.
+pub const RECENT_FILES: usize = 10;
+/// Most names the variations filter keeps (every name with its forms is about 1,400).
+pub const MAX_FILTER_NAMES: usize = 5000;
 
 impl Default for Options {
     fn default() -> Self {
@@ -65,12 +81,16 @@ impl Default for Options {
             auto_weights: true,
             width: 640,
             height: 480,
+            variation_filter: Vec::new(),
+            use_variation_filter: false,
+            recent_files: Vec::new(),
         }
     }
 }
 
 impl Options {
-    /// Problems that make the options invalid (flame.md §10 rules), empty when valid.
+    /// Problems that make the options invalid, empty when valid: densities, gamma,
+    /// brightness and contrast above 0; 2 ≤ minimum ≤ maximum ≤ 100 transforms.
     pub fn problems(&self) -> Vec<String> {
         let mut p = Vec::new();
         for (name, v) in [
@@ -110,7 +130,45 @@ impl Options {
         if self.width == 0 || self.height == 0 || self.width > 20000 || self.height > 20000 {
             p.push("new flame size must be between 1 and 20000 pixels".into());
         }
+        if self.variation_filter.len() > MAX_FILTER_NAMES {
+            p.push(format!(
+                "the variations filter holds at most {MAX_FILTER_NAMES} names"
+            ));
+        }
+        if self.recent_files.len() > 100 {
+            p.push("at most 100 recent files".into());
+        }
         p
+    }
+
+    /// The variations filter as variations (unknown names are left out).
+    pub fn filter_list(&self) -> Vec<(VarId, Form)> {
+        self.variation_filter
+            .iter()
+            .filter_map(|n| variations::parse_name(n))
+            .collect()
+    }
+
+    /// How random flames choose variations at start: the filter when it is in use, otherwise
+    /// one of the seven thesis variations per transform.
+    pub fn variation_mode(&self) -> VariationMode {
+        if self.use_variation_filter {
+            VariationMode::FromList(self.filter_list())
+        } else {
+            VariationMode::Random(self.probabilities)
+        }
+    }
+
+    /// Put `path` first in the recent files.
+    pub fn remember(&mut self, path: &std::path::Path) {
+        // The options file is text: a name that is not Unicode is not kept.
+        if path.to_str().is_none() {
+            return;
+        }
+        let p = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        self.recent_files.retain(|q| q != &p);
+        self.recent_files.insert(0, p);
+        self.recent_files.truncate(RECENT_FILES);
     }
 
     pub fn gradient(&self) -> Gradient {
@@ -146,135 +204,57 @@ impl Options {
         }
     }
 
-    /// The options as `key = value` lines.
+    /// The options as TOML.
     pub fn to_text(&self) -> String {
-        let p: Vec<String> = self.probabilities.iter().map(|v| v.to_string()).collect();
-        format!(
-            "# ugnis options\nmain_quality = {}\nmain_gamma = {}\nmain_brightness = {}\nmain_contrast = {}\n\
-             preview_quality = {}\npreview_gamma = {}\nanimation_quality = {}\nmin_xforms = {}\nmax_xforms = {}\n\
-             random_gradient = {}\nprobabilities = {}\ndefault_gradient = {}\npreview_size = {}\nthreads = {}\n\
-             auto_weights = {}\nwidth = {}\nheight = {}\nsymmetry = {}\npost_probability = {}\n\
-             final_probability = {}\n",
-            self.main_quality,
-            self.main_gamma,
-            self.main_brightness,
-            self.main_contrast,
-            self.preview_quality,
-            self.preview_gamma,
-            self.animation_quality,
-            self.min_xforms,
-            self.max_xforms,
-            self.random_gradient,
-            p.join(" "),
-            self.default_gradient,
-            self.preview_size,
-            self.threads,
-            self.auto_weights,
-            self.width,
-            self.height,
-            match self.symmetry {
-                SymmetryMode::None => "none".to_string(),
-                SymmetryMode::Random => "random".to_string(),
-                SymmetryMode::Order(k) => k.to_string(),
-            },
-            self.post_probability,
-            self.final_probability,
-        )
+        let body = toml::to_string(self).expect("options always serialise");
+        format!("# ugnis options\n{body}")
     }
 
-    /// Parse `key = value` lines; unknown keys and bad values keep the defaults. Returns the
-    /// options and messages about what was ignored.
-    pub fn from_text(text: &str) -> (Options, Vec<String>) {
-        let mut o = Options::default();
-        let mut notes = Vec::new();
-        for (n, line) in text.lines().enumerate() {
-            let line = line.trim();
-            if line.is_empty() || line.starts_with('#') {
-                continue;
+    /// Read options from TOML; absent keys keep their defaults, unknown keys are ignored.
+    /// Errors name the line and what was expected; options that break a rule are refused.
+    pub fn from_text(text: &str) -> Result<Options, String> {
+        let o: Options = toml::from_str(text).map_err(|e| {
+            let line = e
+                .span()
+                .map(|s| text[..s.start.min(text.len())].lines().count().max(1));
+            match line {
+                Some(l) => format!("line {l}: {}", e.message()),
+                None => e.message().to_string(),
             }
-            let Some((k, v)) = line.split_once('=') else {
-                notes.push(format!("line {}: expected 'key = value'", n + 1));
-                continue;
-            };
-            let (k, v) = (k.trim(), v.trim());
-            let ok = match k {
-                "main_quality" => v.parse().map(|x| o.main_quality = x).is_ok(),
-                "main_gamma" => v.parse().map(|x| o.main_gamma = x).is_ok(),
-                "main_brightness" => v.parse().map(|x| o.main_brightness = x).is_ok(),
-                "main_contrast" => v.parse().map(|x| o.main_contrast = x).is_ok(),
-                "preview_quality" => v.parse().map(|x| o.preview_quality = x).is_ok(),
-                "preview_gamma" => v.parse().map(|x| o.preview_gamma = x).is_ok(),
-                "animation_quality" => v.parse().map(|x| o.animation_quality = x).is_ok(),
-                "min_xforms" => v.parse().map(|x| o.min_xforms = x).is_ok(),
-                "max_xforms" => v.parse().map(|x| o.max_xforms = x).is_ok(),
-                "random_gradient" => v.parse().map(|x| o.random_gradient = x).is_ok(),
-                "probabilities" => {
-                    let vals: Vec<f64> = v
-                        .split_whitespace()
-                        .filter_map(|t| t.parse().ok())
-                        .collect();
-                    match <[f64; 7]>::try_from(vals) {
-                        Ok(a) => {
-                            o.probabilities = a;
-                            true
-                        }
-                        Err(_) => false,
-                    }
-                }
-                "default_gradient" => {
-                    o.default_gradient = v.to_string();
-                    true
-                }
-                "preview_size" => v.parse().map(|x| o.preview_size = x).is_ok(),
-                "threads" => v.parse().map(|x| o.threads = x).is_ok(),
-                "auto_weights" => v.parse().map(|x| o.auto_weights = x).is_ok(),
-                "width" => v.parse().map(|x| o.width = x).is_ok(),
-                "height" => v.parse().map(|x| o.height = x).is_ok(),
-                "symmetry" => match v {
-                    "none" => {
-                        o.symmetry = SymmetryMode::None;
-                        true
-                    }
-                    "random" => {
-                        o.symmetry = SymmetryMode::Random;
-                        true
-                    }
-                    n => n
-                        .parse()
-                        .map(|k| o.symmetry = SymmetryMode::Order(k))
-                        .is_ok(),
-                },
-                "post_probability" => v.parse().map(|x| o.post_probability = x).is_ok(),
-                "final_probability" => v.parse().map(|x| o.final_probability = x).is_ok(),
-                _ => {
-                    notes.push(format!("line {}: unknown option '{k}'", n + 1));
-                    true
-                }
-            };
-            if !ok {
-                notes.push(format!("line {}: bad value '{v}' for {k}", n + 1));
-            }
+        })?;
+        let p = o.problems();
+        if p.is_empty() {
+            Ok(o)
+        } else {
+            Err(format!("invalid options: {}", p.join("; ")))
         }
-        if !o.problems().is_empty() {
-            notes.push(format!(
-                "invalid options ({}); using the defaults",
-                o.problems().join("; ")
-            ));
-            o = Options::default();
-        }
-        (o, notes)
     }
 
-    /// `$XDG_CONFIG_HOME/ugnis/options.txt` (or `~/.config/ugnis/options.txt`).
+    /// `$XDG_CONFIG_HOME/ugnis/options.toml` (or `~/.config/ugnis/options.toml`).
     pub fn path() -> Option<PathBuf> {
-        config_dir().map(|d| d.join("options.txt"))
+        config_dir().map(|d| d.join("options.toml"))
     }
 
-    pub fn load() -> Options {
-        Self::path()
-            .and_then(|p| std::fs::read_to_string(p).ok())
-            .map(|t| Options::from_text(&t).0)
-            .unwrap_or_default()
+    /// The saved options, or the defaults when there are none. A file that cannot be used
+    /// gives the defaults and a message naming it.
+    pub fn load() -> (Options, Option<String>) {
+        let Some(p) = Self::path() else {
+            return (Options::default(), None);
+        };
+        match std::fs::read_to_string(&p) {
+            Ok(t) => match Options::from_text(&t) {
+                Ok(o) => (o, None),
+                Err(e) => (
+                    Options::default(),
+                    Some(format!("{}: {e}; using the defaults", p.display())),
+                ),
+            },
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => (Options::default(), None),
+            Err(e) => (
+                Options::default(),
+                Some(format!("{}: {e}; using the defaults", p.display())),
+            ),
+        }
     }
 
     pub fn save(&self) -> Result<(), String> {
@@ -285,6 +265,41 @@ impl Options {
         }
         crate::io::atomic::write_atomic(&p, self.to_text().as_bytes())
             .map_err(|e| format!("cannot save options: {e}"))
+    }
+}
+
+/// Symmetry as TOML: "none", "random" or the order as a number.
+mod symmetry_text {
+    use serde::{Deserialize, Deserializer, Serializer, de};
+
+    use crate::flame::random::SymmetryMode;
+
+    pub fn serialize<S: Serializer>(m: &SymmetryMode, s: S) -> Result<S::Ok, S::Error> {
+        match m {
+            SymmetryMode::None => s.serialize_str("none"),
+            SymmetryMode::Random => s.serialize_str("random"),
+            SymmetryMode::Order(k) => s.serialize_i32(*k),
+        }
+    }
+
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum Text {
+        Word(String),
+        Order(i32),
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<SymmetryMode, D::Error> {
+        match Text::deserialize(d)? {
+            Text::Order(k) => Ok(SymmetryMode::Order(k)),
+            Text::Word(w) => match w.as_str() {
+                "none" => Ok(SymmetryMode::None),
+                "random" => Ok(SymmetryMode::Random),
+                _ => Err(de::Error::custom(format!(
+                    "symmetry '{w}': expected \"none\", \"random\" or an order"
+                ))),
+            },
+        }
     }
 }
 
@@ -304,161 +319,6 @@ pub fn data_dir() -> Option<PathBuf> {
         .filter(|p| p.is_absolute())
         .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".local/share")))
         .map(|d| d.join("ugnis"))
-}
-
-/// Tabs of the Options dialog.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum OptionsTab {
-    #[default]
-    Display,
-    Random,
-    General,
-}
-
-/// The Options dialog. Returns true when the user pressed OK with valid options.
-pub fn dialog(ui: &mut egui::Ui, draft: &mut Options, tab: &mut OptionsTab) -> Option<bool> {
-    let mut result = None;
-    ui.horizontal(|ui| {
-        ui.selectable_value(tab, OptionsTab::Display, "Display");
-        ui.selectable_value(tab, OptionsTab::Random, "Random");
-        ui.selectable_value(tab, OptionsTab::General, "General");
-    });
-    ui.separator();
-    let num = |ui: &mut egui::Ui, label: &str, v: &mut f64, speed: f64| {
-        ui.label(label);
-        ui.add(egui::DragValue::new(v).speed(speed).range(0.0..=1e6));
-        ui.end_row();
-    };
-    match tab {
-        OptionsTab::Display => {
-            egui::Grid::new("opt-display")
-                .num_columns(2)
-                .show(ui, |ui| {
-                    ui.strong("Main render");
-                    ui.end_row();
-                    num(ui, "Density (quality)", &mut draft.main_quality, 0.5);
-                    num(ui, "Gamma", &mut draft.main_gamma, 0.05);
-                    num(ui, "Brightness", &mut draft.main_brightness, 0.05);
-                    num(ui, "Contrast", &mut draft.main_contrast, 0.05);
-                    ui.strong("Preview");
-                    ui.end_row();
-                    num(ui, "Density", &mut draft.preview_quality, 0.5);
-                    num(ui, "Gamma", &mut draft.preview_gamma, 0.05);
-                    ui.strong("Animation");
-                    ui.end_row();
-                    num(ui, "Density", &mut draft.animation_quality, 0.1);
-                });
-        }
-        OptionsTab::Random => {
-            egui::Grid::new("opt-random").num_columns(2).show(ui, |ui| {
-                ui.label("Transforms, minimum");
-                ui.add(egui::DragValue::new(&mut draft.min_xforms).range(2..=100));
-                ui.end_row();
-                ui.label("Transforms, maximum");
-                ui.add(egui::DragValue::new(&mut draft.max_xforms).range(2..=100));
-                ui.end_row();
-                ui.label("Random gradient");
-                ui.checkbox(&mut draft.random_gradient, "");
-                ui.end_row();
-                ui.label("Symmetry");
-                ui.horizontal(|ui| {
-                    let fixed = matches!(draft.symmetry, SymmetryMode::Order(_));
-                    if ui
-                        .selectable_label(draft.symmetry == SymmetryMode::None, "none")
-                        .clicked()
-                    {
-                        draft.symmetry = SymmetryMode::None;
-                    }
-                    if ui
-                        .selectable_label(draft.symmetry == SymmetryMode::Random, "random")
-                        .clicked()
-                    {
-                        draft.symmetry = SymmetryMode::Random;
-                    }
-                    if ui.selectable_label(fixed, "order").clicked() && !fixed {
-                        draft.symmetry = SymmetryMode::Order(4);
-                    }
-                    if let SymmetryMode::Order(k) = &mut draft.symmetry {
-                        ui.add(egui::DragValue::new(k).range(-100..=100))
-                            .on_hover_text("N: rotational; −N: rotational and mirror; −1: mirror");
-                    }
-                });
-                ui.end_row();
-                ui.label("Chance of post transforms");
-                ui.add(egui::Slider::new(&mut draft.post_probability, 0.0..=1.0));
-                ui.end_row();
-                ui.label("Chance of a final transform");
-                ui.add(egui::Slider::new(&mut draft.final_probability, 0.0..=1.0));
-                ui.end_row();
-                ui.strong("Variation probabilities");
-                ui.end_row();
-                for (i, id) in crate::flame::variations::THESIS_SEVEN.iter().enumerate() {
-                    ui.label(crate::flame::variations::info(*id).name);
-                    ui.add(
-                        egui::DragValue::new(&mut draft.probabilities[i])
-                            .speed(0.01)
-                            .range(0.0..=1.0),
-                    );
-                    ui.end_row();
-                }
-            });
-        }
-        OptionsTab::General => {
-            egui::Grid::new("opt-general")
-                .num_columns(2)
-                .show(ui, |ui| {
-                    ui.label("Default gradient");
-                    egui::ComboBox::from_id_salt("opt-gradient")
-                        .selected_text(draft.default_gradient.clone())
-                        .show_ui(ui, |ui| {
-                            for g in gradient::builtin() {
-                                ui.selectable_value(
-                                    &mut draft.default_gradient,
-                                    g.name.clone(),
-                                    g.name,
-                                );
-                            }
-                        });
-                    ui.end_row();
-                    ui.label("Preview size (pixels)");
-                    ui.add(egui::DragValue::new(&mut draft.preview_size).range(64..=4096));
-                    ui.end_row();
-                    ui.label("New flame size");
-                    ui.horizontal(|ui| {
-                        ui.add(egui::DragValue::new(&mut draft.width).range(1..=20000));
-                        ui.label("×");
-                        ui.add(egui::DragValue::new(&mut draft.height).range(1..=20000));
-                    });
-                    ui.end_row();
-                    ui.label("Render threads (0 = all)");
-                    ui.add(egui::DragValue::new(&mut draft.threads).range(0..=256));
-                    ui.end_row();
-                    ui.label("Weights from triangle areas after edits");
-                    ui.checkbox(&mut draft.auto_weights, "");
-                    ui.end_row();
-                });
-        }
-    }
-    let problems = draft.problems();
-    for p in &problems {
-        ui.colored_label(egui::Color32::from_rgb(230, 90, 80), p);
-    }
-    ui.separator();
-    ui.horizontal(|ui| {
-        if ui
-            .add_enabled(problems.is_empty(), egui::Button::new("OK"))
-            .clicked()
-        {
-            result = Some(true);
-        }
-        if ui.button("Cancel").clicked() {
-            result = Some(false);
-        }
-        if ui.button("Defaults").clicked() {
-            *draft = Options::default();
-        }
-    });
-    result
 }
 
 #[cfg(test)]
@@ -491,22 +351,59 @@ mod tests {
         p.probabilities[3] = 0.5;
         p.symmetry = SymmetryMode::Order(-3);
         p.post_probability = 0.25;
-        let (q, notes) = Options::from_text(&p.to_text());
-        assert!(notes.is_empty(), "{notes:?}");
-        assert_eq!(q, p);
+        p.variation_filter = vec!["julia".into(), "pre_blur".into()];
+        p.use_variation_filter = true;
+        p.remember(std::path::Path::new("/tmp/a.flame"));
+        assert_eq!(Options::from_text(&p.to_text()), Ok(p.clone()));
+        assert_eq!(
+            p.filter_list(),
+            vec![
+                variations::parse_name("julia").unwrap(),
+                variations::parse_name("pre_blur").unwrap()
+            ]
+        );
+        assert!(matches!(p.variation_mode(), VariationMode::FromList(l) if l.len() == 2));
         p.symmetry = SymmetryMode::Random;
-        assert_eq!(Options::from_text(&p.to_text()).0, p);
+        assert_eq!(Options::from_text(&p.to_text()), Ok(p));
+        // Absent keys keep their defaults.
+        assert_eq!(Options::from_text("threads = 3\n").unwrap().threads, 3);
+        assert_eq!(Options::from_text("").unwrap(), Options::default());
     }
 
     #[test]
-    fn validation() {
+    fn recent_files_are_newest_first_without_repeats() {
+        let mut o = Options::default();
+        for k in 0..15 {
+            o.remember(std::path::Path::new(&format!("/tmp/f{k}.fla")));
+        }
+        o.remember(std::path::Path::new("/tmp/f10.fla"));
+        assert_eq!(o.recent_files.len(), RECENT_FILES);
+        assert_eq!(o.recent_files[0], std::path::Path::new("/tmp/f10.fla"));
+        assert_eq!(o.recent_files[1], std::path::Path::new("/tmp/f14.fla"));
+        assert_eq!(
+            o.recent_files
+                .iter()
+                .filter(|p| p.ends_with("f10.fla"))
+                .count(),
+            1
+        );
+    }
+
+    #[test]
+    fn bad_values_name_the_line_and_broken_rules_are_refused() {
         let o = Options {
             min_xforms: 7,
             ..Options::default()
         };
         assert!(!o.problems().is_empty());
-        let (q, notes) = Options::from_text("min_xforms = 1\nfoo = 3\nmain_gamma = x\n");
-        assert_eq!(q, Options::default());
-        assert_eq!(notes.len(), 3, "{notes:?}");
+        let e = Options::from_text("threads = 2\nmain_gamma = \"x\"\n").unwrap_err();
+        assert!(e.starts_with("line 2:"), "{e}");
+        let e = Options::from_text("symmetry = \"sometimes\"\n").unwrap_err();
+        assert!(
+            e.contains("expected \"none\", \"random\" or an order"),
+            "{e}"
+        );
+        let e = Options::from_text("min_xforms = 1\n").unwrap_err();
+        assert!(e.contains("2 ≤ minimum"), "{e}");
     }
 }

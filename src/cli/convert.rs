@@ -68,7 +68,7 @@ pub fn run(a: ConvertArgs) -> Result<()> {
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_default()
         });
-        for w in io::write_flames(&a.output, &name, &flames).map_err(anyhow::Error::msg)? {
+        for w in io::write_flames(&a.output, &name, &flames)? {
             eprintln!("warning: {w}");
         }
         return Ok(());
@@ -90,7 +90,7 @@ pub fn run(a: ConvertArgs) -> Result<()> {
         } else {
             p.value
         };
-        io::write_gradients(&a.output, &gradients).map_err(anyhow::Error::msg)?;
+        io::write_gradients(&a.output, &gradients)?;
         return Ok(());
     }
     bail!(

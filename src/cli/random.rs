@@ -33,6 +33,10 @@ pub struct RandomArgs {
     /// transform) or "mix" (2–3 of all variations per transform)
     #[arg(long, default_value = "random")]
     pub variation: String,
+    /// The variations random flames may use, comma separated (NAME, pre_NAME or post_NAME):
+    /// every transform gets one or two of them (replaces --variation)
+    #[arg(long, value_delimiter = ',')]
+    pub variations: Vec<String>,
     /// Symmetry order: N ≥ 2 rotational, −N rotational and mirror, −1 mirror, or "random"
     #[arg(long, allow_hyphen_values = true)]
     pub symmetry: Option<String>,
@@ -62,6 +66,31 @@ pub fn variation_mode(s: &str) -> Result<VariationMode> {
             ),
         },
     })
+}
+
+/// Parse the --variations list: every name must be a variation (NAME, pre_NAME, post_NAME).
+pub fn variation_list(names: &[String]) -> Result<VariationMode> {
+    let mut list = Vec::new();
+    let mut unknown = Vec::new();
+    for n in names.iter().map(|n| n.trim()).filter(|n| !n.is_empty()) {
+        match variations::parse_name(n) {
+            Some(e) => list.push(e),
+            None => unknown.push(n.to_string()),
+        }
+    }
+    if !unknown.is_empty() {
+        bail!(
+            "--variations: unknown variation name(s) {}; give names such as julia, pre_blur or post_mirror_wf",
+            unknown.join(", ")
+        );
+    }
+    if list.is_empty() {
+        bail!("--variations needs at least one variation name");
+    }
+    if list.len() > 5000 {
+        bail!("--variations: {} names; at most 5000", list.len());
+    }
+    Ok(VariationMode::FromList(list))
 }
 
 /// Parse the --symmetry argument.
@@ -129,7 +158,13 @@ pub fn run(a: RandomArgs) -> Result<()> {
     let opts = RandomOptions {
         min_xforms: a.min_xforms,
         max_xforms: a.max_xforms,
-        variations: variation_mode(&a.variation)?,
+        variations: if a.variations.is_empty() {
+            variation_mode(&a.variation)?
+        } else if a.variation != "random" {
+            bail!("give either --variation or --variations, not both");
+        } else {
+            variation_list(&a.variations)?
+        },
         symmetry: symmetry_mode(a.symmetry.as_deref())?,
         ..RandomOptions::default()
     };
@@ -247,7 +282,6 @@ pub fn run(a: RandomArgs) -> Result<()> {
         .file_stem()
         .map_or_else(|| "random".into(), |s| s.to_string_lossy().into_owned());
     io::write_flames(&a.output, &name, &flames)
-        .map_err(|e| anyhow::anyhow!(e))
         .with_context(|| format!("cannot write '{}'", a.output.display()))?;
     if a.count > 1 {
         let ok = passed.load(Ordering::Relaxed);

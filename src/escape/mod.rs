@@ -10,6 +10,7 @@ pub mod color;
 pub mod complex;
 pub mod dd;
 pub mod deep;
+pub mod doc;
 pub mod family;
 pub mod lanes;
 pub mod render;
@@ -17,6 +18,7 @@ pub mod warp;
 
 pub use color::{Coloring, Palette};
 pub use complex::C;
+pub use doc::EscapeDoc;
 pub use family::{Family, Sample};
 pub use render::{EscapeError, EscapeParams, EscapeRenderer, Fill, View, render};
 pub use warp::{Preset, Sampling, Warp};

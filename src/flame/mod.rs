@@ -9,13 +9,15 @@ pub mod density;
 pub mod fastmath;
 pub mod filter;
 pub mod framing;
+pub mod geometry;
 pub mod histogram;
 pub mod ifs3d;
 pub mod model;
 pub mod mutate;
 pub mod random;
 pub mod render;
-pub mod rng;
+/// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
+pub use crate::rng;
 pub mod symmetry;
 pub mod tonemap;
 pub mod variations;

@@ -7,7 +7,7 @@ use crate::flame::model::{Affine, Flame, FlameKind, NewFlame, Var, Xform};
 use crate::flame::render::{RenderOptions, render};
 use crate::flame::rng::FastRng;
 use crate::flame::symmetry::{add_symmetry, random_symmetry};
-use crate::flame::variations::{self, VarId};
+use crate::flame::variations::{self, Form, VarId};
 use crate::gradient::Gradient;
 
 /// How variations are chosen for a random flame.
@@ -19,6 +19,11 @@ pub enum VariationMode {
     Random([f64; 7]),
     /// A random mix of 2–3 variations per xform from the 99 (weights normalised to 1).
     Mix,
+    /// Variations drawn from a list (the "variations filter" of Fractorium): every xform gets
+    /// one or two different entries of the list, weights normalised to 1; an xform whose
+    /// entries are all `pre_`/`post_` forms also gets linear, so that it has a main
+    /// variation. An empty list gives linear.
+    FromList(Vec<(VarId, Form)>),
 }
 
 impl Default for VariationMode {
@@ -175,6 +180,39 @@ pub fn random_variations(mode: &VariationMode, rng: &mut FastRng) -> Vec<Var> {
                     params: random_params(id, rng),
                     ..Var::new(id, rng.f01() + 0.05)
                 });
+            }
+            let s: f64 = vs.iter().map(|v| v.weight).sum();
+            vs.iter_mut().for_each(|v| v.weight /= s);
+            vs
+        }
+        VariationMode::FromList(list) => {
+            let mut distinct: Vec<(VarId, Form)> = Vec::new();
+            for e in list {
+                if !distinct.contains(e) {
+                    distinct.push(*e);
+                }
+            }
+            if distinct.is_empty() {
+                return vec![Var::new(variations::LINEAR, 1.0)];
+            }
+            let k = if distinct.len() > 1 && rng.bit() {
+                2
+            } else {
+                1
+            };
+            let mut vs: Vec<Var> = Vec::new();
+            while vs.len() < k {
+                let (id, form) = distinct[rng.below(distinct.len() as u64) as usize];
+                if vs.iter().any(|v| v.id == id && v.form == form) {
+                    continue;
+                }
+                vs.push(Var {
+                    params: random_params(id, rng),
+                    ..Var::with_form(id, form, rng.f01() + 0.05)
+                });
+            }
+            if vs.iter().all(|v| v.form != Form::Regular) {
+                vs.push(Var::new(variations::LINEAR, 1.0));
             }
             let s: f64 = vs.iter().map(|v| v.weight).sum();
             vs.iter_mut().for_each(|v| v.weight /= s);
@@ -404,6 +442,41 @@ mod tests {
             let s: f64 = x.vars.iter().map(|v| v.weight).sum();
             assert!((s - 1.0).abs() < 1e-12);
         }
+    }
+
+    #[test]
+    fn a_variation_list_is_all_random_flames_use() {
+        let list = vec![
+            (variations::SWIRL, Form::Regular),
+            (variations::JULIA, Form::Regular),
+            (variations::by_name("spherical").unwrap(), Form::Pre),
+        ];
+        let o = RandomOptions {
+            variations: VariationMode::FromList(list.clone()),
+            ..RandomOptions::default()
+        };
+        let mut seen = std::collections::HashSet::new();
+        let mut rng = FastRng::new(9);
+        for _ in 0..40 {
+            let f = candidate(4, &o, &NewFlame::default(), &mut rng);
+            for x in &f.xforms {
+                assert!(x.vars.iter().any(|v| v.form == Form::Regular));
+                for v in &x.vars {
+                    let e = (v.id, v.form);
+                    assert!(
+                        list.contains(&e) || e == (variations::LINEAR, Form::Regular),
+                        "{e:?}"
+                    );
+                    seen.insert(e);
+                }
+                let s: f64 = x.vars.iter().map(|v| v.weight).sum();
+                assert!((s - 1.0).abs() < 1e-12);
+            }
+        }
+        assert!(list.iter().all(|e| seen.contains(e)), "every entry is used");
+        let empty = VariationMode::FromList(Vec::new());
+        let v = random_variations(&empty, &mut rng);
+        assert_eq!((v.len(), v[0].id), (1, variations::LINEAR));
     }
 
     #[test]

@@ -23,7 +23,8 @@ use rayon::prelude::*;
 use crate::flame::chaos::{Chaos, ChaosError, Lanes, SUB_BATCH};
 use crate::flame::density::{DeError, DeFilters};
 use crate::flame::framing;
-use crate::flame::histogram::{Bucket, Geometry, Histogram, PlotPalette};
+use crate::flame::geometry::Geometry;
+use crate::flame::histogram::{Bucket, Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::Flame;
 use crate::flame::rng::FastRng;
@@ -516,21 +517,6 @@ impl Renderer {
             })
             .collect();
         filter_and_tonemap(&self.flame, &self.geom, &acc, self.format)
-    }
-
-    /// Re-develop the current histogram with other tone settings (brightness, gamma,
-    /// vibrancy, background…) taken from `tone`, without iterating again.
-    pub fn develop_with(&self, tone: &Flame) -> DynamicImage {
-        let m = self.merged();
-        let mut f = self.flame.clone();
-        f.brightness = tone.brightness;
-        f.contrast = tone.contrast;
-        f.gamma = tone.gamma;
-        f.gamma_threshold = tone.gamma_threshold;
-        f.vibrancy = tone.vibrancy;
-        f.highlight_power = tone.highlight_power;
-        f.background = tone.background;
-        develop(&f, &self.geom, &m, self.density(), self.format)
     }
 
     /// True when the samples are kept and [`Renderer::recolor`] can be used.

@@ -19,42 +19,11 @@ use std::path::Path;
 
 use super::diag::{Diagnostic, Parsed, Pos};
 use crate::escape::dd::Dd;
-use crate::escape::{C, Coloring, EscapeParams, Family, Fill, Sampling, View, Warp};
+use crate::escape::{C, Coloring, Family, Fill, Sampling, Warp};
 use crate::gradient::{self, Gradient};
 use crate::noise::Fbm;
 
-/// A saved escape-time view.
-#[derive(Clone, Debug, PartialEq)]
-pub struct EscapeDoc {
-    pub params: EscapeParams,
-    pub view: View,
-    pub width: u32,
-    pub height: u32,
-    /// How the gradient was named in the file (a built-in name or a file path), for writing
-    /// it back.
-    pub gradient_source: String,
-}
-
-impl EscapeDoc {
-    /// A family's default document: its default view at 800×600, 256 iterations.
-    pub fn new(family: Family) -> EscapeDoc {
-        let (center, half_height) = family.default_view();
-        let mut params = EscapeParams::new(family);
-        params.palette.gradient = gradient::default_gradient();
-        EscapeDoc {
-            params,
-            view: View::new(center, half_height),
-            width: 800,
-            height: 600,
-            gradient_source: gradient::default_gradient().name,
-        }
-    }
-
-    /// World width of the view.
-    pub fn world_width(&self) -> f64 {
-        2.0 * self.view.half_height * self.width as f64 / self.height.max(1) as f64
-    }
-}
+pub use crate::escape::EscapeDoc;
 
 /// Parse a family name into its default family.
 pub fn family_from_name(name: &str) -> Option<Family> {

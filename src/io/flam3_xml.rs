@@ -244,15 +244,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
                             format!("more than {MAX_FLAMES} flames in one file"),
                         ));
                     }
-                    let flame = read_flame(
-                        &mut cx,
-                        &mut cur,
-                        text,
-                        e,
-                        p.start,
-                        is_empty,
-                        out.flames.len(),
-                    )?;
+                    let flame = read_flame(&mut cx, &mut cur, text, e, p.start, is_empty)?;
                     if opts.fla {
                         if flame.name.is_empty() {
                             return Err(cx.err(
@@ -374,7 +366,6 @@ fn read_flame(
     e: &quick_xml::events::BytesStart,
     start: usize,
     is_empty: bool,
-    index: usize,
 ) -> R<Flame> {
     let attrs = scan_attrs(e, start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
     let mut f = Flame {
@@ -745,7 +736,6 @@ fn read_flame(
             "cannot iterate empty flame: all xform weights are 0",
         ));
     }
-    let _ = index;
     Ok(f)
 }
 

@@ -4,6 +4,7 @@
 pub mod atomic;
 pub mod bmp;
 pub mod diag;
+pub mod error;
 pub mod escape_view;
 pub mod flam3_xml;
 pub mod ggr;
@@ -20,6 +21,7 @@ use std::path::Path;
 
 use crate::flame::model::Flame;
 use crate::io::diag::{Diagnostic, Parsed, Pos};
+pub use crate::io::error::WriteError;
 
 /// Largest file ugnis reads (text formats, images).
 pub const MAX_FILE_SIZE: u64 = 64 << 20;
@@ -325,37 +327,34 @@ pub fn read_gradients(path: &Path) -> Result<Parsed<Vec<crate::gradient::Gradien
 }
 
 /// Write gradients atomically as .ugr (any number), .map or .ggr (exactly one).
-pub fn write_gradients(path: &Path, gradients: &[crate::gradient::Gradient]) -> Result<(), String> {
+pub fn write_gradients(
+    path: &Path,
+    gradients: &[crate::gradient::Gradient],
+) -> Result<(), WriteError> {
+    let one = |ext: &'static str| match gradients {
+        [g] => Ok(g),
+        _ => Err(WriteError::OneGradientOnly {
+            ext,
+            count: gradients.len(),
+        }),
+    };
     let text = match kind_of(path) {
         FileKind::Ugr => ugr::write(gradients),
-        FileKind::Map => match gradients {
-            [g] => map::write(g),
-            _ => {
-                return Err(format!(
-                    "a .map file holds one gradient; {} given (use .ugr)",
-                    gradients.len()
-                ));
-            }
-        },
-        FileKind::Ggr => match gradients {
-            [g] => ggr::write(g),
-            _ => {
-                return Err(format!(
-                    "a .ggr file holds one gradient; {} given (use .ugr)",
-                    gradients.len()
-                ));
-            }
-        },
+        FileKind::Map => map::write(one("map")?),
+        FileKind::Ggr => ggr::write(one("ggr")?),
         _ => {
-            return Err(format!(
-                "{}: gradients are saved as .ugr, .map or .ggr",
-                path.display()
-            ));
+            return Err(WriteError::Extension {
+                path: path.to_path_buf(),
+                what: "gradients",
+                expected: ".ugr, .map or .ggr",
+            });
         }
     };
-    check_readable_size(path, text.len())?;
-    atomic::write_atomic(path, text.as_bytes())
-        .map_err(|e| format!("cannot write '{}': {e}", path.display()))
+    check_readable_size(path, text.len()).map_err(WriteError::TooLarge)?;
+    atomic::write_atomic(path, text.as_bytes()).map_err(|source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// Refuse to write what ugnis would refuse to read: a text larger than the read limit of
@@ -375,24 +374,24 @@ pub fn check_readable_size(path: &Path, bytes: usize) -> Result<(), String> {
 
 /// Write flames atomically as .fla/.flame/.flam3 (XML) or .ifs (linear flames only; the
 /// returned strings are warnings about what .ifs cannot keep).
-pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<String>, String> {
+pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<String>, WriteError> {
     let mut warnings = Vec::new();
     let text = match kind_of(path) {
         FileKind::Ifs => {
             let mut f = ifs::IfsFile::default();
             for fl in flames {
-                let (e, w) = ifs::flame_to_entry(fl).map_err(|e| format!("'{}': {e}", fl.name))?;
+                let (e, w) = ifs::flame_to_entry(fl)
+                    .map_err(|e| WriteError::NotRepresentable(format!("'{}': {e}", fl.name)))?;
                 warnings.extend(w);
                 f.entries.push(e);
             }
-            ifs::write(&f)?
+            ifs::write(&f).map_err(WriteError::NotRepresentable)?
         }
         FileKind::Fla | FileKind::FlameXml => {
             if let Some(f) = flames.iter().find(|f| f.ifs3d.is_some()) {
-                return Err(format!(
-                    "'{}' is a 3-D IFS entry; 3-D IFS entries cannot be represented as flames (save as .ifs)",
-                    f.name
-                ));
+                return Err(WriteError::Ifs3dAsFlame {
+                    name: f.name.clone(),
+                });
             }
             flam3_xml::write(&flam3_xml::FlameFile {
                 name: name.to_string(),
@@ -400,14 +399,17 @@ pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<Str
             })
         }
         _ => {
-            return Err(format!(
-                "{}: flames are saved as .fla, .flame, .flam3 or .ifs",
-                path.display()
-            ));
+            return Err(WriteError::Extension {
+                path: path.to_path_buf(),
+                what: "flames",
+                expected: ".fla, .flame, .flam3 or .ifs",
+            });
         }
     };
-    check_readable_size(path, text.len())?;
-    atomic::write_atomic(path, text.as_bytes())
-        .map_err(|e| format!("cannot write '{}': {e}", path.display()))?;
+    check_readable_size(path, text.len()).map_err(WriteError::TooLarge)?;
+    atomic::write_atomic(path, text.as_bytes()).map_err(|source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
     Ok(warnings)
 }

@@ -1,12 +1,11 @@
 //! Export image: size, quality, PNG/BMP; rendered in the background with progress and Cancel.
 
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::thread::JoinHandle;
 
 use eframe::egui;
 
+use crate::app::a11y::named;
+use crate::app::worker::{TaskWorker, task_worker};
 use crate::flame::render::{RenderOptions, Renderer};
 use crate::flame::{Flame, OutputFormat};
 
@@ -20,27 +19,30 @@ pub struct ExportSettings {
     pub bits16: bool,
     pub transparent: bool,
     pub path: PathBuf,
+    /// Width and height keep the flame's proportions.
+    pub lock_aspect: bool,
 }
 
-/// A running export.
+/// A running export, with progress and Cancel.
 pub struct ExportJob {
     pub path: PathBuf,
-    progress: Arc<AtomicU64>,
-    cancel: Arc<AtomicBool>,
-    handle: Option<JoinHandle<Result<(), String>>>,
+    worker: TaskWorker<Result<(), String>>,
 }
 
 impl ExportJob {
-    pub fn start(flame: &Flame, s: &ExportSettings, threads: usize) -> ExportJob {
+    pub fn start(
+        flame: &Flame,
+        s: &ExportSettings,
+        threads: usize,
+        repaint: impl Fn() + Send + 'static,
+    ) -> ExportJob {
         let mut f = flame.clone();
         f.resize_keep_framing(s.width, s.height);
         f.quality = s.quality;
         f.supersample = s.supersample.max(1);
-        let progress = Arc::new(AtomicU64::new(0));
-        let cancel = Arc::new(AtomicBool::new(false));
-        let (p, c) = (progress.clone(), cancel.clone());
         let settings = s.clone();
-        let handle = std::thread::spawn(move || {
+        let worker = task_worker("ugnis-export", repaint);
+        worker.submit(Box::new(move |cancel, progress| {
             let opts = RenderOptions {
                 seed: f.seed.unwrap_or(1),
                 threads,
@@ -51,7 +53,7 @@ impl ExportJob {
                 ..RenderOptions::default()
             };
             let mut r = Renderer::new(&f, &opts).map_err(|e| e.to_string())?;
-            if !r.run_all(200, &c, |fr| p.store((fr * 1e6) as u64, Ordering::Relaxed)) {
+            if !r.run_all(200, cancel, progress) {
                 return Err("export cancelled".into());
             }
             let samples = r.samples_done();
@@ -69,30 +71,24 @@ impl ExportJob {
                 crate::io::png::save(&settings.path, &img, &meta)
             }
             .map_err(|e| format!("cannot write {}: {e}", settings.path.display()))
-        });
+        }));
         ExportJob {
             path: s.path.clone(),
-            progress,
-            cancel,
-            handle: Some(handle),
+            worker,
         }
     }
 
     pub fn fraction(&self) -> f64 {
-        self.progress.load(Ordering::Relaxed) as f64 / 1e6
+        self.worker.progress()
     }
 
     pub fn cancel(&self) {
-        self.cancel.store(true, Ordering::SeqCst);
+        self.worker.cancel();
     }
 
     /// The result once the job has finished.
     pub fn poll(&mut self) -> Option<Result<(), String>> {
-        if self.handle.as_ref().is_some_and(|h| h.is_finished()) {
-            let h = self.handle.take()?;
-            return Some(h.join().unwrap_or_else(|_| Err("export failed".into())));
-        }
-        None
+        self.worker.poll().pop()
     }
 }
 
@@ -105,28 +101,57 @@ pub fn dialog(ui: &mut egui::Ui, s: &mut ExportSettings, browse: &mut bool) -> O
         .show(ui, |ui| {
             ui.label("Size");
             ui.horizontal(|ui| {
-                ui.add(egui::DragValue::new(&mut s.width).range(1..=30000));
+                let aspect = s.width as f64 / s.height.max(1) as f64;
+                let w = named(
+                    ui.add(egui::DragValue::new(&mut s.width).range(1..=30000)),
+                    "Export width",
+                )
+                .on_hover_text("width in pixels");
                 ui.label("×");
-                ui.add(egui::DragValue::new(&mut s.height).range(1..=30000));
+                let h = named(
+                    ui.add(egui::DragValue::new(&mut s.height).range(1..=30000)),
+                    "Export height",
+                )
+                .on_hover_text("height in pixels");
+                ui.checkbox(&mut s.lock_aspect, "keep proportions")
+                    .on_hover_text("changing one side changes the other");
+                if s.lock_aspect {
+                    if w.changed() {
+                        s.height = ((s.width as f64 / aspect).round() as u32).clamp(1, 30000);
+                    } else if h.changed() {
+                        s.width = ((s.height as f64 * aspect).round() as u32).clamp(1, 30000);
+                    }
+                }
             });
             ui.end_row();
-            ui.label("Quality");
+            let l = ui.label("Quality");
             ui.add(
                 egui::DragValue::new(&mut s.quality)
                     .range(0.1..=100000.0)
                     .speed(1.0),
-            );
+            )
+            .labelled_by(l.id)
+            .on_hover_text("samples per pixel (more: smoother, slower)");
             ui.end_row();
-            ui.label("Supersample");
-            ui.add(egui::DragValue::new(&mut s.supersample).range(1..=4));
+            let l = ui.label("Supersample");
+            ui.add(egui::DragValue::new(&mut s.supersample).range(1..=4))
+                .labelled_by(l.id)
+                .on_hover_text("render this many times larger and shrink (smoother edges)");
             ui.end_row();
             ui.label("File");
             ui.horizontal(|ui| {
                 let mut t = s.path.display().to_string();
-                if ui.text_edit_singleline(&mut t).changed() {
+                if named(ui.text_edit_singleline(&mut t), "Export file")
+                    .on_hover_text("where the picture is written (.png or .bmp)")
+                    .changed()
+                {
                     s.path = PathBuf::from(t);
                 }
-                if ui.button("…").clicked() {
+                if ui
+                    .button("Choose…")
+                    .on_hover_text("choose the file")
+                    .clicked()
+                {
                     *browse = true;
                 }
             });

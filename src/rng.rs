@@ -1,4 +1,5 @@
-//! The chaos game's random generator: Xoshiro256++ from `rand`, always seeded.
+//! The seeded random generator of ugnis: Xoshiro256++ from `rand`, with the draws the chaos
+//! game, random flames, gradients from images and procedural textures need.
 
 use rand::rngs::Xoshiro256PlusPlus;
 use rand::{Rng, SeedableRng};

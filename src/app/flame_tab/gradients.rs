@@ -22,6 +22,8 @@ pub enum GradientAction {
     Apply(Gradient),
     Load,
     FromImage,
+    /// Open the palette editor.
+    Edit,
 }
 
 impl Default for GradientWindow {
@@ -103,8 +105,11 @@ impl GradientWindow {
                 ));
                 strip(ui, current, Vec2::new(ui.available_width(), 28.0));
                 ui.horizontal(|ui| {
-                    ui.label("Rotate");
-                    let r = ui.add(egui::Slider::new(&mut self.shift, -128..=128));
+                    let l = ui.label("Rotate");
+                    let r = ui
+                        .add(egui::Slider::new(&mut self.shift, -128..=128).show_value(false))
+                        .labelled_by(l.id)
+                        .on_hover_text("shift the colours along the gradient (release to apply)");
                     if r.drag_stopped() || (r.changed() && !r.dragged()) {
                         let mut g = current.rotated(self.shift);
                         g.name = current.name.clone();
@@ -113,28 +118,60 @@ impl GradientWindow {
                     }
                 });
                 ui.horizontal(|ui| {
-                    if ui.button("Reverse").clicked() {
+                    if ui
+                        .button("Reverse")
+                        .on_hover_text("the colours in the opposite order")
+                        .clicked()
+                    {
                         let mut g = current.reversed();
                         g.name = current.name.clone();
                         action = Some(GradientAction::Apply(g));
                     }
-                    if ui.button("Random").clicked() {
+                    if ui
+                        .button("Random")
+                        .on_hover_text("a new random gradient")
+                        .clicked()
+                    {
                         action = Some(GradientAction::Apply(random_gradient(&mut self.rng)));
                     }
-                    if ui.button("Random from library").clicked() && !self.library.is_empty() {
+                    if ui
+                        .button("Random from library")
+                        .on_hover_text("one of the gradients below, at random")
+                        .clicked()
+                        && !self.library.is_empty()
+                    {
                         let k = self.rng.below(self.library.len() as u64) as usize;
                         action = Some(GradientAction::Apply(self.library[k].clone()));
                     }
                 });
                 ui.horizontal(|ui| {
-                    if ui.button("Load…").clicked() {
+                    if ui
+                        .button("Edit…")
+                        .on_hover_text("the palette editor: keys, adjustments, curves")
+                        .clicked()
+                    {
+                        action = Some(GradientAction::Edit);
+                    }
+                    if ui
+                        .button("Load…")
+                        .on_hover_text("add gradients from a .ugr, .map or .ggr file")
+                        .clicked()
+                    {
                         action = Some(GradientAction::Load);
                     }
-                    if ui.button("From image…").clicked() {
+                    if ui
+                        .button("From image…")
+                        .on_hover_text("make a gradient from the colours of a picture")
+                        .clicked()
+                    {
                         action = Some(GradientAction::FromImage);
                     }
-                    ui.label("Find");
-                    ui.text_edit_singleline(&mut self.filter);
+                });
+                ui.horizontal(|ui| {
+                    let l = ui.label("Find");
+                    ui.text_edit_singleline(&mut self.filter)
+                        .labelled_by(l.id)
+                        .on_hover_text("part of a gradient's name");
                 });
                 ui.separator();
                 egui::ScrollArea::vertical().show(ui, |ui| {

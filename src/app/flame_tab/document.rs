@@ -28,6 +28,8 @@ pub struct Document {
     pub dirty: bool,
     undo: Vec<Step>,
     redo: Vec<Step>,
+    /// A change in progress while a control is dragged: which flame, and how it was before.
+    live: Option<(usize, Flame)>,
 }
 
 impl Document {
@@ -46,6 +48,7 @@ impl Document {
             dirty: false,
             undo: Vec::new(),
             redo: Vec::new(),
+            live: None,
         }
     }
 
@@ -55,11 +58,45 @@ impl Document {
 
     /// Edit the current flame as one undo step (no step if nothing changed).
     pub fn edit(&mut self, f: impl FnOnce(&mut Flame)) {
+        self.commit_live();
         let before = self.flames[self.current].clone();
         f(&mut self.flames[self.current]);
         if self.flames[self.current] != before {
             self.push(Step::Flame {
                 index: self.current,
+                before: Box::new(before),
+            });
+        }
+    }
+
+    /// Edit the current flame from a control; while `dragging` (a pointer is held on a slider
+    /// or number) every change is part of one undo step, made when the drag ends
+    /// ([`Document::commit_live`], or the first edit without `dragging`).
+    pub fn edit_while(&mut self, dragging: bool, f: impl FnOnce(&mut Flame)) {
+        if !dragging && self.live.is_none() {
+            self.edit(f);
+            return;
+        }
+        if self.live.as_ref().is_some_and(|(i, _)| *i != self.current) {
+            self.commit_live();
+        }
+        if self.live.is_none() {
+            self.live = Some((self.current, self.flames[self.current].clone()));
+        }
+        f(&mut self.flames[self.current]);
+        if !dragging {
+            self.commit_live();
+        }
+    }
+
+    /// End a drag of a control: its changes become one undo step.
+    pub fn commit_live(&mut self) {
+        if let Some((i, before)) = self.live.take()
+            && i < self.flames.len()
+            && self.flames[i] != before
+        {
+            self.push(Step::Flame {
+                index: i,
                 before: Box::new(before),
             });
         }
@@ -87,6 +124,7 @@ impl Document {
 
     /// Change the set of flames as one undo step.
     pub fn edit_document(&mut self, f: impl FnOnce(&mut Vec<Flame>, &mut usize)) {
+        self.commit_live();
         let before = self.flames.clone();
         let cur = self.current;
         f(&mut self.flames, &mut self.current);
@@ -112,7 +150,7 @@ impl Document {
     }
 
     pub fn can_undo(&self) -> bool {
-        !self.undo.is_empty()
+        !self.undo.is_empty() || self.live.is_some()
     }
 
     pub fn can_redo(&self) -> bool {
@@ -142,6 +180,7 @@ impl Document {
     }
 
     pub fn undo(&mut self) -> bool {
+        self.commit_live();
         let Some(s) = self.undo.pop() else {
             return false;
         };
@@ -152,6 +191,7 @@ impl Document {
     }
 
     pub fn redo(&mut self) -> bool {
+        self.commit_live();
         let Some(s) = self.redo.pop() else {
             return false;
         };
@@ -205,6 +245,30 @@ mod tests {
         let n = d.undo_len();
         d.edit(|_| {});
         assert_eq!(d.undo_len(), n);
+    }
+
+    #[test]
+    fn a_dragged_control_is_one_step() {
+        let mut d = doc();
+        let orig = d.flame().clone();
+        for k in 1..=8 {
+            d.edit_while(true, |f| f.xforms[0].color = k as f64 / 10.0);
+        }
+        assert_eq!(d.undo_len(), 0, "nothing is pushed during the drag");
+        // The release frame's change joins the drag.
+        d.edit_while(false, |f| f.xforms[0].color = 0.9);
+        assert_eq!(d.undo_len(), 1);
+        assert_eq!(d.flame().xforms[0].color, 0.9);
+        d.undo();
+        assert_eq!(d.flame(), &orig);
+        // A drag that ends without another change is committed explicitly.
+        d.edit_while(true, |f| f.xforms[1].color = 0.3);
+        d.commit_live();
+        assert_eq!(d.undo_len(), 1);
+        // Plain edits stay one step each.
+        d.edit_while(false, |f| f.zoom = 1.0);
+        d.edit_while(false, |f| f.zoom = 2.0);
+        assert_eq!(d.undo_len(), 3);
     }
 
     #[test]

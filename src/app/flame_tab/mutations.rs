@@ -1,12 +1,9 @@
 //! The mutation window: a 3×3 grid with the current flame in the centre and eight mutants
 //! around it; a "how far" slider; clicking a mutant makes it the current flame (one undo step).
 
-use std::collections::HashMap;
-use std::hash::{Hash, Hasher};
-
 use eframe::egui::{self, Vec2};
 
-use crate::app::preview::ThumbnailWorker;
+use super::thumbnails::Thumbnails;
 use crate::flame::Flame;
 use crate::flame::mutate::{self, GRID, Mutation};
 use crate::flame::random::RandomOptions;
@@ -21,11 +18,9 @@ pub struct MutationWindow {
     pub distance: f64,
     seed: u64,
     /// The centre, distance and seed the mutants were made for.
-    made_for: Option<(u64, u64, u64)>,
+    made_for: Option<(Flame, u64, u64)>,
     pub mutants: Vec<Flame>,
-    worker: Option<ThumbnailWorker>,
-    textures: HashMap<u64, egui::TextureHandle>,
-    requested: std::collections::HashSet<u64>,
+    thumbs: Option<Thumbnails>,
 }
 
 impl Default for MutationWindow {
@@ -36,17 +31,9 @@ impl Default for MutationWindow {
             seed: 1,
             made_for: None,
             mutants: Vec::new(),
-            worker: None,
-            textures: HashMap::new(),
-            requested: Default::default(),
+            thumbs: None,
         }
     }
-}
-
-fn key(f: &Flame) -> u64 {
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    crate::io::flam3_xml::flame_element(f).hash(&mut h);
-    h.finish()
 }
 
 fn label(k: Mutation) -> &'static str {
@@ -64,38 +51,14 @@ fn label(k: Mutation) -> &'static str {
 impl MutationWindow {
     /// Make the mutants of `centre` if they are stale.
     pub fn refresh(&mut self, centre: &Flame, opts: &RandomOptions) {
-        let want = (key(centre), self.distance.to_bits(), self.seed);
-        if self.made_for != Some(want) {
+        let fresh = match &self.made_for {
+            Some((c, d, s)) => c != centre || *d != self.distance.to_bits() || *s != self.seed,
+            None => true,
+        };
+        if fresh {
             self.mutants = mutate::grid(centre, self.distance, self.seed, opts);
-            self.made_for = Some(want);
+            self.made_for = Some((centre.clone(), self.distance.to_bits(), self.seed));
         }
-    }
-
-    fn texture(&mut self, ctx: &egui::Context, f: &Flame, render: bool) -> Option<egui::TextureId> {
-        if render && self.worker.is_none() {
-            let c = ctx.clone();
-            self.worker = Some(ThumbnailWorker::new(THUMB.0, THUMB.1, 15.0, move || {
-                c.request_repaint()
-            }));
-        }
-        if let Some(w) = &self.worker {
-            for (k, r) in w.poll() {
-                if let Ok(img) = r {
-                    self.textures.insert(
-                        k,
-                        ctx.load_texture(format!("mutant-{k}"), img, egui::TextureOptions::LINEAR),
-                    );
-                }
-            }
-        }
-        let k = key(f);
-        if !self.requested.contains(&k)
-            && let Some(w) = &self.worker
-        {
-            w.request(k, f.clone());
-            self.requested.insert(k);
-        }
-        self.textures.get(&k).map(|t| t.id())
     }
 
     /// Show the window. Returns the mutant the user chose. `render`: draw thumbnails (false
@@ -111,6 +74,9 @@ impl MutationWindow {
             return None;
         }
         self.refresh(centre, opts);
+        if render && self.thumbs.is_none() {
+            self.thumbs = Some(Thumbnails::new(Some(ctx), THUMB.0, THUMB.1, 15.0));
+        }
         let mut open = self.open;
         let mut chosen = None;
         let screen = ctx.content_rect();
@@ -144,7 +110,7 @@ impl MutationWindow {
                                     (&mutants[i], label(GRID[i]))
                                 }
                             };
-                            let tex = self.texture(ui.ctx(), f, render);
+                            let tex = self.thumbs.as_mut().and_then(|t| t.get((0, cell), f));
                             ui.vertical(|ui| {
                                 let r = match tex {
                                     Some(t) => {
@@ -167,6 +133,9 @@ impl MutationWindow {
                     });
                 ui.label("Click a mutant to make it the current flame (Undo returns).");
             });
+        if let Some(t) = &mut self.thumbs {
+            t.end_frame(ctx);
+        }
         self.open = open;
         chosen
     }

@@ -1,0 +1,216 @@
+//! Every command of the menus, the toolbar and the keyboard, with its menu and shortcut.
+
+use eframe::egui::{Key, KeyboardShortcut, Modifiers};
+
+use crate::flame::variations::{self, VarId};
+
+/// Every command of the menus, toolbar and shortcuts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    New,
+    Open,
+    Save,
+    SaveAs,
+    LoadGradient,
+    GradientFromImage,
+    Export,
+    RandomBatch,
+    Exit,
+    Undo,
+    Redo,
+    CopyFlame,
+    PasteFlame,
+    ToggleToolbar,
+    ToggleStatusBar,
+    ToggleFilePanel,
+    ToggleEditor,
+    FitPreview,
+    ZoomIn,
+    ZoomOut,
+    /// None: "Random" (one of the seven per transform).
+    SetVariation(Option<VarId>),
+    ShowGradient,
+    ShowMutations,
+    RandomFlame,
+    ToggleAnimate,
+    /// Play flam3-style in-betweens from the current flame to the next one of the file.
+    ToggleMorph,
+    RandomWeights,
+    EqualWeights,
+    AreaWeights,
+    ShowOptions,
+    ShowPaletteEditor,
+    ShowVariationFilter,
+    /// Random flames draw their variations from the variations filter.
+    UseVariationFilter,
+    ShowShortcuts,
+    ShowPanelHelp,
+    ShowAbout,
+}
+
+/// A menu entry: menu, label, action, shortcut.
+pub struct MenuItem {
+    pub menu: &'static str,
+    pub label: &'static str,
+    pub action: Action,
+    pub shortcut: Option<KeyboardShortcut>,
+}
+
+const CMD: Modifiers = Modifiers::COMMAND;
+const CMD_SHIFT: Modifiers = Modifiers::COMMAND.plus(Modifiers::SHIFT);
+
+const fn sc(m: Modifiers, k: Key) -> Option<KeyboardShortcut> {
+    Some(KeyboardShortcut::new(m, k))
+}
+
+const fn item(
+    menu: &'static str,
+    label: &'static str,
+    action: Action,
+    shortcut: Option<KeyboardShortcut>,
+) -> MenuItem {
+    MenuItem {
+        menu,
+        label,
+        action,
+        shortcut,
+    }
+}
+
+/// The menus, in order (the thesis program's, with Apophysis conventions where it is silent).
+pub const MENUS: [&str; 5] = ["File", "Edit", "View", "Tools", "Help"];
+
+/// The menu entries.
+pub const MENU: &[MenuItem] = &[
+    item("File", "New", Action::New, sc(CMD, Key::N)),
+    item("File", "Open…", Action::Open, sc(CMD, Key::O)),
+    item("File", "Save", Action::Save, sc(CMD, Key::S)),
+    item("File", "Save As…", Action::SaveAs, sc(CMD_SHIFT, Key::S)),
+    item("File", "Load gradient…", Action::LoadGradient, None),
+    item(
+        "File",
+        "Create gradient from image…",
+        Action::GradientFromImage,
+        None,
+    ),
+    item("File", "Export image…", Action::Export, sc(CMD, Key::E)),
+    item("File", "Random batch", Action::RandomBatch, sc(CMD, Key::B)),
+    item("File", "Exit", Action::Exit, sc(CMD, Key::Q)),
+    item("Edit", "Undo", Action::Undo, sc(CMD, Key::Z)),
+    item("Edit", "Redo", Action::Redo, sc(CMD, Key::Y)),
+    item(
+        "Edit",
+        "Copy flame (XML)",
+        Action::CopyFlame,
+        sc(CMD_SHIFT, Key::C),
+    ),
+    item(
+        "Edit",
+        "Paste flame (XML)",
+        Action::PasteFlame,
+        sc(CMD_SHIFT, Key::V),
+    ),
+    item("View", "Toolbar", Action::ToggleToolbar, None),
+    item("View", "Status bar", Action::ToggleStatusBar, None),
+    item("View", "File contents", Action::ToggleFilePanel, None),
+    item(
+        "View",
+        "Fit preview",
+        Action::FitPreview,
+        sc(CMD, Key::Num0),
+    ),
+    item("View", "Zoom in", Action::ZoomIn, sc(CMD, Key::Plus)),
+    item("View", "Zoom out", Action::ZoomOut, sc(CMD, Key::Minus)),
+    item(
+        "Tools",
+        "Editor",
+        Action::ToggleEditor,
+        sc(Modifiers::NONE, Key::F4),
+    ),
+    item("Tools", "Gradient", Action::ShowGradient, sc(CMD, Key::G)),
+    item(
+        "Tools",
+        "Palette editor…",
+        Action::ShowPaletteEditor,
+        sc(CMD_SHIFT, Key::G),
+    ),
+    item(
+        "Tools",
+        "Random flame",
+        Action::RandomFlame,
+        sc(CMD, Key::R),
+    ),
+    item(
+        "Tools",
+        "Mutations…",
+        Action::ShowMutations,
+        sc(CMD, Key::U),
+    ),
+    item("Tools", "Animate", Action::ToggleAnimate, sc(CMD, Key::M)),
+    item(
+        "Tools",
+        "Morph to next flame",
+        Action::ToggleMorph,
+        sc(CMD_SHIFT, Key::M),
+    ),
+    item("Tools", "Random weights", Action::RandomWeights, None),
+    item("Tools", "Equal weights", Action::EqualWeights, None),
+    item(
+        "Tools",
+        "Weights from triangle areas",
+        Action::AreaWeights,
+        None,
+    ),
+    item(
+        "Tools",
+        "Variations filter…",
+        Action::ShowVariationFilter,
+        None,
+    ),
+    item(
+        "Tools",
+        "Options…",
+        Action::ShowOptions,
+        sc(CMD, Key::Comma),
+    ),
+    item(
+        "Help",
+        "Keyboard shortcuts",
+        Action::ShowShortcuts,
+        sc(Modifiers::NONE, Key::F1),
+    ),
+    item("Help", "What the panels do", Action::ShowPanelHelp, None),
+    item("Help", "About ugnis", Action::ShowAbout, None),
+];
+
+/// Shortcuts that are not shown in a menu: Ctrl+Shift+Z redo.
+pub const EXTRA_SHORTCUTS: &[(KeyboardShortcut, Action)] =
+    &[(KeyboardShortcut::new(CMD_SHIFT, Key::Z), Action::Redo)];
+
+/// The Variations submenu: "Random" and the seven thesis variations.
+pub const VARIATION_MENU: [(&str, Option<VarId>); 8] = [
+    ("Random", None),
+    ("Linear", Some(variations::LINEAR)),
+    ("Sinusoidal", Some(variations::SINUSOIDAL)),
+    ("Spherical", Some(variations::SPHERICAL)),
+    ("Swirl", Some(variations::SWIRL)),
+    ("Horseshoe", Some(variations::HORSESHOE)),
+    ("Polar", Some(variations::POLAR)),
+    ("Bent", Some(variations::BENT)),
+];
+
+/// Every shortcut with its action, the ones with more modifiers first: egui matches shortcuts
+/// ignoring extra Shift, so Ctrl+Shift+S must be tried before Ctrl+S.
+pub fn shortcuts() -> Vec<(KeyboardShortcut, Action)> {
+    let mut all: Vec<(KeyboardShortcut, Action)> = EXTRA_SHORTCUTS
+        .iter()
+        .copied()
+        .chain(
+            MENU.iter()
+                .filter_map(|m| m.shortcut.map(|s| (s, m.action))),
+        )
+        .collect();
+    let weight = |m: Modifiers| m.shift as u8 + m.alt as u8 + (m.command || m.ctrl) as u8;
+    all.sort_by_key(|(s, _)| std::cmp::Reverse(weight(s.modifiers)));
+    all
+}

@@ -1,0 +1,279 @@
+//! The escape-time tab's control panel: history buttons, the fractal family and its
+//! parameters, colouring, export size and the file buttons.
+
+use eframe::egui;
+
+use super::{EscapeRequest, EscapeTab, KINDS};
+use crate::app::a11y::named;
+use crate::escape::{C, Coloring, Family, Fill, Preset, Sampling, View, Warp};
+use crate::gradient;
+use crate::io::escape_view;
+
+impl EscapeTab {
+    pub(super) fn controls(&mut self, ui: &mut egui::Ui) -> Option<EscapeRequest> {
+        let mut req = None;
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(!self.back.is_empty(), egui::Button::new("Back"))
+                .on_hover_text("previous view (Alt+Left)")
+                .clicked()
+            {
+                self.go_back();
+            }
+            if ui
+                .add_enabled(!self.forward.is_empty(), egui::Button::new("Forward"))
+                .on_hover_text("next view (Alt+Right)")
+                .clicked()
+            {
+                self.go_forward();
+            }
+            if ui
+                .button("Reset view")
+                .on_hover_text("the fractal's whole default view")
+                .clicked()
+            {
+                let (c, hh) = self.doc.params.family.default_view();
+                self.push_history();
+                self.doc.view = View::new(c, hh);
+            }
+        });
+        ui.separator();
+        let current = self.doc.params.family.name();
+        let mut chosen = None;
+        let fractal = egui::ComboBox::from_label("Fractal")
+            .selected_text(
+                KINDS
+                    .iter()
+                    .find(|k| k.0 == current)
+                    .map_or(current, |k| k.1),
+            )
+            .show_ui(ui, |ui| {
+                for (k, label) in KINDS {
+                    if ui.selectable_label(k == current, label).clicked() {
+                        chosen = Some(k);
+                    }
+                }
+            });
+        fractal
+            .response
+            .on_hover_text("the family of escape-time fractals");
+        if let Some(k) = chosen
+            && k != current
+        {
+            self.set_kind(k);
+        }
+        let mut doc = self.doc.clone();
+        egui::Grid::new("escape-params")
+            .num_columns(2)
+            .show(ui, |ui| {
+                let cpx = |ui: &mut egui::Ui, label: &str, c: &mut C| {
+                    ui.label(label);
+                    ui.horizontal(|ui| {
+                        named(
+                            ui.add(egui::DragValue::new(&mut c.re).speed(0.001).max_decimals(8)),
+                            &format!("{label} real part"),
+                        )
+                        .on_hover_text("real part");
+                        named(
+                            ui.add(egui::DragValue::new(&mut c.im).speed(0.001).max_decimals(8)),
+                            &format!("{label} imaginary part"),
+                        )
+                        .on_hover_text("imaginary part");
+                        ui.label("i");
+                    });
+                    ui.end_row();
+                };
+                match &mut doc.params.family {
+                    Family::Mandelbrot { power } => {
+                        let l = ui.label("Power m");
+                        ui.add(egui::DragValue::new(power).range(2..=9))
+                            .labelled_by(l.id)
+                            .on_hover_text("the power of z in z^m + c");
+                        ui.end_row();
+                    }
+                    Family::Julia { power, c } => {
+                        let l = ui.label("Power m");
+                        ui.add(egui::DragValue::new(power).range(2..=9))
+                            .labelled_by(l.id)
+                            .on_hover_text("the power of z in z^m + c");
+                        ui.end_row();
+                        cpx(ui, "c", c);
+                    }
+                    Family::Newton { coeffs } => {
+                        ui.label("Polynomial");
+                        let r = ui.text_edit_singleline(&mut self.poly_text).on_hover_text(
+                            "coefficients, highest degree first: 1 0 0 -1 is z³ − 1",
+                        );
+                        if r.lost_focus() {
+                            match escape_view::parse_poly(&self.poly_text) {
+                                Some(p) => *coeffs = p,
+                                None => {
+                                    self.notices.status =
+                                        "polynomial: give 2–33 numbers, highest degree first".into()
+                                }
+                            }
+                        }
+                        ui.end_row();
+                    }
+                    Family::Logistic { z0, kose } => {
+                        cpx(ui, "z₀", z0);
+                        ui.label("Köse λz(z − 1)");
+                        ui.checkbox(kose, "");
+                        ui.end_row();
+                    }
+                    Family::Cubic { p } => cpx(ui, "p", p),
+                    Family::WarpedJulia(w) => {
+                        let (mut c, mut alpha, mut lambda, mut polar) = (
+                            w.c,
+                            w.alpha,
+                            w.lambda,
+                            matches!(w.sampling, Sampling::Polar { .. }),
+                        );
+                        cpx(ui, "c", &mut c);
+                        cpx(ui, "warp α", &mut alpha);
+                        ui.label("Turbulence λ");
+                        ui.add(egui::Slider::new(&mut lambda, 0.0..=1.0));
+                        ui.end_row();
+                        ui.label("Polar (seamless)");
+                        ui.checkbox(&mut polar, "");
+                        ui.end_row();
+                        ui.label("Presets");
+                        ui.horizontal(|ui| {
+                            for (l, p) in [
+                                ("Polar", Preset::PolarJulia),
+                                ("Warped", Preset::WarpedJulia),
+                                ("Galaxy", Preset::Galaxy),
+                            ] {
+                                if ui.small_button(l).clicked() {
+                                    let pw = Warp::preset(p);
+                                    (c, alpha, lambda, polar) = (pw.c, pw.alpha, pw.lambda, true);
+                                }
+                            }
+                        });
+                        ui.end_row();
+                        let sampling = if polar {
+                            Sampling::Polar { radius: 1.0 }
+                        } else {
+                            Sampling::Rect { scale: 3.0 }
+                        };
+                        if (c, alpha, lambda, sampling) != (w.c, w.alpha, w.lambda, w.sampling) {
+                            match Warp::new(c, alpha, lambda, w.fbm, sampling, w.zero_mean) {
+                                Ok(n) => *w = n,
+                                Err(e) => self.notices.status = e.to_string(),
+                            }
+                        }
+                    }
+                }
+                let l = ui.label("Max iterations");
+                ui.add(
+                    egui::DragValue::new(&mut doc.params.max_iter)
+                        .range(1..=1_000_000)
+                        .speed(10.0),
+                )
+                .labelled_by(l.id)
+                .on_hover_text("iterations before a point counts as inside (more: finer edges)");
+                ui.end_row();
+                ui.label("Colouring");
+                let r = egui::ComboBox::from_id_salt("escape-coloring")
+                    .selected_text(doc.params.coloring.name())
+                    .show_ui(ui, |ui| {
+                        for c in Coloring::ALL {
+                            ui.selectable_value(&mut doc.params.coloring, c, c.name());
+                        }
+                    });
+                named(r.response, "Colouring").on_hover_text("how escape counts become colours");
+                ui.end_row();
+                ui.label("Gradient");
+                let r = egui::ComboBox::from_id_salt("escape-gradient")
+                    .selected_text(doc.gradient_source.clone())
+                    .show_ui(ui, |ui| {
+                        for g in gradient::builtin() {
+                            if ui
+                                .selectable_label(doc.gradient_source == g.name, &g.name)
+                                .clicked()
+                            {
+                                doc.gradient_source = g.name.clone();
+                                doc.params.palette.gradient = g;
+                            }
+                        }
+                    });
+                named(r.response, "Gradient").on_hover_text("the colours of the picture");
+                ui.end_row();
+                let l = ui.label("Offset");
+                ui.add(egui::Slider::new(&mut doc.params.palette.offset, 0.0..=1.0))
+                    .labelled_by(l.id)
+                    .on_hover_text("shift the colours along the gradient");
+                ui.end_row();
+                let l = ui.label("Repeat");
+                ui.add(
+                    egui::DragValue::new(&mut doc.params.palette.repeat)
+                        .range(0.01..=256.0)
+                        .speed(0.05),
+                )
+                .labelled_by(l.id)
+                .on_hover_text("how many times the gradient repeats");
+                ui.end_row();
+                let l = ui.label("Block guessing");
+                let mut guess = doc.params.fill == Fill::Guess;
+                ui.checkbox(&mut guess, "")
+                    .labelled_by(l.id)
+                    .on_hover_text("Mariani–Silver: faster, may miss thin filaments");
+                doc.params.fill = if guess { Fill::Guess } else { Fill::Exact };
+                ui.end_row();
+            });
+        if doc != self.doc {
+            // Parameter edits are history steps too; a slider drag is one step.
+            if !self.editing {
+                self.push_history();
+            }
+            self.editing = ui.ctx().input(|i| i.pointer.any_down());
+            self.doc = doc;
+        } else if !ui.ctx().input(|i| i.pointer.any_down()) {
+            self.editing = false;
+        }
+        ui.separator();
+        ui.horizontal(|ui| {
+            ui.label("Export size");
+            named(
+                ui.add(egui::DragValue::new(&mut self.export_size[0]).range(16..=20000)),
+                "Export width",
+            )
+            .on_hover_text("width of the exported picture in pixels");
+            ui.label("×");
+            named(
+                ui.add(egui::DragValue::new(&mut self.export_size[1]).range(16..=20000)),
+                "Export height",
+            )
+            .on_hover_text("height of the exported picture in pixels");
+        });
+        ui.horizontal(|ui| {
+            if ui
+                .button("Export image…")
+                .on_hover_text("render the view at the export size (PNG keeps the view)")
+                .clicked()
+            {
+                req = Some(EscapeRequest::Export);
+            }
+            if ui
+                .button("Open view…")
+                .on_hover_text("open a view file (.esc)")
+                .clicked()
+            {
+                req = Some(EscapeRequest::OpenView);
+            }
+            if ui
+                .button("Save view…")
+                .on_hover_text("save this view as a .esc file")
+                .clicked()
+            {
+                req = Some(EscapeRequest::SaveView);
+            }
+        });
+        ui.separator();
+        ui.label("Wheel: zoom at the cursor · drag: pan · right-drag: zoom to a rectangle");
+        if matches!(self.doc.params.family, Family::Mandelbrot { .. }) {
+            ui.label("Click: open the Julia set of the point (preview below)");
+        }
+        req
+    }
+}

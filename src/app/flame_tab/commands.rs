@@ -1,0 +1,304 @@
+//! The flame tab's commands: random flames and batches, weights, undo, export, save, paste,
+//! and its windows (export settings, mutations, gradients, palette editor).
+
+use std::path::Path;
+
+use eframe::egui;
+
+use super::export::{self, ExportJob, ExportSettings};
+use super::gradients::GradientAction;
+use super::{FlameRequest, FlameTab, pick};
+use crate::app::options::Options;
+use crate::app::worker::task_worker;
+use crate::flame::random::{self, VariationMode};
+use crate::flame::rng::FastRng;
+use crate::flame::variations::VarId;
+use crate::flame::{Flame, NewFlame};
+use crate::gradient::Gradient;
+use crate::io;
+
+impl FlameTab {
+    /// Whether triangle edits re-derive the weights from the triangle areas.
+    pub fn auto_weights(&self, options: &Options) -> bool {
+        self.doc()
+            .flame()
+            .auto_weights
+            .unwrap_or(options.auto_weights)
+    }
+
+    /// Settings of new random flames: the Options defaults, with the current gradient (used
+    /// when "random gradient" is off).
+    fn random_defaults(&self, options: &Options) -> NewFlame {
+        let mut d = options.new_flame();
+        d.gradient = self.doc().flame().palette.clone();
+        d
+    }
+
+    /// The Tools › Variations choice: None is "Random" (one of the seven per transform).
+    pub fn set_variation(&mut self, options: &Options, v: Option<VarId>, label: &str) {
+        match v {
+            None => self.variation_mode = VariationMode::Random(options.probabilities),
+            Some(id) => {
+                self.variation_mode = VariationMode::Single(id);
+                self.doc_mut().edit(|f| {
+                    for x in &mut f.xforms {
+                        x.vars = vec![crate::flame::Var::new(id, 1.0)];
+                    }
+                });
+            }
+        }
+        self.notices.status(format!("Variation: {label}"));
+    }
+
+    pub fn random_flame(&mut self, options: &Options) {
+        let seed = self.rng.u64();
+        let opts = options.random_options(self.variation_mode.clone());
+        let mut g = random::generate(seed, &opts, &self.random_defaults(options)).flame;
+        g.name = format!("random-{:08x}", seed as u32);
+        let doc = self.doc_mut();
+        let cur = doc.current;
+        doc.edit_document(|fl, c| {
+            fl[cur] = g;
+            *c = cur;
+        });
+        self.edit_started();
+        self.notices.status(format!("Random flame (seed {seed})"));
+    }
+
+    pub fn batch_running(&self) -> bool {
+        self.batch_job.as_ref().is_some_and(|w| w.is_busy())
+    }
+
+    pub fn start_batch(&mut self, options: &Options) {
+        if self.batch_running() {
+            return;
+        }
+        let seed = self.rng.u64();
+        let opts = options.random_options(self.variation_mode.clone());
+        let defaults = self.random_defaults(options);
+        let w = task_worker("ugnis-batch", self.repaint());
+        w.submit(Box::new(move |_, _| {
+            random::generate_batch(100, seed, &opts, &defaults)
+        }));
+        self.batch_job = Some(w);
+        self.notices.status("Generating a random batch…");
+    }
+
+    pub fn random_weights(&mut self) {
+        let mut rng = FastRng::new(self.rng.u64());
+        self.doc_mut().edit(|f| {
+            let mut w: Vec<f64> = f.xforms.iter().map(|_| rng.f01()).collect();
+            let s: f64 = w.iter().sum();
+            if s < 0.001 {
+                f.set_equal_weights();
+            } else {
+                w.iter_mut().for_each(|v| *v /= s);
+                for (x, v) in f.xforms.iter_mut().zip(w) {
+                    x.weight = v;
+                }
+            }
+            f.auto_weights = Some(false);
+        });
+    }
+
+    pub fn equal_weights(&mut self) {
+        self.doc_mut().edit(|f| {
+            f.set_equal_weights();
+            f.auto_weights = Some(false);
+        });
+    }
+
+    pub fn area_weights(&mut self) {
+        self.doc_mut().edit(|f| f.set_determinant_weights());
+    }
+
+    pub fn undo(&mut self) {
+        if !self.doc_mut().undo() {
+            self.notices.status("Nothing to undo");
+        }
+    }
+
+    pub fn redo(&mut self) {
+        if !self.doc_mut().redo() {
+            self.notices.status("Nothing to redo");
+        }
+    }
+
+    /// Open the export dialog for the current flame.
+    pub fn open_export_dialog(&mut self, options: &Options) {
+        let f = self.doc().flame();
+        let dir = self.last_export_dir.clone().or_else(|| {
+            self.doc()
+                .path
+                .as_ref()
+                .and_then(|p| p.parent().map(Path::to_path_buf))
+        });
+        let name = if f.name.is_empty() {
+            "flame".to_string()
+        } else {
+            io::ifs::entry_name(&f.name)
+        };
+        self.export_dialog = Some(ExportSettings {
+            width: f.width,
+            height: f.height,
+            quality: f.quality.max(options.main_quality),
+            supersample: f.supersample,
+            bits16: false,
+            transparent: false,
+            path: dir.unwrap_or_default().join(format!("{name}.png")),
+            lock_aspect: true,
+        });
+    }
+
+    /// Save the open file (atomically). Returns true on success.
+    pub fn save_to(&mut self, path: &Path) -> bool {
+        let d = &self.file;
+        match io::write_flames(path, &d.name, &d.flames) {
+            Ok(w) => {
+                self.file.path = Some(path.to_path_buf());
+                self.file.dirty = false;
+                self.notices.status(format!("Saved {}", path.display()));
+                if !w.is_empty() {
+                    self.notices.message("Saved with losses", w.join("\n"));
+                }
+                true
+            }
+            Err(e) => {
+                self.notices.message("Cannot save", e.to_string());
+                false
+            }
+        }
+    }
+
+    pub fn apply_gradient(&mut self, g: Gradient) {
+        self.doc_mut().edit(|f| f.palette = g);
+    }
+
+    /// Add the flames of pasted XML to the document.
+    pub fn paste(&mut self, text: &str) {
+        match io::flam3_xml::read(text, &Default::default()) {
+            Ok(p) => {
+                let new: Vec<Flame> = p.value.flames;
+                let n = new.len();
+                self.doc_mut().edit_document(|fl, cur| {
+                    fl.extend(new);
+                    *cur = fl.len() - 1;
+                });
+                self.notices.status(format!("Pasted {n} flame(s)"));
+            }
+            Err(e) => self
+                .notices
+                .status(format!("Clipboard holds no flame: {e}")),
+        }
+    }
+
+    /// Collect what the background jobs finished.
+    fn poll_jobs(&mut self) {
+        if let Some(j) = &mut self.export_job {
+            match j.poll() {
+                Some(Ok(())) => {
+                    let p = j.path.display().to_string();
+                    self.export_job = None;
+                    self.notices.status(format!("Exported {p}"));
+                }
+                Some(Err(e)) => {
+                    self.export_job = None;
+                    self.notices.status(e);
+                }
+                None => {}
+            }
+        }
+        let done = self.batch_job.as_ref().and_then(|w| w.poll().pop());
+        if let Some(flames) = done {
+            self.batch_job = None;
+            let path = self.data_dir.as_ref().map(|d| d.join("last-batch.fla"));
+            if let Some(p) = &path {
+                let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new(".")));
+                if let Err(e) = io::write_flames(p, "last-batch", &flames) {
+                    self.notices.status(e.to_string());
+                }
+            }
+            self.show_files = true;
+            self.set_batch(flames, path);
+            self.notices.status("Random batch ready");
+        }
+    }
+
+    /// The tab's windows: export settings, mutations, gradients. Returns a request for the
+    /// shell.
+    pub fn windows(&mut self, ctx: &egui::Context, options: &Options) -> Option<FlameRequest> {
+        let mut req = None;
+        self.poll_jobs();
+        if let Some(s) = &mut self.export_dialog {
+            let mut browse = false;
+            let mut r = None;
+            egui::Window::new("Export image")
+                .collapsible(false)
+                .pivot(egui::Align2::CENTER_CENTER)
+                .default_pos(ctx.content_rect().center())
+                .show(ctx, |ui| {
+                    r = export::dialog(ui, s, &mut browse);
+                });
+            if browse {
+                req = Some(FlameRequest::ChooseExportFile);
+            }
+            match r {
+                Some(true) => {
+                    let s = s.clone();
+                    self.last_export_dir = s.path.parent().map(Path::to_path_buf);
+                    let f = self.doc().flame().clone();
+                    self.export_job =
+                        Some(ExportJob::start(&f, &s, options.threads, self.repaint()));
+                    self.export_dialog = None;
+                }
+                Some(false) => self.export_dialog = None,
+                None => {}
+            }
+        }
+        let opts = options.random_options(self.variation_mode.clone());
+        let centre = self.doc().flame().clone();
+        if let Some(m) = self
+            .mutations
+            .show(ctx, &centre, &opts, self.preview.is_some())
+        {
+            self.doc_mut().edit(|f| *f = m);
+            let f = self.doc().flame().clone();
+            self.editor.fix_selection(&f);
+            self.editor.auto_zoom(&f);
+            self.notices.status("Mutant chosen (Undo returns)");
+        }
+        let current = self.doc().flame().palette.clone();
+        if let Some(a) = self.gradients.show(ctx, &current) {
+            match a {
+                GradientAction::Apply(g) => self.apply_gradient(g),
+                GradientAction::Load => req = Some(FlameRequest::LoadGradient),
+                GradientAction::FromImage => req = Some(FlameRequest::GradientFromImage),
+                GradientAction::Edit => self.palette_editor.open = true,
+            }
+        }
+        let dragging = ctx.input(|i| i.pointer.any_down());
+        let doc = pick(self.showing, &mut self.batch, &mut self.file);
+        self.palette_editor.show(ctx, doc, dragging);
+        req
+    }
+}
+
+/// File › New: three half-size linear transforms (a Sierpinski triangle) with the Options'
+/// size, quality and gradient, so that the new flame shows a picture at once.
+pub fn new_flame(options: &Options) -> Flame {
+    let mut f = options.new_flame().flame();
+    f.name = "untitled".into();
+    for (k, (e, y)) in [(0.0, 0.0), (0.5, 0.0), (0.25, 0.5)]
+        .into_iter()
+        .enumerate()
+    {
+        f.xforms.push(crate::flame::Xform::linear(
+            crate::flame::Affine::new(0.5, 0.0, 0.0, 0.5, e, y),
+            1.0,
+            k as f64 / 2.0,
+        ));
+    }
+    f.set_determinant_weights();
+    crate::flame::framing::apply_auto_frame(&mut f);
+    f
+}

@@ -1,0 +1,405 @@
+//! The window around the tabs: it owns the options, the three tabs, the file chooser, the
+//! "save changes?" question and the message boxes, and draws menus, toolbar and status bar
+//! (`menus.rs`) around the current tab.
+
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+use eframe::egui;
+
+use super::dialogs::{self, Confirm, FileBrowser, Purpose};
+use super::escape_tab::{EscapeRequest, EscapeTab};
+use super::files::{Loaded, Pending, load_any};
+use super::flame_tab::first_flame::striking_flame;
+use super::flame_tab::{FlameRequest, FlameTab};
+use super::help::{self, HelpPage};
+use super::options::Options;
+use super::options_dialog::{self, OptionsTab};
+use super::scene_tab::{SceneRequest, SceneTab};
+use super::worker::{Repaint, repaint_of};
+use crate::flame::random::{self, VariationMode};
+use crate::io;
+
+/// How the application starts.
+pub enum Start {
+    /// A random flame from this seed.
+    Random(u64),
+    File(PathBuf),
+    Flames(Vec<crate::flame::Flame>),
+}
+
+/// Which view of the main window is shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tab {
+    Flame,
+    Escape,
+    Scene,
+}
+
+/// The application.
+pub struct UgnisApp {
+    pub options: Options,
+    pub tab: Tab,
+    pub flame: FlameTab,
+    pub escape: EscapeTab,
+    pub scene: SceneTab,
+    pub show_toolbar: bool,
+    pub show_status: bool,
+    pub(super) browser: Option<FileBrowser>,
+    pub(super) pending: Option<Pending>,
+    pub(super) confirm_what: String,
+    /// Message boxes waiting to be shown, oldest first.
+    messages: VecDeque<(String, String)>,
+    pub(super) options_dialog: Option<(Options, OptionsTab)>,
+    pub(super) allow_close: bool,
+    pub(super) expect_paste: bool,
+    /// The window title last sent (sending it every frame would keep the app awake).
+    title: String,
+    /// The open Help window.
+    pub help: Option<HelpPage>,
+    /// Whether option changes are written to the options file (off in tests).
+    persist: bool,
+    ctx: Option<egui::Context>,
+    /// UI time per frame in ms when UGNIS_FRAME_TIMES is set.
+    frame_log: Option<Vec<f64>>,
+}
+
+pub(super) fn seed_from_time() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(1, |d| d.as_nanos() as u64)
+}
+
+impl UgnisApp {
+    /// A new application. With `ctx` the background renderers start (the live preview and the
+    /// thumbnails); without it (tests) nothing renders.
+    pub fn new(options: Options, start: Start, ctx: Option<egui::Context>) -> UgnisApp {
+        let mut messages = Vec::new();
+        let mut start_note = None;
+        // A view file opens in the escape-time tab (next to a random flame).
+        let mut escape_start = None;
+        let start = match start {
+            Start::File(p) if io::kind_of(&p) == io::FileKind::EscapeView => {
+                match io::escape_view::read(&p) {
+                    Ok(v) => escape_start = Some((v.value, p)),
+                    Err(e) => messages.push(("Cannot open".to_string(), e.to_string())),
+                }
+                Start::Random(seed_from_time())
+            }
+            s => s,
+        };
+        let defaults = options.new_flame();
+        let random_flame = |seed: u64| {
+            let opts = options.random_options(VariationMode::default());
+            vec![random::generate(seed, &opts, &defaults).flame]
+        };
+        let (flames, path) = match start {
+            Start::Flames(f) if !f.is_empty() => (f, None),
+            Start::Flames(_) => (random_flame(1), None),
+            Start::Random(seed) => (vec![striking_flame(seed, &options)], None),
+            Start::File(p) => match load_any(&p, &options) {
+                Ok(Loaded {
+                    flames,
+                    warnings,
+                    notes,
+                }) => {
+                    if !warnings.is_empty() {
+                        messages.push(("Warnings".to_string(), warnings.join("\n")));
+                    }
+                    start_note = notes.into_iter().next();
+                    (flames, Some(p))
+                }
+                Err(e) => {
+                    messages.push(("Cannot open".to_string(), e));
+                    (random_flame(1), None)
+                }
+            },
+        };
+        let mut flame = FlameTab::new(flames, path, ctx.as_ref(), seed_from_time(), &options);
+        if let Some(n) = start_note {
+            flame.notices.status(n);
+        }
+        let mut escape = EscapeTab::new(ctx.as_ref());
+        let tab = match escape_start {
+            Some((d, p)) => {
+                escape.doc = d;
+                escape.path = Some(p);
+                Tab::Escape
+            }
+            None => Tab::Flame,
+        };
+        UgnisApp {
+            options,
+            tab,
+            flame,
+            escape,
+            scene: SceneTab::new(ctx.as_ref()),
+            show_toolbar: true,
+            show_status: true,
+            browser: None,
+            pending: None,
+            confirm_what: String::new(),
+            messages: messages.into(),
+            options_dialog: None,
+            allow_close: false,
+            expect_paste: false,
+            title: String::new(),
+            help: None,
+            persist: false,
+            ctx,
+            frame_log: std::env::var_os("UGNIS_FRAME_TIMES").map(|_| Vec::new()),
+        }
+    }
+
+    /// Wakes the UI from background threads.
+    pub(super) fn repaint(&self) -> Repaint {
+        repaint_of(self.ctx.as_ref())
+    }
+
+    /// Write option changes to the options file from now on (the real application; tests
+    /// leave the user's options alone).
+    pub fn persist_options(&mut self, on: bool) {
+        self.persist = on;
+    }
+
+    /// Save the options if they are persisted; a failure is told in a message box.
+    pub(super) fn save_options(&mut self) {
+        if self.persist
+            && let Err(e) = self.options.save()
+        {
+            self.messages.push_back(("Options".into(), e));
+        }
+    }
+
+    /// Remember a file opened or saved in the recent files.
+    pub(super) fn remember(&mut self, path: &std::path::Path) {
+        self.options.remember(path);
+        self.save_options();
+    }
+
+    /// The file chooser, if one is open.
+    pub fn file_browser(&self) -> Option<&FileBrowser> {
+        self.browser.as_ref()
+    }
+
+    /// The status line of the current tab.
+    pub fn status(&self) -> &str {
+        match self.tab {
+            Tab::Flame => &self.flame.notices.status,
+            Tab::Escape => &self.escape.notices.status,
+            Tab::Scene => &self.scene.notices.status,
+        }
+    }
+
+    /// The file chooser, the "save changes?" question, message boxes and the Options dialog.
+    fn dialogs(&mut self, ctx: &egui::Context) {
+        if let Some(b) = &mut self.browser
+            && let Some(r) = b.show(ctx)
+        {
+            let purpose = b.purpose;
+            self.browser = None;
+            match r {
+                Some(p) => self.file_chosen(purpose, p),
+                None => {
+                    if matches!(self.pending, Some(Pending::Exit)) {
+                        self.pending = None;
+                    }
+                }
+            }
+        }
+        if self.browser.is_none()
+            && let Some(p) = self.pending.clone()
+            && self.flame.file.dirty
+        {
+            match dialogs::confirm_discard(ctx, &self.confirm_what) {
+                Some(Confirm::Save) => {
+                    let saved = match self
+                        .flame
+                        .file
+                        .path
+                        .clone()
+                        .filter(|p| io::kind_of(p) != io::FileKind::Png)
+                    {
+                        Some(path) => self.save_to(&path),
+                        None => {
+                            self.browse(Purpose::SaveAs);
+                            false
+                        }
+                    };
+                    if saved {
+                        self.pending = None;
+                        self.run_pending(p);
+                    }
+                }
+                Some(Confirm::Discard) => {
+                    self.pending = None;
+                    self.flame.file.dirty = false;
+                    self.run_pending(p);
+                }
+                Some(Confirm::Cancel) => self.pending = None,
+                None => {}
+            }
+        } else if !self.flame.file.dirty
+            && self.browser.is_none()
+            && let Some(p) = self.pending.take()
+        {
+            self.run_pending(p);
+        }
+        for n in [
+            &mut self.flame.notices,
+            &mut self.escape.notices,
+            &mut self.scene.notices,
+        ] {
+            self.messages.extend(n.take_messages());
+        }
+        if let Some((title, text)) = self.messages.front()
+            && dialogs::message(ctx, title, text)
+        {
+            self.messages.pop_front();
+        }
+        if let Some((draft, tab)) = &mut self.options_dialog {
+            let mut r = None;
+            // Anchored at its top centre with a fixed width: the tabs stay where they are when
+            // the contents change height.
+            let r0 = ctx.content_rect();
+            egui::Window::new("Options")
+                .collapsible(false)
+                .pivot(egui::Align2::CENTER_TOP)
+                .default_pos([r0.center().x, r0.top() + 60.0])
+                .resizable(false)
+                .show(ctx, |ui| {
+                    r = options_dialog::dialog(ui, draft, tab);
+                });
+            match r {
+                Some(true) => {
+                    self.options = draft.clone();
+                    self.save_options();
+                    self.options_dialog = None;
+                }
+                Some(false) => self.options_dialog = None,
+                None => {}
+            }
+        }
+    }
+
+    /// The whole user interface of one frame.
+    pub fn ui(&mut self, ui: &mut egui::Ui) {
+        let ctx = ui.ctx().clone();
+        self.handle_input(&ctx);
+        // Close requests ask about unsaved changes.
+        if ctx.input(|i| i.viewport().close_requested()) && !self.allow_close {
+            if self.flame.file.dirty {
+                self.flame.view_file();
+                ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
+                self.pending = Some(Pending::Exit);
+                self.confirm_what = "quitting".into();
+            } else {
+                self.allow_close = true;
+            }
+        }
+        if self.allow_close {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+        let file = &self.flame.file;
+        let title = format!(
+            "ugnis — {}{}",
+            file.name,
+            if file.dirty { " *" } else { "" }
+        );
+        if title != self.title {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
+            self.title = title;
+        }
+
+        egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
+        if self.show_toolbar {
+            egui::Panel::top("toolbar").show(ui, |ui| self.toolbar(ui));
+        }
+        if self.show_status {
+            egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
+        }
+        match self.tab {
+            Tab::Flame => self.flame.ui(ui, &self.options),
+            Tab::Escape => match self.escape.ui(ui) {
+                Some(EscapeRequest::OpenView) => self.browse(Purpose::OpenView),
+                Some(EscapeRequest::SaveView) => self.browse(Purpose::SaveView),
+                Some(EscapeRequest::Export) => self.browse(Purpose::ExportEscape),
+                None => {}
+            },
+            Tab::Scene => {
+                match self
+                    .scene
+                    .ui(ui, self.flame.doc().flame(), &self.escape.doc)
+                {
+                    Some(SceneRequest::OpenScene) => self.browse(Purpose::OpenScene),
+                    Some(SceneRequest::SaveScene) => self.browse(Purpose::SaveScene),
+                    Some(SceneRequest::Export) => self.browse(Purpose::ExportScene),
+                    Some(SceneRequest::TextureImage) => self.browse(Purpose::SceneTexture),
+                    None => {}
+                }
+            }
+        }
+        if self.flame.variation_filter.show(&ctx, &mut self.options) {
+            if self.options.use_variation_filter {
+                self.flame.variation_mode =
+                    crate::flame::random::VariationMode::FromList(self.options.filter_list());
+            } else if matches!(
+                self.flame.variation_mode,
+                crate::flame::random::VariationMode::FromList(_)
+            ) {
+                self.flame.variation_mode = VariationMode::Random(self.options.probabilities);
+            }
+            self.save_options();
+        }
+        if let Some(p) = self.help
+            && !help::show(&ctx, p)
+        {
+            self.help = None;
+        }
+        match self.flame.windows(&ctx, &self.options) {
+            Some(FlameRequest::LoadGradient) => self.browse(Purpose::LoadGradient),
+            Some(FlameRequest::GradientFromImage) => self.browse(Purpose::GradientFromImage),
+            Some(FlameRequest::ChooseExportFile) => self.browse(Purpose::Export),
+            None => {}
+        }
+        self.dialogs(&ctx);
+    }
+
+    /// UGNIS_FRAME_TIMES=1: print how long the UI thread spent per frame (responsiveness),
+    /// every 120 frames and at exit.
+    fn report_frame_times(&mut self) {
+        if let Some(log) = &mut self.frame_log
+            && !log.is_empty()
+        {
+            let mut v = std::mem::take(log);
+            v.sort_by(f64::total_cmp);
+            let q = |p: f64| v[((v.len() - 1) as f64 * p) as usize];
+            eprintln!(
+                "ugnis: {} frames, UI time per frame: median {:.2} ms, p95 {:.2} ms, max {:.2} ms",
+                v.len(),
+                q(0.5),
+                q(0.95),
+                q(1.0)
+            );
+        }
+    }
+}
+
+impl eframe::App for UgnisApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let t = std::time::Instant::now();
+        UgnisApp::ui(self, ui);
+        if let Some(log) = &mut self.frame_log {
+            log.push(t.elapsed().as_secs_f64() * 1000.0);
+            if log.len() >= 120 {
+                self.report_frame_times();
+            }
+        }
+    }
+}
+
+impl Drop for UgnisApp {
+    fn drop(&mut self) {
+        self.report_frame_times();
+    }
+}
