@@ -2,10 +2,11 @@
 //! escape-time fractals and textured Bezier scenes, plus readers and writers for the file
 //! formats of Fractint, flam3, Apophysis and Ultra Fractal.
 //!
-//! The engine (`flame`, `escape`, `surface`, `gradient`, `noise`) has no GUI dependency; `io` reads and writes files on top
+//! The engine (`flame`, `escape`, `surface`, `gradient`, `noise`, `explore`) has no GUI dependency; `io` reads and writes files on top
 //! of it; the egui application lives in `app` behind the `gui` feature.
 
 pub mod escape;
+pub mod explore;
 pub mod flame;
 pub mod gradient;
 pub mod io;
