@@ -123,7 +123,7 @@ pub const MAX_FILL: f64 = 0.1;
 /// Fewest samples box counting accepts.
 pub const MIN_SAMPLES: u64 = 100;
 /// Most samples box counting accepts (8 bytes each while counting).
-pub const MAX_SAMPLES: u64 = 100_000_000;
+pub const MAX_SAMPLES: u64 = 50_000_000;
 
 /// The count at one level: cells of side 2^−k of the bounding square.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

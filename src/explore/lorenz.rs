@@ -214,6 +214,100 @@ impl View {
     }
 }
 
+/// What [`Lorenz::render`] draws.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderOptions {
+    pub start: P3,
+    pub h: f64,
+    /// Time integrated before drawing starts.
+    pub transient: f64,
+    /// Time drawn after the transient.
+    pub time: f64,
+    pub view: View,
+    pub width: u32,
+    pub height: u32,
+    pub color: [u8; 3],
+    pub background: [u8; 3],
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            start: DEFAULT_START,
+            h: DEFAULT_STEP,
+            transient: DEFAULT_TRANSIENT,
+            time: 200.0,
+            view: View::Xz,
+            width: 800,
+            height: 600,
+            color: [255, 170, 60],
+            background: [8, 8, 16],
+        }
+    }
+}
+
+impl Lorenz {
+    /// Steps of an orbit for `time` at step `h`, refused beyond [`MAX_STEPS`].
+    pub fn steps_for(time: f64, h: f64) -> Result<u64, ExploreError> {
+        check_range("the time", time, 0.0, 1e9)?;
+        let n = (time / h).round();
+        if n > MAX_STEPS as f64 {
+            return Err(ExploreError::TooLarge {
+                what: format!("integrating for t = {time} with h = {h}"),
+                count: n,
+                limit: MAX_STEPS as f64,
+                hint: " steps; shorten the time or lengthen the step".into(),
+            });
+        }
+        Ok(n as u64)
+    }
+
+    /// The orbit drawn as a density picture: the path between successive steps is sampled
+    /// about once per pixel, and the hit counts are shown on a log scale. The framing fits
+    /// the projected orbit (two passes over the same deterministic orbit).
+    pub fn render(&self, o: &RenderOptions) -> Result<image::RgbImage, ExploreError> {
+        super::raster::check_size(o.width, o.height)?;
+        let skip = Self::steps_for(o.transient, o.h)?;
+        let steps = Self::steps_for(o.time, o.h)?;
+        if steps == 0 {
+            return Err(ExploreError::Invalid(
+                "nothing to draw: the time is 0".into(),
+            ));
+        }
+        let run = |f: &mut dyn FnMut(P2)| -> Result<(), ExploreError> {
+            let mut orbit = self.orbit(o.start, o.h)?;
+            for _ in 0..skip {
+                orbit.next();
+            }
+            f(o.view.project(orbit.point()));
+            for p in orbit.take(steps as usize) {
+                f(o.view.project(p));
+            }
+            Ok(())
+        };
+        let mut b = super::Bounds::EMPTY;
+        run(&mut |p| b.add(p))?;
+        if b.is_empty() || !(b.width().is_finite() && b.height().is_finite()) {
+            return Err(ExploreError::Invalid(
+                "the orbit left every finite range; try a smaller step h".into(),
+            ));
+        }
+        let margin = 0.04 * o.width.min(o.height) as f64;
+        let f = super::raster::Framing::fit(b, o.width, o.height, margin);
+        let mut d = super::raster::Density::new(o.width, o.height)?;
+        let mut last: Option<P2> = None;
+        run(&mut |p| {
+            let q = f.pixel_from_world(p);
+            match last {
+                Some(a) => d.line(a, q),
+                None => d.plot(q),
+            }
+            last = Some(q);
+        })?;
+        Ok(d.to_image(o.color, o.background))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -325,5 +419,29 @@ mod tests {
         let l = Lorenz::default();
         assert!(l.orbit([1.0; 3], 0.5).is_err());
         assert!(l.orbit([f64::INFINITY, 1.0, 1.0], 0.01).is_err());
+        assert!(Lorenz::steps_for(1e7, 0.01).is_err());
+        assert_eq!(Lorenz::steps_for(20.0, 0.01).unwrap(), 2000);
+    }
+
+    #[test]
+    fn picture_shows_both_wings() {
+        let l = Lorenz::default();
+        let o = RenderOptions {
+            width: 120,
+            height: 90,
+            time: 50.0,
+            ..RenderOptions::default()
+        };
+        let img = l.render(&o).unwrap();
+        assert_eq!(img.dimensions(), (120, 90));
+        // In the x–z view the wing centres (x = ±8.5, z = 27) are holes left and right of the
+        // middle, ringed by the orbit.
+        let lit = |x: u32, y: u32| img.get_pixel(x, y).0 != o.background;
+        let lit_count = img.pixels().filter(|p| p.0 != o.background).count();
+        assert!(lit_count > 120 * 90 / 10, "{lit_count}");
+        let left = (0..60).filter(|&x| lit(x, 45)).count();
+        let right = (60..120).filter(|&x| lit(x, 45)).count();
+        assert!(left > 3 && right > 3);
+        assert!(l.render(&RenderOptions { time: 0.0, ..o }).is_err());
     }
 }

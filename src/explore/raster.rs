@@ -261,6 +261,20 @@ impl Density {
         }
     }
 
+    /// Count hits along the segment from `a` to `b` (pixel coordinates), about one per pixel
+    /// of its length, `b` included and `a` left to the previous segment.
+    pub fn line(&mut self, a: P2, b: P2) {
+        let len = (b[0] - a[0]).abs().max((b[1] - a[1]).abs());
+        if !len.is_finite() {
+            return;
+        }
+        let n = (len.ceil() as usize).clamp(1, 4 * (self.width + self.height) as usize);
+        for i in 1..=n {
+            let t = i as f64 / n as f64;
+            self.plot([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]);
+        }
+    }
+
     /// Pixels hit at least once.
     pub fn covered(&self) -> usize {
         self.counts.iter().filter(|c| **c > 0).count()
