@@ -852,6 +852,10 @@ mod tests {
             0.1
         ));
         assert!(close(equal_ratio_dimension(20, 1.0 / 3.0), 2.72683, 5e-6));
+        // Scaling by B = 3 gives M = 3, 9, 27 copies of a segment, square, cube: d = 1, 2, 3.
+        for (m, d) in [(3, 1.0), (9, 2.0), (27, 3.0)] {
+            assert!(close(equal_ratio_dimension(m, 1.0 / 3.0), d, 1e-12));
+        }
     }
 
     #[test]

@@ -8,6 +8,8 @@ use crate::flame::rng::FastRng;
 
 /// Most maps an IFS may have (Fractint's own limit is 63 rows).
 pub const MAX_MAPS: usize = 1000;
+/// Points Kovács' chaos game plots by default.
+pub const DEFAULT_POINTS: u64 = 100_000;
 
 /// An IFS: affine maps x′ = a x + b y + e, y′ = c x + d y + f (Fractint's row order
 /// `a b c d e f p`, y up) with their probabilities.
@@ -652,6 +654,16 @@ mod tests {
         let r = t.similarity_ratios().unwrap();
         assert!(r.iter().all(|v| (v - 0.5f64.sqrt()).abs() < 1e-15));
         assert!((t.similarity_dimension().unwrap() - 2.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn dragon_preset() {
+        // T11: Fractint's dragon rows with p = 0.8 / 0.2; fixed points as Fractint's entry.
+        let t = t11_dragon();
+        assert_eq!(t.probs, vec![0.8, 0.2]);
+        let fp = t.fixed_points();
+        assert!(near(fp[0], [-3.4275, 4.5449], 5e-5));
+        assert!(near(fp[1], [3.5383, 4.6846], 5e-5));
     }
 
     #[test]

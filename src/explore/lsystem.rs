@@ -1102,6 +1102,12 @@ mod tests {
             let s = c.derive_string(n).unwrap();
             assert_eq!((count(&s, 'F'), s.len()), (f, len));
         }
+        // With a fixed step each side spans 4ⁿ steps (its 8ⁿ segments end 4ⁿ further along
+        // x): drawn at one size, the step shrinks 4× per level.
+        for n in 0..4u32 {
+            let end = c.segments(n).unwrap().nth(8usize.pow(n) - 1).unwrap().b;
+            assert!((end[0] - 4f64.powi(n as i32)).abs() < 1e-9 && end[1].abs() < 1e-9);
+        }
         let c = plant_a().system.compile().unwrap();
         for (n, len) in [(1, 11), (2, 61), (3, 311), (4, 1561), (5, 7811)] {
             let s = c.derive_string(n).unwrap();
