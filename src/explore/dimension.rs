@@ -152,7 +152,7 @@ pub struct BoxCount {
     /// Lower-left corner and side of the bounding square.
     pub origin: P2,
     pub side: f64,
-    /// Levels k = 1..=MAX_LEVEL.
+    /// Levels k = 1, 2, …: up to 13, or up to 30 when the fit reaches past level 13.
     pub levels: Vec<BoxLevel>,
     /// First and last level of the fit (inclusive), if at least two levels qualify.
     pub fit_range: Option<(u32, u32)>,
@@ -222,23 +222,24 @@ fn spread(v: u64) -> u64 {
     x
 }
 
-/// Collects the cells of a point stream inside known bounds, then counts every level at once:
-/// cell keys interleave the bits of the two cell indices (Morton order), so after sorting the
-/// keys the cells of every coarser level are contiguous too, and one pass over neighbouring keys
-/// counts all levels (two keys lie in different cells of level k exactly when they differ in
-/// their top 2k bits).
-#[derive(Clone, Debug)]
-pub struct BoxCounter {
+/// Level counted with a bitmap (4¹³ bits = 8 MiB); finer levels need the sorted cell keys.
+const COARSE: u32 = 13;
+/// Shift from a level-30 key to its level-COARSE cell.
+const COARSE_SHIFT: u32 = 2 * (MAX_LEVEL - COARSE);
+
+/// The grid of cells over the bounding square. Cell keys interleave the bits of the two cell
+/// indices (Morton order), so the cells of a coarser level are runs of consecutive keys: two
+/// keys lie in different cells of level k exactly when they differ in their top 2k bits.
+#[derive(Clone, Copy, Debug)]
+struct Grid {
     origin: P2,
     side: f64,
     scale: f64,
-    keys: Vec<u64>,
-    outside: u64,
 }
 
-impl BoxCounter {
-    /// A counter over the bounding square of `bounds` (the square shares the lower-left corner).
-    pub fn new(bounds: Bounds) -> Result<Self, ExploreError> {
+impl Grid {
+    /// The bounding square of `bounds` (sharing the lower-left corner).
+    fn new(bounds: Bounds) -> Result<Grid, ExploreError> {
         if bounds.is_empty() {
             return Err(ExploreError::Invalid(
                 "no points to count (the set is empty)".into(),
@@ -251,36 +252,20 @@ impl BoxCounter {
                     .into(),
             ));
         }
-        Ok(BoxCounter {
+        Ok(Grid {
             origin: bounds.min,
             side,
             scale: (1u64 << MAX_LEVEL) as f64 / side,
-            keys: Vec::new(),
-            outside: 0,
         })
     }
 
-    /// Reserve room for `n` more points (refused above [`MAX_SAMPLES`]).
-    pub fn reserve(&mut self, n: u64) -> Result<(), ExploreError> {
-        let total = self.keys.len() as u64 + n;
-        if total > MAX_SAMPLES {
-            return Err(ExploreError::TooLarge {
-                what: "box counting samples".into(),
-                count: total as f64,
-                limit: MAX_SAMPLES as f64,
-                hint: String::new(),
-            });
-        }
-        self.keys.reserve(n as usize);
-        Ok(())
-    }
-
+    /// The level-30 key of the cell holding `p` (points on the far edge belong to the last
+    /// cell); `None` outside the square.
     #[inline(always)]
     fn key(&self, p: P2) -> Option<u64> {
         let fx = (p[0] - self.origin[0]) * self.scale;
         let fy = (p[1] - self.origin[1]) * self.scale;
         let top = (1u64 << MAX_LEVEL) as f64;
-        // A point on the far edge belongs to the last cell.
         if !(fx >= 0.0 && fy >= 0.0 && fx <= top && fy <= top) {
             return None;
         }
@@ -289,82 +274,161 @@ impl BoxCounter {
         let iy = (fy as u64).min(max);
         Some(spread(ix) | (spread(iy) << 1))
     }
+}
 
-    /// Add a point; points outside the square are counted in [`Self::outside`] and skipped.
-    #[inline]
-    pub fn add(&mut self, p: P2) {
-        match self.key(p) {
-            Some(k) if (self.keys.len() as u64) < MAX_SAMPLES => self.keys.push(k),
-            _ => self.outside += 1,
+/// The occupied cells of level [`COARSE`], one bit each, in Morton order.
+struct Bitmap(Vec<u64>);
+
+impl Bitmap {
+    fn new() -> Bitmap {
+        Bitmap(vec![0u64; 1 << (2 * COARSE - 6)])
+    }
+
+    #[inline(always)]
+    fn mark(&mut self, key: u64) {
+        let c = key >> COARSE_SHIFT;
+        self.0[(c >> 6) as usize] |= 1 << (c & 63);
+    }
+
+    /// N(2^−k) for k = 1..=COARSE. Within a word, OR-ing shifted copies gathers groups of 4
+    /// and 16 bits (the cells of the next two coarser levels); a word is one cell three levels
+    /// up, and groups of 4 of those make each further level.
+    fn counts(&self) -> Vec<u64> {
+        let mut counts = vec![0u64; COARSE as usize];
+        let (mut c0, mut c1, mut c2) = (0u64, 0u64, 0u64);
+        let mut cur: Vec<bool> = Vec::with_capacity(self.0.len());
+        for &w in &self.0 {
+            c0 += w.count_ones() as u64;
+            let t2 = {
+                let t1 = w | (w >> 1);
+                t1 | (t1 >> 2)
+            };
+            c1 += (t2 & 0x1111_1111_1111_1111).count_ones() as u64;
+            let t4 = {
+                let t3 = t2 | (t2 >> 4);
+                t3 | (t3 >> 8)
+            };
+            c2 += (t4 & 0x0001_0001_0001_0001).count_ones() as u64;
+            cur.push(w != 0);
         }
-    }
-
-    /// Points that fell outside the bounding square (or beyond the sample limit).
-    pub fn outside(&self) -> u64 {
-        self.outside
-    }
-
-    /// Points added.
-    pub fn len(&self) -> u64 {
-        self.keys.len() as u64
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.keys.is_empty()
-    }
-
-    /// Count every level and fit the line.
-    pub fn finish(mut self) -> Result<BoxCount, ExploreError> {
-        let n = self.keys.len() as u64;
-        if n < MIN_SAMPLES {
-            return Err(ExploreError::Invalid(format!(
-                "{n} points are too few for box counting; give at least {MIN_SAMPLES}"
-            )));
+        let top = COARSE as usize;
+        counts[top - 1] = c0;
+        counts[top - 2] = c1;
+        counts[top - 3] = c2;
+        let mut level = top - 3;
+        loop {
+            counts[level - 1] = cur.iter().filter(|b| **b).count() as u64;
+            if level == 1 {
+                break;
+            }
+            cur = cur.chunks(4).map(|c| c.iter().any(|b| *b)).collect();
+            level -= 1;
         }
-        self.keys.par_sort_unstable();
-        // hist[j]: neighbouring keys whose first difference is in bit pair j (0 = finest).
-        let hist = self
-            .keys
-            .par_windows(2)
-            .fold(
-                || [0u64; MAX_LEVEL as usize],
-                |mut h, w| {
-                    let x = w[0] ^ w[1];
-                    if x != 0 {
-                        let bit = 63 - x.leading_zeros();
-                        h[(bit / 2) as usize] += 1;
-                    }
-                    h
-                },
-            )
-            .reduce(
-                || [0u64; MAX_LEVEL as usize],
-                |mut a, b| {
-                    for (x, y) in a.iter_mut().zip(b) {
-                        *x += y;
-                    }
-                    a
-                },
-            );
-        // A new cell at level k starts wherever the first difference lies in bit pair
-        // j ≥ MAX_LEVEL − k.
-        let levels = (1..=MAX_LEVEL)
-            .map(|k| {
-                let from = (MAX_LEVEL - k) as usize;
-                BoxLevel {
-                    k,
-                    count: 1 + hist[from..].iter().sum::<u64>(),
-                }
-            })
-            .collect();
-        Ok(BoxCount::from_levels(n, self.origin, self.side, levels))
+        counts
     }
 }
 
-/// Box counting of a point set: normalised to its bounding square, cells of side 2^−k for
-/// k = 1..30, a least-squares fit of ln N against k·ln 2 from level 3 up to the last level where
-/// N is at most 10 % of the number of points.
+/// Sort keys by least-significant-digit radix sort (6 passes of 10 bits over 60-bit keys).
+fn radix_sort(keys: &mut Vec<u64>) {
+    let n = keys.len();
+    let mut buf = vec![0u64; n];
+    for pass in 0..(2 * MAX_LEVEL).div_ceil(10) {
+        let shift = 10 * pass;
+        let mut counts = [0usize; 1024];
+        for &k in keys.iter() {
+            counts[((k >> shift) & 1023) as usize] += 1;
+        }
+        if counts.contains(&n) {
+            continue;
+        }
+        let mut sum = 0;
+        for c in counts.iter_mut() {
+            let v = *c;
+            *c = sum;
+            sum += v;
+        }
+        for &k in keys.iter() {
+            let d = ((k >> shift) & 1023) as usize;
+            buf[counts[d]] = k;
+            counts[d] += 1;
+        }
+        std::mem::swap(keys, &mut buf);
+    }
+}
+
+/// N(2^−k) for k = 1..=MAX_LEVEL from the keys of all points (sorted here).
+fn fine_counts(mut keys: Vec<u64>) -> Vec<u64> {
+    radix_sort(&mut keys);
+    // hist[j]: neighbouring keys whose first difference is in bit pair j (0 = finest).
+    let hist = keys
+        .par_windows(2)
+        .fold(
+            || [0u64; MAX_LEVEL as usize],
+            |mut h, w| {
+                let x = w[0] ^ w[1];
+                if x != 0 {
+                    let bit = 63 - x.leading_zeros();
+                    h[(bit / 2) as usize] += 1;
+                }
+                h
+            },
+        )
+        .reduce(
+            || [0u64; MAX_LEVEL as usize],
+            |mut a, b| {
+                for (x, y) in a.iter_mut().zip(b) {
+                    *x += y;
+                }
+                a
+            },
+        );
+    // A new cell at level k starts wherever the first difference lies in bit pair
+    // j ≥ MAX_LEVEL − k.
+    (1..=MAX_LEVEL)
+        .map(|k| 1 + hist[(MAX_LEVEL - k) as usize..].iter().sum::<u64>())
+        .collect()
+}
+
+fn to_levels(counts: &[u64]) -> Vec<BoxLevel> {
+    counts
+        .iter()
+        .enumerate()
+        .map(|(i, &count)| BoxLevel {
+            k: i as u32 + 1,
+            count,
+        })
+        .collect()
+}
+
+/// Whether the fit may reach past the bitmap level (the counts there are still within the
+/// 10 % rule), so the finer levels must be counted too.
+fn needs_fine(coarse: &[u64], samples: u64) -> bool {
+    coarse[COARSE as usize - 1] as f64 <= MAX_FILL * samples as f64
+}
+
+fn check_count(n: u64) -> Result<(), ExploreError> {
+    if n < MIN_SAMPLES {
+        return Err(ExploreError::Invalid(format!(
+            "{n} points are too few for box counting; give at least {MIN_SAMPLES}"
+        )));
+    }
+    if n > MAX_SAMPLES {
+        return Err(ExploreError::TooLarge {
+            what: "box counting samples".into(),
+            count: n as f64,
+            limit: MAX_SAMPLES as f64,
+            hint: String::new(),
+        });
+    }
+    Ok(())
+}
+
+/// Box counting of a point set: normalised to its bounding square, cells of side 2^−k, a
+/// least-squares fit of ln N against k·ln 2 from level 3 up to the last level where N is at
+/// most 10 % of the number of points. Levels 1–13 are always counted; finer ones (up to 30)
+/// when the fit reaches them.
 pub fn box_count_points(points: &[P2]) -> Result<BoxCount, ExploreError> {
+    check_count(points.len() as u64)?;
     let bounds = points
         .par_iter()
         .fold(
@@ -384,34 +448,74 @@ pub fn box_count_points(points: &[P2]) -> Result<BoxCount, ExploreError> {
                 a
             },
         );
-    let mut c = BoxCounter::new(bounds)?;
-    if points.len() as u64 > MAX_SAMPLES {
-        return Err(ExploreError::TooLarge {
-            what: "box counting samples".into(),
-            count: points.len() as f64,
-            limit: MAX_SAMPLES as f64,
-            hint: String::new(),
-        });
+    let g = Grid::new(bounds)?;
+    let mut bm = Bitmap::new();
+    let mut n = 0u64;
+    for p in points {
+        if let Some(k) = g.key(*p) {
+            bm.mark(k);
+            n += 1;
+        }
     }
-    let keys: Vec<u64> = points.par_iter().filter_map(|p| c.key(*p)).collect();
-    c.keys = keys;
-    c.finish()
+    check_count(n)?;
+    let coarse = bm.counts();
+    drop(bm);
+    let counts = if needs_fine(&coarse, n) {
+        fine_counts(points.par_iter().filter_map(|p| g.key(*p)).collect())
+    } else {
+        coarse
+    };
+    Ok(BoxCount::from_levels(
+        n,
+        g.origin,
+        g.side,
+        to_levels(&counts),
+    ))
 }
 
-/// Box counting of a deterministic point stream: `run` is called twice with a sink (first for
-/// the bounds, then for the counts) and must produce the same points both times, as a seeded
-/// chaos game does. Memory: 8 bytes per point.
+/// Box counting of a deterministic point stream: `run` is called with a sink two or three
+/// times (bounds, coarse counts, and the finer levels when the fit reaches them) and must
+/// produce the same points every time, as a seeded chaos game does. Memory: 8 MiB, plus
+/// 8 bytes per point when the finer levels are needed.
 pub fn box_count_stream(mut run: impl FnMut(&mut dyn FnMut(P2))) -> Result<BoxCount, ExploreError> {
     let mut bounds = Bounds::EMPTY;
-    let mut n = 0u64;
+    let mut total = 0u64;
     run(&mut |p| {
         bounds.add(p);
-        n += 1;
+        total += 1;
     });
-    let mut c = BoxCounter::new(bounds)?;
-    c.reserve(n)?;
-    run(&mut |p| c.add(p));
-    c.finish()
+    check_count(total)?;
+    let g = Grid::new(bounds)?;
+    let mut bm = Bitmap::new();
+    let mut n = 0u64;
+    run(&mut |p| {
+        if let Some(k) = g.key(p) {
+            bm.mark(k);
+            n += 1;
+        }
+    });
+    check_count(n)?;
+    let coarse = bm.counts();
+    drop(bm);
+    let counts = if needs_fine(&coarse, n) {
+        let mut keys = Vec::with_capacity(n as usize);
+        run(&mut |p| {
+            if let Some(k) = g.key(p)
+                && keys.len() < n as usize
+            {
+                keys.push(k);
+            }
+        });
+        fine_counts(keys)
+    } else {
+        coarse
+    };
+    Ok(BoxCount::from_levels(
+        n,
+        g.origin,
+        g.side,
+        to_levels(&counts),
+    ))
 }
 
 /// Box counting of a flame's attractor: `points` samples of the seeded chaos game (post and
@@ -913,6 +1017,54 @@ mod tests {
                 "k={lvl}"
             );
         }
+    }
+
+    #[test]
+    fn bitmap_and_sorted_keys_agree() {
+        // A parabola arc of 500 000 points stays under the 10 % rule past level 13 (about
+        // 1.5·2^k cells at level k), so the finer levels are counted from sorted keys; both
+        // ways give the same counts up to 13.
+        let pts = random_points(500_000, 4, |u, _| [u, 0.5 * u * u]);
+        let b = box_count_points(&pts).unwrap();
+        assert_eq!(b.levels.len(), MAX_LEVEL as usize);
+        let g = Grid::new(Bounds::of(pts.iter().copied())).unwrap();
+        let mut bm = Bitmap::new();
+        for p in &pts {
+            bm.mark(g.key(*p).unwrap());
+        }
+        let coarse = bm.counts();
+        for (k, c) in coarse.iter().enumerate() {
+            assert_eq!(b.levels[k].count, *c, "k={}", k + 1);
+        }
+        for lvl in [14u32, 16, 18] {
+            let n = 1u64 << lvl;
+            let mut cells: Vec<(u64, u64)> = pts
+                .iter()
+                .map(|p| {
+                    let ix = (((p[0] - b.origin[0]) / b.side * n as f64) as u64).min(n - 1);
+                    let iy = (((p[1] - b.origin[1]) / b.side * n as f64) as u64).min(n - 1);
+                    (ix, iy)
+                })
+                .collect();
+            cells.sort_unstable();
+            cells.dedup();
+            assert_eq!(
+                b.levels[lvl as usize - 1].count,
+                cells.len() as u64,
+                "k={lvl}"
+            );
+        }
+        assert!(b.fit_range.unwrap().1 > COARSE);
+        // The stream gives the same result as the slice.
+        let s = box_count_stream(|sink| pts.iter().for_each(|p| sink(*p))).unwrap();
+        assert_eq!(s, b);
+        let mut keys: Vec<u64> = (0..5000u64)
+            .map(|i| i.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 4)
+            .collect();
+        let mut want = keys.clone();
+        want.sort_unstable();
+        radix_sort(&mut keys);
+        assert_eq!(keys, want);
     }
 
     #[test]
