@@ -122,7 +122,8 @@ pub const SKIP_COARSE: u32 = 2;
 pub const MAX_FILL: f64 = 0.1;
 /// Fewest samples box counting accepts.
 pub const MIN_SAMPLES: u64 = 100;
-/// Most samples box counting accepts (8 bytes each while counting).
+/// Most samples box counting accepts (up to 16 bytes each while counting, see
+/// [`box_count_peak_bytes`]).
 pub const MAX_SAMPLES: u64 = 50_000_000;
 
 /// The count at one level: cells of side 2^−k of the bounding square.
@@ -276,6 +277,15 @@ impl Grid {
     }
 }
 
+/// Most bytes box counting of `samples` points allocates: the level-13 bitmap (8 MiB) and its
+/// per-word summary (1 MiB), and, when the fit reaches past level 13, a cell key and a sorted
+/// copy per point (16 bytes) with two bucket tables (8 MiB). The points themselves are not
+/// included.
+pub fn box_count_peak_bytes(samples: u64) -> u64 {
+    let words = 1u64 << (2 * COARSE - 6);
+    (8 * words + words).max(16 * samples + 8 * (1 << (2 * BUCKET_LEVEL)))
+}
+
 /// The occupied cells of level [`COARSE`], one bit each, in Morton order.
 struct Bitmap(Vec<u64>);
 
@@ -328,37 +338,60 @@ impl Bitmap {
     }
 }
 
-/// Sort keys by least-significant-digit radix sort (6 passes of 10 bits over 60-bit keys).
-fn radix_sort(keys: &mut Vec<u64>) {
+/// Level whose cells split the keys into buckets before sorting (4¹⁰ buckets).
+const BUCKET_LEVEL: u32 = 10;
+/// Buckets sorted by one task.
+const BUCKETS_PER_TASK: usize = 1024;
+
+/// Sort cell keys: one counting pass distributes them by their level-10 cell (the top 20 bits,
+/// so the buckets follow each other in key order), then the buckets are sorted in parallel.
+/// A set whose fit reaches past level 13 meets few level-10 cells, so the buckets are long and
+/// few; sorting them costs n·log(n/buckets) instead of n·log n. Extra memory: 8 bytes per key
+/// and two bucket tables of 4 MiB.
+fn sort_keys(keys: Vec<u64>) -> Vec<u64> {
     let n = keys.len();
-    let mut buf = vec![0u64; n];
-    for pass in 0..(2 * MAX_LEVEL).div_ceil(10) {
-        let shift = 10 * pass;
-        let mut counts = [0usize; 1024];
-        for &k in keys.iter() {
-            counts[((k >> shift) & 1023) as usize] += 1;
-        }
-        if counts.contains(&n) {
-            continue;
-        }
-        let mut sum = 0;
-        for c in counts.iter_mut() {
-            let v = *c;
-            *c = sum;
-            sum += v;
-        }
-        for &k in keys.iter() {
-            let d = ((k >> shift) & 1023) as usize;
-            buf[counts[d]] = k;
-            counts[d] += 1;
-        }
-        std::mem::swap(keys, &mut buf);
+    let shift = 2 * (MAX_LEVEL - BUCKET_LEVEL);
+    let buckets = 1usize << (2 * BUCKET_LEVEL);
+    // Keys are at most MAX_SAMPLES < 2³², so u32 offsets suffice.
+    let mut start = vec![0u32; buckets + 1];
+    for &k in &keys {
+        start[(k >> shift) as usize + 1] += 1;
     }
+    for i in 0..buckets {
+        start[i + 1] += start[i];
+    }
+    let mut pos = start.clone();
+    let mut out = vec![0u64; n];
+    for &k in &keys {
+        let b = (k >> shift) as usize;
+        out[pos[b] as usize] = k;
+        pos[b] += 1;
+    }
+    drop(keys);
+    drop(pos);
+    let mut tasks = Vec::with_capacity(buckets / BUCKETS_PER_TASK);
+    let mut rest: &mut [u64] = &mut out;
+    for first in (0..buckets).step_by(BUCKETS_PER_TASK) {
+        let len = (start[first + BUCKETS_PER_TASK] - start[first]) as usize;
+        let (mine, tail) = rest.split_at_mut(len);
+        tasks.push((first, mine));
+        rest = tail;
+    }
+    tasks.into_par_iter().for_each(|(first, slice)| {
+        let base = start[first];
+        for b in first..first + BUCKETS_PER_TASK {
+            let (lo, hi) = ((start[b] - base) as usize, (start[b + 1] - base) as usize);
+            if hi - lo > 1 {
+                slice[lo..hi].sort_unstable();
+            }
+        }
+    });
+    out
 }
 
 /// N(2^−k) for k = 1..=MAX_LEVEL from the keys of all points (sorted here).
-fn fine_counts(mut keys: Vec<u64>) -> Vec<u64> {
-    radix_sort(&mut keys);
+fn fine_counts(keys: Vec<u64>) -> Vec<u64> {
+    let keys = sort_keys(keys);
     // hist[j]: neighbouring keys whose first difference is in bit pair j (0 = finest).
     let hist = keys
         .par_windows(2)
@@ -475,8 +508,8 @@ pub fn box_count_points(points: &[P2]) -> Result<BoxCount, ExploreError> {
 
 /// Box counting of a deterministic point stream: `run` is called with a sink two or three
 /// times (bounds, coarse counts, and the finer levels when the fit reaches them) and must
-/// produce the same points every time, as a seeded chaos game does. Memory: 8 MiB, plus
-/// 8 bytes per point when the finer levels are needed.
+/// produce the same points every time, as a seeded chaos game does. Memory: at most
+/// [`box_count_peak_bytes`].
 pub fn box_count_stream(mut run: impl FnMut(&mut dyn FnMut(P2))) -> Result<BoxCount, ExploreError> {
     let mut bounds = Bounds::EMPTY;
     let mut total = 0u64;
@@ -1058,13 +1091,15 @@ mod tests {
         // The stream gives the same result as the slice.
         let s = box_count_stream(|sink| pts.iter().for_each(|p| sink(*p))).unwrap();
         assert_eq!(s, b);
-        let mut keys: Vec<u64> = (0..5000u64)
-            .map(|i| i.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 4)
-            .collect();
-        let mut want = keys.clone();
-        want.sort_unstable();
-        radix_sort(&mut keys);
-        assert_eq!(keys, want);
+        // Spread keys, and keys crowded into one bucket, come out sorted.
+        for spread in [4u32, 40] {
+            let keys: Vec<u64> = (0..50_000u64)
+                .map(|i| i.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> spread)
+                .collect();
+            let mut want = keys.clone();
+            want.sort_unstable();
+            assert_eq!(sort_keys(keys), want);
+        }
     }
 
     #[test]
