@@ -285,6 +285,10 @@ fn lorenz_draws_and_shows_sensitivity() {
         (vec!["--r", "5000"], "r is 5000"),
         (vec!["--h", "0.5"], "the step h is 0.5"),
         (vec!["--time", "1e7"], "shorten the time"),
+        (
+            vec!["--transient=-1"],
+            "--transient -1 must be between 0 and 1e9",
+        ),
         (vec!["--start", "1,2"], "expected three numbers"),
         (vec!["--yaw", "1000", "--view", "turned"], "--yaw 1000"),
     ] {

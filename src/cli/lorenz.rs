@@ -37,7 +37,7 @@ pub struct LorenzArgs {
     /// Time drawn after the transient (at most 10⁸ steps)
     #[arg(long, default_value_t = 200.0)]
     pub time: f64,
-    /// Time integrated before drawing
+    /// Time integrated before drawing (0 to 1e9)
     #[arg(long, default_value_t = 10.0)]
     pub transient: f64,
     /// Start point X,Y,Z
@@ -79,6 +79,11 @@ pub fn run(a: LorenzArgs) -> Result<()> {
     let is_bmp = io::kind_of(&a.output) == FileKind::Bmp;
     if !is_bmp && io::kind_of(&a.output) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
+    }
+    for (what, v) in [("--time", a.time), ("--transient", a.transient)] {
+        if !(v.is_finite() && (0.0..=1e9).contains(&v)) {
+            bail!("{what} {v} must be between 0 and 1e9 (time units of the equations)");
+        }
     }
     for (what, v) in [("--yaw", a.yaw), ("--pitch", a.pitch)] {
         if !(v.is_finite() && v.abs() <= 360.0) {

@@ -31,7 +31,7 @@ pub enum ExploreError {
         max: f64,
     },
     /// A computation that would produce more than its limit allows.
-    #[error("{what}: {count:.0} would be produced; the limit is {limit:.0}{hint}")]
+    #[error("{what}: {} would be produced; the limit is {limit:.0}{hint}", big(*count))]
     TooLarge {
         what: String,
         count: f64,
@@ -41,6 +41,15 @@ pub enum ExploreError {
     /// Any other invalid input, with a message saying what was expected.
     #[error("{0}")]
     Invalid(String),
+}
+
+/// A count for a message: whole numbers up to 10¹², scientific notation beyond.
+fn big(count: f64) -> String {
+    if count.abs() < 1e12 {
+        format!("{count:.0}")
+    } else {
+        format!("{count:.2e}")
+    }
 }
 
 /// Refuse `value` outside `[min, max]` (and non-finite values) with a message naming `what`.
