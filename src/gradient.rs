@@ -25,6 +25,24 @@ pub struct Gradient {
     pub map_entries: Option<Vec<[f64; 3]>>,
 }
 
+/// `colors` resampled to `n` entries by linear interpolation (entry i samples position
+/// (i + ½)·N/n − ½ of the N given entries).
+pub fn resample_colors(colors: &[[f64; 4]], n: usize) -> Vec<[f64; 4]> {
+    let m = colors.len();
+    if m == 0 {
+        return vec![[0.0, 0.0, 0.0, 1.0]; n];
+    }
+    (0..n)
+        .map(|i| {
+            let pos = ((i as f64 + 0.5) * m as f64 / n as f64 - 0.5).clamp(0.0, (m - 1) as f64);
+            let k = (pos.floor() as usize).min(m - 1);
+            let u = pos - k as f64;
+            let (a, b) = (colors[k], colors[(k + 1).min(m - 1)]);
+            std::array::from_fn(|c| a[c] + (b[c] - a[c]) * u)
+        })
+        .collect()
+}
+
 impl Default for Gradient {
     fn default() -> Self {
         Self::grey_ramp()

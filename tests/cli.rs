@@ -641,3 +641,60 @@ fn scene_renders_files_and_reports_bad_ones() {
     assert_eq!(code, 1);
     assert!(err.contains("/no/such.toml"), "{err}");
 }
+
+#[test]
+fn scene_ray_casts_new_kinds_and_refuses_what_does_not_fit() {
+    let dir = common::temp_dir("cli-scene-raycast");
+    let out = dir.join("menger.png");
+    let ex = common::example("menger.toml");
+    let (code, stdout, err) = ugnis(&[
+        "scene",
+        ex.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--size",
+        "160x120",
+        "--shadows",
+        "off",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        stdout.contains("8000 cubes") && stdout.contains("2.72683"),
+        "{stdout}"
+    );
+    assert_eq!(image::open(&out).unwrap().width(), 160);
+    // The quaternion Julia example through the z-buffer (marched per pixel there).
+    let q = common::example("quaternion-julia.toml");
+    let out_q = dir.join("julia.bmp");
+    let (code, _, err) = ugnis(&[
+        "scene",
+        q.to_str().unwrap(),
+        "-o",
+        out_q.to_str().unwrap(),
+        "--size",
+        "96x72",
+        "--render",
+        "zbuffer",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(image::open(&out_q).unwrap().height(), 72);
+    for (args, want) in [
+        (
+            vec!["--render", "zbuffer", "--shadows", "on"],
+            "--shadows needs the ray caster",
+        ),
+        (vec!["--render", "phong"], "phong"),
+        (vec!["--threads", "5000"], "at most 1024"),
+        // 100000² pixels with 4×4 supersampling cannot fit: refused before allocating.
+        (
+            vec!["--size", "100000x100000", "--supersample", "4"],
+            "reduce the image size",
+        ),
+    ] {
+        let mut a = vec!["scene", ex.to_str().unwrap(), "-o", out.to_str().unwrap()];
+        a.extend(args.iter().copied());
+        let (code, _, err) = ugnis(&a);
+        assert_eq!(code, 1, "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+    }
+}

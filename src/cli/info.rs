@@ -8,13 +8,75 @@ use clap::Args;
 use ugnis::io::{self, FileKind};
 
 #[derive(Args, Debug)]
+#[command(group(clap::ArgGroup::new("what").required(true).args(["file", "variations"])))]
 pub struct InfoArgs {
     /// A flame (.fla/.flame/.flam3/.png), IFS (.ifs) or gradient (.ugr/.map/.ggr) file
-    pub file: PathBuf,
+    pub file: Option<PathBuf>,
+    /// List every variation ugnis renders, with its parameters and defaults
+    #[arg(long)]
+    pub variations: bool,
+}
+
+/// One line per variation: name, origin, properties and parameters with their defaults.
+fn list_variations() {
+    use ugnis::flame::variations::{self, flag};
+    let mut out = String::new();
+    let mut n = 0;
+    for id in 0..variations::count() as variations::VarId {
+        let d = variations::info(id);
+        if d.has(flag::HIDDEN) {
+            continue;
+        }
+        n += 1;
+        let origin = if d.has(flag::FLAM3) {
+            "flam3"
+        } else if d.has(flag::JWILDFIRE) {
+            "JWildfire"
+        } else {
+            "Fractorium"
+        };
+        let mut props = Vec::new();
+        if d.is_3d() {
+            props.push("3-D");
+        }
+        if d.has(flag::RANDOM) {
+            props.push("random");
+        }
+        if d.has(flag::SETS_COLOR) {
+            props.push("direct colour");
+        }
+        if d.has(flag::POST_ONLY) {
+            props.push("post_ only");
+        }
+        let params: Vec<String> = d
+            .params
+            .iter()
+            .map(|p| format!("{}={}", p.name, p.default))
+            .collect();
+        out.push_str(&format!(
+            "{:<24} {:<10} {:<22} {}\n",
+            d.name,
+            origin,
+            props.join(","),
+            params.join(" ")
+        ));
+    }
+    out.push_str(&format!(
+        "{n} variations; each also as pre_NAME and post_NAME (before the others / after their sum)\n"
+    ));
+    // A closed pipe (e.g. `| head`) ends the listing quietly.
+    use std::io::Write;
+    let _ = std::io::stdout().lock().write_all(out.as_bytes());
 }
 
 pub fn run(a: InfoArgs) -> Result<()> {
-    let path = &a.file;
+    if a.variations {
+        list_variations();
+        return Ok(());
+    }
+    let Some(path) = a.file.as_ref() else {
+        return Ok(());
+    };
     match io::kind_of(path) {
         FileKind::Ifs => {
             let p = io::read_ifs(path)?;

@@ -1,11 +1,25 @@
-//! `ugnis scene`: render a textured Bézier scene file to PNG or BMP.
+//! `ugnis scene`: render a scene file (textured Bézier surfaces, meshes, Menger sponges,
+//! quaternion Julia sets) to PNG or BMP with the z-buffer or the ray caster.
 
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
-use clap::Args;
+use clap::{Args, ValueEnum};
 
 use ugnis::io::{self, FileKind};
+use ugnis::surface::Renderer;
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum RenderArg {
+    Zbuffer,
+    Raycast,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum OnOff {
+    On,
+    Off,
+}
 
 #[derive(Args, Debug)]
 pub struct SceneArgs {
@@ -20,7 +34,13 @@ pub struct SceneArgs {
     /// Supersampling per axis (1–4; default: the scene's own)
     #[arg(long)]
     pub supersample: Option<u32>,
-    /// Worker threads (default: all cores)
+    /// Renderer (default: the scene's own `render`, else zbuffer)
+    #[arg(long, value_enum)]
+    pub render: Option<RenderArg>,
+    /// Shadow rays when ray casting (default: the scene's own `shadows`, else on)
+    #[arg(long, value_enum)]
+    pub shadows: Option<OnOff>,
+    /// Worker threads (default: all cores; at most 1024)
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
 }
@@ -29,6 +49,12 @@ pub fn run(a: SceneArgs) -> Result<()> {
     let is_bmp = io::kind_of(&a.output) == FileKind::Bmp;
     if !is_bmp && io::kind_of(&a.output) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
+    }
+    if a.threads > 1024 {
+        bail!(
+            "--threads {} must be at most 1024 (0: all cores)",
+            a.threads
+        );
     }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(a.threads)
@@ -46,7 +72,22 @@ pub fn run(a: SceneArgs) -> Result<()> {
             }
             loaded.scene.supersample = s;
         }
-        ugnis::surface::render(&loaded.scene, None).context("rendering was cancelled")
+        match a.render {
+            Some(RenderArg::Zbuffer) => loaded.scene.renderer = Renderer::ZBuffer,
+            Some(RenderArg::Raycast) => loaded.scene.renderer = Renderer::RayCast,
+            None => {}
+        }
+        if let Some(sh) = a.shadows {
+            if loaded.scene.renderer != Renderer::RayCast {
+                bail!("--shadows needs the ray caster (--render raycast or render = \"raycast\" in the scene)");
+            }
+            loaded.scene.shadows = matches!(sh, OnOff::On);
+        }
+        for n in &loaded.notes {
+            println!("{n}");
+        }
+        ugnis::surface::try_render(&loaded.scene, None)
+            .with_context(|| format!("cannot render '{}'", a.file.display()))
     })?;
     let img = image::DynamicImage::ImageRgb8(img);
     if is_bmp {

@@ -964,6 +964,136 @@ mod tests {
         }
     }
 
+    fn projection(cam: crate::flame::model::Camera3d) -> Projection {
+        let f = Flame {
+            cam,
+            ..Flame::default()
+        };
+        Projection::of(&f).expect("a 3-D camera")
+    }
+
+    #[test]
+    fn pre_and_post_forms_wrap_the_regular_variations() {
+        use crate::flame::model::Var;
+        use crate::flame::variations::{Form, LINEAR, SINUSOIDAL, SPHERICAL};
+        let mut x = Xform::linear(Affine::new(0.8, 0.2, -0.3, 0.9, 0.1, -0.2), 1.0, 0.0);
+        x.vars = vec![
+            Var::with_form(SINUSOIDAL, Form::Pre, 1.0),
+            Var::new(LINEAR, 0.5),
+            Var::with_form(SPHERICAL, Form::Post, 1.0),
+        ];
+        let f = Flame {
+            xforms: vec![x.clone()],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(2);
+        let p = Pt {
+            x: 0.4,
+            y: -0.7,
+            z: 0.0,
+            c: 0.5,
+        };
+        let (q, bad) = ch.xforms[0].apply(p, &mut rng);
+        assert!(!bad);
+        // affine → sin (replaces the point) → 0.5·linear → spherical of the sum.
+        let (tx, ty) = x.coefs.apply(p.x, p.y);
+        let (sx, sy) = (0.5 * tx.sin(), 0.5 * ty.sin());
+        let r2 = sx * sx + sy * sy;
+        assert!(
+            (q.x - sx / r2).abs() < 1e-12 && (q.y - sy / r2).abs() < 1e-12,
+            "{q:?}"
+        );
+        // The same through the batched lanes.
+        let mut g = Group::new();
+        (g.x[0], g.y[0], g.z[0], g.c[0]) = (p.x, p.y, p.z, p.c);
+        ch.xforms[0].apply_soa(&mut g, 1, &mut rng);
+        assert!((g.x[0] - q.x).abs() < 1e-12 && (g.y[0] - q.y).abs() < 1e-12);
+    }
+
+    #[test]
+    fn camera_projection_oracles() {
+        use crate::flame::model::Camera3d;
+        use std::f64::consts::FRAC_PI_2;
+        let mut rng = FastRng::new(1);
+        let close = |a: (f64, f64), b: (f64, f64)| {
+            assert!(
+                (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12,
+                "{a:?} vs {b:?}"
+            )
+        };
+        assert!(Projection::of(&Flame::default()).is_none());
+        // Perspective only: divide by 1 − p·z.
+        let p = projection(Camera3d {
+            perspective: 0.5,
+            ..Camera3d::default()
+        });
+        close(p.project(1.0, 1.0, 1.0, &mut rng), (2.0, 2.0));
+        // The focal plane moves z.
+        let p = projection(Camera3d {
+            perspective: 0.5,
+            zpos: 1.0,
+            ..Camera3d::default()
+        });
+        close(p.project(1.0, 1.0, 1.0, &mut rng), (1.0, 1.0));
+        // Pitch a quarter turn: the view from the side, y′ = −z.
+        let p = projection(Camera3d {
+            pitch: FRAC_PI_2,
+            ..Camera3d::default()
+        });
+        close(p.project(1.0, 2.0, 3.0, &mut rng), (1.0, -3.0));
+        // Yaw a quarter turn about z: (x, y) → (y, −x).
+        let p = projection(Camera3d {
+            yaw: FRAC_PI_2,
+            ..Camera3d::default()
+        });
+        close(p.project(1.0, 2.0, 0.0, &mut rng), (2.0, -1.0));
+    }
+
+    #[test]
+    fn depth_of_field_blurs_by_depth() {
+        use crate::flame::model::Camera3d;
+        let p = projection(Camera3d {
+            dof: 2.0,
+            ..Camera3d::default()
+        });
+        let mut rng = FastRng::new(3);
+        // In the focal plane: sharp.
+        assert_eq!(p.project(0.3, 0.4, 0.0, &mut rng), (0.3, 0.4));
+        // At depth 1: moved by 0.1·dof·u, u uniform in [0, 1): mean distance 0.1.
+        let n = 20_000;
+        let mean = (0..n)
+            .map(|_| {
+                let (x, y) = p.project(0.3, 0.4, 1.0, &mut rng);
+                (x - 0.3).hypot(y - 0.4)
+            })
+            .sum::<f64>()
+            / n as f64;
+        assert!((mean - 0.1).abs() < 0.003, "{mean}");
+    }
+
+    #[test]
+    fn a_flat_attractor_seen_edge_on_is_a_line() {
+        let mut f = Flame::default();
+        for (e, ff) in [(0.0, 0.0), (0.5, 0.0), (0.25, 0.5)] {
+            f.xforms.push(Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, e, ff),
+                1.0,
+                0.0,
+            ));
+        }
+        f.cam.pitch = std::f64::consts::FRAC_PI_2;
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(5);
+        let (mut xmin, mut xmax) = (f64::MAX, f64::MIN);
+        ch.run_sub_batch(5_000, &mut rng, |p, _| {
+            assert!(p.y.abs() < 1e-12, "{p:?}");
+            xmin = xmin.min(p.x);
+            xmax = xmax.max(p.x);
+        });
+        assert!(xmax - xmin > 0.9);
+    }
+
     #[test]
     fn xaos_restricts_transitions() {
         // Xform 0 may only go to 1, 1 only to 0: colours alternate exactly.

@@ -113,46 +113,60 @@ impl Geometry {
 /// The palette prepared for plotting: RGB pre-multiplied by alpha, as f32.
 #[derive(Clone, Debug)]
 pub struct PlotPalette {
-    pub colors: Box<[[f32; 4]; 256]>,
+    /// Premultiplied RGBA entries (256 for most flames; files may carry other counts).
+    pub colors: Vec<[f32; 4]>,
     pub mode: PaletteMode,
 }
 
 impl PlotPalette {
     pub fn new(flame: &Flame) -> PlotPalette {
-        let mut colors = Box::new([[0f32; 4]; 256]);
-        for (i, c) in flame.palette.colors.iter().take(256).enumerate() {
-            let a = c[3].clamp(0.0, 1.0);
-            colors[i] = [
-                (c[0] * a) as f32,
-                (c[1] * a) as f32,
-                (c[2] * a) as f32,
-                a as f32,
-            ];
-        }
+        let colors = flame
+            .render_colors()
+            .iter()
+            .map(|c| {
+                let a = c[3].clamp(0.0, 1.0);
+                [
+                    (c[0] * a) as f32,
+                    (c[1] * a) as f32,
+                    (c[2] * a) as f32,
+                    a as f32,
+                ]
+            })
+            .collect::<Vec<_>>();
+        let colors = if colors.is_empty() {
+            vec![[0.0; 4]; 2]
+        } else if colors.len() == 1 {
+            vec![colors[0]; 2]
+        } else {
+            colors
+        };
         PlotPalette {
             colors,
             mode: flame.palette_mode,
         }
     }
 
-    /// Palette colour of colour coordinate `c` (flame.md §5.2).
+    /// Palette colour of colour coordinate `c` (flame.md §5.2): entry ⌊c·N⌋ of the N entries
+    /// (step), or linear interpolation between neighbouring entries.
     #[inline(always)]
     pub fn lookup(&self, c: f64) -> [f32; 4] {
+        let n = self.colors.len();
+        let nf = n as f64;
         match self.mode {
             PaletteMode::Step => {
-                let k = (c * 256.0) as i32; // saturating cast; NaN → 0
-                self.colors[k.clamp(0, 255) as usize & 255]
+                let k = (c * nf) as i64; // saturating cast; NaN → 0
+                self.colors[k.clamp(0, n as i64 - 1) as usize]
             }
             PaletteMode::Linear => {
-                let f = c * 256.0;
+                let f = c * nf;
                 let mut k = f.floor();
                 let mut u = f - k;
                 if k.is_nan() || k < 0.0 {
                     k = 0.0;
                     u = 0.0;
                 }
-                if k >= 255.0 {
-                    k = 254.0;
+                if k >= nf - 1.0 {
+                    k = nf - 2.0;
                     u = 1.0;
                 }
                 let k = k as usize;

@@ -4,6 +4,7 @@
 pub mod affine;
 pub mod animate;
 pub mod chaos;
+pub mod curves;
 pub mod density;
 pub mod fastmath;
 pub mod filter;

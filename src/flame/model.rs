@@ -367,6 +367,12 @@ pub struct Flame {
     pub background: [f64; 3],
     pub palette_mode: PaletteMode,
     pub palette: Gradient,
+    /// The file's palette when it has more than 256 entries (Fractorium writes such palettes):
+    /// `palette` then holds it resampled to 256 for the editor. It renders and is saved only as
+    /// long as `palette` is still that resampling — editing the gradient drops it.
+    pub palette_hires: Option<Vec<[f64; 4]>>,
+    /// Colour curves applied to the final picture (Fractorium's; identity by default).
+    pub curves: crate::flame::curves::Curves,
     pub xforms: Vec<Xform>,
     pub final_xform: Option<Xform>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
@@ -416,6 +422,8 @@ impl Default for Flame {
             background: [0.0, 0.0, 0.0],
             palette_mode: PaletteMode::Step,
             palette: Gradient::default(),
+            palette_hires: None,
+            curves: crate::flame::curves::Curves::default(),
             xforms: Vec::new(),
             final_xform: None,
             solo_xform: None,
@@ -431,6 +439,19 @@ impl Default for Flame {
 }
 
 impl Flame {
+    /// The palette entries that colour the picture: the file's own palette of more than 256
+    /// entries while the gradient is unedited, else the 256-entry gradient.
+    pub fn render_colors(&self) -> &[[f64; 4]] {
+        match &self.palette_hires {
+            Some(h)
+                if crate::gradient::resample_colors(h, Gradient::LEN) == self.palette.colors =>
+            {
+                h
+            }
+            _ => &self.palette.colors,
+        }
+    }
+
     /// Pixels per world unit: scale·2^zoom·cam_zoom.
     pub fn ppu(&self) -> f64 {
         self.scale * self.zoom.exp2() * self.cam_zoom

@@ -43,8 +43,10 @@ pub struct OutputFormat {
 }
 
 /// Per-pixel tone mapping constants.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct ToneMap {
+    /// Colour curves, when the flame has any other than the identity.
+    pub curves: Option<std::sync::Arc<crate::flame::curves::CurveLut>>,
     pub g: f64,
     pub threshold: f64,
     pub vibrancy: f64,
@@ -60,6 +62,7 @@ impl ToneMap {
         let g = 1.0 / flame.gamma;
         let t = flame.gamma_threshold;
         ToneMap {
+            curves: (!flame.curves.is_identity()).then(|| std::sync::Arc::new(flame.curves.lut())),
             g,
             threshold: t,
             vibrancy: flame.vibrancy,
@@ -112,6 +115,9 @@ impl ToneMap {
                 v /= alpha;
             } else {
                 v = 0.0;
+            }
+            if let Some(c) = &self.curves {
+                v = 256.0 * c.apply(v / 256.0, k);
             }
             out[k] = v.clamp(0.0, 255.0);
         }

@@ -11,10 +11,11 @@ use std::path::PathBuf;
 
 use quick_xml::events::Event;
 
+use crate::flame::curves::{self, Curves};
 use crate::flame::model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
 use crate::flame::symmetry::add_symmetry;
 use crate::flame::variations::{self, Form};
-use crate::gradient::{Gradient, hue_rotate};
+use crate::gradient::{Gradient, hue_rotate, resample_colors};
 use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, fmt_num, parse_int, parse_number};
 use crate::io::palettes::{self, PaletteLibrary, decode_hex_colors};
 use crate::io::xml::{Attr, XmlCursor, escape_attr, scan_attrs};
@@ -25,6 +26,8 @@ pub const FLA_FORMAT: u32 = 1;
 pub const MAX_FLAMES: usize = 10_000;
 /// Xforms per flame (sanity limit).
 pub const MAX_XFORMS: usize = 10_000;
+/// Most colours in one `<palette>` (Fractorium writes up to a few thousand).
+pub const MAX_PALETTE: i64 = 65_536;
 /// Largest image side accepted from a file.
 pub const MAX_SIDE: i64 = 1_000_000;
 
@@ -327,6 +330,8 @@ fn root_attrs(cx: &mut Ctx, attrs: &[Attr], out: &mut FlameFile) -> R<()> {
 struct PaletteData {
     colors: Vec<Option<[f64; 4]>>,
     any: bool,
+    /// A `<palette>` of more than 256 colours.
+    hires: Option<Vec<[f64; 4]>>,
 }
 
 fn read_flame(
@@ -426,6 +431,42 @@ fn read_flame(
             "cam_zpos" => f.cam.zpos = cx.num(a)?,
             "cam_dof" => f.cam.dof = cx.num(a)?,
             "blur_curve" => f.cam.blur_curve = cx.num(a)?,
+            "curves" => {
+                // Fractorium's older form: four curves of four (x, y, weight) points.
+                let v = cx.nums(a, "XML003")?;
+                if v.len() != 48 {
+                    return Err(cx.err(
+                        a.offset,
+                        "XML003",
+                        format!("curves must hold 48 numbers (4 curves of 4 x y weight points), found {}", v.len()),
+                    ));
+                }
+                for (ci, c) in v.chunks(12).enumerate() {
+                    let pts = c.chunks(3).map(|p| [p[0], p[1]]).collect();
+                    f.curves.points[ci] = Curves::normalised(pts);
+                }
+            }
+            "overall_curve" | "red_curve" | "green_curve" | "blue_curve" => {
+                let v = cx.nums(a, "XML003")?;
+                if v.len() % 2 != 0 || v.len() < 4 || v.len() > 2 * curves::MAX_POINTS {
+                    return Err(cx.err(
+                        a.offset,
+                        "XML003",
+                        format!(
+                            "{} must hold 2 to {} x y pairs, found {} numbers",
+                            a.name,
+                            curves::MAX_POINTS,
+                            v.len()
+                        ),
+                    ));
+                }
+                let ci = ["overall_curve", "red_curve", "green_curve", "blue_curve"]
+                    .iter()
+                    .position(|n| *n == a.name)
+                    .unwrap_or(0);
+                f.curves.points[ci] =
+                    Curves::normalised(v.chunks(2).map(|p| [p[0], p[1]]).collect());
+            }
             "supersample" | "oversample" => {
                 let n = cx.int(a)?;
                 if !(1..=16).contains(&n) {
@@ -558,6 +599,8 @@ fn read_flame(
                         "FLA005",
                         format!("unknown attribute '{other}' kept"),
                     );
+                } else if !cx.ignored_attrs.iter().any(|n| n == other) {
+                    cx.ignored_attrs.push(other.to_string());
                 }
                 f.extra_attrs.push((other.to_string(), v.to_string()));
             }
@@ -585,6 +628,7 @@ fn read_flame(
     let mut pal = PaletteData {
         colors: vec![None; 256],
         any: false,
+        hires: None,
     };
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
@@ -601,10 +645,14 @@ fn read_flame(
         }
         f.palette = Gradient {
             name: gradient_name,
-            colors: interpolate_missing(&pal.colors),
+            colors: match &pal.hires {
+                Some(h) => resample_colors(h, 256),
+                None => interpolate_missing(&pal.colors),
+            },
             stops: Vec::new(),
             map_entries: None,
         };
+        f.palette_hires = pal.hires.take();
     } else if let Some((n, off)) = library_palette {
         let lib = cx.library();
         let g = match lib {
@@ -982,11 +1030,11 @@ fn read_palette(
     let count = match get("count") {
         Some(a) => {
             let n = cx.int(a)?;
-            if !(1..=256).contains(&n) {
+            if !(1..=MAX_PALETTE).contains(&n) {
                 return Err(cx.err(
                     a.offset,
                     "XML010",
-                    format!("palette count {n} is outside 1..256"),
+                    format!("palette count {n} is outside 1..{MAX_PALETTE}"),
                 ));
             }
             n as usize
@@ -1025,14 +1073,28 @@ fn read_palette(
             ),
         ));
     }
-    for (i, c) in cols.iter().enumerate() {
-        let a = if dpc == 8 { c[3] as f64 / 255.0 } else { 1.0 };
-        pal.colors[i] = Some([
-            c[0] as f64 / 255.0,
-            c[1] as f64 / 255.0,
-            c[2] as f64 / 255.0,
-            a,
-        ]);
+    let rgba: Vec<[f64; 4]> = cols
+        .iter()
+        .map(|c| {
+            let a = if dpc == 8 { c[3] as f64 / 255.0 } else { 1.0 };
+            [
+                c[0] as f64 / 255.0,
+                c[1] as f64 / 255.0,
+                c[2] as f64 / 255.0,
+                a,
+            ]
+        })
+        .collect();
+    if rgba.len() > 256 {
+        // Kept whole for rendering; the editor's 256-entry gradient is its resampling.
+        for (i, c) in resample_colors(&rgba, 256).into_iter().enumerate() {
+            pal.colors[i] = Some(c);
+        }
+        pal.hires = Some(rgba);
+    } else {
+        for (i, c) in rgba.into_iter().enumerate() {
+            pal.colors[i] = Some(c);
+        }
     }
     pal.any = true;
     Ok(())
@@ -1167,10 +1229,20 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    // JWildfire writes NAME_fx_priority beside every variation it writes.
-                    let marked = attrs
-                        .iter()
-                        .any(|b| b.name.strip_suffix("_fx_priority") == Some(name));
+                    // JWildfire writes NAME_fx_priority beside every variation it writes;
+                    // in other programs' files a variation is followed by its NAME_parameters.
+                    let jwildfire = attrs.iter().any(|b| b.name.ends_with("_fx_priority"));
+                    let marked = if jwildfire {
+                        attrs
+                            .iter()
+                            .any(|b| b.name.strip_suffix("_fx_priority") == Some(name))
+                    } else {
+                        attrs.iter().any(|b| {
+                            b.name
+                                .strip_prefix(name)
+                                .is_some_and(|r| r.len() > 1 && r.starts_with('_'))
+                        })
+                    };
                     if numeric && (marked || variations::is_foreign_variation_name(name)) {
                         if cx.reported_vars.insert(name.to_string()) {
                             cx.warn(
@@ -1327,6 +1399,18 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     if let Some(solo) = f.solo_xform {
         let _ = write!(s, " soloxform=\"{solo}\"");
     }
+    if !f.curves.is_identity() {
+        for (ci, name) in ["overall_curve", "red_curve", "green_curve", "blue_curve"]
+            .iter()
+            .enumerate()
+        {
+            let v: Vec<String> = f.curves.points[ci]
+                .iter()
+                .flat_map(|p| [n(p[0]), n(p[1])])
+                .collect();
+            let _ = write!(s, " {name}=\"{}\"", v.join(" "));
+        }
+    }
     if f.cam_zoom != 1.0 {
         let _ = write!(s, " cam_zoom=\"{}\"", n(f.cam_zoom));
     }
@@ -1356,7 +1440,7 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     if let Some(fx) = &f.final_xform {
         write_xform(s, fx, "finalxform", &inner);
     }
-    write_palette(s, &f.palette, &inner);
+    write_palette(s, f.render_colors(), &inner);
     for c in &f.extra_children {
         let _ = writeln!(s, "{inner}{}", c.trim());
     }
@@ -1439,15 +1523,15 @@ fn to8(v: f64) -> u8 {
     (v.clamp(0.0, 1.0) * 255.0).round() as u8
 }
 
-fn write_palette(s: &mut String, g: &Gradient, ind: &str) {
-    let rgba = !g.is_opaque();
+fn write_palette(s: &mut String, colors: &[[f64; 4]], ind: &str) {
+    let rgba = colors.iter().any(|c| c[3] < 1.0);
     let fmt = if rgba { "RGBA" } else { "RGB" };
     let _ = writeln!(
         s,
         "{ind}<palette count=\"{}\" format=\"{fmt}\">",
-        g.colors.len()
+        colors.len()
     );
-    for line in g.colors.chunks(8) {
+    for line in colors.chunks(8) {
         s.push_str(ind);
         s.push_str("   ");
         for c in line {
@@ -1483,6 +1567,93 @@ mod tests {
   <edit date="today"><edit nick="x"/></edit>
 </flame>
 </flames>"#;
+
+    /// A flame of other programs: 3-D camera, a 512-colour palette, pre_/post_ forms, JWildfire
+    /// priorities, Apophysis' mobius names, attributes ugnis does not interpret.
+    const FOREIGN: &str = r#"<flame name="f" size="64 48" scale="20" cam_pitch="1.0471975511966" cam_yaw="0.25" cam_perspective="0.3" cam_zpos="0.5" cam_dof="0.2" cam_zoom="2" overall_curve="0 0 0.5 0.7 1 1" mod_contrast="1" material="0">
+  <xform weight="1" color="0" pre_blur="0.1" spherical3D="0.5" post_curl="0.7" post_curl_c1="0.3" Mobius="0.2" Re_A="2" Im_D="0.5" starblur="0.4" starblur_fx_priority="-1" starblur_power="6" mirror_pre_post_translations="0" xyCoeff00Curve_enabled="false" coefs="1 0 0 1 0 0"/>
+  <palette count="512" format="RGB">PALETTE</palette>
+</flame>"#;
+
+    fn foreign() -> String {
+        let mut data = String::new();
+        for i in 0..512 {
+            data.push_str(&format!("{:02X}00{:02X}", i / 2, 255 - i / 2));
+        }
+        FOREIGN.replace("PALETTE", &data)
+    }
+
+    #[test]
+    fn reads_flames_of_other_programs() {
+        let p = read(&foreign(), &opts()).unwrap();
+        let f = &p.value.flames[0];
+        assert!((f.cam.pitch - std::f64::consts::FRAC_PI_3).abs() < 1e-12);
+        assert_eq!(
+            (f.cam.yaw, f.cam.perspective, f.cam.zpos, f.cam.dof),
+            (0.25, 0.3, 0.5, 0.2)
+        );
+        assert_eq!(f.cam_zoom, 2.0);
+        assert_eq!(f.ppu(), 40.0);
+        assert_eq!(f.curves.points[0], vec![[0.0, 0.0], [0.5, 0.7], [1.0, 1.0]]);
+        assert!(f.curves.points[1..].iter().all(|c| c.len() == 5));
+        let x = &f.xforms[0];
+        let form = |name: &str| {
+            let (id, form) = variations::parse_name(name).unwrap();
+            x.vars
+                .iter()
+                .find(|v| v.id == id && v.form == form)
+                .unwrap_or_else(|| panic!("{name} missing"))
+        };
+        assert_eq!(form("pre_blur").weight, 0.1);
+        assert_eq!(form("spherical3D").weight, 0.5);
+        let curl = form("post_curl");
+        assert_eq!((curl.weight, curl.params[0]), (0.7, 0.3));
+        let mobius = form("mobius");
+        assert_eq!(mobius.param("mobius_re_a"), Some(2.0));
+        assert_eq!(mobius.param("mobius_im_d"), Some(0.5));
+        // JWildfire's priority −1: used before the other variations.
+        assert_eq!(form("pre_starblur").weight, 0.4);
+        assert_eq!(form("pre_starblur").param("starblur_power"), Some(6.0));
+        // Attributes of other programs: kept, reported once, never as variations.
+        let codes: Vec<&str> = p.warnings.iter().map(|w| w.code).collect();
+        assert_eq!(codes, vec!["XML021"], "{:?}", p.warnings);
+        assert!(p.warnings[0].to_string().contains("mod_contrast"));
+        // The 512 colours render as they are; the editor sees 256.
+        assert_eq!(f.render_colors().len(), 512);
+        assert_eq!(f.palette.colors.len(), 256);
+        assert_eq!(
+            crate::flame::histogram::PlotPalette::new(f).colors.len(),
+            512
+        );
+    }
+
+    #[test]
+    fn flames_of_other_programs_round_trip() {
+        let f = read(&foreign(), &opts()).unwrap().value.flames[0].clone();
+        let text = flame_element(&f);
+        assert!(text.contains("<palette count=\"512\""), "{text}");
+        for attr in [
+            "cam_pitch=\"1.0471975511966\"",
+            "cam_zoom=\"2\"",
+            "pre_blur=\"0.1\"",
+            "post_curl_c1=\"0.3\"",
+            "mod_contrast=\"1\"",
+            "xyCoeff00Curve_enabled=\"false\"",
+        ] {
+            assert!(text.contains(attr), "{attr} missing in {text}");
+        }
+        let back = read(&text, &opts()).unwrap().value.flames[0].clone();
+        assert_eq!(back.cam, f.cam);
+        assert_eq!(back.cam_zoom, f.cam_zoom);
+        assert_eq!(back.curves, f.curves);
+        assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
+        assert_eq!(back.render_colors(), f.render_colors());
+        // An edited gradient replaces the file's 512 colours.
+        let mut edited = f.clone();
+        edited.palette.colors[0] = [1.0, 1.0, 1.0, 1.0];
+        assert_eq!(edited.render_colors().len(), 256);
+        assert!(flame_element(&edited).contains("<palette count=\"256\""));
+    }
 
     #[test]
     fn reads_attributes_and_palette() {

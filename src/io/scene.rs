@@ -2,6 +2,8 @@
 //! a textured Bézier scene. Paths inside are relative to the scene file. Codes SCN001–SCN005.
 //!
 //! ```toml
+//! render = "raycast"      # optional: "zbuffer" (default) or "raycast"
+//! shadows = true          # ray casting only
 //! [image]
 //! size = [640, 480]
 //! [camera]
@@ -28,11 +30,15 @@ use toml::Spanned;
 
 use super::diag::{Diagnostic, Pos, SourceMap};
 use crate::noise::Fbm;
+use crate::surface::menger;
 use crate::surface::mesh::{self, SurfacePatch, TexMap};
 use crate::surface::patch::Patch;
 use crate::surface::texture::{self, MrfParams, Texture};
 use crate::surface::transform::{self, Transform};
-use crate::surface::{Camera, Geometry, Light, Material, Object, Projection, Scene};
+use crate::surface::{
+    Camera, Geometry, Light, Material, Object, Projection, QuaternionJulia, Renderer, Scene,
+    SliceAxis,
+};
 
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
@@ -163,11 +169,23 @@ struct ObjectSpec {
     sigma: Option<f64>,
     h: Option<f64>,
     seed: Option<u64>,
+    /// quaternion_julia: c = [c₀, c₁, c₂, c₃] (or [re, im]), the fixed component and its
+    /// value, iterations.
+    c: Option<Vec<f64>>,
+    slice: Option<String>,
+    slice_value: Option<f64>,
+    iterations: Option<u32>,
+    /// menger: construction step.
+    step: Option<u32>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct SceneSpec {
+    /// "zbuffer" (default) or "raycast".
+    render: Option<Spanned<String>>,
+    /// Shadow rays (ray casting only; default on).
+    shadows: Option<Spanned<bool>>,
     image: Option<ImageSpec>,
     camera: Option<CameraSpec>,
     lighting: Option<LightingSpec>,
@@ -180,6 +198,8 @@ struct SceneSpec {
 pub struct LoadedScene {
     pub scene: Scene,
     pub texture_names: Vec<String>,
+    /// One line per generated object worth describing (e.g. a Menger sponge's numbers).
+    pub notes: Vec<String>,
 }
 
 fn v3(a: [f64; 3]) -> DVec3 {
@@ -412,9 +432,55 @@ fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
             o.h.unwrap_or(0.8),
             o.seed.unwrap_or(1),
         )),
+        "menger" => {
+            let step = o.step.unwrap_or(3);
+            if step > menger::MAX_STEP {
+                return Err(format!(
+                    "step {step} is too deep: expected 0 to {} (step {} has {} cubes)",
+                    menger::MAX_STEP,
+                    menger::MAX_STEP,
+                    menger::numbers(menger::MAX_STEP).cubes
+                ));
+            }
+            let size = o.size.unwrap_or(2.0);
+            if !(size > 0.0 && size <= 1e6) {
+                return Err(format!("size {size} must be between 0 and 1e6"));
+            }
+            Geometry::Mesh(menger::mesh(step, size))
+        }
+        "quaternion_julia" | "qjulia" => {
+            let d = QuaternionJulia::default();
+            let c = match o.c.as_deref() {
+                None => d.c,
+                Some([re, im]) => [*re, *im, 0.0, 0.0],
+                Some([a, b, c, e]) => [*a, *b, *c, *e],
+                Some(v) => {
+                    return Err(format!(
+                        "c has {} numbers: expected [c0, c1, c2, c3] (or [re, im])",
+                        v.len()
+                    ));
+                }
+            };
+            let slice = match o.slice.as_deref() {
+                None => d.slice,
+                Some(n) => SliceAxis::from_name(n).ok_or_else(|| {
+                    format!(
+                        "slice '{n}': expected the fixed component \"1\", \"i\", \"j\" or \"k\""
+                    )
+                })?,
+            };
+            let j = QuaternionJulia {
+                c,
+                slice,
+                slice_value: o.slice_value.unwrap_or(d.slice_value),
+                iterations: o.iterations.unwrap_or(d.iterations),
+            };
+            j.validate()?;
+            Geometry::QuaternionJulia(j)
+        }
         other => {
             return Err(format!(
-                "unknown object kind '{other}': expected jug, teapot, revolve, tube, bezier, bilinear or mountain"
+                "unknown object kind '{other}': expected jug, teapot, revolve, tube, bezier, bilinear, mountain, menger or quaternion_julia"
             ));
         }
     })
@@ -489,6 +555,31 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
         ));
     }
     let mut scene = Scene::default();
+    if let Some(r) = &spec.render {
+        scene.renderer = match r.get_ref().as_str() {
+            "zbuffer" | "z-buffer" => Renderer::ZBuffer,
+            "raycast" | "ray-cast" => Renderer::RayCast,
+            o => {
+                return Err(Diagnostic::error(
+                    name,
+                    at(Some(r.span())),
+                    "SCN002",
+                    format!("render = '{o}': expected \"zbuffer\" or \"raycast\""),
+                ));
+            }
+        };
+    }
+    if let Some(sh) = &spec.shadows {
+        if *sh.get_ref() && scene.renderer != Renderer::RayCast {
+            return Err(Diagnostic::error(
+                name,
+                at(Some(sh.span())),
+                "SCN002",
+                "shadows = true needs render = \"raycast\" (the z-buffer renderer casts no shadows)",
+            ));
+        }
+        scene.shadows = *sh.get_ref();
+    }
     let img = spec.image.unwrap_or_default();
     if let Some([w, h]) = img.size {
         if w == 0 || h == 0 || w > 16384 || h > 16384 {
@@ -589,6 +680,7 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
         scene.textures.push(tex);
         texture_names.push(t.name);
     }
+    let mut notes = Vec::new();
     for (k, o) in spec.object.unwrap_or_default().into_iter().enumerate() {
         let pos = at(Some(o.span()));
         let o = o.into_inner();
@@ -625,6 +717,13 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
             two_sided: m.and_then(|m| m.two_sided).unwrap_or(dm.two_sided),
             bump: m.and_then(|m| m.bump).unwrap_or(0.0),
         };
+        if o.kind == "menger" {
+            let k = menger::numbers(o.step.unwrap_or(3).min(menger::MAX_STEP));
+            notes.push(format!(
+                "{label}: Menger sponge step {}: {} cubes of side 3^-{} = {:.6}, volume {:.6}, area {:.6} (unit cube), dimension ln 20/ln 3 = {:.5}",
+                k.step, k.cubes, k.step, k.side, k.volume, k.area, k.dimension
+            ));
+        }
         scene.objects.push(Object {
             name: label.clone(),
             geometry: make_geometry(&o).map_err(err)?,
@@ -637,6 +736,7 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
     Ok(LoadedScene {
         scene,
         texture_names,
+        notes,
     })
 }
 
@@ -702,6 +802,64 @@ texture = "cells"
     }
 
     #[test]
+    fn parses_ray_casting_menger_and_quaternion_julia() {
+        let text = r#"
+render = "raycast"
+shadows = false
+[[object]]
+kind = "menger"
+step = 2
+size = 3
+[[object]]
+kind = "quaternion_julia"
+c = [-0.2, 0.8, 0.1, 0.0]
+slice = "j"
+slice_value = 0.25
+iterations = 9
+[[object]]
+kind = "qjulia"
+c = [-1, 0.2]
+"#;
+        let s = parse(text, "t.toml", Path::new(".")).unwrap().scene;
+        assert_eq!(s.renderer, Renderer::RayCast);
+        assert!(!s.shadows);
+        let Geometry::Mesh(m) = &s.objects[0].geometry else {
+            panic!("menger is a mesh")
+        };
+        // Edge 3: the corners lie at ±1.5.
+        let max = m
+            .positions
+            .iter()
+            .map(|p| p.abs().max_element())
+            .fold(0.0, f64::max);
+        assert_eq!(max, 1.5);
+        let Geometry::QuaternionJulia(j) = &s.objects[1].geometry else {
+            panic!("quaternion julia")
+        };
+        assert_eq!(j.c, [-0.2, 0.8, 0.1, 0.0]);
+        assert_eq!(
+            (j.slice, j.slice_value, j.iterations),
+            (SliceAxis::J, 0.25, 9)
+        );
+        let Geometry::QuaternionJulia(j) = &s.objects[2].geometry else {
+            panic!("quaternion julia")
+        };
+        assert_eq!(j.c, [-1.0, 0.2, 0.0, 0.0]);
+        // Defaults: the z-buffer, shadows on for when ray casting is chosen.
+        let d = parse("", "d.toml", Path::new(".")).unwrap().scene;
+        assert_eq!((d.renderer, d.shadows), (Renderer::ZBuffer, true));
+        // A bad render value points at its line.
+        let e = parse("\nrender = 3\n", "s.toml", Path::new("."))
+            .err()
+            .unwrap();
+        assert_eq!(e.code, "SCN001");
+        let e = parse("\n\nrender = \"x\"\n", "s.toml", Path::new("."))
+            .err()
+            .unwrap();
+        assert_eq!(e.pos, Pos::LineCol(3, 10), "{e}");
+    }
+
+    #[test]
     fn bad_scenes_say_where_and_what() {
         for (text, code, want) in [
             ("[image]\nsize = [0, 10]\n", "SCN002", "size"),
@@ -738,6 +896,42 @@ texture = "cells"
                 "'nan'",
             ),
             ("[image]\nsizes = [10, 10]\n", "SCN001", "sizes"),
+            (
+                "render = \"pathtrace\"\n",
+                "SCN002",
+                "expected \"zbuffer\" or \"raycast\"",
+            ),
+            ("shadows = true\n", "SCN002", "needs render = \"raycast\""),
+            (
+                "[[object]]\nkind = \"menger\"\nstep = 5\n",
+                "SCN005",
+                "step 5 is too deep: expected 0 to 4",
+            ),
+            (
+                "[[object]]\nkind = \"menger\"\nsize = -1\n",
+                "SCN005",
+                "size -1",
+            ),
+            (
+                "[[object]]\nkind = \"quaternion_julia\"\nc = [1, 2, 3]\n",
+                "SCN005",
+                "c has 3 numbers",
+            ),
+            (
+                "[[object]]\nkind = \"qjulia\"\niterations = 0\n",
+                "SCN005",
+                "iterations 0 must be between 1 and 200",
+            ),
+            (
+                "[[object]]\nkind = \"qjulia\"\nslice = \"w\"\n",
+                "SCN005",
+                "slice 'w'",
+            ),
+            (
+                "[[object]]\nkind = \"qjulia\"\nc = [9, 0]\n",
+                "SCN005",
+                "|c| = 9",
+            ),
         ] {
             let e = parse(text, "s.toml", Path::new("/nonexistent"))
                 .err()

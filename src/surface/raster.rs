@@ -9,8 +9,9 @@ use glam::{DVec3, Vec3};
 use image::RgbImage;
 use rayon::prelude::*;
 
+use super::mesh::SurfacePatch;
 use super::mesh::{Mesh, projected_extent, resolution_for, tessellate};
-use super::scene::{Geometry, Projection, Scene, illuminate};
+use super::scene::{Geometry, Object, Projection, Scene, illuminate_visible};
 use super::transform::Transform;
 
 /// Attribute interpolated perspective-correctly: a/w and 1/w are affine in screen space.
@@ -32,22 +33,26 @@ pub fn bump_normal(qs: DVec3, qt: DVec3, ps: f64, pt: f64) -> DVec3 {
 
 /// How one eye sees: world → view transform, projection and screen placement.
 #[derive(Clone, Copy, Debug)]
-struct Eye {
-    view: Transform,
+pub(crate) struct Eye {
+    pub(crate) view: Transform,
+    /// View → world (for rays).
+    pub(crate) world_from_view: Transform,
     /// Horizontal shift of view space (stereo).
-    dx: f64,
+    pub(crate) dx: f64,
     /// Perspective distance k (None: parallel projection).
-    k: Option<f64>,
-    cx: f64,
-    cy: f64,
-    scale: f64,
+    pub(crate) k: Option<f64>,
+    pub(crate) cx: f64,
+    pub(crate) cy: f64,
+    pub(crate) scale: f64,
     /// Eye position in world space (lighting).
-    pos: DVec3,
+    pub(crate) pos: DVec3,
+    /// View-space z where parallel rays start (in front of everything).
+    pub(crate) ray_z: f64,
 }
 
 impl Eye {
     /// View-space point → (x, y, z, w).
-    fn clip(&self, p: DVec3) -> [f64; 4] {
+    pub(crate) fn clip(&self, p: DVec3) -> [f64; 4] {
         let v = self.view.apply(p);
         let w = match self.k {
             Some(k) => 1.0 - v.z / k,
@@ -56,12 +61,39 @@ impl Eye {
         [v.x + self.dx, v.y, v.z, w]
     }
 
-    fn screen(&self, c: [f64; 4]) -> [f64; 3] {
+    pub(crate) fn screen(&self, c: [f64; 4]) -> [f64; 3] {
         [
             self.cx + self.scale * c[0] / c[3],
             self.cy - self.scale * c[1] / c[3],
             c[2] / c[3],
         ]
+    }
+
+    /// The ray through screen point (px, py) in world space: origin, unit direction and the
+    /// smallest t the z-buffer would draw (its near plane w ≥ 1e-3).
+    pub(crate) fn ray(&self, px: f64, py: f64) -> (DVec3, DVec3, f64) {
+        let sx = (px - self.cx) / self.scale;
+        let sy = (self.cy - py) / self.scale;
+        // Perspective: x* = (x + dx)/w with w = 1 − z/k, so the points of the pixel are
+        // (−dx, 0, k) + λ·(sx, sy, −k) for λ = w > 0.
+        let (o, d) = match self.k {
+            Some(k) => (DVec3::new(-self.dx, 0.0, k), DVec3::new(sx, sy, -k)),
+            None => (DVec3::new(sx - self.dx, sy, self.ray_z), DVec3::NEG_Z),
+        };
+        let len = d.length();
+        let t_min = if self.k.is_some() { 1e-3 * len } else { 0.0 };
+        let ow = self.world_from_view.apply(o);
+        let dw = self.world_from_view.apply_dir(d / len);
+        let dl = dw.length();
+        (ow, dw / dl, t_min * dl)
+    }
+
+    /// World-space size of one pixel at distance t along a ray (perspective grows with t).
+    pub(crate) fn pixel_size(&self, t: f64) -> f64 {
+        match self.k {
+            Some(k) => t / (self.scale * k),
+            None => 1.0 / self.scale,
+        }
     }
 }
 
@@ -174,19 +206,91 @@ fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
         .par_iter()
         .map(|o| match &o.geometry {
             Geometry::Patches(p) => {
-                let to_screen = |q: DVec3| {
-                    let c = eye.clip(o.transform.apply(q));
-                    (c[3] > 1e-3).then(|| {
-                        let s = eye.screen(c);
-                        [s[0], s[1]]
-                    })
-                };
-                let n = resolution_for(projected_extent(p, to_screen));
+                let n = patch_resolution(o, p, eye);
                 tessellate(p, n).transformed(&o.transform)
             }
             Geometry::Mesh(m) => m.transformed(&o.transform),
+            // Ray-marched per pixel instead.
+            Geometry::QuaternionJulia(_) => Mesh::default(),
         })
         .collect()
+}
+
+/// Tessellation grid of an object's patches for one eye: about 6 pixels per cell.
+pub(crate) fn patch_resolution(o: &Object, p: &[SurfacePatch], eye: &Eye) -> usize {
+    let to_screen = |q: DVec3| {
+        let c = eye.clip(o.transform.apply(q));
+        (c[3] > 1e-3).then(|| {
+            let s = eye.screen(c);
+            [s[0], s[1]]
+        })
+    };
+    resolution_for(projected_extent(p, to_screen))
+}
+
+/// A visible surface point, ready for shading (both renderers).
+pub(crate) struct SurfacePoint {
+    pub(crate) object: usize,
+    pub(crate) pos: DVec3,
+    pub(crate) normal: DVec3,
+    pub(crate) st: [f64; 2],
+    /// Largest change of (s, t) per pixel (mipmap level).
+    pub(crate) footprint: f32,
+    /// Texture tangents ∂P/∂s and ∂P/∂t (zero: no bump mapping).
+    pub(crate) ts: DVec3,
+    pub(crate) tt: DVec3,
+}
+
+/// Texture, Blinn bump mapping and the lighting model at one surface point; `visible(j)`
+/// says whether light j reaches it (shadows).
+pub(crate) fn shade(
+    scene: &Scene,
+    eye_pos: DVec3,
+    p: &SurfacePoint,
+    visible: &dyn Fn(usize) -> bool,
+) -> Vec3 {
+    let obj = &scene.objects[p.object];
+    let st = p.st;
+    let mut normal = p.normal;
+    let tex = obj
+        .texture
+        .and_then(|i| scene.textures.get(i))
+        .map_or(Vec3::ONE, |tx| {
+            tx.sample(st[0] as f32, st[1] as f32, p.footprint)
+        });
+    if obj.material.bump != 0.0
+        && let Some(bt) = obj
+            .bump_texture
+            .or(obj.texture)
+            .and_then(|i| scene.textures.get(i))
+    {
+        let (ds, dt) = bt.texel_step();
+        let (s0, t0) = (st[0] as f32, st[1] as f32);
+        let ps = (bt.height(s0 + ds, t0) - bt.height(s0 - ds, t0)) as f64 / (2.0 * ds as f64);
+        let pt = (bt.height(s0, t0 + dt) - bt.height(s0, t0 - dt)) as f64 / (2.0 * dt as f64);
+        let (qs, qt) = (p.ts, p.tt);
+        let mut nb = bump_normal(qs, qt, ps * obj.material.bump, pt * obj.material.bump);
+        let n0 = qs.cross(qt);
+        if n0.dot(normal) < 0.0 {
+            // The tangent frame is left-handed relative to the shading normal.
+            nb = -bump_normal(qt, qs, pt * obj.material.bump, ps * obj.material.bump);
+        }
+        if nb.length_squared() > 0.0 {
+            normal = nb;
+        }
+    }
+    illuminate_visible(
+        &obj.material,
+        tex,
+        normal,
+        p.pos,
+        eye_pos,
+        &scene.lights,
+        scene.ambient,
+        scene.attenuation_k,
+        scene.blinn,
+        visible,
+    )
 }
 
 const BAND: usize = 16;
@@ -315,6 +419,12 @@ fn render_eye(
             bin.push(i as u32);
         }
     }
+    let implicit = super::raycast::implicit_objects(scene);
+    let mut eye = *eye;
+    if !implicit.is_empty() {
+        eye.place_ray_start(scene);
+    }
+    let eye = &eye;
     let mut color = vec![scene.background; w * h];
     let stopped = AtomicBool::new(false);
     color
@@ -372,8 +482,39 @@ fn render_eye(
                     }
                 }
             }
+            // Quaternion Julia objects: ray-marched per pixel, kept where nearer.
+            let mut marched: Vec<(u32, f64)> = Vec::new();
+            if !implicit.is_empty() {
+                marched = vec![(u32::MAX, 0.0); w * rows];
+                for r in 0..rows {
+                    let py = (y_base + r) as f64 + 0.5;
+                    for x in 0..w {
+                        let (o, d, t_min) = eye.ray(x as f64 + 0.5, py);
+                        let k = r * w + x;
+                        for (ii, im) in implicit.iter().enumerate() {
+                            let Some(t) = im.hit(o, d, t_min, f64::INFINITY, eye) else {
+                                continue;
+                            };
+                            let c = eye.clip(o + d * t);
+                            let z = c[2] / c[3];
+                            if z > depth[k] {
+                                depth[k] = z;
+                                hit[k].0 = u32::MAX;
+                                marched[k] = (ii as u32, t);
+                            }
+                        }
+                    }
+                }
+            }
             // Shading pass: each visible pixel once.
             for (k, &(ti, b1, b2)) in hit.iter().enumerate() {
+                if let Some(&(ii, t)) = marched.get(k).filter(|m| m.0 != u32::MAX) {
+                    let (x, r) = (k % w, k / w);
+                    let (o, d, _) = eye.ray(x as f64 + 0.5, (y_base + r) as f64 + 0.5);
+                    let (p, _) = implicit[ii as usize].surface_point(o, d, t, eye);
+                    out[k] = shade(scene, eye.pos, &p, &|_| true);
+                    continue;
+                }
                 if ti == u32::MAX {
                     continue;
                 }
@@ -388,53 +529,21 @@ fn render_eye(
                     f(v[0]) * wt[0] + f(v[1]) * wt[1] + f(v[2]) * wt[2]
                 };
                 let pos = mix3(&|v| v.pos);
-                let mut normal = mix3(&|v| v.normal);
+                let normal = mix3(&|v| v.normal);
                 let st = [
                     v[0].tex[0] * wt[0] + v[1].tex[0] * wt[1] + v[2].tex[0] * wt[2],
                     v[0].tex[1] * wt[0] + v[1].tex[1] * wt[1] + v[2].tex[1] * wt[2],
                 ];
-                let obj = &scene.objects[t.object as usize];
-                let tex = obj
-                    .texture
-                    .and_then(|i| scene.textures.get(i))
-                    .map_or(Vec3::ONE, |tx| {
-                        tx.sample(st[0] as f32, st[1] as f32, t.footprint)
-                    });
-                if obj.material.bump != 0.0
-                    && let Some(bt) = obj
-                        .bump_texture
-                        .or(obj.texture)
-                        .and_then(|i| scene.textures.get(i))
-                {
-                    let (ds, dt) = bt.texel_step();
-                    let (s0, t0) = (st[0] as f32, st[1] as f32);
-                    let ps = (bt.height(s0 + ds, t0) - bt.height(s0 - ds, t0)) as f64
-                        / (2.0 * ds as f64);
-                    let pt = (bt.height(s0, t0 + dt) - bt.height(s0, t0 - dt)) as f64
-                        / (2.0 * dt as f64);
-                    let (qs, qt) = (mix3(&|v| v.ts), mix3(&|v| v.tt));
-                    let mut nb =
-                        bump_normal(qs, qt, ps * obj.material.bump, pt * obj.material.bump);
-                    let n0 = qs.cross(qt);
-                    if n0.dot(normal) < 0.0 {
-                        // The tangent frame is left-handed relative to the shading normal.
-                        nb = -bump_normal(qt, qs, pt * obj.material.bump, ps * obj.material.bump);
-                    }
-                    if nb.length_squared() > 0.0 {
-                        normal = nb;
-                    }
-                }
-                out[k] = illuminate(
-                    &obj.material,
-                    tex,
-                    normal,
+                let p = SurfacePoint {
+                    object: t.object as usize,
                     pos,
-                    eye.pos,
-                    &scene.lights,
-                    scene.ambient,
-                    scene.attenuation_k,
-                    scene.blinn,
-                );
+                    normal,
+                    st,
+                    footprint: t.footprint,
+                    ts: mix3(&|v| v.ts),
+                    tt: mix3(&|v| v.tt),
+                };
+                out[k] = shade(scene, eye.pos, &p, &|_| true);
             }
         });
     if stopped.load(Ordering::Relaxed) {
@@ -470,7 +579,7 @@ fn footprint(t: &Tri, v: [&Vert; 3], p: [f64; 2]) -> f64 {
     fx.max(fy)
 }
 
-fn eye_for(scene: &Scene, w: usize, h: usize, dx: f64) -> Eye {
+pub(crate) fn eye_for(scene: &Scene, w: usize, h: usize, dx: f64) -> Eye {
     let cam = &scene.camera;
     let scale = cam.scale * h as f64 / 480.0;
     let (view, k) = match cam.projection {
@@ -482,18 +591,38 @@ fn eye_for(scene: &Scene, w: usize, h: usize, dx: f64) -> Eye {
             None,
         ),
     };
+    let world_from_view = view.inverse().unwrap_or(Transform::IDENTITY);
     Eye {
         view,
+        world_from_view,
         dx,
         k,
         cx: w as f64 / 2.0,
         cy: h as f64 / 2.0,
         scale,
         pos: cam.eye(),
+        ray_z: cam.distance,
     }
 }
 
-fn to_image(buf: &[Vec3], w: usize, h: usize, ss: usize) -> RgbImage {
+impl Eye {
+    /// Let parallel rays start in front of every object's bounding sphere (perspective rays
+    /// start at the eye and need nothing).
+    pub(crate) fn place_ray_start(&mut self, scene: &Scene) {
+        if self.k.is_some() {
+            return;
+        }
+        let mut z = scene.camera.distance;
+        for o in &scene.objects {
+            if let Some((c, r)) = super::raycast::world_sphere(o) {
+                z = z.max(self.view.apply(c).z + r);
+            }
+        }
+        self.ray_z = z + 1.0;
+    }
+}
+
+pub(crate) fn to_image(buf: &[Vec3], w: usize, h: usize, ss: usize) -> RgbImage {
     let (ow, oh) = (w / ss, h / ss);
     let mut img = RgbImage::new(ow as u32, oh as u32);
     let n = (ss * ss) as f32;
@@ -516,9 +645,9 @@ fn to_image(buf: &[Vec3], w: usize, h: usize, ss: usize) -> RgbImage {
     img
 }
 
-/// Render the scene (width×height; a stereo pair puts the left eye on the left half).
-/// Returns None when cancelled.
-pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
+/// Render the scene with the z-buffer (width×height; a stereo pair puts the left eye on the
+/// left half). Returns None when cancelled.
+pub fn render_zbuffer(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
     let ss = scene.supersample.clamp(1, 4) as usize;
     let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
     if let Projection::Stereo = scene.camera.projection {
@@ -609,16 +738,16 @@ mod tests {
         let mut b = back;
         b.material.color = Vec3::new(0.0, 1.0, 0.0);
         s.objects.push(b);
-        let img = render(&s, None).unwrap();
+        let img = render_zbuffer(&s, None).unwrap();
         let c = img.get_pixel(32, 24).0;
         // Red diffuse plus a white highlight: red dominates, no green surface shows.
         assert!(c[0] as i32 > c[1] as i32 + 100 && c[1] == c[2], "{c:?}");
         // Reverse the order: same picture (depth, not drawing order, decides).
         s.objects.swap(0, 1);
-        assert_eq!(render(&s, None).unwrap(), img);
+        assert_eq!(render_zbuffer(&s, None).unwrap(), img);
         // The quad's two triangles share a diagonal: no pixel is left out along it (the
         // top-left rule covers each once), so the covered area is one solid rectangle.
-        let single = render(&quad_scene(0.0), None).unwrap();
+        let single = render_zbuffer(&quad_scene(0.0), None).unwrap();
         let lit: Vec<(u32, u32)> = single
             .enumerate_pixels()
             .filter(|(_, _, p)| p.0 != [0, 0, 0])
@@ -640,7 +769,7 @@ mod tests {
         // The quad passes through the eye plane: clipped, no panic, something drawn.
         let mut s = quad_scene(0.0);
         s.objects[0].transform = Transform::rot_x(1.4).then(&Transform::translate(0.0, 0.0, 4.5));
-        let img = render(&s, None).unwrap();
+        let img = render_zbuffer(&s, None).unwrap();
         assert!(img.pixels().any(|p| p.0 != [0, 0, 0]));
     }
 
@@ -649,7 +778,7 @@ mod tests {
         let mut s = quad_scene(0.0);
         s.width = 128;
         s.camera.projection = Projection::Stereo;
-        let img = render(&s, None).unwrap();
+        let img = render_zbuffer(&s, None).unwrap();
         assert_eq!(img.width(), 128);
         let centroid = |x0: u32, x1: u32| {
             let mut sum = 0.0;

@@ -4,6 +4,7 @@
 use glam::{DVec3, Vec3};
 
 use super::mesh::{Mesh, SurfacePatch};
+use super::quaternion::QuaternionJulia;
 use super::texture::Texture;
 use super::transform::Transform;
 
@@ -42,6 +43,19 @@ impl Default for Material {
 pub enum Geometry {
     Patches(Vec<SurfacePatch>),
     Mesh(Mesh),
+    /// A 3-D slice of a quaternion Julia set, ray-marched by both renderers (the z-buffer
+    /// renderer marches it per pixel and compares depths).
+    QuaternionJulia(QuaternionJulia),
+}
+
+/// Which hidden-surface method renders a scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Renderer {
+    /// Catmull's z-buffer over a tessellation (the default).
+    #[default]
+    ZBuffer,
+    /// Ray casting: bounding spheres and boxes, exact patch intersection, shadows.
+    RayCast,
 }
 
 /// One object.
@@ -149,6 +163,9 @@ pub struct Scene {
     pub supersample: u32,
     /// Blinn–Phong (n·H) instead of Phong (R·S) highlights.
     pub blinn: bool,
+    pub renderer: Renderer,
+    /// Cast shadow rays towards each light (ray casting only).
+    pub shadows: bool,
 }
 
 impl Default for Scene {
@@ -168,6 +185,8 @@ impl Default for Scene {
             height: 480,
             supersample: 1,
             blinn: false,
+            renderer: Renderer::ZBuffer,
+            shadows: true,
         }
     }
 }
@@ -186,6 +205,35 @@ pub fn illuminate(
     k: f64,
     blinn: bool,
 ) -> Vec3 {
+    illuminate_visible(
+        m,
+        tex,
+        normal,
+        point,
+        eye,
+        lights,
+        ambient,
+        k,
+        blinn,
+        &|_| true,
+    )
+}
+
+/// `illuminate` with a visibility test per light (shadows): `visible(j)` is asked only for
+/// lights the surface faces, and a light it denies adds nothing (the ambient term stays).
+#[allow(clippy::too_many_arguments)]
+pub fn illuminate_visible(
+    m: &Material,
+    tex: Vec3,
+    normal: DVec3,
+    point: DVec3,
+    eye: DVec3,
+    lights: &[Light],
+    ambient: f64,
+    k: f64,
+    blinn: bool,
+    visible: &dyn Fn(usize) -> bool,
+) -> Vec3 {
     let base = tex * m.color;
     let mut n = normal.normalize_or_zero();
     let s = (eye - point).normalize_or_zero();
@@ -194,10 +242,10 @@ pub fn illuminate(
     }
     let d = (eye - point).length();
     let mut c = base * (ambient * m.ka) as f32;
-    for l in lights {
+    for (j, l) in lights.iter().enumerate() {
         let lv = (l.position - point).normalize_or_zero();
         let ndl = n.dot(lv).max(0.0);
-        if ndl <= 0.0 {
+        if ndl <= 0.0 || !visible(j) {
             continue;
         }
         let spec = if blinn {

@@ -48,6 +48,41 @@ impl Transform {
         )
     }
 
+    /// The inverse matrix (None when singular), e.g. to map rays back into object space.
+    pub fn inverse(&self) -> Option<Transform> {
+        // In glam's column-vector convention this matrix is Tᵀ; (Tᵀ)⁻¹ = (T⁻¹)ᵀ.
+        let m = glam::DMat4::from_cols_array_2d(&self.0);
+        let det = m.determinant();
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        Some(Transform(m.inverse().to_cols_array_2d()))
+    }
+
+    /// Is this an affine map (last column [0 0 0 1]ᵀ)?
+    pub fn is_affine(&self) -> bool {
+        let m = &self.0;
+        m[0][3] == 0.0 && m[1][3] == 0.0 && m[2][3] == 0.0 && m[3][3] == 1.0
+    }
+
+    /// A normal vector through the linear block: the inverse transpose, n′ = n·(L⁻¹)ᵀ in
+    /// the row-vector convention, so that n′ stays perpendicular to transformed tangents.
+    pub fn apply_normal(&self, n: DVec3) -> DVec3 {
+        let m = &self.0;
+        // Column-vector form M = Lᵀ; normals go through (M⁻¹)ᵀ = cofactor(M)/det.
+        let l = glam::DMat3::from_cols_array_2d(&[
+            [m[0][0], m[0][1], m[0][2]],
+            [m[1][0], m[1][1], m[1][2]],
+            [m[2][0], m[2][1], m[2][2]],
+        ]);
+        let det = l.determinant();
+        if det == 0.0 {
+            return n;
+        }
+        // Keep the orientation of Q_u × Q_w under the map (L Q_u) × (L Q_w) = det·(L⁻ᵀ)(Q_u × Q_w).
+        (l.inverse().transpose() * n) * det.signum()
+    }
+
     /// First self, then `next` (self·next).
     pub fn then(&self, next: &Transform) -> Transform {
         let (a, b) = (&self.0, &next.0);

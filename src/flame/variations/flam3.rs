@@ -6,9 +6,9 @@
 //! exactly as flam3 accumulates it (a few variations use the weight non-linearly, e.g. `whorl`,
 //! `loonie`, `lazysusan`, `scry`, `flux`).
 
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, FRAC_PI_4, PI};
 
-use super::util::zeps;
+use super::util::{rand_size, zeps};
 use super::{Acc, EPS, Form, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, flag, need, p, p_range};
 use crate::flame::affine::Affine;
 use crate::flame::fastmath as fm;
@@ -258,13 +258,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<24>),
     VarDef::new("fan2", eval::<25>)
-        .params(&[p("fan2_x", 0.0), p("fan2_y", 0.0)])
+        .params(&[p("fan2_x", FRAC_1_SQRT_2), p("fan2_y", -FRAC_1_SQRT_2)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(zf(25) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<25>),
     VarDef::new("rings2", eval::<26>)
-        .params(&[p("rings2_val", 0.0)])
+        .params(&[p("rings2_val", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
         .flags(zf(26) | flag::FLAM3)
         .prepare(prepare)
@@ -326,7 +326,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("pie", eval::<37>)
         .params(&[
             p("pie_slices", 6.0),
-            p("pie_rotation", 0.0),
+            p("pie_rotation", 0.5),
             p("pie_thickness", 0.5),
         ])
         .needs(need::SUMSQ | need::SQRT)
@@ -489,7 +489,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<62>),
     VarDef::new("escher", eval::<63>)
-        .params(&[p("escher_beta", 0.0)])
+        .params(&[p("escher_beta", 3.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX | need::ATAN_XY)
         .flags(zf(63) | flag::FLAM3)
         .prepare(prepare)
@@ -501,7 +501,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<64>),
     VarDef::new("lazysusan", eval::<65>)
         .params(&[
-            p("lazysusan_spin", 0.0),
+            p("lazysusan_spin", PI),
             p("lazysusan_space", 0.0),
             p("lazysusan_twist", 0.0),
             p("lazysusan_x", 0.0),
@@ -522,7 +522,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<67>),
     VarDef::new("modulus", eval::<68>)
-        .params(&[p("modulus_x", 0.0), p("modulus_y", 0.0)])
+        .params(&[p("modulus_x", 1.0), p("modulus_y", 1.0)])
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(68) | flag::FLAM3)
         .prepare(prepare)
@@ -545,9 +545,9 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<70>),
     VarDef::new("popcorn2", eval::<71>)
         .params(&[
-            p("popcorn2_x", 0.0),
-            p("popcorn2_y", 0.0),
-            p("popcorn2_c", 0.0),
+            p("popcorn2_x", 0.1),
+            p("popcorn2_y", 0.1),
+            p("popcorn2_c", 3.0),
         ])
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(71) | flag::FLAM3)
@@ -560,9 +560,9 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<72>),
     VarDef::new("separation", eval::<73>)
         .params(&[
-            p("separation_x", 0.0),
+            p("separation_x", 1.0),
             p("separation_xinside", 0.0),
-            p("separation_y", 0.0),
+            p("separation_y", 1.0),
             p("separation_yinside", 0.0),
         ])
         .needs(need::SUMSQ | need::SQRT)
@@ -570,7 +570,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<73>),
     VarDef::new("split", eval::<74>)
-        .params(&[p("split_xsize", 0.0), p("split_ysize", 0.0)])
+        .params(&[p("split_xsize", 0.5), p("split_ysize", 0.5)])
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(74) | flag::FLAM3)
         .prepare(prepare)
@@ -582,16 +582,16 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<75>),
     VarDef::new("stripes", eval::<76>)
-        .params(&[p("stripes_space", 0.0), p("stripes_warp", 0.0)])
+        .params(&[p("stripes_space", 0.5), p("stripes_warp", 0.0)])
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(76) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<76>),
     VarDef::new("wedge", eval::<77>)
         .params(&[
-            p("wedge_angle", 0.0),
+            p("wedge_angle", FRAC_PI_2),
             p("wedge_hole", 0.0),
-            p("wedge_count", 1.0),
+            p("wedge_count", 2.0),
             p("wedge_swirl", 0.0),
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
@@ -611,8 +611,8 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<78>),
     VarDef::new("wedge_sph", eval::<79>)
         .params(&[
-            p("wedge_sph_angle", 0.0),
-            p("wedge_sph_count", 1.0),
+            p("wedge_sph_angle", FRAC_PI_2),
+            p("wedge_sph_count", 2.0),
             p("wedge_sph_hole", 0.0),
             p("wedge_sph_swirl", 0.0),
         ])
@@ -621,16 +621,16 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prepare)
         .batch(batch::<79>),
     VarDef::new("whorl", eval::<80>)
-        .params(&[p("whorl_inside", 0.0), p("whorl_outside", 0.0)])
+        .params(&[p("whorl_inside", 1.0), p("whorl_outside", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(zf(80) | flag::FLAM3)
         .prepare(prepare)
         .batch(batch::<80>),
     VarDef::new("waves2", eval::<81>)
         .params(&[
-            p("waves2_freqx", 0.0),
+            p("waves2_freqx", 2.0),
             p("waves2_scalex", 0.0),
-            p("waves2_freqy", 0.0),
+            p("waves2_freqy", 2.0),
             p("waves2_scaley", 0.0),
             p("waves2_freqz", 0.0),
             p("waves2_scalez", 0.0),
@@ -717,10 +717,10 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<95>),
     VarDef::new("auger", eval::<96>)
         .params(&[
-            p("auger_freq", 1.0),
+            p("auger_freq", 5.0),
             p("auger_weight", 0.5),
             p("auger_sym", 0.0),
-            p("auger_scale", 1.0),
+            p("auger_scale", 0.1),
         ])
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(96) | flag::FLAM3)
@@ -734,13 +734,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<97>),
     VarDef::new("mobius", eval::<98>)
         .params(&[
-            p("mobius_re_a", 0.0),
+            p("mobius_re_a", 1.0),
             p("mobius_im_a", 0.0),
             p("mobius_re_b", 0.0),
             p("mobius_im_b", 0.0),
             p("mobius_re_c", 0.0),
             p("mobius_im_c", 0.0),
-            p("mobius_re_d", 0.0),
+            p("mobius_re_d", 1.0),
             p("mobius_im_d", 0.0),
         ])
         .needs(need::SUMSQ | need::SQRT)
@@ -852,17 +852,6 @@ fn prepare(v: &mut Prepared) {
 #[inline(always)]
 fn sincos(a: f64) -> (f64, f64) {
     fm::sin_cos(a)
-}
-
-/// A uniform integer in 0..n as a float; n = 0 draws a full 32-bit integer (as Fractorium's
-/// generator does, so that a |power| below 1 picks an arbitrary root).
-#[inline(always)]
-fn rand_below(rng: &mut FastRng, n: u64) -> f64 {
-    if n == 0 {
-        rng.u32() as f64
-    } else {
-        rng.below(n) as f64
-    }
 }
 
 /// √(1 + u) − 1 without cancellation for small u.
@@ -1175,7 +1164,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         JULIAN => {
             let r = w * t.sumsq.powf(p[9]);
             let a = if v.compat {
-                let k = rand_below(rng, p[8] as u64);
+                let k = rand_size(rng, p[8]);
                 (t.atan_yx + 2.0 * PI * k) / p[0]
             } else {
                 let root = (p[0] * rng.f01()).trunc();
@@ -1627,7 +1616,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         WEDGE_JULIA => {
             let (angle, count, power) = (p[0], p[1], p[2]);
             let r = w * t.sumsq.powf(p[10]);
-            let k = rand_below(rng, p[9] as u64);
+            let k = rand_size(rng, p[9]);
             let mut a = (t.atan_yx + 2.0 * PI * k) / power;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
             a = a * p[8] + c * angle;

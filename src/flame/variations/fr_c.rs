@@ -6,7 +6,10 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, PI, TAU};
 
-use super::util::{sqr, zeps};
+use super::util::{
+    crand, floor_f, floor_i64, jacobi_elliptic, ln_gamma, lrint, mix, sine_hash, sqr, trunc_i32,
+    zeps,
+};
 use super::*;
 
 const INF: f64 = f64::INFINITY;
@@ -333,169 +336,6 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(julia3dq_prepare),
 ];
 
-// ---------------------------------------------------------------------------------------------
-// Shared numeric helpers (C conversions as x86-64 performs them, special functions).
-
-/// C's `(int64_t)x` on x86-64: truncation, with the "integer indefinite" value `i64::MIN` for
-/// NaN and out-of-range inputs.
-#[inline(always)]
-fn trunc_i64(x: f64) -> i64 {
-    const LIMIT: f64 = -(i64::MIN as f64);
-    if x.is_nan() || !(-LIMIT..LIMIT).contains(&x) {
-        i64::MIN
-    } else {
-        x as i64
-    }
-}
-
-/// C's `(int)x` on x86-64 (`i32::MIN` for NaN and out-of-range inputs).
-#[inline(always)]
-fn trunc_i32(x: f64) -> i32 {
-    if x.is_nan() || !(-2147483648.0..2147483648.0).contains(&x) {
-        i32::MIN
-    } else {
-        x as i32
-    }
-}
-
-/// Floor through a 64-bit integer, as Fractorium's fast `Floor` computes it (truncate, then
-/// step down for negative non-integers).
-#[inline(always)]
-fn floor_int(x: f64) -> i64 {
-    let i = trunc_i64(x);
-    if x >= 0.0 {
-        i
-    } else {
-        i.wrapping_sub(((i as f64) > x) as i64)
-    }
-}
-
-/// [`floor_int`] as a float.
-#[inline(always)]
-fn floor_f(x: f64) -> f64 {
-    floor_int(x) as f64
-}
-
-/// Apophysis's rounding: half away from zero through a 64-bit integer.
-#[inline(always)]
-fn round_apo(x: f64) -> f64 {
-    let shifted = if x >= 0.0 { x + 0.5 } else { x - 0.5 };
-    trunc_i64(shifted) as f64
-}
-
-/// Fractional part relative to [`floor_int`].
-#[inline(always)]
-fn fract_f(x: f64) -> f64 {
-    x - floor_f(x)
-}
-
-/// The "sin-fract" pseudo-random hash of shader programs: a value in [0, 1) for a cell (x, y)
-/// and a seed.
-#[inline(always)]
-fn cell_hash(x: f64, y: f64, seed: f64) -> f64 {
-    fract_f((x * 12.9898 + y * 78.233 + seed).sin() * 43758.5453)
-}
-
-/// ln Γ(x) for x ≥ 0 (Lanczos approximation, g = 7): ~1e-15 relative, ~1e-15 absolute near
-/// the zeros at 1 and 2; +∞ at 0. Negative inputs do not occur here (the argument is a radius).
-fn ln_gamma(x: f64) -> f64 {
-    const G: f64 = 7.0;
-    const C: [f64; 9] = [
-        0.999_999_999_999_809_9,
-        676.520_368_121_885_1,
-        -1_259.139_216_722_402_8,
-        771.323_428_777_653_1,
-        -176.615_029_162_140_6,
-        12.507_343_278_686_905,
-        -0.138_571_095_265_720_12,
-        9.984_369_578_019_572e-6,
-        1.505_632_735_149_311_6e-7,
-    ];
-    if x.is_nan() {
-        return x;
-    }
-    if x <= 0.0 {
-        return INF;
-    }
-    if x == INF {
-        return INF;
-    }
-    if x < 0.5 {
-        // Γ(x) = Γ(x + 1) / x.
-        return ln_gamma(x + 1.0) - x.ln();
-    }
-    if x == 1.0 || x == 2.0 {
-        return 0.0;
-    }
-    let z = x - 1.0;
-    let mut series = C[0];
-    for (k, c) in C.iter().enumerate().skip(1) {
-        series += c / (z + k as f64);
-    }
-    let t = z + G + 0.5;
-    0.5 * (TAU).ln() + (z + 0.5) * t.ln() - t + series.ln()
-}
-
-/// Jacobi's elliptic functions (sn, cn, dn) of `u` for the complementary parameter `mc`
-/// (= 1 − m), by the descending AGM (Landen) scheme with Fractorium's tolerance: the AGM stops
-/// once two means agree to 3e-4 relative, at most 8 steps.
-fn jacobi_elliptic(u: f64, mc: f64) -> (f64, f64, f64) {
-    if mc == 0.0 {
-        let sech = 1.0 / u.cosh();
-        return (u.tanh(), sech, sech);
-    }
-    const TOL: f64 = 0.0003;
-    let negative = mc < 0.0;
-    let mut m = mc;
-    let mut arg = u;
-    let mut scale = 1.0;
-    if negative {
-        scale = 1.0 - m;
-        m = -m / scale;
-        scale = scale.sqrt();
-        arg *= scale;
-    }
-    let mut arith = [0.0f64; 8];
-    let mut geom = [0.0f64; 8];
-    let mut a = 1.0;
-    let mut mean = 0.0;
-    let mut steps = 0;
-    for k in 0..8 {
-        steps = k;
-        arith[k] = a;
-        m = m.sqrt();
-        geom[k] = m;
-        mean = 0.5 * (a + m);
-        if (a - m).abs() <= TOL * a {
-            break;
-        }
-        m *= a;
-        a = mean;
-    }
-    arg *= mean;
-    let (mut sn, mut cn) = (arg.sin(), arg.cos());
-    let mut dn = 1.0;
-    if sn != 0.0 {
-        let mut ratio = cn / sn;
-        let mut c = mean * ratio;
-        for k in (0..=steps).rev() {
-            let b = arith[k];
-            ratio *= c;
-            c *= dn;
-            dn = (geom[k] + ratio) / (b + ratio);
-            ratio = c / b;
-        }
-        let s = 1.0 / (c * c + 1.0).sqrt();
-        sn = if sn < 0.0 { -s } else { s };
-        cn = c * sn;
-    }
-    if negative {
-        (sn / scale, dn, cn)
-    } else {
-        (sn, cn, dn)
-    }
-}
-
 /// `t` unless the variation is applied as a regular one: then the xform's running sum, which
 /// is cleared (x and y) so that the variation's output replaces it.
 #[inline(always)]
@@ -714,12 +554,6 @@ fn gd_osc(p: f64, a: f64) -> f64 {
     gd_wrap((-(p * a * TAU).cos() + 1.0) / 2.0)
 }
 
-/// Linear interpolation from `a` to `b` by `c`.
-#[inline(always)]
-fn gd_mix(a: f64, b: f64, c: f64) -> f64 {
-    c * (b - a) + a
-}
-
 /// Gradient-domain offsets: each coordinate is blended with cosine oscillations of itself,
 /// giving a rippled, folded copy of the plane; z is scaled.
 fn gdoffs(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
@@ -731,8 +565,8 @@ fn gdoffs(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         gd_osc(dy, 1.0)
     };
     let fold = |a: f64, osc: f64| {
-        gd_mix(
-            gd_mix(a, gd_osc(a, 4.0), osc),
+        mix(
+            mix(a, gd_osc(a, 4.0), osc),
             gd_osc(gd_wrap(b * a), 4.0),
             osc,
         )
@@ -754,48 +588,13 @@ fn glynnia2_prepare(v: &mut Prepared) {
     v.p.push(k);
 }
 
-/// A random choice between two square-root–like maps of the plane (Glynn's "glynnia"), with
-/// different branches inside and outside the unit circle.
-fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let w = v.w;
-    let v2 = v.p[0];
+/// Glynn's two square-root–like maps of the plane, one picked at random: on the `outer` side
+/// (of the unit circle for glynnia, of the x axis for glynnia2) as they are, on the other side
+/// mirrored and with their poles guarded.
+#[inline(always)]
+fn glynnia_maps(w: f64, v2: f64, t: &VarIn, outer: bool, rng: &mut FastRng) -> V3 {
     let r = t.sqrt;
-    if v.compat {
-        if r > 1.0 {
-            if rng.f01() > 0.5 {
-                let d = (r + t.x).sqrt();
-                [v2 * d, -(v2 / d * t.y), 0.0]
-            } else {
-                let d = r + t.x;
-                let k = w / (r * (t.y * t.y + d * d)).sqrt();
-                [k * d, k * t.y, 0.0]
-            }
-        } else if rng.f01() > 0.5 {
-            let d = zeps((r + t.x).sqrt());
-            [-(v2 * d), -(v2 / d * t.y), 0.0]
-        } else {
-            let d = r + t.x;
-            let k = w / zeps((r * (t.y * t.y + d * d)).sqrt());
-            [-(k * d), k * t.y, 0.0]
-        }
-    } else {
-        let side = if t.sumsq > 1.0 { 1.0 } else { -1.0 };
-        let root = (r + t.x).sqrt();
-        if rng.f01() < 0.5 {
-            [v2 * side * root, v2 * (-t.y / zeps(root)), 0.0]
-        } else {
-            let k = v2 / zeps(r);
-            [k * side * root, k * (t.y / zeps(root)), 0.0]
-        }
-    }
-}
-
-/// glynnia with the branch chosen by the upper half-plane (y > 0) instead of the unit circle.
-fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let w = v.w;
-    let v2 = v.p[0];
-    let r = t.sqrt;
-    if r > 0.0 && t.y > 0.0 {
+    if outer {
         if rng.f01() > 0.5 {
             let d = (r + t.x).sqrt();
             [v2 * d, -(v2 / d * t.y), 0.0]
@@ -812,6 +611,30 @@ fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         let k = w / zeps((r * (t.y * t.y + d * d)).sqrt());
         [-(k * d), k * t.y, 0.0]
     }
+}
+
+/// A random choice between two square-root–like maps of the plane (Glynn's "glynnia"), with
+/// different branches inside and outside the unit circle.
+fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let v2 = v.p[0];
+    if v.compat {
+        glynnia_maps(v.w, v2, t, t.sqrt > 1.0, rng)
+    } else {
+        let r = t.sqrt;
+        let side = if t.sumsq > 1.0 { 1.0 } else { -1.0 };
+        let root = (r + t.x).sqrt();
+        if rng.f01() < 0.5 {
+            [v2 * side * root, v2 * (-t.y / zeps(root)), 0.0]
+        } else {
+            let k = v2 / zeps(r);
+            [k * side * root, k * (t.y / zeps(root)), 0.0]
+        }
+    }
+}
+
+/// glynnia with the branch chosen by the upper half-plane (y > 0) instead of the unit circle.
+fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    glynnia_maps(v.w, v.p[0], t, t.sqrt > 0.0 && t.y > 0.0, rng)
 }
 
 /// The shared outside rule of the GlynnSim family: with probability contrast·α^pow
@@ -975,8 +798,8 @@ fn gnarly(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Pushes each point one unit out of its grid square, towards the square's nearest side
 /// (a square spiral away from the origin).
 fn gridout(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let gx = round_apo(t.x);
-    let gy = round_apo(t.y);
+    let gx = lrint(t.x);
+    let gy = lrint(t.y);
     let (dx, dy) = if gy <= 0.0 {
         if gx > 0.0 {
             if -gy >= gx { (1.0, 0.0) } else { (0.0, 1.0) }
@@ -1100,10 +923,10 @@ fn hex_modulus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (gx, gy, size, power, density, seed) = (v.p[0], v.p[1], v.p[2], v.p[3], v.p[4], v.p[5]);
     let k = rng.f01() * 6.0;
-    let sector = floor_int(k);
+    let sector = floor_i64(k);
     let frac = k - sector as f64;
     let edge = (1.0 + frac * frac - frac).sqrt();
-    let odd = sector - floor_int(k / 2.0) * 2 == 1;
+    let odd = sector.wrapping_sub(floor_i64(k / 2.0).wrapping_mul(2)) == 1;
     let sign = if odd { 1.0 } else { -1.0 };
     let ang = 2.094_395_102_393_195_5 * (sector / 2) as f64
         + sign * (HALF_SQRT3 * frac / edge).asin()
@@ -1112,9 +935,9 @@ fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let cell_y = (rng.f01() * gy * 2.0).floor() - gy;
     let hx = cell_x + 0.5 * cell_y;
     let hy = cell_y * HALF_SQRT3;
-    if cell_hash(hy, hx, seed) < density {
+    if sine_hash(hy, hx, seed) < density {
         let reach = edge * rng.f01().sqrt() * 1.154_700_538_379_251_5;
-        let shrink = cell_hash(hx, hy, seed);
+        let shrink = sine_hash(hx, hy, seed);
         let r = size * 0.5 * reach * shrink.powf(power);
         [(ang.cos() * r + hx) * v.w, (ang.sin() * r + hy) * v.w, 0.0]
     } else {
@@ -1151,7 +974,7 @@ fn hex_truchet(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let gy = 2.0 * (floor_f(rng.f01() * cells) - side);
     let hx = gx + 0.5 * gy;
     let hy = 0.8660 * gy;
-    let turn = if cell_hash(gx, gy, seed) < 0.5 {
+    let turn = if sine_hash(gx, gy, seed) < 0.5 {
         0.0
     } else {
         TRUNCATED_60_DEG
@@ -1597,7 +1420,7 @@ fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     let x = inv * fx + shift;
     let y = inv * fy;
     let k = v.w * scale / zeps(x * x + y * y);
-    let ang = (floor_int(rng.f01() * p_) * 2 + 1) as f64 * PI / p_;
+    let ang = (floor_i64(rng.f01() * p_) * 2 + 1) as f64 * PI / p_;
     let bx = k * x + shift;
     let by = k * y;
     let (sa, ca) = ang.sin_cos();
@@ -1646,7 +1469,7 @@ fn hypertile12_prepare(v: &mut Prepared) {
 fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (pa, r, whole_p) = (v.p[2], v.p[3], v.p[4]);
     let ang = if v.compat {
-        rng.below(32767) as f64 * pa
+        crand(rng) * pa
     } else {
         floor_f(rng.f01() * whole_p) * pa
     };
@@ -1672,7 +1495,7 @@ fn hypertile2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = a * c + b * d;
     let y = b * c - a * d;
     let k = v.w / zeps(c * c + d * d);
-    let (sa, ca) = (rng.below(32767) as f64 * pa).sin_cos();
+    let (sa, ca) = (crand(rng) * pa).sin_cos();
     [k * (x * ca + y * sa), k * (y * ca - x * sa), 0.0]
 }
 
@@ -1732,7 +1555,7 @@ fn hypertile3d12_prepare(v: &mut Prepared) {
 /// The 3-D hyperbolic tiling map towards a random vertex of the central polygon.
 fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (pa, r, c2, s2z) = (v.p[2], v.p[3], v.p[4], v.p[5]);
-    let (sa, ca) = (rng.below(32767) as f64 * pa).sin_cos();
+    let (sa, ca) = (crand(rng) * pa).sin_cos();
     let cx = r * ca;
     let cy = r * sa;
     let s2x = 1.0 + cx * cx - cy * cy;
@@ -1758,7 +1581,7 @@ fn hypertile3d2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = t.x * s2x - cx * (-r2 - 1.0);
     let y = t.y * s2y;
     let k = v.w / (c2 * r2 + x2cx + 1.0);
-    let (sa, ca) = (rng.below(32767) as f64 * pa).sin_cos();
+    let (sa, ca) = (crand(rng) * pa).sin_cos();
     [
         k * (x * ca + y * sa),
         k * (y * ca - x * sa),
@@ -1875,7 +1698,7 @@ fn julia3dq_prepare(v: &mut Prepared) {
 /// (any multiple of 2π/power).
 fn julia3dq(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (inv, abs_inv, half_inv, step) = (v.p[2], v.p[3], v.p[4], v.p[5]);
-    let ang = t.atan_yx * inv + rng.below(32767) as f64 * step;
+    let ang = t.atan_yx * inv + crand(rng) * step;
     let (sa, ca) = ang.sin_cos();
     let z = t.z * abs_inv;
     let r = v.w * (t.sumsq + z * z).powf(half_inv);

@@ -7,7 +7,9 @@
 
 use std::f64::consts::{E, FRAC_1_PI, FRAC_PI_2, PI, SQRT_2, TAU};
 
-use super::util::{sign, sign_nz, sqr, zeps};
+use super::util::{
+    cpp_max, crand, mix, rand_size, sign, signed_pow, sqr, trunc_i32, wang_hash, zeps,
+};
 use super::*;
 
 const INF: f64 = f64::INFINITY;
@@ -407,58 +409,6 @@ const MIRROR_FLAGS: u32 = flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::W
 // ---------------------------------------------------------------------------------------------
 // Shared helpers.
 
-/// A uniform integer in `0..n` (`n` truncated to an integer), as a float. An `n` that truncates
-/// to 0 draws a full 32-bit integer instead, as Fractorium's bounded draw does.
-#[inline(always)]
-fn draw_index(rng: &mut FastRng, n: f64) -> f64 {
-    let k = n as u64;
-    if k == 0 {
-        rng.u32() as f64
-    } else {
-        rng.below(k) as f64
-    }
-}
-
-/// C `rand()`-style integer in 0..=32766 (Fractorium's `Crand`), as a float.
-#[inline(always)]
-fn draw_crand(rng: &mut FastRng) -> f64 {
-    rng.below(32767) as f64
-}
-
-/// A C `(int)` conversion as x86 performs it: truncation, and `i32::MIN` for NaN or values out
-/// of range.
-#[inline(always)]
-fn to_c_int(x: f64) -> i32 {
-    if x > -2_147_483_649.0 && x < 2_147_483_648.0 {
-        x as i32
-    } else {
-        i32::MIN
-    }
-}
-
-/// `std::max` semantics: `b` only when `a < b` (NaN in `a` is kept).
-#[inline(always)]
-fn c_max(a: f64, b: f64) -> f64 {
-    if a < b { b } else { a }
-}
-
-/// An integer hash (Wang-style mixing) mapped to roughly [-1, 1]; wraps like 32-bit C ints.
-#[inline]
-fn int_hash01(seed: i32) -> f64 {
-    let mut h = (seed ^ 61) ^ (seed >> 16);
-    h = h.wrapping_add(h.wrapping_shl(3));
-    h ^= h >> 4;
-    h = h.wrapping_mul(0x27d4_eb2d);
-    h ^= h >> 15;
-    h as f64 / i32::MAX as f64
-}
-
-/// Linear interpolation from `a` to `b` by `f`.
-#[inline(always)]
-fn mix(a: f64, b: f64, f: f64) -> f64 {
-    a + (b - a) * f
-}
-
 /// Derived value shared by the loonies: the squared weight.
 fn prep_weight_squared(v: &mut Prepared) {
     let w2 = v.w * v.w;
@@ -479,7 +429,7 @@ fn prep_julia3dz(v: &mut Prepared) {
 fn julia3dz(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (n, abs_n, exponent) = (v.p[0], v.p[1], v.p[2]);
     let radius = v.w * t.sumsq.powf(exponent);
-    let branch = TAU * draw_index(rng, abs_n as u32 as f64);
+    let branch = TAU * rand_size(rng, abs_n as u32 as f64);
     let ang = (t.atan_yx + branch) / n;
     [
         radius * ang.cos(),
@@ -530,9 +480,9 @@ fn julian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let y = q[2] * t.x + q[3] * t.y + q[5];
     let radius = v.w * (x * x + y * y).powf(exponent);
     let ang = if v.compat {
-        (y.atan2(x) + TAU * draw_index(rng, abs_n)) / power
+        (y.atan2(x) + TAU * rand_size(rng, abs_n)) / power
     } else {
-        let branch = to_c_int(abs_n * rng.f01()) as f64;
+        let branch = trunc_i32(abs_n * rng.f01()) as f64;
         (y.atan2(x) + branch * TAU) / power
     };
     [radius * ang.cos(), radius * ang.sin(), 0.0]
@@ -553,7 +503,7 @@ fn julian3dx(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let radius = v.w * (t.sumsq + z * z).powf(exponent);
     let x = q[2] * t.x + q[3] * t.y + q[6];
     let y = q[4] * t.x + q[5] * t.y + q[7];
-    let branch = to_c_int(rng.f01() * abs_n) as f64;
+    let branch = trunc_i32(rng.f01() * abs_n) as f64;
     let ang = (y.atan2(x) + TAU * branch) / power;
     let planar = radius * t.sqrt;
     [planar * ang.cos(), planar * ang.sin(), radius * z]
@@ -591,7 +541,7 @@ fn prep_juliaq(v: &mut Prepared) {
 /// the angle.
 fn juliaq(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (half_ratio, ratio, step) = (v.p[2], v.p[3], v.p[4]);
-    let ang = t.atan_yx * ratio + draw_crand(rng) * step;
+    let ang = t.atan_yx * ratio + crand(rng) * step;
     let radius = v.w * t.sumsq.powf(half_ratio);
     [radius * ang.cos(), radius * ang.sin(), 0.0]
 }
@@ -755,12 +705,6 @@ fn linear3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [v.w * t.x, v.w * t.y, v.w * t.z]
 }
 
-/// Signed power: sign(u)·|u|^e (sign of 0 taken as +).
-#[inline(always)]
-fn signed_pow(u: f64, e: f64) -> f64 {
-    sign_nz(u) * u.abs().powf(e)
-}
-
 /// linearT: each coordinate raised to its own power, keeping its sign.
 fn linear_t(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [
@@ -861,7 +805,7 @@ fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
             let nx = xr * cos_a - yr * sin_a;
             yr = xr * sin_a + yr * cos_a;
             xr = nx;
-            r2 = c_max(r2, xr * cos_s + yr.abs() * sin_s);
+            r2 = cpp_max(r2, xr * cos_s + yr.abs() * sin_s);
             turns += 1;
         }
         r2 = r2 * cos_c + t.sqrt * sin_c;
@@ -1266,7 +1210,7 @@ fn nblur_sample(q: &[f64], rng: &mut FastRng) -> NbSample {
     } else {
         ((q[nb::ATAN1] * (rng.f01() - 0.5)).atan() / q[nb::ATAN2]
             + 0.5
-            + draw_index(rng, q[nb::EDGES]))
+            + rand_size(rng, q[nb::EDGES]))
             * mid
     };
     // Note: x takes the sine and y the cosine of the direction.
@@ -1427,7 +1371,7 @@ fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let parity = q[0];
     let (nnz, vvar, vvar2, abs_n, exponent, odd) = (q[2], q[3], q[4], q[5], q[6], q[7]);
     let (x, y) = if odd != 0.0 {
-        let ang = (t.atan_yx + TAU * draw_index(rng, abs_n)) / nnz;
+        let ang = (t.atan_yx + TAU * rand_size(rng, abs_n)) / nnz;
         let mut r = v.w * t.sumsq.powf(exponent);
         if v.compat {
             r *= parity;
@@ -1436,7 +1380,7 @@ fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     } else {
         let lx = vvar * t.atan_xy;
         let ly = vvar2 * t.sumsq.ln();
-        let ang = (ly.atan2(lx) + TAU * draw_index(rng, abs_n)) / nnz;
+        let ang = (ly.atan2(lx) + TAU * rand_size(rng, abs_n)) / nnz;
         let mut r = v.w * (lx * lx + ly * ly).powf(exponent);
         if !v.compat {
             r *= parity;
@@ -1714,10 +1658,10 @@ fn phoenix_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> 
     let py = t.y * (yd + 1.0);
     let r = v.w * t.sumsq.powf(exponent);
     if v.compat {
-        let ang = py.atan2(px) * inv_n + draw_crand(rng) * step;
+        let ang = py.atan2(px) * inv_n + crand(rng) * step;
         [r * ang.cos(), r * ang.sin(), v.w * t.z]
     } else {
-        let root = to_c_int(rng.f01() * power) as f64;
+        let root = trunc_i32(rng.f01() * power) as f64;
         let ang = py.atan2(px) * inv_n + root * step;
         [r * ang.cos(), r * ang.sin(), v.default_z(t)]
     }
@@ -1727,7 +1671,7 @@ fn phoenix_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> 
 /// radius r up to the weight, lifted to z = weight·sin r.
 fn pie3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (slices, rotation, thickness) = (v.p[0], v.p[1], v.p[2]);
-    let slice = to_c_int(rng.f01() * slices + 0.5) as f64;
+    let slice = trunc_i32(rng.f01() * slices + 0.5) as f64;
     let ang = rotation + TAU * (slice + rng.f01() * thickness) / slices;
     let r = v.w * rng.f01();
     [r * ang.cos(), r * ang.sin(), v.w * r.sin()]
@@ -1747,13 +1691,13 @@ fn pixel_flow(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (len, width, seed, dc, dir_x, dir_y) = (q[1], q[2], q[3], q[4], q[5], q[6]);
     let block = |u: f64| -> i32 {
         let b = (u * width).floor() as i64 as i32;
-        let jitter = 2.0 - 4.0 * int_hash01(to_c_int(b as f64 * seed + 1.0));
-        b.wrapping_add(to_c_int(jitter))
+        let jitter = 2.0 - 4.0 * wang_hash(trunc_i32(b as f64 * seed + 1.0));
+        b.wrapping_add(trunc_i32(jitter))
     };
     let bx = block(t.x);
     let by = block(t.y);
-    let h1 = int_hash01(to_c_int(by as f64 + bx as f64 * -seed));
-    let h2 = int_hash01(to_c_int(bx as f64 + by as f64 * seed * 0.5));
+    let h1 = wang_hash(trunc_i32(by as f64 + bx as f64 * -seed));
+    let h2 = wang_hash(trunc_i32(bx as f64 + by as f64 * seed * 0.5));
     let streak = (h1 + h2) * 0.5;
     let r = rng.f01();
     let fade = streak * r * r * r * r;
@@ -1991,7 +1935,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
             if cropmode == 2.0 {
                 return last_kept(acc);
             }
-            let a = if to_c_int(rng.f01() * 2.0) != 0 {
+            let a = if trunc_i32(rng.f01() * 2.0) != 0 {
                 power + (rng.f01() * scatter + offset + edge) * PI
             } else {
                 -(rng.f01() * scatter + offset + edge) * PI

@@ -4,71 +4,15 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_2_PI, FRAC_PI_2, PI, TAU};
 
-use super::util::{sqr, zeps};
+use super::util::{floor_f, lrint, mix, sine_hash, sqr, square_point, trunc_i32, wang_hash, zeps};
 use super::{Acc, Form, Prepared, V3, VarDef, VarIn, flag, need, p, p_int, p_nonzero, p_range};
 use crate::flame::rng::FastRng;
 
 const INF: f64 = f64::INFINITY;
 
-/// 2⁶³: doubles in [-2⁶³, 2⁶³) convert to i64.
-const TWO_63: f64 = (1u64 << 63) as f64;
-
 // ---------------------------------------------------------------------------------------------
-// Shared numeric helpers (C semantics the formulas rely on).
+// Numeric guards (Fractorium's semantics at NaN and negative values).
 // ---------------------------------------------------------------------------------------------
-
-/// Floor taken through a 64-bit integer, as Fractorium does: NaN and values outside the i64
-/// range come out as i64::MIN (what x86 gives for an invalid conversion).
-#[inline(always)]
-fn floor_i64(x: f64) -> f64 {
-    if x.is_nan() || !(-TWO_63..TWO_63).contains(&x) {
-        return i64::MIN as f64;
-    }
-    x.floor()
-}
-
-/// C's `(int)x`: truncation toward zero; NaN and out-of-range values give i32::MIN (x86).
-#[inline(always)]
-fn trunc_i32(x: f64) -> i32 {
-    if x.is_nan() || !(-2_147_483_649.0..2_147_483_648.0).contains(&x) {
-        return i32::MIN;
-    }
-    x as i32
-}
-
-/// Round half away from zero through a 64-bit integer (Apophysis' "LRint").
-#[inline(always)]
-fn round_half_away(x: f64) -> f64 {
-    let shifted = if x >= 0.0 { x + 0.5 } else { x - 0.5 };
-    if shifted.is_nan() || !(-TWO_63..TWO_63).contains(&shifted) {
-        return i64::MIN as f64;
-    }
-    shifted.trunc()
-}
-
-/// Bob Jenkins' 32-bit integer mix, scaled by i32::MAX into about [-1, 1].
-#[inline(always)]
-fn int_mix(seed: i32) -> f64 {
-    let mut h = (seed ^ 61) ^ (seed >> 16);
-    h = h.wrapping_add(h << 3);
-    h ^= h >> 4;
-    h = h.wrapping_mul(0x27d4_eb2d);
-    h ^= h >> 15;
-    h as f64 / i32::MAX as f64
-}
-
-/// The fractional part of a large sine of a point: the "shadertoy" pseudo-random hash in [0, 1).
-#[inline(always)]
-fn sine_hash(x: f64, y: f64, seed: f64) -> f64 {
-    let s = (x * 12.9898 + y * 78.233 + seed).sin() * 43_758.545_3;
-    s - floor_i64(s)
-}
-
-/// Linear interpolation from `a` (at 0) to `b` (at 1).
-#[inline(always)]
-fn mix(a: f64, b: f64, k: f64) -> f64 {
-    a + (b - a) * k
-}
 
 /// Replaces negatives with 0 (NaN passes through).
 #[inline(always)]
@@ -293,11 +237,11 @@ fn rand_cubes(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (size, height, spread, seed, density) = (q[0], q[1], q[2], q[3], q[4]);
     let mut cell = || {
         let l = rng.f01().ln();
-        floor_i64(l * if rng.bit() { spread } else { -spread })
+        floor_f(l * if rng.bit() { spread } else { -spread })
     };
     let bx = cell();
     let by = cell();
-    let h = int_mix(trunc_i32(bx * seed)) + int_mix(trunc_i32(bx + by * seed));
+    let h = wang_hash(trunc_i32(bx * seed)) + wang_hash(trunc_i32(bx + by * seed));
     if v.form == Form::Regular {
         acc.x = 0.0;
         acc.y = 0.0;
@@ -523,7 +467,7 @@ fn roundspher3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 /// 1/2 at a corner) as (sector index rounded to the nearest edge, sign, offset).
 #[inline(always)]
 fn polygon_sector(dang: f64) -> (f64, f64, f64) {
-    let whole = floor_i64(dang);
+    let whole = floor_f(dang);
     let frac = dang - whole;
     if frac > 0.5 {
         (whole + 1.0, -1.0, 1.0 - frac)
@@ -674,16 +618,22 @@ fn sigmoid_prep(v: &mut Prepared) {
 // Spherical3D, SphericalN, spherivoid, sphyp3D, spiralwing, Spirograph, SplitBrdr
 // ---------------------------------------------------------------------------------------------
 
+/// A uniform number in [0, 1) raised to the power `pw` (drawn as e^(pw·ln u); u itself when
+/// pw = 1): the radial profile of sineblur and sphereblur.
+#[inline(always)]
+fn powered_unit(rng: &mut FastRng, pw: f64) -> f64 {
+    if pw == 1.0 {
+        rng.f01()
+    } else {
+        (rng.f01().ln() * pw).exp()
+    }
+}
+
 /// A disc of radius w filled with a density that follows acos (denser at the rim); `power`
 /// reshapes the radial profile.
 fn sineblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (s, c) = (rng.f01() * TAU).sin_cos();
-    let pw = v.p[0];
-    let u = if pw == 1.0 {
-        rng.f01()
-    } else {
-        (rng.f01().ln() * pw).exp()
-    };
+    let u = powered_unit(rng, v.p[0]);
     let r = v.w * ((u * 2.0 - 1.0).acos() / PI);
     [r * c, r * s, 0.0]
 }
@@ -814,12 +764,7 @@ fn spher(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 fn sphereblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let ang = rng.f01() * TAU;
     let polar = (rng.f01() * 2.0 - 1.0).acos();
-    let pw = v.p[0];
-    let u = if pw == 1.0 {
-        rng.f01()
-    } else {
-        (rng.f01().ln() * pw).exp()
-    };
+    let u = powered_unit(rng, v.p[0]);
     let r = v.w * (((u * 2.0 - 1.0).acos() / PI).ln() / 1.5).exp();
     let (s, c) = ang.sin_cos();
     let (sz, cz) = polar.sin_cos();
@@ -837,7 +782,7 @@ fn spherical3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn spherical_n(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (power, dist, step) = (v.p[0], v.p[1], v.p[2]);
     let r = zeps(t.sqrt.powf(dist));
-    let n = floor_i64(power * rng.f01());
+    let n = floor_f(power * rng.f01());
     let alpha = t.atan_yx + n * TAU / step;
     let (s, c) = alpha.sin_cos();
     if v.compat {
@@ -848,7 +793,7 @@ fn spherical_n(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn spherical_n_prep(v: &mut Prepared) {
-    let step = zeps(floor_i64(v.p[0]));
+    let step = zeps(floor_f(v.p[0]));
     v.p.push(step);
 }
 
@@ -970,14 +915,14 @@ fn squares(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     if cell == 0.0 {
         return [t.x * v.w, t.y * v.w, 0.0];
     }
-    let cx = (floor_i64(t.x / cell) + 0.5) * cell;
-    let cy = (floor_i64(t.y / cell) + 0.5) * cell;
+    let cx = (floor_f(t.x / cell) + 0.5) * cell;
+    let cy = (floor_f(t.y / cell) + 0.5) * cell;
     let (lx, ly) = (t.x - cx, t.y - cy);
-    let ring_x = floor_i64(lx * num * 2.0 / cell + 0.5).abs();
-    let ring_y = floor_i64(ly * num * 2.0 / cell + 0.5).abs();
+    let ring_x = floor_f(lx * num * 2.0 / cell + 0.5).abs();
+    let ring_y = floor_f(ly * num * 2.0 / cell + 0.5).abs();
     let m = ring_x.max(ring_y);
     let (hx, hy) = (cx * cx, cy * cy);
-    let top = hi + floor_i64(sine_hash(hx, hy, seed) * (num - hi));
+    let top = hi + floor_f(sine_hash(hx, hy, seed) * (num - hi));
     let level = if m > top || m < lo { 0.0 } else { m - lo };
     let angle = if sine_hash(hx, hy, zero_seed) < zero {
         0.0
@@ -1002,26 +947,7 @@ fn squarize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         t.atan_yx
     };
     let p = 4.0 * r * a * FRAC_1_PI;
-    square_perimeter(v.w, r, p, true)
-}
-
-/// The point at arc length `p` along the boundary of the square of half-side `s` (starting
-/// at (s, 0), counter-clockwise, 8s long), scaled by `w`. Without `close`, the last stretch
-/// (below the x axis) is mirrored, as squish has it.
-#[inline(always)]
-fn square_perimeter(w: f64, s: f64, p: f64, close: bool) -> V3 {
-    if p <= s {
-        [w * s, w * p, 0.0]
-    } else if p <= 3.0 * s {
-        [w * (2.0 * s - p), w * s, 0.0]
-    } else if p <= 5.0 * s {
-        [-(w * s), w * (4.0 * s - p), 0.0]
-    } else if p <= 7.0 * s {
-        [-(w * (6.0 * s - p)), -(w * s), 0.0]
-    } else {
-        let y = w * (8.0 * s - p);
-        [w * s, if close { -y } else { y }, 0.0]
-    }
+    square_point(v.w, r, p, true)
 }
 
 /// (cos u·tan x, sin u·tan y) with u = √(a x² + b y²).
@@ -1049,8 +975,8 @@ fn squish(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             },
         )
     };
-    let p = inv * (p + 8.0 * s * floor_i64(power * rng.f01()));
-    square_perimeter(v.w, s, p, false)
+    let p = inv * (p + 8.0 * s * floor_f(power * rng.f01()));
+    square_point(v.w, s, p, false)
 }
 
 fn squish_prep(v: &mut Prepared) {
@@ -1064,7 +990,7 @@ fn sschecks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let q = &v.p;
     let (ox, oy, jitter, inv_size) = (q[0], q[1], q[3], q[4]);
     let r = v.w / zeps(t.sumsq);
-    let parity = trunc_i32(round_half_away(t.x * inv_size) + round_half_away(t.y * inv_size));
+    let parity = trunc_i32(lrint(t.x * inv_size) + lrint(t.y * inv_size));
     let (dx, dy) = if parity & 1 != 0 {
         (-ox + jitter * rng.f01(), -oy)
     } else {
@@ -1125,7 +1051,7 @@ fn starblur2(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         q[SB_LEN + 7],
     );
     let k = rng.f01() * power2;
-    let whole = floor_i64(k);
+    let whole = floor_f(k);
     let f = k - whole;
     let ff = if stripes > 0.0 {
         let g = f * stripes;
@@ -1143,7 +1069,7 @@ fn starblur2(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let z = zeps((1.0 + x * x - x * cos_a2).sqrt());
     // The parity and half of the sector index, in 64-bit integer arithmetic.
     let wi = whole as i64;
-    let odd = wi.wrapping_sub((floor_i64(k / 2.0) as i64).wrapping_mul(2)) == 1;
+    let odd = wi.wrapping_sub((floor_f(k / 2.0) as i64).wrapping_mul(2)) == 1;
     let sign = if odd { 1.0 } else { -1.0 };
     let angle = step * (wi / 2) as f64 + sign * (sin_a * x / z).asin() - FRAC_PI_2;
     let r = v.w * (z * (rng.f01() * fill2 + hole2).sqrt());

@@ -8,7 +8,10 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_3, FRAC_PI_4, FRAC_PI_6, PI, TAU};
 
-use super::util::{sqr, zeps};
+use super::util::{
+    bessel_j1, erf, fract, jacobi_sn, lattice_noise, quat_mul_conj, rand_size, sine_hash, sqr,
+    trunc_i32, zeps,
+};
 use super::*;
 
 /// √3, √3/2 and √3/3.
@@ -21,16 +24,6 @@ const INV_TAU: f64 = FRAC_1_PI * 0.5;
 // ---------------------------------------------------------------------------------------------
 // Shared helpers.
 
-/// C's `(int)x` on x86: truncation, with out-of-range values and NaN giving `i32::MIN`.
-#[inline(always)]
-fn c_int(x: f64) -> i32 {
-    if x > -2147483649.0 && x < 2147483648.0 {
-        x as i32
-    } else {
-        i32::MIN
-    }
-}
-
 /// Fractorium's rounding: half away from zero, computed as floor(x + ½) for positive values
 /// and ceil(x − ½) otherwise (differs from `f64::round` just below the halves).
 #[inline(always)]
@@ -42,179 +35,10 @@ fn round_half_out(x: f64) -> f64 {
     }
 }
 
-/// Fractional part x − ⌊x⌋ (in [0, 1)).
-#[inline(always)]
-fn fract(x: f64) -> f64 {
-    x - x.floor()
-}
-
-/// The "shadertoy" hash of a lattice point: the fractional part of a large multiple of
-/// sin(12.9898·x + 78.233·y + seed), a pseudo-random number in [0, 1).
-#[inline(always)]
-fn shader_hash(x: f64, y: f64, seed: f64) -> f64 {
-    fract((x * 12.9898 + y * 78.233 + seed).sin() * 43758.5453)
-}
-
-/// A uniform integer in 0..n for a count given as a float (truncated, as a C `size_t` cast);
-/// a zero count draws a full 32-bit number, as Fractorium's `Rand(0)` does.
-#[inline(always)]
-fn rand_count(rng: &mut FastRng, n: f64) -> f64 {
-    let k = if n >= 1.0 { n as u64 } else { 0 };
-    if k == 0 {
-        rng.u32() as f64
-    } else {
-        rng.below(k) as f64
-    }
-}
-
 /// 1/r when r is below machine epsilon (a pole), else q/r.
 #[inline(always)]
 fn div_or_inverse(q: f64, r: f64) -> f64 {
     if r < f64::EPSILON { 1.0 / r } else { q / r }
-}
-
-/// The error function. For |x| < 3 the series erf x = 2/√π·e^(−x²)·Σ (2x²)ⁿ·x / (1·3·…·(2n+1)),
-/// whose terms are all positive (no cancellation); beyond, 1 − erfc by its continued fraction.
-fn erf(x: f64) -> f64 {
-    const TWO_OVER_SQRT_PI: f64 = std::f64::consts::FRAC_2_SQRT_PI;
-    let ax = x.abs();
-    if ax.is_nan() {
-        return x;
-    }
-    if ax < 3.0 {
-        let x2 = x * x;
-        let mut term = x;
-        let mut sum = x;
-        let mut n = 0.0;
-        loop {
-            n += 1.0;
-            term *= 2.0 * x2 / (2.0 * n + 1.0);
-            sum += term;
-            if term.abs() <= sum.abs() * 1e-17 {
-                break;
-            }
-        }
-        return TWO_OVER_SQRT_PI * (-x2).exp() * sum;
-    }
-    if ax > 6.0 {
-        return x.signum();
-    }
-    // erfc(x) = e^(−x²)/√π · 1/(x + (1/2)/(x + 1/(x + (3/2)/(x + 2/(x + …))))), evaluated
-    // bottom-up with enough levels for double precision at x ≥ 3.
-    let mut f = ax;
-    for k in (1..=60).rev() {
-        f = ax + (k as f64 * 0.5) / f;
-    }
-    let erfc = (-ax * ax).exp() / (f * std::f64::consts::PI.sqrt());
-    (1.0 - erfc).copysign(x)
-}
-
-/// Bessel function of the first kind, order 1: its power series up to |x| = 12, Hankel's
-/// asymptotic expansion beyond.
-fn bessel_j1(x: f64) -> f64 {
-    let ax = x.abs();
-    if ax < 12.0 {
-        // J1(x) = Σ (−1)ᵏ (x/2)^(2k+1) / (k! (k+1)!)
-        let h = 0.5 * x;
-        let q = -h * h;
-        let mut term = h;
-        let mut sum = h;
-        let mut k = 0.0;
-        loop {
-            k += 1.0;
-            term *= q / (k * (k + 1.0));
-            sum += term;
-            if term.abs() <= 1e-17 * sum.abs().max(1e-300) {
-                break;
-            }
-        }
-        return sum;
-    }
-    // J1(x) ~ √(2/(πx)) (P cos χ − Q sin χ), χ = x − 3π/4, with μ = 4.
-    let mu = 4.0;
-    let z8 = 8.0 * ax;
-    let mut p = 1.0;
-    let mut q = 0.0;
-    let mut term = 1.0;
-    let mut k = 1.0;
-    let mut best = f64::INFINITY;
-    loop {
-        let odd = 2.0 * k - 1.0;
-        term *= (mu - odd * odd) / (k * z8);
-        if term.abs() >= best {
-            break;
-        }
-        best = term.abs();
-        if (k as i32) % 2 == 1 {
-            q += if (k as i32 / 2) % 2 == 0 { term } else { -term };
-        } else {
-            p += if (k as i32 / 2) % 2 == 1 { -term } else { term };
-        }
-        if best < 1e-17 || k > 60.0 {
-            break;
-        }
-        k += 1.0;
-    }
-    let chi = ax - 0.75 * PI;
-    let v = (2.0 / (PI * ax)).sqrt() * (p * chi.cos() - q * chi.sin());
-    if x < 0.0 { -v } else { v }
-}
-
-/// Jacobi's elliptic sn(u | m) with complementary parameter `mc` = 1 − m, by the descending
-/// Landen (arithmetic–geometric mean) scheme stopped at a relative gap of 3·10⁻⁴ (at most 8
-/// steps), as Fractorium evaluates it; mc = 0 is the hyperbolic limit tanh u.
-fn jacobi_sn(u: f64, mc: f64) -> f64 {
-    if mc == 0.0 {
-        return u.tanh();
-    }
-    let tol = 0.0003;
-    let mut emc = mc;
-    let mut u = u;
-    let negative = emc < 0.0;
-    let mut d = 1.0;
-    if negative {
-        d = 1.0 - emc;
-        emc = -emc / d;
-        d = d.sqrt();
-        u *= d;
-    }
-    let mut am = [0.0; 8];
-    let mut gm = [0.0; 8];
-    let mut a = 1.0;
-    let mut dn = 1.0;
-    let mut c = 0.0;
-    let mut last = 0;
-    for i in 0..8 {
-        last = i;
-        am[i] = a;
-        emc = emc.sqrt();
-        gm[i] = emc;
-        c = 0.5 * (a + emc);
-        if (a - emc).abs() <= tol * a {
-            break;
-        }
-        emc *= a;
-        a = c;
-    }
-    u *= c;
-    let (mut sn, cn) = u.sin_cos();
-    if sn != 0.0 {
-        let mut ratio = cn / sn;
-        c *= ratio;
-        for i in (0..=last).rev() {
-            let b = am[i];
-            ratio *= c;
-            c *= dn;
-            dn = (gm[i] + ratio) / (b + ratio);
-            ratio = c / b;
-        }
-        let s = 1.0 / (c * c + 1.0).sqrt();
-        sn = if sn < 0.0 { -s } else { s };
-    }
-    if negative {
-        sn /= d;
-    }
-    sn
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -535,7 +359,8 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             let mut radius = t.sqrt;
             let theta = t.atan_xy;
             let mu = zeps(sqr(power));
-            radius += -2.0 * mu * c_int((radius + mu) / (2.0 * mu)) as f64 + radius * (1.0 - mu);
+            radius +=
+                -2.0 * mu * trunc_i32((radius + mu) / (2.0 * mu)) as f64 + radius * (1.0 - mu);
             let (s, c) = synth_sin_cos(p, radius, smooth);
             [w * s * theta, w * c * theta, 0.0]
         }
@@ -622,13 +447,7 @@ fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ch = x.cosh();
     let d = ch * s / zeps(yz_len);
     let b = sh * s / zeps(yz_len);
-    let p_mix = sh * c;
-    let q_mix = c * ch;
-    [
-        (p_mix * q_mix + d * b * yz_sq) * k,
-        (-p_mix * b * y + d * y * q_mix) * k,
-        (-p_mix * b * z + d * z * q_mix) * k,
-    ]
+    quat_mul_conj(sh * c, d, c * ch, b, y, z, k)
 }
 
 /// tanq: the tangent of the quaternion (x, y, z, 0).
@@ -642,13 +461,7 @@ fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ch = yz_len.cosh();
     let d = c * sh / zeps(yz_len);
     let b = -s * sh / zeps(yz_len);
-    let p_mix = s * ch;
-    let q_mix = c * ch;
-    [
-        (p_mix * q_mix + d * b * yz_sq) * k,
-        (-p_mix * b * y + d * y * q_mix) * k,
-        (-p_mix * b * z + d * z * q_mix) * k,
-    ]
+    quat_mul_conj(s * ch, d, c * ch, b, y, z, k)
 }
 
 /// Derived value of the target family: half the ring width.
@@ -722,7 +535,7 @@ fn tile_hlp_prep(v: &mut Prepared) {
 fn tile_hlp(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = t.x / v.p[0];
     let pos = x > 0.0;
-    let k = c_int(x) as f64;
+    let k = trunc_i32(x) as f64;
     let frac = if pos { x - k } else { x + k };
     let shift = if (frac * PI).cos() < rng.f11() {
         if pos { -v.p[1] } else { v.p[1] }
@@ -816,11 +629,11 @@ fn truchet(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let p = &v.p;
     let (size, exponent, inv_ex, abs_seed, seed2, inv_rmax, scale) =
         (p[4], p[6], p[7], p[8], p[9], p[10], p[11]);
-    let extended = c_int(p[0]) == 0 || !v.compat;
+    let extended = trunc_i32(p[0]) == 0 || !v.compat;
     let x0 = t.x * scale;
     let y0 = t.y * scale;
-    let x = cell_frac(x0, c_int(round_half_out(x0)) as f64);
-    let y = cell_frac(y0, c_int(round_half_out(y0)) as f64);
+    let x = cell_frac(x0, trunc_i32(round_half_out(x0)) as f64);
+    let y = cell_frac(y0, trunc_i32(round_half_out(y0)) as f64);
     let tile = if abs_seed == 0.0 {
         0.0
     } else if abs_seed == 1.0 {
@@ -833,8 +646,8 @@ fn truchet(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         let h = (h * 32747.0 + 12345.0) % 65535.0;
         h % 2.0
     } else {
-        let xi = c_int(round_half_out(t.x));
-        let yi = c_int(round_half_out(t.y));
+        let xi = trunc_i32(round_half_out(t.x));
+        let yi = trunc_i32(round_half_out(t.y));
         let mix = xi
             .wrapping_add(yi)
             .wrapping_add(xi.wrapping_mul(yi))
@@ -953,7 +766,7 @@ fn truchet_glyph(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     } else {
         let xr = (t.x.abs() + 0.5).floor();
         let yr = (t.y.abs() + 0.5).floor();
-        let h = shader_hash(xr, yr, seed);
+        let h = sine_hash(xr, yr, seed);
         let h = (h * 32747.0 + 12345.0) % 65535.0;
         h % 2.0
     };
@@ -1021,14 +834,11 @@ fn truchet_hex_crop(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
     let mut fy = t.y - hy;
     let mut add = 0.0;
     if seed == 1.0 {
-        if c_int(rx) & 1 == 0 && c_int(rz) & 1 == 0 {
+        if trunc_i32(rx) & 1 == 0 && trunc_i32(rz) & 1 == 0 {
             add = FRAC_PI_3;
         }
-    } else if seed >= 2.0 {
-        let h = (hx * 12.9898 + hy * 78.233 + seed).sin() * 43758.5453;
-        if fract(h) < 0.5 {
-            add = FRAC_PI_3;
-        }
+    } else if seed >= 2.0 && sine_hash(hx, hy, seed) < 0.5 {
+        add = FRAC_PI_3;
     }
     // The corner of the hexagon nearest in angle: the centre of this arc.
     let coef = 0.477464829275686; // 1.5/π
@@ -1078,14 +888,11 @@ fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
     let hy = 1.5 * rz;
     let mut add = true;
     if seed == 1.0 {
-        if c_int(rx) & 1 == 0 && c_int(rz) & 1 == 0 {
+        if trunc_i32(rx) & 1 == 0 && trunc_i32(rz) & 1 == 0 {
             add = false;
         }
-    } else if seed >= 2.0 {
-        let h = (hx * 12.9898 + hy * 78.233 + seed).sin() * 43758.5453;
-        if fract(h) < 0.5 {
-            add = false;
-        }
+    } else if seed >= 2.0 && sine_hash(hx, hy, seed) < 0.5 {
+        add = false;
     }
     let sector = (rng.f01() * n3).floor() * TAU * inv_n3;
     let ya = if flipy != 0.0 && !add { -t.y } else { t.y };
@@ -1340,24 +1147,13 @@ fn vignette(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     [px * v.w, py * v.w, 0.0]
 }
 
-/// Integer lattice noise in [0, 1] (a classic 32-bit polynomial hash).
-#[inline(always)]
-fn lattice_noise(x: i32) -> f64 {
-    let n = (x << 13) ^ x;
-    let h = n
-        .wrapping_mul(n.wrapping_mul(n).wrapping_mul(15731).wrapping_add(789221))
-        .wrapping_add(1376312589)
-        & 0x7fff_ffff;
-    h as f64 * (1.0 / 2147483647.0)
-}
-
 /// Voron: Voronoi cells of hashed seed points (1 … `Num` per grid square of side `Step`);
 /// each point is pulled toward its cell's seed, keeping the fraction K of its offset.
 fn voron(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let p = &v.p;
     let (k, step, num, xseed, yseed) = (p[0], p[1], p[2], p[3], p[4]);
-    let m = c_int((t.x / step).floor());
-    let n = c_int((t.y / step).floor());
+    let m = trunc_i32((t.x / step).floor());
+    let n = trunc_i32((t.y / step).floor());
     let mut nearest = 20.0;
     let (mut x0, mut y0) = (0.0, 0.0);
     for i in -1..2 {
@@ -1365,14 +1161,14 @@ fn voron(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         for j in -1..2 {
             let cj = n.wrapping_add(j);
             let cell = 19i32.wrapping_mul(ci).wrapping_add(257i32.wrapping_mul(cj));
-            let count = 1.0 + (num * lattice_noise(c_int(cell as f64 + xseed))).floor();
+            let count = 1.0 + (num * lattice_noise(trunc_i32(cell as f64 + xseed))).floor();
             let kx = 64 * ci as i64 + 15 * cj as i64;
             let ky = 21 * ci as i64 + 33 * cj as i64;
             let mut l = 0.0;
             while l < count {
                 let li = l as i64;
-                let sx = (lattice_noise(c_int((li + kx) as f64 + xseed)) + ci as f64) * step;
-                let sy = (lattice_noise(c_int((li + ky) as f64 + yseed)) + cj as f64) * step;
+                let sx = (lattice_noise(trunc_i32((li + kx) as f64 + xseed)) + ci as f64) * step;
+                let sy = (lattice_noise(trunc_i32((li + ky) as f64 + yseed)) + cj as f64) * step;
                 let r = (sqr(t.x - sx) + sqr(t.y - sy)).sqrt();
                 if r < nearest {
                     nearest = r;
@@ -1519,27 +1315,27 @@ fn waffle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (slices, xt, yt, sinr, cosr) = (p[0], p[1], p[2], p[4], p[5]);
     let (a, r) = match rng.below(5) {
         0 => {
-            let a = (rand_count(rng, slices) + rng.f01() * xt) / slices;
-            let r = (rand_count(rng, slices) + rng.f01() * yt) / slices;
+            let a = (rand_size(rng, slices) + rng.f01() * xt) / slices;
+            let r = (rand_size(rng, slices) + rng.f01() * yt) / slices;
             (a, r)
         }
         1 => {
-            let a = (rand_count(rng, slices) + rng.f01()) / slices;
-            let r = (rand_count(rng, slices) + yt) / slices;
+            let a = (rand_size(rng, slices) + rng.f01()) / slices;
+            let r = (rand_size(rng, slices) + yt) / slices;
             (a, r)
         }
         2 => {
-            let a = (rand_count(rng, slices) + xt) / slices;
-            let r = (rand_count(rng, slices) + rng.f01()) / slices;
+            let a = (rand_size(rng, slices) + xt) / slices;
+            let r = (rand_size(rng, slices) + rng.f01()) / slices;
             (a, r)
         }
         3 => {
             let a = rng.f01();
-            let r = (rand_count(rng, slices) + yt + rng.f01() * (1.0 - yt)) / slices;
+            let r = (rand_size(rng, slices) + yt + rng.f01() * (1.0 - yt)) / slices;
             (a, r)
         }
         _ => {
-            let a = (rand_count(rng, slices) + xt + rng.f01() * (1.0 - xt)) / slices;
+            let a = (rand_size(rng, slices) + xt + rng.f01() * (1.0 - xt)) / slices;
             (a, rng.f01())
         }
     };
@@ -1551,8 +1347,8 @@ fn waffle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 fn waves22(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let p = &v.p;
     let (scx, scy, fx, fy, modex, modey) = (p[0], p[1], p[2], p[3], p[4], p[5]);
-    let px = c_int(p[6]) as f64;
-    let py = c_int(p[7]) as f64;
+    let px = trunc_i32(p[6]) as f64;
+    let py = trunc_i32(p[7]) as f64;
     let sx = if modex < 0.5 {
         (t.y * fx).sin()
     } else {
@@ -1682,7 +1478,7 @@ fn waves4_prep(v: &mut Prepared) {
 #[inline(always)]
 fn band_amp(band: f64, y: f64, yfact: f64, cont: f64) -> f64 {
     let h = (band * 12.9898 + band * 78.233 + 1.0 + y * yfact).sin() * 43758.5453;
-    let h = h - c_int(h) as f64;
+    let h = h - trunc_i32(h) as f64;
     if cont == 1.0 {
         if h > 0.5 { 1.0 } else { 0.0 }
     } else {
@@ -1721,7 +1517,7 @@ fn wavesn_prep(v: &mut Prepared) {
     if power == 0.0 {
         power = 2.0;
     }
-    let roots = c_int(power.abs()) as f64;
+    let roots = trunc_i32(power.abs()) as f64;
     v.p.extend_from_slice(&[power, roots, 1.0 / power / 2.0]);
 }
 
@@ -1730,7 +1526,7 @@ fn wavesn_prep(v: &mut Prepared) {
 fn wavesn(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let p = &v.p;
     let (power, roots, cn) = (p[7], p[8], p[9]);
-    let angle = (t.atan_yx + TAU * rand_count(rng, roots)) / power;
+    let angle = (t.atan_yx + TAU * rand_size(rng, roots)) / power;
     let r = v.w * t.sumsq.powf(cn);
     let (sa, ca) = angle.sin_cos();
     let ux = r * ca;
@@ -1858,7 +1654,7 @@ fn xtrb_prep(v: &mut Prepared) {
         2.0 * width,
         1.0 - width * width,
         power,
-        c_int(power.abs()) as f64,
+        trunc_i32(power.abs()) as f64,
         dist / power / 2.0,
     ]);
 }
@@ -1958,7 +1754,7 @@ fn xtrb(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     // Back to the plane, then the power map.
     let ix = (be - radius + (al - radius) * cosc) / sinc;
     let iy = al - radius;
-    let angle = (iy.atan2(ix) + TAU * rand_count(rng, p[XT_ROOTS])) / p[XT_POWER];
+    let angle = (iy.atan2(ix) + TAU * rand_size(rng, p[XT_ROOTS])) / p[XT_POWER];
     let r = v.w * (sqr(ix) + sqr(iy)).powf(p[XT_CN]);
     let (s, c) = angle.sin_cos();
     [v.w * (r * c), v.w * (r * s), 0.0]
@@ -1997,108 +1793,57 @@ fn ztranslate(v: &Prepared, _: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 // ---------------------------------------------------------------------------------------------
 // Registry entries.
 
-const SHAPE_X: &[Param] = &[
-    p("x_hypergon", 0.0),
-    p_int("x_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("x_hypergon_r", 1.0),
-    p("x_star", 0.0),
-    p_int("x_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("x_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("x_lituus", 0.0),
-    p("x_lituus_a", 1.0),
-    p("x_super", 0.0),
-    p("x_super_m", 1.0),
-    p("x_super_n1", 1.0),
-    p("x_super_n2", 1.0),
-    p("x_super_n3", 1.0),
-];
+/// The thirteen shape parameters of the w/x/y/z family, `PREFIX_hypergon` … `PREFIX_super_n3`,
+/// after any leading ones given.
+macro_rules! shape_params {
+    ($pre:literal $(, $lead:expr)*) => {
+        &[
+            $($lead,)*
+            p(concat!($pre, "_hypergon"), 0.0),
+            p_int(concat!($pre, "_hypergon_n"), 4.0, 3.0, f64::INFINITY),
+            p(concat!($pre, "_hypergon_r"), 1.0),
+            p(concat!($pre, "_star"), 0.0),
+            p_int(concat!($pre, "_star_n"), 5.0, 3.0, f64::INFINITY),
+            p_range(concat!($pre, "_star_slope"), 2.0, f64::EPSILON, FRAC_PI_2),
+            p(concat!($pre, "_lituus"), 0.0),
+            p(concat!($pre, "_lituus_a"), 1.0),
+            p(concat!($pre, "_super"), 0.0),
+            p(concat!($pre, "_super_m"), 1.0),
+            p(concat!($pre, "_super_n1"), 1.0),
+            p(concat!($pre, "_super_n2"), 1.0),
+            p(concat!($pre, "_super_n3"), 1.0),
+        ]
+    };
+}
 
-const SHAPE_Y: &[Param] = &[
-    p("y_hypergon", 0.0),
-    p_int("y_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("y_hypergon_r", 1.0),
-    p("y_star", 0.0),
-    p_int("y_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("y_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("y_lituus", 0.0),
-    p("y_lituus_a", 1.0),
-    p("y_super", 0.0),
-    p("y_super_m", 1.0),
-    p("y_super_n1", 1.0),
-    p("y_super_n2", 1.0),
-    p("y_super_n3", 1.0),
-];
+const SHAPE_X: &[Param] = shape_params!("x");
+const SHAPE_Y: &[Param] = shape_params!("y");
+const SHAPE_Z: &[Param] = shape_params!("z");
+const SHAPE_W: &[Param] = shape_params!("w", p_cyclic("w_angle", 0.0, -PI, PI));
 
-const SHAPE_Z: &[Param] = &[
-    p("z_hypergon", 0.0),
-    p_int("z_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("z_hypergon_r", 1.0),
-    p("z_star", 0.0),
-    p_int("z_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("z_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("z_lituus", 0.0),
-    p("z_lituus_a", 1.0),
-    p("z_super", 0.0),
-    p("z_super_m", 1.0),
-    p("z_super_n1", 1.0),
-    p("z_super_n2", 1.0),
-    p("z_super_n3", 1.0),
-];
+/// synth's parameters: five global ones, then six per wave layer (`synth_L`, `_type`, `_skew`,
+/// `_frq`, `_phs`, `_layer`) for the layers named.
+macro_rules! synth_params {
+    ($($layer:literal),*) => {
+        &[
+            p("synth_a", 0.0),
+            p_int("synth_mode", 3.0, 0.0, 26.0),
+            p("synth_power", -2.0),
+            p("synth_mix", 0.0),
+            p_int("synth_smooth", 0.0, 0.0, 1.0),
+            $(
+                p(concat!("synth_", $layer), 0.0),
+                p_int(concat!("synth_", $layer, "_type"), 0.0, 0.0, 8.0),
+                p(concat!("synth_", $layer, "_skew"), 0.0),
+                p(concat!("synth_", $layer, "_frq"), 1.0),
+                p(concat!("synth_", $layer, "_phs"), 0.0),
+                p_int(concat!("synth_", $layer, "_layer"), 0.0, 0.0, 3.0),
+            )*
+        ]
+    };
+}
 
-const SHAPE_W: &[Param] = &[
-    p_cyclic("w_angle", 0.0, -PI, PI),
-    p("w_hypergon", 0.0),
-    p_int("w_hypergon_n", 4.0, 3.0, f64::INFINITY),
-    p("w_hypergon_r", 1.0),
-    p("w_star", 0.0),
-    p_int("w_star_n", 5.0, 3.0, f64::INFINITY),
-    p_range("w_star_slope", 2.0, f64::EPSILON, FRAC_PI_2),
-    p("w_lituus", 0.0),
-    p("w_lituus_a", 1.0),
-    p("w_super", 0.0),
-    p("w_super_m", 1.0),
-    p("w_super_n1", 1.0),
-    p("w_super_n2", 1.0),
-    p("w_super_n3", 1.0),
-];
-
-const SYNTH_PARAMS: &[Param] = &[
-    p("synth_a", 0.0),
-    p_int("synth_mode", 3.0, 0.0, 26.0),
-    p("synth_power", -2.0),
-    p("synth_mix", 0.0),
-    p_int("synth_smooth", 0.0, 0.0, 1.0),
-    p("synth_b", 0.0),
-    p_int("synth_b_type", 0.0, 0.0, 8.0),
-    p("synth_b_skew", 0.0),
-    p("synth_b_frq", 1.0),
-    p("synth_b_phs", 0.0),
-    p_int("synth_b_layer", 0.0, 0.0, 3.0),
-    p("synth_c", 0.0),
-    p_int("synth_c_type", 0.0, 0.0, 8.0),
-    p("synth_c_skew", 0.0),
-    p("synth_c_frq", 1.0),
-    p("synth_c_phs", 0.0),
-    p_int("synth_c_layer", 0.0, 0.0, 3.0),
-    p("synth_d", 0.0),
-    p_int("synth_d_type", 0.0, 0.0, 8.0),
-    p("synth_d_skew", 0.0),
-    p("synth_d_frq", 1.0),
-    p("synth_d_phs", 0.0),
-    p_int("synth_d_layer", 0.0, 0.0, 3.0),
-    p("synth_e", 0.0),
-    p_int("synth_e_type", 0.0, 0.0, 8.0),
-    p("synth_e_skew", 0.0),
-    p("synth_e_frq", 1.0),
-    p("synth_e_phs", 0.0),
-    p_int("synth_e_layer", 0.0, 0.0, 3.0),
-    p("synth_f", 0.0),
-    p_int("synth_f_type", 0.0, 0.0, 8.0),
-    p("synth_f_skew", 0.0),
-    p("synth_f_frq", 1.0),
-    p("synth_f_phs", 0.0),
-    p_int("synth_f_layer", 0.0, 0.0, 3.0),
-];
+const SYNTH_PARAMS: &[Param] = synth_params!("b", "c", "d", "e", "f");
 
 const POLAR_NEEDS: u8 = need::SUMSQ | need::SQRT | need::ATAN_YX;
 

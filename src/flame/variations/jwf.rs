@@ -10,7 +10,7 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_4, PI, TAU};
 
-use super::util::sqr;
+use super::util::{Mwc, atan2_approx, signum_java, sqr, wang_hash};
 use super::{Acc, Prepared, V3, VarDef, VarIn, flag, need, p, p_int, p_int_nonzero, p_range};
 use crate::flame::rng::FastRng;
 
@@ -252,7 +252,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("snowflake_wf_dc_color_offset", 0.1),
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::SETS_COLOR)
-        .prepare(snowflake_prepare),
+        .shared(&[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10], snowflake_points),
     VarDef::new("polarplot3d_wf", polarplot3d_wf)
         .params(&[
             p_int("polarplot3d_wf_preset_id", 2.0, NINF, INF),
@@ -309,7 +309,10 @@ pub(super) static DEFS: &[VarDef] = &[
             p_int("knots3D_receive_only_shadows", 0.0, 0.0, 1.0),
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z)
-        .prepare(knots3d_prepare),
+        .shared(
+            &[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17],
+            knots3d_faces,
+        ),
 ];
 
 // ---------------------------------------------------------------------------------------------
@@ -526,16 +529,6 @@ fn glitchy1_prepare(v: &mut Prepared) {
     v.p.push(a.cos());
 }
 
-/// Bob Jenkins' 32-bit integer mix, scaled to about [-1, 1].
-fn jenkins_hash(a: i32) -> f64 {
-    let mut a = (a ^ 61) ^ (a >> 16);
-    a = a.wrapping_add(a << 3);
-    a ^= a >> 4;
-    a = a.wrapping_mul(0x27d4_eb2d);
-    a ^= a >> 15;
-    a as f64 / i32::MAX as f64
-}
-
 /// Mirrors `c` about `shift` in every `n`-th band of width 1/scale (glitchy1's folding).
 fn glitch_fold(c: f64, scale: f64, shift: f64, n: f64) -> f64 {
     if scale == 0.0 {
@@ -564,12 +557,12 @@ fn glitchy1(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let ww = q[14] * (k * uu - h * t.y);
     let block = |c: f64| -> i32 {
         let b = (c * width).floor() as i32;
-        (b as f64 + (2.0 - 4.0 * jenkins_hash(b.wrapping_mul(seed).wrapping_add(1)))) as i32
+        (b as f64 + (2.0 - 4.0 * wang_hash(b.wrapping_mul(seed).wrapping_add(1)))) as i32
     };
     let (bu, bv, bw) = (block(uu), block(vv), block(ww));
     let base = bu.wrapping_add(bv);
-    let len = jenkins_hash(base.wrapping_add(bw.wrapping_mul(seed.wrapping_neg())))
-        + jenkins_hash(base.wrapping_add(bw.wrapping_mul(seed) / 2));
+    let len = wang_hash(base.wrapping_add(bw.wrapping_mul(seed.wrapping_neg())))
+        + wang_hash(base.wrapping_add(bw.wrapping_mul(seed) / 2));
     let s = v.w * len;
     [s * x, s * y, s * z]
 }
@@ -724,17 +717,6 @@ fn crop_stars_prepare(v: &mut Prepared) {
     v.p.extend_from_slice(&[an, acos, asin, ecos, esin, radius * asin / esin]);
 }
 
-/// The fast atan2 approximation JWildfire's GLSL helpers use (error up to about 0.07 rad).
-fn atan2_approx(y: f64, x: f64) -> f64 {
-    let ay = y.abs();
-    let a = if x >= 0.0 {
-        FRAC_PI_4 - FRAC_PI_4 * ((x - ay) / (x + ay))
-    } else {
-        3.0 * FRAC_PI_4 - FRAC_PI_4 * ((x + ay) / (ay - x))
-    };
-    if y < 0.0 { -a } else { a }
-}
-
 /// crop_stars: keeps the points inside a star (n points, outer radius `radius`, inner angle set
 /// by r2) and sends the others to the origin (`invert` swaps inside and outside). It replaces
 /// the xform's sum so far, as JWildfire's crop variations do.
@@ -766,17 +748,6 @@ fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
         [v.w * t.x, v.w * t.y, 0.0]
     } else {
         [0.0, 0.0, 0.0]
-    }
-}
-
-/// Java's `Math.signum`: 0 for ±0 (and NaN for NaN).
-fn signum_java(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        x
     }
 }
 
@@ -1048,29 +1019,6 @@ fn nsudoku(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 // ---------------------------------------------------------------------------------------------
 // snowflake_wf
 
-/// George Marsaglia's multiply-with-carry pair, as JWildfire seeds and scales it.
-struct Marsaglia {
-    u: i32,
-    v: i32,
-}
-
-impl Marsaglia {
-    fn new(seed: i64) -> Self {
-        let s = (seed << 16) as i32;
-        Marsaglia { u: s, v: s >> 16 }
-    }
-    fn next(&mut self) -> f64 {
-        self.v = 36969i32
-            .wrapping_mul(self.v & 65535)
-            .wrapping_add(self.v >> 16);
-        self.u = 18000i32
-            .wrapping_mul(self.u & 65535)
-            .wrapping_add(self.u >> 16);
-        let r = (self.v << 16).wrapping_add(self.u);
-        (r as f64 * (1.0 / i32::MAX as f64)).abs()
-    }
-}
-
 /// Ratio JWildfire uses to lay the hexagonal grid out on a square canvas.
 const SNOW_STRETCH: f64 = 1.5 / 1.7321;
 
@@ -1088,9 +1036,9 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
         let m = n as i64 + offsets[k];
         (m >= 0 && m < ci).then_some(m as usize)
     };
-    let mut rnd = Marsaglia::new(q[8] as i64);
+    let mut rnd = Mwc::new(q[8] as i64);
     let mut field: Vec<f64> = (0..cells)
-        .map(|_| bg + (noise - 2.0 * noise * rnd.next()))
+        .map(|_| bg + (noise - 2.0 * noise * rnd.next_f64()))
         .collect();
     field[cells / 2] = 1.0;
     let mut diffusing = vec![0.0; cells];
@@ -1153,22 +1101,20 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
     canvas
 }
 
-/// Offset in `v.p` of snowflake_wf's point list (count, then x, y, intensity per point).
-const SNOW_POINTS: usize = 14;
-
-fn snowflake_prepare(v: &mut Prepared) {
-    let canvas = snow_crystal(&v.p);
-    let (scale, jitter) = (v.p[9], v.p[10].clamp(0.0, 1.0));
-    let mut rnd = Marsaglia::new(v.p[8] as i64);
-    let count_at = v.p.len();
-    v.p.push(0.0);
+/// snowflake_wf's shared data: the count of points, then x, y and intensity per point (from
+/// parameters 0–10: the crystal's growth, its seed, scale and jitter).
+fn snowflake_points(q: &[f64]) -> Vec<f64> {
+    let canvas = snow_crystal(q);
+    let (scale, jitter) = (q[9], q[10].clamp(0.0, 1.0));
+    let mut rnd = Mwc::new(q[8] as i64);
+    let mut out = vec![0.0];
     let rows = canvas.len() as f64;
     let mut count = 0;
     for (i, row) in canvas.iter().enumerate() {
         let cols = row.len() as f64;
         for (j, &val) in row.iter().enumerate() {
             // The jitter draw happens for every cell so that growth keeps earlier points fixed.
-            let a = if jitter > 1e-8 { rnd.next() } else { 0.0 };
+            let a = if jitter > 1e-8 { rnd.next_f64() } else { 0.0 };
             if (val as f64) > 1e-8 {
                 let mut x = (i as f64 - rows * 0.5) * scale / rows;
                 let mut y = (j as f64 - cols * 0.5) * scale / cols * SNOW_STRETCH;
@@ -1177,26 +1123,27 @@ fn snowflake_prepare(v: &mut Prepared) {
                     x += jitter * c;
                     y += jitter * s;
                 }
-                v.p.extend_from_slice(&[x, y, val as f64]);
+                out.extend_from_slice(&[x, y, val as f64]);
                 count += 1;
             }
         }
     }
-    v.p[count_at] = count as f64;
+    out[0] = count as f64;
+    out
 }
 
 /// snowflake_wf: a random cell of a simulated snow crystal (Reiter's cellular growth model);
 /// with `dc_color` the colour follows the cell's frozen amount (the input point is ignored).
 fn snowflake_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let count = q[SNOW_POINTS] as usize;
+    let (q, pts) = (&v.p, v.data());
+    let count = pts[0] as usize;
     // With fewer than two cells JWildfire falls back to the origin with intensity 0.
     let pt = if count < 2 {
         &[0.0; 3][..]
     } else {
         // JWildfire rounds to the nearest index, so the first and last cells are half as likely.
         let k = (rng.f01() * (count - 1) as f64 + 0.5) as usize;
-        &q[SNOW_POINTS + 1 + 3 * k..]
+        &pts[1 + 3 * k..]
     };
     if q[11] > 0.0 {
         acc.color = pt[2] * q[12] + q[13];
@@ -1267,8 +1214,25 @@ fn polarplot3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) ->
 // ---------------------------------------------------------------------------------------------
 // knots3D
 
-/// One term c·cos(k·t) (c·sin(k·t) when the flag is set) of a Fourier knot coordinate.
-type KnotTerm = (f64, f64, bool);
+/// The function of a Fourier knot term.
+#[derive(Clone, Copy)]
+enum Trig {
+    Cos,
+    Sin,
+}
+use Trig::{Cos, Sin};
+
+impl Trig {
+    fn of(self, a: f64) -> f64 {
+        match self {
+            Cos => a.cos(),
+            Sin => a.sin(),
+        }
+    }
+}
+
+/// One term c·cos(k·t) or c·sin(k·t) of a Fourier knot coordinate: (c, k, function).
+type KnotTerm = (i16, u8, Trig);
 
 enum KnotCurve {
     /// x, y and z as sums of terms.
@@ -1280,610 +1244,147 @@ enum KnotCurve {
 }
 
 /// knots3D's stock curves, by preset id (JWildfire's knots3d_wf presets 0-23): Fourier sums
-/// Σ c·cos(k·t) / c·sin(k·t) per axis, torus knots and Lissajous knots.
+/// Σ c·cos(k·t) / c·sin(k·t) per axis (terms (c, k, Cos|Sin)), torus knots and Lissajous knots.
+#[rustfmt::skip]
 static KNOT_CURVES: [KnotCurve; 24] = [
     KnotCurve::Fourier([
-        &[(-10.0, 1.0, false), (-2.0, 5.0, false), (15.0, 2.0, true)],
-        &[(-15.0, 2.0, false), (10.0, 1.0, true), (-2.0, 5.0, true)],
-        &[(10.0, 3.0, false)],
+        &[(-10, 1, Cos), (-2, 5, Cos), (15, 2, Sin)],
+        &[(-15, 2, Cos), (10, 1, Sin), (-2, 5, Sin)],
+        &[(10, 3, Cos)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-22.0, 1.0, false),
-            (-128.0, 1.0, true),
-            (-44.0, 3.0, false),
-            (-78.0, 3.0, true),
-        ],
-        &[
-            (-10.0, 2.0, false),
-            (-27.0, 2.0, true),
-            (38.0, 4.0, false),
-            (46.0, 4.0, true),
-        ],
-        &[(70.0, 3.0, false), (-40.0, 3.0, true)],
+        &[(-22, 1, Cos), (-128, 1, Sin), (-44, 3, Cos), (-78, 3, Sin)],
+        &[(-10, 2, Cos), (-27, 2, Sin), (38, 4, Cos), (46, 4, Sin)],
+        &[(70, 3, Cos), (-40, 3, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-22.0, 1.0, false),
-            (-128.0, 1.0, true),
-            (-44.0, 3.0, false),
-            (-78.0, 3.0, true),
-        ],
-        &[
-            (11.0, 1.0, false),
-            (-43.0, 3.0, false),
-            (34.0, 5.0, false),
-            (-39.0, 5.0, true),
-        ],
-        &[
-            (70.0, 3.0, false),
-            (-40.0, 3.0, true),
-            (8.0, 5.0, false),
-            (-9.0, 5.0, true),
-        ],
+        &[(-22, 1, Cos), (-128, 1, Sin), (-44, 3, Cos), (-78, 3, Sin)],
+        &[(11, 1, Cos), (-43, 3, Cos), (34, 5, Cos), (-39, 5, Sin)],
+        &[(70, 3, Cos), (-40, 3, Sin), (8, 5, Cos), (-9, 5, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[(10.0, 1.0, false), (10.0, 3.0, false)],
-        &[(6.0, 1.0, true), (10.0, 3.0, true)],
-        &[(4.0, 3.0, true), (-10.0, 6.0, true)],
+        &[(10, 1, Cos), (10, 3, Cos)],
+        &[(6, 1, Sin), (10, 3, Sin)],
+        &[(4, 3, Sin), (-10, 6, Sin)],
     ]),
     KnotCurve::Torus,
     KnotCurve::Torus,
     KnotCurve::Fourier([
-        &[
-            (41.0, 1.0, false),
-            (-18.0, 1.0, true),
-            (-83.0, 2.0, false),
-            (-83.0, 2.0, true),
-            (-11.0, 3.0, false),
-            (27.0, 3.0, true),
-        ],
-        &[
-            (6.0, 1.0, false),
-            (27.0, 1.0, true),
-            (-113.0, 2.0, false),
-            (30.0, 2.0, true),
-            (11.0, 3.0, false),
-            (-27.0, 3.0, true),
-        ],
-        &[
-            (45.0, 1.0, true),
-            (-30.0, 2.0, false),
-            (113.0, 2.0, true),
-            (-11.0, 3.0, false),
-            (27.0, 3.0, true),
-        ],
+        &[(41, 1, Cos), (-18, 1, Sin), (-83, 2, Cos), (-83, 2, Sin), (-11, 3, Cos), (27, 3, Sin)],
+        &[(6, 1, Cos), (27, 1, Sin), (-113, 2, Cos), (30, 2, Sin), (11, 3, Cos), (-27, 3, Sin)],
+        &[(45, 1, Sin), (-30, 2, Cos), (113, 2, Sin), (-11, 3, Cos), (27, 3, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (32.0, 1.0, false),
-            (-51.0, 1.0, true),
-            (-104.0, 2.0, false),
-            (-34.0, 2.0, true),
-            (104.0, 3.0, false),
-            (-91.0, 3.0, true),
-        ],
-        &[
-            (94.0, 1.0, false),
-            (41.0, 1.0, true),
-            (113.0, 2.0, false),
-            (-68.0, 3.0, false),
-            (-124.0, 3.0, true),
-        ],
-        &[
-            (16.0, 1.0, false),
-            (73.0, 1.0, true),
-            (-211.0, 2.0, false),
-            (-39.0, 2.0, true),
-            (-99.0, 3.0, false),
-            (-21.0, 3.0, true),
-        ],
+        &[(32, 1, Cos), (-51, 1, Sin), (-104, 2, Cos), (-34, 2, Sin), (104, 3, Cos), (-91, 3, Sin)],
+        &[(94, 1, Cos), (41, 1, Sin), (113, 2, Cos), (-68, 3, Cos), (-124, 3, Sin)],
+        &[(16, 1, Cos), (73, 1, Sin), (-211, 2, Cos), (-39, 2, Sin), (-99, 3, Cos), (-21, 3, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (88.0, 1.0, false),
-            (115.0, 1.0, true),
-            (-475.0, 2.0, false),
-            (-127.0, 2.0, true),
-            (-87.0, 3.0, false),
-            (36.0, 3.0, true),
-            (11.0, 4.0, false),
-            (-19.0, 4.0, true),
-        ],
-        &[
-            (89.0, 1.0, false),
-            (-32.0, 1.0, true),
-            (-172.0, 2.0, false),
-            (294.0, 2.0, true),
-            (76.0, 3.0, false),
-            (102.0, 3.0, true),
-            (-61.0, 4.0, false),
-            (113.0, 4.0, true),
-        ],
-        &[
-            (44.0, 1.0, false),
-            (-69.0, 1.0, true),
-            (34.0, 2.0, false),
-            (223.0, 2.0, true),
-            (16.0, 3.0, false),
-            (120.0, 3.0, true),
-            (42.0, 4.0, false),
-            (-125.0, 4.0, true),
-        ],
+        &[(88, 1, Cos), (115, 1, Sin), (-475, 2, Cos), (-127, 2, Sin), (-87, 3, Cos), (36, 3, Sin),
+          (11, 4, Cos), (-19, 4, Sin)],
+        &[(89, 1, Cos), (-32, 1, Sin), (-172, 2, Cos), (294, 2, Sin), (76, 3, Cos), (102, 3, Sin),
+          (-61, 4, Cos), (113, 4, Sin)],
+        &[(44, 1, Cos), (-69, 1, Sin), (34, 2, Cos), (223, 2, Sin), (16, 3, Cos), (120, 3, Sin),
+          (42, 4, Cos), (-125, 4, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-33.0, 1.0, false),
-            (43.0, 1.0, true),
-            (214.0, 2.0, true),
-            (-101.0, 3.0, false),
-            (-47.0, 3.0, true),
-            (11.0, 4.0, true),
-        ],
-        &[
-            (-57.0, 1.0, false),
-            (99.0, 1.0, true),
-            (-54.0, 2.0, false),
-            (-159.0, 2.0, true),
-            (-117.0, 3.0, false),
-            (-5.0, 3.0, true),
-            (-31.0, 4.0, false),
-            (-45.0, 4.0, true),
-        ],
-        &[
-            (34.0, 1.0, false),
-            (-21.0, 1.0, true),
-            (-100.0, 2.0, false),
-            (-93.0, 2.0, true),
-            (-27.0, 3.0, false),
-            (-16.0, 3.0, true),
-            (52.0, 4.0, false),
-            (84.0, 4.0, true),
-        ],
+        &[(-33, 1, Cos), (43, 1, Sin), (214, 2, Sin), (-101, 3, Cos), (-47, 3, Sin), (11, 4, Sin)],
+        &[(-57, 1, Cos), (99, 1, Sin), (-54, 2, Cos), (-159, 2, Sin), (-117, 3, Cos), (-5, 3, Sin),
+          (-31, 4, Cos), (-45, 4, Sin)],
+        &[(34, 1, Cos), (-21, 1, Sin), (-100, 2, Cos), (-93, 2, Sin), (-27, 3, Cos), (-16, 3, Sin),
+          (52, 4, Cos), (84, 4, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (12.0, 1.0, false),
-            (20.0, 1.0, true),
-            (-163.0, 2.0, false),
-            (76.0, 2.0, true),
-            (-87.0, 3.0, false),
-            (-15.0, 3.0, true),
-            (-21.0, 4.0, false),
-            (14.0, 4.0, true),
-            (24.0, 5.0, false),
-            (-50.0, 5.0, true),
-        ],
-        &[
-            (29.0, 1.0, false),
-            (78.0, 1.0, true),
-            (-180.0, 2.0, false),
-            (58.0, 2.0, true),
-            (88.0, 3.0, false),
-            (72.0, 3.0, true),
-            (-14.0, 4.0, true),
-        ],
-        &[
-            (-30.0, 1.0, false),
-            (-78.0, 1.0, true),
-            (-111.0, 2.0, false),
-            (37.0, 2.0, true),
-            (-67.0, 3.0, false),
-            (-51.0, 3.0, true),
-            (31.0, 4.0, false),
-            (8.0, 4.0, true),
-            (-11.0, 5.0, false),
-            (65.0, 5.0, true),
-        ],
+        &[(12, 1, Cos), (20, 1, Sin), (-163, 2, Cos), (76, 2, Sin), (-87, 3, Cos), (-15, 3, Sin),
+          (-21, 4, Cos), (14, 4, Sin), (24, 5, Cos), (-50, 5, Sin)],
+        &[(29, 1, Cos), (78, 1, Sin), (-180, 2, Cos), (58, 2, Sin), (88, 3, Cos), (72, 3, Sin),
+          (-14, 4, Sin)],
+        &[(-30, 1, Cos), (-78, 1, Sin), (-111, 2, Cos), (37, 2, Sin), (-67, 3, Cos), (-51, 3, Sin),
+          (31, 4, Cos), (8, 4, Sin), (-11, 5, Cos), (65, 5, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-6.0, 1.0, false),
-            (-21.0, 1.0, true),
-            (-195.0, 2.0, false),
-            (92.0, 2.0, true),
-            (-64.0, 3.0, false),
-            (-23.0, 3.0, true),
-            (-6.0, 4.0, false),
-            (13.0, 4.0, true),
-            (24.0, 5.0, false),
-            (15.0, 5.0, true),
-            (41.0, 6.0, true),
-        ],
-        &[
-            (-21.0, 1.0, false),
-            (-24.0, 1.0, true),
-            (-207.0, 2.0, false),
-            (-72.0, 2.0, true),
-            (112.0, 3.0, false),
-            (-7.0, 3.0, true),
-            (-13.0, 4.0, false),
-            (-40.0, 4.0, true),
-            (-27.0, 5.0, false),
-            (-3.0, 5.0, true),
-            (-17.0, 6.0, false),
-        ],
-        &[
-            (-18.0, 1.0, false),
-            (-13.0, 1.0, true),
-            (113.0, 2.0, false),
-            (-107.0, 2.0, true),
-            (86.0, 3.0, false),
-            (-9.0, 3.0, true),
-            (-26.0, 4.0, false),
-            (-7.0, 4.0, true),
-            (24.0, 5.0, false),
-            (33.0, 5.0, true),
-            (21.0, 6.0, false),
-            (31.0, 6.0, true),
-        ],
+        &[(-6, 1, Cos), (-21, 1, Sin), (-195, 2, Cos), (92, 2, Sin), (-64, 3, Cos), (-23, 3, Sin),
+          (-6, 4, Cos), (13, 4, Sin), (24, 5, Cos), (15, 5, Sin), (41, 6, Sin)],
+        &[(-21, 1, Cos), (-24, 1, Sin), (-207, 2, Cos), (-72, 2, Sin), (112, 3, Cos), (-7, 3, Sin),
+          (-13, 4, Cos), (-40, 4, Sin), (-27, 5, Cos), (-3, 5, Sin), (-17, 6, Cos)],
+        &[(-18, 1, Cos), (-13, 1, Sin), (113, 2, Cos), (-107, 2, Sin), (86, 3, Cos), (-9, 3, Sin),
+          (-26, 4, Cos), (-7, 4, Sin), (24, 5, Cos), (33, 5, Sin), (21, 6, Cos), (31, 6, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-40.0, 1.0, false),
-            (32.0, 1.0, true),
-            (69.0, 2.0, false),
-            (-12.0, 2.0, true),
-            (120.0, 3.0, false),
-            (-52.0, 3.0, true),
-            (-56.0, 4.0, false),
-            (46.0, 4.0, true),
-            (-17.0, 5.0, true),
-            (14.0, 6.0, false),
-            (19.0, 6.0, true),
-        ],
-        &[
-            (90.0, 1.0, false),
-            (89.0, 1.0, true),
-            (-142.0, 2.0, false),
-            (147.0, 2.0, true),
-            (74.0, 3.0, false),
-            (85.0, 3.0, true),
-            (-56.0, 4.0, true),
-            (23.0, 5.0, false),
-            (16.0, 6.0, false),
-            (7.0, 6.0, true),
-        ],
-        &[
-            (52.0, 1.0, false),
-            (64.0, 1.0, true),
-            (53.0, 2.0, false),
-            (35.0, 2.0, true),
-            (77.0, 3.0, false),
-            (-87.0, 3.0, true),
-            (101.0, 4.0, false),
-            (-19.0, 4.0, true),
-            (-5.0, 5.0, false),
-            (2.0, 5.0, true),
-            (3.0, 6.0, false),
-            (9.0, 6.0, true),
-        ],
+        &[(-40, 1, Cos), (32, 1, Sin), (69, 2, Cos), (-12, 2, Sin), (120, 3, Cos), (-52, 3, Sin),
+          (-56, 4, Cos), (46, 4, Sin), (-17, 5, Sin), (14, 6, Cos), (19, 6, Sin)],
+        &[(90, 1, Cos), (89, 1, Sin), (-142, 2, Cos), (147, 2, Sin), (74, 3, Cos), (85, 3, Sin),
+          (-56, 4, Sin), (23, 5, Cos), (16, 6, Cos), (7, 6, Sin)],
+        &[(52, 1, Cos), (64, 1, Sin), (53, 2, Cos), (35, 2, Sin), (77, 3, Cos), (-87, 3, Sin),
+          (101, 4, Cos), (-19, 4, Sin), (-5, 5, Cos), (2, 5, Sin), (3, 6, Cos), (9, 6, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (54.0, 1.0, false),
-            (-4.0, 1.0, true),
-            (-239.0, 2.0, false),
-            (-44.0, 2.0, true),
-            (-45.0, 3.0, false),
-            (-17.0, 3.0, true),
-            (-33.0, 4.0, false),
-            (-27.0, 4.0, true),
-            (19.0, 5.0, false),
-            (19.0, 5.0, true),
-            (-8.0, 6.0, false),
-            (15.0, 6.0, true),
-        ],
-        &[
-            (-16.0, 1.0, false),
-            (-43.0, 1.0, true),
-            (11.0, 2.0, false),
-            (170.0, 2.0, true),
-            (-22.0, 3.0, false),
-            (41.0, 3.0, true),
-            (21.0, 4.0, false),
-            (2.0, 5.0, false),
-            (-12.0, 5.0, true),
-            (-43.0, 6.0, false),
-            (26.0, 6.0, true),
-        ],
-        &[
-            (-55.0, 1.0, true),
-            (-78.0, 2.0, false),
-            (189.0, 2.0, true),
-            (-38.0, 3.0, false),
-            (41.0, 3.0, true),
-            (10.0, 4.0, false),
-            (-16.0, 4.0, true),
-            (-38.0, 5.0, false),
-            (18.0, 5.0, true),
-            (22.0, 6.0, false),
-            (-15.0, 6.0, true),
-        ],
+        &[(54, 1, Cos), (-4, 1, Sin), (-239, 2, Cos), (-44, 2, Sin), (-45, 3, Cos), (-17, 3, Sin),
+          (-33, 4, Cos), (-27, 4, Sin), (19, 5, Cos), (19, 5, Sin), (-8, 6, Cos), (15, 6, Sin)],
+        &[(-16, 1, Cos), (-43, 1, Sin), (11, 2, Cos), (170, 2, Sin), (-22, 3, Cos), (41, 3, Sin),
+          (21, 4, Cos), (2, 5, Cos), (-12, 5, Sin), (-43, 6, Cos), (26, 6, Sin)],
+        &[(-55, 1, Sin), (-78, 2, Cos), (189, 2, Sin), (-38, 3, Cos), (41, 3, Sin), (10, 4, Cos),
+          (-16, 4, Sin), (-38, 5, Cos), (18, 5, Sin), (22, 6, Cos), (-15, 6, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (10.0, 1.0, false),
-            (115.0, 1.0, true),
-            (-184.0, 2.0, false),
-            (10.0, 2.0, true),
-            (101.0, 3.0, true),
-            (23.0, 4.0, false),
-            (55.0, 4.0, true),
-            (-38.0, 5.0, false),
-            (-6.0, 5.0, true),
-            (-14.0, 6.0, false),
-            (8.0, 6.0, true),
-            (16.0, 6.0, false),
-            (14.0, 6.0, true),
-        ],
-        &[
-            (42.0, 1.0, false),
-            (-104.0, 1.0, true),
-            (-252.0, 2.0, false),
-            (47.0, 2.0, true),
-            (-21.0, 3.0, false),
-            (-65.0, 3.0, true),
-            (-23.0, 4.0, false),
-            (-23.0, 4.0, true),
-            (36.0, 5.0, false),
-            (-10.0, 5.0, true),
-            (-13.0, 6.0, false),
-            (2.0, 6.0, true),
-            (-18.0, 7.0, false),
-            (-9.0, 7.0, true),
-        ],
-        &[
-            (30.0, 1.0, true),
-            (20.0, 2.0, false),
-            (19.0, 2.0, true),
-            (6.0, 3.0, false),
-            (-31.0, 3.0, true),
-            (-4.0, 4.0, false),
-            (-24.0, 4.0, true),
-            (-44.0, 5.0, false),
-            (-50.0, 5.0, true),
-            (31.0, 6.0, false),
-            (39.0, 6.0, true),
-            (-16.0, 7.0, false),
-            (23.0, 7.0, true),
-        ],
+        &[(10, 1, Cos), (115, 1, Sin), (-184, 2, Cos), (10, 2, Sin), (101, 3, Sin), (23, 4, Cos),
+          (55, 4, Sin), (-38, 5, Cos), (-6, 5, Sin), (-14, 6, Cos), (8, 6, Sin), (16, 6, Cos),
+          (14, 6, Sin)],
+        &[(42, 1, Cos), (-104, 1, Sin), (-252, 2, Cos), (47, 2, Sin), (-21, 3, Cos), (-65, 3, Sin),
+          (-23, 4, Cos), (-23, 4, Sin), (36, 5, Cos), (-10, 5, Sin), (-13, 6, Cos), (2, 6, Sin),
+          (-18, 7, Cos), (-9, 7, Sin)],
+        &[(30, 1, Sin), (20, 2, Cos), (19, 2, Sin), (6, 3, Cos), (-31, 3, Sin), (-4, 4, Cos),
+          (-24, 4, Sin), (-44, 5, Cos), (-50, 5, Sin), (31, 6, Cos), (39, 6, Sin), (-16, 7, Cos),
+          (23, 7, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-14.0, 1.0, false),
-            (-19.0, 1.0, true),
-            (-53.0, 2.0, false),
-            (-120.0, 2.0, true),
-            (71.0, 3.0, false),
-            (-50.0, 3.0, true),
-            (-47.0, 4.0, false),
-            (-86.0, 4.0, true),
-            (9.0, 5.0, false),
-            (-5.0, 5.0, true),
-            (12.0, 6.0, false),
-            (22.0, 6.0, true),
-        ],
-        &[
-            (-11.0, 1.0, false),
-            (13.0, 1.0, true),
-            (-294.0, 2.0, false),
-            (112.0, 2.0, true),
-            (29.0, 3.0, false),
-            (-22.0, 3.0, true),
-            (4.0, 4.0, false),
-            (11.0, 4.0, true),
-            (-6.0, 5.0, false),
-            (-14.0, 6.0, false),
-            (18.0, 6.0, true),
-        ],
-        &[
-            (28.0, 1.0, false),
-            (9.0, 1.0, true),
-            (-39.0, 2.0, false),
-            (-60.0, 2.0, true),
-            (-60.0, 3.0, false),
-            (21.0, 3.0, true),
-            (50.0, 4.0, false),
-            (-11.0, 4.0, true),
-            (44.0, 5.0, false),
-            (-63.0, 5.0, true),
-            (14.0, 6.0, false),
-            (9.0, 6.0, true),
-        ],
+        &[(-14, 1, Cos), (-19, 1, Sin), (-53, 2, Cos), (-120, 2, Sin), (71, 3, Cos), (-50, 3, Sin),
+          (-47, 4, Cos), (-86, 4, Sin), (9, 5, Cos), (-5, 5, Sin), (12, 6, Cos), (22, 6, Sin)],
+        &[(-11, 1, Cos), (13, 1, Sin), (-294, 2, Cos), (112, 2, Sin), (29, 3, Cos), (-22, 3, Sin),
+          (4, 4, Cos), (11, 4, Sin), (-6, 5, Cos), (-14, 6, Cos), (18, 6, Sin)],
+        &[(28, 1, Cos), (9, 1, Sin), (-39, 2, Cos), (-60, 2, Sin), (-60, 3, Cos), (21, 3, Sin),
+          (50, 4, Cos), (-11, 4, Sin), (44, 5, Cos), (-63, 5, Sin), (14, 6, Cos), (9, 6, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (32.0, 1.0, false),
-            (10.0, 1.0, true),
-            (-12.0, 2.0, false),
-            (10.0, 2.0, true),
-            (48.0, 3.0, false),
-            (75.0, 3.0, true),
-            (-32.0, 4.0, false),
-            (12.0, 4.0, true),
-            (3.0, 5.0, false),
-            (-8.0, 5.0, true),
-            (-2.0, 6.0, false),
-            (-4.0, 6.0, true),
-        ],
-        &[
-            (-16.0, 1.0, false),
-            (-10.0, 1.0, true),
-            (-90.0, 2.0, false),
-            (129.0, 2.0, true),
-            (-6.0, 3.0, false),
-            (-8.0, 3.0, true),
-            (-19.0, 4.0, false),
-            (-6.0, 4.0, true),
-            (-8.0, 5.0, false),
-            (6.0, 5.0, true),
-            (4.0, 6.0, false),
-            (13.0, 6.0, true),
-        ],
-        &[
-            (-12.0, 1.0, false),
-            (1.0, 1.0, true),
-            (-55.0, 2.0, false),
-            (32.0, 2.0, true),
-            (-10.0, 3.0, false),
-            (-13.0, 3.0, true),
-            (2.0, 4.0, false),
-            (26.0, 4.0, true),
-            (17.0, 5.0, false),
-            (9.0, 5.0, true),
-            (15.0, 6.0, false),
-            (-21.0, 6.0, true),
-        ],
+        &[(32, 1, Cos), (10, 1, Sin), (-12, 2, Cos), (10, 2, Sin), (48, 3, Cos), (75, 3, Sin),
+          (-32, 4, Cos), (12, 4, Sin), (3, 5, Cos), (-8, 5, Sin), (-2, 6, Cos), (-4, 6, Sin)],
+        &[(-16, 1, Cos), (-10, 1, Sin), (-90, 2, Cos), (129, 2, Sin), (-6, 3, Cos), (-8, 3, Sin),
+          (-19, 4, Cos), (-6, 4, Sin), (-8, 5, Cos), (6, 5, Sin), (4, 6, Cos), (13, 6, Sin)],
+        &[(-12, 1, Cos), (1, 1, Sin), (-55, 2, Cos), (32, 2, Sin), (-10, 3, Cos), (-13, 3, Sin),
+          (2, 4, Cos), (26, 4, Sin), (17, 5, Cos), (9, 5, Sin), (15, 6, Cos), (-21, 6, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (5.0, 1.0, false),
-            (5.0, 1.0, true),
-            (-163.0, 2.0, false),
-            (-80.0, 2.0, true),
-            (-28.0, 3.0, false),
-            (15.0, 3.0, true),
-            (-20.0, 4.0, false),
-            (13.0, 4.0, true),
-            (-11.0, 5.0, false),
-            (-12.0, 5.0, true),
-            (4.0, 6.0, false),
-            (-19.0, 6.0, true),
-            (12.0, 7.0, false),
-            (2.0, 7.0, true),
-        ],
-        &[
-            (-31.0, 1.0, false),
-            (6.0, 1.0, true),
-            (-113.0, 2.0, false),
-            (81.0, 2.0, true),
-            (87.0, 3.0, false),
-            (4.0, 3.0, true),
-            (5.0, 4.0, false),
-            (18.0, 4.0, true),
-            (-4.0, 5.0, false),
-            (11.0, 5.0, true),
-            (-17.0, 6.0, false),
-            (5.0, 6.0, true),
-            (-6.0, 7.0, false),
-            (-13.0, 7.0, true),
-        ],
-        &[
-            (-11.0, 1.0, false),
-            (-3.0, 1.0, true),
-            (21.0, 2.0, false),
-            (31.0, 2.0, true),
-            (8.0, 3.0, false),
-            (2.0, 3.0, true),
-            (2.0, 4.0, false),
-            (13.0, 4.0, true),
-            (27.0, 5.0, false),
-            (7.0, 5.0, true),
-            (-8.0, 6.0, false),
-            (-29.0, 6.0, true),
-            (11.0, 7.0, false),
-            (-8.0, 7.0, true),
-        ],
+        &[(5, 1, Cos), (5, 1, Sin), (-163, 2, Cos), (-80, 2, Sin), (-28, 3, Cos), (15, 3, Sin),
+          (-20, 4, Cos), (13, 4, Sin), (-11, 5, Cos), (-12, 5, Sin), (4, 6, Cos), (-19, 6, Sin),
+          (12, 7, Cos), (2, 7, Sin)],
+        &[(-31, 1, Cos), (6, 1, Sin), (-113, 2, Cos), (81, 2, Sin), (87, 3, Cos), (4, 3, Sin),
+          (5, 4, Cos), (18, 4, Sin), (-4, 5, Cos), (11, 5, Sin), (-17, 6, Cos), (5, 6, Sin),
+          (-6, 7, Cos), (-13, 7, Sin)],
+        &[(-11, 1, Cos), (-3, 1, Sin), (21, 2, Cos), (31, 2, Sin), (8, 3, Cos), (2, 3, Sin),
+          (2, 4, Cos), (13, 4, Sin), (27, 5, Cos), (7, 5, Sin), (-8, 6, Cos), (-29, 6, Sin),
+          (11, 7, Cos), (-8, 7, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-17.0, 1.0, false),
-            (80.0, 1.0, true),
-            (-70.0, 2.0, false),
-            (-190.0, 2.0, true),
-            (-26.0, 3.0, false),
-            (-145.0, 3.0, true),
-            (-62.0, 4.0, false),
-            (-31.0, 4.0, true),
-            (26.0, 5.0, false),
-            (13.0, 5.0, true),
-            (-2.0, 6.0, false),
-            (8.0, 6.0, true),
-            (-10.0, 7.0, false),
-            (9.0, 7.0, true),
-        ],
-        &[
-            (102.0, 1.0, false),
-            (-151.0, 1.0, true),
-            (-36.0, 2.0, false),
-            (-25.0, 2.0, true),
-            (200.0, 3.0, false),
-            (-18.0, 3.0, true),
-            (-30.0, 4.0, false),
-            (28.0, 4.0, true),
-            (-7.0, 5.0, false),
-            (2.0, 5.0, true),
-            (13.0, 6.0, false),
-            (-11.0, 6.0, true),
-            (-5.0, 7.0, false),
-            (-1.0, 7.0, true),
-        ],
-        &[
-            (58.0, 1.0, false),
-            (-17.0, 1.0, true),
-            (-5.0, 2.0, false),
-            (-27.0, 2.0, true),
-            (66.0, 3.0, false),
-            (-38.0, 3.0, true),
-            (28.0, 4.0, false),
-            (-80.0, 4.0, true),
-            (-35.0, 5.0, false),
-            (28.0, 5.0, true),
-            (-26.0, 6.0, false),
-            (-34.0, 6.0, true),
-            (32.0, 7.0, false),
-            (1.0, 7.0, true),
-        ],
+        &[(-17, 1, Cos), (80, 1, Sin), (-70, 2, Cos), (-190, 2, Sin), (-26, 3, Cos), (-145, 3, Sin),
+          (-62, 4, Cos), (-31, 4, Sin), (26, 5, Cos), (13, 5, Sin), (-2, 6, Cos), (8, 6, Sin),
+          (-10, 7, Cos), (9, 7, Sin)],
+        &[(102, 1, Cos), (-151, 1, Sin), (-36, 2, Cos), (-25, 2, Sin), (200, 3, Cos), (-18, 3, Sin),
+          (-30, 4, Cos), (28, 4, Sin), (-7, 5, Cos), (2, 5, Sin), (13, 6, Cos), (-11, 6, Sin),
+          (-5, 7, Cos), (-1, 7, Sin)],
+        &[(58, 1, Cos), (-17, 1, Sin), (-5, 2, Cos), (-27, 2, Sin), (66, 3, Cos), (-38, 3, Sin),
+          (28, 4, Cos), (-80, 4, Sin), (-35, 5, Cos), (28, 5, Sin), (-26, 6, Cos), (-34, 6, Sin),
+          (32, 7, Cos), (1, 7, Sin)],
     ]),
     KnotCurve::Fourier([
-        &[
-            (-5.0, 1.0, false),
-            (8.0, 2.0, false),
-            (83.0, 2.0, true),
-            (87.0, 3.0, false),
-            (100.0, 3.0, true),
-            (-5.0, 4.0, false),
-            (22.0, 4.0, true),
-            (-10.0, 5.0, false),
-            (10.0, 5.0, true),
-            (-2.0, 6.0, false),
-            (-10.0, 6.0, true),
-            (5.0, 7.0, false),
-            (6.0, 7.0, true),
-        ],
-        &[
-            (17.0, 1.0, false),
-            (21.0, 1.0, true),
-            (-174.0, 2.0, false),
-            (13.0, 2.0, true),
-            (-15.0, 3.0, false),
-            (3.0, 3.0, true),
-            (-9.0, 4.0, false),
-            (46.0, 4.0, true),
-            (16.0, 5.0, false),
-            (-25.0, 5.0, true),
-            (-21.0, 6.0, false),
-            (7.0, 6.0, true),
-            (-9.0, 7.0, false),
-            (-3.0, 7.0, true),
-        ],
-        &[
-            (-28.0, 1.0, false),
-            (9.0, 1.0, true),
-            (110.0, 2.0, false),
-            (4.0, 2.0, true),
-            (11.0, 3.0, false),
-            (-6.0, 3.0, true),
-            (-46.0, 4.0, false),
-            (-17.0, 4.0, true),
-            (32.0, 5.0, false),
-            (-9.0, 5.0, true),
-            (-12.0, 6.0, false),
-            (-9.0, 6.0, true),
-            (-9.0, 7.0, false),
-            (18.0, 7.0, true),
-        ],
+        &[(-5, 1, Cos), (8, 2, Cos), (83, 2, Sin), (87, 3, Cos), (100, 3, Sin), (-5, 4, Cos),
+          (22, 4, Sin), (-10, 5, Cos), (10, 5, Sin), (-2, 6, Cos), (-10, 6, Sin), (5, 7, Cos),
+          (6, 7, Sin)],
+        &[(17, 1, Cos), (21, 1, Sin), (-174, 2, Cos), (13, 2, Sin), (-15, 3, Cos), (3, 3, Sin),
+          (-9, 4, Cos), (46, 4, Sin), (16, 5, Cos), (-25, 5, Sin), (-21, 6, Cos), (7, 6, Sin),
+          (-9, 7, Cos), (-3, 7, Sin)],
+        &[(-28, 1, Cos), (9, 1, Sin), (110, 2, Cos), (4, 2, Sin), (11, 3, Cos), (-6, 3, Sin),
+          (-46, 4, Cos), (-17, 4, Sin), (32, 5, Cos), (-9, 5, Sin), (-12, 6, Cos), (-9, 6, Sin),
+          (-9, 7, Cos), (18, 7, Sin)],
     ]),
     KnotCurve::Lissajous,
     KnotCurve::Lissajous,
@@ -1895,10 +1396,9 @@ fn knot_point(curve: &KnotCurve, k: &[f64], step: usize, steps: f64) -> [f64; 3]
     let t = 2.0 * PI * step as f64 / steps;
     match curve {
         KnotCurve::Fourier(axes) => axes.map(|terms| {
-            terms.iter().fold(0.0, |s, &(c, m, sine)| {
-                let a = m * t;
-                s + c * if sine { a.sin() } else { a.cos() }
-            })
+            terms
+                .iter()
+                .fold(0.0, |s, &(c, m, f)| s + c as f64 * f.of(m as f64 * t))
         }),
         KnotCurve::Torus => {
             let ring = k[0] + k[1] * (k[2] * t).cos();
@@ -2109,20 +1609,19 @@ fn knot_tube(curve: &KnotCurve, k: &[f64], steps: usize, radius: f64, facets: us
     mesh
 }
 
-/// Offset in `v.p` of knots3D's face list (count, then 9 coordinates per triangle).
-const KNOT_FACES: usize = 26;
-
-fn knots3d_prepare(v: &mut Prepared) {
-    v.p.push(0.0);
-    let preset = v.p[0];
+/// knots3D's shared data: the count of triangles, then 9 coordinates per triangle (from
+/// parameters 0–17: the curve, the tube and its placement).
+fn knots3d_faces(q: &[f64]) -> Vec<f64> {
+    let mut out = vec![0.0];
+    let preset = q[0];
     if !(0.0..24.0).contains(&preset) {
-        return;
+        return out;
     }
     let curve = &KNOT_CURVES[preset as usize];
-    let (steps, radius, facets) = (v.p[1] as usize, v.p[2], v.p[3] as usize);
-    let k: [f64; 8] = v.p[4..12].try_into().unwrap_or([0.0; 8]);
+    let (steps, radius, facets) = (q[1] as usize, q[2], q[3] as usize);
+    let k: [f64; 8] = q[4..12].try_into().unwrap_or([0.0; 8]);
     let mesh = knot_tube(curve, &k, steps, radius, facets);
-    let (scale, offset) = ([v.p[12], v.p[13], v.p[14]], [v.p[15], v.p[16], v.p[17]]);
+    let (scale, offset) = ([q[12], q[13], q[14]], [q[15], q[16], q[17]]);
     let placed: Vec<[f64; 3]> = mesh
         .vertices
         .iter()
@@ -2133,25 +1632,26 @@ fn knots3d_prepare(v: &mut Prepared) {
         // Faces that point past the merged vertex list are left out.
         if f.iter().all(|&i| i < placed.len()) {
             for &i in f {
-                v.p.extend_from_slice(&placed[i]);
+                out.extend_from_slice(&placed[i]);
             }
             count += 1;
         }
     }
-    v.p[KNOT_FACES] = count as f64;
+    out[0] = count as f64;
+    out
 }
 
 /// knots3D: a tube of `facets` sides and radius `radius` around one of JWildfire's stock knot
 /// curves (preset id), as a triangle mesh scaled and offset; points are uniform on a random
 /// triangle. Custom formulas (preset -1) are not supported and give no output.
 fn knots3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let n = q[KNOT_FACES] as usize;
+    let q = v.data();
+    let n = q[0] as usize;
     if n == 0 {
         return [0.0; 3];
     }
     let k = ((rng.f01() * n as f64) as usize).min(n - 1);
-    let f = &q[KNOT_FACES + 1 + 9 * k..][..9];
+    let f = &q[1 + 9 * k..][..9];
     let s = rng.f01().sqrt();
     let r2 = rng.f01();
     let (a, b, c) = (1.0 - s, s * (1.0 - r2), r2 * s);
@@ -2589,8 +2089,8 @@ mod tests {
             ("snowflake_wf_dc_color_offset", 0.2),
         ];
         // Number of crystal cells JWildfire finds for these settings.
-        assert_eq!(make("snowflake_wf", a, 1.0).p[super::SNOW_POINTS], 200.0);
-        assert_eq!(make("snowflake_wf", b, 1.0).p[super::SNOW_POINTS], 94.0);
+        assert_eq!(make("snowflake_wf", a, 1.0).data()[0], 200.0);
+        assert_eq!(make("snowflake_wf", b, 1.0).data()[0], 94.0);
         let mut rng = FastRng::new(SEED);
         run_cases(
             &mut rng,
@@ -2603,7 +2103,7 @@ mod tests {
 
     #[test]
     fn snowflake_wf_default_crystal_size() {
-        assert_eq!(make("snowflake_wf", &[], 1.0).p[super::SNOW_POINTS], 1622.0);
+        assert_eq!(make("snowflake_wf", &[], 1.0).data()[0], 1622.0);
     }
 
     #[test]
@@ -2769,7 +2269,7 @@ mod tests {
             ];
             params.extend(KNOT_PARAMS.iter().copied().zip(k));
             let v = make("knots3D", &params, w);
-            assert_eq!(v.p[super::KNOT_FACES], faces, "preset {preset}");
+            assert_eq!(v.data()[0], faces, "preset {preset}");
             check("knots3D", &run(&v, &PTS, 0.5, &mut rng), want);
         }
         // A custom formula (preset -1) draws nothing.

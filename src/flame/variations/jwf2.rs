@@ -17,6 +17,7 @@
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
+use super::util::{Mwc, atan2_approx, cpp_max, cpp_min, fract, signum_java};
 use super::*;
 
 // ---------------------------------------------------------------------------------------------
@@ -429,6 +430,13 @@ fn prep_bg7(v: &mut Prepared) {
     );
 }
 
+/// `NAME_StepX` and `NAME_StepY` (both 0 by default), after any leading parameters given.
+macro_rules! sym_steps {
+    ($name:literal $(, $lead:expr)*) => {
+        &[$($lead,)* p(concat!($name, "_StepX"), 0.0), p(concat!($name, "_StepY"), 0.0)]
+    };
+}
+
 const P_NG1: &[Param] = &[p("sym_ng1_StepX", 0.5), p("sym_ng1_StepY", 0.5)];
 const P_NG2: &[Param] = &[p("sym_ng2_StepX", 2.0), p("sym_ng2_StepY", 2.0)];
 const P_NG3: &[Param] = &[
@@ -479,51 +487,31 @@ const P_NG12: &[Param] = &[
 ];
 // JWildfire names the first parameter of sym_ng13 "Prop. Sep" and that of 14-17 "Prop. Sep."
 // (with a space, so a file carrying them is not well-formed XML); ugnis writes `prop_sep`.
-const P_NG13: &[Param] = &[
-    p("sym_ng13_prop_sep", 0.0),
-    p("sym_ng13_StepX", 0.0),
-    p("sym_ng13_StepY", 0.0),
-];
-const P_NG14: &[Param] = &[
-    p("sym_ng14_prop_sep", 0.0),
-    p("sym_ng14_StepX", 0.0),
-    p("sym_ng14_StepY", 0.0),
-];
-const P_NG15: &[Param] = &[
-    p("sym_ng15_prop_sep", 0.0),
-    p("sym_ng15_StepX", 0.0),
-    p("sym_ng15_StepY", 0.0),
-];
-const P_NG16: &[Param] = &[
-    p("sym_ng16_prop_sep", 0.0),
-    p("sym_ng16_StepX", 0.0),
-    p("sym_ng16_StepY", 0.0),
-];
-const P_NG17: &[Param] = &[
-    p("sym_ng17_prop_sep", 0.0),
-    p("sym_ng17_StepX", 0.0),
-    p("sym_ng17_StepY", 0.0),
-];
-const P_BG1: &[Param] = &[p("sym_bg1_StepX", 0.0), p("sym_bg1_StepY", 0.0)];
-const P_BG2: &[Param] = &[p("sym_bg2_StepX", 0.0), p("sym_bg2_StepY", 0.0)];
-const P_BG3: &[Param] = &[p("sym_bg3_StepX", 0.0), p("sym_bg3_StepY", 0.0)];
-const P_BG4: &[Param] = &[p("sym_bg4_StepX", 0.0), p("sym_bg4_StepY", 0.0)];
-const P_BG5: &[Param] = &[p("sym_bg5_StepX", 0.0), p("sym_bg5_StepY", 0.0)];
-const P_BG6: &[Param] = &[p("sym_bg6_StepX", 0.0), p("sym_bg6_StepY", 0.0)];
-const P_BG7: &[Param] = &[p("sym_bg7_StepX", 0.0), p("sym_bg7_StepY", 0.0)];
+const P_NG13: &[Param] = sym_steps!("sym_ng13", p("sym_ng13_prop_sep", 0.0));
+const P_NG14: &[Param] = sym_steps!("sym_ng14", p("sym_ng14_prop_sep", 0.0));
+const P_NG15: &[Param] = sym_steps!("sym_ng15", p("sym_ng15_prop_sep", 0.0));
+const P_NG16: &[Param] = sym_steps!("sym_ng16", p("sym_ng16_prop_sep", 0.0));
+const P_NG17: &[Param] = sym_steps!("sym_ng17", p("sym_ng17_prop_sep", 0.0));
+const P_BG1: &[Param] = sym_steps!("sym_bg1");
+const P_BG2: &[Param] = sym_steps!("sym_bg2");
+const P_BG3: &[Param] = sym_steps!("sym_bg3");
+const P_BG4: &[Param] = sym_steps!("sym_bg4");
+const P_BG5: &[Param] = sym_steps!("sym_bg5");
+const P_BG6: &[Param] = sym_steps!("sym_bg6");
+const P_BG7: &[Param] = sym_steps!("sym_bg7");
 
 const SYM: u32 = flag::JWILDFIRE | flag::RANDOM;
 
 // ---------------------------------------------------------------------------------------------
 // Line drawings: hilbert_js, rsquares_js, tree_js
 
-/// Derived values of a line drawing: line threshold, point threshold, line thickness, point
-/// thickness, then the segments as (x1, y1, x2, y2).
+/// Derived values of a line drawing, after its parameters: line threshold, point threshold,
+/// line thickness, point thickness. The segments, (x1, y1, x2, y2) each, are its shared data.
 const LA_HEAD: usize = 4;
 
-/// Stores the thresholds that split the draws between segments and end-point dots (from the
-/// truncated show_lines / show_points weights) and the segments.
-fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64, segs: &[[f64; 4]]) {
+/// Appends the thresholds that split the draws between segments and end-point dots (from the
+/// truncated show_lines / show_points weights) and the thicknesses.
+fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64) {
     let lines = lines.trunc();
     let points = points.trunc();
     let total = lines + points;
@@ -534,16 +522,13 @@ fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64, segs: &
         lt / 100.0,
         pt / 100.0,
     ]);
-    v.p.reserve(segs.len() * 4);
-    for s in segs {
-        v.p.extend_from_slice(s);
-    }
 }
 
-/// One point of segment `seg`: somewhere along it (jittered by the line thickness), or near
-/// its start (within the point thickness), or the origin when neither is shown.
-fn la_sample<R: Draw>(d: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
-    let s = &d[LA_HEAD + 4 * seg..LA_HEAD + 4 * seg + 4];
+/// One point of segment `seg` of `segs`: somewhere along it (jittered by the line thickness),
+/// or near its start (within the point thickness), or the origin when neither is shown; `d`
+/// holds the derived values ([`LA_HEAD`]).
+fn la_sample<R: Draw>(d: &[f64], segs: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
+    let s = &segs[4 * seg..4 * seg + 4];
     let (x1, y1, x2, y2) = (s[0], s[1], s[2], s[3]);
     let pick = r.unit();
     if pick < d[0] {
@@ -585,13 +570,13 @@ fn la_sample<R: Draw>(d: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
 /// one per call; over many calls both cover every segment equally).
 #[inline]
 fn la_eval(v: &Prepared, rng: &mut FastRng) -> (f64, f64) {
-    let d = &v.p[n_params(v)..];
-    let count = (d.len() - LA_HEAD) / 4;
+    let segs = v.data();
+    let count = segs.len() / 4;
     if count == 0 {
         return (0.0, 0.0);
     }
     let seg = rng.index(count);
-    la_sample(d, seg, rng)
+    la_sample(&v.p[n_params(v)..][..LA_HEAD], segs, seg, rng)
 }
 
 /// Turtle that records each forward move as a segment; angles in degrees.
@@ -599,7 +584,8 @@ struct Turtle {
     x: f64,
     y: f64,
     heading: f64,
-    segs: Vec<[f64; 4]>,
+    /// Segments, (x1, y1, x2, y2) each.
+    segs: Vec<f64>,
 }
 
 impl Turtle {
@@ -608,7 +594,7 @@ impl Turtle {
         let a = self.heading.to_radians();
         self.x += a.cos();
         self.y += a.sin();
-        self.segs.push([x0, y0, self.x, self.y]);
+        self.segs.extend_from_slice(&[x0, y0, self.x, self.y]);
     }
 
     /// Hilbert curve of order n, entered turning left.
@@ -648,30 +634,35 @@ impl Turtle {
     }
 }
 
-fn prep_hilbert(v: &mut Prepared) {
+/// hilbert_js's segments (from the level, parameter 0).
+fn hilbert_segments(q: &[f64]) -> Vec<f64> {
     let mut t = Turtle {
         x: 0.0,
         y: 0.0,
         heading: 0.0,
         segs: Vec::new(),
     };
-    t.hilbert(v.p[0] as i64);
+    t.hilbert(q[0] as i64);
+    t.segs
+}
+
+/// Derived values of hilbert_js and rsquares_js (same parameter layout).
+fn prep_la5(v: &mut Prepared) {
     let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[3], v.p[4]);
-    la_store(v, lines, lt, points, pt, &t.segs);
+    la_store(v, lines, lt, points, pt);
 }
 
 /// Squares of side `size` centred at (x, y), with four squares of side size/2.2 centred on
 /// its corners, recursively, as segments (left side up, top, right side down, bottom).
-fn rsquares(segs: &mut Vec<[f64; 4]>, n: i64, x: f64, y: f64, size: f64) {
+fn rsquares(segs: &mut Vec<f64>, n: i64, x: f64, y: f64, size: f64) {
     if n == 0 {
         return;
     }
     let h = size / 2.0;
     let (l, r, b, t) = (x - h, x + h, y - h, y + h);
-    segs.push([l, b, l, t]);
-    segs.push([l, t, r, t]);
-    segs.push([r, t, r, b]);
-    segs.push([r, b, l, b]);
+    for side in [[l, b, l, t], [l, t, r, t], [r, t, r, b], [r, b, l, b]] {
+        segs.extend_from_slice(&side);
+    }
     let s = size / 2.2;
     rsquares(segs, n - 1, l, b, s);
     rsquares(segs, n - 1, l, t, s);
@@ -679,11 +670,11 @@ fn rsquares(segs: &mut Vec<[f64; 4]>, n: i64, x: f64, y: f64, size: f64) {
     rsquares(segs, n - 1, r, t, s);
 }
 
-fn prep_rsquares(v: &mut Prepared) {
+/// rsquares_js's segments (from the level, parameter 0).
+fn rsquares_segments(q: &[f64]) -> Vec<f64> {
     let mut segs = Vec::new();
-    rsquares(&mut segs, v.p[0] as i64, 0.5, 0.5, 1.0);
-    let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[3], v.p[4]);
-    la_store(v, lines, lt, points, pt, &segs);
+    rsquares(&mut segs, q[0] as i64, 0.5, 0.5, 1.0);
+    segs
 }
 
 /// Branch shape of tree_js: bend and branch angles in radians, length ratio of the side
@@ -696,10 +687,10 @@ struct TreeShape {
 
 /// A branch from (x, y) in direction `a` of length `len`, then (for n > 0) three sub-trees
 /// from its tip.
-fn tree(segs: &mut Vec<[f64; 4]>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64, len: f64) {
+fn tree(segs: &mut Vec<f64>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64, len: f64) {
     let tx = x + a.cos() * len;
     let ty = y + a.sin() * len;
-    segs.push([x, y, tx, ty]);
+    segs.extend_from_slice(&[x, y, tx, ty]);
     if n == 0 {
         return;
     }
@@ -708,16 +699,21 @@ fn tree(segs: &mut Vec<[f64; 4]>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64,
     tree(segs, s, n - 1, tx, ty, a + s.bend, len * (1.0 - s.ratio));
 }
 
-fn prep_tree(v: &mut Prepared) {
+/// tree_js's segments (from the level and the bend, branch and ratio parameters 0, 3–5).
+fn tree_segments(q: &[f64]) -> Vec<f64> {
     let shape = TreeShape {
-        bend: v.p[3].to_radians(),
-        branch: v.p[4].to_radians(),
-        ratio: v.p[5],
+        bend: q[3].to_radians(),
+        branch: q[4].to_radians(),
+        ratio: q[5],
     };
     let mut segs = Vec::new();
-    tree(&mut segs, &shape, v.p[0] as i64, 0.0, 0.0, PI / 2.0, 2.0);
+    tree(&mut segs, &shape, q[0] as i64, 0.0, 0.0, PI / 2.0, 2.0);
+    segs
+}
+
+fn prep_tree(v: &mut Prepared) {
     let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[6], v.p[7]);
-    la_store(v, lines, lt, points, pt, &segs);
+    la_store(v, lines, lt, points, pt);
 }
 
 /// hilbert_js: points along a Hilbert curve of the given order (unit steps from the origin),
@@ -793,38 +789,12 @@ const P_SVENSSON: &[Param] = &[
 // ---------------------------------------------------------------------------------------------
 // dla3d_wf: diffusion-limited aggregation in 3-D
 
-/// George Marsaglia's multiply-with-carry pair, with JWildfire's seeding and scaling (32-bit
-/// wrapping arithmetic); the aggregate is grown with it so that a seed gives JWildfire's shape.
-#[derive(Clone, Debug)]
-struct Mwc {
-    u: i32,
-    v: i32,
-}
-
-impl Mwc {
-    fn new(seed: i64) -> Mwc {
-        let s = seed.wrapping_shl(16) as i32;
-        Mwc { u: s, v: s >> 16 }
-    }
-
-    fn next(&mut self) -> f64 {
-        self.v = 36969i32
-            .wrapping_mul(self.v & 65535)
-            .wrapping_add(self.v >> 16);
-        self.u = 18000i32
-            .wrapping_mul(self.u & 65535)
-            .wrapping_add(self.u >> 16);
-        let bits = (self.v << 16).wrapping_add(self.u);
-        (bits as f64 * (1.0 / 2147483647.0)).abs()
-    }
-}
-
 impl Draw for Mwc {
     fn unit(&mut self) -> f64 {
-        self.next()
+        self.next_f64()
     }
     fn index(&mut self, n: usize) -> usize {
-        let i = (self.next() * n as f64) as usize;
+        let i = (self.next_f64() * n as f64) as usize;
         i.min(n - 1)
     }
 }
@@ -979,8 +949,8 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
     let mut misses = 0;
     let mut steps_left = DLA_MAX_STEPS;
     while nodes.len() < max_nodes && misses < DLA_MAX_MISSES && steps_left > 0 {
-        let phi = rnd.next() * (PI + PI);
-        let theta = rnd.next() * (PI + PI);
+        let phi = rnd.next_f64() * (PI + PI);
+        let theta = rnd.next_f64() * (PI + PI);
         let (sp, cp) = phi.sin_cos();
         let (st, ct) = theta.sin_cos();
         let (mut x, mut y, mut z) = (inner * st * cp, inner * st * sp, inner * ct);
@@ -990,7 +960,7 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
                 break;
             }
             steps_left -= 1;
-            match (rnd.next() * 6.0) as i32 {
+            match (rnd.next_f64() * 6.0) as i32 {
                 0 => x = x + 0.9 + force[0],
                 1 => y = y - 0.9 + force[1],
                 2 => x = x - 0.9 + force[0],
@@ -1030,11 +1000,13 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
     nodes
 }
 
-fn prep_dla(v: &mut Prepared) {
-    let max_nodes = v.p[0].max(0.0) as usize;
-    let seed = v.p[1] as i64;
-    let glue = v.p[6].max(0.1);
-    let force = [v.p[7], v.p[8], v.p[9]];
+/// dla3d_wf's shared data: [`DLA_STRIDE`] values per node (from the node count, seed, glue
+/// radius and force, parameters 0, 1 and 6–9).
+fn dla_nodes(q: &[f64]) -> Vec<f64> {
+    let max_nodes = q[0].max(0.0) as usize;
+    let seed = q[1] as i64;
+    let glue = q[6].max(0.1);
+    let force = [q[7], q[8], q[9]];
     let nodes = dla_grow(max_nodes, seed, glue, force);
     // Relative depth: a node's depth over the deepest depth below it (itself included).
     let mut deepest: Vec<u32> = nodes.iter().map(|n| n.depth).collect();
@@ -1048,17 +1020,18 @@ fn prep_dla(v: &mut Prepared) {
         .zip(&deepest)
         .map(|(n, &d)| n.depth as f64 / d as f64)
         .collect();
-    v.p.reserve(nodes.len() * DLA_STRIDE);
+    let mut out = Vec::with_capacity(nodes.len() * DLA_STRIDE);
     for (i, n) in nodes.iter().enumerate() {
-        v.p.extend_from_slice(&[n.x, n.y, n.z, rel[i]]);
+        out.extend_from_slice(&[n.x, n.y, n.z, rel[i]]);
         match n.parent {
             Some(par) => {
                 let q = &nodes[par];
-                v.p.extend_from_slice(&[1.0, q.x, q.y, q.z, rel[par]]);
+                out.extend_from_slice(&[1.0, q.x, q.y, q.z, rel[par]]);
             }
-            None => v.p.extend_from_slice(&[0.0; 5]),
+            None => out.extend_from_slice(&[0.0; 5]),
         }
     }
+    out
 }
 
 /// A point on a sphere of radius `r` around (x, y, z), JWildfire's way (θ drawn over a full
@@ -1155,8 +1128,7 @@ fn dla_sample<R: Draw>(prm: &[f64], nodes: &[f64], r: &mut R) -> Option<([f64; 3
 /// blur radius is 0), coloured by relative depth when dc_color is on. JWildfire hides the
 /// point where nothing is drawn; ugnis cannot hide it and adds nothing instead.
 fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let np = n_params(v);
-    match dla_sample(&v.p[..np], &v.p[np..], rng) {
+    match dla_sample(&v.p, v.data(), rng) {
         Some((pos, color)) => {
             if v.p[5] > 0.0 {
                 acc.color = color.clamp(0.0, 1.0);
@@ -1200,57 +1172,15 @@ const P_DLA: &[Param] = &[
 // ---------------------------------------------------------------------------------------------
 // dc_*: pattern variations that scatter points over a square and colour them
 
-/// JWildfire's GLSL helper `atan2`: a cheap first-order approximation of the angle.
-fn atan2_fast(y: f64, x: f64) -> f64 {
-    let q = PI / 4.0;
-    let q3 = 3.0 * q;
-    let ay = y.abs();
-    let a = if x >= 0.0 {
-        q - q * ((x - ay) / (x + ay))
-    } else {
-        q3 - q * ((x + ay) / (ay - x))
-    };
-    if y < 0.0 { -a } else { a }
-}
-
 /// GLSL `mod`: x − y·⌊x/y⌋.
 #[inline(always)]
 fn gmod(x: f64, y: f64) -> f64 {
     x - y * (x / y).floor()
 }
 
-/// GLSL `fract`.
-#[inline(always)]
-fn fract(x: f64) -> f64 {
-    x - x.floor()
-}
-
-/// GLSL-helper min and max (the second argument wins only when strictly better).
-#[inline(always)]
-fn gmin(x: f64, y: f64) -> f64 {
-    if y < x { y } else { x }
-}
-
-#[inline(always)]
-fn gmax(x: f64, y: f64) -> f64 {
-    if x < y { y } else { x }
-}
-
-/// Java's `Math.signum`.
-#[inline(always)]
-fn signum(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        x
-    }
-}
-
 /// Folds a point into the wedge [0, k] of a kaleidoscope with mirror angle k.
 fn kaleido(x: f64, y: f64, k: f64) -> (f64, f64) {
-    let ang = (gmod(atan2_fast(y, x), 2.0 * k) - k).abs();
+    let ang = (gmod(atan2_approx(y, x), 2.0 * k) - k).abs();
     let len = (x * x + y * y).sqrt();
     (len * ang.cos(), len * ang.sin())
 }
@@ -1416,7 +1346,7 @@ fn inversion_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
         vy = iy;
         let (qx, qy) = (vx * vx, vy * vy);
         l = (qx * qx + qy * qy).sqrt();
-        l_min = gmin(l, l_min);
+        l_min = cpp_min(l, l_min);
     }
     let tt = 2.1 + time * 0.025;
     let base = [
@@ -1485,14 +1415,14 @@ fn poincare_rgb(q: &[f64], d: &[f64], x: f64, y: f64) -> [f64; 3] {
     let mut circle_folds = 0.0;
     for _ in 0..trunc_i(q[1]) {
         zy = zy.abs();
-        let t = 2.0 * gmin(0.0, zx * nx + zy * ny);
+        let t = 2.0 * cpp_min(0.0, zx * nx + zy * ny);
         if t < 0.0 {
             line_folds += 1.0;
         }
         zx -= nx * t;
         zy -= ny * t;
         zx -= cx;
-        let k = gmax(cr * cr / (zx * zx + zy * zy), 1.0);
+        let k = cpp_max(cr * cr / (zx * zx + zy * zy), 1.0);
         if k != 1.0 {
             circle_folds += 1.0;
         }
@@ -1551,10 +1481,10 @@ fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
         zx = zx.abs() / d - t;
         zy = zy.abs() / d - t;
         let l = (zx * zx + zy * zy).sqrt();
-        let o = gmin(gmax(gmin(zx, zy).abs(), -l + 0.25), (l - 0.25).abs());
-        ot = gmin(ot, o);
-        ot2 = gmin(l * 0.1, ot2);
-        m = gmax(m, i as f64 * (1.0 - signum(ot - o).abs()));
+        let o = cpp_min(cpp_max(cpp_min(zx, zy).abs(), -l + 0.25), (l - 0.25).abs());
+        ot = cpp_min(ot, o);
+        ot2 = cpp_min(l * 0.1, ot2);
+        m = cpp_max(m, i as f64 * (1.0 - signum_java(ot - o).abs()));
         if budget <= 0.0 {
             break;
         }
@@ -1562,8 +1492,8 @@ fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
     }
     m += 1.0;
     let w = intensity * zoom * m;
-    let circ = (gmax(0.0, w - ot2) / w).powf(6.0);
-    let glow = gmax((gmax(0.0, w - ot) / w).powf(0.25), circ);
+    let circ = (cpp_max(0.0, w - ot2) / w).powf(6.0);
+    let glow = cpp_max((cpp_max(0.0, w - ot) / w).powf(0.25), circ);
     let base = [0.1 + 0.45, 0.1 + 0.75, 0.1 + m * 0.1];
     let len = (base[0] * base[0] + base[1] * base[1] + base[2] * base[2]).sqrt();
     let shade = 0.4 + gmod(m / 9.0 - t * pulse + ot2 * 2.0, 1.0);
@@ -1728,7 +1658,7 @@ fn gabor_rgb(q: &[f64], centres: &[f64], x: f64, y: f64) -> [f64; 3] {
     let uy = (y * zoom) * 45.0;
     let mut a = 0.0;
     for c in centres.chunks_exact(2) {
-        a += atan2_fast(ux - c[0], uy - c[1]);
+        a += atan2_approx(ux - c[0], uy - c[1]);
     }
     [
         a.cos() * 0.6 + 0.6,
@@ -1862,14 +1792,17 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hilbert_js", hilbert_js)
         .params(P_HILBERT)
         .flags(flag::JWILDFIRE | flag::RANDOM)
-        .prepare(prep_hilbert),
+        .shared(&[0], hilbert_segments)
+        .prepare(prep_la5),
     VarDef::new("rsquares_js", rsquares_js)
         .params(P_RSQUARES)
         .flags(flag::JWILDFIRE | flag::RANDOM)
-        .prepare(prep_rsquares),
+        .shared(&[0], rsquares_segments)
+        .prepare(prep_la5),
     VarDef::new("tree_js", tree_js)
         .params(P_TREE)
         .flags(flag::JWILDFIRE | flag::RANDOM)
+        .shared(&[0, 3, 4, 5], tree_segments)
         .prepare(prep_tree),
     VarDef::new("svensson_js", svensson_js)
         .params(P_SVENSSON)
@@ -1877,7 +1810,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("dla3d_wf", dla3d_wf)
         .params(P_DLA)
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR)
-        .prepare(prep_dla),
+        .shared(&[0, 1, 6, 7, 8, 9], dla_nodes),
     VarDef::new("dc_mandala", dc_mandala)
         .params(P_DC_MANDALA)
         .flags(DC_FLAGS),
@@ -2018,12 +1951,13 @@ mod tests {
         for (name, params, segs, samples) in LINE_CASES {
             let v = prep(name, params);
             let d = &v.p[v.def.params.len()..];
-            assert_all_close(name, &d[LA_HEAD..], segs);
+            assert_eq!(d.len(), LA_HEAD);
+            assert_all_close(name, v.data(), segs);
             let count = segs.len() / 4;
             let mut mwc = Mwc::new(777);
             let mut got = Vec::new();
             for k in 0..samples.len() / 2 {
-                let (x, y) = la_sample(d, k % count, &mut mwc);
+                let (x, y) = la_sample(d, v.data(), k % count, &mut mwc);
                 got.push(x);
                 got.push(y);
             }
@@ -2040,11 +1974,7 @@ mod tests {
             ("tree_js", 4.0, 121),
         ] {
             let v = prep(name, &[level]);
-            assert_eq!(
-                (v.p.len() - v.def.params.len() - LA_HEAD) / 4,
-                count,
-                "{name}"
-            );
+            assert_eq!(v.data().len() / 4, count, "{name}");
         }
         // Neither lines nor points: nothing drawn. tree_js doubles its output.
         let mut rng = FastRng::new(3);
@@ -2052,7 +1982,7 @@ mod tests {
         let a = eval_prepared(&v, [0.2, 0.1, 0.0], Acc::default(), true, &mut rng);
         assert_eq!((a.x, a.y), (0.0, 0.0));
         let v = prep_w("tree_js", &[1.0, 0.0, 0.5, 15.0, 37.0, 0.65, 1.0, 0.0], 0.5);
-        let tips = &v.p[v.def.params.len() + LA_HEAD..];
+        let tips = v.data();
         for _ in 0..50 {
             let a = eval_prepared(&v, [0.2, 0.1, 0.0], Acc::default(), true, &mut rng);
             let hit = tips.chunks(4).any(|s| close(a.x, s[0]) && close(a.y, s[1]));
@@ -2084,7 +2014,7 @@ mod tests {
             let mut params = vec![case[0], case[1], 0.5, 0.01, 1.4, 1.0, case[2]];
             params.extend_from_slice(&case[3..6]);
             let v = prep("dla3d_wf", &params);
-            let got = &v.p[v.def.params.len()..];
+            let got = v.data();
             assert_eq!(got.len() / DLA_STRIDE, want.len() / 5, "node count");
             for (g, w) in got.chunks(DLA_STRIDE).zip(want.chunks(5)) {
                 assert_all_close("node", &g[..4], &w[..4]);
@@ -2107,10 +2037,9 @@ mod tests {
                 case[7],
             ];
             let v = prep("dla3d_wf", &params);
-            let np = v.def.params.len();
             let mut mwc = Mwc::new(case[1] as i64);
             for w in want.chunks(4) {
-                match dla_sample(&v.p[..np], &v.p[np..], &mut mwc) {
+                match dla_sample(&v.p, v.data(), &mut mwc) {
                     Some((pos, c)) => assert_all_close("sample", &[pos[0], pos[1], pos[2], c], w),
                     None => assert!(w[0].is_nan(), "hidden where JWildfire draws"),
                 }
@@ -2133,7 +2062,7 @@ mod tests {
         }
         // A seed whose generator is stuck at 0 grows nothing (JWildfire would hang).
         let v = prep("dla3d_wf", &[50.0, 65536.0]);
-        assert_eq!(v.p.len() - v.def.params.len(), DLA_STRIDE);
+        assert_eq!(v.data().len(), DLA_STRIDE);
     }
 
     fn dc_rgb_of(name: &str, v: &Prepared, x: f64, y: f64, glow: &mut f64) -> [f64; 3] {
@@ -2276,9 +2205,9 @@ mod tests {
     fn mwc_matches_jwildfire_sequence_shape() {
         // Seeds whose low 16 bits are 0 leave the generator at 0 forever.
         let mut m = Mwc::new(65536 * 3);
-        assert!((0..10).all(|_| m.next() == 0.0));
+        assert!((0..10).all(|_| m.next_f64() == 0.0));
         let mut m = Mwc::new(42);
-        let xs: Vec<f64> = (0..1000).map(|_| m.next()).collect();
+        let xs: Vec<f64> = (0..1000).map(|_| m.next_f64()).collect();
         assert!(xs.iter().all(|x| (0.0..=1.000000001).contains(x)));
         let mean = xs.iter().sum::<f64>() / 1000.0;
         assert!((mean - 0.5).abs() < 0.05);

@@ -20,10 +20,15 @@
 //! polar angle); `ux` = x/r, `uy` = y/r, with r replaced by `f64::EPSILON` when it is 0.
 //! Fractorium's affine letters A B C D E F are [`Affine`]'s a b e c d f
 //! (x' = A·x + B·y + C, y' = D·x + E·y + F).
+//!
+//! Helpers the formulas share live in [`util`] (the C/x86 and Java behaviours the source
+//! programs rely on, hashes, coordinate systems, complex numbers, special functions) and in
+//! `noise` (simplex noise); data that takes long to build (grown aggregates, crystals, meshes,
+//! recursive drawings) is built once per parameter values and shared through [`shared`].
 
 use std::collections::HashMap;
-use std::sync::LazyLock;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, LazyLock};
 
 pub use crate::flame::affine::Affine;
 use crate::flame::rng::FastRng;
@@ -39,6 +44,11 @@ mod fr_e;
 mod fr_f;
 mod jwf;
 mod jwf2;
+mod noise;
+pub mod shared;
+pub mod util;
+
+pub use shared::{BuildFn, SharedDef};
 
 /// flam3's `EPS`, the guard its formulas add to denominators.
 pub const EPS: f64 = 1e-10;
@@ -378,6 +388,9 @@ pub struct VarDef {
     pub assign: Assign,
     pub eval: EvalFn,
     pub prepare: Option<PrepareFn>,
+    /// Expensive data built from some parameters, shared between prepared copies
+    /// ([`Prepared::data`]).
+    pub shared: Option<SharedDef>,
     /// A specialised batch version of a regular use (optional; the generic loop is used
     /// otherwise).
     pub batch: Option<BatchFn>,
@@ -400,6 +413,7 @@ impl VarDef {
             assign: Assign::Set,
             eval,
             prepare: None,
+            shared: None,
             batch: None,
         }
     }
@@ -424,6 +438,12 @@ impl VarDef {
         self.prepare = Some(f);
         self
     }
+    /// Data built by `build` from the parameters at the indices `key`, kept in
+    /// [`Prepared::data`] and shared between the prepared copies with the same key values.
+    pub const fn shared(mut self, key: &'static [usize], build: BuildFn) -> VarDef {
+        self.shared = Some(SharedDef { key, build });
+        self
+    }
     pub const fn batch(mut self, f: BatchFn) -> VarDef {
         self.batch = Some(f);
         self
@@ -437,9 +457,9 @@ impl VarDef {
         self.flags & f != 0
     }
 
-    /// Is a 3-D variation (reads or writes z).
+    /// Is a 3-D variation (its output depends on z).
     pub fn is_3d(&self) -> bool {
-        self.has(flag::USES_Z | flag::WRITES_Z) && self.name != "linear"
+        self.has(flag::USES_Z)
     }
 }
 
@@ -482,6 +502,9 @@ pub struct Prepared {
     /// Fractorium's flam3-compatibility switch (on by default).
     pub compat: bool,
     pub state: VarState,
+    /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
+    /// shared through a process-wide cache); `None` for the variations without.
+    pub data: Option<Arc<[f64]>>,
 }
 
 impl Prepared {
@@ -508,11 +531,21 @@ impl Prepared {
             aff,
             compat,
             state: VarState::default(),
+            data: None,
         };
+        if let Some(sd) = &def.shared {
+            v.data = Some(shared::data(id, sd, &v.p));
+        }
         if let Some(f) = def.prepare {
             f(&mut v);
         }
         v
+    }
+
+    /// The shared data ([`Prepared::data`]); empty for a variation without.
+    #[inline(always)]
+    pub fn data(&self) -> &[f64] {
+        self.data.as_deref().unwrap_or(&[])
     }
 
     /// The output z of a formula that does not compute one: 0 for a regular variation, the
@@ -541,14 +574,7 @@ impl Prepared {
     pub fn apply_pre(&self, tr: &mut V3, acc: &mut Acc, color: f64, rng: &mut FastRng) {
         let t = VarIn::new(tr[0], tr[1], tr[2], color, self.def.needs, false);
         let o = self.eval(&t, acc, rng);
-        match self.def.assign {
-            Assign::Set => *tr = o,
-            Assign::Sum => {
-                tr[0] += o[0];
-                tr[1] += o[1];
-                tr[2] += o[2];
-            }
-        }
+        self.assign(tr, o);
     }
 
     /// Apply as a `post_` form to the xform's summed output `acc`.
@@ -556,18 +582,29 @@ impl Prepared {
     pub fn apply_post(&self, acc: &mut Acc, color: f64, rng: &mut FastRng) {
         let t = VarIn::new(acc.x, acc.y, acc.z, color, self.def.needs, false);
         let o = self.eval(&t, acc, rng);
+        self.assign_acc(acc, o);
+    }
+
+    /// Combines the output `o` of a `pre_`/`post_` form with the point `p` it transformed:
+    /// replaces it or adds to it, as [`VarDef::assign`] says.
+    #[inline(always)]
+    fn assign(&self, p: &mut V3, o: V3) {
         match self.def.assign {
-            Assign::Set => {
-                acc.x = o[0];
-                acc.y = o[1];
-                acc.z = o[2];
-            }
+            Assign::Set => *p = o,
             Assign::Sum => {
-                acc.x += o[0];
-                acc.y += o[1];
-                acc.z += o[2];
+                p[0] += o[0];
+                p[1] += o[1];
+                p[2] += o[2];
             }
         }
+    }
+
+    /// [`Prepared::assign`] to the point held in `acc`.
+    #[inline(always)]
+    fn assign_acc(&self, acc: &mut Acc, o: V3) {
+        let mut p = [acc.x, acc.y, acc.z];
+        self.assign(&mut p, o);
+        [acc.x, acc.y, acc.z] = p;
     }
 
     /// Apply a regular use to a batch (specialised version if the variation has one).
@@ -805,68 +842,12 @@ pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
 /// render: an attribute with one of these names is an unsupported variation rather than some
 /// other program's setting.
 const FOREIGN_VARIATIONS: &[&str] = &[
-    "linear3D",
-    "bubble2",
-    "cross2",
-    "epispiral",
-    "hemisphere",
-    "julia3D",
-    "juliaN",
-    "julia3Dz",
-    "lissajous",
-    "spirograph",
-    "target",
-    "truchet",
-    "rose_wf",
-    "polynomial",
-    "splits3D",
-    "checks",
-    "circlize",
-    "circlecrop",
-    "collideoscope",
-    "crackle",
-    "dc_linear",
-    "eclipse",
-    "falloff2",
-    "glynnia",
-    "hypertile",
-    "loonie2",
-    "murl",
-    "npolar",
-    "ortho",
-    "phoenix_julia",
-    "post_mirror_wf",
-    "pre_rotate_x",
-    "spherical3D",
-    "sphericalN",
-    "supershape3d",
-    "swirl3",
-    "xheart",
-    "zblur",
-    "ztranslate",
-    "zcone",
-    "blur3D",
-    "bwraps",
     "bwraps7",
-    "cosh",
-    "curl3D",
-    "exblur",
-    "flipcircle",
-    "flipy",
-    "gdoffs",
-    "hexes",
-    "julian2",
-    "juliaq",
-    "lazyjess",
+    "cross2",
     "mandelbrot",
-    "nblur",
-    "boarders2",
     "oscope",
     "pdj3d",
     "perspective2",
-    "sinusoidal3d",
-    "tile_hlp",
-    "waves2_3D",
     "wedge_julia_3D",
     "whorl3D",
 ];
@@ -932,14 +913,7 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
             let mut tr = t;
             let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
             let o = v.eval(&tin, &mut acc, rng);
-            match v.def.assign {
-                Assign::Set => tr = o,
-                Assign::Sum => {
-                    tr[0] += o[0];
-                    tr[1] += o[1];
-                    tr[2] += o[2];
-                }
-            }
+            v.assign(&mut tr, o);
             Acc {
                 x: tr[0],
                 y: tr[1],
@@ -953,70 +927,28 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
             acc.z = t[2];
             let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
             let o = v.eval(&tin, &mut acc, rng);
-            match v.def.assign {
-                Assign::Set => {
-                    acc.x = o[0];
-                    acc.y = o[1];
-                    acc.z = o[2];
-                }
-                Assign::Sum => {
-                    acc.x += o[0];
-                    acc.y += o[1];
-                    acc.z += o[2];
-                }
-            }
+            v.assign_acc(&mut acc, o);
             acc
         }
     }
 }
 
-/// Helpers for formulas.
-pub mod util {
-    /// `x`, or `f64::EPSILON` when it is exactly 0 (Fractorium's pole guard).
-    #[inline(always)]
-    pub fn zeps(x: f64) -> f64 {
-        if x == 0.0 { f64::EPSILON } else { x }
-    }
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-    /// -1 for negative values, else 1.
-    #[inline(always)]
-    pub fn sign_nz(x: f64) -> f64 {
-        if x < 0.0 { -1.0 } else { 1.0 }
-    }
-
-    /// -1, 0 or 1.
-    #[inline(always)]
-    pub fn sign(x: f64) -> f64 {
-        if x < 0.0 {
-            -1.0
-        } else if x > 0.0 {
-            1.0
-        } else {
-            0.0
+    /// The list of foreign names holds only names the registry does not know (an implemented
+    /// variation is recognised by the registry, so its entry would be dead).
+    #[test]
+    fn foreign_names_are_unknown_to_the_registry() {
+        for name in FOREIGN_VARIATIONS {
+            assert!(parse_name(name).is_none(), "{name} is implemented");
+            assert!(is_foreign_variation_name(name));
+            assert!(is_foreign_variation_name(&format!("pre_{name}")));
         }
-    }
-
-    /// C's `fmod` (the remainder has the sign of `a`): Rust's `%` on f64.
-    #[inline(always)]
-    pub fn fmod(a: f64, b: f64) -> f64 {
-        a % b
-    }
-
-    /// Round half away from zero (C's `round`).
-    #[inline(always)]
-    pub fn round(x: f64) -> f64 {
-        x.round()
-    }
-
-    /// (sin a, cos a).
-    #[inline(always)]
-    pub fn sincos(a: f64) -> (f64, f64) {
-        a.sin_cos()
-    }
-
-    /// x².
-    #[inline(always)]
-    pub fn sqr(x: f64) -> f64 {
-        x * x
+        for known in ["linear3D", "post_mirror_wf", "rose_wf", "julia3Dz"] {
+            assert!(!is_foreign_variation_name(known), "{known}");
+        }
+        assert!(!is_foreign_variation_name("weight"));
     }
 }
