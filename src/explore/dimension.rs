@@ -842,7 +842,7 @@ pub fn voss(points: &[P2], gammas: &[f64]) -> Result<Vec<VossLevel>, ExploreErro
     }
     let b = Bounds::of(points.iter().copied());
     let side = b.width().max(b.height());
-    if !(side > 0.0) {
+    if side.is_nan() || side <= 0.0 {
         return Err(ExploreError::Invalid("all points coincide".into()));
     }
     // The bounding square, centred on the bounding box.

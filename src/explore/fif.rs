@@ -93,7 +93,7 @@ impl Fif {
             }
         }
         for (i, d) in self.scalings.iter().enumerate() {
-            if !(d.abs() < 1.0) {
+            if d.is_nan() || d.abs() >= 1.0 {
                 return Err(ExploreError::Invalid(format!(
                     "vertical scaling d_{} = {d} must lie strictly between −1 and 1",
                     i + 1

@@ -145,9 +145,9 @@ impl Canvas {
         }
         let a = a.clamp(0.0, 1.0);
         let p = self.image.get_pixel_mut(x as u32, y as u32);
-        for i in 0..3 {
-            let v = p.0[i] as f64 * (1.0 - a) + c[i] as f64 * a;
-            p.0[i] = (v + 0.5) as u8;
+        for (pv, cv) in p.0.iter_mut().zip(c) {
+            let v = *pv as f64 * (1.0 - a) + cv as f64 * a;
+            *pv = (v + 0.5) as u8;
         }
     }
 
