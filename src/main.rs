@@ -15,6 +15,9 @@ struct Cli {
     command: Option<Command>,
     /// File to open in the editor (when no subcommand is given)
     file: Option<std::path::PathBuf>,
+    /// Progress on stderr: a bar on a terminal, a plain line every few seconds otherwise
+    #[arg(long, value_enum, global = true, default_value_t = cli::ProgressMode::Auto)]
+    progress: cli::ProgressMode,
 }
 
 #[derive(Subcommand, Debug)]
@@ -54,6 +57,10 @@ fn main() {
             std::process::exit(code);
         }
     };
+    cli::set_progress_mode(cli.progress);
+    if cli.command.is_some() {
+        cli::install_interrupt_handler();
+    }
     let result = match cli.command {
         Some(Command::Render(a)) => cli::render::run(a),
         Some(Command::Info(a)) => cli::info::run(a),
@@ -68,6 +75,10 @@ fn main() {
         None => run_gui(cli.file),
     };
     if let Err(e) = result {
+        if e.downcast_ref::<cli::Interrupted>().is_some() || cli::interrupted() {
+            eprintln!("{}", cli::Interrupted);
+            std::process::exit(130);
+        }
         eprintln!("error: {e:#}");
         std::process::exit(1);
     }

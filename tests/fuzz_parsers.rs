@@ -63,6 +63,14 @@ const TOKENS: &[&str] = &[
     "<![CDATA[",
     "é",
     "\u{feff}",
+    "256",
+    "-5",
+    "99999999999",
+    "LIGMA Gradient",
+    "chaos=\"1 1 1 1 1 1 1\"",
+    " levels = 99\n",
+    " degree = [9999999999999, 3]\n",
+    " colors = []\n",
 ];
 
 fn edits() -> impl Strategy<Value = Vec<Edit>> {
@@ -150,6 +158,27 @@ fn ifs_parser_never_panics() {
                 let f = ifs::entry_to_flame(e, &Default::default());
                 let _ = ifs::flame_to_entry(&f);
             }
+            let _ = ifs::write(&p.value);
+        }
+    });
+}
+
+/// Fractint's files from before version 16: bare rows, no header.
+#[test]
+fn headerless_ifs_parser_never_panics() {
+    let src = b"; old fern\n0 0 0 .16 0 0 .01\n.85 .04 -.04 .85 0 1.6 .85\n\
+                .2 -.26 .23 .22 0 1.6 .07\n-.15 .28 .26 .24 0 .44 .07\n"
+        .to_vec();
+    assert_eq!(
+        ifs::parse(&text(&src), "FERN.IFS")
+            .unwrap()
+            .value
+            .entries
+            .len(),
+        1
+    );
+    fuzz("ifs-old", [15; 32], src, |b| {
+        if let Ok(p) = ifs::parse(&text(b), "f.ifs") {
             let _ = ifs::write(&p.value);
         }
     });
@@ -355,6 +384,43 @@ fn hostile_inputs_are_refused_cleanly() {
     );
     let many_xforms = format!("<flame>{}</flame>", "<xform weight=\"1\"/>".repeat(10_001));
     assert!(flam3_xml::read(&many_xforms, &Default::default()).is_err());
+    // Cases of the hardening pass: each ends in a value (with warnings) or an error.
+    let map_text = "0 0 0\n1 99999999999999999999 3\n";
+    assert_eq!(
+        map::parse(map_text, "x", "x").err().map(|e| e.code),
+        Some("MAP002")
+    );
+    let p = map::parse("0 256 0\n", "x", "x").unwrap();
+    assert_eq!(p.warnings[0].code, "MAP004");
+    let p = ugr::parse("g {\ngradient:\n index=-99999999999 color=1\n}\n", "x").unwrap();
+    assert_eq!(p.warnings[0].code, "UGR009");
+    let rows = ".1 0 0 .1 0 0 1\n".repeat(1200);
+    assert_eq!(ifs::parse(&rows, "x").err().map(|e| e.code), Some("IFS016"));
+    assert_eq!(
+        ggr::parse("LIGMA Gradient\n0\n", "x", "x")
+            .err()
+            .map(|e| e.code),
+        Some("GGR002")
+    );
+    let xaos = "<flame><xform weight=\"1\" chaos=\"1 1 1 1 1 1 1 1\"/></flame>";
+    let p = flam3_xml::read(xaos, &Default::default()).unwrap();
+    assert!(p.warnings.iter().any(|w| w.code == "XML022"));
+    let attrs: String = (0..100_000).map(|k| format!(" a{k}=\"1\"")).collect();
+    let wide = format!("<flame{attrs}><xform weight=\"1\"{attrs}/></flame>");
+    assert!(flam3_xml::read(&wide, &Default::default()).is_ok());
+    let base = common::root().join("examples");
+    for bad in [
+        "[[object]]\nkind = \"bezier\"\ndegree = [9223372036854775807, 3]\nnet = [[0, 0, 0]]\n",
+        "[[texture]]\nname = \"a\"\nkind = \"checker\"\ncolors = []\n",
+        "[[texture]]\nname = \"a\"\nkind = \"fbm\"\nsize = [99999, 99999]\n",
+    ] {
+        assert!(scene::parse(bad, "s.toml", &base).is_err(), "{bad}");
+    }
+    let many = "[[light]]\nposition = [0, 1, 2]\n".repeat(300);
+    assert_eq!(
+        scene::parse(&many, "s.toml", &base).err().map(|e| e.code),
+        Some("SCN007")
+    );
     let huge_ugr = format!(
         "g {{\ngradient:\n{}}}\n",
         " index=0 color=99999999999999999999\n"

@@ -101,12 +101,16 @@ fn oversized_renders_are_refused_before_allocating() {
         threads: 2,
         ..RenderOptions::default()
     };
-    let est = estimate_memory(&f, 2, OutputFormat::default());
+    let est = estimate_memory(&f, &o);
     assert!(est.total > 1 << 30);
+    assert_eq!(est.threads, 2);
     match Renderer::new(&f, &o) {
         Err(e @ RenderError::OutOfMemory { .. }) => {
             let m = e.to_string();
-            assert!(m.contains("20000×15000") && m.contains("MiB"), "{m}");
+            assert!(
+                m.contains("20000×15000") && m.contains("GiB") && m.contains("configured"),
+                "{m}"
+            );
         }
         Err(e) => panic!("wrong error {e}"),
         Ok(_) => panic!("a 20000×15000 render was not refused"),
@@ -114,7 +118,7 @@ fn oversized_renders_are_refused_before_allocating() {
     // 4000×3000 at supersample 1 with 2 threads fits in 1 GiB.
     f.resize_keep_framing(4000, 3000);
     f.supersample = 1;
-    assert!(estimate_memory(&f, 2, OutputFormat::default()).total < 1 << 30);
+    assert!(estimate_memory(&f, &o).total < 1 << 30);
 }
 
 #[test]

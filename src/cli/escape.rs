@@ -36,7 +36,7 @@ pub struct EscapeArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub center: Option<String>,
     /// World width of the view
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub width: Option<f64>,
     /// Image size WxH
     #[arg(long, value_parser = super::parse_size)]
@@ -51,13 +51,13 @@ pub struct EscapeArgs {
     #[arg(long)]
     pub gradient: Option<String>,
     /// Gradient offset (fraction 0–1)
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::finite)]
     pub offset: Option<f64>,
     /// Gradient entries per iteration
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub repeat: Option<f64>,
     /// Escape radius (default 2, or 256 for smooth colourings)
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub bailout: Option<f64>,
     /// Mariani–Silver block filling instead of computing every pixel
     #[arg(long)]
@@ -66,7 +66,7 @@ pub struct EscapeArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub alpha: Option<String>,
     /// Warped Julia: turbulence amount λ
-    #[arg(long)]
+    #[arg(long, value_parser = super::finite)]
     pub turbulence: Option<f64>,
     /// Warped Julia: polar (seamless) sampling
     #[arg(long, conflicts_with = "rect")]
@@ -74,7 +74,7 @@ pub struct EscapeArgs {
     /// Warped Julia: rectangular sampling
     #[arg(long)]
     pub rect: bool,
-    /// Worker threads (default: all cores)
+    /// Worker threads (default: all cores; at most 4 per core)
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// Also save the view as a .esc file
@@ -102,7 +102,16 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
             for w in &p.warnings {
                 eprintln!("{w}");
             }
-            p.value
+            let mut doc = p.value;
+            // A gradient file named relative to the view: absolute, so that the view saved
+            // elsewhere (--save-view) still finds it.
+            if ugnis::gradient::builtin_named(&doc.gradient_source).is_none() {
+                let f = escape_view::gradient_path(&doc.gradient_source, v.parent());
+                if let Ok(abs) = std::fs::canonicalize(f) {
+                    doc.gradient_source = abs.display().to_string();
+                }
+            }
+            doc
         }
         (None, Some(k)) => EscapeDoc::new(family_from_name(k).with_context(|| {
             format!("unknown kind '{k}': expected mandelbrot, julia, multibrot, newton, logistic, cubic or warped-julia")
@@ -194,9 +203,17 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         })?;
     }
     if let Some(g) = &a.gradient {
-        doc.params.palette.gradient =
-            escape_view::resolve_gradient(g, None).map_err(|e| anyhow::anyhow!(e))?;
-        doc.gradient_source = g.clone();
+        let p = escape_view::resolve_gradient_parsed(g, None).map_err(|e| anyhow::anyhow!(e))?;
+        for w in &p.warnings {
+            eprintln!("{w}");
+        }
+        doc.params.palette.gradient = p.value;
+        // A saved view resolves relative paths from its own directory: keep files absolute.
+        doc.gradient_source = if ugnis::gradient::builtin_named(g).is_some() {
+            g.clone()
+        } else {
+            std::fs::canonicalize(g).map_or_else(|_| g.clone(), |p| p.display().to_string())
+        };
     }
     if let Some(o) = a.offset {
         doc.params.palette.offset = o;
@@ -225,26 +242,36 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&out) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", out.display());
     }
+    super::check_output(&out)?;
+    if let Some(v) = &a.save_view {
+        super::check_output(v)?;
+    }
     let doc = doc_from_args(&a)?;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(a.threads)
-        .build()
-        .context("cannot start worker threads")?;
+    // What is saved must read back: refuse a view that its own reader would refuse.
+    let view_text = escape_view::write(&doc);
+    escape_view::parse(&view_text, "the view", None)
+        .map_err(|e| anyhow::anyhow!("the view cannot be saved as given: {}", e.message))?;
+    let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
-        if doc.params.fill == Fill::Exact {
-            Ok(ugnis::escape::render(&doc.params, doc.view, doc.width, doc.height)?.0)
-        } else {
-            let mut r = EscapeRenderer::new(&doc.params, doc.view, doc.width, doc.height)?;
-            r.run_all(&std::sync::atomic::AtomicBool::new(false));
-            Ok(r.image())
+        let mut r = EscapeRenderer::new(&doc.params, doc.view, doc.width, doc.height)?;
+        let pb = super::progress_bar(
+            doc.width as u64 * doc.height as u64,
+            &format!("rendering {}", doc.params.family.name()),
+        );
+        let done = r.run_exact(super::interrupt_flag(), &|n| pb.inc(n));
+        pb.finish_and_clear();
+        if !done {
+            return Err(super::Interrupted.into());
         }
+        Ok(r.image())
     })?;
+    super::check_interrupted()?;
     let img = image::DynamicImage::ImageRgb8(img);
     if is_bmp {
         io::bmp::save(&out, &img).with_context(|| format!("cannot write '{}'", out.display()))?;
     } else {
         let meta = io::png::PngMeta {
-            text: vec![("ugnis_escape_view".into(), escape_view::write(&doc))],
+            text: vec![("ugnis_escape_view".into(), view_text)],
             ..Default::default()
         };
         io::png::save(&out, &img, &meta)

@@ -1,5 +1,6 @@
 //! `ugnis info`: what a file holds.
 
+use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::Result;
@@ -77,19 +78,23 @@ pub fn run(a: InfoArgs) -> Result<()> {
     let Some(path) = a.file.as_ref() else {
         return Ok(());
     };
+    // Written at once; a reader that stops early (`| head -1`) ends the output quietly.
+    let mut out = String::new();
     match io::kind_of(path) {
         FileKind::Ifs => {
             let p = io::read_ifs(path)?;
             for w in &p.warnings {
                 eprintln!("{w}");
             }
-            println!(
+            let _ = writeln!(
+                out,
                 "{}: Fractint IFS, {} entries",
                 path.display(),
                 p.value.entries.len()
             );
             for e in &p.value.entries {
-                println!(
+                let _ = writeln!(
+                    out,
                     "  {:<20} {}  {} maps",
                     e.name,
                     if e.three_d { "3-D" } else { "2-D" },
@@ -102,10 +107,10 @@ pub fn run(a: InfoArgs) -> Result<()> {
             for w in &p.warnings {
                 eprintln!("{w}");
             }
-            println!("{}: {} gradient(s)", path.display(), p.value.len());
+            let _ = writeln!(out, "{}: {} gradient(s)", path.display(), p.value.len());
             for g in &p.value {
                 let n = g.map_entries.as_ref().map_or(256, |e| e.len());
-                println!("  {:<24} {n} colours", g.name);
+                let _ = writeln!(out, "  {:<24} {n} colours", g.name);
             }
         }
         _ => {
@@ -113,9 +118,10 @@ pub fn run(a: InfoArgs) -> Result<()> {
             for w in &p.warnings {
                 eprintln!("{w}");
             }
-            println!("{}: {} flame(s)", path.display(), p.value.len());
+            let _ = writeln!(out, "{}: {} flame(s)", path.display(), p.value.len());
             for f in &p.value {
-                println!(
+                let _ = writeln!(
+                    out,
                     "  {:<24} {}x{}  {} xforms{}  variations: {}",
                     if f.name.is_empty() {
                         "(unnamed)"
@@ -135,5 +141,5 @@ pub fn run(a: InfoArgs) -> Result<()> {
             }
         }
     }
-    Ok(())
+    super::print_stdout(&out)
 }

@@ -1,5 +1,8 @@
 //! Command-line subcommands. Each returns `anyhow::Result`; `main` prints the one error message
-//! and exits with status 1.
+//! and exits with status 1 (130 when interrupted).
+//!
+//! Shared here: progress on stderr (a bar on a terminal, a plain line every few seconds
+//! otherwise), Ctrl+C handling, thread counts, output checks and argument parsers.
 
 pub mod animate;
 pub mod convert;
@@ -12,15 +15,155 @@ pub mod random;
 pub mod render;
 pub mod scene;
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
+use std::path::Path;
+use std::sync::Mutex;
+use std::sync::OnceLock;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::time::{Duration, Instant};
 
+use anyhow::{Context, Result};
+use clap::ValueEnum;
 use indicatif::{ProgressBar, ProgressStyle};
 
-/// A progress bar on stderr when it is a terminal, hidden otherwise.
-pub fn progress_bar(len: u64, what: &str) -> ProgressBar {
-    if !std::io::stderr().is_terminal() {
-        return ProgressBar::hidden();
+/// How progress is shown on stderr.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+pub enum ProgressMode {
+    /// A bar when stderr is a terminal, plain lines otherwise
+    #[default]
+    Auto,
+    /// Always a bar
+    Bar,
+    /// A line every few seconds ("rendering x: 42% …"), for logs and pipes
+    Plain,
+    /// Nothing
+    None,
+}
+
+static PROGRESS_MODE: OnceLock<ProgressMode> = OnceLock::new();
+
+/// Set the progress mode (once, from the command line).
+pub fn set_progress_mode(m: ProgressMode) {
+    let _ = PROGRESS_MODE.set(m);
+}
+
+/// Seconds between plain progress lines (`UGNIS_PROGRESS_SECONDS` overrides, e.g. for tests).
+fn plain_interval() -> Duration {
+    let s = std::env::var("UGNIS_PROGRESS_SECONDS")
+        .ok()
+        .and_then(|v| v.parse::<f64>().ok())
+        .filter(|v| v.is_finite() && *v >= 0.0)
+        .unwrap_or(5.0);
+    Duration::from_secs_f64(s)
+}
+
+/// Progress of one piece of work, shown as the mode says.
+pub struct Progress {
+    inner: Inner,
+}
+
+enum Inner {
+    Bar(ProgressBar),
+    Plain(Plain),
+    Hidden,
+}
+
+struct Plain {
+    what: String,
+    len: u64,
+    pos: AtomicU64,
+    start: Instant,
+    interval: Duration,
+    last: Mutex<Instant>,
+}
+
+impl Plain {
+    fn report(&self, pos: u64) {
+        let now = Instant::now();
+        let Ok(mut last) = self.last.lock() else {
+            return;
+        };
+        if now.duration_since(*last) < self.interval {
+            return;
+        }
+        *last = now;
+        let frac = pos as f64 / self.len.max(1) as f64;
+        let el = now.duration_since(self.start).as_secs_f64();
+        let eta = if frac > 0.0 {
+            format!(", about {} left", clock(el / frac - el))
+        } else {
+            String::new()
+        };
+        eprintln!(
+            "{}: {:.0}% ({} elapsed{eta})",
+            self.what,
+            100.0 * frac.min(1.0),
+            clock(el)
+        );
     }
+}
+
+/// h:mm:ss or m:ss.
+fn clock(secs: f64) -> String {
+    let s = secs.max(0.0).round() as u64;
+    if s >= 3600 {
+        format!("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+    } else {
+        format!("{}:{:02}", s / 60, s % 60)
+    }
+}
+
+impl Progress {
+    pub fn set_position(&self, p: u64) {
+        match &self.inner {
+            Inner::Bar(b) => b.set_position(p),
+            Inner::Plain(pl) => {
+                pl.pos.store(p, Ordering::Relaxed);
+                pl.report(p);
+            }
+            Inner::Hidden => {}
+        }
+    }
+
+    pub fn inc(&self, d: u64) {
+        match &self.inner {
+            Inner::Bar(b) => b.inc(d),
+            Inner::Plain(pl) => {
+                let p = pl.pos.fetch_add(d, Ordering::Relaxed) + d;
+                pl.report(p);
+            }
+            Inner::Hidden => {}
+        }
+    }
+
+    pub fn finish_and_clear(&self) {
+        if let Inner::Bar(b) = &self.inner {
+            b.finish_and_clear();
+        }
+    }
+}
+
+/// Progress of `len` steps of `what`, on stderr as the progress mode says.
+pub fn progress_bar(len: u64, what: &str) -> Progress {
+    let mode = *PROGRESS_MODE.get().unwrap_or(&ProgressMode::Auto);
+    let terminal = std::io::stderr().is_terminal();
+    let inner = match mode {
+        ProgressMode::None => Inner::Hidden,
+        ProgressMode::Bar => Inner::Bar(bar(len, what)),
+        ProgressMode::Auto if terminal => Inner::Bar(bar(len, what)),
+        ProgressMode::Auto | ProgressMode::Plain => Inner::Plain(Plain {
+            what: what.to_string(),
+            len,
+            pos: AtomicU64::new(0),
+            start: Instant::now(),
+            interval: plain_interval(),
+            last: Mutex::new(Instant::now()),
+        }),
+    };
+    Progress { inner }
+}
+
+fn bar(len: u64, what: &str) -> ProgressBar {
     let pb = ProgressBar::new(len);
     pb.set_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {percent:>3}% {elapsed_precise} eta {eta}")
@@ -29,6 +172,94 @@ pub fn progress_bar(len: u64, what: &str) -> ProgressBar {
     );
     pb.set_message(what.to_string());
     pb
+}
+
+/// Set by Ctrl+C; every long loop of the commands checks it.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// The flag Ctrl+C sets (for renderers that take a cancel flag).
+pub fn interrupt_flag() -> &'static AtomicBool {
+    &INTERRUPTED
+}
+
+/// Was Ctrl+C pressed?
+pub fn interrupted() -> bool {
+    INTERRUPTED.load(Ordering::Relaxed)
+}
+
+/// The error of an interrupted command (main exits with 130, as shells expect after SIGINT).
+#[derive(Debug)]
+pub struct Interrupted;
+
+impl std::fmt::Display for Interrupted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("interrupted; the output was not written")
+    }
+}
+
+impl std::error::Error for Interrupted {}
+
+/// Fail with [`Interrupted`] when Ctrl+C was pressed.
+pub fn check_interrupted() -> Result<()> {
+    if interrupted() {
+        return Err(Interrupted.into());
+    }
+    Ok(())
+}
+
+/// Ctrl+C: the first press asks the work to stop (renders stop within a moment, nothing is
+/// written, temporary files are removed as the saves unwind); a second press removes the
+/// temporary files of saves in progress and exits at once.
+pub fn install_interrupt_handler() {
+    let _ = ctrlc::set_handler(|| {
+        if INTERRUPTED.swap(true, Ordering::SeqCst) {
+            ugnis::io::atomic::remove_pending();
+            eprintln!("interrupted");
+            std::process::exit(130);
+        }
+        eprintln!("interrupted: stopping (press Ctrl+C again to quit at once)");
+    });
+}
+
+/// Resolve a thread count (0: all cores), clamped to a sane maximum with a warning.
+pub fn threads(requested: usize) -> usize {
+    let t = ugnis::threads::Threads::resolve(requested);
+    if let Some(w) = t.warning() {
+        eprintln!("warning: {w}");
+    }
+    t.count
+}
+
+/// A rayon pool of a resolved thread count.
+pub fn pool(requested: usize) -> Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads(requested))
+        .build()
+        .context("cannot start worker threads")
+}
+
+/// Check before long work that an output file can be written (its directory exists and
+/// accepts files), so a long render does not end in "cannot write".
+pub fn check_output(path: &Path) -> Result<()> {
+    ugnis::io::atomic::check_writable(path)
+        .with_context(|| format!("cannot write '{}'", path.display()))
+}
+
+/// Write to stdout; a closed pipe (`ugnis info … | head -1`) ends the output quietly.
+pub fn print_stdout(text: &str) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        r => r.context("cannot write to standard output"),
+    }
+}
+
+/// Parse a finite number (as in files: no nan, inf, hexadecimal or decimal comma).
+pub fn finite(s: &str) -> Result<f64, String> {
+    ugnis::io::diag::parse_number(s.trim()).map_err(|e| match e {
+        ugnis::io::diag::NumberError::Overflow => format!("'{s}' is too large"),
+        e => format!("{}; expected a finite number", e.describe(s)),
+    })
 }
 
 /// Parse "WxH".
@@ -50,4 +281,27 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
         ));
     }
     Ok((w, h))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finite_numbers_only() {
+        assert_eq!(finite("0.25"), Ok(0.25));
+        assert_eq!(finite("-3"), Ok(-3.0));
+        for bad in [
+            "nan", "NaN", "inf", "-inf", "infinity", "1e999", "0,5", "0x10", "",
+        ] {
+            assert!(finite(bad).is_err(), "{bad}");
+        }
+        assert!(finite("0,5").unwrap_err().contains("comma"));
+    }
+
+    #[test]
+    fn clock_format() {
+        assert_eq!(clock(5.4), "0:05");
+        assert_eq!(clock(3725.0), "1:02:05");
+    }
 }

@@ -8,7 +8,7 @@ use clap::Args;
 use rayon::prelude::*;
 
 use ugnis::flame::random::{self, RandomOptions, SymmetryMode, VariationMode};
-use ugnis::flame::render::{RenderOptions, render};
+use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, estimate_memory};
 use ugnis::flame::{NewFlame, variations};
 use ugnis::io;
 
@@ -43,9 +43,9 @@ pub struct RandomArgs {
     #[arg(long, value_parser = super::parse_size, default_value = "128x128")]
     pub size: (u32, u32),
     /// Thumbnail quality (samples per pixel)
-    #[arg(long, default_value_t = 50.0)]
+    #[arg(long, default_value_t = 50.0, value_parser = super::finite)]
     pub quality: f64,
-    /// Worker threads (default: all cores)
+    /// Worker threads (default: all cores; at most 4 per core)
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
 }
@@ -76,9 +76,37 @@ pub fn symmetry_mode(s: Option<&str>) -> Result<SymmetryMode> {
     }
 }
 
+/// Bytes of a written random flame: the header and palette, each transform (one variation,
+/// or a mix of two or three with their parameters) and each symmetry transform; the means of
+/// batches of 200, rounded up.
+const FLAME_BYTES: u64 = 2_600;
+const XFORM_BYTES: u64 = 240;
+const MIX_XFORM_BYTES: u64 = 360;
+const SYMMETRY_XFORM_BYTES: u64 = 170;
+
+/// The expected size of a batch's file.
+fn batch_bytes(count: usize, opts: &RandomOptions) -> u64 {
+    let xforms = (opts.min_xforms + opts.max_xforms) as u64 / 2;
+    let per_xform = if opts.variations == VariationMode::Mix {
+        MIX_XFORM_BYTES
+    } else {
+        XFORM_BYTES
+    };
+    let symmetry = match opts.symmetry {
+        SymmetryMode::None => 0,
+        SymmetryMode::Random => 3,
+        SymmetryMode::Order(k) => k.unsigned_abs() as u64,
+    };
+    count as u64 * (FLAME_BYTES + xforms * per_xform + symmetry * SYMMETRY_XFORM_BYTES)
+}
+
 pub fn run(a: RandomArgs) -> Result<()> {
-    if a.count == 0 || a.count > 100_000 {
-        bail!("--count {} must be between 1 and 100000", a.count);
+    let max_count = ugnis::io::flam3_xml::MAX_FLAMES;
+    if a.count == 0 || a.count > max_count {
+        bail!(
+            "--count {} must be between 1 and {max_count} (the most flames ugnis reads from one file)",
+            a.count
+        );
     }
     if a.min_xforms < 1 || a.min_xforms > a.max_xforms || a.max_xforms > 100 {
         bail!(
@@ -87,10 +115,14 @@ pub fn run(a: RandomArgs) -> Result<()> {
             a.max_xforms
         );
     }
-    if !(a.quality > 0.0 && a.quality.is_finite()) {
-        bail!("--quality {} must be positive", a.quality);
+    if !(MIN_QUALITY..=MAX_QUALITY).contains(&a.quality) {
+        bail!(
+            "--quality {} must be between {MIN_QUALITY} and {MAX_QUALITY}",
+            a.quality
+        );
     }
-    match io::kind_of(&a.output) {
+    let kind = io::kind_of(&a.output);
+    match kind {
         io::FileKind::FlameXml | io::FileKind::Fla => {}
         _ => bail!("output '{}' must end in .fla or .flame", a.output.display()),
     }
@@ -101,44 +133,89 @@ pub fn run(a: RandomArgs) -> Result<()> {
         symmetry: symmetry_mode(a.symmetry.as_deref())?,
         ..RandomOptions::default()
     };
+    // The batch must be readable again: refuse at once what would exceed the read limit (the
+    // writer checks the exact size again).
+    let bytes = batch_bytes(a.count, &opts);
+    let limit = io::max_file_size(kind);
+    if bytes > limit {
+        bail!(
+            "{} flames of {}–{} transforms would make a file of about {} MiB, more than ugnis \
+             reads ({} MiB); use fewer flames (--count) or transforms, in several files",
+            a.count,
+            a.min_xforms,
+            a.max_xforms,
+            bytes >> 20,
+            limit >> 20
+        );
+    }
+    super::check_output(&a.output)?;
     let seed = a.seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
             .map_or(1, |d| d.as_nanos() as u64)
     });
+    let threads = super::threads(a.threads);
+    if let Some(dir) = &a.thumbs {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create '{}'", dir.display()))?;
+        super::check_output(&dir.join("thumbnail.png"))?;
+        // Thumbnails render in parallel, one single-threaded render per worker.
+        let (tw, th) = a.size;
+        let probe = ugnis::flame::Flame {
+            width: tw,
+            height: th,
+            quality: a.quality,
+            ..NewFlame::default().flame()
+        };
+        let ro = RenderOptions {
+            threads: 1,
+            ..RenderOptions::default()
+        };
+        let one = estimate_memory(&probe, &ro);
+        ugnis::memory::check(
+            one.total.saturating_mul(threads as u64),
+            None,
+            || format!("{threads} thumbnails of {tw}×{th} rendered at once"),
+            || "use a smaller --size or fewer --threads".into(),
+        )?;
+    }
     let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(a.threads)
+        .num_threads(threads)
         .build()
         .context("cannot start worker threads")?;
     let work = a.count as u64 * if a.thumbs.is_some() { 2 } else { 1 };
     let pb = super::progress_bar(work, "random flames");
     let defaults = NewFlame::default();
     let passed = AtomicU64::new(0);
-    let mut flames: Vec<_> = pool.install(|| {
+    let flames: Vec<Option<_>> = pool.install(|| {
         (0..a.count)
             .into_par_iter()
             .map(|i| {
+                if super::interrupted() {
+                    return None;
+                }
                 let g = random::generate(random::batch_seed(seed, i), &opts, &defaults);
                 if g.passed {
                     passed.fetch_add(1, Ordering::Relaxed);
                 }
                 pb.inc(1);
-                g.flame
+                Some(g.flame)
             })
             .collect()
     });
+    super::check_interrupted()?;
+    let mut flames: Vec<_> = flames.into_iter().flatten().collect();
     let width = a.count.to_string().len().max(3);
     for (i, f) in flames.iter_mut().enumerate() {
         f.name = format!("random-{:0width$}", i + 1);
     }
     if let Some(dir) = &a.thumbs {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("cannot create '{}'", dir.display()))?;
         let (tw, th) = a.size;
         let results: Vec<Result<()>> = pool.install(|| {
             flames
                 .par_iter()
                 .map(|f| {
+                    super::check_interrupted()?;
                     let mut t = f.clone();
                     t.resize_keep_framing(tw, th);
                     t.quality = a.quality;
@@ -147,8 +224,12 @@ pub fn run(a: RandomArgs) -> Result<()> {
                         threads: 1,
                         ..RenderOptions::default()
                     };
-                    let img =
-                        render(&t, &ro).with_context(|| format!("cannot render '{}'", f.name))?;
+                    let mut r = Renderer::new(&t, &ro)
+                        .with_context(|| format!("cannot render '{}'", f.name))?;
+                    if !r.run_all(1, super::interrupt_flag(), |_| {}) {
+                        return Err(super::Interrupted.into());
+                    }
+                    let img = r.finish();
                     let path = dir.join(format!("{}.png", f.name));
                     io::png::save(&path, &img, &io::png::PngMeta::for_flame(f))
                         .with_context(|| format!("cannot write '{}'", path.display()))?;
@@ -157,6 +238,7 @@ pub fn run(a: RandomArgs) -> Result<()> {
                 })
                 .collect()
         });
+        super::check_interrupted()?;
         results.into_iter().collect::<Result<Vec<()>>>()?;
     }
     pb.finish_and_clear();
@@ -169,15 +251,15 @@ pub fn run(a: RandomArgs) -> Result<()> {
         .with_context(|| format!("cannot write '{}'", a.output.display()))?;
     if a.count > 1 {
         let ok = passed.load(Ordering::Relaxed);
-        println!(
-            "wrote {} flames to {} (seed {seed}; {ok} passed the quality check){}",
+        super::print_stdout(&format!(
+            "wrote {} flames to {} (seed {seed}; {ok} passed the quality check){}\n",
             a.count,
             a.output.display(),
             a.thumbs
                 .as_ref()
                 .map(|d| format!("; thumbnails in {}", d.display()))
                 .unwrap_or_default()
-        );
+        ))?;
     }
     Ok(())
 }

@@ -1,12 +1,11 @@
 //! `ugnis render`: render a flame file to PNG or BMP.
 
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicBool;
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
-use ugnis::flame::render::{RenderOptions, Renderer};
+use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, short_num};
 use ugnis::flame::{Flame, OutputFormat};
 use ugnis::io::flam3_xml::{LibrarySource, ReadOptions};
 use ugnis::io::{self, FileKind};
@@ -27,8 +26,8 @@ pub struct RenderArgs {
     /// Image size WxH (keeps the framing: pixels per unit scale with the width)
     #[arg(long, value_parser = super::parse_size)]
     pub size: Option<(u32, u32)>,
-    /// Samples per pixel (default: the flame's own quality)
-    #[arg(long)]
+    /// Samples per pixel (default: the flame's own quality; 0.01 to 1000000)
+    #[arg(long, value_parser = super::finite)]
     pub quality: Option<f64>,
     /// Supersampling factor (default: the flame's own)
     #[arg(long)]
@@ -36,7 +35,7 @@ pub struct RenderArgs {
     /// Random seed; the same flame, seed and thread count give the same image
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Worker threads (default: all cores)
+    /// Worker threads (default: all cores; at most 4 per core)
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     /// Write 16 bits per channel (PNG only)
@@ -99,20 +98,6 @@ pub fn select(
 }
 
 pub fn run(a: RenderArgs) -> Result<()> {
-    let flames = load_flames(&a.input, a.palettes.as_ref(), a.strict)?;
-    let mut flame = select(flames, a.index, a.name.as_deref(), &a.input)?;
-    if let Some((w, h)) = a.size {
-        flame.resize_keep_framing(w, h);
-    }
-    if let Some(q) = a.quality {
-        if !(q > 0.0 && q.is_finite()) {
-            bail!("--quality {q} must be positive");
-        }
-        flame.quality = q;
-    }
-    if let Some(s) = a.supersample {
-        flame.supersample = s;
-    }
     let out = a
         .output
         .clone()
@@ -124,9 +109,27 @@ pub fn run(a: RenderArgs) -> Result<()> {
     if is_bmp && (a.bits16 || a.transparent) {
         bail!("--bits16 and --transparent need PNG output");
     }
+    super::check_output(&out)?;
+    let flames = load_flames(&a.input, a.palettes.as_ref(), a.strict)?;
+    let mut flame = select(flames, a.index, a.name.as_deref(), &a.input)?;
+    if let Some((w, h)) = a.size {
+        flame.resize_keep_framing(w, h);
+    }
+    if let Some(q) = a.quality {
+        if !(MIN_QUALITY..=MAX_QUALITY).contains(&q) {
+            bail!(
+                "--quality {} must be between {MIN_QUALITY} and {MAX_QUALITY}",
+                short_num(q)
+            );
+        }
+        flame.quality = q;
+    }
+    if let Some(s) = a.supersample {
+        flame.supersample = s;
+    }
     let opts = RenderOptions {
         seed: a.seed,
-        threads: a.threads,
+        threads: super::threads(a.threads),
         memory_limit: None,
         keep_samples: false,
         format: OutputFormat {
@@ -147,9 +150,13 @@ pub fn run(a: RenderArgs) -> Result<()> {
             }
         ),
     );
-    let never = AtomicBool::new(false);
-    r.run_all(100, &never, |f| pb.set_position((f * 1000.0) as u64));
+    let done = r.run_all(100, super::interrupt_flag(), |f| {
+        pb.set_position((f * 1000.0) as u64)
+    });
     pb.finish_and_clear();
+    if !done {
+        return Err(super::Interrupted.into());
+    }
     let samples = r.samples_done();
     let rate = r.bad_values() as f64 / samples.max(1) as f64;
     let rendered = r.flame().clone();

@@ -40,7 +40,7 @@ pub struct SceneArgs {
     /// Shadow rays when ray casting (default: the scene's own `shadows`, else on)
     #[arg(long, value_enum)]
     pub shadows: Option<OnOff>,
-    /// Worker threads (default: all cores; at most 1024)
+    /// Worker threads (default: all cores; at most 4 per core)
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
 }
@@ -50,18 +50,20 @@ pub fn run(a: SceneArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&a.output) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
     }
-    if a.threads > 1024 {
-        bail!(
-            "--threads {} must be at most 1024 (0: all cores)",
-            a.threads
-        );
+    super::check_output(&a.output)?;
+    // The size is checked before the scene's textures are made (which takes a while).
+    if let Some((w, h)) = a.size {
+        let max = ugnis::surface::raster::MAX_SIDE;
+        if w > max || h > max {
+            bail!("--size {w}x{h}: a scene image is at most {max}x{max}");
+        }
     }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(a.threads)
-        .build()
-        .context("cannot start worker threads")?;
+    let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
         let mut loaded = io::scene::read(&a.file)?;
+        for w in &loaded.warnings {
+            eprintln!("{w}");
+        }
         if let Some((w, h)) = a.size {
             loaded.scene.width = w;
             loaded.scene.height = h;
@@ -86,8 +88,12 @@ pub fn run(a: SceneArgs) -> Result<()> {
         for n in &loaded.notes {
             println!("{n}");
         }
-        ugnis::surface::try_render(&loaded.scene, None)
-            .with_context(|| format!("cannot render '{}'", a.file.display()))
+        super::check_interrupted()?;
+        match ugnis::surface::try_render(&loaded.scene, Some(super::interrupt_flag())) {
+            Ok(img) => Ok(img),
+            Err(ugnis::surface::RenderError::Cancelled) => Err(super::Interrupted.into()),
+            Err(e) => Err(e).with_context(|| format!("cannot render '{}'", a.file.display())),
+        }
     })?;
     let img = image::DynamicImage::ImageRgb8(img);
     if is_bmp {

@@ -208,6 +208,54 @@ pub enum EscapeError {
     BadSize(u32, u32),
     #[error("{0}")]
     Settings(String),
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::memory::MemoryError),
+}
+
+/// Bytes an escape-time render of `w`×`h` needs, before anything is allocated: one sample per
+/// pixel, the RGB image and the copy made while encoding it, the reference orbit of a deep
+/// zoom (up to `max_iter` points, twice with a critical orbit) and the iteration-count table
+/// of histogram colouring.
+pub fn estimate_memory(params: &EscapeParams, view: &View, w: u32, h: u32) -> u64 {
+    let px = w as u64 * h as u64;
+    let samples = px * std::mem::size_of::<Sample>() as u64;
+    let image = px * 3 * 2;
+    let iters = params.max_iter as u64 + 2;
+    let orbit = if is_deep(&params.family, view, h) {
+        2 * iters * std::mem::size_of::<C>() as u64
+    } else {
+        0
+    };
+    let histogram = if params.coloring == Coloring::Histogram {
+        iters * 16
+    } else {
+        0
+    };
+    samples + image + orbit + histogram
+}
+
+/// Refuse an escape-time render that does not fit in memory (see [`crate::memory`]).
+pub fn check_memory(
+    params: &EscapeParams,
+    view: &View,
+    w: u32,
+    h: u32,
+    configured: Option<u64>,
+) -> Result<u64, EscapeError> {
+    let need = estimate_memory(params, view, w, h);
+    crate::memory::check(
+        need,
+        configured,
+        || format!("a {w}×{h} escape-time render"),
+        || {
+            let mut hint = String::from("reduce the image size");
+            if params.coloring == Coloring::Histogram || is_deep(&params.family, view, h) {
+                hint.push_str(&format!(" or the maximum iterations ({})", params.max_iter));
+            }
+            hint
+        },
+    )?;
+    Ok(need)
 }
 
 /// Check a view against the f64 precision limit (escape.md §1).
@@ -307,6 +355,7 @@ impl Job {
         } else if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
             return Err(EscapeError::BadSize(w, h));
         }
+        check_memory(params, &view, w, h, None)?;
         let bail = params.bailout();
         let warped = matches!(params.family, Family::WarpedJulia(_));
         // Periodicity: a small fraction of a pixel (never for Newton or warped textures).
@@ -552,6 +601,42 @@ impl EscapeRenderer {
         true
     }
 
+    /// Compute every pixel not computed yet in one pass at full resolution (no coarse
+    /// preview), calling `on_pixels(n)` as rows of n pixels finish (from worker threads).
+    /// Returns false when cancelled (checked per row). Mariani–Silver filling runs its own
+    /// single pass.
+    pub fn run_exact(&mut self, cancel: &AtomicBool, on_pixels: &(dyn Fn(u64) + Sync)) -> bool {
+        if self.is_done() {
+            return !self.cancelled;
+        }
+        if self.job.params.fill == Fill::Guess {
+            return self.run_pass(cancel);
+        }
+        let w = self.job.w;
+        let job = &self.job;
+        let stopped = AtomicBool::new(false);
+        self.samples
+            .par_chunks_mut(w as usize)
+            .enumerate()
+            .for_each(|(j, row)| {
+                if stopped.load(Ordering::Relaxed) {
+                    return;
+                }
+                if cancel.load(Ordering::Relaxed) {
+                    stopped.store(true, Ordering::Relaxed);
+                    return;
+                }
+                job.compute_row(j as u32, 0..w, row);
+                on_pixels(w as u64);
+            });
+        if stopped.load(Ordering::Relaxed) {
+            self.cancelled = true;
+            return false;
+        }
+        self.pass = STEPS.len();
+        true
+    }
+
     /// Run every remaining pass.
     pub fn run_all(&mut self, cancel: &AtomicBool) -> bool {
         while !self.is_done() {
@@ -723,14 +808,7 @@ pub fn render(
     let never = AtomicBool::new(false);
     if params.fill == Fill::Exact {
         // One full pass (no coarse grid needed).
-        r.pass = STEPS.len() - 1;
-        r.job.params.fill = Fill::Exact;
-        let job = &r.job;
-        r.samples
-            .par_chunks_mut(w as usize)
-            .enumerate()
-            .for_each(|(j, row)| job.compute_row(j as u32, 0..w, row));
-        r.pass = STEPS.len();
+        r.run_exact(&never, &|_| {});
     } else {
         r.run_all(&never);
     }

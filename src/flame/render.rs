@@ -28,15 +28,18 @@ use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::Flame;
 use crate::flame::rng::FastRng;
 use crate::flame::tonemap::{LogScale, OutputFormat, ToneMap};
+use crate::memory::MemoryError;
+use crate::threads::Threads;
 
 /// Options of one render.
 #[derive(Clone, Debug)]
 pub struct RenderOptions {
     pub seed: u64,
-    /// Worker threads; 0 means all cores.
+    /// Worker threads; 0 means all cores. Requests above [`crate::threads::max_threads`] are
+    /// clamped (see [`crate::threads::Threads`]).
     pub threads: usize,
-    /// Refuse renders whose buffers would exceed this many bytes; `None`: the memory the
-    /// system reports as available.
+    /// Refuse renders whose buffers would exceed this many bytes; `None`: the budget of
+    /// [`crate::memory::budget`] (available memory, `ulimit -v`, cgroup limit).
     pub memory_limit: Option<u64>,
     pub format: OutputFormat,
     /// Keep every plotted sample (12 bytes each) so that [`Renderer::recolor`] can change the
@@ -46,6 +49,16 @@ pub struct RenderOptions {
 
 /// Largest render whose samples are kept for recolouring.
 pub const MAX_KEPT_SAMPLES: u64 = 40_000_000;
+
+/// Largest quality (samples per pixel). Artists' final renders use a few thousand; a million
+/// at 640×480 is already 3·10¹¹ samples, hours on a desktop.
+pub const MAX_QUALITY: f64 = 1e6;
+/// Smallest quality: below one sample per hundred pixels the picture is a few scattered dots
+/// (and at 1e-300 the log-density scale overflows to a black image).
+pub const MIN_QUALITY: f64 = 0.01;
+/// Most samples one render iterates (quality × 4^zoom × width × height): 10¹³ is about half a
+/// day on eight cores.
+pub const MAX_TOTAL_SAMPLES: f64 = 1e13;
 
 impl Default for RenderOptions {
     fn default() -> Self {
@@ -68,31 +81,54 @@ pub enum RenderError {
     De(#[from] DeError),
     #[error("invalid render settings: {0}")]
     Settings(String),
-    #[error(
-        "a {width}×{height} render at supersample {os} with {threads} thread(s) needs about {need_mib} MiB \
-         ({hist_mib} MiB per histogram), but only {limit_mib} MiB are available; \
-         reduce the size, the supersample or the thread count"
-    )]
-    OutOfMemory {
-        width: u32,
-        height: u32,
-        os: u32,
-        threads: usize,
-        need_mib: u64,
-        hist_mib: u64,
-        limit_mib: u64,
-    },
+    #[error(transparent)]
+    OutOfMemory(#[from] MemoryError),
 }
 
-/// Memory the render buffers will need, in bytes.
+/// Memory the buffers of a render will need, in bytes, part by part.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MemoryEstimate {
+    /// Threads the estimate is for (resolved and clamped).
+    pub threads: usize,
+    /// One histogram (os·W + 2g by os·H + 2g buckets of 16 bytes).
     pub histogram: u64,
+    /// Every thread's histogram, orbit lanes and plot buffer.
+    pub workers: u64,
+    /// Developing: the density-estimation accumulator and the merged copy a preview makes.
+    pub develop: u64,
+    /// The output image and the copy made while encoding it.
+    pub image: u64,
+    /// Kept samples for recolouring (0 unless asked for).
+    pub kept_samples: u64,
     pub total: u64,
 }
 
-/// Estimate the buffer sizes of a render before allocating anything.
-pub fn estimate_memory(flame: &Flame, threads: usize, format: OutputFormat) -> MemoryEstimate {
+impl MemoryEstimate {
+    /// What to change when the estimate does not fit: the largest part first.
+    pub fn hint(&self, flame: &Flame) -> String {
+        let mut h = String::from("reduce the image size");
+        if flame.supersample > 1 {
+            h.push_str(&format!(" or the supersample ({})", flame.supersample));
+        }
+        if self.threads > 1 {
+            h.push_str(&format!(
+                ", or use fewer threads ({} histograms of {} each)",
+                self.threads,
+                crate::memory::fmt_bytes(self.histogram)
+            ));
+        }
+        if self.kept_samples > 0 {
+            h.push_str(", or do not keep samples for recolouring");
+        }
+        h
+    }
+}
+
+/// Estimate the buffers of a render before allocating anything. The threads are resolved
+/// as the renderer resolves them. A render in strips (or on several machines) would estimate
+/// one strip's histogram here; everything else scales with the thread count or the image.
+pub fn estimate_memory(flame: &Flame, opts: &RenderOptions) -> MemoryEstimate {
+    let threads = Threads::resolve(opts.threads).count as u64;
     let os = flame.supersample.max(1) as u64;
     let g = {
         let f =
@@ -106,34 +142,69 @@ pub fn estimate_memory(flame: &Flame, threads: usize, format: OutputFormat) -> M
     };
     let bw = os * flame.width as u64 + 2 * g;
     let bh = os * flame.height as u64 + 2 * g;
-    let hist = bw * bh * std::mem::size_of::<Bucket>() as u64;
+    let bucket = std::mem::size_of::<Bucket>() as u64;
+    let hist = bw.saturating_mul(bh).saturating_mul(bucket);
+    let per_worker =
+        std::mem::size_of::<Lanes>() as u64 + SUB_BATCH * std::mem::size_of::<Pending>() as u64;
+    let workers = (hist + per_worker).saturating_mul(threads);
+    let develop = hist.saturating_mul(2);
     let px = flame.width as u64 * flame.height as u64;
-    let out_px = if format.bits16 { 8 } else { 4 };
-    // Per-thread histograms + the DE/filter accumulator + the output image.
-    let total = hist * threads as u64 + hist + px * out_px;
+    let channels = if opts.format.transparent { 4 } else { 3 };
+    let depth = if opts.format.bits16 { 2 } else { 1 };
+    let image = px.saturating_mul(channels * depth * 2);
+    let samples = flame.total_samples();
+    let kept_samples = if opts.keep_samples && samples <= MAX_KEPT_SAMPLES {
+        samples * std::mem::size_of::<Pending>() as u64
+    } else {
+        0
+    };
     MemoryEstimate {
+        threads: threads as usize,
         histogram: hist,
-        total,
+        workers,
+        develop,
+        image,
+        kept_samples,
+        total: workers
+            .saturating_add(develop)
+            .saturating_add(image)
+            .saturating_add(kept_samples),
     }
+}
+
+/// Refuse a render whose estimate exceeds the memory budget (`opts.memory_limit`, or what
+/// the system allows: see [`crate::memory`]).
+pub fn check_memory(flame: &Flame, opts: &RenderOptions) -> Result<MemoryEstimate, RenderError> {
+    let est = estimate_memory(flame, opts);
+    crate::memory::check(
+        est.total,
+        opts.memory_limit,
+        || {
+            format!(
+                "a {}×{} flame render at supersample {} with {} thread(s)",
+                flame.width, flame.height, flame.supersample, est.threads
+            )
+        },
+        || est.hint(flame),
+    )?;
+    Ok(est)
 }
 
 /// Memory available to this process (Linux `MemAvailable`), if known.
 pub fn available_memory() -> Option<u64> {
-    let s = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = s.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kb * 1024)
+    crate::memory::available_memory()
 }
 
-fn resolve_threads(t: usize) -> usize {
-    if t == 0 {
-        std::thread::available_parallelism().map_or(1, |n| n.get())
+/// A number for a message: plain, or with an exponent when very large or small (1e12, 1e-300).
+pub fn short_num(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && !(1e-3..1e9).contains(&v.abs()) {
+        format!("{v:e}")
     } else {
-        t
+        format!("{v}")
     }
 }
 
-/// Validate the settings that the renderer divides by.
+/// Validate the settings that the renderer divides by, and the limits of the work.
 pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     let bad = |m: String| Err(RenderError::Settings(m));
     if flame.width == 0 || flame.height == 0 {
@@ -147,6 +218,12 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     }
     if !(flame.quality > 0.0 && flame.quality.is_finite()) {
         return bad(format!("quality {} must be positive", flame.quality));
+    }
+    if !(MIN_QUALITY..=MAX_QUALITY).contains(&flame.quality) {
+        return bad(format!(
+            "quality {} is outside {MIN_QUALITY}..{MAX_QUALITY} samples per pixel",
+            short_num(flame.quality)
+        ));
     }
     if flame.gamma.is_nan() || flame.gamma <= 0.0 {
         return bad(format!("gamma {} must be positive", flame.gamma));
@@ -168,6 +245,18 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     }
     if !flame.zoom.is_finite() || flame.zoom.abs() > 50.0 {
         return bad(format!("zoom {} is out of range", flame.zoom));
+    }
+    let samples = flame.quality * 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
+    // NaN (from an infinite zoom factor times zero) is refused too.
+    if samples.is_nan() || samples > MAX_TOTAL_SAMPLES {
+        return bad(format!(
+            "{samples:.3e} samples (quality {} × 4^zoom {} × {}×{} pixels) are more than the \
+             limit of {MAX_TOTAL_SAMPLES:.0e}; lower the quality, the zoom or the size",
+            short_num(flame.quality),
+            flame.zoom,
+            flame.width,
+            flame.height
+        ));
     }
     Ok(())
 }
@@ -212,23 +301,7 @@ impl Renderer {
         if !flame.has_camera {
             framing::apply_auto_frame(&mut flame);
         }
-        let threads = resolve_threads(opts.threads);
-        let est = estimate_memory(&flame, threads, opts.format);
-        let limit = opts
-            .memory_limit
-            .or_else(available_memory)
-            .unwrap_or(8 << 30);
-        if est.total > limit {
-            return Err(RenderError::OutOfMemory {
-                width: flame.width,
-                height: flame.height,
-                os: flame.supersample,
-                threads,
-                need_mib: est.total >> 20,
-                hist_mib: est.histogram >> 20,
-                limit_mib: limit >> 20,
-            });
-        }
+        let threads = check_memory(&flame, opts)?.threads;
         let de = DeFilters::new(
             flame.estimator_radius,
             flame.estimator_minimum,

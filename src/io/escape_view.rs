@@ -379,10 +379,20 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
         }
         Family::WarpedJulia(w) => {
             let d = Fbm::default();
+            let octaves: u32 = number(get("octaves"), "octaves", name)?.unwrap_or(d.octaves);
+            if !(1..=16).contains(&octaves) {
+                warnings.push(Diagnostic::warning(
+                    name,
+                    Pos::LineCol(get("octaves").map_or(0, |e| e.0), 1),
+                    "ESC007",
+                    format!(
+                        "octaves {octaves} is outside 1..16; using {}",
+                        octaves.clamp(1, 16)
+                    ),
+                ));
+            }
             let fbm = Fbm {
-                octaves: number(get("octaves"), "octaves", name)?
-                    .unwrap_or(d.octaves)
-                    .clamp(1, 16),
+                octaves: octaves.clamp(1, 16),
                 lacunarity: real("lacunarity")?.unwrap_or(d.lacunarity),
                 gain: real("gain")?.unwrap_or(d.gain),
                 frequency: real("frequency")?.unwrap_or(d.frequency),
@@ -468,8 +478,9 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
         })?;
     }
     if let Some((l, _, v)) = get("gradient") {
-        let g = resolve_gradient(v, base).map_err(|m| err(*l, "ESC005", m))?;
-        p.palette.gradient = g;
+        let g = resolve_gradient_parsed(v, base).map_err(|m| err(*l, "ESC005", m))?;
+        p.palette.gradient = g.value;
+        warnings.extend(g.warnings);
         doc.gradient_source = v.clone();
     }
     if let Some(o) = real("offset")? {
@@ -580,26 +591,44 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
 
 /// A gradient by built-in name or by file (.ugr, .map, .ggr, or an image), relative to `base`.
 pub fn resolve_gradient(s: &str, base: Option<&Path>) -> Result<Gradient, String> {
+    resolve_gradient_parsed(s, base).map(|p| p.value)
+}
+
+/// As [`resolve_gradient`], with the warnings of reading the gradient file.
+pub fn resolve_gradient_parsed(s: &str, base: Option<&Path>) -> Result<Parsed<Gradient>, String> {
     if let Some(g) = gradient::builtin_named(s) {
-        return Ok(g);
+        return Ok(Parsed {
+            value: g,
+            warnings: Vec::new(),
+        });
     }
-    let mut path = std::path::PathBuf::from(s);
-    if path.is_relative()
-        && let Some(b) = base
-        && b.join(&path).exists()
-    {
-        path = b.join(&path);
-    }
+    let path = gradient_path(s, base);
     if !path.exists() {
         return Err(format!(
             "gradient '{s}' is neither a built-in gradient nor an existing file"
         ));
     }
     let p = super::read_gradients(&path).map_err(|e| e.to_string())?;
-    p.value
+    let warnings = p.warnings;
+    let value = p
+        .value
         .into_iter()
         .next()
-        .ok_or_else(|| format!("{}: holds no gradient", path.display()))
+        .ok_or_else(|| format!("{}: holds no gradient", path.display()))?;
+    Ok(Parsed { value, warnings })
+}
+
+/// The file a gradient source names: relative paths are tried against `base` first (the
+/// view file's directory).
+pub fn gradient_path(s: &str, base: Option<&Path>) -> std::path::PathBuf {
+    let path = std::path::PathBuf::from(s);
+    if path.is_relative()
+        && let Some(b) = base
+        && b.join(&path).exists()
+    {
+        return b.join(&path);
+    }
+    path
 }
 
 /// Read a view file from disk.

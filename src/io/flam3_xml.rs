@@ -30,6 +30,8 @@ pub const MAX_XFORMS: usize = 10_000;
 pub const MAX_PALETTE: i64 = 65_536;
 /// Largest image side accepted from a file.
 pub const MAX_SIDE: i64 = 1_000_000;
+/// Warnings of one kind listed per file; the rest are counted in one line.
+pub const MAX_WARNINGS_PER_CODE: usize = 20;
 
 /// The contents of a flame file.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -85,11 +87,20 @@ struct Ctx<'t, 'o> {
     /// Attributes of other programs that ugnis keeps but does not interpret (reported once per
     /// file, in one line).
     ignored_attrs: Vec<String>,
+    /// Hashes of all of them (for counting distinct names without keeping every name).
+    ignored_set: HashSet<u64>,
+    /// Warnings per code so far; past [`MAX_WARNINGS_PER_CODE`] they are only counted.
+    warn_counts: std::collections::HashMap<&'static str, usize>,
     opts: &'o ReadOptions<'o>,
     library: OnceCell<Result<PaletteLibrary, String>>,
 }
 
 type R<T> = Result<T, Diagnostic>;
+
+fn name_hash(name: &str) -> u64 {
+    use std::hash::{BuildHasher, BuildHasherDefault};
+    BuildHasherDefault::<std::collections::hash_map::DefaultHasher>::default().hash_one(name)
+}
 
 impl Ctx<'_, '_> {
     fn err(&self, off: usize, code: &'static str, msg: impl Into<String>) -> Diagnostic {
@@ -97,6 +108,11 @@ impl Ctx<'_, '_> {
     }
 
     fn warn(&mut self, off: usize, code: &'static str, msg: impl Into<String>) {
+        let n = self.warn_counts.entry(code).or_insert(0);
+        *n += 1;
+        if *n > MAX_WARNINGS_PER_CODE {
+            return;
+        }
         let d = Diagnostic::warning(self.file, self.map.pos(off), code, msg);
         self.warnings.push(d);
     }
@@ -189,6 +205,8 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         warnings: Vec::new(),
         reported_vars: HashSet::new(),
         ignored_attrs: Vec::new(),
+        ignored_set: HashSet::new(),
+        warn_counts: Default::default(),
         opts,
         library: OnceCell::new(),
     };
@@ -276,8 +294,23 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
         ));
     }
     let _ = depth;
-    if !cx.ignored_attrs.is_empty() {
-        let n = cx.ignored_attrs.len();
+    let mut hidden: Vec<(&str, usize)> = cx
+        .warn_counts
+        .iter()
+        .filter(|(_, n)| **n > MAX_WARNINGS_PER_CODE)
+        .map(|(c, n)| (*c, n - MAX_WARNINGS_PER_CODE))
+        .collect();
+    hidden.sort();
+    for (code, n) in hidden {
+        cx.warnings.push(Diagnostic::warning(
+            &opts.file,
+            Pos::File,
+            code,
+            format!("{n} more warnings like the above are not shown"),
+        ));
+    }
+    if !cx.ignored_set.is_empty() {
+        let n = cx.ignored_set.len();
         let mut shown: Vec<&str> = cx
             .ignored_attrs
             .iter()
@@ -633,6 +666,24 @@ fn read_flame(
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
         read_flame_children(cx, cur, text, &mut f, &mut pal)?;
+    }
+    // A xaos row has one multiplier per xform; longer rows (written for a flame that had
+    // more xforms) are cut, with a word.
+    let n = f.xforms.len();
+    for (k, x) in f.xforms.iter_mut().enumerate() {
+        if x.chaos.len() > n {
+            let extra = x.chaos.len() - n;
+            x.chaos.truncate(n);
+            cx.warn(
+                start,
+                "XML022",
+                format!(
+                    "xaos row of xform {} has {} values for {n} xforms; the last {extra} are ignored",
+                    k + 1,
+                    n + extra
+                ),
+            );
+        }
     }
     // Palette: inline colours win over a library palette (flam3 does the opposite; warn).
     if pal.any {
@@ -1119,6 +1170,27 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
     let mut color_speed: Option<f64> = None;
     let mut symmetry: Option<f64> = None;
     let mut params: Vec<(variations::VarId, Form, usize, f64, String, String)> = Vec::new();
+    // JWildfire writes NAME_fx_priority beside every variation it writes; in other programs'
+    // files a variation is followed by its NAME_parameters. Both sets are built once, so an
+    // xform with very many attributes is still read in linear time.
+    let fx_marked: HashSet<&str> = attrs
+        .iter()
+        .filter_map(|b| b.name.strip_suffix("_fx_priority"))
+        .collect();
+    let jwildfire = !fx_marked.is_empty();
+    let marked_vars: HashSet<&str> = if jwildfire {
+        fx_marked
+    } else {
+        attrs
+            .iter()
+            .flat_map(|b| {
+                let n = b.name;
+                n.match_indices('_')
+                    .filter(move |(i, _)| *i > 0 && *i + 1 < n.len())
+                    .map(move |(i, _)| &n[..i])
+            })
+            .collect()
+    };
     for a in attrs {
         let v = a.value.trim();
         match a.name {
@@ -1229,20 +1301,7 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
                 } else {
                     let numeric = parse_number(v).is_ok();
-                    // JWildfire writes NAME_fx_priority beside every variation it writes;
-                    // in other programs' files a variation is followed by its NAME_parameters.
-                    let jwildfire = attrs.iter().any(|b| b.name.ends_with("_fx_priority"));
-                    let marked = if jwildfire {
-                        attrs
-                            .iter()
-                            .any(|b| b.name.strip_suffix("_fx_priority") == Some(name))
-                    } else {
-                        attrs.iter().any(|b| {
-                            b.name
-                                .strip_prefix(name)
-                                .is_some_and(|r| r.len() > 1 && r.starts_with('_'))
-                        })
-                    };
+                    let marked = marked_vars.contains(name);
                     if numeric && (marked || variations::is_foreign_variation_name(name)) {
                         if cx.reported_vars.insert(name.to_string()) {
                             cx.warn(
@@ -1254,7 +1313,8 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     } else if !matches!(
                         name,
                         "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
-                    ) && !cx.ignored_attrs.iter().any(|n| n == name)
+                    ) && cx.ignored_set.insert(name_hash(name))
+                        && cx.ignored_attrs.len() < 6
                     {
                         cx.ignored_attrs.push(name.to_string());
                     }

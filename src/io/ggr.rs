@@ -207,7 +207,8 @@ pub fn parse_segments(
             "empty file; expected the header 'GIMP Gradient'",
         ));
     };
-    if header.trim() != "GIMP Gradient" {
+    // GIMP's development builds (2.99, 3.0 release candidates) write "LIGMA Gradient".
+    if !matches!(header.trim(), "GIMP Gradient" | "LIGMA Gradient") {
         return Err(err(
             h_off,
             "GGR001",
@@ -514,6 +515,16 @@ mod tests {
         assert_eq!(g.rgb8(255), [0, 0, 255]);
         // The foreground-colour endpoint type is reported, not silently dropped.
         assert!(p.warnings.iter().any(|w| w.code == "GGR006"));
+    }
+
+    #[test]
+    fn development_builds_header_is_read() {
+        let ligma = HAND.replacen("GIMP Gradient", "LIGMA Gradient", 1);
+        assert_ne!(ligma, HAND);
+        let a = parse(HAND, "hand.ggr", "hand").unwrap();
+        let b = parse(&ligma, "hand.ggr", "hand").unwrap();
+        assert_eq!(b.value, a.value);
+        assert_eq!(b.warnings, a.warnings, "no warning of its own");
     }
 
     #[test]

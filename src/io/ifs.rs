@@ -97,9 +97,81 @@ fn tokens(line: &str, base: usize) -> Vec<Tok<'_>> {
 /// An entry being read: name, 3-D, header offset, numbers with their offsets.
 type OpenEntry = (String, bool, usize, Vec<(f64, usize)>);
 
-/// Parse the text of an `.ifs` file.
+/// Parse the text of an `.ifs` file. A file of bare rows without any `name {` header (as
+/// Fractint wrote one IFS per file before version 16) is read as one entry named after the
+/// file, with a warning.
 pub fn parse(text: &str, file: &str) -> Result<Parsed<IfsFile>, Diagnostic> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    match legacy_numbers(text) {
+        Some(n) => parse_legacy(text, file, n),
+        None => parse_entries(text, file),
+    }
+}
+
+/// The count of numbers when the whole file is numbers and comments (no braces, at least one
+/// row); None otherwise.
+fn legacy_numbers(text: &str) -> Option<usize> {
+    let mut n = 0usize;
+    for (base, line) in lines(text) {
+        for t in tokens(line, base) {
+            if t.text.contains(['{', '}']) || parse_number(t.text).is_err() {
+                return None;
+            }
+            n += 1;
+        }
+    }
+    (n >= 7).then_some(n)
+}
+
+/// An old single-IFS file: the rows are read as the body of one entry named after the file.
+fn parse_legacy(text: &str, file: &str, numbers: usize) -> Result<Parsed<IfsFile>, Diagnostic> {
+    let stem = std::path::Path::new(file)
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let mut name: String = stem
+        .chars()
+        .filter(|c| !c.is_whitespace() && !"(){};".contains(*c))
+        .collect();
+    if name.is_empty() {
+        name = "ifs".into();
+    }
+    // 3-D rows have 13 numbers; a count that only 13 divides is a 3-D system.
+    let three_d = !numbers.is_multiple_of(7) && numbers.is_multiple_of(13);
+    let wrapped = format!(
+        "{name}{} {{\n{text}\n}}\n",
+        if three_d { " (3D)" } else { "" }
+    );
+    let body_lines = lines(text).len().max(1);
+    // Positions in the wrapped text are one line below the file's; the added header and
+    // closing lines are the whole file.
+    let shift = |d: Diagnostic| {
+        let pos = match d.pos {
+            Pos::LineCol(l, c) if l >= 2 && l <= body_lines + 1 => Pos::LineCol(l - 1, c),
+            Pos::LineCol(..) => Pos::File,
+            other => other,
+        };
+        Diagnostic { pos, ..d }
+    };
+    let mut p = parse_entries(&wrapped, file).map_err(shift)?;
+    p.warnings = p.warnings.into_iter().map(shift).collect();
+    p.warnings.insert(
+        0,
+        Diagnostic::warning(
+            file,
+            Pos::File,
+            "IFS017",
+            format!(
+                "no 'name {{' header: read as one entry '{name}' ({} rows), as Fractint wrote IFS files before version 16",
+                numbers / if three_d { 13 } else { 7 }
+            ),
+        ),
+    );
+    Ok(p)
+}
+
+/// Parse `name { … }` entries.
+fn parse_entries(text: &str, file: &str) -> Result<Parsed<IfsFile>, Diagnostic> {
     let map = SourceMap::new(text);
     let err = |off: usize, code, msg: String| Diagnostic::error(file, map.pos(off), code, msg);
     let mut warnings = Vec::new();
@@ -673,6 +745,39 @@ tri(3d){\n 1 0 0 0 1 0 0 0 1 0 0 0 1 }\n";
         );
         let e = parse("a {\n0,5 0 0 0.5 0 0 1\n}\n", "x.ifs").unwrap_err();
         assert!(e.message.contains("decimal separator"), "{e}");
+    }
+
+    #[test]
+    fn old_fractint_files_without_a_header_are_one_entry() {
+        let text = "; fern, saved one IFS per file\r\n0 0 0 .16 0 0 .01\r\n.85 .04 -.04 .85 0 1.6 .85\r\n\
+                    .2 -.26 .23 .22 0 1.6 .07\r\n-.15 .28 .26 .24 0 .44 .07\r\n";
+        let p = parse(text, "old/FERN.IFS").unwrap();
+        assert_eq!(p.value.entries.len(), 1);
+        let e = &p.value.entries[0];
+        assert_eq!(
+            (e.name.as_str(), e.three_d, e.rows.len()),
+            ("FERN", false, 4)
+        );
+        assert_eq!(e.rows[1], vec![0.85, 0.04, -0.04, 0.85, 0.0, 1.6, 0.85]);
+        assert_eq!(p.warnings[0].code, "IFS017");
+        assert!(
+            p.warnings[0].message.contains("'FERN' (4 rows)"),
+            "{}",
+            p.warnings[0]
+        );
+        // 3-D rows (13 numbers) are recognised by their count.
+        let p = parse(&"1 0 0 0 1 0 0 0 1 0 0 0 1\n".repeat(2), "cube.ifs").unwrap();
+        assert!(p.value.entries[0].three_d);
+        // Errors point into the file itself.
+        let e = parse("0 0 0 .5 0 0 1\n1 2 3 4 5 6 7 8\n", "x.ifs").unwrap_err();
+        assert_eq!((e.code, e.pos), ("IFS007", Pos::File));
+        let p = parse("2 0 0 2 0 0 1\n", "big.ifs").unwrap();
+        assert!(p.warnings.iter().any(|w| w.code == "IFS014"));
+        // Text that is not numbers is not an old file.
+        assert_eq!(
+            parse("0 0 0 .5 0 0 1 x\n", "x.ifs").unwrap_err().code,
+            "IFS001"
+        );
     }
 
     #[test]

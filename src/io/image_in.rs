@@ -167,18 +167,44 @@ pub fn decode_rgb(bytes: &[u8], name: &str) -> Result<RgbImage, Diagnostic> {
 /// A gradient from an image file (see [`from_pixels`] for the method).
 pub fn gradient_from_image(path: &Path, seed: u64) -> Result<Gradient, Diagnostic> {
     let img = read_rgb(path)?;
-    // Downsample large photographs: the clustering samples 20 000 pixels anyway.
-    let img = if img.width() * img.height() > 1 << 20 {
-        image::imageops::thumbnail(&img, 512, 512 * img.height() / img.width().max(1))
-    } else {
-        img
-    };
-    let pixels: Vec<[u8; 3]> = img.pixels().map(|p| p.0).collect();
     let name = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "image".into());
-    Ok(from_pixels(&name, &pixels, seed))
+    Ok(gradient_from_rgb(&name, &img, seed))
+}
+
+/// The size a large image is reduced to before its colours are clustered: the longer side
+/// [`GRADIENT_SIDE`] pixels, the aspect ratio kept, never less than one pixel a side (a
+/// 1×1 100 000 strip stays a strip). Images of at most 2^20 pixels are used as they are.
+pub fn gradient_sample_size(w: u32, h: u32) -> (u32, u32) {
+    if w as u64 * h as u64 <= 1 << 20 {
+        return (w, h);
+    }
+    let long = w.max(h) as f64;
+    let k = GRADIENT_SIDE as f64 / long;
+    (
+        ((w as f64 * k).round() as u32).clamp(1, GRADIENT_SIDE),
+        ((h as f64 * k).round() as u32).clamp(1, GRADIENT_SIDE),
+    )
+}
+
+/// Longer side of the downsampled image a gradient is made from.
+pub const GRADIENT_SIDE: u32 = 1024;
+
+/// A gradient from decoded pixels (see [`from_pixels`]); large images are downsampled first
+/// (the clustering samples 20 000 pixels anyway).
+pub fn gradient_from_rgb(name: &str, img: &RgbImage, seed: u64) -> Gradient {
+    let (tw, th) = gradient_sample_size(img.width(), img.height());
+    let small;
+    let img = if (tw, th) != img.dimensions() {
+        small = image::imageops::thumbnail(img, tw, th);
+        &small
+    } else {
+        img
+    };
+    let pixels: Vec<[u8; 3]> = img.pixels().map(|p| p.0).collect();
+    from_pixels(name, &pixels, seed)
 }
 
 #[cfg(test)]
@@ -228,5 +254,21 @@ mod tests {
         b[22..26].copy_from_slice(&(-2i32).to_le_bytes());
         assert!(check_bmp(&b, "x").is_ok());
         assert_eq!(decode_rgb(b"not an image", "n").unwrap_err().code, "IMG001");
+    }
+
+    #[test]
+    fn long_strips_keep_their_colour() {
+        // The downsampled size never reaches zero and keeps the aspect ratio.
+        assert_eq!(gradient_sample_size(1, 1_100_000), (1, 1024));
+        assert_eq!(gradient_sample_size(1_100_000, 1), (1024, 1));
+        assert_eq!(gradient_sample_size(4000, 3000), (1024, 768));
+        assert_eq!(gradient_sample_size(640, 480), (640, 480));
+        for (w, h) in [(1_100_000, 1), (1, 1_100_000)] {
+            let img = RgbImage::from_pixel(w, h, image::Rgb([255, 0, 0]));
+            let g = gradient_from_rgb("red", &img, 1);
+            for i in [0, 128, 255] {
+                assert_eq!(g.rgb8(i), [255, 0, 0], "{w}x{h} entry {i}");
+            }
+        }
     }
 }

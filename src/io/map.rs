@@ -20,10 +20,12 @@ pub fn parse(text: &str, file: &str, name: &str) -> Result<Parsed<Gradient>, Dia
     }
     let map = SourceMap::new(text);
     let mut colors: Vec<[u8; 3]> = Vec::new();
+    let mut warnings = Vec::new();
+    // Colour lines past the 256th (counted, not read) and values above 255 (clamped).
+    let mut extra_lines = 0usize;
+    let mut first_extra: Option<usize> = None;
+    let mut clamped: Vec<(usize, String)> = Vec::new();
     for (base, content) in lines(text) {
-        if colors.len() == 256 {
-            break;
-        }
         let toks: Vec<(usize, &str)> = content
             .split_whitespace()
             .map(|t| (t.as_ptr() as usize - content.as_ptr() as usize, t))
@@ -46,6 +48,11 @@ pub fn parse(text: &str, file: &str, name: &str) -> Result<Parsed<Gradient>, Dia
             }
             break;
         }
+        if colors.len() == 256 {
+            extra_lines += 1;
+            first_extra.get_or_insert(base);
+            continue;
+        }
         let mut c = [0u8; 3];
         for (k, slot) in c.iter_mut().enumerate() {
             let Some(&(off, t)) = toks.get(k) else {
@@ -59,18 +66,19 @@ pub fn parse(text: &str, file: &str, name: &str) -> Result<Parsed<Gradient>, Dia
                     ),
                 ));
             };
-            let v = parse_int(t)
-                .ok()
-                .filter(|v| (0..=255).contains(v))
-                .ok_or_else(|| {
-                    Diagnostic::error(
-                        file,
-                        map.pos(base + off),
-                        "MAP002",
-                        format!("'{t}' is not an integer 0..255"),
-                    )
-                })?;
-            *slot = v as u8;
+            let v = parse_int(t).ok().filter(|v| *v >= 0).ok_or_else(|| {
+                Diagnostic::error(
+                    file,
+                    map.pos(base + off),
+                    "MAP002",
+                    format!("'{t}' is not an integer 0..255"),
+                )
+            })?;
+            if v > 255 {
+                // Some programs (gnofract4d) write 256 for full intensity.
+                clamped.push((base + off, t.to_string()));
+            }
+            *slot = v.min(255) as u8;
         }
         colors.push(c);
     }
@@ -82,9 +90,33 @@ pub fn parse(text: &str, file: &str, name: &str) -> Result<Parsed<Gradient>, Dia
             "no colour line: expected 'R G B' with values 0..255",
         ));
     }
+    if let Some((off, t)) = clamped.first() {
+        let more = match clamped.len() {
+            1 => String::new(),
+            n => format!(" (and {} more values above 255)", n - 1),
+        };
+        warnings.push(Diagnostic::warning(
+            file,
+            map.pos(*off),
+            "MAP004",
+            format!("value {t} is above 255; using 255{more}"),
+        ));
+    }
+    if let Some(off) = first_extra {
+        warnings.push(Diagnostic::warning(
+            file,
+            map.pos(off),
+            "MAP005",
+            format!(
+                "a palette has at most 256 colours; the {extra_lines} colour line{} from here on {} ignored",
+                if extra_lines == 1 { "" } else { "s" },
+                if extra_lines == 1 { "is" } else { "are" }
+            ),
+        ));
+    }
     Ok(Parsed {
         value: from_entries(name, &colors),
-        warnings: Vec::new(),
+        warnings,
     })
 }
 
@@ -156,11 +188,41 @@ mod tests {
             assert_eq!(back.colors, g.colors, "{}", g.name);
             assert!(back.map_entries.is_none());
         }
-        // More than 256 lines: the rest is ignored (chroma.map has 356).
+        // More than 256 lines: the rest is ignored (chroma.map has 356), with a warning.
         let long: String = (0..356).map(|i| format!("{} 0 0\n", i % 256)).collect();
-        assert_eq!(
-            parse(&long, "l.map", "l").unwrap().value.rgb8(255),
-            [255, 0, 0]
+        let p = parse(&long, "l.map", "l").unwrap();
+        assert_eq!(p.value.rgb8(255), [255, 0, 0]);
+        assert_eq!(p.warnings.len(), 1);
+        assert_eq!(p.warnings[0].code, "MAP005");
+        assert_eq!(p.warnings[0].pos, Pos::LineCol(257, 1));
+        assert!(
+            p.warnings[0].message.contains("the 100 colour lines"),
+            "{}",
+            p.warnings[0]
+        );
+        let huge: String = (0..10_000).map(|i| format!("{} 0 0\n", i % 256)).collect();
+        let p = parse(&huge, "l.map", "l").unwrap();
+        assert!(
+            p.warnings[0].message.contains("9744 colour lines"),
+            "{}",
+            p.warnings[0]
+        );
+    }
+
+    #[test]
+    fn values_above_255_are_clamped_with_a_warning() {
+        // As gnofract4d writes them: one 256 among ordinary values.
+        let p = parse("0 0 0\n1 256 3\n255 255 255\n", "g.map", "g").unwrap();
+        assert_eq!(p.value.map_entries.as_ref().unwrap()[1][1], 1.0);
+        assert_eq!(p.warnings.len(), 1);
+        let w = &p.warnings[0];
+        assert_eq!((w.code, w.pos.clone()), ("MAP004", Pos::LineCol(2, 3)));
+        assert!(w.message.contains("256"), "{w}");
+        let p = parse("256 256 256\n0 0 0\n", "g.map", "g").unwrap();
+        assert!(
+            p.warnings[0].message.contains("and 2 more"),
+            "{}",
+            p.warnings[0]
         );
     }
 
@@ -168,7 +230,7 @@ mod tests {
     fn bad_inputs() {
         assert_eq!(parse("hello\n", "a.map", "a").unwrap_err().code, "MAP001");
         assert_eq!(parse("", "a.map", "a").unwrap_err().code, "MAP001");
-        let e = parse("0 0 0\n1 256 3\n", "a.map", "a").unwrap_err();
+        let e = parse("0 0 0\n1 2.5 3\n", "a.map", "a").unwrap_err();
         assert_eq!((e.code, e.pos.clone()), ("MAP002", Pos::LineCol(2, 3)));
         assert_eq!(parse("0 0 -1\n", "a.map", "a").unwrap_err().code, "MAP002");
         assert_eq!(parse("0 0 1.5\n", "a.map", "a").unwrap_err().code, "MAP002");

@@ -23,36 +23,108 @@ use std::path::Path;
 use crate::flame::model::Flame;
 use crate::io::diag::{Diagnostic, Parsed, Pos};
 
-/// Largest file ugnis reads (formats.md §1).
+/// Largest file ugnis reads (text formats, images).
 pub const MAX_FILE_SIZE: u64 = 64 << 20;
+/// Largest flame XML file (.fla, .flame, .flam3, .xml): batches of random flames with many
+/// transforms are larger than other files, and writers refuse what readers would refuse.
+pub const MAX_FLAME_FILE_SIZE: u64 = 256 << 20;
 
-/// Read a file into memory, refusing files over the size limit.
-pub fn read_bytes(path: &Path) -> Result<Vec<u8>, Diagnostic> {
-    let name = path.display().to_string();
-    let meta = std::fs::metadata(path)
-        .map_err(|e| Diagnostic::error(&name, Pos::File, "IO001", format!("cannot open: {e}")))?;
-    if meta.is_dir() {
-        return Err(Diagnostic::error(
-            &name,
-            Pos::File,
-            "IO001",
-            "is a directory, not a file",
-        ));
+/// The read limit for a kind of file.
+pub fn max_file_size(kind: FileKind) -> u64 {
+    match kind {
+        FileKind::Fla | FileKind::FlameXml => MAX_FLAME_FILE_SIZE,
+        _ => MAX_FILE_SIZE,
     }
-    if meta.len() > MAX_FILE_SIZE {
-        return Err(Diagnostic::error(
+}
+
+/// Open a regular file for reading. Devices, FIFOs, sockets and directories are refused
+/// before they are opened (a FIFO would block, `/dev/zero` never ends); symlinks are followed.
+pub fn open_regular(path: &Path) -> Result<(std::fs::File, std::fs::Metadata), Diagnostic> {
+    let name = path.display().to_string();
+    let not_regular = |m: &std::fs::Metadata| {
+        if m.is_dir() {
+            Some("is a directory, not a file")
+        } else if !m.is_file() {
+            Some(
+                "is not a regular file (a device, pipe or socket); \
+                 ugnis reads regular files, or standard input given as '-'",
+            )
+        } else {
+            None
+        }
+    };
+    let cannot_open = |e: std::io::Error| {
+        Diagnostic::error(&name, Pos::File, "IO001", format!("cannot open: {e}"))
+    };
+    let meta = std::fs::metadata(path).map_err(cannot_open)?;
+    if let Some(m) = not_regular(&meta) {
+        return Err(Diagnostic::error(&name, Pos::File, "IO004", m));
+    }
+    let f = std::fs::File::open(path).map_err(cannot_open)?;
+    // The path may have been replaced between the two looks.
+    let meta = f.metadata().map_err(cannot_open)?;
+    if let Some(m) = not_regular(&meta) {
+        return Err(Diagnostic::error(&name, Pos::File, "IO004", m));
+    }
+    Ok((f, meta))
+}
+
+/// True for the names that mean standard input: `-` and `/dev/stdin`.
+pub fn is_stdin(path: &Path) -> bool {
+    path.as_os_str() == "-" || path == Path::new("/dev/stdin")
+}
+
+/// Read a file into memory, refusing files over the size limit of its kind.
+pub fn read_bytes(path: &Path) -> Result<Vec<u8>, Diagnostic> {
+    read_bytes_limited(path, max_file_size(kind_of(path)))
+}
+
+/// Read at most `limit` bytes of a regular file (see [`open_regular`]) or of standard input
+/// (`-`). The limit is enforced while reading, so a file that grows is cut off too.
+pub fn read_bytes_limited(path: &Path, limit: u64) -> Result<Vec<u8>, Diagnostic> {
+    use std::io::Read;
+    let name = path.display().to_string();
+    let too_big = |size: Option<u64>| {
+        Diagnostic::error(
             &name,
             Pos::File,
             "IO002",
-            format!(
-                "file is {} MiB; the limit is {} MiB",
-                meta.len() >> 20,
-                MAX_FILE_SIZE >> 20
-            ),
-        ));
+            match size {
+                Some(n) => format!(
+                    "file is {} MiB; the limit is {} MiB",
+                    n.div_ceil(1 << 20),
+                    limit >> 20
+                ),
+                None => format!(
+                    "more than {} MiB; the limit is {} MiB",
+                    limit >> 20,
+                    limit >> 20
+                ),
+            },
+        )
+    };
+    let read_err = |e: std::io::Error| {
+        Diagnostic::error(&name, Pos::File, "IO001", format!("cannot read: {e}"))
+    };
+    let mut out = Vec::new();
+    if is_stdin(path) {
+        std::io::stdin()
+            .lock()
+            .take(limit + 1)
+            .read_to_end(&mut out)
+            .map_err(read_err)?;
+    } else {
+        let (f, meta) = open_regular(path)?;
+        if meta.len() > limit {
+            return Err(too_big(Some(meta.len())));
+        }
+        out.reserve(meta.len() as usize);
+        f.take(limit + 1).read_to_end(&mut out).map_err(read_err)?;
     }
-    std::fs::read(path)
-        .map_err(|e| Diagnostic::error(&name, Pos::File, "IO001", format!("cannot read: {e}")))
+    if out.len() as u64 > limit {
+        return Err(too_big(None));
+    }
+    Ok(out)
 }
 
 /// File kinds ugnis opens, by extension.
@@ -73,6 +145,8 @@ pub enum FileKind {
     Gif,
     /// ugnis escape-time view (.esc)
     EscapeView,
+    /// Fractint L-system (.l)
+    LSystem,
     Unknown,
 }
 
@@ -93,6 +167,7 @@ pub fn kind_of(path: &Path) -> FileKind {
         "jpg" | "jpeg" => FileKind::Jpeg,
         "gif" => FileKind::Gif,
         "esc" => FileKind::EscapeView,
+        "l" => FileKind::LSystem,
         _ => FileKind::Unknown,
     }
 }
@@ -115,28 +190,52 @@ pub fn read_flame_file(
     opts: &flam3_xml::ReadOptions,
 ) -> Result<Parsed<flam3_xml::FlameFile>, Diagnostic> {
     let name = path.display().to_string();
-    let bytes = read_bytes(path)?;
+    let kind = kind_of(path);
+    if kind == FileKind::LSystem {
+        return Err(Diagnostic::error(
+            &name,
+            Pos::File,
+            "IO005",
+            "a Fractint L-system file (.l), not a flame; L-systems open in the L-system view",
+        ));
+    }
     let mut o = opts.clone();
     o.file = name.clone();
-    let text = match kind_of(path) {
-        FileKind::Png => png::read_genome(&bytes, &name)?,
-        kind => {
-            o.fla = kind == FileKind::Fla;
-            if bytes.starts_with(b"\x89PNG") {
-                png::read_genome(&bytes, &name)?
-            } else {
-                String::from_utf8(bytes).map_err(|e| {
-                    Diagnostic::error(
-                        &name,
-                        Pos::Byte(e.utf8_error().valid_up_to() as u64),
-                        "XML001",
-                        "file is not valid UTF-8 text",
-                    )
-                })?
-            }
+    o.fla = kind == FileKind::Fla;
+    let text = if kind == FileKind::Png || (!is_stdin(path) && starts_with_png(path)?) {
+        // Streamed: a PNG of any size opens as long as the genome precedes the image data.
+        o.fla = false;
+        if is_stdin(path) {
+            png::read_genome(&read_bytes(path)?, &name)?
+        } else {
+            let (f, _) = open_regular(path)?;
+            png::read_genome_from(std::io::BufReader::new(f), &name)?
+        }
+    } else {
+        let bytes = read_bytes(path)?;
+        if bytes.starts_with(b"\x89PNG") {
+            png::read_genome(&bytes, &name)?
+        } else {
+            String::from_utf8(bytes).map_err(|e| {
+                Diagnostic::error(
+                    &name,
+                    Pos::Byte(e.utf8_error().valid_up_to() as u64),
+                    "XML001",
+                    "file is not valid UTF-8 text",
+                )
+            })?
         }
     };
     flam3_xml::read(&text, &o)
+}
+
+/// Does a regular file start with the PNG signature?
+fn starts_with_png(path: &Path) -> Result<bool, Diagnostic> {
+    use std::io::Read;
+    let (f, _) = open_regular(path)?;
+    let mut head = [0u8; 4];
+    let n = f.take(4).read(&mut head).unwrap_or(0);
+    Ok(n == 4 && &head == b"\x89PNG")
 }
 
 /// Read a Fractint `.ifs` file (UTF-8, or Windows-1252 with a warning).
@@ -276,8 +375,24 @@ pub fn write_gradients(path: &Path, gradients: &[crate::gradient::Gradient]) -> 
             ));
         }
     };
+    check_readable_size(path, text.len())?;
     atomic::write_atomic(path, text.as_bytes())
         .map_err(|e| format!("cannot write '{}': {e}", path.display()))
+}
+
+/// Refuse to write what ugnis would refuse to read: a text larger than the read limit of
+/// the file's kind.
+pub fn check_readable_size(path: &Path, bytes: usize) -> Result<(), String> {
+    let limit = max_file_size(kind_of(path));
+    if bytes as u64 > limit {
+        return Err(format!(
+            "{}: the file would be {} MiB, more than ugnis reads ({} MiB); save fewer items per file",
+            path.display(),
+            (bytes as u64).div_ceil(1 << 20),
+            limit >> 20
+        ));
+    }
+    Ok(())
 }
 
 /// Write flames atomically as .fla/.flame/.flam3 (XML) or .ifs (linear flames only; the
@@ -313,6 +428,7 @@ pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<Str
             ));
         }
     };
+    check_readable_size(path, text.len())?;
     atomic::write_atomic(path, text.as_bytes())
         .map_err(|e| format!("cannot write '{}': {e}", path.display()))?;
     Ok(warnings)

@@ -72,8 +72,10 @@ pub fn find(paths: Option<&[PathBuf]>) -> Option<PathBuf> {
 /// Read a library file.
 pub fn load(path: &Path) -> Result<Parsed<PaletteLibrary>, Diagnostic> {
     let name = path.display().to_string();
-    let bytes = std::fs::read(path)
-        .map_err(|e| Diagnostic::error(&name, Pos::File, "PAL000", format!("cannot read: {e}")))?;
+    let bytes = super::read_bytes_limited(path, super::MAX_FILE_SIZE).map_err(|e| Diagnostic {
+        code: if e.code == "IO001" { "PAL000" } else { e.code },
+        ..e
+    })?;
     let text = String::from_utf8(bytes)
         .map_err(|_| Diagnostic::error(&name, Pos::File, "XML001", "file is not UTF-8"))?;
     let mut lib = parse(&text, &name)?;

@@ -121,8 +121,21 @@ pub fn save(path: &Path, img: &DynamicImage, meta: &PngMeta) -> std::io::Result<
 
 /// The `flam3_genome` text of PNG bytes.
 pub fn read_genome(bytes: &[u8], file: &str) -> Result<String, Diagnostic> {
+    read_genome_from(Cursor::new(bytes), file)
+}
+
+/// Largest image ugnis decodes to find a genome written after the image data (ugnis and flam3
+/// write it before, where it is found without decoding anything).
+pub const MAX_DECODE_FOR_GENOME: usize = 256 << 20;
+
+/// The `flam3_genome` text of a PNG read from a stream: only the chunks before the image data
+/// are read when the genome is among them, so PNGs of any size (posters) open as flames.
+pub fn read_genome_from<R: std::io::BufRead + std::io::Seek>(
+    r: R,
+    file: &str,
+) -> Result<String, Diagnostic> {
     let err = |code, msg: String| Diagnostic::error(file, Pos::Byte(0), code, msg);
-    let mut dec = png::Decoder::new(Cursor::new(bytes));
+    let mut dec = png::Decoder::new(r);
     dec.set_ignore_text_chunk(false);
     let mut reader = dec
         .read_info()
@@ -134,7 +147,7 @@ pub fn read_genome(bytes: &[u8], file: &str) -> Result<String, Diagnostic> {
     let size = reader
         .output_buffer_size()
         .ok_or_else(|| err("PNG001", "image too large".into()))?;
-    if size > 1 << 30 {
+    if size > MAX_DECODE_FOR_GENOME {
         return Err(err(
             "PNG002",
             "image carries no flame (no flam3_genome chunk before the image data)".into(),

@@ -40,6 +40,21 @@ use crate::surface::{
     SliceAxis,
 };
 
+/// Most objects in a scene.
+pub const MAX_OBJECTS: usize = 10_000;
+/// Most textures in a scene.
+pub const MAX_TEXTURES: usize = 256;
+/// Most lights in a scene.
+pub const MAX_LIGHTS: usize = 256;
+/// Most Bézier patches in a scene (a jug has 20, the teapot 32).
+pub const MAX_PATCHES: usize = 25_000;
+/// Most cubic segments of a surface of revolution's profile (four patches each).
+pub const MAX_PROFILE_SEGMENTS: usize = 1000;
+/// Highest degree of a Bézier patch in either direction.
+pub const MAX_BEZIER_DEGREE: usize = 30;
+/// Largest texture side.
+pub const MAX_TEXTURE_SIDE: u32 = 8192;
+
 #[derive(Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 struct ImageSpec {
@@ -200,6 +215,8 @@ pub struct LoadedScene {
     pub texture_names: Vec<String>,
     /// One line per generated object worth describing (e.g. a Menger sponge's numbers).
     pub notes: Vec<String>,
+    /// Values that were changed to fit (clamped) and other remarks.
+    pub warnings: Vec<Diagnostic>,
 }
 
 fn v3(a: [f64; 3]) -> DVec3 {
@@ -210,18 +227,29 @@ fn c3(a: [f64; 3]) -> Vec3 {
     Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32)
 }
 
-/// Build a texture from its spec; `base` resolves relative files.
-fn make_texture(t: &TextureSpec, base: &Path) -> Result<Texture, String> {
+/// Bytes a texture of w×h texels takes with its mipmaps (4/3 of the base level).
+pub fn texture_bytes(w: usize, h: usize) -> u64 {
+    (w as u64 * h as u64 * std::mem::size_of::<Vec3>() as u64) * 4 / 3
+}
+
+/// Build a texture from its spec; `base` resolves relative files. Values changed to fit are
+/// reported in `warn`.
+fn make_texture(t: &TextureSpec, base: &Path, warn: &mut Vec<String>) -> Result<Texture, String> {
     let [w, h] = t.size.unwrap_or([512, 512]);
-    if w == 0 || h == 0 || w > 8192 || h > 8192 {
-        return Err(format!("size {w}x{h} must be between 1x1 and 8192x8192"));
+    if w == 0 || h == 0 || w > MAX_TEXTURE_SIDE || h > MAX_TEXTURE_SIDE {
+        return Err(format!(
+            "size {w}x{h} must be between 1x1 and {MAX_TEXTURE_SIDE}x{MAX_TEXTURE_SIDE}"
+        ));
     }
     let (w, h) = (w as usize, h as usize);
     let colors = t
         .colors
         .clone()
         .unwrap_or_else(|| vec![[0.1, 0.1, 0.12], [0.95, 0.9, 0.8]]);
-    let (a, b) = (c3(colors[0]), c3(*colors.get(1).unwrap_or(&colors[0])));
+    let Some(&first) = colors.first() else {
+        return Err("colors needs at least one colour [r, g, b]".into());
+    };
+    let (a, b) = (c3(first), c3(*colors.get(1).unwrap_or(&first)));
     let file = || -> Result<PathBuf, String> {
         let f = t.file.as_ref().ok_or("needs file = \"…\"")?;
         let p = base.join(f);
@@ -230,18 +258,36 @@ fn make_texture(t: &TextureSpec, base: &Path) -> Result<Texture, String> {
         }
         Ok(p)
     };
+    let octaves = t.octaves.unwrap_or(6);
+    if !(1..=16).contains(&octaves) {
+        warn.push(format!(
+            "octaves {octaves} is outside 1..16; using {}",
+            octaves.clamp(1, 16)
+        ));
+    }
     let fbm = || Fbm {
-        octaves: t.octaves.unwrap_or(6).clamp(1, 16),
+        octaves: octaves.clamp(1, 16),
         lacunarity: t.lacunarity.unwrap_or(2.0),
         gain: t.gain.unwrap_or(0.5),
         frequency: t.frequency.unwrap_or(4.0),
         seed: t.seed.unwrap_or(1),
     };
+    let cells = |what: &str, warn: &mut Vec<String>| {
+        let [n, m] = t.cells.unwrap_or([8, 8]);
+        if n == 0 || m == 0 {
+            warn.push(format!(
+                "{what} cells {n}x{m}: at least 1 each; using {}x{}",
+                n.max(1),
+                m.max(1)
+            ));
+        }
+        (n.max(1), m.max(1))
+    };
     Ok(match t.kind.as_str() {
         "image" => {
             let p = file()?;
-            let img = image::open(&p).map_err(|e| format!("{}: {e}", p.display()))?;
-            Texture::from_image(&img.to_rgb8())
+            let img = super::image_in::read_rgb(&p).map_err(|e| e.to_string())?;
+            Texture::from_image(&img)
         }
         "flame" => {
             let p = file()?;
@@ -276,39 +322,48 @@ fn make_texture(t: &TextureSpec, base: &Path) -> Result<Texture, String> {
             Texture::from_image(&img)
         }
         "fbm" => texture::fbm_texture(w, h, fbm(), a, b),
-        "value" => texture::value_noise_texture(
-            w,
-            h,
-            t.seed.unwrap_or(1),
-            t.cells.map_or(8, |c| c[0]),
-            a,
-            b,
-        ),
+        "value" => {
+            let (n, _) = cells("value", warn);
+            texture::value_noise_texture(w, h, t.seed.unwrap_or(1), n, a, b)
+        }
         "mrf" => {
             let d = MrfParams::default();
+            let sweeps = t.sweeps.unwrap_or(d.sweeps);
+            if sweeps > 1000 {
+                warn.push(format!("sweeps {sweeps} is more than 1000; using 1000"));
+            }
+            if w > 1024 || h > 1024 {
+                warn.push(format!(
+                    "a Markov random field texture is at most 1024x1024; using {}x{}",
+                    w.min(1024),
+                    h.min(1024)
+                ));
+            }
             let p = MrfParams {
                 alpha: t.alpha.unwrap_or(d.alpha),
                 beta: t.beta.unwrap_or(d.beta),
                 delta: t.delta.unwrap_or(d.delta),
                 phi: t.phi.unwrap_or(d.phi),
                 omega: t.omega.unwrap_or(d.omega),
-                sweeps: t.sweeps.unwrap_or(d.sweeps).min(1000),
+                sweeps: sweeps.min(1000),
                 seed: t.seed.unwrap_or(1),
             };
             texture::mrf_texture(w.min(1024), h.min(1024), &p, a, b)
         }
         "checker" => {
-            let [n, m] = t.cells.unwrap_or([8, 8]);
-            texture::checker(w, h, n.max(1) as usize, m.max(1) as usize, a, b)
+            let (n, m) = cells("checker", warn);
+            texture::checker(w, h, n as usize, m as usize, a, b)
         }
         "grid" => {
-            let [n, m] = t.cells.unwrap_or([8, 8]);
-            texture::grid(w, h, n.max(1) as usize, m.max(1) as usize, a, b)
+            let (n, m) = cells("grid", warn);
+            texture::grid(w, h, n as usize, m as usize, a, b)
         }
         "solid" => Texture::solid(a),
         "gradient" => {
             let name = t.gradient.as_deref().unwrap_or("ember");
-            let g = super::escape_view::resolve_gradient(name, Some(base))?;
+            let g = super::escape_view::resolve_gradient_parsed(name, Some(base))?;
+            warn.extend(g.warnings.iter().map(|w| w.to_string()));
+            let g = g.value;
             // t runs along the gradient (e.g. a mountain's height).
             let rows: Vec<Vec3> = (0..256)
                 .flat_map(|k| {
@@ -324,6 +379,23 @@ fn make_texture(t: &TextureSpec, base: &Path) -> Result<Texture, String> {
             ));
         }
     })
+}
+
+/// Bytes a texture will take once made (with the buffers used while making it).
+fn texture_need(t: &TextureSpec) -> u64 {
+    let [w, h] = t.size.unwrap_or([512, 512]);
+    let (w, h) = (w as usize, h as usize);
+    match t.kind.as_str() {
+        "solid" => 16,
+        "gradient" => texture_bytes(4, 256),
+        "mrf" => {
+            let (w, h) = (w.min(1024), h.min(1024));
+            texture_bytes(w, h) + (w * h * 8) as u64
+        }
+        // Flame and escape renders check their own memory; an image is checked by size when
+        // it is decoded. Their textures are the size of the picture.
+        _ => texture_bytes(w, h) + (w * h * 4) as u64,
+    }
 }
 
 fn make_transform(steps: &[Step]) -> Result<Transform, String> {
@@ -378,12 +450,30 @@ fn make_transform(steps: &[Step]) -> Result<Transform, String> {
     Ok(t)
 }
 
+/// Subdivision levels of a mountain (1..10; the caller warns when clamped).
+fn mountain_levels(o: &ObjectSpec) -> u32 {
+    o.levels.unwrap_or(7).clamp(1, 10)
+}
+
+/// Bytes of a mountain's mesh: (2^levels + 1)² vertices, two triangles per cell.
+fn mountain_bytes(levels: u32) -> u64 {
+    let side = (1u64 << levels) + 1;
+    side * side * (24 + 24 + 8 + 48 + 8) + 2 * (side - 1) * (side - 1) * 12
+}
+
 fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
     Ok(match o.kind.as_str() {
         "jug" => Geometry::Patches(mesh::jug()),
         "teapot" => Geometry::Patches(mesh::teapot()),
         "revolve" => {
             let p = o.profile.as_ref().ok_or("needs profile = [[r, y], …]")?;
+            if p.len() > 3 * MAX_PROFILE_SEGMENTS + 1 {
+                return Err(format!(
+                    "profile has {} points: at most {} ({MAX_PROFILE_SEGMENTS} cubic segments)",
+                    p.len(),
+                    3 * MAX_PROFILE_SEGMENTS + 1
+                ));
+            }
             if p.len() < 4 || (p.len() - 1) % 3 != 0 {
                 return Err(format!(
                     "profile has {} points: needs 3k + 1 (k ≥ 1 cubic segments)",
@@ -406,6 +496,11 @@ fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
         }
         "bezier" => {
             let [n, m] = o.degree.unwrap_or([3, 3]);
+            if !(1..=MAX_BEZIER_DEGREE).contains(&n) || !(1..=MAX_BEZIER_DEGREE).contains(&m) {
+                return Err(format!(
+                    "degree [{n}, {m}]: each must be between 1 and {MAX_BEZIER_DEGREE}"
+                ));
+            }
             let net = o.net.as_ref().ok_or("needs net = [[x, y, z], …]")?;
             let p = Patch::bezier(n, m, net.iter().map(|p| v3(*p)).collect())
                 .map_err(|e| e.to_string())?;
@@ -426,7 +521,7 @@ fn make_geometry(o: &ObjectSpec) -> Result<Geometry, String> {
             }])
         }
         "mountain" => Geometry::Mesh(mesh::mountain(
-            o.levels.unwrap_or(7).clamp(1, 10),
+            mountain_levels(o),
             o.size.unwrap_or(6.0),
             o.sigma.unwrap_or(1.0),
             o.h.unwrap_or(0.8),
@@ -544,6 +639,27 @@ fn non_finite_value(text: &str) -> Option<(usize, &str)> {
 pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnostic> {
     let map = SourceMap::new(text);
     let at = |span: Option<std::ops::Range<usize>>| span.map_or(Pos::File, |s| map.pos(s.start));
+    // Counted before the text is turned into values, which would take memory per entry.
+    for (header, what, max) in [
+        ("[[object]]", "objects", MAX_OBJECTS),
+        ("[[texture]]", "textures", MAX_TEXTURES),
+        ("[[light]]", "lights", MAX_LIGHTS),
+    ] {
+        let mut n = 0;
+        for (off, line) in super::diag::lines(text) {
+            if line.trim_start().starts_with(header) {
+                n += 1;
+                if n > max {
+                    return Err(Diagnostic::error(
+                        name,
+                        map.pos(off),
+                        "SCN007",
+                        format!("more than {max} {what}; a scene holds at most {max}"),
+                    ));
+                }
+            }
+        }
+    }
     let spec: SceneSpec = toml::from_str(text)
         .map_err(|e| Diagnostic::error(name, at(e.span()), "SCN001", e.message().to_string()))?;
     if let Some((off, tok)) = non_finite_value(text) {
@@ -595,7 +711,20 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
     if let Some(b) = img.background {
         scene.background = c3(b);
     }
-    scene.supersample = img.supersample.unwrap_or(1).clamp(1, 4);
+    let mut warnings = Vec::new();
+    let ss = img.supersample.unwrap_or(1);
+    if !(1..=4).contains(&ss) {
+        warnings.push(Diagnostic::warning(
+            name,
+            Pos::File,
+            "SCN006",
+            format!(
+                "image supersample {ss} is outside 1..4; using {}",
+                ss.clamp(1, 4)
+            ),
+        ));
+    }
+    scene.supersample = ss.clamp(1, 4);
     let cam = spec.camera.unwrap_or_default();
     let d = Camera::default();
     scene.camera = Camera {
@@ -644,6 +773,50 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
     scene.ambient = l.ambient.unwrap_or(1.0);
     scene.attenuation_k = l.attenuation.unwrap_or(1.0);
     scene.blinn = l.blinn.unwrap_or(false);
+    let count_limit = |what: &str, n: usize, max: usize| {
+        if n > max {
+            Err(Diagnostic::error(
+                name,
+                Pos::File,
+                "SCN007",
+                format!("{n} {what}; a scene holds at most {max}"),
+            ))
+        } else {
+            Ok(())
+        }
+    };
+    count_limit(
+        "lights",
+        spec.light.as_ref().map_or(0, Vec::len),
+        MAX_LIGHTS,
+    )?;
+    count_limit(
+        "textures",
+        spec.texture.as_ref().map_or(0, Vec::len),
+        MAX_TEXTURES,
+    )?;
+    count_limit(
+        "objects",
+        spec.object.as_ref().map_or(0, Vec::len),
+        MAX_OBJECTS,
+    )?;
+    // Textures and mountain meshes are made while loading: their memory is checked before
+    // each is made, against what the system allows.
+    let budget = crate::memory::budget();
+    let mut loaded_bytes: u64 = 0;
+    let mut reserve = |bytes: u64, what: &dyn Fn() -> String| -> Result<(), String> {
+        loaded_bytes = loaded_bytes.saturating_add(bytes);
+        if loaded_bytes > budget.bytes {
+            return Err(crate::memory::MemoryError {
+                what: what(),
+                need: loaded_bytes,
+                budget,
+                hint: "use smaller or fewer textures and mountains".into(),
+            }
+            .to_string());
+        }
+        Ok(())
+    };
     if let Some(lights) = spec.light {
         scene.lights = lights
             .iter()
@@ -669,18 +842,33 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
                 format!("texture '{}' is defined twice", t.name),
             ));
         }
-        let tex = make_texture(&t, base).map_err(|m| {
+        let tex_err = |m: String| {
             Diagnostic::error(
                 name,
                 pos.clone(),
                 "SCN004",
                 format!("texture '{}': {m}", t.name),
             )
-        })?;
+        };
+        reserve(texture_need(&t), &|| {
+            format!("the scene's textures up to '{}'", t.name)
+        })
+        .map_err(tex_err)?;
+        let mut warn = Vec::new();
+        let tex = make_texture(&t, base, &mut warn).map_err(tex_err)?;
+        warnings.extend(warn.into_iter().map(|m| {
+            Diagnostic::warning(
+                name,
+                pos.clone(),
+                "SCN006",
+                format!("texture '{}': {m}", t.name),
+            )
+        }));
         scene.textures.push(tex);
         texture_names.push(t.name);
     }
     let mut notes = Vec::new();
+    let mut patches = 0usize;
     for (k, o) in spec.object.unwrap_or_default().into_iter().enumerate() {
         let pos = at(Some(o.span()));
         let o = o.into_inner();
@@ -724,9 +912,41 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
                 k.step, k.cubes, k.step, k.side, k.volume, k.area, k.dimension
             ));
         }
+        if o.kind == "mountain" {
+            let levels = o.levels.unwrap_or(7);
+            if !(1..=10).contains(&levels) {
+                warnings.push(Diagnostic::warning(
+                    name,
+                    pos.clone(),
+                    "SCN006",
+                    format!(
+                        "object '{label}': levels {levels} is outside 1..10; using {}",
+                        mountain_levels(&o)
+                    ),
+                ));
+            }
+            reserve(mountain_bytes(mountain_levels(&o)), &|| {
+                format!("the scene's meshes up to object '{label}'")
+            })
+            .map_err(err)?;
+        }
+        let geometry = make_geometry(&o).map_err(err)?;
+        if let Geometry::Patches(p) = &geometry {
+            patches += p.len();
+            if patches > MAX_PATCHES {
+                return Err(Diagnostic::error(
+                    name,
+                    pos.clone(),
+                    "SCN007",
+                    format!(
+                        "object '{label}' brings the scene to more than {MAX_PATCHES} patches, the most a scene holds"
+                    ),
+                ));
+            }
+        }
         scene.objects.push(Object {
             name: label.clone(),
-            geometry: make_geometry(&o).map_err(err)?,
+            geometry,
             transform: make_transform(o.transform.as_deref().unwrap_or(&[])).map_err(err)?,
             material,
             texture: find(&o.texture)?,
@@ -737,6 +957,7 @@ pub fn parse(text: &str, name: &str, base: &Path) -> Result<LoadedScene, Diagnos
         scene,
         texture_names,
         notes,
+        warnings,
     })
 }
 

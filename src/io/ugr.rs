@@ -149,6 +149,25 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic
                 ),
             ));
         }
+        let outside: Vec<&(i64, usize)> = indices
+            .iter()
+            .filter(|(n, _)| !(0..400).contains(n))
+            .collect();
+        if let Some(&&(n, off)) = outside.first() {
+            let more = match outside.len() {
+                1 => String::new(),
+                k => format!(" ({} more indices are outside too)", k - 1),
+            };
+            warnings.push(Diagnostic::warning(
+                file,
+                map.pos(off),
+                "UGR009",
+                format!(
+                    "index {n} of gradient '{name}' is outside 0..399; taken modulo 400 ({}){more}",
+                    n.rem_euclid(400)
+                ),
+            ));
+        }
         let keys: Vec<Key> = indices
             .iter()
             .zip(&colors)
@@ -367,5 +386,33 @@ skip(3D) {\ngradient:\n index=0 color=0\n}\n";
         )
         .unwrap();
         assert!(p.warnings.iter().any(|w| w.code == "UGR008"));
+    }
+
+    #[test]
+    fn indices_outside_the_circle_are_reduced_with_a_warning() {
+        let p = parse(
+            "n {\ngradient:\n index=-5 color=255 index=99999999999 color=65280\n}\n",
+            "i.ugr",
+        )
+        .unwrap();
+        // -5 → 395 (slot 252), 99999999999 → 399 (slot 255).
+        assert_eq!(p.value[0].rgb8(252), [255, 0, 0]);
+        assert_eq!(p.value[0].rgb8(255), [0, 255, 0]);
+        let w: Vec<_> = p.warnings.iter().filter(|w| w.code == "UGR009").collect();
+        assert_eq!(w.len(), 1);
+        assert_eq!(w[0].pos, crate::io::diag::Pos::LineCol(3, 2));
+        assert!(
+            w[0].message.contains("index -5") && w[0].message.contains("(395)"),
+            "{}",
+            w[0]
+        );
+        assert!(w[0].message.contains("1 more"), "{}", w[0]);
+        // Indices on the circle give no warning.
+        let p = parse(
+            "n {\ngradient:\n index=0 color=0 index=399 color=1\n}\n",
+            "o.ugr",
+        )
+        .unwrap();
+        assert!(p.warnings.is_empty());
     }
 }

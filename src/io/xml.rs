@@ -26,6 +26,7 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
         i += 1;
     }
     let mut out = Vec::new();
+    let mut seen: std::collections::HashSet<&str> = std::collections::HashSet::new();
     loop {
         while i < b.len() && b[i].is_ascii_whitespace() {
             i += 1;
@@ -70,7 +71,17 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
         i += 1;
         let value = quick_xml::escape::unescape(raw)
             .map_err(|e| (base + vs, format!("attribute '{name}': {e}")))?;
-        if out.iter().any(|a: &Attr| a.name == name) {
+        // Duplicate check in linear time overall: a scan while the tag is small, a hash
+        // set once it is not (files from other programs carry thousands of attributes).
+        let dup = if out.len() < 16 {
+            out.iter().any(|a: &Attr| a.name == name)
+        } else {
+            if seen.is_empty() {
+                seen.extend(out.iter().map(|a: &Attr| a.name));
+            }
+            !seen.insert(name)
+        };
+        if dup {
             return Err((base + ns, format!("attribute '{name}' appears twice")));
         }
         out.push(Attr {
@@ -177,6 +188,11 @@ mod tests {
         assert!(scan_attrs("x a", 0).is_err());
         assert!(scan_attrs("x a=\"1", 0).is_err());
         assert!(scan_attrs("x a=\"1\" a=\"2\"", 0).is_err());
+        // Many attributes: duplicates are still found, far apart too.
+        let many: String = (0..1000).map(|k| format!(" a{k}=\"{k}\"")).collect();
+        assert_eq!(scan_attrs(&format!("x{many}"), 0).unwrap().len(), 1000);
+        let e = scan_attrs(&format!("x{many} a3=\"again\""), 0).unwrap_err();
+        assert!(e.1.contains("'a3' appears twice"), "{}", e.1);
     }
 
     #[test]

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use super::mesh::SurfacePatch;
 use super::mesh::{Mesh, projected_extent, resolution_for, tessellate};
-use super::scene::{Geometry, Object, Projection, Scene, illuminate_visible};
+use super::scene::{Geometry, Object, Projection, Renderer, Scene, illuminate_visible};
 use super::transform::Transform;
 
 /// Attribute interpolated perspective-correctly: a/w and 1/w are affine in screen space.
@@ -199,16 +199,53 @@ fn top_left(a: [f64; 3], b: [f64; 3], positive: bool) -> bool {
     }
 }
 
+/// Most triangles the patches of a scene are tessellated into (for one eye). Each object's
+/// grid follows its projected size (about 6 pixels a cell); when the sum would exceed this,
+/// every grid is coarsened by the same factor, so that memory and time stay bounded for
+/// scenes of thousands of patches, whose cells are then a few pixels larger.
+pub const MAX_TRIANGLES: u64 = 1_500_000;
+
+/// The tessellation grid of every object for one eye (0 for meshes), within
+/// [`MAX_TRIANGLES`].
+pub(crate) fn resolutions(scene: &Scene, eye: &Eye) -> Vec<usize> {
+    let mut n: Vec<usize> = scene
+        .objects
+        .iter()
+        .map(|o| match &o.geometry {
+            Geometry::Patches(p) => patch_resolution(o, p, eye),
+            Geometry::Mesh(_) | Geometry::QuaternionJulia(_) => 0,
+        })
+        .collect();
+    let patch_triangles = |n: &[usize]| -> u64 {
+        scene
+            .objects
+            .iter()
+            .zip(n)
+            .map(|(o, &k)| match &o.geometry {
+                Geometry::Patches(p) => p.len() as u64 * 2 * (k * k) as u64,
+                Geometry::Mesh(_) | Geometry::QuaternionJulia(_) => 0,
+            })
+            .sum()
+    };
+    let total = patch_triangles(&n);
+    if total > MAX_TRIANGLES {
+        let k = (MAX_TRIANGLES as f64 / total as f64).sqrt();
+        for v in n.iter_mut().filter(|v| **v > 0) {
+            *v = ((*v as f64 * k).floor() as usize).max(1);
+        }
+    }
+    n
+}
+
 /// World-space meshes of all objects for one eye (tessellation adapted to projected size).
 fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
+    let n = resolutions(scene, eye);
     scene
         .objects
         .par_iter()
-        .map(|o| match &o.geometry {
-            Geometry::Patches(p) => {
-                let n = patch_resolution(o, p, eye);
-                tessellate(p, n).transformed(&o.transform)
-            }
+        .zip(n.par_iter())
+        .map(|(o, &k)| match &o.geometry {
+            Geometry::Patches(p) => tessellate(p, k).transformed(&o.transform),
             Geometry::Mesh(m) => m.transformed(&o.transform),
             // Ray-marched per pixel instead.
             Geometry::QuaternionJulia(_) => Mesh::default(),
@@ -291,6 +328,157 @@ pub(crate) fn shade(
         scene.blinn,
         visible,
     )
+}
+
+/// Bytes per tessellated vertex while rendering: the mesh (position, normal, texture
+/// coordinates, tangents) and its transformed copy, the clipped vertex array (with the copy
+/// made while it is filled) and the screen positions.
+const BYTES_PER_VERTEX: u64 = 2 * (24 + 24 + 8 + 48) + 2 * std::mem::size_of::<Vert>() as u64 + 24;
+/// Bytes per triangle: its indices in the mesh, the screen triangle (with the slack of a
+/// growing vector) and its entries in the row bins.
+const BYTES_PER_TRIANGLE: u64 = 12 + 3 * std::mem::size_of::<Tri>() as u64 / 2 + 16;
+
+/// Memory a scene render needs, part by part, estimated before tessellating.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MemoryEstimate {
+    /// Vertices and triangles after tessellation (all eyes).
+    pub vertices: u64,
+    pub triangles: u64,
+    /// Meshes, clipped vertices, screen triangles and their bins.
+    pub geometry: u64,
+    /// Colour buffers at the supersampled size and the output image.
+    pub pixels: u64,
+    pub total: u64,
+}
+
+/// The pixel size a scene renders at (supersampled), and the eyes with their widths.
+fn eyes(scene: &Scene) -> (usize, usize, Vec<(Eye, usize)>) {
+    let ss = scene.supersample.clamp(1, 4) as usize;
+    let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
+    let eyes = if let Projection::Stereo = scene.camera.projection {
+        let half = w / 2;
+        let k = scene.camera.distance;
+        vec![
+            (eye_for(scene, half, h, k / 20.0), half),
+            (eye_for(scene, half, h, -k / 20.0), half),
+        ]
+    } else {
+        vec![(eye_for(scene, w, h, 0.0), w)]
+    };
+    (w, h, eyes)
+}
+
+/// Estimate the memory of a render (the textures, already made, are not counted): the
+/// tessellation the renderer will choose, every triangle visible, colour buffers per eye.
+pub fn estimate_memory(scene: &Scene) -> MemoryEstimate {
+    let (w, h, eyes) = eyes(scene);
+    // Eyes render one after the other: the larger tessellation counts.
+    let (mut vertices, mut triangles) = (0u64, 0u64);
+    for (eye, _) in &eyes {
+        let (mut v, mut t) = (0u64, 0u64);
+        for (o, k) in scene.objects.iter().zip(resolutions(scene, eye)) {
+            let (dv, dt) = match &o.geometry {
+                Geometry::Patches(p) => {
+                    let n = k.max(1) as u64;
+                    (
+                        p.len() as u64 * (n + 1) * (n + 1),
+                        p.len() as u64 * 2 * n * n,
+                    )
+                }
+                Geometry::Mesh(m) => (m.positions.len() as u64, m.triangles.len() as u64),
+                // Ray-marched per pixel: no geometry.
+                Geometry::QuaternionJulia(_) => (0, 0),
+            };
+            v = v.saturating_add(dv);
+            t = t.saturating_add(dt);
+        }
+        vertices = vertices.max(v);
+        triangles = triangles.max(t);
+    }
+    let geometry = match scene.renderer {
+        Renderer::ZBuffer => vertices
+            .saturating_mul(BYTES_PER_VERTEX)
+            .saturating_add(triangles.saturating_mul(BYTES_PER_TRIANGLE)),
+        // The ray caster keeps the world meshes, a bounding volume hierarchy and one
+        // reference (16 bytes) per triangle.
+        Renderer::RayCast => vertices
+            .saturating_mul(104)
+            .saturating_add(super::bvh::bytes_for(triangles as usize) as u64)
+            .saturating_add(triangles.saturating_mul(16)),
+    };
+    let px = (w * h) as u64;
+    let colour = std::mem::size_of::<Vec3>() as u64;
+    // A stereo pair keeps the left picture while the right one is made, then joins them.
+    let pixels = px * colour * if eyes.len() > 1 { 2 } else { 1 }
+        + (scene.width as u64 * scene.height as u64) * 3 * 2;
+    MemoryEstimate {
+        vertices,
+        triangles,
+        geometry,
+        pixels,
+        total: geometry.saturating_add(pixels),
+    }
+}
+
+/// Largest scene image side.
+pub const MAX_SIDE: u32 = 16_384;
+
+/// Why a scene cannot be rendered.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum RenderError {
+    #[error("{0}")]
+    Settings(String),
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::memory::MemoryError),
+    #[error("rendering was cancelled")]
+    Cancelled,
+}
+
+/// Check a scene's size and memory before rendering it (`configured`: a memory limit instead
+/// of the system's budget).
+pub fn check(scene: &Scene, configured: Option<u64>) -> Result<MemoryEstimate, RenderError> {
+    let (w, h) = (scene.width, scene.height);
+    if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
+        return Err(RenderError::Settings(format!(
+            "image size {w}x{h} must be between 1x1 and {MAX_SIDE}x{MAX_SIDE}"
+        )));
+    }
+    if !(1..=4).contains(&scene.supersample) {
+        return Err(RenderError::Settings(format!(
+            "supersample {} must be between 1 and 4",
+            scene.supersample
+        )));
+    }
+    if let Projection::Stereo = scene.camera.projection
+        && w < 2
+    {
+        return Err(RenderError::Settings(format!(
+            "a stereo pair puts two pictures side by side: the width ({w}) must be at least 2"
+        )));
+    }
+    let est = estimate_memory(scene);
+    crate::memory::check(
+        est.total,
+        configured,
+        || {
+            format!(
+                "a {w}×{h} scene at supersample {} with {} object{} ({} triangles)",
+                scene.supersample,
+                scene.objects.len(),
+                if scene.objects.len() == 1 { "" } else { "s" },
+                est.triangles
+            )
+        },
+        || {
+            let mut h = String::from("reduce the image size");
+            if scene.supersample > 1 {
+                h.push_str(&format!(" or the supersample ({})", scene.supersample));
+            }
+            h.push_str(", or use fewer objects or profile segments");
+            h
+        },
+    )?;
+    Ok(est)
 }
 
 const BAND: usize = 16;
@@ -646,24 +834,44 @@ pub(crate) fn to_image(buf: &[Vec3], w: usize, h: usize, ss: usize) -> RgbImage 
 }
 
 /// Render the scene with the z-buffer (width×height; a stereo pair puts the left eye on the
-/// left half). Returns None when cancelled.
+/// left half), without the size and memory check of [`try_render`]. None when cancelled.
 pub fn render_zbuffer(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
+    zbuffer(scene, cancel).ok()
+}
+
+/// Render the scene with its renderer (z-buffer or ray casting) after checking its size and
+/// memory ([`check`]). Cancelling returns [`RenderError::Cancelled`].
+pub fn try_render(scene: &Scene, cancel: Option<&AtomicBool>) -> Result<RgbImage, RenderError> {
+    check(scene, None)?;
+    match scene.renderer {
+        Renderer::ZBuffer => zbuffer(scene, cancel),
+        Renderer::RayCast => super::raycast::render(scene, cancel).ok_or(RenderError::Cancelled),
+    }
+}
+
+fn zbuffer(scene: &Scene, cancel: Option<&AtomicBool>) -> Result<RgbImage, RenderError> {
     let ss = scene.supersample.clamp(1, 4) as usize;
-    let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
-    if let Projection::Stereo = scene.camera.projection {
-        let half = w / 2;
-        let k = scene.camera.distance;
-        let left = render_eye(scene, &eye_for(scene, half, h, k / 20.0), half, h, cancel)?;
-        let right = render_eye(scene, &eye_for(scene, half, h, -k / 20.0), half, h, cancel)?;
+    let (w, h, eyes) = eyes(scene);
+    if let [(left_eye, half), (right_eye, _)] = eyes.as_slice() {
+        let half = *half;
+        let left = render_eye(scene, left_eye, half, h, cancel).ok_or(RenderError::Cancelled)?;
+        let right = render_eye(scene, right_eye, half, h, cancel).ok_or(RenderError::Cancelled)?;
         let mut buf = vec![scene.background; w * h];
         for y in 0..h {
             buf[y * w..y * w + half].copy_from_slice(&left[y * half..(y + 1) * half]);
             buf[y * w + half..y * w + 2 * half].copy_from_slice(&right[y * half..(y + 1) * half]);
         }
-        return Some(to_image(&buf, w, h, ss));
+        return Ok(to_image(&buf, w, h, ss));
     }
-    let buf = render_eye(scene, &eye_for(scene, w, h, 0.0), w, h, cancel)?;
-    Some(to_image(&buf, w, h, ss))
+    let (eye, _) = &eyes[0];
+    let buf = render_eye(scene, eye, w, h, cancel).ok_or(RenderError::Cancelled)?;
+    Ok(to_image(&buf, w, h, ss))
+}
+
+/// As [`try_render`], None for every failure (cancelled, too large, invalid size); kept for
+/// callers that only show a picture when there is one.
+pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
+    try_render(scene, cancel).ok()
 }
 
 /// The screen position (pixels) of a world point under the scene's camera (None behind the
@@ -681,6 +889,43 @@ pub fn project(scene: &Scene, p: DVec3) -> Option<[f64; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn estimates_of_both_renderers_grow_with_the_picture_and_refuse_clearly() {
+        let jug_scene = |w: u32, h: u32, r: Renderer| {
+            let mut s = Scene {
+                width: w,
+                height: h,
+                renderer: r,
+                ..Scene::default()
+            };
+            s.objects.push(Object {
+                name: "jug".into(),
+                geometry: Geometry::Patches(crate::surface::mesh::jug()),
+                transform: Transform::IDENTITY,
+                material: crate::surface::scene::Material::default(),
+                texture: None,
+                bump_texture: None,
+            });
+            s
+        };
+        for r in [Renderer::ZBuffer, Renderer::RayCast] {
+            let small = estimate_memory(&jug_scene(320, 240, r)).total;
+            let big = estimate_memory(&jug_scene(1280, 960, r)).total;
+            // At least the colour buffers; 16× the pixels costs more than 4× the memory.
+            assert!(small >= 320 * 240 * 12, "{small}");
+            assert!(big > 4 * small && big < 40 * small, "{small} {big}");
+        }
+        // 16384² with 4× supersampling needs tens of GiB: refused with a message that says
+        // what to change.
+        let mut huge = jug_scene(16384, 16384, Renderer::RayCast);
+        huge.supersample = 4;
+        let e = check(&huge, Some(8 << 30)).unwrap_err();
+        assert!(matches!(e, RenderError::OutOfMemory(_)));
+        let msg = e.to_string();
+        assert!(msg.contains("image size"), "{msg}");
+        assert!(check(&jug_scene(320, 240, Renderer::RayCast), Some(8 << 30)).is_ok());
+    }
     use crate::surface::mesh::{SurfacePatch, TexMap};
     use crate::surface::patch::Patch;
     use crate::surface::scene::{Light, Material, Object};

@@ -21,7 +21,7 @@ use super::bvh::{Bvh, TriGeom};
 use super::mesh::{Mesh, SurfacePatch};
 use super::patch::Patch;
 use super::quaternion::{QuaternionJulia, ray_sphere};
-use super::raster::{Eye, SurfacePoint, eye_for, patch_resolution, shade, to_image};
+use super::raster::{Eye, SurfacePoint, eye_for, resolutions, shade, to_image};
 use super::scene::{Geometry, Object, Projection, Scene};
 use super::transform::Transform;
 
@@ -287,6 +287,8 @@ fn patch_triangles(o: &Object, p: &[SurfacePatch], n: usize) -> (Vec<TriGeom>, V
 }
 
 fn prepare<'a>(scene: &'a Scene, eye: &Eye) -> World<'a> {
+    // The same tessellation as the z-buffer's, within its triangle budget.
+    let res = resolutions(scene, eye);
     let objs: Vec<Prepared> = scene
         .objects
         .par_iter()
@@ -295,7 +297,7 @@ fn prepare<'a>(scene: &'a Scene, eye: &Eye) -> World<'a> {
             let (centre, radius) = world_sphere(o)?;
             let kind = match &o.geometry {
                 Geometry::Patches(p) => {
-                    let n = patch_resolution(o, p, eye);
+                    let n = res[k].max(1);
                     let (geo, tris) = patch_triangles(o, p, n);
                     Kind::Patches {
                         bvh: Bvh::build(geo),
@@ -655,23 +657,6 @@ pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
     }
     let buf = render_eye(scene, &eye_for(scene, w, h, 0.0), w, h, cancel)?;
     Some(to_image(&buf, w, h, ss))
-}
-
-/// Triangles the ray caster builds for a scene at its size (for memory estimates).
-pub(crate) fn triangle_count(scene: &Scene, w: usize, h: usize) -> usize {
-    let eye = eye_for(scene, w, h, 0.0);
-    scene
-        .objects
-        .iter()
-        .map(|o| match &o.geometry {
-            Geometry::Patches(p) => {
-                let n = patch_resolution(o, p, &eye);
-                2 * n * n * p.len()
-            }
-            Geometry::Mesh(m) => m.triangles.len(),
-            Geometry::QuaternionJulia(_) => 0,
-        })
-        .sum()
 }
 
 #[cfg(test)]
