@@ -51,13 +51,21 @@ pub struct CompiledXform {
     /// Plotted visibility o^(log2 10).
     pub vis: f64,
     pub opacity: f64,
+    /// A coordinate of larger magnitude (or NaN) is a bad value: [`BAD_LIMIT`] or
+    /// [`BAD_LIMIT_WIDE`].
+    pub bad_limit: f64,
 }
 
-/// |v| ≤ 1e10; false for NaN (which fails every comparison).
+/// |v| ≤ limit; false for NaN (which fails every comparison).
 #[inline(always)]
-fn within_limit(v: f64) -> bool {
-    v.abs() <= BAD_LIMIT
+fn within(v: f64, limit: f64) -> bool {
+    v.abs() <= limit
 }
+
+/// Largest magnitude of a good coordinate for flames of Fractorium's variations: Fractorium
+/// only treats NaN as a bad value (its trig and quaternion variations bring far-away points
+/// back), so only NaN and infinity are bad there.
+pub const BAD_LIMIT_WIDE: f64 = f64::MAX;
 
 /// flam3 `adjust_percentage`: vis = o^(log₂10), with 0 ↦ 0.
 pub fn adjust_opacity(o: f64) -> f64 {
@@ -116,6 +124,7 @@ impl CompiledXform {
             sets_color,
             vis: adjust_opacity(opacity),
             opacity,
+            bad_limit: BAD_LIMIT,
         }
     }
 
@@ -160,11 +169,11 @@ impl CompiledXform {
                 nc = 0.0;
             }
         }
-        if !(within_limit(acc.x) && within_limit(acc.y)) {
+        if !(within(acc.x, self.bad_limit) && within(acc.y, self.bad_limit)) {
             let q = Pt {
                 x: rng.f11(),
                 y: rng.f11(),
-                z: acc.z,
+                z: 0.0,
                 c: nc,
             };
             return (q, true);
@@ -413,7 +422,7 @@ impl CompiledXform {
         let mut any_bad = false;
         for j in 0..n {
             // `!(a <= l)` is also true for NaN.
-            let b = !within_limit(px[j]) | !within_limit(py[j]);
+            let b = !within(px[j], self.bad_limit) | !within(py[j], self.bad_limit);
             bad[j] = b;
             any_bad |= b;
         }
@@ -424,8 +433,10 @@ impl CompiledXform {
         if any_bad {
             for j in 0..n {
                 if bad[j] {
+                    // A fresh start in the plane: a NaN or infinite z must not carry over.
                     x[j] = rng.f11();
                     y[j] = rng.f11();
+                    z[j] = 0.0;
                 }
             }
         }
@@ -587,6 +598,21 @@ impl Chaos {
             .final_xform
             .as_ref()
             .map(|f| CompiledXform::new(f, f.opacity, true));
+        // flam3 resets points beyond 1e10; Fractorium only NaN. Flames that use a variation
+        // flam3 does not have follow Fractorium.
+        let fractorium = flame
+            .xforms
+            .iter()
+            .chain(flame.final_xform.as_ref())
+            .flat_map(|x| &x.vars)
+            .any(|v| v.weight != 0.0 && !variations::info(v.id).has(variations::flag::FLAM3));
+        let mut xforms = xforms;
+        let mut final_xform = final_xform;
+        if fractorium {
+            for x in xforms.iter_mut().chain(final_xform.as_mut()) {
+                x.bad_limit = BAD_LIMIT_WIDE;
+            }
+        }
         Ok(Chaos {
             xforms,
             final_xform,
@@ -1135,5 +1161,63 @@ mod tests {
             assert!(p.x.abs() <= BAD_LIMIT && p.y.abs() <= BAD_LIMIT);
         });
         assert!(bad > 0);
+    }
+
+    #[test]
+    fn a_bad_value_restarts_in_the_plane() {
+        // A 3-D point that escapes is replaced by a random point with z = 0: a NaN or huge z
+        // carried over would poison every later step of 3-D variations (tanq, sinhq …).
+        let mut x = Xform::linear(Affine::new(1e11, 0.0, 0.0, 1e11, 0.0, 0.0), 1.0, 0.0);
+        x.vars = vec![crate::flame::model::Var::new(
+            variations::by_name("linear3D").unwrap(),
+            1.0,
+        )];
+        let f = Flame {
+            xforms: vec![x],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(3);
+        // An infinite x is bad for every flame (linear3D is not flam3's, so 1e10 is not).
+        let p = Pt {
+            x: f64::INFINITY,
+            y: 0.5,
+            z: f64::NAN,
+            c: 0.0,
+        };
+        let (q, bad) = ch.xforms[0].apply(p, &mut rng);
+        assert!(bad);
+        assert_eq!(q.z, 0.0);
+        assert!(q.x.abs() <= 1.0 && q.y.abs() <= 1.0);
+        // Lanes: plotted points after restarts stay finite.
+        let mut seen = 0;
+        let mut ln = Lanes::new();
+        ch.run_lanes(
+            2000,
+            &mut rng,
+            &mut ln,
+            |xs: &[f64], ys: &[f64], zs: &[f64], _, _| {
+                for k in 0..xs.len() {
+                    assert!(xs[k].is_finite() && ys[k].is_finite() && zs[k].is_finite());
+                    seen += 1;
+                }
+            },
+        );
+        assert!(seen > 0);
+    }
+
+    #[test]
+    fn flames_of_fractorium_variations_only_reset_nan() {
+        // flam3 resets coordinates beyond 1e10; Fractorium only NaN (and ugnis infinity).
+        let mut f = Flame {
+            xforms: vec![Xform::linear(Affine::IDENTITY, 1.0, 0.0)],
+            ..Flame::default()
+        };
+        assert_eq!(Chaos::new(&f).unwrap().xforms[0].bad_limit, BAD_LIMIT);
+        f.xforms[0].vars.push(crate::flame::model::Var::new(
+            variations::by_name("tanq").unwrap(),
+            0.5,
+        ));
+        assert_eq!(Chaos::new(&f).unwrap().xforms[0].bad_limit, BAD_LIMIT_WIDE);
     }
 }
