@@ -2,11 +2,12 @@
 //! escape-time fractals and textured Bezier scenes, plus readers and writers for the file
 //! formats of Fractint, flam3, Apophysis and Ultra Fractal.
 //!
-//! The engine (`flame`, `escape`, `surface`, `gradient`, `noise`, with `memory` and `threads`
-//! for the limits every renderer checks) has no GUI dependency; `io` reads and writes files on top
-//! of it; the egui application lives in `app` behind the `gui` feature.
+//! The engine (`flame`, `escape`, `surface`, `gradient`, `noise`, `explore`, with `memory` and
+//! `threads` for the limits every renderer checks) has no GUI dependency; `io` reads and writes
+//! files on top of it; the egui application lives in `app` behind the `gui` feature.
 
 pub mod escape;
+pub mod explore;
 pub mod flame;
 pub mod gradient;
 pub mod io;

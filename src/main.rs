@@ -38,6 +38,12 @@ enum Command {
     Scene(cli::scene::SceneArgs),
     /// Render the frames of an animation (rotating triangles or in-betweens of flames)
     Animate(cli::animate::AnimateArgs),
+    /// Draw an entry of a Fractint L-system file (.l) to SVG or PNG
+    Lsystem(cli::lsystem::LsystemArgs),
+    /// Estimate the fractal dimension of a flame, IFS or image by box counting
+    Dimension(cli::dimension::DimensionArgs),
+    /// Draw the Lorenz attractor (and show its sensitivity to the start)
+    Lorenz(cli::lorenz::LorenzArgs),
 }
 
 fn main() {
@@ -63,6 +69,9 @@ fn main() {
         Some(Command::Animate(a)) => cli::animate::run(a),
         Some(Command::Escape(a)) => cli::escape::run(a),
         Some(Command::Scene(a)) => cli::scene::run(a),
+        Some(Command::Lsystem(a)) => cli::lsystem::run(a),
+        Some(Command::Dimension(a)) => cli::dimension::run(a),
+        Some(Command::Lorenz(a)) => cli::lorenz::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {

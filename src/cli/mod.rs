@@ -6,8 +6,11 @@
 
 pub mod animate;
 pub mod convert;
+pub mod dimension;
 pub mod escape;
 pub mod info;
+pub mod lorenz;
+pub mod lsystem;
 pub mod random;
 pub mod render;
 pub mod scene;

@@ -10,10 +10,12 @@ pub mod flam3_xml;
 pub mod ggr;
 pub mod ifs;
 pub mod image_in;
+pub mod lsystem;
 pub mod map;
 pub mod palettes;
 pub mod png;
 pub mod scene;
+pub mod svg;
 pub mod ugr;
 pub mod xml;
 
@@ -268,6 +270,26 @@ pub fn ifs_flames_with(
             .collect(),
         warnings: p.warnings,
     })
+}
+
+/// Read a Fractint L-system file (`.l`; UTF-8, or Windows-1252 with a warning).
+pub fn read_lsystems(path: &Path) -> Result<Parsed<lsystem::LFile>, Diagnostic> {
+    let name = path.display().to_string();
+    let bytes = read_bytes(path)?;
+    let (text, w) = diag::decode_text(&bytes, &name);
+    let mut p = lsystem::parse(&text, &name)?;
+    p.warnings.extend(w);
+    Ok(p)
+}
+
+/// Write L-systems atomically as a Fractint `.l` file.
+pub fn write_lsystems(
+    path: &Path,
+    systems: &[crate::explore::lsystem::LSystem],
+) -> Result<(), String> {
+    let text = lsystem::write(systems)?;
+    atomic::write_atomic(path, text.as_bytes())
+        .map_err(|e| format!("cannot write '{}': {e}", path.display()))
 }
 
 /// Read the gradients of a gradient file (.ugr: several; .map, .ggr: one) or make one from an
