@@ -623,7 +623,7 @@ fn read_flame(
                         "FLA005",
                         format!("unknown attribute '{other}' kept"),
                     );
-                } else if !cx.ignored_attrs.iter().any(|n| n == other) {
+                } else if cx.ignored_set.insert(name_hash(other)) && cx.ignored_attrs.len() < 6 {
                     cx.ignored_attrs.push(other.to_string());
                 }
                 f.extra_attrs.push((other.to_string(), v.to_string()));
