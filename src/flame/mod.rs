@@ -16,6 +16,8 @@ pub mod mutate;
 pub mod random;
 pub mod render;
 pub mod rng;
+pub mod state;
+pub mod strips;
 pub mod symmetry;
 pub mod tonemap;
 pub mod variations;

@@ -12,6 +12,7 @@ pub mod image_in;
 pub mod map;
 pub mod palettes;
 pub mod png;
+pub mod render_state;
 pub mod scene;
 pub mod ugr;
 pub mod xml;
