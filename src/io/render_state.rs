@@ -373,12 +373,22 @@ impl StateReader {
             let rows = read_u32(&mut file).map_err(e)? as usize;
             let clen = read_u64(&mut file).map_err(e)?;
             let offset = pos + 20;
-            if row0 != next_row || rows == 0 || row0 + rows > bh || offset + clen > len {
+            if offset + clen > len {
                 return Err(err(
                     &name,
                     Pos::Byte(pos),
                     format!(
-                        "histogram chunk of rows {row0}..{} does not follow row {next_row} of {bh}, or runs past the end of the file",
+                        "histogram chunk of rows {row0}..{} runs past the end of the file (truncated: was it still being written?)",
+                        row0 + rows
+                    ),
+                ));
+            }
+            if row0 != next_row || rows == 0 || row0 + rows > bh {
+                return Err(err(
+                    &name,
+                    Pos::Byte(pos),
+                    format!(
+                        "histogram chunk of rows {row0}..{} does not follow row {next_row} of {bh}",
                         row0 + rows
                     ),
                 ));
