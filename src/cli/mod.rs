@@ -281,7 +281,7 @@ pub fn parse_bytes(s: &str) -> Result<u64, String> {
         .parse()
         .map_err(|_| format!("'{s}' is not a size such as 512M or 2G"))?;
     let bytes = v * mult as f64;
-    if !(bytes >= 1.0 && bytes < 1e18) {
+    if !(1.0..1e18).contains(&bytes) {
         return Err(format!("size '{s}' must be between 1 byte and 1e18 bytes"));
     }
     Ok(bytes as u64)

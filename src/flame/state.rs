@@ -11,7 +11,6 @@
 //! that do not depend on files.
 
 use crate::flame::chaos::{LaneState, SUB_BATCH};
-use crate::flame::histogram::Histogram;
 use crate::flame::model::Flame;
 
 /// Most parts a render may be split into (a thousand machines is a large farm).
@@ -319,14 +318,6 @@ impl RenderState {
 pub struct MergeError {
     pub index: usize,
     pub message: String,
-}
-
-/// Sum histograms in a fixed order (the caller passes them sorted by part), so that the sum
-/// does not depend on the order the files were given in.
-pub fn sum_histograms(into: &mut Histogram, others: &[&Histogram]) {
-    for h in others {
-        into.add(h);
-    }
 }
 
 /// "0, 1, 3".

@@ -210,44 +210,6 @@ fn find_text(info: &png::Info, file: &str) -> Result<Option<String>, Diagnostic>
     Ok(None)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn genome_round_trip_and_bit_depths() {
-        let img = DynamicImage::ImageRgb8(image::RgbImage::from_pixel(3, 2, image::Rgb([1, 2, 3])));
-        let meta = PngMeta {
-            flame_xml: Some("<flame name=\"žvaigždė\"/>".into()),
-            samples: Some(12),
-            error_rate: None,
-            text: vec![("ugnis_escape_view".into(), "kind = julia".into())],
-        };
-        let bytes = encode(&img, &meta).unwrap();
-        let g = read_genome(&bytes, "x.png").unwrap();
-        assert_eq!(
-            g,
-            "<flame name=\"&#382;vaigžd&#279;\"/>".replace('ž', "&#382;")
-        );
-        let back = image::load_from_memory(&bytes).unwrap();
-        assert_eq!(back.to_rgb8().get_pixel(2, 1).0, [1, 2, 3]);
-        // 16-bit samples come back exactly (big-endian on disk).
-        let img16 = DynamicImage::ImageRgba16(image::ImageBuffer::from_pixel(
-            2,
-            2,
-            image::Rgba([65280u16, 256, 1, 65535]),
-        ));
-        let bytes = encode(&img16, &PngMeta::default()).unwrap();
-        let back = image::load_from_memory(&bytes).unwrap();
-        assert_eq!(back.to_rgba16().get_pixel(0, 0).0, [65280, 256, 1, 65535]);
-        assert_eq!(read_genome(&bytes, "y.png").unwrap_err().code, "PNG002");
-        assert_eq!(
-            read_genome(b"not a png", "z.png").unwrap_err().code,
-            "PNG001"
-        );
-    }
-}
-
 /// A PNG written band by band (posters rendered in strips): the header and metadata first,
 /// then rows as they are made, never the whole image in memory.
 pub struct PngStream<W: std::io::Write + 'static> {
@@ -313,5 +275,43 @@ impl<W: std::io::Write + 'static> PngStream<W> {
     /// End the image (every row must have been written).
     pub fn finish(self) -> std::io::Result<()> {
         self.inner.finish().map_err(std::io::Error::other)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn genome_round_trip_and_bit_depths() {
+        let img = DynamicImage::ImageRgb8(image::RgbImage::from_pixel(3, 2, image::Rgb([1, 2, 3])));
+        let meta = PngMeta {
+            flame_xml: Some("<flame name=\"žvaigždė\"/>".into()),
+            samples: Some(12),
+            error_rate: None,
+            text: vec![("ugnis_escape_view".into(), "kind = julia".into())],
+        };
+        let bytes = encode(&img, &meta).unwrap();
+        let g = read_genome(&bytes, "x.png").unwrap();
+        assert_eq!(
+            g,
+            "<flame name=\"&#382;vaigžd&#279;\"/>".replace('ž', "&#382;")
+        );
+        let back = image::load_from_memory(&bytes).unwrap();
+        assert_eq!(back.to_rgb8().get_pixel(2, 1).0, [1, 2, 3]);
+        // 16-bit samples come back exactly (big-endian on disk).
+        let img16 = DynamicImage::ImageRgba16(image::ImageBuffer::from_pixel(
+            2,
+            2,
+            image::Rgba([65280u16, 256, 1, 65535]),
+        ));
+        let bytes = encode(&img16, &PngMeta::default()).unwrap();
+        let back = image::load_from_memory(&bytes).unwrap();
+        assert_eq!(back.to_rgba16().get_pixel(0, 0).0, [65280, 256, 1, 65535]);
+        assert_eq!(read_genome(&bytes, "y.png").unwrap_err().code, "PNG002");
+        assert_eq!(
+            read_genome(b"not a png", "z.png").unwrap_err().code,
+            "PNG001"
+        );
     }
 }

@@ -11,10 +11,9 @@
 //! u32 k, k × lane set                  each worker's orbits: 256 × (x, y, z, c as f64, last
 //!                                      as u16, consec as u8, step as i32), then started as u8
 //! repeated: "ROWS" u32 row0 u32 rows u64 n, n bytes
-//!                                      bucket rows row0.. of the grid: deflate of the rows'
-//!                                      f32 values with their bytes grouped by significance
-//!                                      (all lowest bytes, then the next…), which lets deflate
-//!                                      see the runs of exponents and zeros
+//!                                      bucket rows row0.. of the grid: deflate of a bit per
+//!                                      bucket (empty or not), then the non-empty buckets'
+//!                                      alphas and colours as byte planes (see `compress`)
 //! "END\0" u32 chunk count              the end (a truncated file has none)
 //! ```
 //!
@@ -145,7 +144,7 @@ impl<W: Write> StateWriter<W> {
         for part in data.chunks(group) {
             let packed: Vec<Vec<u8>> = part
                 .par_chunks(CHUNK_ROWS * bw)
-                .map(|rows| compress(rows))
+                .map(compress)
                 .collect::<std::io::Result<_>>()?;
             for (rows, bytes) in part.chunks(CHUNK_ROWS * bw).zip(packed) {
                 let n = rows.len() / bw;
@@ -176,46 +175,106 @@ impl<W: Write> StateWriter<W> {
     }
 }
 
-fn compress(rows: &[Bucket]) -> std::io::Result<Vec<u8>> {
-    let n = rows.len() * 4;
-    let mut shuffled = vec![0u8; n * 4];
-    for (i, v) in rows.iter().flatten().enumerate() {
-        let b = v.to_le_bytes();
-        shuffled[i] = b[0];
-        shuffled[n + i] = b[1];
-        shuffled[2 * n + i] = b[2];
-        shuffled[3 * n + i] = b[3];
+/// Byte planes: all the lowest bytes of `words`, then the next…
+fn shuffle_into(out: &mut Vec<u8>, words: &[u32]) {
+    for k in 0..4 {
+        out.extend(words.iter().map(|w| (w >> (8 * k)) as u8));
     }
-    let mut enc =
-        flate2::write::DeflateEncoder::new(Vec::with_capacity(n), flate2::Compression::fast());
-    enc.write_all(&shuffled)?;
+}
+
+fn unshuffle(bytes: &[u8], n: usize) -> Vec<u32> {
+    (0..n)
+        .map(|i| u32::from_le_bytes([bytes[i], bytes[n + i], bytes[2 * n + i], bytes[3 * n + i]]))
+        .collect()
+}
+
+/// Can this alpha value be stored as a whole number (and read back bit for bit)?
+fn integral(a: f32) -> bool {
+    (0.0..=16_777_216.0).contains(&a) && (a as u32 as f32).to_bits() == a.to_bits()
+}
+
+/// A chunk before deflate: a bit per bucket (set: not all zero), a flag (1: the alphas are
+/// whole numbers, as hit counts of opaque palettes are, stored as integers, whose high bytes
+/// are mostly zero), the alphas of the set buckets, then their R, G, B, each as byte planes.
+/// Empty buckets cost one bit; the noisy low mantissa bytes are kept apart from the exponents.
+fn compress(rows: &[Bucket]) -> std::io::Result<Vec<u8>> {
+    let n = rows.len();
+    let mut mask = vec![0u8; n.div_ceil(8)];
+    let mut kept: Vec<&Bucket> = Vec::new();
+    for (i, b) in rows.iter().enumerate() {
+        if b.iter().any(|v| v.to_bits() != 0) {
+            mask[i / 8] |= 1 << (i % 8);
+            kept.push(b);
+        }
+    }
+    let ints = kept.iter().all(|b| integral(b[3]));
+    let mut buf = Vec::with_capacity(mask.len() + 1 + kept.len() * 16);
+    buf.extend_from_slice(&mask);
+    buf.push(ints as u8);
+    let alpha: Vec<u32> = kept
+        .iter()
+        .map(|b| if ints { b[3] as u32 } else { b[3].to_bits() })
+        .collect();
+    shuffle_into(&mut buf, &alpha);
+    let rgb: Vec<u32> = kept
+        .iter()
+        .flat_map(|b| [b[0].to_bits(), b[1].to_bits(), b[2].to_bits()])
+        .collect();
+    shuffle_into(&mut buf, &rgb);
+    let mut enc = flate2::write::DeflateEncoder::new(
+        Vec::with_capacity(buf.len() / 2),
+        flate2::Compression::fast(),
+    );
+    enc.write_all(&buf)?;
     enc.finish()
 }
 
 fn decompress(file: &str, at: u64, bytes: &[u8], out: &mut [Bucket]) -> Result<(), Diagnostic> {
-    let n = out.len() * 4;
-    let mut shuffled = Vec::with_capacity(n * 4);
-    let mut dec = flate2::read::DeflateDecoder::new(bytes).take(n as u64 * 4 + 1);
-    dec.read_to_end(&mut shuffled)
-        .map_err(|e| err(file, Pos::Byte(at), format!("damaged histogram chunk: {e}")))?;
-    if shuffled.len() != n * 4 {
-        return Err(err(
-            file,
-            Pos::Byte(at),
-            format!(
-                "damaged histogram chunk: {} bytes where {} were expected",
-                shuffled.len(),
-                n * 4
-            ),
-        ));
+    let n = out.len();
+    let damaged = |m: String| err(file, Pos::Byte(at), format!("damaged histogram chunk: {m}"));
+    let limit = n.div_ceil(8) + 1 + n * 16;
+    let mut buf = Vec::with_capacity(limit);
+    flate2::read::DeflateDecoder::new(bytes)
+        .take(limit as u64 + 1)
+        .read_to_end(&mut buf)
+        .map_err(|e| damaged(e.to_string()))?;
+    let mlen = n.div_ceil(8);
+    if buf.len() < mlen + 1 {
+        return Err(damaged("too short".into()));
     }
-    for (i, v) in out.iter_mut().flatten().enumerate() {
-        *v = f32::from_le_bytes([
-            shuffled[i],
-            shuffled[n + i],
-            shuffled[2 * n + i],
-            shuffled[3 * n + i],
-        ]);
+    let m = (0..n).filter(|&i| buf[i / 8] & (1 << (i % 8)) != 0).count();
+    if buf.len() != mlen + 1 + 16 * m {
+        return Err(damaged(format!(
+            "{} bytes where {} were expected",
+            buf.len(),
+            mlen + 1 + 16 * m
+        )));
+    }
+    let ints = match buf[mlen] {
+        0 => false,
+        1 => true,
+        f => return Err(damaged(format!("unknown alpha encoding {f}"))),
+    };
+    let alpha = unshuffle(&buf[mlen + 1..mlen + 1 + 4 * m], m);
+    let rgb = unshuffle(&buf[mlen + 1 + 4 * m..], 3 * m);
+    let mut k = 0;
+    for (i, o) in out.iter_mut().enumerate() {
+        if buf[i / 8] & (1 << (i % 8)) == 0 {
+            *o = [0.0; 4];
+            continue;
+        }
+        let a = if ints {
+            alpha[k] as f32
+        } else {
+            f32::from_bits(alpha[k])
+        };
+        *o = [
+            f32::from_bits(rgb[3 * k]),
+            f32::from_bits(rgb[3 * k + 1]),
+            f32::from_bits(rgb[3 * k + 2]),
+            a,
+        ];
+        k += 1;
     }
     Ok(())
 }
