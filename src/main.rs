@@ -26,7 +26,9 @@ struct Cli {
 enum Command {
     /// Render a flame file to PNG or BMP
     Render(cli::render::RenderArgs),
-    /// List what a flame, IFS or gradient file holds
+    /// Sum saved render parts (`render --part I/N --save-state`) and develop the image
+    Merge(cli::merge::MergeArgs),
+    /// List what a flame, IFS, gradient or render state file holds
     Info(cli::info::InfoArgs),
     /// Convert between file formats (.ifs ↔ .fla/.flame, .png → .fla, .ugr ↔ .map ↔ .ggr, image → gradient)
     Convert(cli::convert::ConvertArgs),
@@ -64,6 +66,7 @@ fn main() {
     let result = match cli.command {
         Some(Command::Render(a)) => cli::render::run(a),
         Some(Command::Info(a)) => cli::info::run(a),
+        Some(Command::Merge(a)) => cli::merge::run(a),
         Some(Command::Convert(a)) => cli::convert::run(a),
         Some(Command::Random(a)) => cli::random::run(a),
         Some(Command::Animate(a)) => cli::animate::run(a),

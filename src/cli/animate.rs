@@ -23,9 +23,14 @@ pub enum Mode {
 pub struct AnimateArgs {
     /// Flame file (.fla, .flame, .flam3, .ifs or a PNG with an embedded flame)
     pub input: PathBuf,
-    /// Number of frames
-    #[arg(long, default_value_t = 90)]
-    pub frames: usize,
+    /// Frames to render: a count N (frames 1..N), or a range A..B (1-based, inclusive) of an
+    /// animation of --total frames, e.g. for one task of an array job
+    #[arg(long, default_value = "90", value_parser = parse_frames)]
+    pub frames: Frames,
+    /// Frames of the whole animation, with --frames A..B (file names and in-betweens depend
+    /// on it, never on the range)
+    #[arg(long)]
+    pub total: Option<usize>,
     /// Output directory for frame-0001.png, frame-0002.png, …
     #[arg(short, long)]
     pub output: PathBuf,
@@ -60,9 +65,54 @@ pub struct AnimateArgs {
     pub palettes: Option<PathBuf>,
 }
 
+/// `--frames`: a count or a 1-based inclusive range.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Frames {
+    Count(usize),
+    Range(usize, usize),
+}
+
+/// Most frames of one animation.
+pub const MAX_FRAMES: usize = 1_000_000;
+
+fn parse_frames(s: &str) -> Result<Frames, String> {
+    let int = |t: &str| -> Result<usize, String> {
+        t.trim()
+            .parse()
+            .map_err(|_| format!("'{t}' is not a whole number"))
+    };
+    match s.split_once("..") {
+        Some((a, b)) => {
+            let (a, b) = (int(a)?, int(b.strip_prefix('=').unwrap_or(b))?);
+            if a == 0 || b < a {
+                return Err(format!(
+                    "frame range {s} must be A..B with 1 ≤ A ≤ B (frames are numbered from 1)"
+                ));
+            }
+            Ok(Frames::Range(a, b))
+        }
+        None => Ok(Frames::Count(int(s)?)),
+    }
+}
+
 pub fn run(a: AnimateArgs) -> Result<()> {
-    if a.frames == 0 || a.frames > 1_000_000 {
-        bail!("--frames {} must be between 1 and 1000000", a.frames);
+    let (n_frames, range) = match (a.frames, a.total) {
+        (Frames::Count(n), None) => (n, 0..n),
+        (Frames::Count(_), Some(_)) => {
+            bail!("--total goes with a frame range: --frames A..B --total N")
+        }
+        (Frames::Range(..), None) => bail!(
+            "--frames A..B needs --total N, the frames of the whole animation (frame names and in-betweens depend on it)"
+        ),
+        (Frames::Range(x, y), Some(t)) => {
+            if y > t {
+                bail!("--frames {x}..{y} goes past the last frame ({t}) of --total {t}");
+            }
+            (t, x - 1..y)
+        }
+    };
+    if n_frames == 0 || n_frames > MAX_FRAMES {
+        bail!("{n_frames} frames: must be between 1 and {MAX_FRAMES}");
     }
     if let Some(q) = a.quality
         && !(MIN_QUALITY..=MAX_QUALITY).contains(&q)
@@ -78,7 +128,6 @@ pub fn run(a: AnimateArgs) -> Result<()> {
     let flames = super::render::load_flames(&a.input, a.palettes.as_ref(), false)?;
     // Frames are made one at a time as they are rendered (a million frames held at once
     // would need gigabytes).
-    let n_frames = a.frames;
     let frames: Box<dyn Iterator<Item = Flame>> = match a.mode {
         Mode::Rotate => {
             let mut f = super::render::select(flames, a.index, a.name.as_deref(), &a.input)?;
@@ -127,14 +176,16 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         .with_context(|| format!("cannot create '{}'", a.output.display()))?;
     let digits = n_frames.to_string().len().max(4);
     let frame_path = |k: usize| a.output.join(format!("frame-{:0digits$}.png", k + 1));
-    super::check_output(&frame_path(0))?;
+    super::check_output(&frame_path(range.start))?;
     let opts = RenderOptions {
         seed: a.seed,
         threads: super::threads(a.threads),
         ..RenderOptions::default()
     };
-    let pb = super::progress_bar(n_frames as u64, "animating");
-    for (k, mut f) in frames.enumerate() {
+    let pb = super::progress_bar(range.len() as u64, "animating");
+    // Frames before the range are made (cheap: no render) so that the rotation steps are the
+    // same as in the whole animation.
+    for (k, mut f) in frames.enumerate().take(range.end).skip(range.start) {
         if let Some((w, h)) = a.size {
             f.resize_keep_framing(w, h);
         }

@@ -11,7 +11,7 @@ use ugnis::io::{self, FileKind};
 #[derive(Args, Debug)]
 #[command(group(clap::ArgGroup::new("what").required(true).args(["file", "variations"])))]
 pub struct InfoArgs {
-    /// A flame (.fla/.flame/.flam3/.png), IFS (.ifs) or gradient (.ugr/.map/.ggr) file
+    /// A flame (.fla/.flame/.flam3/.png), IFS (.ifs), gradient (.ugr/.map/.ggr) or render state (.ugnis-state) file
     pub file: Option<PathBuf>,
     /// List every variation ugnis renders, with its parameters and defaults
     #[arg(long)]
@@ -80,6 +80,9 @@ pub fn run(a: InfoArgs) -> Result<()> {
     };
     // Written at once; a reader that stops early (`| head -1`) ends the output quietly.
     let mut out = String::new();
+    if path.extension().is_some_and(|e| e == "ugnis-state") {
+        return describe_state(path);
+    }
     match io::kind_of(path) {
         FileKind::Ifs => {
             let p = io::read_ifs(path)?;
@@ -141,5 +144,68 @@ pub fn run(a: InfoArgs) -> Result<()> {
             }
         }
     }
+    super::print_stdout(&out)
+}
+
+/// `ugnis info S.ugnis-state`.
+fn describe_state(path: &std::path::Path) -> Result<()> {
+    let rd = io::render_state::StateReader::open(path)?;
+    let st = &rd.state;
+    let f = &st.flame;
+    let raw = rd.bw as u64 * rd.bh as u64 * 16;
+    let packed = rd.compressed_bytes();
+    let mut out = String::new();
+    let _ = writeln!(out, "{}: ugnis render state", path.display());
+    let _ = writeln!(
+        out,
+        "  flame       {}",
+        if f.name.is_empty() {
+            "(unnamed)"
+        } else {
+            &f.name
+        }
+    );
+    let _ = writeln!(
+        out,
+        "  size        {}x{}, supersample {}, quality {}",
+        f.width, f.height, f.supersample, f.quality
+    );
+    let parts: Vec<String> = st.parts.iter().map(|p| p.to_string()).collect();
+    let _ = writeln!(out, "  seed        {}", st.seed);
+    let _ = writeln!(
+        out,
+        "  parts       {} of {}",
+        parts.join(","),
+        st.part_count
+    );
+    let _ = writeln!(
+        out,
+        "  samples     {} done ({:.2} per pixel), {} bad values",
+        st.samples_done,
+        st.samples_done as f64 / (f.width as f64 * f.height as f64),
+        st.bad_values
+    );
+    let status = if st.is_complete() {
+        "complete"
+    } else if st.is_finished() {
+        "finished part(s): merge with the others"
+    } else {
+        "unfinished: continue with `ugnis render --resume`"
+    };
+    let _ = writeln!(out, "  status      {status}");
+    let _ = writeln!(
+        out,
+        "  orbits      {} worker(s) (a resume with as many threads continues them)",
+        st.lanes.len()
+    );
+    let _ = writeln!(
+        out,
+        "  histogram   {}x{} buckets, {} raw, {} stored ({:.1} %)",
+        rd.bw,
+        rd.bh,
+        ugnis::memory::fmt_bytes(raw),
+        ugnis::memory::fmt_bytes(packed),
+        100.0 * packed as f64 / raw.max(1) as f64
+    );
     super::print_stdout(&out)
 }

@@ -11,6 +11,7 @@ pub mod escape;
 pub mod info;
 pub mod lorenz;
 pub mod lsystem;
+pub mod merge;
 pub mod random;
 pub mod render;
 pub mod scene;
@@ -260,6 +261,33 @@ pub fn finite(s: &str) -> Result<f64, String> {
         ugnis::io::diag::NumberError::Overflow => format!("'{s}' is too large"),
         e => format!("{}; expected a finite number", e.describe(s)),
     })
+}
+
+/// Parse a byte count: 1048576, 512K, 300M, 2G (binary units).
+pub fn parse_bytes(s: &str) -> Result<u64, String> {
+    let t = s.trim();
+    let (num, mult) = match t.char_indices().last() {
+        Some((i, c)) if c.is_ascii_alphabetic() => {
+            let m: u64 = match c.to_ascii_uppercase() {
+                'K' => 1 << 10,
+                'M' => 1 << 20,
+                'G' => 1 << 30,
+                'T' => 1 << 40,
+                _ => return Err(format!("'{s}': unit must be K, M, G or T")),
+            };
+            (&t[..i], m)
+        }
+        _ => (t, 1),
+    };
+    let v: f64 = num
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a size such as 512M or 2G"))?;
+    let bytes = v * mult as f64;
+    if !(1.0..1e18).contains(&bytes) {
+        return Err(format!("size '{s}' must be between 1 byte and 1e18 bytes"));
+    }
+    Ok(bytes as u64)
 }
 
 /// Parse "WxH".

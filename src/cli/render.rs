@@ -1,19 +1,27 @@
 //! `ugnis render`: render a flame file to PNG or BMP.
 
+use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
-use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, short_num};
+use ugnis::flame::render::{
+    MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Renderer, estimate_memory, short_num,
+};
+use ugnis::flame::state::Part;
+use ugnis::flame::strips::{self, Strip};
 use ugnis::flame::{Flame, OutputFormat};
+use ugnis::io::atomic::AtomicFile;
 use ugnis::io::flam3_xml::{LibrarySource, ReadOptions};
+use ugnis::io::render_state::{StateReader, StateWriter};
 use ugnis::io::{self, FileKind};
 
 #[derive(Args, Debug)]
 pub struct RenderArgs {
     /// Flame file: .fla, .flame, .flam3, .ifs, or a PNG with an embedded flame
-    pub input: PathBuf,
+    #[arg(required_unless_present = "resume", conflicts_with = "resume")]
+    pub input: Option<PathBuf>,
     /// Output image (.png or .bmp); default: the input name with .png
     #[arg(short, long)]
     pub output: Option<PathBuf>,
@@ -50,6 +58,45 @@ pub struct RenderArgs {
     /// flam3-palettes.xml for flames that use palette="N"
     #[arg(long)]
     pub palettes: Option<PathBuf>,
+    /// Also save the render state (histogram, orbits, settings) to continue or merge it later
+    #[arg(long, value_name = "STATE")]
+    pub save_state: Option<PathBuf>,
+    /// Continue a saved render state (instead of a flame file); see --add-quality
+    #[arg(long, value_name = "STATE")]
+    pub resume: Option<PathBuf>,
+    /// With --resume: samples per pixel to add (0: develop the state as it is)
+    #[arg(long, requires = "resume", value_parser = super::finite, default_value_t = 0.0)]
+    pub add_quality: f64,
+    /// Render share I of N of the samples (0-based, e.g. 2/4), with its own random streams;
+    /// save it with --save-state and sum the parts with `ugnis merge`
+    #[arg(long, value_parser = parse_part, conflicts_with = "resume")]
+    pub part: Option<Part>,
+    /// Render the image in K bands (posters larger than memory); automatic when the render
+    /// does not fit in memory
+    #[arg(long)]
+    pub strips: Option<usize>,
+    /// Memory the render may use, e.g. 512M or 2G (default: what the system has available)
+    #[arg(long, value_parser = super::parse_bytes)]
+    pub memory_limit: Option<u64>,
+}
+
+/// Parse "I/N".
+pub fn parse_part(s: &str) -> Result<Part, String> {
+    let (i, n) = s
+        .split_once('/')
+        .ok_or_else(|| format!("part '{s}' must be I/N, e.g. 0/4 (parts are numbered from 0)"))?;
+    let p = Part {
+        index: i
+            .trim()
+            .parse()
+            .map_err(|_| format!("part index '{i}' is not a whole number"))?,
+        count: n
+            .trim()
+            .parse()
+            .map_err(|_| format!("part count '{n}' is not a whole number"))?,
+    };
+    p.validate()?;
+    Ok(p)
 }
 
 /// Load the flames of an input file, printing warnings to stderr (or failing with --strict).
@@ -97,59 +144,184 @@ pub fn select(
     })
 }
 
+/// Where the samples come from: a fresh render or a saved state to continue.
+enum Source {
+    Fresh(Box<Flame>, Part),
+    Resume(Box<StateReader>, f64),
+}
+
+impl Source {
+    /// A renderer for the whole image or one strip.
+    fn renderer(&mut self, opts: &RenderOptions, strip: Option<Strip>) -> Result<Renderer> {
+        match self {
+            Source::Fresh(f, part) => Renderer::with_plan(f, opts, &Plan { part: *part, strip })
+                .with_context(|| format!("cannot render '{}'", f.name)),
+            Source::Resume(rd, add) => {
+                let hist = match &strip {
+                    Some(s) => rd.read_rows(s.hist_rows.clone())?,
+                    None => rd.read_all()?,
+                };
+                let state = rd.state.clone();
+                Renderer::resume(&state, hist, *add, opts, strip)
+                    .with_context(|| format!("cannot continue '{}'", rd.file_name()))
+            }
+        }
+    }
+
+    /// The flame as it will be rendered (framed, at its final quality).
+    fn flame(&self) -> Flame {
+        match self {
+            Source::Fresh(f, _) => {
+                let mut f = (**f).clone();
+                if !f.has_camera {
+                    ugnis::flame::framing::apply_auto_frame(&mut f);
+                }
+                f
+            }
+            Source::Resume(rd, add) => {
+                let mut f = rd.state.flame.clone();
+                f.quality += add;
+                f
+            }
+        }
+    }
+}
+
+/// How many strips: the asked number, or the fewest that fit in memory (1 when all fits).
+pub fn choose_strips(
+    flame: &Flame,
+    opts: &RenderOptions,
+    asked: Option<usize>,
+    what: &str,
+) -> Result<usize> {
+    if let Some(k) = asked {
+        strips::plan(flame, k)?;
+        return Ok(k);
+    }
+    let budget = ugnis::memory::budget_or(opts.memory_limit);
+    let est = estimate_memory(flame, opts);
+    if est.total <= budget.bytes {
+        return Ok(1);
+    }
+    match strips::strips_for_budget(flame, opts, budget.bytes)? {
+        Some(k) => {
+            eprintln!(
+                "{what}: needs about {} at once, {} available ({}): rendering in {k} strips",
+                ugnis::memory::fmt_bytes(est.total),
+                ugnis::memory::fmt_bytes(budget.bytes),
+                budget.source
+            );
+            Ok(k)
+        }
+        // Not even one-row strips fit: the whole render's check gives the clear message.
+        None => {
+            ugnis::flame::render::check_memory(flame, opts)?;
+            Ok(1)
+        }
+    }
+}
+
 pub fn run(a: RenderArgs) -> Result<()> {
-    let out = a
-        .output
-        .clone()
-        .unwrap_or_else(|| a.input.with_extension("png"));
-    let is_bmp = io::kind_of(&out) == FileKind::Bmp;
-    if !is_bmp && io::kind_of(&out) != FileKind::Png {
-        bail!("output '{}' must end in .png or .bmp", out.display());
+    let default_out = a
+        .input
+        .as_ref()
+        .or(a.resume.as_ref())
+        .map(|p| p.with_extension("png"));
+    // A part alone is a share of the samples: its image is written only when asked for.
+    let is_part = a.part.is_some_and(|p| p.count > 1);
+    let out = match (&a.output, is_part) {
+        (Some(o), _) => Some(o.clone()),
+        (None, true) => None,
+        (None, false) => default_out,
+    };
+    if is_part && a.save_state.is_none() {
+        bail!("--part renders a share of the samples: save it with --save-state to merge it");
     }
-    if is_bmp && (a.bits16 || a.transparent) {
-        bail!("--bits16 and --transparent need PNG output");
+    if let Some(out) = &out {
+        let is_bmp = io::kind_of(out) == FileKind::Bmp;
+        if !is_bmp && io::kind_of(out) != FileKind::Png {
+            bail!("output '{}' must end in .png or .bmp", out.display());
+        }
+        if is_bmp && (a.bits16 || a.transparent) {
+            bail!("--bits16 and --transparent need PNG output");
+        }
+        super::check_output(out)?;
     }
-    super::check_output(&out)?;
-    let flames = load_flames(&a.input, a.palettes.as_ref(), a.strict)?;
-    let mut flame = select(flames, a.index, a.name.as_deref(), &a.input)?;
-    if let Some((w, h)) = a.size {
-        flame.resize_keep_framing(w, h);
+    if let Some(s) = &a.save_state {
+        super::check_output(s)?;
     }
-    if let Some(q) = a.quality {
-        if !(MIN_QUALITY..=MAX_QUALITY).contains(&q) {
+    let mut source = if let Some(state) = &a.resume {
+        if a.size.is_some() || a.quality.is_some() || a.supersample.is_some() {
             bail!(
-                "--quality {} must be between {MIN_QUALITY} and {MAX_QUALITY}",
-                short_num(q)
+                "--size, --quality and --supersample belong to the saved render; use --add-quality to continue it"
             );
         }
-        flame.quality = q;
-    }
-    if let Some(s) = a.supersample {
-        flame.supersample = s;
-    }
+        let rd = StateReader::open(state)?;
+        Source::Resume(Box::new(rd), a.add_quality)
+    } else {
+        let input = a.input.as_ref().context("no flame file given")?;
+        let flames = load_flames(input, a.palettes.as_ref(), a.strict)?;
+        let mut flame = select(flames, a.index, a.name.as_deref(), input)?;
+        if let Some((w, h)) = a.size {
+            flame.resize_keep_framing(w, h);
+        }
+        if let Some(q) = a.quality {
+            if !(MIN_QUALITY..=MAX_QUALITY).contains(&q) {
+                bail!(
+                    "--quality {} must be between {MIN_QUALITY} and {MAX_QUALITY}",
+                    short_num(q)
+                );
+            }
+            flame.quality = q;
+        }
+        if let Some(s) = a.supersample {
+            flame.supersample = s;
+        }
+        if a.save_state.is_some() && flame.ifs3d.is_some() {
+            bail!(
+                "a render state of a 3-D IFS cannot be saved (its maps have no flame XML form); render it in one go"
+            );
+        }
+        Source::Fresh(Box::new(flame), a.part.unwrap_or_default())
+    };
     let opts = RenderOptions {
-        seed: a.seed,
+        seed: match &source {
+            Source::Resume(rd, _) => rd.state.seed,
+            Source::Fresh(..) => a.seed,
+        },
         threads: super::threads(a.threads),
-        memory_limit: None,
+        memory_limit: a.memory_limit,
         keep_samples: false,
         format: OutputFormat {
             bits16: a.bits16,
             transparent: a.transparent,
         },
     };
-    let mut r =
-        Renderer::new(&flame, &opts).with_context(|| format!("cannot render '{}'", flame.name))?;
-    let pb = super::progress_bar(
-        1000,
-        &format!(
-            "rendering {}",
-            if flame.name.is_empty() {
-                "flame"
-            } else {
-                &flame.name
-            }
-        ),
-    );
+    let flame = source.flame();
+    let label = if flame.name.is_empty() {
+        "flame".to_string()
+    } else {
+        flame.name.clone()
+    };
+    // Settings errors (size, quality…) first, with their own message.
+    ugnis::flame::render::validate_settings(&flame)
+        .with_context(|| format!("cannot render '{}'", flame.name))?;
+    let k = choose_strips(&flame, &opts, a.strips, &format!("rendering {label}"))?;
+    if k == 1 {
+        return run_whole(&a, &mut source, &opts, out.as_deref(), &label);
+    }
+    run_strips(&a, &mut source, &opts, out.as_deref(), &label, k)
+}
+
+fn run_whole(
+    a: &RenderArgs,
+    source: &mut Source,
+    opts: &RenderOptions,
+    out: Option<&Path>,
+    label: &str,
+) -> Result<()> {
+    let mut r = source.renderer(opts, None)?;
+    let pb = super::progress_bar(1000, &format!("rendering {label}"));
     let done = r.run_all(100, super::interrupt_flag(), |f| {
         pb.set_position((f * 1000.0) as u64)
     });
@@ -160,15 +332,116 @@ pub fn run(a: RenderArgs) -> Result<()> {
     let samples = r.samples_done();
     let rate = r.bad_values() as f64 / samples.max(1) as f64;
     let rendered = r.flame().clone();
-    let img = r.finish();
-    if is_bmp {
-        io::bmp::save(&out, &img).with_context(|| format!("cannot write '{}'", out.display()))?;
+    let (img, state) = if out.is_some() {
+        let (img, st) = r.finish_with_state();
+        (Some(img), st)
     } else {
-        let mut meta = io::png::PngMeta::for_flame(&rendered);
-        meta.samples = Some(samples);
-        meta.error_rate = Some(rate);
-        io::png::save(&out, &img, &meta)
-            .with_context(|| format!("cannot write '{}'", out.display()))?;
+        (None, r.into_state())
+    };
+    if let Some(path) = &a.save_state {
+        let (st, hist) = state.context("the render was interrupted; no state to save")?;
+        io::render_state::save(path, &st, &hist)
+            .with_context(|| format!("cannot write '{}'", path.display()))?;
+    }
+    if let (Some(out), Some(img)) = (out, img) {
+        if io::kind_of(out) == FileKind::Bmp {
+            io::bmp::save(out, &img)
+                .with_context(|| format!("cannot write '{}'", out.display()))?;
+        } else {
+            let mut meta = io::png::PngMeta::for_flame(&rendered);
+            meta.samples = Some(samples);
+            meta.error_rate = Some(rate);
+            io::png::save(out, &img, &meta)
+                .with_context(|| format!("cannot write '{}'", out.display()))?;
+        }
+    }
+    Ok(())
+}
+
+/// Render band by band: the PNG is streamed and the state written chunk by chunk, so neither
+/// the image nor the whole histogram is ever in memory.
+fn run_strips(
+    a: &RenderArgs,
+    source: &mut Source,
+    opts: &RenderOptions,
+    out: Option<&Path>,
+    label: &str,
+    k: usize,
+) -> Result<()> {
+    let flame = source.flame();
+    let plan = strips::plan(&flame, k)?;
+    if out.is_some_and(|o| io::kind_of(o) == FileKind::Bmp) {
+        bail!("a render in strips writes PNG only (BMP needs the whole image in memory)");
+    }
+    let cannot = |p: &Path| format!("cannot write '{}'", p.display());
+    let mut png_file = match out {
+        Some(o) => Some((AtomicFile::create(o).with_context(|| cannot(o))?, o)),
+        None => None,
+    };
+    let mut png = match &mut png_file {
+        Some((f, o)) => Some(
+            io::png::PngStream::new(
+                f.file().try_clone()?,
+                flame.width,
+                flame.height,
+                opts.format,
+                &io::png::PngMeta::for_flame(&flame),
+            )
+            .with_context(|| cannot(o))?,
+        ),
+        None => None,
+    };
+    let mut state_file = match &a.save_state {
+        Some(p) => Some((AtomicFile::create(p).with_context(|| cannot(p))?, p)),
+        None => None,
+    };
+    let mut state_w: Option<StateWriter<BufWriter<std::fs::File>>> = None;
+    let pb = super::progress_bar(
+        (k * 1000) as u64,
+        &format!("rendering {label} in {k} strips"),
+    );
+    for (s, strip) in plan.iter().enumerate() {
+        let mut r = source.renderer(opts, Some(strip.clone()))?;
+        let done = r.run_all(20, super::interrupt_flag(), |f| {
+            pb.set_position(((s as f64 + f) * 1000.0) as u64)
+        });
+        if !done {
+            return Err(super::Interrupted.into());
+        }
+        let g = r.geometry().clone();
+        let (img, st) = r.finish_with_state();
+        if let (Some(p), Some((_, o))) = (&mut png, &png_file) {
+            p.write_rows(&img).with_context(|| cannot(o))?;
+        }
+        if let Some((sf, path)) = &mut state_file {
+            let (st, hist) = st.context("the render was interrupted; no state to save")?;
+            // Every strip iterates the same samples with the same orbits, so any strip's
+            // counters are the whole render's; the header is written with the first.
+            if state_w.is_none() {
+                let f = sf.file().try_clone()?;
+                state_w =
+                    Some(StateWriter::new(BufWriter::new(f), &st).with_context(|| cannot(path))?);
+            }
+            let core = &strip.core_rows;
+            let (lo, hi) = ((core.start - g.row0) * g.bw, (core.end - g.row0) * g.bw);
+            if let Some(w) = state_w.as_mut() {
+                w.write_rows(&hist.data[lo..hi])
+                    .with_context(|| cannot(path))?;
+            }
+        }
+    }
+    pb.finish_and_clear();
+    if let Some(w) = state_w {
+        w.finish()?;
+    }
+    if let Some((f, p)) = state_file {
+        f.commit().with_context(|| cannot(p))?;
+    }
+    if let Some(p) = png {
+        p.finish()?;
+    }
+    if let Some((f, o)) = png_file {
+        f.commit().with_context(|| cannot(o))?;
     }
     Ok(())
 }

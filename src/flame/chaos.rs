@@ -261,6 +261,51 @@ impl Group {
     }
 }
 
+/// The orbits of one worker's [`Lanes`], without the scratch space: what a saved render state
+/// keeps so that a resumed render continues the same orbits.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LaneState {
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub z: Vec<f64>,
+    pub c: Vec<f64>,
+    pub last: Vec<u16>,
+    pub consec: Vec<u8>,
+    pub step: Vec<i32>,
+    pub started: bool,
+}
+
+impl Lanes {
+    /// The orbits as they stand.
+    pub fn state(&self) -> LaneState {
+        LaneState {
+            x: self.x.to_vec(),
+            y: self.y.to_vec(),
+            z: self.z.to_vec(),
+            c: self.c.to_vec(),
+            last: self.last.to_vec(),
+            consec: self.consec.to_vec(),
+            step: self.step.to_vec(),
+            started: self.started,
+        }
+    }
+
+    /// Orbits restored from [`Lanes::state`]; `None` when the arrays do not have [`LANES`]
+    /// entries each.
+    pub fn restore(st: &LaneState) -> Option<Box<Lanes>> {
+        let mut l = Lanes::new();
+        l.x = st.x.as_slice().try_into().ok()?;
+        l.y = st.y.as_slice().try_into().ok()?;
+        l.z = st.z.as_slice().try_into().ok()?;
+        l.c = st.c.as_slice().try_into().ok()?;
+        l.last = st.last.as_slice().try_into().ok()?;
+        l.consec = st.consec.as_slice().try_into().ok()?;
+        l.step = st.step.as_slice().try_into().ok()?;
+        l.started = st.started;
+        Some(l)
+    }
+}
+
 impl Lanes {
     pub fn new() -> Box<Lanes> {
         Box::new(Lanes {

@@ -15,9 +15,14 @@ pub struct Geometry {
     pub gutter: usize,
     /// Extra offset δ of the filter window inside the gutter.
     pub delta: usize,
-    /// Bucket grid size: os·W + 2g by os·H + 2g.
+    /// Bucket grid size: os·W + 2g by os·H + 2g (`bh` is the rows held: see `row0`).
     pub bw: usize,
     pub bh: usize,
+    /// First bucket row of the whole grid held by this geometry's histograms: 0 for a whole
+    /// render, the first row of the band for a render in strips (see [`Geometry::window`]).
+    pub row0: usize,
+    /// Rows of the whole bucket grid (os·H + 2g).
+    pub full_bh: usize,
     /// World → continuous bucket coordinates (rotation, translation and scale in one map).
     pub bucket_from_world: Affine,
     pub filter: SpatialFilter,
@@ -65,9 +70,24 @@ impl Geometry {
             delta,
             bw,
             bh,
+            row0: 0,
+            full_bh: bh,
             bucket_from_world,
             filter,
             de,
+        }
+    }
+
+    /// The same camera restricted to bucket rows `rows` of the whole grid: a point lands in
+    /// exactly the bucket it lands in for the whole grid, shifted up by `rows.start` rows, or
+    /// outside. (The row is found in whole-grid coordinates first, so rounding is the same.)
+    pub fn window(&self, rows: std::ops::Range<usize>) -> Geometry {
+        let end = rows.end.min(self.full_bh);
+        let start = rows.start.min(end);
+        Geometry {
+            row0: start,
+            bh: end - start,
+            ..self.clone()
         }
     }
 
@@ -89,7 +109,7 @@ impl Geometry {
         // floor(v) = trunc(v + 1) − 1 for v > −1, and anything ≤ −1 maps to a negative
         // value: one saturating conversion per axis (NaN → −1), then unsigned range checks.
         let ix = ((bx + 1.0) as i64).wrapping_sub(1);
-        let iy = ((by + 1.0) as i64).wrapping_sub(1);
+        let iy = ((by + 1.0) as i64).wrapping_sub(1 + self.row0 as i64);
         let inside = ((ix as u64) < self.bw as u64) & ((iy as u64) < self.bh as u64);
         (
             (iy as usize)

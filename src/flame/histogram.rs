@@ -97,13 +97,20 @@ impl Histogram {
         }
     }
 
-    /// Add another histogram of the same size.
+    /// Add another histogram of the same size (in parallel bands; each bucket's sum is the
+    /// same whatever the banding).
     pub fn add(&mut self, other: &Histogram) {
-        for (a, b) in self.data.iter_mut().zip(&other.data) {
-            for k in 0..4 {
-                a[k] += b[k];
-            }
-        }
+        use rayon::prelude::*;
+        self.data
+            .par_chunks_mut(1 << 16)
+            .zip(other.data.par_chunks(1 << 16))
+            .for_each(|(a, b)| {
+                for (a, b) in a.iter_mut().zip(b) {
+                    for k in 0..4 {
+                        a[k] += b[k];
+                    }
+                }
+            });
     }
 
     pub fn clear(&mut self) {

@@ -18,6 +18,8 @@ pub mod random;
 pub mod render;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
+pub mod state;
+pub mod strips;
 pub mod symmetry;
 pub mod tonemap;
 pub mod variations;

@@ -28,6 +28,7 @@ use crate::flame::histogram::{Bucket, Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::Flame;
 use crate::flame::rng::FastRng;
+use crate::flame::state::{Part, RenderState};
 use crate::flame::tonemap::{LogScale, OutputFormat, ToneMap};
 use crate::memory::MemoryError;
 use crate::threads::Threads;
@@ -126,9 +127,19 @@ impl MemoryEstimate {
 }
 
 /// Estimate the buffers of a render before allocating anything. The threads are resolved
-/// as the renderer resolves them. A render in strips (or on several machines) would estimate
-/// one strip's histogram here; everything else scales with the thread count or the image.
+/// as the renderer resolves them. A render in strips estimates one strip with
+/// [`estimate_memory_rows`].
 pub fn estimate_memory(flame: &Flame, opts: &RenderOptions) -> MemoryEstimate {
+    estimate_memory_rows(flame, opts, None)
+}
+
+/// As [`estimate_memory`] for a band of the image: `rows` = (bucket rows held, output rows
+/// made) of one strip; `None` for the whole image.
+pub fn estimate_memory_rows(
+    flame: &Flame,
+    opts: &RenderOptions,
+    rows: Option<(u64, u64)>,
+) -> MemoryEstimate {
     let threads = Threads::resolve(opts.threads).count as u64;
     let os = flame.supersample.max(1) as u64;
     let g = {
@@ -142,14 +153,21 @@ pub fn estimate_memory(flame: &Flame, opts: &RenderOptions) -> MemoryEstimate {
         (f.gutter as u64).max(de)
     };
     let bw = os * flame.width as u64 + 2 * g;
-    let bh = os * flame.height as u64 + 2 * g;
+    let bh = match rows {
+        Some((hist_rows, _)) => hist_rows,
+        None => os * flame.height as u64 + 2 * g,
+    };
     let bucket = std::mem::size_of::<Bucket>() as u64;
     let hist = bw.saturating_mul(bh).saturating_mul(bucket);
     let per_worker =
         std::mem::size_of::<Lanes>() as u64 + SUB_BATCH * std::mem::size_of::<Pending>() as u64;
     let workers = (hist + per_worker).saturating_mul(threads);
     let develop = hist.saturating_mul(2);
-    let px = flame.width as u64 * flame.height as u64;
+    let px = flame.width as u64
+        * match rows {
+            Some((_, out_rows)) => out_rows,
+            None => flame.height as u64,
+        };
     let channels = if opts.format.transparent { 4 } else { 3 };
     let depth = if opts.format.bits16 { 2 } else { 1 };
     let image = px.saturating_mul(channels * depth * 2);
@@ -173,6 +191,28 @@ pub fn estimate_memory(flame: &Flame, opts: &RenderOptions) -> MemoryEstimate {
     }
 }
 
+/// As [`check_memory`] for one strip of a render in strips.
+pub fn check_memory_rows(
+    flame: &Flame,
+    opts: &RenderOptions,
+    strip: &crate::flame::strips::Strip,
+) -> Result<MemoryEstimate, RenderError> {
+    let rows = (strip.hist_rows.len() as u64, strip.out_rows.len() as u64);
+    let est = estimate_memory_rows(flame, opts, Some(rows));
+    crate::memory::check(
+        est.total,
+        opts.memory_limit,
+        || {
+            format!(
+                "a strip of {} rows of a {}×{} flame render at supersample {} with {} thread(s)",
+                rows.1, flame.width, flame.height, flame.supersample, est.threads
+            )
+        },
+        || format!("use more strips, or {}", est.hint(flame)),
+    )?;
+    Ok(est)
+}
+
 /// Refuse a render whose estimate exceeds the memory budget (`opts.memory_limit`, or what
 /// the system allows: see [`crate::memory`]).
 pub fn check_memory(flame: &Flame, opts: &RenderOptions) -> Result<MemoryEstimate, RenderError> {
@@ -189,6 +229,17 @@ pub fn check_memory(flame: &Flame, opts: &RenderOptions) -> Result<MemoryEstimat
         || est.hint(flame),
     )?;
     Ok(est)
+}
+
+/// The bucket geometry of a (framed) flame.
+pub fn geometry_of(flame: &Flame) -> Result<Geometry, RenderError> {
+    let de = DeFilters::new(
+        flame.estimator_radius,
+        flame.estimator_minimum,
+        flame.estimator_curve,
+        flame.supersample.max(1),
+    )?;
+    Ok(Geometry::new(flame, de))
 }
 
 /// Memory available to this process (Linux `MemAvailable`), if known.
@@ -262,6 +313,15 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     Ok(())
 }
 
+/// How a render's work is cut: which share of the samples (for other processes or machines)
+/// and which band of the image (for renders in strips).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Plan {
+    pub part: Part,
+    /// Accumulate only this band; `None`: the whole image.
+    pub strip: Option<crate::flame::strips::Strip>,
+}
+
 /// A render in progress.
 pub struct Renderer {
     flame: Flame,
@@ -269,6 +329,8 @@ pub struct Renderer {
     /// Set for flames made from 3-D IFS entries: iterated instead of the xforms.
     ifs3d: Option<Ifs3dSystem>,
     geom: Geometry,
+    /// Output rows this render develops (all, or the strip's).
+    out_rows: std::ops::Range<usize>,
     palette: PlotPalette,
     hists: Vec<Histogram>,
     /// Each worker's orbits, kept between passes.
@@ -277,7 +339,12 @@ pub struct Renderer {
     logs: Option<Vec<Vec<Pending>>>,
     seed: u64,
     format: OutputFormat,
+    part: Part,
+    /// Samples of the whole render (every part).
     total: u64,
+    /// Samples of this part.
+    part_total: u64,
+    /// Sub-batches of this part; `next_batch` counts them too (local indices).
     batches_total: u64,
     next_batch: u64,
     samples_done: u64,
@@ -289,6 +356,16 @@ impl Renderer {
     /// Prepare a render: validates the flame, frames it automatically when it has no camera,
     /// estimates memory and allocates the histograms.
     pub fn new(flame: &Flame, opts: &RenderOptions) -> Result<Renderer, RenderError> {
+        Self::with_plan(flame, opts, &Plan::default())
+    }
+
+    /// As [`Renderer::new`] for one part of the samples and/or one strip of the image.
+    pub fn with_plan(
+        flame: &Flame,
+        opts: &RenderOptions,
+        plan: &Plan,
+    ) -> Result<Renderer, RenderError> {
+        plan.part.validate().map_err(RenderError::Settings)?;
         let mut flame = flame.clone();
         validate_settings(&flame)?;
         let chaos = Chaos::new(&flame)?;
@@ -302,40 +379,60 @@ impl Renderer {
         if !flame.has_camera {
             framing::apply_auto_frame(&mut flame);
         }
-        let threads = check_memory(&flame, opts)?.threads;
+        let threads = match &plan.strip {
+            None => check_memory(&flame, opts)?.threads,
+            Some(s) => check_memory_rows(&flame, opts, s)?.threads,
+        };
         let de = DeFilters::new(
             flame.estimator_radius,
             flame.estimator_minimum,
             flame.estimator_curve,
             flame.supersample.max(1),
         )?;
-        let geom = Geometry::new(&flame, de);
+        let mut geom = Geometry::new(&flame, de);
         if geom.buckets() > u32::MAX as usize {
             return Err(RenderError::Settings(format!(
                 "a {}×{} render at supersample {} has too many histogram buckets",
                 flame.width, flame.height, flame.supersample
             )));
         }
+        let out_rows = match &plan.strip {
+            Some(s) => {
+                if s.out_rows.end > geom.height || s.hist_rows.end > geom.full_bh {
+                    return Err(RenderError::Settings(format!(
+                        "strip rows {:?} are outside the {}×{} image",
+                        s.out_rows, flame.width, flame.height
+                    )));
+                }
+                geom = geom.window(s.hist_rows.clone());
+                s.out_rows.clone()
+            }
+            None => 0..geom.height,
+        };
         let hists = (0..threads)
             .map(|_| Histogram::new(geom.bw, geom.bh))
             .collect();
         let lanes = (0..threads).map(|_| Lanes::new()).collect();
         let total_samples = flame.total_samples();
-        let logs = (opts.keep_samples && total_samples <= MAX_KEPT_SAMPLES)
+        let logs = (opts.keep_samples && total_samples <= MAX_KEPT_SAMPLES && plan.strip.is_none())
             .then(|| vec![Vec::new(); threads]);
         let total = flame.total_samples().max(1);
+        let part = plan.part;
         Ok(Renderer {
             palette: PlotPalette::new(&flame),
             chaos,
             ifs3d,
             geom,
+            out_rows,
             hists,
             lanes,
             logs,
             seed: opts.seed,
             format: opts.format,
+            part,
             total,
-            batches_total: total.div_ceil(SUB_BATCH),
+            part_total: part.samples(total),
+            batches_total: part.local_batches(total.div_ceil(SUB_BATCH)),
             next_batch: 0,
             samples_done: 0,
             badvals: 0,
@@ -344,13 +441,82 @@ impl Renderer {
         })
     }
 
+    /// Continue a saved render with `add_quality` more samples per pixel. `hist` holds the
+    /// state's histogram: the whole bucket grid, or the rows of `strip` for a render in
+    /// strips. With as many threads as the saved render had, the result is the picture of
+    /// one render at the summed quality (up to the rounding of the sums).
+    pub fn resume(
+        state: &RenderState,
+        hist: Histogram,
+        add_quality: f64,
+        opts: &RenderOptions,
+        strip: Option<crate::flame::strips::Strip>,
+    ) -> Result<Renderer, RenderError> {
+        let (part, next) = state.continuation().map_err(RenderError::Settings)?;
+        let mut flame = state.flame.clone();
+        flame.has_camera = true;
+        let mut r = Self::with_plan(&flame, opts, &Plan { part, strip })?;
+        if (hist.bw, hist.bh) != (r.geom.bw, r.geom.bh) {
+            return Err(RenderError::Settings(format!(
+                "the saved histogram is {}×{} buckets, the render needs {}×{}",
+                hist.bw, hist.bh, r.geom.bw, r.geom.bh
+            )));
+        }
+        r.hists[0] = hist;
+        r.logs = None;
+        r.next_batch = next.min(r.batches_total);
+        r.samples_done = state.samples_done;
+        r.badvals = state.bad_values;
+        if state.lanes.len() == r.lanes.len() {
+            for (l, s) in r.lanes.iter_mut().zip(&state.lanes) {
+                if let Some(restored) = Lanes::restore(s) {
+                    *l = restored;
+                }
+            }
+        }
+        r.extend(add_quality)?;
+        Ok(r)
+    }
+
+    /// Raise the quality by `add_quality` samples per pixel and keep going: the next passes
+    /// iterate the new sub-batches (a render that refines until it is stopped calls this
+    /// whenever it is done). Kept samples for recolouring are dropped.
+    pub fn extend(&mut self, add_quality: f64) -> Result<(), RenderError> {
+        if !(add_quality >= 0.0 && add_quality.is_finite()) {
+            return Err(RenderError::Settings(format!(
+                "added quality {add_quality} must be a finite number ≥ 0"
+            )));
+        }
+        if add_quality == 0.0 {
+            return Ok(());
+        }
+        if self.cancelled {
+            return Err(RenderError::Settings(
+                "a cancelled render cannot continue".into(),
+            ));
+        }
+        let mut f = self.flame.clone();
+        f.quality += add_quality;
+        validate_settings(&f)?;
+        self.flame.quality = f.quality;
+        self.logs = None;
+        self.total = self.flame.total_samples().max(1);
+        self.part_total = self.part.samples(self.total);
+        self.batches_total = self
+            .part
+            .local_batches(self.total.div_ceil(SUB_BATCH))
+            .max(self.next_batch);
+        Ok(())
+    }
+
     /// The flame as rendered (with its automatic framing applied).
     pub fn flame(&self) -> &Flame {
         &self.flame
     }
 
+    /// Samples this render iterates in all (its part's share).
     pub fn total_samples(&self) -> u64 {
-        self.total
+        self.part_total.max(1)
     }
 
     pub fn samples_done(&self) -> u64 {
@@ -365,9 +531,13 @@ impl Renderer {
         self.hists.len()
     }
 
+    pub fn part(&self) -> Part {
+        self.part
+    }
+
     /// Fraction of the samples done, in [0, 1].
     pub fn fraction(&self) -> f64 {
-        self.samples_done as f64 / self.total as f64
+        (self.samples_done as f64 / self.total_samples() as f64).min(1.0)
     }
 
     pub fn is_done(&self) -> bool {
@@ -380,7 +550,8 @@ impl Renderer {
 
     /// Run one pass of about `samples` more samples (whole sub-batches, at least one) on all
     /// threads. Returns false if `cancel` was set (checked between sub-batches, i.e. within
-    /// about a millisecond); a cancelled render is finished and cannot continue.
+    /// about a millisecond); a cancelled render is finished and cannot continue. (A render
+    /// that is to be saved and continued should stop between passes instead.)
     pub fn run(&mut self, samples: u64, cancel: &AtomicBool) -> bool {
         if self.is_done() {
             return !self.cancelled;
@@ -391,7 +562,7 @@ impl Renderer {
         let threads = self.hists.len() as u64;
         let (chaos, geom, pal) = (&self.chaos, &self.geom, &self.palette);
         let ifs3d = self.ifs3d.as_ref();
-        let (seed, total) = (self.seed, self.total);
+        let (seed, total, part) = (self.seed, self.total, self.part);
         let mut logs: Vec<Option<&mut Vec<Pending>>> = match &mut self.logs {
             Some(l) => l.iter_mut().map(Some).collect(),
             None => (0..self.hists.len()).map(|_| None).collect(),
@@ -415,8 +586,11 @@ impl Renderer {
                             if cancel.load(Ordering::Relaxed) {
                                 return (done, bad, true);
                             }
-                            let n = SUB_BATCH.min(total - j * SUB_BATCH);
-                            let mut rng = FastRng::for_stream(seed, j);
+                            // Each sub-batch has its own stream, named by its index in the
+                            // whole render (the same for every part and strip layout).
+                            let g = part.global(j);
+                            let n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
+                            let mut rng = FastRng::for_stream(seed, g);
                             bad += match ifs3d {
                                 None => {
                                     let b = iterate_into(
@@ -458,7 +632,11 @@ impl Renderer {
         cancel: &AtomicBool,
         mut progress: impl FnMut(f64),
     ) -> bool {
-        let step = self.total.div_ceil(passes.max(1));
+        let left = self
+            .total_samples()
+            .saturating_sub(self.samples_done)
+            .max(1);
+        let step = left.div_ceil(passes.max(1));
         while !self.is_done() {
             if !self.run(step, cancel) {
                 return false;
@@ -468,10 +646,15 @@ impl Renderer {
         true
     }
 
+    /// Is every sub-batch of the whole render done (one part of one, run to the end)?
+    fn complete(&self) -> bool {
+        self.part.count == 1 && self.next_batch >= self.batches_total && !self.cancelled
+    }
+
     /// Density used by the log scaling: the flame's quality·4^zoom when done, otherwise the
     /// samples actually done per pixel (so that previews are correctly exposed).
     fn density(&self) -> f64 {
-        if self.next_batch >= self.batches_total && !self.cancelled {
+        if self.complete() {
             return self.flame.quality * 4f64.powf(self.flame.zoom);
         }
         let px = self.flame.width as f64 * self.flame.height as f64;
@@ -489,7 +672,14 @@ impl Renderer {
     /// The image as it stands (any time during the render).
     pub fn preview(&self) -> DynamicImage {
         let m = self.merged();
-        develop(&self.flame, &self.geom, &m, self.density(), self.format)
+        develop_rows(
+            &self.flame,
+            &self.geom,
+            &m,
+            self.density(),
+            self.format,
+            self.out_rows.clone(),
+        )
     }
 
     /// A quick look at the image as it stands: like [`Renderer::preview`] but without density
@@ -516,7 +706,13 @@ impl Renderer {
                 [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
             })
             .collect();
-        filter_and_tonemap(&self.flame, &self.geom, &acc, self.format)
+        filter_and_tonemap(
+            &self.flame,
+            &self.geom,
+            &acc,
+            self.format,
+            self.out_rows.clone(),
+        )
     }
 
     /// True when the samples are kept and [`Renderer::recolor`] can be used.
@@ -549,15 +745,80 @@ impl Renderer {
         true
     }
 
-    /// Finish: merge the thread histograms in place (freeing them) and develop the image.
-    pub fn finish(mut self) -> DynamicImage {
-        let density = self.density();
+    /// The state to save (a copy: the render can go on). `None` after a cancel, whose
+    /// bookkeeping of finished sub-batches is not exact.
+    pub fn snapshot(&self) -> Option<(RenderState, Histogram)> {
+        Some((self.state()?, self.merged()))
+    }
+
+    /// Finish into the state to save: merges the thread histograms in place. `None` after a
+    /// cancel.
+    pub fn into_state(mut self) -> Option<(RenderState, Histogram)> {
+        let st = self.state()?;
+        Some((st, self.take_merged()))
+    }
+
+    /// The bucket geometry (with the strip's window of rows, if any).
+    pub fn geometry(&self) -> &Geometry {
+        &self.geom
+    }
+
+    fn state(&self) -> Option<RenderState> {
+        if self.cancelled {
+            return None;
+        }
+        let mut flame = self.flame.clone();
+        flame.has_camera = true;
+        Some(RenderState {
+            flame,
+            seed: self.seed,
+            part_count: self.part.count,
+            parts: vec![self.part.index],
+            batches_done: self.next_batch,
+            samples_done: self.samples_done,
+            bad_values: self.badvals,
+            lanes: self.lanes.iter().map(|l| l.state()).collect(),
+        })
+    }
+
+    fn take_merged(&mut self) -> Histogram {
         let mut hists = std::mem::take(&mut self.hists);
         let mut first = hists.swap_remove(0);
         for h in hists.drain(..) {
             first.add(&h);
         }
-        develop(&self.flame, &self.geom, &first, density, self.format)
+        first
+    }
+
+    /// Finish: merge the thread histograms in place (freeing them) and develop the image
+    /// (the strip's rows for a render in strips).
+    pub fn finish(mut self) -> DynamicImage {
+        let density = self.density();
+        let first = self.take_merged();
+        develop_rows(
+            &self.flame,
+            &self.geom,
+            &first,
+            density,
+            self.format,
+            self.out_rows.clone(),
+        )
+    }
+
+    /// As [`Renderer::finish`], also returning the state to save (`None` after a cancel).
+    pub fn finish_with_state(mut self) -> (DynamicImage, Option<(RenderState, Histogram)>) {
+        let density = self.density();
+        let st = self.state();
+        let first = self.take_merged();
+        let img = develop_rows(
+            &self.flame,
+            &self.geom,
+            &first,
+            density,
+            self.format,
+            self.out_rows.clone(),
+        );
+        (img, st.map(|s| (s, first)))
     }
 }
 
@@ -659,6 +920,21 @@ pub fn develop(
     density: f64,
     format: OutputFormat,
 ) -> DynamicImage {
+    develop_rows(flame, geom, hist, density, format, 0..geom.height)
+}
+
+/// As [`develop`] for output rows `out_rows` of the image, from a histogram holding bucket rows
+/// `geom.row0 .. geom.row0 + geom.bh` of the whole grid. Those rows must reach the
+/// density-estimation radius and the filter beyond the rows used (see
+/// [`crate::flame::strips::plan`]); then every pixel is the one of the whole image.
+pub fn develop_rows(
+    flame: &Flame,
+    geom: &Geometry,
+    hist: &Histogram,
+    density: f64,
+    format: OutputFormat,
+    out_rows: std::ops::Range<usize>,
+) -> DynamicImage {
     let ls = LogScale::new(flame, density);
     let mut acc: Vec<Bucket> = Vec::new();
     let acc: &[Bucket] = match &geom.de {
@@ -679,7 +955,7 @@ pub fn develop(
             &acc
         }
     };
-    filter_and_tonemap(flame, geom, acc, format)
+    filter_and_tonemap(flame, geom, acc, format, out_rows)
 }
 
 /// Spatial filter (separable, downsampling by os) and tone mapping into the output image.
@@ -688,8 +964,11 @@ fn filter_and_tonemap(
     geom: &Geometry,
     acc: &[Bucket],
     format: OutputFormat,
+    out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
-    let (w, h, os) = (geom.width, geom.height, geom.os);
+    let (w, os) = (geom.width, geom.os);
+    let h = out_rows.len();
+    let (y_first, acc_row0) = (out_rows.start, geom.row0);
     let taps = &geom.filter.taps;
     let fw = geom.filter.width;
     let delta = geom.delta;
@@ -701,8 +980,9 @@ fn filter_and_tonemap(
     // Output values 0..=255 (f64), per band of rows, then encoded.
     let encode = |y0: usize, out8: Option<&mut [u8]>, out16: Option<&mut [u16]>| {
         let rows = BAND.min(h - y0);
-        // Horizontally filtered acc rows needed by this band.
-        let r0 = y0 * os + delta;
+        // Horizontally filtered acc rows needed by this band (rows of `acc`, which starts at
+        // row `acc_row0` of the whole grid).
+        let r0 = (y_first + y0) * os + delta - acc_row0;
         let nr = (rows - 1) * os + fw;
         let mut tmp = vec![[0f64; 4]; nr * w];
         for r in 0..nr {

@@ -125,6 +125,50 @@ pub fn write_atomic_with(
     Ok(())
 }
 
+/// A file written in place of `path` and put there only by [`AtomicFile::commit`] (dropped
+/// uncommitted, it is removed): for saves written piece by piece, such as posters in strips.
+pub struct AtomicFile {
+    tmp: tempfile::NamedTempFile,
+    _registered: Registered,
+    path: PathBuf,
+}
+
+impl AtomicFile {
+    pub fn create(path: &Path) -> std::io::Result<AtomicFile> {
+        if path.is_dir() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::IsADirectory,
+                format!("'{}' is a directory", path.display()),
+            ));
+        }
+        let tmp = create_temp(path)?;
+        let registered = Registered::new(tmp.path());
+        Ok(AtomicFile {
+            tmp,
+            _registered: registered,
+            path: path.to_path_buf(),
+        })
+    }
+
+    /// The temporary file (clone the handle to give a writer its own).
+    pub fn file(&mut self) -> &mut std::fs::File {
+        self.tmp.as_file_mut()
+    }
+
+    /// Flush to disk and rename over the target.
+    pub fn commit(mut self) -> std::io::Result<()> {
+        self.tmp.as_file_mut().flush()?;
+        if let Ok(m) = std::fs::metadata(&self.path)
+            && m.is_file()
+        {
+            let _ = self.tmp.as_file().set_permissions(m.permissions());
+        }
+        self.tmp.as_file().sync_all()?;
+        self.tmp.persist(&self.path).map_err(|e| e.error)?;
+        Ok(())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

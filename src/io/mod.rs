@@ -14,6 +14,7 @@ pub mod lsystem;
 pub mod map;
 pub mod palettes;
 pub mod png;
+pub mod render_state;
 pub mod scene;
 pub mod svg;
 pub mod ugr;

@@ -210,6 +210,74 @@ fn find_text(info: &png::Info, file: &str) -> Result<Option<String>, Diagnostic>
     Ok(None)
 }
 
+/// A PNG written band by band (posters rendered in strips): the header and metadata first,
+/// then rows as they are made, never the whole image in memory.
+pub struct PngStream<W: std::io::Write + 'static> {
+    inner: png::StreamWriter<'static, W>,
+    sixteen: bool,
+}
+
+impl<W: std::io::Write + 'static> PngStream<W> {
+    /// Start a `width`×`height` PNG (RGB or RGBA, 8 or 16 bits) with metadata.
+    pub fn new(
+        w: W,
+        width: u32,
+        height: u32,
+        format: crate::flame::OutputFormat,
+        meta: &PngMeta,
+    ) -> Result<PngStream<W>, png::EncodingError> {
+        let mut enc = png::Encoder::new(w, width, height);
+        enc.set_color(if format.transparent {
+            png::ColorType::Rgba
+        } else {
+            png::ColorType::Rgb
+        });
+        enc.set_depth(if format.bits16 {
+            png::BitDepth::Sixteen
+        } else {
+            png::BitDepth::Eight
+        });
+        enc.set_compression(png::Compression::Fast);
+        enc.add_text_chunk("Software".into(), format!("ugnis {}", crate::VERSION))?;
+        if let Some(x) = &meta.flame_xml {
+            enc.add_ztxt_chunk(GENOME_KEYWORD.into(), ascii_xml(x))?;
+        }
+        for (k, t) in &meta.text {
+            enc.add_ztxt_chunk(k.clone(), ascii_xml(t))?;
+        }
+        let inner = enc.write_header()?.into_stream_writer()?;
+        Ok(PngStream {
+            inner,
+            sixteen: format.bits16,
+        })
+    }
+
+    /// Append the rows of a band (as the renderer made them, in the stream's format).
+    pub fn write_rows(&mut self, img: &DynamicImage) -> std::io::Result<()> {
+        use std::io::Write as _;
+        if self.sixteen {
+            let raw: &[u16] = match img {
+                DynamicImage::ImageRgb16(b) => b.as_raw(),
+                DynamicImage::ImageRgba16(b) => b.as_raw(),
+                _ => return Err(std::io::Error::other("a band of the wrong pixel format")),
+            };
+            self.inner.write_all(&be16(raw))
+        } else {
+            let raw: &[u8] = match img {
+                DynamicImage::ImageRgb8(b) => b.as_raw(),
+                DynamicImage::ImageRgba8(b) => b.as_raw(),
+                _ => return Err(std::io::Error::other("a band of the wrong pixel format")),
+            };
+            self.inner.write_all(raw)
+        }
+    }
+
+    /// End the image (every row must have been written).
+    pub fn finish(self) -> std::io::Result<()> {
+        self.inner.finish().map_err(std::io::Error::other)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,141 @@
+//! Renders in strips: images larger than memory, band by band.
+//!
+//! Every strip iterates all the samples of the whole render (the same sub-batches, seeds and
+//! orbits) and keeps those that land in its band of bucket rows, as flam3 and Fractorium do
+//! for posters. The band reaches beyond the strip's output rows by the spatial filter's
+//! footprint plus the density-estimation kernel radius and its hit-count block, so each pixel
+//! sees exactly the buckets it sees in the whole render: no seam. The cost is K times the
+//! iteration of one render; the memory is one band's histograms.
+
+use std::ops::Range;
+
+use crate::flame::density::DeFilters;
+use crate::flame::geometry::Geometry;
+use crate::flame::model::Flame;
+use crate::flame::render::{RenderError, RenderOptions, estimate_memory_rows};
+
+/// Most strips a render may be cut into.
+pub const MAX_STRIPS: usize = 10_000;
+
+/// One band of a render in strips.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Strip {
+    /// Output image rows this strip makes.
+    pub out_rows: Range<usize>,
+    /// Bucket rows of the whole grid its histogram holds (output rows plus margins).
+    pub hist_rows: Range<usize>,
+    /// Bucket rows it contributes to a saved state: the strips' core rows tile the grid.
+    pub core_rows: Range<usize>,
+}
+
+/// Cut a flame's image into `k` strips of nearly equal height.
+pub fn plan(flame: &Flame, k: usize) -> Result<Vec<Strip>, RenderError> {
+    let h = flame.height as usize;
+    if k == 0 || k > MAX_STRIPS.min(h.max(1)) {
+        return Err(RenderError::Settings(format!(
+            "{k} strips: must be between 1 and {} (the image height, at most {MAX_STRIPS})",
+            MAX_STRIPS.min(h.max(1))
+        )));
+    }
+    let de = DeFilters::new(
+        flame.estimator_radius,
+        flame.estimator_minimum,
+        flame.estimator_curve,
+        flame.supersample.max(1),
+    )?;
+    let geom = Geometry::new(flame, de);
+    let (os, g, delta, fw, bh) = (
+        geom.os,
+        geom.gutter,
+        geom.delta,
+        geom.filter.taps.len(),
+        geom.full_bh,
+    );
+    // A bucket's DE kernel reaches `half` rows; its hit count sums a block of os/2 rows more.
+    let margin = geom
+        .de
+        .as_ref()
+        .map_or(0, |d| d.half.max(0) as usize + os / 2);
+    let cut = |s: usize| s * h / k;
+    Ok((0..k)
+        .map(|s| {
+            let (y0, y1) = (cut(s), cut(s + 1));
+            let core_lo = if s == 0 { 0 } else { y0 * os + g };
+            let core_hi = if s + 1 == k { bh } else { y1 * os + g };
+            let need_lo = (y0 * os + delta).saturating_sub(margin);
+            let need_hi = ((y1 - 1) * os + delta + fw + margin).min(bh);
+            Strip {
+                out_rows: y0..y1,
+                hist_rows: core_lo.min(need_lo)..core_hi.max(need_hi),
+                core_rows: core_lo..core_hi,
+            }
+        })
+        .collect())
+}
+
+/// The fewest strips whose largest strip fits in `budget` bytes (`None`: not even strips one
+/// output row high fit).
+pub fn strips_for_budget(
+    flame: &Flame,
+    opts: &RenderOptions,
+    budget: u64,
+) -> Result<Option<usize>, RenderError> {
+    let h = (flame.height as usize).clamp(1, MAX_STRIPS);
+    let fits = |k: usize| -> Result<bool, RenderError> {
+        let strips = plan(flame, k)?;
+        let worst = strips
+            .iter()
+            .map(|s| (s.hist_rows.len() as u64, s.out_rows.len() as u64))
+            .max()
+            .unwrap_or((0, 0));
+        Ok(estimate_memory_rows(flame, opts, Some(worst)).total <= budget)
+    };
+    if !fits(h)? {
+        return Ok(None);
+    }
+    // Fitting is monotone in k (more strips, smaller bands): bisect.
+    let (mut lo, mut hi) = (1usize, h);
+    if fits(1)? {
+        return Ok(Some(1));
+    }
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if fits(mid)? {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok(Some(hi))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn strips_cover_the_image_and_tile_the_grid() {
+        let f = Flame {
+            width: 64,
+            height: 48,
+            supersample: 2,
+            estimator_radius: 5.0,
+            ..Flame::default()
+        };
+        let strips = plan(&f, 5).unwrap();
+        assert_eq!(strips[0].out_rows.start, 0);
+        assert_eq!(strips[4].out_rows.end, 48);
+        assert_eq!(strips[0].core_rows.start, 0);
+        let geom = Geometry::new(&f, None);
+        assert_eq!(strips[4].core_rows.end, geom.full_bh);
+        for w in strips.windows(2) {
+            assert_eq!(w[0].out_rows.end, w[1].out_rows.start);
+            assert_eq!(w[0].core_rows.end, w[1].core_rows.start);
+        }
+        for s in &strips {
+            assert!(s.hist_rows.start <= s.core_rows.start && s.core_rows.end <= s.hist_rows.end);
+        }
+        assert!(plan(&f, 0).is_err());
+        assert!(plan(&f, 49).is_err());
+    }
+}

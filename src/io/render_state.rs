@@ -1,0 +1,682 @@
+//! Render state files (`.ugnis-state`): a flame render's histogram and everything needed to
+//! continue it or merge it with other parts of the same render.
+//!
+//! Layout (little-endian):
+//!
+//! ```text
+//! "UGNISRS\x1a"                        8-byte magic
+//! u32 version                          FORMAT_VERSION
+//! u32 n, n bytes                       header: UTF-8 lines "key value", then "flame" and the
+//!                                      flame's XML element on the following lines
+//! u32 k, k × lane set                  each worker's orbits: 256 × (x, y, z, c as f64, last
+//!                                      as u16, consec as u8, step as i32), then started as u8
+//! repeated: "ROWS" u32 row0 u32 rows u64 n, n bytes
+//!                                      bucket rows row0.. of the grid: deflate of a bit per
+//!                                      bucket (empty or not), then the non-empty buckets'
+//!                                      alphas and colours as byte planes (see `compress`)
+//! "END\0" u32 chunk count              the end (a truncated file has none)
+//! ```
+//!
+//! The chunks tile the bucket rows in order, so a reader can fetch any band of rows without
+//! holding the whole histogram (renders in strips, merges of posters).
+
+use std::fs::File;
+use std::io::{BufReader, BufWriter, Read, Seek, SeekFrom, Write};
+use std::ops::Range;
+use std::path::Path;
+
+use rayon::prelude::*;
+
+use crate::flame::chaos::{LANES, LaneState};
+use crate::flame::histogram::{Bucket, Histogram};
+use crate::flame::state::{MAX_PARTS, RenderState};
+use crate::io::diag::{Diagnostic, Pos};
+
+pub const MAGIC: &[u8; 8] = b"UGNISRS\x1a";
+/// The version this ugnis writes and reads.
+pub const FORMAT_VERSION: u32 = 1;
+/// Rows per compressed chunk.
+pub const CHUNK_ROWS: usize = 32;
+const MAX_HEADER: u32 = 64 << 20;
+const MAX_LANE_SETS: u32 = 4096;
+const LANE_SET_BYTES: usize = LANES * (4 * 8 + 2 + 1 + 4) + 1;
+
+fn err(file: &str, pos: Pos, msg: impl Into<String>) -> Diagnostic {
+    Diagnostic::error(file, pos, "STATE001", msg)
+}
+
+fn io_err(file: &str, e: std::io::Error) -> Diagnostic {
+    if e.kind() == std::io::ErrorKind::UnexpectedEof {
+        err(
+            file,
+            Pos::File,
+            "the file ends early (truncated: was it still being written?)",
+        )
+    } else {
+        err(file, Pos::File, format!("cannot read: {e}"))
+    }
+}
+
+/// The header text of a state.
+fn header_text(st: &RenderState, grid: (usize, usize)) -> String {
+    let parts: Vec<String> = st.parts.iter().map(|p| p.to_string()).collect();
+    format!(
+        "ugnis-render-state\nugnis {}\nseed {}\nparts {} of {}\nbatches_done {}\nsamples_done {}\nbad_values {}\nbuckets {}x{}\nflame\n{}\n",
+        crate::VERSION,
+        st.seed,
+        parts.join(","),
+        st.part_count,
+        st.batches_done,
+        st.samples_done,
+        st.bad_values,
+        grid.0,
+        grid.1,
+        crate::io::flam3_xml::flame_element(&st.flame)
+    )
+}
+
+/// Check that a state's flame survives the trip through its XML (3-D IFS flames, for one, have
+/// no XML form).
+pub fn check_saveable(st: &RenderState) -> Result<(), String> {
+    if st.flame.ifs3d.is_some() {
+        return Err("a render state of a 3-D IFS cannot be saved (its maps have no flame XML form); render it in one go".into());
+    }
+    Ok(())
+}
+
+/// Writes a state: header and orbits at once, then the histogram rows in order.
+pub struct StateWriter<W: Write> {
+    out: W,
+    bw: usize,
+    bh: usize,
+    next_row: usize,
+    chunks: u32,
+}
+
+impl<W: Write> StateWriter<W> {
+    pub fn new(mut out: W, st: &RenderState) -> std::io::Result<StateWriter<W>> {
+        check_saveable(st).map_err(std::io::Error::other)?;
+        let (bw, bh) = st.grid().map_err(std::io::Error::other)?;
+        let header = header_text(st, (bw, bh));
+        out.write_all(MAGIC)?;
+        out.write_all(&FORMAT_VERSION.to_le_bytes())?;
+        out.write_all(&(header.len() as u32).to_le_bytes())?;
+        out.write_all(header.as_bytes())?;
+        out.write_all(&(st.lanes.len() as u32).to_le_bytes())?;
+        for l in &st.lanes {
+            let mut b = Vec::with_capacity(LANE_SET_BYTES);
+            for v in [&l.x, &l.y, &l.z, &l.c] {
+                for x in v.iter() {
+                    b.extend_from_slice(&x.to_le_bytes());
+                }
+            }
+            for x in &l.last {
+                b.extend_from_slice(&x.to_le_bytes());
+            }
+            b.extend_from_slice(&l.consec);
+            for x in &l.step {
+                b.extend_from_slice(&x.to_le_bytes());
+            }
+            b.push(l.started as u8);
+            if b.len() != LANE_SET_BYTES {
+                return Err(std::io::Error::other("orbit state of the wrong size"));
+            }
+            out.write_all(&b)?;
+        }
+        Ok(StateWriter {
+            out,
+            bw,
+            bh,
+            next_row: 0,
+            chunks: 0,
+        })
+    }
+
+    /// Append the next rows (`data` holds whole rows of the bucket grid, following those
+    /// written before). Compressed in parallel chunks.
+    pub fn write_rows(&mut self, data: &[Bucket]) -> std::io::Result<()> {
+        let bw = self.bw;
+        if !data.len().is_multiple_of(bw) || self.next_row + data.len() / bw > self.bh {
+            return Err(std::io::Error::other("histogram rows do not fit the grid"));
+        }
+        // Compress a group of chunks in parallel, then write them in order.
+        let group = CHUNK_ROWS * bw * rayon::current_num_threads().max(1) * 2;
+        for part in data.chunks(group) {
+            let packed: Vec<Vec<u8>> = part
+                .par_chunks(CHUNK_ROWS * bw)
+                .map(compress)
+                .collect::<std::io::Result<_>>()?;
+            for (rows, bytes) in part.chunks(CHUNK_ROWS * bw).zip(packed) {
+                let n = rows.len() / bw;
+                self.out.write_all(b"ROWS")?;
+                self.out.write_all(&(self.next_row as u32).to_le_bytes())?;
+                self.out.write_all(&(n as u32).to_le_bytes())?;
+                self.out.write_all(&(bytes.len() as u64).to_le_bytes())?;
+                self.out.write_all(&bytes)?;
+                self.next_row += n;
+                self.chunks += 1;
+            }
+        }
+        Ok(())
+    }
+
+    /// End the file; every row must have been written.
+    pub fn finish(mut self) -> std::io::Result<W> {
+        if self.next_row != self.bh {
+            return Err(std::io::Error::other(format!(
+                "only {} of {} histogram rows were written",
+                self.next_row, self.bh
+            )));
+        }
+        self.out.write_all(b"END\0")?;
+        self.out.write_all(&self.chunks.to_le_bytes())?;
+        self.out.flush()?;
+        Ok(self.out)
+    }
+}
+
+/// Byte planes: all the lowest bytes of `words`, then the next…
+fn shuffle_into(out: &mut Vec<u8>, words: &[u32]) {
+    for k in 0..4 {
+        out.extend(words.iter().map(|w| (w >> (8 * k)) as u8));
+    }
+}
+
+fn unshuffle(bytes: &[u8], n: usize) -> Vec<u32> {
+    (0..n)
+        .map(|i| u32::from_le_bytes([bytes[i], bytes[n + i], bytes[2 * n + i], bytes[3 * n + i]]))
+        .collect()
+}
+
+/// Can this alpha value be stored as a whole number (and read back bit for bit)?
+fn integral(a: f32) -> bool {
+    (0.0..=16_777_216.0).contains(&a) && (a as u32 as f32).to_bits() == a.to_bits()
+}
+
+/// A chunk before deflate: a bit per bucket (set: not all zero), a flag (1: the alphas are
+/// whole numbers, as hit counts of opaque palettes are, stored as integers, whose high bytes
+/// are mostly zero), the alphas of the set buckets, then their R, G, B, each as byte planes.
+/// Empty buckets cost one bit; the noisy low mantissa bytes are kept apart from the exponents.
+fn compress(rows: &[Bucket]) -> std::io::Result<Vec<u8>> {
+    let n = rows.len();
+    let mut mask = vec![0u8; n.div_ceil(8)];
+    let mut kept: Vec<&Bucket> = Vec::new();
+    for (i, b) in rows.iter().enumerate() {
+        if b.iter().any(|v| v.to_bits() != 0) {
+            mask[i / 8] |= 1 << (i % 8);
+            kept.push(b);
+        }
+    }
+    let ints = kept.iter().all(|b| integral(b[3]));
+    let mut buf = Vec::with_capacity(mask.len() + 1 + kept.len() * 16);
+    buf.extend_from_slice(&mask);
+    buf.push(ints as u8);
+    let alpha: Vec<u32> = kept
+        .iter()
+        .map(|b| if ints { b[3] as u32 } else { b[3].to_bits() })
+        .collect();
+    shuffle_into(&mut buf, &alpha);
+    let rgb: Vec<u32> = kept
+        .iter()
+        .flat_map(|b| [b[0].to_bits(), b[1].to_bits(), b[2].to_bits()])
+        .collect();
+    shuffle_into(&mut buf, &rgb);
+    let mut enc = flate2::write::DeflateEncoder::new(
+        Vec::with_capacity(buf.len() / 2),
+        flate2::Compression::fast(),
+    );
+    enc.write_all(&buf)?;
+    enc.finish()
+}
+
+fn decompress(file: &str, at: u64, bytes: &[u8], out: &mut [Bucket]) -> Result<(), Diagnostic> {
+    let n = out.len();
+    let damaged = |m: String| err(file, Pos::Byte(at), format!("damaged histogram chunk: {m}"));
+    let limit = n.div_ceil(8) + 1 + n * 16;
+    let mut buf = Vec::with_capacity(limit);
+    flate2::read::DeflateDecoder::new(bytes)
+        .take(limit as u64 + 1)
+        .read_to_end(&mut buf)
+        .map_err(|e| damaged(e.to_string()))?;
+    let mlen = n.div_ceil(8);
+    if buf.len() < mlen + 1 {
+        return Err(damaged("too short".into()));
+    }
+    let m = (0..n).filter(|&i| buf[i / 8] & (1 << (i % 8)) != 0).count();
+    if buf.len() != mlen + 1 + 16 * m {
+        return Err(damaged(format!(
+            "{} bytes where {} were expected",
+            buf.len(),
+            mlen + 1 + 16 * m
+        )));
+    }
+    let ints = match buf[mlen] {
+        0 => false,
+        1 => true,
+        f => return Err(damaged(format!("unknown alpha encoding {f}"))),
+    };
+    let alpha = unshuffle(&buf[mlen + 1..mlen + 1 + 4 * m], m);
+    let rgb = unshuffle(&buf[mlen + 1 + 4 * m..], 3 * m);
+    let mut k = 0;
+    for (i, o) in out.iter_mut().enumerate() {
+        if buf[i / 8] & (1 << (i % 8)) == 0 {
+            *o = [0.0; 4];
+            continue;
+        }
+        let a = if ints {
+            alpha[k] as f32
+        } else {
+            f32::from_bits(alpha[k])
+        };
+        *o = [
+            f32::from_bits(rgb[3 * k]),
+            f32::from_bits(rgb[3 * k + 1]),
+            f32::from_bits(rgb[3 * k + 2]),
+            a,
+        ];
+        k += 1;
+    }
+    Ok(())
+}
+
+/// Save a whole state atomically.
+pub fn save(path: &Path, st: &RenderState, hist: &Histogram) -> std::io::Result<()> {
+    crate::io::atomic::write_atomic_with(path, |f| {
+        let mut w = StateWriter::new(BufWriter::new(f), st)?;
+        w.write_rows(&hist.data)?;
+        w.finish()?;
+        Ok(())
+    })
+}
+
+struct Chunk {
+    row0: usize,
+    rows: usize,
+    offset: u64,
+    len: u64,
+}
+
+/// An open state file: the state, and its histogram rows on demand.
+pub struct StateReader {
+    file_name: String,
+    file: BufReader<File>,
+    pub state: RenderState,
+    /// Bucket grid: width and height.
+    pub bw: usize,
+    pub bh: usize,
+    chunks: Vec<Chunk>,
+}
+
+/// Read one line "key value" of the header.
+fn field<'a>(
+    lines: &[(usize, &'a str)],
+    k: usize,
+    key: &str,
+    file: &str,
+) -> Result<&'a str, Diagnostic> {
+    let (ln, text) = lines.get(k).copied().unwrap_or((lines.len() + 1, ""));
+    text.strip_prefix(key)
+        .and_then(|r| r.strip_prefix(' '))
+        .ok_or_else(|| {
+            err(
+                file,
+                Pos::File,
+                format!("header line {ln}: expected '{key} …', found '{text}'"),
+            )
+        })
+}
+
+fn num<T: std::str::FromStr>(v: &str, key: &str, file: &str) -> Result<T, Diagnostic> {
+    v.trim().parse().map_err(|_| {
+        err(
+            file,
+            Pos::File,
+            format!("header field '{key}': '{v}' is not a whole number in range"),
+        )
+    })
+}
+
+impl StateReader {
+    /// Open a state file: check the magic and version, read the header and orbits, and index
+    /// the histogram chunks (checking that they tile the grid and that the file is complete).
+    pub fn open(path: &Path) -> Result<StateReader, Diagnostic> {
+        let name = path.display().to_string();
+        let (f, meta) = crate::io::open_regular(path)?;
+        let len = meta.len();
+        let mut file = BufReader::new(f);
+        let e = |x| io_err(&name, x);
+        let mut magic = [0u8; 8];
+        file.read_exact(&mut magic).map_err(|_| {
+            err(
+                &name,
+                Pos::File,
+                "not a ugnis render state (the file is too short)",
+            )
+        })?;
+        if &magic != MAGIC {
+            return Err(err(
+                &name,
+                Pos::Byte(0),
+                "not a ugnis render state (it does not start with UGNISRS); states are written by `ugnis render --save-state`",
+            ));
+        }
+        let version = read_u32(&mut file).map_err(e)?;
+        if version != FORMAT_VERSION {
+            return Err(err(
+                &name,
+                Pos::Byte(8),
+                format!(
+                    "render state format version {version}, but ugnis {} reads version {FORMAT_VERSION} only; render the part again with this ugnis (a state cannot be converted: its histogram layout differs between versions)",
+                    crate::VERSION
+                ),
+            ));
+        }
+        let hlen = read_u32(&mut file).map_err(e)?;
+        if hlen > MAX_HEADER || hlen as u64 > len {
+            return Err(err(
+                &name,
+                Pos::Byte(12),
+                format!(
+                    "header of {hlen} bytes is longer than the file or the limit of {MAX_HEADER}"
+                ),
+            ));
+        }
+        let mut hbytes = vec![0u8; hlen as usize];
+        file.read_exact(&mut hbytes).map_err(e)?;
+        let text = String::from_utf8(hbytes)
+            .map_err(|_| err(&name, Pos::Byte(16), "the header is not UTF-8 text"))?;
+        let (state, bw, bh) = parse_header(&text, &name)?;
+        let n_lanes = read_u32(&mut file).map_err(e)?;
+        if n_lanes > MAX_LANE_SETS {
+            return Err(err(
+                &name,
+                Pos::File,
+                format!("{n_lanes} orbit sets (limit {MAX_LANE_SETS})"),
+            ));
+        }
+        let mut state = state;
+        for _ in 0..n_lanes {
+            let mut b = vec![0u8; LANE_SET_BYTES];
+            file.read_exact(&mut b).map_err(e)?;
+            state.lanes.push(parse_lanes(&b));
+        }
+        // Index the chunks.
+        let mut chunks = Vec::new();
+        let mut pos = file.stream_position().map_err(e)?;
+        let mut next_row = 0usize;
+        loop {
+            let mut tag = [0u8; 4];
+            file.read_exact(&mut tag).map_err(e)?;
+            if &tag == b"END\0" {
+                let count = read_u32(&mut file).map_err(e)?;
+                if count as usize != chunks.len() || next_row != bh {
+                    return Err(err(
+                        &name,
+                        Pos::Byte(pos),
+                        format!(
+                            "the histogram is incomplete: {next_row} of {bh} rows in {} chunks (the end marker says {count})",
+                            chunks.len()
+                        ),
+                    ));
+                }
+                break;
+            }
+            if &tag != b"ROWS" {
+                return Err(err(
+                    &name,
+                    Pos::Byte(pos),
+                    "expected a histogram chunk (ROWS)",
+                ));
+            }
+            let row0 = read_u32(&mut file).map_err(e)? as usize;
+            let rows = read_u32(&mut file).map_err(e)? as usize;
+            let clen = read_u64(&mut file).map_err(e)?;
+            let offset = pos + 20;
+            if offset + clen > len {
+                return Err(err(
+                    &name,
+                    Pos::Byte(pos),
+                    format!(
+                        "histogram chunk of rows {row0}..{} runs past the end of the file (truncated: was it still being written?)",
+                        row0 + rows
+                    ),
+                ));
+            }
+            if row0 != next_row || rows == 0 || row0 + rows > bh {
+                return Err(err(
+                    &name,
+                    Pos::Byte(pos),
+                    format!(
+                        "histogram chunk of rows {row0}..{} does not follow row {next_row} of {bh}",
+                        row0 + rows
+                    ),
+                ));
+            }
+            chunks.push(Chunk {
+                row0,
+                rows,
+                offset,
+                len: clen,
+            });
+            next_row += rows;
+            pos = offset + clen;
+            file.seek(SeekFrom::Start(pos)).map_err(e)?;
+        }
+        Ok(StateReader {
+            file_name: name,
+            file,
+            state,
+            bw,
+            bh,
+            chunks,
+        })
+    }
+
+    pub fn file_name(&self) -> &str {
+        &self.file_name
+    }
+
+    /// Compressed size of the histogram.
+    pub fn compressed_bytes(&self) -> u64 {
+        self.chunks.iter().map(|c| c.len).sum()
+    }
+
+    /// Bucket rows `rows` of the grid as a histogram of `bw` × `rows.len()` buckets.
+    pub fn read_rows(&mut self, rows: Range<usize>) -> Result<Histogram, Diagnostic> {
+        let name = self.file_name.clone();
+        if rows.end > self.bh || rows.start > rows.end {
+            return Err(err(
+                &name,
+                Pos::File,
+                format!("rows {rows:?} are outside the grid of {} rows", self.bh),
+            ));
+        }
+        let bw = self.bw;
+        let mut h = Histogram::new(bw, rows.len());
+        // Read the compressed chunks that meet the range, then inflate them in parallel.
+        let mut raw: Vec<(usize, usize, u64, Vec<u8>)> = Vec::new();
+        for c in &self.chunks {
+            if c.row0 + c.rows <= rows.start || c.row0 >= rows.end {
+                continue;
+            }
+            self.file
+                .seek(SeekFrom::Start(c.offset))
+                .map_err(|e| io_err(&name, e))?;
+            let mut b = vec![0u8; c.len as usize];
+            self.file.read_exact(&mut b).map_err(|e| io_err(&name, e))?;
+            raw.push((c.row0, c.rows, c.offset, b));
+        }
+        let decoded: Vec<(usize, Vec<Bucket>)> = raw
+            .par_iter()
+            .map(|(row0, n, at, b)| {
+                let mut out = vec![[0f32; 4]; n * bw];
+                decompress(&name, *at, b, &mut out)?;
+                Ok((*row0, out))
+            })
+            .collect::<Result<_, Diagnostic>>()?;
+        for (row0, data) in decoded {
+            let n = data.len() / bw;
+            let lo = row0.max(rows.start);
+            let hi = (row0 + n).min(rows.end);
+            h.data[(lo - rows.start) * bw..(hi - rows.start) * bw]
+                .copy_from_slice(&data[(lo - row0) * bw..(hi - row0) * bw]);
+        }
+        Ok(h)
+    }
+
+    /// The whole histogram.
+    pub fn read_all(&mut self) -> Result<Histogram, Diagnostic> {
+        self.read_rows(0..self.bh)
+    }
+}
+
+fn read_u32(r: &mut impl Read) -> std::io::Result<u32> {
+    let mut b = [0u8; 4];
+    r.read_exact(&mut b)?;
+    Ok(u32::from_le_bytes(b))
+}
+
+fn read_u64(r: &mut impl Read) -> std::io::Result<u64> {
+    let mut b = [0u8; 8];
+    r.read_exact(&mut b)?;
+    Ok(u64::from_le_bytes(b))
+}
+
+fn parse_lanes(b: &[u8]) -> LaneState {
+    let mut at = 0usize;
+    let mut f64s = || {
+        let v: Vec<f64> = (0..LANES)
+            .map(|i| {
+                let o = at + 8 * i;
+                f64::from_le_bytes(b[o..o + 8].try_into().unwrap_or([0; 8]))
+            })
+            .collect();
+        at += 8 * LANES;
+        v
+    };
+    let (x, y, z, c) = (f64s(), f64s(), f64s(), f64s());
+    let mut at = 4 * 8 * LANES;
+    let last = (0..LANES)
+        .map(|i| u16::from_le_bytes([b[at + 2 * i], b[at + 2 * i + 1]]))
+        .collect();
+    at += 2 * LANES;
+    let consec = b[at..at + LANES].to_vec();
+    at += LANES;
+    let step = (0..LANES)
+        .map(|i| {
+            let o = at + 4 * i;
+            i32::from_le_bytes([b[o], b[o + 1], b[o + 2], b[o + 3]])
+        })
+        .collect();
+    at += 4 * LANES;
+    LaneState {
+        x,
+        y,
+        z,
+        c,
+        last,
+        consec,
+        step,
+        started: b[at] != 0,
+    }
+}
+
+fn parse_header(text: &str, file: &str) -> Result<(RenderState, usize, usize), Diagnostic> {
+    let lines: Vec<(usize, &str)> = text.lines().enumerate().map(|(i, l)| (i + 1, l)).collect();
+    if lines.first().map(|l| l.1) != Some("ugnis-render-state") {
+        return Err(err(
+            file,
+            Pos::File,
+            "header line 1: expected 'ugnis-render-state'",
+        ));
+    }
+    let _writer = field(&lines, 1, "ugnis", file)?;
+    let seed: u64 = num(field(&lines, 2, "seed", file)?, "seed", file)?;
+    let parts_text = field(&lines, 3, "parts", file)?;
+    let (list, count) = parts_text.split_once(" of ").ok_or_else(|| {
+        err(
+            file,
+            Pos::File,
+            format!("header line 4: expected 'parts I,J,… of N', found 'parts {parts_text}'"),
+        )
+    })?;
+    let part_count: u32 = num(count, "parts", file)?;
+    let mut parts: Vec<u32> = list
+        .split(',')
+        .map(|p| num(p, "parts", file))
+        .collect::<Result<_, _>>()?;
+    parts.sort_unstable();
+    parts.dedup();
+    if part_count == 0 || part_count > MAX_PARTS || parts.iter().any(|&p| p >= part_count) {
+        return Err(err(
+            file,
+            Pos::File,
+            format!(
+                "header line 4: parts {list} of {part_count} are out of range (1 to {MAX_PARTS} parts, numbered from 0)"
+            ),
+        ));
+    }
+    let batches_done = num(
+        field(&lines, 4, "batches_done", file)?,
+        "batches_done",
+        file,
+    )?;
+    let samples_done = num(
+        field(&lines, 5, "samples_done", file)?,
+        "samples_done",
+        file,
+    )?;
+    let bad_values = num(field(&lines, 6, "bad_values", file)?, "bad_values", file)?;
+    let grid = field(&lines, 7, "buckets", file)?;
+    let (gw, gh) = grid
+        .split_once('x')
+        .ok_or_else(|| err(file, Pos::File, "header line 8: expected 'buckets WxH'"))?;
+    let (bw, bh): (usize, usize) = (num(gw, "buckets", file)?, num(gh, "buckets", file)?);
+    if lines.get(8).map(|l| l.1) != Some("flame") {
+        return Err(err(file, Pos::File, "header line 9: expected 'flame'"));
+    }
+    let start = text
+        .match_indices('\n')
+        .nth(8)
+        .map_or(text.len(), |(i, _)| i + 1);
+    let opts = crate::io::flam3_xml::ReadOptions {
+        file: format!("{file} (header)"),
+        ..Default::default()
+    };
+    let parsed = crate::io::flam3_xml::read(&text[start..], &opts)?;
+    let Some(mut flame) = parsed.value.flames.into_iter().next() else {
+        return Err(err(file, Pos::File, "the header holds no flame"));
+    };
+    flame.has_camera = true;
+    let state = RenderState {
+        flame,
+        seed,
+        part_count,
+        parts,
+        batches_done,
+        samples_done,
+        bad_values,
+        lanes: Vec::new(),
+    };
+    let want = state.grid().map_err(|m| {
+        err(
+            file,
+            Pos::File,
+            format!("the flame cannot be rendered: {m}"),
+        )
+    })?;
+    if want != (bw, bh) {
+        return Err(err(
+            file,
+            Pos::File,
+            format!(
+                "the header says {bw}x{bh} buckets but its flame needs {}x{}",
+                want.0, want.1
+            ),
+        ));
+    }
+    if bw.saturating_mul(bh) > u32::MAX as usize {
+        return Err(err(file, Pos::File, "the bucket grid is too large"));
+    }
+    Ok((state, bw, bh))
+}
