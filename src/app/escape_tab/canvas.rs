@@ -1,7 +1,7 @@
 //! The escape-time picture: wheel zoom at the cursor, drag to pan, right-drag to zoom to a
 //! rectangle, click on the Mandelbrot set to open the Julia set of the point.
 
-use eframe::egui::{self, Color32, Pos2, Rect, Sense, Stroke, Vec2};
+use eframe::egui::{self, Color32, Pos2, Rect, Stroke, Vec2};
 
 use super::EscapeTab;
 use crate::escape::{Family, View};
@@ -9,13 +9,7 @@ use crate::escape::{Family, View};
 impl EscapeTab {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
-        let avail = ui.available_size().max(Vec2::splat(32.0));
-        let (rect, resp) = ui.allocate_exact_size(avail, Sense::click_and_drag());
-        let ppp = ctx.pixels_per_point();
-        let size = [
-            ((rect.width() * ppp) as u32).max(16),
-            ((rect.height() * ppp) as u32).max(16),
-        ];
+        let (rect, resp, ppp, size) = crate::app::canvas_area(ui);
         let warped = matches!(self.doc.params.family, Family::WarpedJulia(_));
         // The document follows the panel's size, keeping the world width.
         if !warped && [self.doc.width, self.doc.height] != size {

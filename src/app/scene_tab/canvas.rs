@@ -2,20 +2,14 @@
 //! view): drag to orbit, wheel to zoom, right-drag to pan, Ctrl+drag to move the selected
 //! light.
 
-use eframe::egui::{self, Color32, Pos2, Rect, Sense, Stroke, Vec2};
+use eframe::egui::{self, Color32, Pos2, Rect, Stroke, Vec2};
 
 use super::{SceneJob, SceneTab};
 
 impl SceneTab {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
-        let avail = ui.available_size().max(Vec2::splat(32.0));
-        let (rect, resp) = ui.allocate_exact_size(avail, Sense::click_and_drag());
-        let ppp = ctx.pixels_per_point();
-        let size = [
-            ((rect.width() * ppp) as u32).max(16),
-            ((rect.height() * ppp) as u32).max(16),
-        ];
+        let (rect, resp, ppp, size) = crate::app::canvas_area(ui);
         // Interaction.
         let px_per_unit = self.scene.camera.scale * size[1] as f64 / 480.0 / ppp as f64;
         let ctrl = ctx.input(|i| i.modifiers.command);
