@@ -54,6 +54,9 @@ pub struct CompiledXform {
     /// A coordinate of larger magnitude (or NaN) is a bad value: [`BAD_LIMIT`] or
     /// [`BAD_LIMIT_WIDE`].
     pub bad_limit: f64,
+    /// The weight of `linear` when it is the xform's only variation (no `pre_`/`post_`
+    /// forms): the lane runner then skips the general variation machinery.
+    pub linear_only: Option<f64>,
 }
 
 /// |v| ≤ limit; false for NaN (which fails every comparison).
@@ -107,7 +110,12 @@ impl CompiledXform {
                 Form::Post => post_vars.push(p),
             }
         }
+        let linear_only = match (&pre_vars[..], &vars[..], &post_vars[..]) {
+            ([], [v], []) if v.id == variations::LINEAR && !sets_color => Some(v.w),
+            _ => None,
+        };
         CompiledXform {
+            linear_only,
             coefs: x.coefs,
             post: if x.post.is_identity() {
                 None
@@ -193,39 +201,66 @@ impl CompiledXform {
 /// Number of independent orbits iterated together by [`Chaos::run_lanes`].
 pub const LANES: usize = 256;
 
-/// The orbits of the lane runner. They live for the whole render of one worker thread (see
-/// [`Chaos::run_lanes`]). Fixed-size arrays: every index is provably in range.
+/// The state of [`LANES`] orbits: position, colour coordinate, the xform applied last (xaos
+/// row; `u16::MAX` before the first), consecutive bad values, and steps done (an orbit plots
+/// once this is ≥ 0; it starts at −FUSE).
 #[derive(Clone, Debug)]
-pub struct Lanes {
+struct Orbits {
     x: [f64; LANES],
     y: [f64; LANES],
     z: [f64; LANES],
     c: [f64; LANES],
-    /// Xform applied last (xaos row), `u16::MAX` before the first.
     last: [u16; LANES],
     consec: [u8; LANES],
-    /// Steps done; an orbit plots once this is ≥ 0 (it starts at −FUSE).
     step: [i32; LANES],
+}
+
+impl Orbits {
+    fn new() -> Orbits {
+        Orbits {
+            x: [0.0; LANES],
+            y: [0.0; LANES],
+            z: [0.0; LANES],
+            c: [0.0; LANES],
+            last: [u16::MAX; LANES],
+            consec: [0; LANES],
+            step: [-(FUSE as i32); LANES],
+        }
+    }
+}
+
+/// The orbits of the lane runner. They live for the whole render of one worker thread (see
+/// [`Chaos::run_lanes`]). Fixed-size arrays: every index is provably in range.
+///
+/// Orbits are interchangeable, so they need not keep their places: every step reads one set
+/// of orbits and writes the other, grouped by the xform each orbit drew, so that each xform
+/// works on a contiguous run and nothing is scattered back.
+#[derive(Clone, Debug)]
+pub struct Lanes {
+    sets: [Orbits; 2],
+    /// Which of `sets` holds the orbits as they stand.
+    cur: usize,
     started: bool,
     // Scratch space.
     choice: [u16; LANES],
     order: [u16; LANES],
+    /// Xform applied at each place of the set just written.
+    group: [u16; LANES],
     counts: Vec<usize>,
     bounds: Vec<usize>,
     bad: [bool; LANES],
-    g: Group,
+    /// Visibility of each place of the set just written; negative: not a sample.
+    vis: [f64; LANES],
+    g: Scratch,
     fin: Group,
     fin_vis: [f64; LANES],
     chosen: Vec<usize>,
+    tmp: Group,
 }
 
-/// Structure-of-arrays buffers for one group of points under one xform.
+/// Per-point scratch arrays of one xform application.
 #[derive(Clone, Debug)]
-struct Group {
-    x: [f64; LANES],
-    y: [f64; LANES],
-    z: [f64; LANES],
-    c: [f64; LANES],
+struct Scratch {
     sumsq: [f64; LANES],
     sqrt: [f64; LANES],
     atan_xy: [f64; LANES],
@@ -239,6 +274,15 @@ struct Group {
     bad: [bool; LANES],
 }
 
+/// Points as a structure of arrays, for the final xform.
+#[derive(Clone, Debug)]
+struct Group {
+    x: [f64; LANES],
+    y: [f64; LANES],
+    z: [f64; LANES],
+    c: [f64; LANES],
+}
+
 impl Group {
     fn new() -> Group {
         Group {
@@ -246,6 +290,13 @@ impl Group {
             y: [0.0; LANES],
             z: [0.0; LANES],
             c: [0.0; LANES],
+        }
+    }
+}
+
+impl Scratch {
+    fn new() -> Scratch {
+        Scratch {
             sumsq: [0.0; LANES],
             sqrt: [0.0; LANES],
             atan_xy: [0.0; LANES],
@@ -278,14 +329,15 @@ pub struct LaneState {
 impl Lanes {
     /// The orbits as they stand.
     pub fn state(&self) -> LaneState {
+        let o = &self.sets[self.cur];
         LaneState {
-            x: self.x.to_vec(),
-            y: self.y.to_vec(),
-            z: self.z.to_vec(),
-            c: self.c.to_vec(),
-            last: self.last.to_vec(),
-            consec: self.consec.to_vec(),
-            step: self.step.to_vec(),
+            x: o.x.to_vec(),
+            y: o.y.to_vec(),
+            z: o.z.to_vec(),
+            c: o.c.to_vec(),
+            last: o.last.to_vec(),
+            consec: o.consec.to_vec(),
+            step: o.step.to_vec(),
             started: self.started,
         }
     }
@@ -294,100 +346,118 @@ impl Lanes {
     /// entries each.
     pub fn restore(st: &LaneState) -> Option<Box<Lanes>> {
         let mut l = Lanes::new();
-        l.x = st.x.as_slice().try_into().ok()?;
-        l.y = st.y.as_slice().try_into().ok()?;
-        l.z = st.z.as_slice().try_into().ok()?;
-        l.c = st.c.as_slice().try_into().ok()?;
-        l.last = st.last.as_slice().try_into().ok()?;
-        l.consec = st.consec.as_slice().try_into().ok()?;
-        l.step = st.step.as_slice().try_into().ok()?;
+        let o = &mut l.sets[0];
+        o.x = st.x.as_slice().try_into().ok()?;
+        o.y = st.y.as_slice().try_into().ok()?;
+        o.z = st.z.as_slice().try_into().ok()?;
+        o.c = st.c.as_slice().try_into().ok()?;
+        o.last = st.last.as_slice().try_into().ok()?;
+        o.consec = st.consec.as_slice().try_into().ok()?;
+        o.step = st.step.as_slice().try_into().ok()?;
         l.started = st.started;
         Some(l)
     }
-}
 
-impl Lanes {
     pub fn new() -> Box<Lanes> {
         Box::new(Lanes {
-            x: [0.0; LANES],
-            y: [0.0; LANES],
-            z: [0.0; LANES],
-            c: [0.0; LANES],
-            last: [u16::MAX; LANES],
-            consec: [0; LANES],
-            step: [-(FUSE as i32); LANES],
+            sets: [Orbits::new(), Orbits::new()],
+            cur: 0,
             started: false,
             choice: [0; LANES],
             order: [0; LANES],
+            group: [0; LANES],
             counts: Vec::new(),
             bounds: Vec::new(),
             bad: [false; LANES],
-            g: Group::new(),
+            vis: [0.0; LANES],
+            g: Scratch::new(),
             fin: Group::new(),
             fin_vis: [0.0; LANES],
             chosen: Vec::with_capacity(LANES),
+            tmp: Group::new(),
         })
     }
 }
 
 impl CompiledXform {
-    /// Apply to the first `n` points of `g` (x, y, z, c in place; bad flags set; a bad point
-    /// is replaced by a random point of [−1, 1]²). The pre-affine points and their derived
-    /// quantities are computed as arrays, then every regular variation runs over the whole
-    /// group.
+    /// Apply to the points `x, y, z, c` (at most [`LANES`]; in place; `g.bad` flags set; a
+    /// bad point is replaced by a random point of [−1, 1]²). The pre-affine points and their
+    /// derived quantities are computed as arrays, then every regular variation runs over the
+    /// whole group.
     #[inline(always)]
-    fn apply_soa(&self, g: &mut Group, n: usize, rng: &mut FastRng) {
-        let n = n.min(LANES);
+    fn apply_soa(
+        &self,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        c: &mut [f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        let n = x.len().min(y.len()).min(z.len()).min(c.len()).min(LANES);
+        let (x, y, z, c) = (&mut x[..n], &mut y[..n], &mut z[..n], &mut c[..n]);
         let a = self.coefs;
         let (s, col) = (self.color_speed, self.color);
-        {
-            let c = &mut g.c[..n];
-            for cj in c.iter_mut() {
-                *cj = s * col + (1.0 - s) * *cj;
-            }
-            let (x, y) = (&mut g.x[..n], &mut g.y[..n]);
+        for cj in c.iter_mut() {
+            *cj = s * col + (1.0 - s) * *cj;
+        }
+        for j in 0..n {
+            let (tx, ty) = a.apply(x[j], y[j]);
+            x[j] = tx;
+            y[j] = ty;
+        }
+        if let Some(w) = self.linear_only {
+            // Only `linear`: the sum of the variations is w times the point (written as the
+            // general path computes it, 0 + w·v, so both give the same bits).
             for j in 0..n {
-                let (tx, ty) = a.apply(x[j], y[j]);
-                x[j] = tx;
-                y[j] = ty;
+                x[j] = 0.0 + w * x[j];
+                y[j] = 0.0 + w * y[j];
+                z[j] = 0.0 + w * z[j];
             }
+            if let Some(post) = &self.post {
+                for j in 0..n {
+                    (x[j], y[j]) = post.apply(x[j], y[j]);
+                }
+            }
+            self.mark_bad(x, y, z, &mut g.bad[..n], rng);
+            return;
         }
         if !self.pre_vars.is_empty() {
             for j in 0..n {
                 let mut acc = Acc {
-                    color: g.c[j],
+                    color: c[j],
                     ..Acc::default()
                 };
-                let mut tr = [g.x[j], g.y[j], g.z[j]];
+                let mut tr = [x[j], y[j], z[j]];
                 for v in &self.pre_vars {
-                    v.apply_pre(&mut tr, &mut acc, g.c[j], rng);
+                    v.apply_pre(&mut tr, &mut acc, c[j], rng);
                 }
-                (g.x[j], g.y[j], g.z[j]) = (tr[0], tr[1], tr[2]);
+                (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
                 g.pc[j] = acc.color;
             }
         } else {
-            g.pc[..n].copy_from_slice(&g.c[..n]);
+            g.pc[..n].copy_from_slice(c);
         }
         if !self.vars.is_empty() {
             let needs = self.needs;
-            let (x, y) = (&g.x[..n], &g.y[..n]);
+            let (xs, ys) = (&*x, &*y);
             let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
             if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
                 for j in 0..n {
-                    sumsq[j] = x[j] * x[j] + y[j] * y[j];
+                    sumsq[j] = xs[j] * xs[j] + ys[j] * ys[j];
                     sqrt[j] = sumsq[j].sqrt();
                 }
             }
             if needs & need::ATAN_XY != 0 {
                 let at = &mut g.atan_xy[..n];
                 for j in 0..n {
-                    at[j] = fastmath::atan2(x[j], y[j]);
+                    at[j] = fastmath::atan2(xs[j], ys[j]);
                 }
             }
             if needs & need::ATAN_YX != 0 {
                 let at = &mut g.atan_yx[..n];
                 for j in 0..n {
-                    at[j] = fastmath::atan2(y[j], x[j]);
+                    at[j] = fastmath::atan2(ys[j], xs[j]);
                 }
             }
             if needs & need::ANGLES != 0 {
@@ -398,21 +468,21 @@ impl CompiledXform {
                     } else {
                         sqrt[j]
                     };
-                    ux[j] = x[j] / r;
-                    uy[j] = y[j] / r;
+                    ux[j] = xs[j] / r;
+                    uy[j] = ys[j] / r;
                 }
             }
             let soa = SoaIn {
-                x,
-                y,
-                z: &g.z[..n],
+                x: xs,
+                y: ys,
+                z: &*z,
                 sumsq,
                 sqrt,
                 ux: &g.ux[..n],
                 uy: &g.uy[..n],
                 atan_xy: &g.atan_xy[..n],
                 atan_yx: &g.atan_yx[..n],
-                color: &g.c[..n],
+                color: &*c,
             };
             g.px[..n].fill(0.0);
             g.py[..n].fill(0.0);
@@ -427,9 +497,9 @@ impl CompiledXform {
                 v.apply_batch(&soa, &mut acc, rng);
             }
         } else if !self.pre_vars.is_empty() {
-            g.px[..n].copy_from_slice(&g.x[..n]);
-            g.py[..n].copy_from_slice(&g.y[..n]);
-            g.pz[..n].copy_from_slice(&g.z[..n]);
+            g.px[..n].copy_from_slice(x);
+            g.py[..n].copy_from_slice(y);
+            g.pz[..n].copy_from_slice(z);
         } else {
             g.px[..n].fill(0.0);
             g.py[..n].fill(0.0);
@@ -444,7 +514,7 @@ impl CompiledXform {
                     color: g.pc[j],
                 };
                 for v in &self.post_vars {
-                    v.apply_post(&mut acc, g.c[j], rng);
+                    v.apply_post(&mut acc, c[j], rng);
                 }
                 (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
             }
@@ -457,28 +527,39 @@ impl CompiledXform {
         }
         if self.sets_color {
             let dc = self.direct_color;
-            let (c, pc) = (&mut g.c[..n], &g.pc[..n]);
+            let pc = &g.pc[..n];
             for j in 0..n {
                 let v = c[j] + dc * (pc[j] - c[j]);
                 c[j] = if v.is_nan() { 0.0 } else { v };
             }
         }
-        let bad = &mut g.bad[..n];
-        let mut any_bad = false;
-        for j in 0..n {
-            // `!(a <= l)` is also true for NaN.
-            let b = !within(px[j], self.bad_limit) | !within(py[j], self.bad_limit);
-            bad[j] = b;
-            any_bad |= b;
-        }
-        let (x, y, z) = (&mut g.x[..n], &mut g.y[..n], &mut g.z[..n]);
         x.copy_from_slice(px);
         y.copy_from_slice(py);
         z.copy_from_slice(&g.pz[..n]);
+        self.mark_bad(x, y, z, &mut g.bad[..n], rng);
+    }
+
+    /// Flag the bad points of a group and restart them at a random point of the plane (a NaN
+    /// or infinite z must not carry over).
+    #[inline(always)]
+    fn mark_bad(
+        &self,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        bad: &mut [bool],
+        rng: &mut FastRng,
+    ) {
+        let n = bad.len().min(x.len()).min(y.len()).min(z.len());
+        let mut any_bad = false;
+        for j in 0..n {
+            let b = !within(x[j], self.bad_limit) | !within(y[j], self.bad_limit);
+            bad[j] = b;
+            any_bad |= b;
+        }
         if any_bad {
             for j in 0..n {
                 if bad[j] {
-                    // A fresh start in the plane: a NaN or infinite z must not carry over.
                     x[j] = rng.f11();
                     y[j] = rng.f11();
                     z[j] = 0.0;
@@ -749,7 +830,11 @@ impl Chaos {
     /// one [`Lanes`] for its whole render): every orbit starts at a random point, is fused for
     /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; only the
     /// orbit restarts every 10 000 samples are replaced by 256 long orbits per worker.
-    /// Returns the number of bad values.
+    ///
+    /// `plot(xs, ys, zs, cs, vis)` receives the points of a step (final xform and camera
+    /// applied) with their visibilities; an entry with a negative visibility is not a sample
+    /// (an orbit still in its fuse or retrying a bad value, or beyond the `n` asked for) and
+    /// must be skipped. Returns the number of bad values.
     pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
         &self,
         n: u64,
@@ -759,9 +844,10 @@ impl Chaos {
     ) -> u64 {
         let nx = self.xforms.len();
         if !ln.started {
+            let o = &mut ln.sets[ln.cur & 1];
             for l in 0..LANES {
                 let p = Self::start_point(rng);
-                (ln.x[l], ln.y[l], ln.z[l], ln.c[l]) = (p.x, p.y, p.z, p.c);
+                (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
             }
             ln.started = true;
         }
@@ -770,7 +856,10 @@ impl Chaos {
         let mut plotted = 0u64;
         let mut bad = 0u64;
         const M: usize = LANES - 1;
+        let direct = self.final_xform.is_none() && self.projection.is_none();
         while plotted < n {
+            let [s0, s1] = &mut ln.sets;
+            let (src, dst) = if ln.cur & 1 == 0 { (s0, s1) } else { (s1, s0) };
             // Draw every orbit's xform; group the orbits by xform (counting sort).
             // Four interleaved streams of counters and positions avoid store-to-load chains on
             // a single counter.
@@ -783,7 +872,7 @@ impl Chaos {
                     let mut u = rng.u64();
                     for r in 0..4 {
                         let l = 4 * q + r;
-                        let prev = ln.last[l];
+                        let prev = src.last[l];
                         let row = if prev == u16::MAX {
                             0
                         } else {
@@ -823,93 +912,125 @@ impl Chaos {
                 ln.order[ln.counts[k] & M] = l as u16;
                 ln.counts[k] += 1;
             }
+            // Gather the orbits into `dst` in group order.
+            for (p, &l) in ln.order.iter().enumerate() {
+                let l = l as usize & M;
+                dst.x[p] = src.x[l];
+                dst.y[p] = src.y[l];
+                dst.z[p] = src.z[l];
+                dst.c[p] = src.c[l];
+                dst.last[p] = src.last[l];
+                dst.consec[p] = src.consec[l];
+                dst.step[p] = src.step[l];
+            }
+            ln.cur ^= 1;
             for i in 0..nx {
-                let (start, end) = (ln.bounds[i], ln.bounds[i + 1]);
-                let m = end - start;
-                if m > 0 {
-                    let idx = &ln.order[start..end];
-                    let g = &mut ln.g;
-                    for (j, &l) in idx.iter().enumerate() {
-                        let (l, j) = (l as usize & M, j & M);
-                        g.x[j] = ln.x[l];
-                        g.y[j] = ln.y[l];
-                        g.z[j] = ln.z[l];
-                        g.c[j] = ln.c[l];
-                    }
-                    self.xforms[i].apply_soa(g, m, rng);
-                    for (j, &l) in idx.iter().enumerate() {
-                        let (l, j) = (l as usize & M, j & M);
-                        ln.x[l] = g.x[j];
-                        ln.y[l] = g.y[j];
-                        ln.z[l] = g.z[j];
-                        ln.c[l] = g.c[j];
-                        ln.bad[l] = g.bad[j];
-                    }
+                let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
+                if end > start {
+                    let r = start..end;
+                    self.xforms[i].apply_soa(
+                        &mut dst.x[r.clone()],
+                        &mut dst.y[r.clone()],
+                        &mut dst.z[r.clone()],
+                        &mut dst.c[r.clone()],
+                        &mut ln.g,
+                        rng,
+                    );
+                    ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
+                    ln.group[r].fill(i as u16);
                 }
             }
-            // Bad-value retries, step counting, and the points to plot.
+            // Bad-value retries, step counting, and which points are samples.
             let mut nf = 0usize;
-            for l in 0..LANES {
-                if ln.bad[l] {
-                    ln.consec[l] += 1;
+            for p in 0..LANES {
+                ln.vis[p] = -1.0;
+                if ln.bad[p] {
+                    dst.consec[p] += 1;
                     bad += 1;
-                    if ln.consec[l] < 5 {
+                    if dst.consec[p] < 5 {
                         continue;
                     }
                 }
-                ln.consec[l] = 0;
-                let ch = ln.choice[l];
-                ln.last[l] = ch;
-                if ln.step[l] >= 0 {
+                dst.consec[p] = 0;
+                let ch = ln.group[p];
+                dst.last[p] = ch;
+                if dst.step[p] >= 0 {
                     if plotted < n {
-                        let k = nf & M;
-                        ln.fin.x[k] = ln.x[l];
-                        ln.fin.y[k] = ln.y[l];
-                        ln.fin.z[k] = ln.z[l];
-                        ln.fin.c[k] = ln.c[l];
-                        ln.fin_vis[k] = self.xforms[ch as usize].vis;
-                        nf += 1;
+                        let v = self.xforms[ch as usize].vis;
                         plotted += 1;
+                        if direct {
+                            ln.vis[p] = v;
+                        } else {
+                            let k = nf & M;
+                            ln.fin.x[k] = dst.x[p];
+                            ln.fin.y[k] = dst.y[p];
+                            ln.fin.z[k] = dst.z[p];
+                            ln.fin.c[k] = dst.c[p];
+                            ln.fin_vis[k] = v;
+                            nf += 1;
+                        }
                     }
                 } else {
-                    ln.step[l] += 1;
+                    dst.step[p] += 1;
                 }
             }
+            if direct {
+                plot(&dst.x, &dst.y, &dst.z, &dst.c, &ln.vis);
+                continue;
+            }
+            let m = nf.min(LANES);
             if let Some(f) = &self.final_xform {
+                let fin = &mut ln.fin;
                 if f.opacity >= 1.0 {
-                    f.apply_soa(&mut ln.fin, nf, rng);
+                    f.apply_soa(
+                        &mut fin.x[..m],
+                        &mut fin.y[..m],
+                        &mut fin.z[..m],
+                        &mut fin.c[..m],
+                        &mut ln.g,
+                        rng,
+                    );
                 } else {
                     // Apply with probability = opacity: compact the chosen points, apply, put back.
                     ln.chosen.clear();
-                    for j in 0..nf {
+                    for j in 0..m {
                         if rng.f01() < f.opacity {
                             ln.chosen.push(j);
                         }
                     }
+                    let t = &mut ln.tmp;
                     for (k, &j) in ln.chosen.iter().enumerate() {
                         let (k, j) = (k & M, j & M);
-                        ln.g.x[k] = ln.fin.x[j];
-                        ln.g.y[k] = ln.fin.y[j];
-                        ln.g.z[k] = ln.fin.z[j];
-                        ln.g.c[k] = ln.fin.c[j];
+                        t.x[k] = fin.x[j];
+                        t.y[k] = fin.y[j];
+                        t.z[k] = fin.z[j];
+                        t.c[k] = fin.c[j];
                     }
-                    f.apply_soa(&mut ln.g, ln.chosen.len(), rng);
+                    let k = ln.chosen.len().min(LANES);
+                    f.apply_soa(
+                        &mut t.x[..k],
+                        &mut t.y[..k],
+                        &mut t.z[..k],
+                        &mut t.c[..k],
+                        &mut ln.g,
+                        rng,
+                    );
                     for (k, &j) in ln.chosen.iter().enumerate() {
                         let (k, j) = (k & M, j & M);
-                        ln.fin.x[j] = ln.g.x[k];
-                        ln.fin.y[j] = ln.g.y[k];
-                        ln.fin.z[j] = ln.g.z[k];
-                        ln.fin.c[j] = ln.g.c[k];
+                        fin.x[j] = t.x[k];
+                        fin.y[j] = t.y[k];
+                        fin.z[j] = t.z[k];
+                        fin.c[j] = t.c[k];
                     }
                 }
             }
             if let Some(pr) = &self.projection {
                 let fin = &mut ln.fin;
-                for j in 0..nf.min(LANES) {
+                for j in 0..m {
                     (fin.x[j], fin.y[j]) = pr.project(fin.x[j], fin.y[j], fin.z[j], rng);
                 }
             }
-            let (fin, m) = (&ln.fin, nf.min(LANES));
+            let fin = &ln.fin;
             plot(
                 &fin.x[..m],
                 &fin.y[..m],
@@ -1017,7 +1138,9 @@ mod tests {
                 if lanes {
                     ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, _zs, cs, vs| {
                         for j in 0..xs.len() {
-                            plot(xs[j], ys[j], cs[j], vs[j]);
+                            if vs[j] >= 0.0 {
+                                plot(xs[j], ys[j], cs[j], vs[j]);
+                            }
                         }
                     });
                 } else {
@@ -1076,10 +1199,43 @@ mod tests {
             "{q:?}"
         );
         // The same through the batched lanes.
-        let mut g = Group::new();
-        (g.x[0], g.y[0], g.z[0], g.c[0]) = (p.x, p.y, p.z, p.c);
-        ch.xforms[0].apply_soa(&mut g, 1, &mut rng);
-        assert!((g.x[0] - q.x).abs() < 1e-12 && (g.y[0] - q.y).abs() < 1e-12);
+        let (mut gx, mut gy, mut gz, mut gc) = ([p.x], [p.y], [p.z], [p.c]);
+        let mut s = Scratch::new();
+        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, &mut s, &mut rng);
+        assert!((gx[0] - q.x).abs() < 1e-12 && (gy[0] - q.y).abs() < 1e-12);
+    }
+
+    #[test]
+    fn linear_only_xforms_take_the_short_path_with_the_same_bits() {
+        let mut x = Xform::linear(Affine::new(0.5, -0.3, 0.2, 0.7, 0.1, -0.4), 1.0, 0.25);
+        x.vars[0].weight = 0.8;
+        x.post = Affine::new(0.9, 0.1, -0.2, 1.1, 0.05, 0.3);
+        x.color_speed = 0.4;
+        let f = Flame {
+            xforms: vec![x],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        assert_eq!(ch.xforms[0].linear_only, Some(0.8));
+        let mut rng = FastRng::new(5);
+        let pts: Vec<Pt> = (0..16).map(|_| Chaos::start_point(&mut rng)).collect();
+        let mut gx: Vec<f64> = pts.iter().map(|p| p.x).collect();
+        let mut gy: Vec<f64> = pts.iter().map(|p| p.y).collect();
+        let mut gz: Vec<f64> = pts.iter().map(|p| p.z + 0.5).collect();
+        let mut gc: Vec<f64> = pts.iter().map(|p| p.c).collect();
+        let mut s = Scratch::new();
+        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, &mut s, &mut rng);
+        for (j, p) in pts.iter().enumerate() {
+            let (q, bad) = ch.xforms[0].apply(Pt { z: p.z + 0.5, ..*p }, &mut rng);
+            assert!(!bad && !s.bad[j]);
+            assert_eq!((q.x, q.y, q.z, q.c), (gx[j], gy[j], gz[j], gc[j]));
+        }
+        // Any other variation, or a pre_/post_ form, takes the general path.
+        let mut f2 = f.clone();
+        f2.xforms[0]
+            .vars
+            .push(crate::flame::model::Var::new(variations::SPHERICAL, 0.1));
+        assert_eq!(Chaos::new(&f2).unwrap().xforms[0].linear_only, None);
     }
 
     #[test]
@@ -1241,8 +1397,8 @@ mod tests {
             2000,
             &mut rng,
             &mut ln,
-            |xs: &[f64], ys: &[f64], zs: &[f64], _, _| {
-                for k in 0..xs.len() {
+            |xs: &[f64], ys: &[f64], zs: &[f64], _, vs: &[f64]| {
+                for k in (0..xs.len()).filter(|&k| vs[k] >= 0.0) {
                     assert!(xs[k].is_finite() && ys[k].is_finite() && zs[k].is_finite());
                     seen += 1;
                 }

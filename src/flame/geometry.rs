@@ -119,11 +119,50 @@ impl Geometry {
         )
     }
 
+    /// The bucket map of the plotting loop (see [`BucketMap`]).
+    pub fn bucket_map(&self) -> BucketMap {
+        BucketMap {
+            m: self.bucket_from_world,
+            row0: self.row0 as f64,
+            bw: self.bw as f64,
+            bh: self.bh as f64,
+            stride: self.bw as u32,
+        }
+    }
+
     /// Bucket index of a world point, if it falls inside the bucket grid.
     #[inline(always)]
     pub fn bucket_of(&self, x: f64, y: f64) -> Option<usize> {
         let (i, inside) = self.bucket_index(x, y);
         inside.then_some(i)
+    }
+}
+
+/// As [`Geometry::bucket_index`], with float comparisons instead of saturating integer
+/// conversions and everything the loop needs by value (the same buckets; cheaper in the
+/// plotting loop). Grids hold fewer than 2³² buckets.
+#[derive(Clone, Copy, Debug)]
+pub struct BucketMap {
+    m: Affine,
+    row0: f64,
+    bw: f64,
+    bh: f64,
+    stride: u32,
+}
+
+impl BucketMap {
+    /// The bucket index (0 when outside) and whether the point falls inside the grid.
+    #[inline(always)]
+    pub fn index(&self, x: f64, y: f64) -> (u32, bool) {
+        let (bx, by) = self.m.apply(x, y);
+        // Exact: row0 is a whole number no larger than the grid, and a difference of a
+        // double and a smaller whole number below 2⁵² is representable.
+        let by = by - self.row0;
+        let inside = (bx >= 0.0) & (bx < self.bw) & (by >= 0.0) & (by < self.bh);
+        let (bx, by) = if inside { (bx, by) } else { (0.0, 0.0) };
+        // SAFETY: both values are in [0, 2³²): inside the grid, or 0.
+        let (ix, iy) = unsafe { (bx.to_int_unchecked::<u32>(), by.to_int_unchecked::<u32>()) };
+        (iy.wrapping_mul(self.stride).wrapping_add(ix), inside)
     }
 }
 

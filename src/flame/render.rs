@@ -840,14 +840,15 @@ fn iterate_into(
     rng: &mut FastRng,
 ) -> u64 {
     buf.clear();
+    let map = geom.bucket_map();
     let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs| {
         // Branch-free compaction of the visible points that land in the histogram.
         const L: usize = crate::flame::chaos::LANES;
         let mut tmp = [(0u32, 0f32, 0f32); L];
         let mut k = 0;
         for j in 0..xs.len().min(L) {
-            let (idx, inside) = geom.bucket_index(xs[j], ys[j]);
-            tmp[k & (L - 1)] = (idx as u32, cs[j] as f32, vs[j] as f32);
+            let (idx, inside) = map.index(xs[j], ys[j]);
+            tmp[k & (L - 1)] = (idx, cs[j] as f32, vs[j] as f32);
             k += (inside & (vs[j] > 0.0)) as usize;
         }
         buf.extend_from_slice(&tmp[..k.min(L)]);
