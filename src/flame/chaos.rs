@@ -506,7 +506,7 @@ impl CompiledXform {
             g.pz[..n].fill(0.0);
         }
         if !self.post_vars.is_empty() {
-            for j in 0..n {
+            for (j, &cj) in c.iter().enumerate() {
                 let mut acc = Acc {
                     x: g.px[j],
                     y: g.py[j],
@@ -514,7 +514,7 @@ impl CompiledXform {
                     color: g.pc[j],
                 };
                 for v in &self.post_vars {
-                    v.apply_post(&mut acc, c[j], rng);
+                    v.apply_post(&mut acc, cj, rng);
                 }
                 (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
             }
