@@ -241,6 +241,9 @@ pub struct Lanes {
     /// Which of `sets` holds the orbits as they stand.
     cur: usize,
     started: bool,
+    /// Every orbit is past its fuse and none is retrying a bad value, in both sets: a step
+    /// then needs neither the retry counters nor the step counters.
+    clean: bool,
     // Scratch space.
     choice: [u16; LANES],
     order: [u16; LANES],
@@ -363,6 +366,7 @@ impl Lanes {
             sets: [Orbits::new(), Orbits::new()],
             cur: 0,
             started: false,
+            clean: false,
             choice: [0; LANES],
             order: [0; LANES],
             group: [0; LANES],
@@ -649,6 +653,8 @@ pub struct Chaos {
     /// CHOOSE_GRAIN entries each, concatenated.
     tables: Vec<u16>,
     xaos: bool,
+    /// Plotted visibility of each xform.
+    vis: Vec<f64>,
 }
 
 /// Build the 16 384-entry selection table for weights `w` (flame.md §3.1).
@@ -740,6 +746,7 @@ impl Chaos {
             }
         }
         Ok(Chaos {
+            vis: xforms.iter().map(|x| x.vis).collect(),
             xforms,
             final_xform,
             projection: Projection::of(flame),
@@ -835,6 +842,7 @@ impl Chaos {
     /// applied) with their visibilities; an entry with a negative visibility is not a sample
     /// (an orbit still in its fuse or retrying a bad value, or beyond the `n` asked for) and
     /// must be skipped. Returns the number of bad values.
+    #[inline(always)]
     pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
         &self,
         n: u64,
@@ -919,9 +927,19 @@ impl Chaos {
                 dst.y[p] = src.y[l];
                 dst.z[p] = src.z[l];
                 dst.c[p] = src.c[l];
-                dst.last[p] = src.last[l];
-                dst.consec[p] = src.consec[l];
-                dst.step[p] = src.step[l];
+            }
+            if self.xaos {
+                for (p, &l) in ln.order.iter().enumerate() {
+                    dst.last[p] = src.last[l as usize & M];
+                }
+            }
+            if !ln.clean {
+                for (p, &l) in ln.order.iter().enumerate() {
+                    let l = l as usize & M;
+                    dst.consec[p] = src.consec[l];
+                    dst.step[p] = src.step[l];
+                    dst.last[p] = src.last[l];
+                }
             }
             ln.cur ^= 1;
             for i in 0..nx {
@@ -939,6 +957,16 @@ impl Chaos {
                     ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
                     ln.group[r].fill(i as u16);
                 }
+            }
+            // The common step: no bad value, every orbit a sample.
+            if ln.clean && direct && !ln.bad.iter().any(|&b| b) && plotted + LANES as u64 <= n {
+                dst.last = ln.group;
+                for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
+                    *v = self.vis[g as usize % nx];
+                }
+                plotted += LANES as u64;
+                plot(&dst.x, &dst.y, &dst.z, &dst.c, &ln.vis);
+                continue;
             }
             // Bad-value retries, step counting, and which points are samples.
             let mut nf = 0usize;
@@ -973,6 +1001,14 @@ impl Chaos {
                 } else {
                     dst.step[p] += 1;
                 }
+            }
+            if !ln.clean && dst.consec.iter().all(|&c| c == 0) && dst.step.iter().all(|&s| s >= 0) {
+                // From now on the counters are not gathered: both sets must read as clean.
+                ln.clean = true;
+                src.consec = [0; LANES];
+                src.step = [0; LANES];
+            } else if ln.clean && dst.consec.iter().any(|&c| c != 0) {
+                ln.clean = false;
             }
             if direct {
                 plot(&dst.x, &dst.y, &dst.z, &dst.c, &ln.vis);

@@ -124,8 +124,9 @@ impl Geometry {
         BucketMap {
             m: self.bucket_from_world,
             row0: self.row0 as f64,
-            bw: self.bw as f64,
-            bh: self.bh as f64,
+            // Grids are far narrower than 2³¹ buckets; a wider one would only lose points.
+            bw: self.bw.min(i32::MAX as usize) as f64,
+            bh: self.bh.min(i32::MAX as usize) as f64,
             stride: self.bw as u32,
         }
     }
@@ -140,7 +141,7 @@ impl Geometry {
 
 /// As [`Geometry::bucket_index`], with float comparisons instead of saturating integer
 /// conversions and everything the loop needs by value (the same buckets; cheaper in the
-/// plotting loop). Grids hold fewer than 2³² buckets.
+/// plotting loop). Grids hold fewer than 2³² buckets, and rows and columns fewer than 2³¹.
 #[derive(Clone, Copy, Debug)]
 pub struct BucketMap {
     m: Affine,
@@ -160,9 +161,14 @@ impl BucketMap {
         let by = by - self.row0;
         let inside = (bx >= 0.0) & (bx < self.bw) & (by >= 0.0) & (by < self.bh);
         let (bx, by) = if inside { (bx, by) } else { (0.0, 0.0) };
-        // SAFETY: both values are in [0, 2³²): inside the grid, or 0.
-        let (ix, iy) = unsafe { (bx.to_int_unchecked::<u32>(), by.to_int_unchecked::<u32>()) };
-        (iy.wrapping_mul(self.stride).wrapping_add(ix), inside)
+        // SAFETY: both values are in [0, 2³¹): inside the grid, or 0.
+        let (ix, iy) = unsafe { (bx.to_int_unchecked::<i32>(), by.to_int_unchecked::<i32>()) };
+        (
+            (iy as u32)
+                .wrapping_mul(self.stride)
+                .wrapping_add(ix as u32),
+            inside,
+        )
     }
 }
 
