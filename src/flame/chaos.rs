@@ -653,8 +653,9 @@ pub struct Chaos {
     /// CHOOSE_GRAIN entries each, concatenated.
     tables: Vec<u16>,
     xaos: bool,
-    /// Plotted visibility of each xform.
+    /// Plotted visibility of each xform, and the one of all of them when they agree.
     vis: Vec<f64>,
+    same_vis: Option<f64>,
 }
 
 /// Build the 16 384-entry selection table for weights `w` (flame.md §3.1).
@@ -745,8 +746,10 @@ impl Chaos {
                 x.bad_limit = BAD_LIMIT_WIDE;
             }
         }
+        let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();
         Ok(Chaos {
-            vis: xforms.iter().map(|x| x.vis).collect(),
+            same_vis: vis.iter().all(|&v| v == vis[0]).then_some(vis[0]),
+            vis,
             xforms,
             final_xform,
             projection: Projection::of(flame),
@@ -961,8 +964,13 @@ impl Chaos {
             // The common step: no bad value, every orbit a sample.
             if ln.clean && direct && !ln.bad.iter().any(|&b| b) && plotted + LANES as u64 <= n {
                 dst.last = ln.group;
-                for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
-                    *v = self.vis[g as usize % nx];
+                match self.same_vis {
+                    Some(v) => ln.vis = [v; LANES],
+                    None => {
+                        for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
+                            *v = self.vis.get(g as usize).copied().unwrap_or(0.0);
+                        }
+                    }
                 }
                 plotted += LANES as u64;
                 plot(&dst.x, &dst.y, &dst.z, &dst.c, &ln.vis);
