@@ -46,7 +46,9 @@ impl UgnisApp {
             Pending::BrowseOpen => self.browse(Purpose::Open),
             Pending::Flames(flames, name) => {
                 self.flame.replace_file(flames, None, name.clone());
-                self.flame.notices.status(format!("Opened '{name}' from Explore"));
+                self.flame
+                    .notices
+                    .status(format!("Opened '{name}' from Explore"));
                 self.tab = Tab::Flame;
             }
         }

@@ -263,11 +263,7 @@ impl UgnisApp {
                 ("Export", "Export image… (Ctrl+E)", Action::Export),
             ],
             Tab::Explore => &[
-                (
-                    "New",
-                    "This topic back to its start (Ctrl+N)",
-                    Action::New,
-                ),
+                ("New", "This topic back to its start (Ctrl+N)", Action::New),
                 (
                     "Open",
                     "Open a Fractint L-system file (.l) (Ctrl+O)",

@@ -118,7 +118,10 @@ impl ChaosView {
                     chosen = Some(0);
                 }
                 for (i, p) in self.presets.iter().enumerate() {
-                    if ui.selectable_label(self.choice == i + 1, p.name.as_str()).clicked() {
+                    if ui
+                        .selectable_label(self.choice == i + 1, p.name.as_str())
+                        .clicked()
+                    {
                         chosen = Some(i + 1);
                     }
                 }
@@ -164,7 +167,11 @@ impl ChaosView {
             if ui.button(label).clicked() {
                 self.paused = !self.paused;
             }
-            if ui.button("Reset").on_hover_text("start again from no points").clicked() {
+            if ui
+                .button("Reset")
+                .on_hover_text("start again from no points")
+                .clicked()
+            {
                 self.reset();
             }
             if ui
@@ -203,8 +210,19 @@ impl ChaosView {
         req
     }
 
-    /// Add this frame's points.
-    fn advance(&mut self, size: [u32; 2]) {
+    /// Add this frame's points (before the numbers are shown, so they are this frame's).
+    pub(super) fn tick(&mut self) {
+        if self.running()
+            && let Some((d, f)) = &mut self.density
+        {
+            let n = (self.speed as u64).min((self.limit as u64).saturating_sub(self.plotted));
+            self.game.run(n, |p, _| d.plot(f.pixel_from_world(p)));
+            self.plotted += n;
+        }
+    }
+
+    /// A picture of the canvas size (a new size starts the game again).
+    fn fit(&mut self, size: [u32; 2]) {
         let fresh = !matches!(&self.density, Some((d, _)) if [d.width, d.height] == size);
         if fresh {
             // A new size starts the picture again.
@@ -224,28 +242,16 @@ impl ChaosView {
             let margin = 12.0 + 0.04 * size[0].min(size[1]) as f64;
             self.density = Some((d, Framing::fit(bounds, size[0], size[1], margin)));
         }
-        if self.running()
-            && let Some((d, f)) = &mut self.density
-        {
-            let n = (self.speed as u64).min((self.limit as u64).saturating_sub(self.plotted));
-            self.game.run(n, |p, _| d.plot(f.pixel_from_world(p)));
-            self.plotted += n;
-        }
     }
 
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         let (rect, _resp, ppp, size, painter) = super::dark_canvas(ui);
-        let before = self.plotted;
-        self.advance(size);
+        self.fit(size);
         let Some((d, f)) = &self.density else {
             return;
         };
         let key = super::key_of((self.plotted, size, self.choice, self.seed));
-        let moved = before != self.plotted;
-        if moved {
-            self.picture.invalidate();
-        }
         self.picture.update(&ctx, "explore-chaos", key, || {
             Some(super::density_image(&d.counts, d.width, d.height, INK))
         });

@@ -161,8 +161,11 @@ impl ClassicView {
         let m = menger::numbers(self.menger_step);
         ui.horizontal(|ui| {
             ui.label("Step");
-            ui.add(egui::Slider::new(&mut self.menger_step, 0..=menger::MAX_STEP))
-                .on_hover_text(format!("0 to {}", menger::MAX_STEP));
+            ui.add(egui::Slider::new(
+                &mut self.menger_step,
+                0..=menger::MAX_STEP,
+            ))
+            .on_hover_text(format!("0 to {}", menger::MAX_STEP));
         });
         ui.label(format!(
             "{} cubes of side {:.5}, volume {:.5}, dimension log 20 / log 3 = {:.5}",
@@ -194,7 +197,11 @@ impl ClassicView {
 
 /// The picture of step `n` in `size` pixels. The Cantor set shows every step from 0 to n
 /// stacked, as it is usually drawn.
-fn draw(c: Construction, n: u32, size: [u32; 2]) -> Result<image::RgbImage, crate::explore::ExploreError> {
+fn draw(
+    c: Construction,
+    n: u32,
+    size: [u32; 2],
+) -> Result<image::RgbImage, crate::explore::ExploreError> {
     let [w, h] = size;
     let mut canvas = Canvas::new(w, h, BACKGROUND)?;
     let margin = 16.0 + 0.04 * w.min(h) as f64;
@@ -310,7 +317,11 @@ fn fill_triangle(img: &mut image::RgbImage, t: [P2; 3]) {
         for y in (min(ys).ceil() as i64).max(0)..=(max(ys).floor() as i64).min(h - 1) {
             for x in (min(xs).ceil() as i64).max(0)..=(max(xs).floor() as i64).min(w - 1) {
                 let p = [x as f64, y as f64];
-                let (a, b, c) = (edge(t[0], t[1], p), edge(t[1], t[2], p), edge(t[2], t[0], p));
+                let (a, b, c) = (
+                    edge(t[0], t[1], p),
+                    edge(t[1], t[2], p),
+                    edge(t[2], t[0], p),
+                );
                 let inside = if area > 0.0 {
                     a >= 0.0 && b >= 0.0 && c >= 0.0
                 } else {

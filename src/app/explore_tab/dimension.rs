@@ -270,7 +270,11 @@ impl DimensionView {
             {
                 self.start(Some(flame));
             }
-            if ui.button("Image…").on_hover_text("box-count a picture file").clicked() {
+            if ui
+                .button("Image…")
+                .on_hover_text("box-count a picture file")
+                .clicked()
+            {
                 req = Some(ExploreRequest::BoxCountImage);
             }
             if self.busy() {
@@ -297,20 +301,26 @@ impl DimensionView {
             }
             if let Some((levels, fit)) = &r.voss {
                 section(ui, "Lacunarity (Voss)");
-                egui::Grid::new("explore-voss").num_columns(3).striped(true).show(ui, |ui| {
-                    ui.strong("box Γ");
-                    ui.strong("N(Γ)");
-                    ui.strong("Λ(Γ)");
-                    ui.end_row();
-                    for l in levels {
-                        ui.label(format!("{:.4}", l.gamma));
-                        ui.label(format!("{:.4}", l.n));
-                        ui.label(format!("{:.4}", l.lacunarity));
+                egui::Grid::new("explore-voss")
+                    .num_columns(3)
+                    .striped(true)
+                    .show(ui, |ui| {
+                        ui.strong("box Γ");
+                        ui.strong("N(Γ)");
+                        ui.strong("Λ(Γ)");
                         ui.end_row();
-                    }
-                });
+                        for l in levels {
+                            ui.label(format!("{:.4}", l.gamma));
+                            ui.label(format!("{:.4}", l.n));
+                            ui.label(format!("{:.4}", l.lacunarity));
+                            ui.end_row();
+                        }
+                    });
                 if let Some(f) = fit {
-                    ui.label(format!("Voss dimension (slope of −ln N against ln Γ): {:.4}", f.slope));
+                    ui.label(format!(
+                        "Voss dimension (slope of −ln N against ln Γ): {:.4}",
+                        f.slope
+                    ));
                 }
                 ui.add(
                     egui::Label::new(
@@ -361,7 +371,12 @@ impl DimensionView {
                     .count
                     .levels
                     .iter()
-                    .map(|l| ((l.ln_inv_size(), l.ln_count()), l.k >= lo && l.k <= hi && lo > 0))
+                    .map(|l| {
+                        (
+                            (l.ln_inv_size(), l.ln_count()),
+                            l.k >= lo && l.k <= hi && lo > 0,
+                        )
+                    })
                     .collect();
                 let note = match (r.count.fit, r.count.fit_range) {
                     (Some(f), Some((lo, hi))) => format!(
@@ -415,8 +430,14 @@ pub fn parse_ratios(text: &str) -> Result<Vec<f64>, String> {
         let t = t.trim();
         let v = match t.split_once('/') {
             Some((a, b)) => {
-                let a: f64 = a.trim().parse().map_err(|_| format!("'{t}' is not a number"))?;
-                let b: f64 = b.trim().parse().map_err(|_| format!("'{t}' is not a number"))?;
+                let a: f64 = a
+                    .trim()
+                    .parse()
+                    .map_err(|_| format!("'{t}' is not a number"))?;
+                let b: f64 = b
+                    .trim()
+                    .parse()
+                    .map_err(|_| format!("'{t}' is not a number"))?;
                 a / b
             }
             None => t.parse().map_err(|_| format!("'{t}' is not a number"))?,
@@ -435,7 +456,10 @@ pub fn parse_ratios(text: &str) -> Result<Vec<f64>, String> {
         .replace("* ", "*")
         .replace(" *", "*");
     let mut out = Vec::new();
-    for item in norm.split([',', ';', ' ', '\n', '\t']).filter(|s| !s.trim().is_empty()) {
+    for item in norm
+        .split([',', ';', ' ', '\n', '\t'])
+        .filter(|s| !s.trim().is_empty())
+    {
         let (k, r) = match item.split_once('*') {
             Some((k, r)) => {
                 let k: usize = k
@@ -468,6 +492,10 @@ mod tests {
         assert_eq!(parse_ratios("2×0.5").unwrap(), vec![0.5, 0.5]);
         assert!(parse_ratios("abc").unwrap_err().contains("'abc'"));
         assert!(parse_ratios("").is_err());
-        assert!(parse_ratios("1000000 * 0.5").unwrap_err().contains("more than"));
+        assert!(
+            parse_ratios("1000000 * 0.5")
+                .unwrap_err()
+                .contains("more than")
+        );
     }
 }

@@ -137,21 +137,25 @@ impl FifView {
         section(ui, "Vertical scalings");
         let n = self.fif.scalings().len();
         let mut change = None;
-        egui::Grid::new("explore-fif-d").num_columns(2).show(ui, |ui| {
-            for i in 1..=n {
-                let mut d = self.fif.scalings()[i - 1];
-                let l = ui.label(format!("d{i}"));
-                if ui
-                    .add(egui::Slider::new(&mut d, -MAX_D..=MAX_D).max_decimals(3))
-                    .labelled_by(l.id)
-                    .on_hover_text(format!("vertical scaling of interval {i}: −{MAX_D} to {MAX_D}"))
-                    .changed()
-                {
-                    change = Some((i, d));
+        egui::Grid::new("explore-fif-d")
+            .num_columns(2)
+            .show(ui, |ui| {
+                for i in 1..=n {
+                    let mut d = self.fif.scalings()[i - 1];
+                    let l = ui.label(format!("d{i}"));
+                    if ui
+                        .add(egui::Slider::new(&mut d, -MAX_D..=MAX_D).max_decimals(3))
+                        .labelled_by(l.id)
+                        .on_hover_text(format!(
+                            "vertical scaling of interval {i}: −{MAX_D} to {MAX_D}"
+                        ))
+                        .changed()
+                    {
+                        change = Some((i, d));
+                    }
+                    ui.end_row();
                 }
-                ui.end_row();
-            }
-        });
+            });
         if let Some((i, d)) = change {
             self.set_scaling(i, d);
         }
@@ -191,7 +195,10 @@ impl FifView {
         };
         // The axis y = 0.
         painter.line_segment(
-            [sf.to_screen([WORLD.min[0], 0.0]), sf.to_screen([WORLD.max[0], 0.0])],
+            [
+                sf.to_screen([WORLD.min[0], 0.0]),
+                sf.to_screen([WORLD.max[0], 0.0]),
+            ],
             Stroke::new(1.0, Color32::from_gray(60)),
         );
         // Interaction: drag a point, click to add, right-click to remove.
@@ -217,9 +224,7 @@ impl FifView {
             // Points keep their order along x: a refused move leaves the point where it was.
             match self.fif.set_point(i, w) {
                 Ok(()) => self.problem = None,
-                Err(_) => {
-                    self.problem = Some("Points keep their order from left to right".into())
-                }
+                Err(_) => self.problem = Some("Points keep their order from left to right".into()),
             }
         }
         if resp.drag_stopped() {
@@ -239,7 +244,9 @@ impl FifView {
         }
         // The curve, as deep as the point budget allows.
         let n = self.fif.maps().len().max(2) as f64;
-        let depth = ((CURVE_POINTS.ln() / n.ln()).floor() as u32).saturating_sub(1).min(30);
+        let depth = ((CURVE_POINTS.ln() / n.ln()).floor() as u32)
+            .saturating_sub(1)
+            .min(30);
         if let Ok(curve) = self.fif.curve(depth) {
             let pts: Vec<egui::Pos2> = curve.iter().map(|p| sf.to_screen(*p)).collect();
             painter.add(egui::Shape::line(

@@ -149,18 +149,23 @@ impl JuliaView {
         self.points = self.points.round();
         super::problem_label(ui, &self.problem);
         section(ui, "Numbers");
-        ui.label(format!("c = {:.4} {:+.4}i, |c| = {:.4}", self.c[0], self.c[1], (self.c[0].powi(2) + self.c[1].powi(2)).sqrt()));
+        ui.label(format!(
+            "c = {:.4} {:+.4}i, |c| = {:.4}",
+            self.c[0],
+            self.c[1],
+            (self.c[0].powi(2) + self.c[1].powi(2)).sqrt()
+        ));
         ui.label(if self.connected() {
             "c is in the Mandelbrot set: J_c is connected"
         } else {
             "c is outside the Mandelbrot set: J_c is dust"
         });
-        ui.label(format!("Pixels hit by {} preimages: {}", self.points, self.covered));
+        ui.label(format!(
+            "Pixels hit by {} preimages: {}",
+            self.points, self.covered
+        ));
         ui.add(
-            egui::Label::new(
-                egui::RichText::new("Drag either picture to move c.").weak(),
-            )
-            .wrap(),
+            egui::Label::new(egui::RichText::new("Drag either picture to move c.").weak()).wrap(),
         );
         None
     }
@@ -174,13 +179,19 @@ impl JuliaView {
             let w = rect.width() / 2.0;
             (
                 Rect::from_min_size(rect.min, Vec2::new(w - 4.0, rect.height())),
-                Rect::from_min_size(rect.min + Vec2::new(w + 4.0, 0.0), Vec2::new(w - 4.0, rect.height())),
+                Rect::from_min_size(
+                    rect.min + Vec2::new(w + 4.0, 0.0),
+                    Vec2::new(w - 4.0, rect.height()),
+                ),
             )
         } else {
             let h = rect.height() / 2.0;
             (
                 Rect::from_min_size(rect.min, Vec2::new(rect.width(), h - 4.0)),
-                Rect::from_min_size(rect.min + Vec2::new(0.0, h + 4.0), Vec2::new(rect.width(), h - 4.0)),
+                Rect::from_min_size(
+                    rect.min + Vec2::new(0.0, h + 4.0),
+                    Vec2::new(rect.width(), h - 4.0),
+                ),
             )
         };
         let px = |r: Rect| {
@@ -195,7 +206,11 @@ impl JuliaView {
         };
         let (sa, sb) = (px(a), px(b));
         let fa = Framing::fit(bounds, sa[0], sa[1], 4.0);
-        let sf = ScreenFraming { f: fa, rect: a, ppp };
+        let sf = ScreenFraming {
+            f: fa,
+            rect: a,
+            ppp,
+        };
         if resp.dragged() {
             let d = resp.drag_delta();
             let k = sf.world_per_point();

@@ -120,24 +120,26 @@ impl LorenzView {
              to turn it.",
         );
         section(ui, "Parameters");
-        egui::Grid::new("explore-lorenz").num_columns(2).show(ui, |ui| {
-            for (label, v, max, what) in [
-                ("σ", &mut self.sigma, 50.0, "σ (sigma)"),
-                ("r", &mut self.r, 200.0, "r"),
-                ("b", &mut self.b, 20.0, "b"),
-            ] {
-                let l = ui.label(label);
-                ui.add(egui::Slider::new(v, 0.01..=max).max_decimals(4))
+        egui::Grid::new("explore-lorenz")
+            .num_columns(2)
+            .show(ui, |ui| {
+                for (label, v, max, what) in [
+                    ("σ", &mut self.sigma, 50.0, "σ (sigma)"),
+                    ("r", &mut self.r, 200.0, "r"),
+                    ("b", &mut self.b, 20.0, "b"),
+                ] {
+                    let l = ui.label(label);
+                    ui.add(egui::Slider::new(v, 0.01..=max).max_decimals(4))
+                        .labelled_by(l.id)
+                        .on_hover_text(format!("{what}: 0.01 to {max}"));
+                    ui.end_row();
+                }
+                let l = ui.label("time t");
+                ui.add(egui::Slider::new(&mut self.time, 0.0..=MAX_TIME).max_decimals(2))
                     .labelled_by(l.id)
-                    .on_hover_text(format!("{what}: 0.01 to {max}"));
+                    .on_hover_text(format!("0 to {MAX_TIME}"));
                 ui.end_row();
-            }
-            let l = ui.label("time t");
-            ui.add(egui::Slider::new(&mut self.time, 0.0..=MAX_TIME).max_decimals(2))
-                .labelled_by(l.id)
-                .on_hover_text(format!("0 to {MAX_TIME}"));
-            ui.end_row();
-        });
+            });
         ui.horizontal(|ui| {
             let label = if self.playing { "Pause" } else { "Play" };
             if ui.button(label).on_hover_text("let time run").clicked() {
@@ -163,7 +165,8 @@ impl LorenzView {
             None => ui.label("Still less than 1 apart"),
         };
         // log10 of the distance over time.
-        let (rect, _) = ui.allocate_exact_size(Vec2::new(ui.available_width(), 90.0), egui::Sense::hover());
+        let (rect, _) =
+            ui.allocate_exact_size(Vec2::new(ui.available_width(), 90.0), egui::Sense::hover());
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 2.0, Color32::from_gray(20));
         if self.log_distance.len() > 1 {
@@ -203,7 +206,10 @@ impl LorenzView {
                 ));
             }
         }
-        ui.label(format!("Steps: {} of h = {H}", self.orbit_a.len().saturating_sub(1)));
+        ui.label(format!(
+            "Steps: {} of h = {H}",
+            self.orbit_a.len().saturating_sub(1)
+        ));
         None
     }
 

@@ -202,10 +202,9 @@ impl LSystemView {
 
     pub fn status_text(&self) -> String {
         match (self.system(), &self.counts) {
-            (Some(s), Some(c)) => format!(
-                "{} order {}: {} segments",
-                s.name, self.order, c.segments
-            ),
+            (Some(s), Some(c)) => {
+                format!("{} order {}: {} segments", s.name, self.order, c.segments)
+            }
             _ => "L-systems".into(),
         }
     }
@@ -248,7 +247,9 @@ impl LSystemView {
             if svg {
                 io::svg::save_lsystem(&path, &c, order, w, h, Some(BACKGROUND))?;
             } else {
-                let img = c.render(order, w, h, BACKGROUND).map_err(|e| e.to_string())?;
+                let img = c
+                    .render(order, w, h, BACKGROUND)
+                    .map_err(|e| e.to_string())?;
                 io::png::save(
                     &path,
                     &image::DynamicImage::ImageRgb8(img),
@@ -285,7 +286,7 @@ impl LSystemView {
                 for (i, p) in self.presets.iter().enumerate() {
                     if ui
                         .selectable_label(false, p.system.name.as_str())
-                        .on_hover_text(p.note)
+                        .on_hover_text(plain(p.note))
                         .clicked()
                     {
                         chosen = Some(i);
@@ -449,6 +450,11 @@ impl LSystemView {
             );
         }
     }
+}
+
+/// Superscripts written out (the interface font has no superscript n or minus).
+fn plain(s: &str) -> String {
+    s.replace("⁻ⁿ", "^-n").replace('ⁿ', "^n").replace('⁻', "^-")
 }
 
 /// "Line 3, column 7: message" for the editor.

@@ -135,7 +135,8 @@ impl ExploreTab {
             Topic::Lorenz => self.lorenz = lorenz::LorenzView::default(),
             Topic::Dimension => self.dimension.reset(),
         }
-        self.notices.status(format!("{}: back to the start", self.topic.name()));
+        self.notices
+            .status(format!("{}: back to the start", self.topic.name()));
     }
 
     /// The line at the left of the status bar.
@@ -159,6 +160,9 @@ impl ExploreTab {
             self.notices.push(n);
         }
         self.julia.poll(ui.ctx());
+        if self.topic == Topic::ChaosGame {
+            self.chaos.tick();
+        }
         let width = ui.available_width();
         egui::Panel::left("explore-topics")
             .default_size(190.0f32.min(width * 0.2))
@@ -231,7 +235,9 @@ pub(crate) fn section(ui: &mut egui::Ui, title: &str) {
 /// A problem with what was typed, in red.
 pub(crate) fn problem_label(ui: &mut egui::Ui, problem: &Option<String>) {
     if let Some(p) = problem {
-        ui.add(egui::Label::new(egui::RichText::new(p).color(Color32::from_rgb(255, 120, 100))).wrap());
+        ui.add(
+            egui::Label::new(egui::RichText::new(p).color(Color32::from_rgb(255, 120, 100))).wrap(),
+        );
     }
 }
 
@@ -266,7 +272,11 @@ pub(crate) fn checked_drag(
         }
         Err(e) => {
             *problem = Some(e.to_string());
-            let back = if v.is_finite() { v.clamp(min, max) } else { *value };
+            let back = if v.is_finite() {
+                v.clamp(min, max)
+            } else {
+                *value
+            };
             let changed = back != *value;
             *value = back;
             changed
@@ -315,10 +325,8 @@ impl Picture {
 
     /// Show `img` now.
     pub fn set(&mut self, ctx: &egui::Context, name: &str, img: &image::RgbImage) {
-        let ci = egui::ColorImage::from_rgb(
-            [img.width() as usize, img.height() as usize],
-            img.as_raw(),
-        );
+        let ci =
+            egui::ColorImage::from_rgb([img.width() as usize, img.height() as usize], img.as_raw());
         match &mut self.texture {
             Some(t) => t.set(ci, egui::TextureOptions::LINEAR),
             None => self.texture = Some(ctx.load_texture(name, ci, egui::TextureOptions::LINEAR)),
@@ -354,11 +362,6 @@ impl ScreenFraming {
     pub fn to_screen(&self, p: P2) -> Pos2 {
         let q = self.f.pixel_from_world(p);
         self.rect.min + Vec2::new(q[0] as f32, q[1] as f32) / self.ppp
-    }
-
-    pub fn to_world(&self, s: Pos2) -> P2 {
-        let d = (s - self.rect.min) * self.ppp;
-        self.f.world_from_pixel([d.x as f64, d.y as f64])
     }
 
     /// World units per screen point.
@@ -520,12 +523,7 @@ impl Plot<'_> {
             text,
         );
         if let Some((m, b)) = self.line {
-            let fx: Vec<f64> = self
-                .points
-                .iter()
-                .filter(|p| p.1)
-                .map(|p| p.0.0)
-                .collect();
+            let fx: Vec<f64> = self.points.iter().filter(|p| p.1).map(|p| p.0.0).collect();
             let lo = fx.iter().copied().fold(f64::MAX, f64::min);
             let hi = fx.iter().copied().fold(f64::MIN, f64::max);
             if lo < hi {
