@@ -1450,3 +1450,59 @@ fn explore_fif_dimension_follows_the_vertical_scalings() {
             .is_some()
     );
 }
+
+#[test]
+fn explore_lsystem_file_entries_are_all_selectable() {
+    let mut h = explore_tab();
+    explore_topic(&mut h, "L-systems");
+    let path = example("sierpinski.flame").with_file_name("two.l");
+    std::fs::write(
+        &path,
+        "Koch {\r\n  Angle 6\r\n  Axiom F\r\n  F=F+F--F+F\r\n}\r\n\
+         Square { ; quadratic Koch island\r\n  Angle 4\r\n  Axiom F+F+F+F\r\n  F=F+F-F-FF+F+F-F\r\n}\r\n",
+    )
+    .unwrap();
+    let n = h.state_mut().explore.lsystem.open(&path);
+    assert!(format!("{n:?}").contains("2 entries"), "{n:?}");
+    h.state_mut().explore.lsystem.order = 1;
+    h.run_steps(3);
+    assert_eq!(h.state().explore.lsystem.entries.len(), 2);
+    assert!(h.query_by_label("Segments: 4").is_some());
+    h.state_mut().explore.lsystem.choose_entry(1);
+    h.run_steps(3);
+    assert_eq!(h.state().explore.lsystem.system().unwrap().name, "Square");
+    // Four sides of eight segments each.
+    assert!(h.query_by_label("Segments: 32").is_some());
+    assert_eq!(h.state().explore.lsystem.drawn, 32);
+}
+
+#[test]
+fn explore_menger_sponge_opens_in_the_scene_tab() {
+    let mut h = explore_tab();
+    h.get_by_label("Open in Scene tab").click();
+    h.run_steps(3);
+    assert_eq!(h.state().tab, ugnis::app::Tab::Scene);
+    assert_eq!(h.state().scene.scene.objects.len(), 1);
+    assert!(h.state().status().contains("Menger sponge, step 2"));
+}
+
+#[test]
+fn explore_a_typed_number_out_of_range_is_refused_with_its_limits() {
+    let mut h = explore_tab();
+    explore_topic(&mut h, "Julia by inverse iteration");
+    h.get_by_label("c real part").click();
+    h.run_steps(1);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    h.get_by_label("c real part").type_text("5");
+    h.key_press(Key::Enter);
+    h.run_steps(3);
+    assert_eq!(
+        h.state().explore.julia.c[0],
+        2.0,
+        "brought back to the limit"
+    );
+    assert!(
+        h.query_by_label("Re c is 5; it must be between -2 and 2")
+            .is_some()
+    );
+}

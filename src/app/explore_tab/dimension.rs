@@ -380,8 +380,8 @@ impl DimensionView {
                     .collect();
                 let note = match (r.count.fit, r.count.fit_range) {
                     (Some(f), Some((lo, hi))) => format!(
-                        "{}: D ≈ {:.4}, fitted on levels {lo}–{hi} (filled dots)",
-                        r.source, f.slope
+                        "D ≈ {:.4}, fitted on levels {lo}–{hi} (filled dots)",
+                        f.slope
                     ),
                     _ => format!("{}: no fit", r.source),
                 };

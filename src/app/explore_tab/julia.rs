@@ -92,8 +92,8 @@ impl JuliaView {
              at random again and again pulls any start onto the Julia set, because the set \
              repels under z² + c and so attracts under its inverse. It is quick, but the two \
              roots are not equally good: points crowd where the inverse map shrinks most and \
-             hardly reach the thin tips and deep fjords, which the escape-time picture on the \
-             right shows in full.",
+             hardly reach the thin tips and deep fjords, which the escape-time picture beside it \
+             shows in full.",
         );
         section(ui, "Parameter c");
         ui.horizontal(|ui| {

@@ -147,6 +147,13 @@ impl LSystemView {
         }
     }
 
+    /// Draw entry `i` of the text.
+    pub fn choose_entry(&mut self, i: usize) {
+        self.entry = i;
+        self.parsed = None;
+        self.sync();
+    }
+
     /// The system drawn.
     pub fn system(&self) -> Option<&LSystem> {
         self.built_in
@@ -323,9 +330,7 @@ impl LSystemView {
                     }
                 });
             if e != self.entry {
-                self.entry = e;
-                self.parsed = None;
-                self.sync();
+                self.choose_entry(e);
             }
         }
         let mut order = self.order;

@@ -359,13 +359,13 @@ pub(crate) struct ScreenFraming {
 }
 
 impl ScreenFraming {
-    pub fn to_screen(&self, p: P2) -> Pos2 {
+    pub fn to_screen(self, p: P2) -> Pos2 {
         let q = self.f.pixel_from_world(p);
         self.rect.min + Vec2::new(q[0] as f32, q[1] as f32) / self.ppp
     }
 
     /// World units per screen point.
-    pub fn world_per_point(&self) -> f64 {
+    pub fn world_per_point(self) -> f64 {
         self.ppp as f64 / self.f.scale
     }
 }
