@@ -1506,3 +1506,36 @@ fn explore_a_typed_number_out_of_range_is_refused_with_its_limits() {
             .is_some()
     );
 }
+
+#[test]
+fn explore_fif_points_are_dragged_and_added_with_the_mouse() {
+    let mut h = explore_tab();
+    explore_topic(&mut h, "Fractal interpolation");
+    let p1 = h.state().explore.fif.fif.points()[1];
+    let from = h.state().explore.fif.screen_of(p1).unwrap();
+    let target = [p1[0], p1[1] + 0.5];
+    let to = h.state().explore.fif.screen_of(target).unwrap();
+    drag(&mut h, from, to);
+    let q = h.state().explore.fif.fif.points()[1];
+    assert!(
+        (q[0] - target[0]).abs() < 0.01 && (q[1] - target[1]).abs() < 0.01,
+        "{q:?}"
+    );
+    // A click away from the points adds one between its neighbours along x.
+    let at = h.state().explore.fif.screen_of([0.5, -0.5]).unwrap();
+    h.hover_at(at);
+    h.step();
+    h.get_by_label("Data points: 4");
+    h.drag_at(at);
+    h.step();
+    h.drop_at(at);
+    h.run_steps(3);
+    let pts = h.state().explore.fif.fif.points().to_vec();
+    assert_eq!(pts.len(), 5);
+    assert!(
+        (pts[2][0] - 0.5).abs() < 0.01 && (pts[2][1] + 0.5).abs() < 0.01,
+        "{pts:?}"
+    );
+    assert_eq!(h.state().explore.fif.fif.scalings().len(), 4);
+    assert!(h.query_by_label("Data points: 5").is_some());
+}

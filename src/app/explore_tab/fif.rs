@@ -46,6 +46,8 @@ pub struct FifView {
     pub fif: Fif,
     dragging: Option<usize>,
     pub problem: Option<String>,
+    /// Where the graph was last drawn.
+    graph: Option<Graph>,
 }
 
 impl Default for FifView {
@@ -58,11 +60,17 @@ impl Default for FifView {
             .expect("valid default data"),
             dragging: None,
             problem: None,
+            graph: None,
         }
     }
 }
 
 impl FifView {
+    /// Where the world point `p` was last shown on the screen.
+    pub fn screen_of(&self, p: [f64; 2]) -> Option<egui::Pos2> {
+        self.graph.map(|g| g.to_screen(p))
+    }
+
     /// The dimension line (the tests read it).
     pub fn dimension_text(&self) -> String {
         format!("Dimension D = {:.5}", self.fif.dimension())
@@ -193,6 +201,7 @@ impl FifView {
         let sf = Graph {
             rect: rect.shrink(20.0),
         };
+        self.graph = Some(sf);
         // The axis y = 0.
         painter.line_segment(
             [
@@ -210,8 +219,10 @@ impl FifView {
                 .min_by(|a, b| a.1.total_cmp(&b.1))
                 .map(|(i, _)| i)
         };
+        // The press position picks the point (a quick drag is already away from it when the
+        // drag is recognised).
         if resp.drag_started_by(egui::PointerButton::Primary)
-            && let Some(pos) = resp.interact_pointer_pos()
+            && let Some(pos) = ui.input(|i| i.pointer.press_origin())
         {
             self.dragging = near(pos, self.fif.points());
         }
