@@ -1539,3 +1539,46 @@ fn explore_fif_points_are_dragged_and_added_with_the_mouse() {
     assert_eq!(h.state().explore.fif.fif.scalings().len(), 4);
     assert!(h.query_by_label("Data points: 5").is_some());
 }
+
+#[test]
+fn explore_box_counting_of_the_current_flame() {
+    use ugnis::app::explore_tab::dimension::BoxSource;
+    // The flame tab holds the Sierpinski triangle as a flame (no symmetry transforms).
+    let ifs = ugnis::explore::ifs::presets::kovacs_sierpinski();
+    let flame = ifs.to_flame(&Options::default().new_flame());
+    let mut h = harness(Start::Flames(vec![flame]));
+    h.get_by_role_and_label(Role::Button, "Explore").click();
+    h.run_steps(3);
+    explore_topic(&mut h, "Dimension");
+    // Wait for the automatic count of the first preset, then count the flame tab's flame.
+    let t = std::time::Instant::now();
+    while h.state().explore.dimension.busy() || h.state().explore.dimension.result.is_none() {
+        assert!(t.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    h.state_mut().explore.dimension.source = BoxSource::Flame;
+    h.state_mut().explore.dimension.points = 300_000.0;
+    h.run_steps(1);
+    h.get_by_label("Count boxes").click();
+    h.run_steps(1);
+    let t = std::time::Instant::now();
+    while !h
+        .state()
+        .explore
+        .dimension
+        .result
+        .as_ref()
+        .is_some_and(|r| r.source.contains("flame"))
+    {
+        assert!(t.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    let r = h.state().explore.dimension.result.clone().unwrap();
+    assert_eq!(r.count.samples, 300_000);
+    // log 3 / log 2.
+    let d = r.count.dimension().unwrap();
+    assert!((d - 1.585).abs() < 0.06, "{d}");
+    assert!(h.state().status().contains("Box counting of the flame"));
+}

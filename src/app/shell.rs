@@ -317,6 +317,9 @@ impl UgnisApp {
             self.title = title;
         }
 
+        if self.tab == Tab::Explore {
+            self.explore.tick();
+        }
         egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
         if self.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar(ui));

@@ -139,6 +139,14 @@ impl ExploreTab {
             .status(format!("{}: back to the start", self.topic.name()));
     }
 
+    /// This frame's step of the running animation (called before anything is drawn, so the
+    /// status bar and the numbers show the same count).
+    pub fn tick(&mut self) {
+        if self.topic == Topic::ChaosGame {
+            self.chaos.tick();
+        }
+    }
+
     /// The line at the left of the status bar.
     pub fn status_text(&self) -> String {
         match self.topic {
@@ -160,9 +168,6 @@ impl ExploreTab {
             self.notices.push(n);
         }
         self.julia.poll(ui.ctx());
-        if self.topic == Topic::ChaosGame {
-            self.chaos.tick();
-        }
         let width = ui.available_width();
         egui::Panel::left("explore-topics")
             .default_size(190.0f32.min(width * 0.2))
