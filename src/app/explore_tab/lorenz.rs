@@ -259,7 +259,7 @@ impl LorenzView {
             rect.left_top() + Vec2::new(10.0, 8.0),
             egui::Align2::LEFT_TOP,
             format!(
-                "t = {:.2}   distance {:.3e}   (orange: start (1, 1, 1); blue: 1e-9 further in x)",
+                "t = {:.2}   distance {:.3e}\norange: start (1, 1, 1); blue: 1e-9 further in x",
                 self.time, self.distance
             ),
             egui::FontId::proportional(14.0),
