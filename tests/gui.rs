@@ -1582,3 +1582,35 @@ fn explore_box_counting_of_the_current_flame() {
     assert!((d - 1.585).abs() < 0.06, "{d}");
     assert!(h.state().status().contains("Box counting of the flame"));
 }
+
+#[test]
+fn explore_box_counting_of_an_image_file() {
+    let mut h = explore_tab();
+    explore_topic(&mut h, "Dimension");
+    // A white square on black: dimension 2.
+    let path = example("sierpinski.flame").with_file_name("square.png");
+    let img = image::RgbImage::from_fn(512, 512, |x, y| {
+        let inside = (64..448).contains(&x) && (64..448).contains(&y);
+        image::Rgb(if inside { [255; 3] } else { [0; 3] })
+    });
+    img.save(&path).unwrap();
+    h.state_mut().explore.dimension.count_image(&path);
+    let t = std::time::Instant::now();
+    while !h
+        .state()
+        .explore
+        .dimension
+        .result
+        .as_ref()
+        .is_some_and(|r| r.source == "square.png")
+    {
+        assert!(t.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    let r = h.state().explore.dimension.result.clone().unwrap();
+    assert_eq!(r.count.samples, 384 * 384);
+    let d = r.count.dimension().unwrap();
+    assert!((d - 2.0).abs() < 0.05, "{d}");
+    assert!(h.query_by_label("square.png: 147456 samples").is_some());
+}
