@@ -1596,13 +1596,13 @@ fn explore_box_counting_of_an_image_file() {
     img.save(&path).unwrap();
     h.state_mut().explore.dimension.count_image(&path);
     let t = std::time::Instant::now();
-    while !h
+    while h
         .state()
         .explore
         .dimension
         .result
         .as_ref()
-        .is_some_and(|r| r.source == "square.png")
+        .is_none_or(|r| r.source != "square.png")
     {
         assert!(t.elapsed() < std::time::Duration::from_secs(60));
         std::thread::sleep(std::time::Duration::from_millis(20));
