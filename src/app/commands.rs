@@ -7,6 +7,7 @@ use eframe::egui;
 
 use super::actions::{Action, VARIATION_MENU};
 use super::dialogs::Purpose;
+use super::explore_tab::Topic;
 use super::files::Pending;
 use super::help::HelpPage;
 use super::options_dialog::OptionsTab;
@@ -33,24 +34,34 @@ impl UgnisApp {
                 Tab::Flame => self.guard_dirty(Pending::New, "starting a new flame"),
                 Tab::Escape => self.escape.new_view(),
                 Tab::Scene => self.scene.new_scene(),
+                Tab::Explore => self.explore.reset_topic(),
             },
             Action::Open => match tab {
                 Tab::Flame => self.guard_dirty(Pending::BrowseOpen, "opening another file"),
                 Tab::Escape => self.browse(Purpose::OpenView),
                 Tab::Scene => self.browse(Purpose::OpenScene),
+                Tab::Explore => match self.explore.topic {
+                    Topic::Dimension => self.browse(Purpose::BoxCountImage),
+                    _ => {
+                        self.explore.topic = Topic::LSystems;
+                        self.browse(Purpose::OpenLSystem)
+                    }
+                },
             },
             Action::Save => self.save(),
-            Action::SaveAs => self.browse(match tab {
-                Tab::Flame => Purpose::SaveAs,
-                Tab::Escape => Purpose::SaveView,
-                Tab::Scene => Purpose::SaveScene,
-            }),
+            Action::SaveAs => match tab {
+                Tab::Flame => self.browse(Purpose::SaveAs),
+                Tab::Escape => self.browse(Purpose::SaveView),
+                Tab::Scene => self.browse(Purpose::SaveScene),
+                Tab::Explore => self.explore_export(),
+            },
             Action::LoadGradient => self.browse(Purpose::LoadGradient),
             Action::GradientFromImage => self.browse(Purpose::GradientFromImage),
             Action::Export => match tab {
                 Tab::Flame => self.flame.open_export_dialog(o),
                 Tab::Escape => self.browse(Purpose::ExportEscape),
                 Tab::Scene => self.browse(Purpose::ExportScene),
+                Tab::Explore => self.explore_export(),
             },
             Action::RandomBatch => self.flame.start_batch(o),
             Action::Exit => self.guard_dirty(Pending::Exit, "quitting"),
@@ -58,11 +69,13 @@ impl UgnisApp {
                 Tab::Flame => self.flame.undo(),
                 Tab::Escape => self.escape.go_back(),
                 Tab::Scene => self.scene.notices.status("The scene tab has no undo"),
+                Tab::Explore => self.explore.notices.status("The Explore tab has no undo"),
             },
             Action::Redo => match tab {
                 Tab::Flame => self.flame.redo(),
                 Tab::Escape => self.escape.go_forward(),
                 Tab::Scene => self.scene.notices.status("The scene tab has no redo"),
+                Tab::Explore => self.explore.notices.status("The Explore tab has no redo"),
             },
             Action::CopyFlame => {
                 ctx.copy_text(io::flam3_xml::flame_element(self.flame.doc().flame()));
@@ -151,6 +164,18 @@ impl UgnisApp {
                 Some(p) => self.file_chosen(Purpose::SaveScene, p),
                 None => self.browse(Purpose::SaveScene),
             },
+            Tab::Explore => self.explore_export(),
+        }
+    }
+
+    /// Save and Export in the Explore tab: the L-system picture (the only thing it saves).
+    fn explore_export(&mut self) {
+        if self.explore.topic == Topic::LSystems {
+            self.browse(Purpose::ExportLSystem);
+        } else {
+            self.explore
+                .notices
+                .status("Explore saves only L-system pictures (L-systems › Export)");
         }
     }
 

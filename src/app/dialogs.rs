@@ -22,6 +22,9 @@ pub enum Purpose {
     SaveScene,
     ExportScene,
     SceneTexture,
+    OpenLSystem,
+    ExportLSystem,
+    BoxCountImage,
 }
 
 impl Purpose {
@@ -39,6 +42,9 @@ impl Purpose {
             Purpose::SaveScene => "Save scene",
             Purpose::ExportScene => "Export scene image",
             Purpose::SceneTexture => "Texture image",
+            Purpose::OpenLSystem => "Open L-system file",
+            Purpose::ExportLSystem => "Export L-system picture",
+            Purpose::BoxCountImage => "Image to box-count",
         }
     }
 
@@ -52,6 +58,9 @@ impl Purpose {
             Purpose::OpenScene | Purpose::SaveScene => &["toml"],
             Purpose::SceneTexture => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::OpenView | Purpose::SaveView => &["esc"],
+            Purpose::OpenLSystem => &["l"],
+            Purpose::ExportLSystem => &["svg", "png"],
+            Purpose::BoxCountImage => &["png", "jpg", "jpeg", "bmp", "gif"],
         }
     }
 
@@ -64,6 +73,7 @@ impl Purpose {
                 | Purpose::SaveScene
                 | Purpose::ExportEscape
                 | Purpose::ExportScene
+                | Purpose::ExportLSystem
         )
     }
 }

@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use super::dialogs::{FileBrowser, Purpose};
+use super::explore_tab::ExploreRequest;
 use super::options::Options;
 use super::shell::{Tab, UgnisApp};
 use crate::flame::{Affine, Flame};
@@ -17,6 +18,9 @@ pub(super) enum Pending {
     New,
     Open(PathBuf),
     BrowseOpen,
+    /// Replace the open file by these flames (a new, unsaved document of this name) and show
+    /// the flame tab.
+    Flames(Vec<Flame>, String),
 }
 
 impl UgnisApp {
@@ -40,6 +44,47 @@ impl UgnisApp {
             }
             Pending::Open(path) => self.open_path(&path),
             Pending::BrowseOpen => self.browse(Purpose::Open),
+            Pending::Flames(flames, name) => {
+                self.flame.replace_file(flames, None, name.clone());
+                self.flame
+                    .notices
+                    .status(format!("Opened '{name}' from Explore"));
+                self.tab = Tab::Flame;
+            }
+        }
+    }
+
+    /// Carry out what the Explore tab asked for.
+    pub(super) fn explore_request(&mut self, r: ExploreRequest) {
+        match r {
+            ExploreRequest::OpenInFlameTab(ifs) => {
+                let f = ifs.to_flame(&self.options.new_flame());
+                let name = f.name.clone();
+                self.guard_dirty(
+                    Pending::Flames(vec![f], name),
+                    "opening the IFS in the flame tab",
+                );
+            }
+            ExploreRequest::MengerScene(step) => {
+                let text = format!(
+                    "[[object]]\nkind = \"menger\"\nname = \"menger\"\nstep = {step}\nsize = 2\n"
+                );
+                let parsed = io::scene::parse(&text, "menger scene", Path::new("."));
+                match (parsed, text.parse::<toml::Table>()) {
+                    (Ok(l), Ok(t)) => {
+                        self.scene.load(l.scene, l.texture_names, None, t);
+                        self.scene
+                            .notices
+                            .status(format!("Menger sponge, step {step}"));
+                        self.tab = Tab::Scene;
+                    }
+                    (Err(e), _) => self.explore.notices.message("Menger sponge", e.to_string()),
+                    (_, Err(e)) => self.explore.notices.message("Menger sponge", e.to_string()),
+                }
+            }
+            ExploreRequest::OpenLFile => self.browse(Purpose::OpenLSystem),
+            ExploreRequest::ExportLSystem => self.browse(Purpose::ExportLSystem),
+            ExploreRequest::BoxCountImage => self.browse(Purpose::BoxCountImage),
         }
     }
 
@@ -60,6 +105,15 @@ impl UgnisApp {
             Purpose::SaveScene => name_of(&self.scene.path, "scene.toml".into()),
             Purpose::ExportEscape => format!("{family}.png"),
             Purpose::ExportScene => "scene.png".into(),
+            Purpose::ExportLSystem => format!(
+                "{}.svg",
+                io::lsystem::entry_name(
+                    self.explore
+                        .lsystem
+                        .system()
+                        .map_or("lsystem", |s| s.name.as_str())
+                )
+            ),
             Purpose::Export => self
                 .flame
                 .export_dialog
@@ -78,6 +132,8 @@ impl UgnisApp {
             | Purpose::ExportScene
             | Purpose::SceneTexture => self.scene.path.clone(),
             Purpose::Export => self.flame.export_dialog.as_ref().map(|s| s.path.clone()),
+            Purpose::OpenLSystem | Purpose::ExportLSystem => self.explore.lsystem.file.clone(),
+            Purpose::BoxCountImage => None,
             _ => self.flame.file.path.clone(),
         };
         self.browser = Some(FileBrowser::new(
@@ -207,6 +263,15 @@ impl UgnisApp {
             }
             Purpose::SceneTexture => self.scene.set_image_texture(&path),
             Purpose::ExportScene => self.scene.export(with_ext(path, "png")),
+            Purpose::OpenLSystem => {
+                let n = self.explore.lsystem.open(&path);
+                self.explore.notices.push(n);
+            }
+            Purpose::ExportLSystem => {
+                let n = self.explore.lsystem.export(with_ext(path, "svg"));
+                self.explore.notices.push(n);
+            }
+            Purpose::BoxCountImage => self.explore.dimension.count_image(&path),
         }
     }
 }

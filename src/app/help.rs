@@ -61,6 +61,14 @@ pub const PANELS: &[(&str, &str)] = &[
          moves the selected light. Each object's texture can be the current flame, the current \
          escape-time view, a procedural texture or an image. Scenes save as .toml files.",
     ),
+    (
+        "Explore tab",
+        "Teaching topics, chosen in the list at the left: classic constructions step by step, \
+         the chaos game, L-systems (open and edit Fractint .l files, export SVG or PNG), \
+         fractal interpolation (click to add points, drag them), Julia sets by inverse \
+         iteration, the Lorenz attractor (drag to turn it) and fractal dimension. Each shows \
+         its parameters, an explanation and its numbers on the right.",
+    ),
 ];
 
 /// Show the open help window; returns false when it was closed.

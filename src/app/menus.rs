@@ -88,7 +88,7 @@ impl UgnisApp {
             (Action::Redo, Tab::Flame) => f.doc().can_redo(),
             (Action::Undo, Tab::Escape) => self.escape.can_go_back(),
             (Action::Redo, Tab::Escape) => self.escape.can_go_forward(),
-            (Action::Undo | Action::Redo, Tab::Scene) => false,
+            (Action::Undo | Action::Redo, Tab::Scene | Tab::Explore) => false,
             (Action::RandomBatch, _) => !f.batch_running(),
             _ => true,
         };
@@ -176,6 +176,11 @@ impl UgnisApp {
             // The tabs, at the right of the menu bar: always in reach, whatever the width.
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 for (t, label, tip) in [
+                    (
+                        Tab::Explore,
+                        "Explore",
+                        "classic fractals, chaos game, L-systems, dimension",
+                    ),
                     (Tab::Scene, "Scene", "textured Bézier scenes"),
                     (
                         Tab::Escape,
@@ -257,6 +262,19 @@ impl UgnisApp {
                 ("Save", "Save the scene (Ctrl+S)", Action::Save),
                 ("Export", "Export image… (Ctrl+E)", Action::Export),
             ],
+            Tab::Explore => &[
+                ("New", "This topic back to its start (Ctrl+N)", Action::New),
+                (
+                    "Open",
+                    "Open a Fractint L-system file (.l) (Ctrl+O)",
+                    Action::Open,
+                ),
+                (
+                    "Export",
+                    "Export the L-system as SVG or PNG (Ctrl+E)",
+                    Action::Export,
+                ),
+            ],
         };
         ui.horizontal_wrapped(|ui| {
             for (label, tip, a) in buttons {
@@ -286,6 +304,10 @@ impl UgnisApp {
                 }
                 Tab::Scene => {
                     ui.label(self.scene.status_text());
+                    ui.separator();
+                }
+                Tab::Explore => {
+                    ui.label(self.explore.status_text());
                     ui.separator();
                 }
             }

@@ -2,14 +2,16 @@
 //!
 //! How it is put together, from the outside in:
 //!
-//! * [`shell`] — the window: the options, the three tabs, message boxes, the file chooser and
+//! * [`shell`] — the window: the options, the four tabs, message boxes, the file chooser and
 //!   the "save changes?" question. [`menus`] draws its menu bar, toolbar and status bar and
 //!   handles shortcuts, pasted flames and dropped files; [`actions`] lists every command with
 //!   its menu and shortcut; [`files`] opens and saves.
 //! * One folder per tab, each owning its document, background worker and panels:
 //!   [`flame_tab`] (flames: file and batch, live preview, triangle editor, gradient,
 //!   mutations, export), [`escape_tab`] (escape-time fractals), [`scene_tab`] (textured
-//!   Bézier scenes). [`commands`] says what every command does in which tab; [`help`] holds
+//!   Bézier scenes), [`explore_tab`] (the teaching topics: classic constructions, chaos game,
+//!   L-systems, fractal interpolation, inverse-iteration Julia sets, Lorenz, dimension).
+//!   [`commands`] says what every command does in which tab; [`help`] holds
 //!   the Help menu's windows.
 //! * Shared pieces: [`worker`] (the one background worker: newest job wins, cancel,
 //!   progress, join on drop), [`notice`] (status lines and message boxes), [`options`] (the
@@ -20,6 +22,7 @@ pub mod actions;
 pub mod commands;
 pub mod dialogs;
 pub mod escape_tab;
+pub mod explore_tab;
 pub mod files;
 pub mod flame_tab;
 pub mod help;

@@ -1,4 +1,4 @@
-//! The window around the tabs: it owns the options, the three tabs, the file chooser, the
+//! The window around the tabs: it owns the options, the four tabs, the file chooser, the
 //! "save changes?" question and the message boxes, and draws menus, toolbar and status bar
 //! (`menus.rs`) around the current tab.
 
@@ -9,6 +9,7 @@ use eframe::egui;
 
 use super::dialogs::{self, Confirm, FileBrowser, Purpose};
 use super::escape_tab::{EscapeRequest, EscapeTab};
+use super::explore_tab::ExploreTab;
 use super::files::{Loaded, Pending, load_any};
 use super::flame_tab::first_flame::striking_flame;
 use super::flame_tab::{FlameRequest, FlameTab};
@@ -34,6 +35,7 @@ pub enum Tab {
     Flame,
     Escape,
     Scene,
+    Explore,
 }
 
 /// The application.
@@ -43,6 +45,7 @@ pub struct UgnisApp {
     pub flame: FlameTab,
     pub escape: EscapeTab,
     pub scene: SceneTab,
+    pub explore: ExploreTab,
     pub show_toolbar: bool,
     pub show_status: bool,
     pub(super) browser: Option<FileBrowser>,
@@ -134,6 +137,7 @@ impl UgnisApp {
             flame,
             escape,
             scene: SceneTab::new(ctx.as_ref()),
+            explore: ExploreTab::new(ctx.as_ref()),
             show_toolbar: true,
             show_status: true,
             browser: None,
@@ -188,6 +192,7 @@ impl UgnisApp {
             Tab::Flame => &self.flame.notices.status,
             Tab::Escape => &self.escape.notices.status,
             Tab::Scene => &self.scene.notices.status,
+            Tab::Explore => &self.explore.notices.status,
         }
     }
 
@@ -249,6 +254,7 @@ impl UgnisApp {
             &mut self.flame.notices,
             &mut self.escape.notices,
             &mut self.scene.notices,
+            &mut self.explore.notices,
         ] {
             self.messages.extend(n.take_messages());
         }
@@ -311,6 +317,9 @@ impl UgnisApp {
             self.title = title;
         }
 
+        if self.tab == Tab::Explore {
+            self.explore.tick();
+        }
         egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
         if self.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar(ui));
@@ -336,6 +345,11 @@ impl UgnisApp {
                     Some(SceneRequest::Export) => self.browse(Purpose::ExportScene),
                     Some(SceneRequest::TextureImage) => self.browse(Purpose::SceneTexture),
                     None => {}
+                }
+            }
+            Tab::Explore => {
+                if let Some(r) = self.explore.ui(ui, self.flame.doc().flame()) {
+                    self.explore_request(r);
                 }
             }
         }
