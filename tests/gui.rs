@@ -1614,3 +1614,72 @@ fn explore_box_counting_of_an_image_file() {
     assert!((d - 2.0).abs() < 0.05, "{d}");
     assert!(h.query_by_label("square.png: 147456 samples").is_some());
 }
+
+#[test]
+fn scene_tab_switches_to_ray_casting_and_edits_a_quaternion_julia_set() {
+    let mut h = harness(Start::Random(3));
+    h.get_by_role_and_label(Role::Button, "Scene").click();
+    h.run_steps(3);
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/quaternion-julia.toml");
+    assert!(h.state_mut().scene.open(&file));
+    h.run_steps(3);
+    use ugnis::surface::scene::{Geometry, Renderer};
+    let renderer0 = h.state().scene.scene.renderer;
+    // The renderer switch.
+    h.get_by_role_and_label(Role::ComboBox, "Renderer").click();
+    h.run_steps(2);
+    let other = if renderer0 == Renderer::RayCast {
+        "z-buffer"
+    } else {
+        "ray casting"
+    };
+    h.get_by_label(other).click();
+    h.run_steps(3);
+    assert_ne!(h.state().scene.scene.renderer, renderer0);
+    // The quaternion's c, typed into its field.
+    let q0 = match &h.state().scene.scene.objects[0].geometry {
+        Geometry::QuaternionJulia(q) => *q,
+        g => panic!("expected a quaternion Julia set, got {g:?}"),
+    };
+    h.get_by_label("c (j)").click();
+    h.run_steps(1);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    h.get_by_label("c (j)").type_text("0.3");
+    h.key_press(Key::Enter);
+    h.run_steps(3);
+    let Geometry::QuaternionJulia(q1) = &h.state().scene.scene.objects[0].geometry else {
+        unreachable!()
+    };
+    assert_eq!(q1.c[2], 0.3);
+    assert_eq!(
+        (q1.c[0], q1.c[1], q1.iterations),
+        (q0.c[0], q0.c[1], q0.iterations)
+    );
+    // Both survive a save and reopen.
+    let dir = std::env::temp_dir().join(format!("ugnis-gui-q-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("q.toml");
+    let text = h.state().scene.scene_file(&out).unwrap();
+    std::fs::write(&out, text).unwrap();
+    let l = ugnis::io::scene::read(&out).unwrap();
+    assert_eq!(l.scene.renderer, h.state().scene.scene.renderer);
+    let Geometry::QuaternionJulia(q2) = &l.scene.objects[0].geometry else {
+        unreachable!()
+    };
+    assert_eq!(q2.c[2], 0.3);
+}
+
+#[test]
+fn a_scene_or_lsystem_file_given_at_start_opens_in_its_tab() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let h = harness(Start::File(root.join("examples/jug.toml")));
+    assert_eq!(h.state().tab, ugnis::app::Tab::Scene);
+    assert!(
+        h.state().status().contains("jug.toml"),
+        "{}",
+        h.state().status()
+    );
+    let h = harness(Start::File(root.join("tests/fixtures/explore.l")));
+    assert_eq!(h.state().tab, ugnis::app::Tab::Explore);
+    assert!(h.state().explore.lsystem.file.is_some());
+}

@@ -79,9 +79,22 @@ impl UgnisApp {
     pub fn new(options: Options, start: Start, ctx: Option<egui::Context>) -> UgnisApp {
         let mut messages = Vec::new();
         let mut start_note = None;
-        // A view file opens in the escape-time tab (next to a random flame).
+        // A view file opens in the escape-time tab, a scene in the scene tab and an L-system
+        // file in Explore (each next to a random flame).
         let mut escape_start = None;
+        let mut other_start: Option<(Tab, PathBuf)> = None;
         let start = match start {
+            Start::File(p) if io::kind_of(&p) == io::FileKind::LSystem => {
+                other_start = Some((Tab::Explore, p));
+                Start::Random(seed_from_time())
+            }
+            Start::File(p)
+                if p.extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("toml")) =>
+            {
+                other_start = Some((Tab::Scene, p));
+                Start::Random(seed_from_time())
+            }
             Start::File(p) if io::kind_of(&p) == io::FileKind::EscapeView => {
                 match io::escape_view::read(&p) {
                     Ok(v) => escape_start = Some((v.value, p)),
@@ -131,13 +144,28 @@ impl UgnisApp {
             }
             None => Tab::Flame,
         };
+        let mut scene = SceneTab::new(ctx.as_ref());
+        let mut explore = ExploreTab::new(ctx.as_ref());
+        let tab = match other_start {
+            Some((Tab::Scene, p)) => {
+                scene.open(&p);
+                Tab::Scene
+            }
+            Some((_, p)) => {
+                let n = explore.lsystem.open(&p);
+                explore.notices.push(n);
+                explore.topic = super::explore_tab::Topic::LSystems;
+                Tab::Explore
+            }
+            None => tab,
+        };
         UgnisApp {
             options,
             tab,
             flame,
             escape,
-            scene: SceneTab::new(ctx.as_ref()),
-            explore: ExploreTab::new(ctx.as_ref()),
+            scene,
+            explore,
             show_toolbar: true,
             show_status: true,
             browser: None,

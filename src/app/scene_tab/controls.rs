@@ -8,6 +8,8 @@ use super::{SceneRequest, SceneTab, TextureSource};
 use crate::app::a11y::named;
 use crate::escape::EscapeDoc;
 use crate::flame::Flame;
+use crate::surface::quaternion::{QuaternionJulia, SliceAxis};
+use crate::surface::scene::{Geometry, Renderer};
 use crate::surface::{Light, Projection};
 
 impl SceneTab {
@@ -60,6 +62,7 @@ impl SceneTab {
             self.scene.camera,
             self.scene.lights.clone(),
             self.scene.supersample,
+            self.scene.renderer,
         );
         egui::CollapsingHeader::new("Objects")
             .default_open(true)
@@ -120,6 +123,15 @@ impl SceneTab {
                 }
                 if image {
                     req = Some(SceneRequest::TextureImage);
+                }
+                if let Some(Geometry::QuaternionJulia(q)) = self
+                    .scene
+                    .objects
+                    .get_mut(self.selected_object)
+                    .map(|o| &mut o.geometry)
+                    && quaternion_controls(ui, q)
+                {
+                    self.version += 1;
                 }
                 if let Some(o) = self.scene.objects.get_mut(self.selected_object) {
                     let m = o.material;
@@ -332,11 +344,36 @@ impl SceneTab {
                         .labelled_by(lb.id)
                         .on_hover_text("samples per pixel side (smoother edges, slower)");
                 });
+                ui.horizontal(|ui| {
+                    ui.label("Renderer");
+                    let r = egui::ComboBox::from_id_salt("renderer")
+                        .selected_text(match self.scene.renderer {
+                            Renderer::ZBuffer => "z-buffer",
+                            Renderer::RayCast => "ray casting",
+                        })
+                        .show_ui(ui, |ui| {
+                            ui.selectable_value(
+                                &mut self.scene.renderer,
+                                Renderer::ZBuffer,
+                                "z-buffer",
+                            );
+                            ui.selectable_value(
+                                &mut self.scene.renderer,
+                                Renderer::RayCast,
+                                "ray casting",
+                            );
+                        });
+                    named(r.response, "Renderer").on_hover_text(
+                        "z-buffer: fast, over a tessellation; ray casting: exact surfaces and \
+                         shadows",
+                    );
+                });
             });
         if (
             self.scene.camera,
             self.scene.lights.clone(),
             self.scene.supersample,
+            self.scene.renderer,
         ) != before
         {
             self.version += 1;
@@ -345,4 +382,53 @@ impl SceneTab {
         ui.label("Drag: orbit · wheel: zoom · right-drag: pan");
         req
     }
+}
+
+/// The parameters of a quaternion Julia object: c, the slice and the iterations. Returns
+/// whether any changed.
+fn quaternion_controls(ui: &mut egui::Ui, q: &mut QuaternionJulia) -> bool {
+    let before = *q;
+    ui.label("Quaternion Julia set");
+    egui::Grid::new("quaternion").num_columns(2).show(ui, |ui| {
+        for (k, name) in ["c (real)", "c (i)", "c (j)", "c (k)"].iter().enumerate() {
+            let lb = ui.label(*name);
+            ui.add(
+                egui::DragValue::new(&mut q.c[k])
+                    .speed(0.005)
+                    .range(-2.0..=2.0),
+            )
+            .labelled_by(lb.id)
+            .on_hover_text("the constant of z ← z² + c, one quaternion component");
+            ui.end_row();
+        }
+        ui.label("Slice");
+        let names = ["real = v", "i = v", "j = v", "k = v"];
+        let axes = [SliceAxis::Real, SliceAxis::I, SliceAxis::J, SliceAxis::K];
+        let cur = axes.iter().position(|&a| a == q.slice).unwrap_or(3);
+        let r = egui::ComboBox::from_id_salt("slice")
+            .selected_text(names[cur])
+            .show_ui(ui, |ui| {
+                for (a, n) in axes.iter().zip(names) {
+                    ui.selectable_value(&mut q.slice, *a, n);
+                }
+            });
+        named(r.response, "Slice axis")
+            .on_hover_text("which quaternion component is held fixed to cut a 3-D slice");
+        ui.end_row();
+        let lb = ui.label("Slice value v");
+        ui.add(
+            egui::DragValue::new(&mut q.slice_value)
+                .speed(0.01)
+                .range(-2.0..=2.0),
+        )
+        .labelled_by(lb.id)
+        .on_hover_text("the value of the fixed component");
+        ui.end_row();
+        let lb = ui.label("Iterations");
+        ui.add(egui::DragValue::new(&mut q.iterations).range(1..=200))
+            .labelled_by(lb.id)
+            .on_hover_text("iterations per distance estimate: finer detail, slower");
+        ui.end_row();
+    });
+    *q != before
 }

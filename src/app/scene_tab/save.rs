@@ -12,6 +12,7 @@ use crate::escape::EscapeDoc;
 use crate::flame::Flame;
 use crate::io;
 use crate::surface::Projection;
+use crate::surface::scene::{Geometry, Renderer};
 
 /// The default scene: the jug wearing an fBm texture (no files needed).
 pub const DEFAULT_SCENE: &str = r#"# ugnis scene
@@ -77,6 +78,16 @@ impl SceneTab {
             .and_then(Value::as_table)
             .cloned()
             .unwrap_or_default();
+        match s.renderer {
+            Renderer::ZBuffer => {
+                t.remove("render");
+                // Shadows need ray casting: a file saying so would not open again.
+                t.remove("shadows");
+            }
+            Renderer::RayCast => {
+                t.insert("render".into(), "raycast".into());
+            }
+        }
         image.insert("size".into(), int_arr(&[s.width, s.height]));
         image.insert("supersample".into(), Value::Integer(s.supersample as i64));
         t.insert("image".into(), Value::Table(image));
@@ -169,6 +180,12 @@ impl SceneTab {
                 m.insert(k.into(), num(x));
             }
             ot.insert("material".into(), Value::Table(m));
+            if let Geometry::QuaternionJulia(q) = &o.geometry {
+                ot.insert("c".into(), arr(&q.c));
+                ot.insert("slice".into(), q.slice.name().into());
+                ot.insert("slice_value".into(), num(q.slice_value));
+                ot.insert("iterations".into(), Value::Integer(q.iterations as i64));
+            }
         }
         t.insert("object".into(), Value::Array(objects));
         let body = toml::to_string(&t).map_err(|e| e.to_string())?;
