@@ -109,7 +109,8 @@ pub struct FlameTab {
     thumbs: Thumbnails,
     batch_job: Option<TaskWorker<Vec<Flame>>>,
     rng: FastRng,
-    last_export_dir: Option<PathBuf>,
+    /// Where the last export was written (the file choosers start there).
+    pub last_export_dir: Option<PathBuf>,
     /// Wakes the UI when a background job finishes.
     repaint: Repaint,
 }
