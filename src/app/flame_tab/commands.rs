@@ -236,7 +236,7 @@ impl FlameTab {
                     let mut text = format!(
                         "Exported {} at quality {} ({} samples)",
                         j.path.display(),
-                        crate::flame::render::short_num(done.quality_done),
+                        export::quality_text(done.quality_done),
                         done.samples_done
                     );
                     if let Some(sp) = &done.state {
@@ -279,11 +279,17 @@ impl FlameTab {
         self.poll_jobs();
         if let Some(j) = &self.export_job {
             let mut act = None;
+            // Anchored at its top centre with a fixed width: the buttons stay where they are
+            // while the numbers change.
+            let r0 = ctx.content_rect();
             egui::Window::new("Export image")
                 .id(egui::Id::unique("export-running"))
                 .collapsible(false)
-                .pivot(egui::Align2::CENTER_CENTER)
-                .default_pos(ctx.content_rect().center())
+                .resizable(false)
+                .pivot(egui::Align2::CENTER_TOP)
+                .default_pos([r0.center().x, r0.top() + 80.0])
+                .min_width(440.0)
+                .max_width(440.0)
                 .show(ctx, |ui| act = export::job_window(ui, j));
             match act {
                 Some(JobAction::SaveNow) => j.save_now(),

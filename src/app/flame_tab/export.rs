@@ -84,8 +84,8 @@ impl ResumeInfo {
             self.width,
             self.height,
             self.supersample,
-            short_num(self.quality_done),
-            short_num(self.quality),
+            quality_text(self.quality_done),
+            quality_text(self.quality),
             self.samples_done
         )
     }
@@ -373,7 +373,7 @@ fn run(
                     control.update(|st| st.saves += 1);
                     format!(
                         "saved at quality {} ({})",
-                        short_num(r.quality_done()),
+                        quality_text(r.quality_done()),
                         s.path.display()
                     )
                 }
@@ -416,6 +416,15 @@ fn write(r: &Renderer, s: &ExportSettings) -> Result<(), String> {
     Ok(())
 }
 
+/// A quality for people: whole numbers as they are, others with one decimal.
+pub fn quality_text(q: f64) -> String {
+    if (q - q.round()).abs() < 1e-9 {
+        format!("{q:.0}")
+    } else {
+        format!("{q:.1}")
+    }
+}
+
 /// Millions with one decimal, or the number itself below a million.
 fn count(n: f64) -> String {
     if n >= 1e6 {
@@ -429,21 +438,22 @@ fn count(n: f64) -> String {
 pub fn job_window(ui: &mut egui::Ui, job: &ExportJob) -> Option<JobAction> {
     let st = job.status();
     let mut r = None;
-    ui.label(format!("Rendering {}", job.path.display()));
+    ui.set_width(440.0);
+    ui.add(egui::Label::new(format!("Rendering {}", job.path.display())).truncate());
     if st.loading {
         ui.label("Reading the render state…");
     } else {
         let text = format!(
             "Quality reached: {} of {}",
-            short_num(st.quality_done),
-            short_num(st.asked)
+            quality_text(st.quality_done),
+            quality_text(st.asked)
         );
         if st.refining || st.quality_done >= st.asked {
             ui.label(format!("{text} — refining until stopped"));
         } else {
             ui.add(
                 egui::ProgressBar::new((st.quality_done / st.asked.max(MIN_QUALITY)) as f32)
-                    .desired_width(280.0)
+                    .desired_width(420.0)
                     .text(text),
             );
         }
@@ -453,9 +463,8 @@ pub fn job_window(ui: &mut egui::Ui, job: &ExportJob) -> Option<JobAction> {
             count(st.samples_per_second)
         ));
     }
-    if !st.note.is_empty() {
-        ui.label(&st.note);
-    }
+    // Always one line (empty until there is something to say), so the buttons stay put.
+    ui.add(egui::Label::new(&st.note).truncate());
     ui.horizontal(|ui| {
         if ui
             .add_enabled(st.samples_done > 0, egui::Button::new("Save now"))
