@@ -1785,3 +1785,59 @@ fn export_a_corrupt_state_file_is_refused_naming_the_file() {
     assert!(h.query_by_label_contains("version 99").is_some());
     assert!(h.state().flame.export_dialog.is_none());
 }
+
+#[test]
+fn export_cancel_writes_nothing_and_keeps_the_files_saved_before() {
+    let mut h = open("sierpinski.flame");
+    let out = example("sierpinski.flame").with_file_name("cancelled.png");
+    let state = out.with_extension("ugnis-state");
+    export_dialog_for(&mut h, &out, 20.0);
+    h.get_by_label("keep refining until stopped").click();
+    h.get_by_label("also save the render state").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Render").click();
+    h.run_steps(2);
+    let t = std::time::Instant::now();
+    while h
+        .state()
+        .flame
+        .export_job
+        .as_ref()
+        .unwrap()
+        .status()
+        .samples_done
+        == 0
+    {
+        assert!(t.elapsed() < std::time::Duration::from_secs(30));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    h.get_by_role_and_label(Role::Button, "Save now").click();
+    while h.state().flame.export_job.as_ref().unwrap().status().saves == 0 {
+        assert!(t.elapsed() < std::time::Duration::from_secs(30));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    let (png, st) = (std::fs::read(&out).unwrap(), std::fs::read(&state).unwrap());
+    // Let it refine further, then Cancel: the files stay as Save now wrote them.
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    h.run_steps(1);
+    // The window's Cancel (the status bar has one too; both cancel the export).
+    let cancels: Vec<_> = h
+        .get_all_by_role_and_label(Role::Button, "Cancel")
+        .collect();
+    assert_eq!(cancels.len(), 2);
+    cancels[0].click();
+    let status = wait_for_export(&mut h);
+    assert!(status.contains("cancelled"), "{status}");
+    assert_eq!(std::fs::read(&out).unwrap(), png);
+    assert_eq!(std::fs::read(&state).unwrap(), st);
+    // No temporary file is left beside them.
+    let dir = out.parent().unwrap();
+    let tmp: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".ugnis-tmp"))
+        .collect();
+    assert!(tmp.is_empty(), "{tmp:?}");
+}
