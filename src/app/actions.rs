@@ -14,6 +14,8 @@ pub enum Action {
     LoadGradient,
     GradientFromImage,
     Export,
+    /// Continue a saved render state in the export window.
+    ResumeState,
     RandomBatch,
     Exit,
     Undo,
@@ -94,6 +96,7 @@ pub const MENU: &[MenuItem] = &[
         None,
     ),
     item("File", "Export image…", Action::Export, sc(CMD, Key::E)),
+    item("File", "Resume render state…", Action::ResumeState, None),
     item("File", "Random batch", Action::RandomBatch, sc(CMD, Key::B)),
     item("File", "Exit", Action::Exit, sc(CMD, Key::Q)),
     item("Edit", "Undo", Action::Undo, sc(CMD, Key::Z)),

@@ -63,6 +63,7 @@ impl UgnisApp {
                 Tab::Scene => self.browse(Purpose::ExportScene),
                 Tab::Explore => self.explore_export(),
             },
+            Action::ResumeState => self.browse(Purpose::ResumeState),
             Action::RandomBatch => self.flame.start_batch(o),
             Action::Exit => self.guard_dirty(Pending::Exit, "quitting"),
             Action::Undo => match tab {

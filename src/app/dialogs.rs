@@ -25,6 +25,7 @@ pub enum Purpose {
     OpenLSystem,
     ExportLSystem,
     BoxCountImage,
+    ResumeState,
 }
 
 impl Purpose {
@@ -45,6 +46,7 @@ impl Purpose {
             Purpose::OpenLSystem => "Open L-system file",
             Purpose::ExportLSystem => "Export L-system picture",
             Purpose::BoxCountImage => "Image to box-count",
+            Purpose::ResumeState => "Resume render state",
         }
     }
 
@@ -61,6 +63,7 @@ impl Purpose {
             Purpose::OpenLSystem => &["l"],
             Purpose::ExportLSystem => &["svg", "png"],
             Purpose::BoxCountImage => &["png", "jpg", "jpeg", "bmp", "gif"],
+            Purpose::ResumeState => &["ugnis-state"],
         }
     }
 

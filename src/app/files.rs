@@ -134,6 +134,7 @@ impl UgnisApp {
             Purpose::Export => self.flame.export_dialog.as_ref().map(|s| s.path.clone()),
             Purpose::OpenLSystem | Purpose::ExportLSystem => self.explore.lsystem.file.clone(),
             Purpose::BoxCountImage => None,
+            Purpose::ResumeState => self.flame.last_export_dir.clone(),
             _ => self.flame.file.path.clone(),
         };
         self.browser = Some(FileBrowser::new(
@@ -272,6 +273,10 @@ impl UgnisApp {
                 self.explore.notices.push(n);
             }
             Purpose::BoxCountImage => self.explore.dimension.count_image(&path),
+            Purpose::ResumeState => {
+                self.tab = Tab::Flame;
+                self.flame.open_resume_dialog(&path);
+            }
         }
     }
 }

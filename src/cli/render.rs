@@ -156,15 +156,7 @@ impl Source {
         match self {
             Source::Fresh(f, part) => Renderer::with_plan(f, opts, &Plan { part: *part, strip })
                 .with_context(|| format!("cannot render '{}'", f.name)),
-            Source::Resume(rd, add) => {
-                let hist = match &strip {
-                    Some(s) => rd.read_rows(s.hist_rows.clone())?,
-                    None => rd.read_all()?,
-                };
-                let state = rd.state.clone();
-                Renderer::resume(&state, hist, *add, opts, strip)
-                    .with_context(|| format!("cannot continue '{}'", rd.file_name()))
-            }
+            Source::Resume(rd, add) => rd.renderer(*add, opts, strip).map_err(anyhow::Error::msg),
         }
     }
 
@@ -344,16 +336,8 @@ fn run_whole(
             .with_context(|| format!("cannot write '{}'", path.display()))?;
     }
     if let (Some(out), Some(img)) = (out, img) {
-        if io::kind_of(out) == FileKind::Bmp {
-            io::bmp::save(out, &img)
-                .with_context(|| format!("cannot write '{}'", out.display()))?;
-        } else {
-            let mut meta = io::png::PngMeta::for_flame(&rendered);
-            meta.samples = Some(samples);
-            meta.error_rate = Some(rate);
-            io::png::save(out, &img, &meta)
-                .with_context(|| format!("cannot write '{}'", out.display()))?;
-        }
+        io::save_flame_image(out, &img, &rendered, samples, Some(rate))
+            .with_context(|| format!("cannot write '{}'", out.display()))?;
     }
     Ok(())
 }

@@ -313,6 +313,30 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
     Ok(())
 }
 
+/// The highest quality a render of `flame` may reach: [`MAX_QUALITY`], or less when the
+/// samples of its zoom and size would pass [`MAX_TOTAL_SAMPLES`] first. [`Renderer::extend`]
+/// refuses to go past it.
+pub fn quality_limit(flame: &Flame) -> f64 {
+    let per_quality = 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
+    let by_samples = MAX_TOTAL_SAMPLES / per_quality;
+    if by_samples.is_finite() && by_samples > 0.0 {
+        by_samples.min(MAX_QUALITY)
+    } else {
+        MAX_QUALITY
+    }
+}
+
+/// Quality (samples per pixel, before the zoom's 4^zoom) that `samples` iterations give
+/// `flame`: the inverse of [`Flame::total_samples`].
+pub fn quality_of_samples(flame: &Flame, samples: u64) -> f64 {
+    let per_quality = 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
+    if per_quality.is_finite() && per_quality > 0.0 {
+        samples as f64 / per_quality
+    } else {
+        0.0
+    }
+}
+
 /// How a render's work is cut: which share of the samples (for other processes or machines)
 /// and which band of the image (for renders in strips).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -525,6 +549,12 @@ impl Renderer {
 
     pub fn bad_values(&self) -> u64 {
         self.badvals
+    }
+
+    /// The quality the samples done so far amount to (the flame's quality once the render
+    /// is complete; less while it runs or after a stop between passes).
+    pub fn quality_done(&self) -> f64 {
+        quality_of_samples(&self.flame, self.samples_done)
     }
 
     pub fn threads(&self) -> usize {

@@ -395,6 +395,26 @@ pub fn check_readable_size(path: &Path, bytes: usize) -> Result<(), String> {
     Ok(())
 }
 
+/// Write a rendered flame picture atomically, as BMP or PNG by the file's extension. A PNG
+/// carries the flame (to open it again), the samples done and, when known, the share of bad
+/// values.
+pub fn save_flame_image(
+    path: &Path,
+    img: &image::DynamicImage,
+    flame: &Flame,
+    samples: u64,
+    error_rate: Option<f64>,
+) -> std::io::Result<()> {
+    if kind_of(path) == FileKind::Bmp {
+        bmp::save(path, img)
+    } else {
+        let mut meta = png::PngMeta::for_flame(flame);
+        meta.samples = Some(samples);
+        meta.error_rate = error_rate;
+        png::save(path, img, &meta)
+    }
+}
+
 /// Write flames atomically as .fla/.flame/.flam3 (XML) or .ifs (linear flames only; the
 /// returned strings are warnings about what .ifs cannot keep).
 pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<String>, WriteError> {

@@ -29,7 +29,9 @@ use rayon::prelude::*;
 
 use crate::flame::chaos::{LANES, LaneState};
 use crate::flame::histogram::{Bucket, Histogram};
+use crate::flame::render::{RenderOptions, Renderer};
 use crate::flame::state::{MAX_PARTS, RenderState};
+use crate::flame::strips::Strip;
 use crate::io::diag::{Diagnostic, Pos};
 
 pub const MAGIC: &[u8; 8] = b"UGNISRS\x1a";
@@ -527,6 +529,23 @@ impl StateReader {
     /// The whole histogram.
     pub fn read_all(&mut self) -> Result<Histogram, Diagnostic> {
         self.read_rows(0..self.bh)
+    }
+
+    /// A renderer that continues this state with `add_quality` more samples per pixel, for
+    /// the whole image or (reading only its rows) one strip of it. Errors name the file.
+    pub fn renderer(
+        &mut self,
+        add_quality: f64,
+        opts: &RenderOptions,
+        strip: Option<Strip>,
+    ) -> Result<Renderer, String> {
+        let hist = match &strip {
+            Some(s) => self.read_rows(s.hist_rows.clone()),
+            None => self.read_all(),
+        }
+        .map_err(|e| e.to_string())?;
+        Renderer::resume(&self.state, hist, add_quality, opts, strip)
+            .map_err(|e| format!("cannot continue '{}': {e}", self.file_name))
     }
 }
 

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use eframe::egui;
 
-use super::export::{self, ExportJob, ExportSettings};
+use super::export::{self, ExportJob, ExportSettings, JobAction, ResumeInfo};
 use super::gradients::GradientAction;
 use super::{FlameRequest, FlameTab, pick};
 use crate::app::options::Options;
@@ -126,6 +126,11 @@ impl FlameTab {
 
     /// Open the export dialog for the current flame.
     pub fn open_export_dialog(&mut self, options: &Options) {
+        if self.export_job.is_some() {
+            self.notices
+                .status("An export is running: stop it before starting another");
+            return;
+        }
         let f = self.doc().flame();
         let dir = self.last_export_dir.clone().or_else(|| {
             self.doc()
@@ -147,7 +152,38 @@ impl FlameTab {
             transparent: false,
             path: dir.unwrap_or_default().join(format!("{name}.png")),
             lock_aspect: true,
+            refine: false,
+            save_state: false,
+            resume: None,
         });
+    }
+
+    /// Open the export dialog to continue the render state saved in `path`; a file that is
+    /// not a state this ugnis reads is told in a message box naming it.
+    pub fn open_resume_dialog(&mut self, path: &Path) {
+        if self.export_job.is_some() {
+            self.notices
+                .status("An export is running: stop it before starting another");
+            return;
+        }
+        match ResumeInfo::open(path) {
+            Ok(info) => {
+                self.export_dialog = Some(ExportSettings {
+                    width: info.width,
+                    height: info.height,
+                    quality: info.quality,
+                    supersample: info.supersample,
+                    bits16: false,
+                    transparent: false,
+                    path: path.with_extension("png"),
+                    lock_aspect: true,
+                    refine: true,
+                    save_state: true,
+                    resume: Some(info),
+                });
+            }
+            Err(e) => self.notices.message("Cannot resume the render state", e),
+        }
     }
 
     /// Save the open file (atomically). Returns true on success.
@@ -196,10 +232,22 @@ impl FlameTab {
     fn poll_jobs(&mut self) {
         if let Some(j) = &mut self.export_job {
             match j.poll() {
-                Some(Ok(())) => {
-                    let p = j.path.display().to_string();
+                Some(Ok(done)) => {
+                    let mut text = format!(
+                        "Exported {} at quality {} ({} samples)",
+                        j.path.display(),
+                        export::quality_text(done.quality_done),
+                        done.samples_done
+                    );
+                    if let Some(sp) = &done.state {
+                        text.push_str(&format!("; render state in {}", sp.display()));
+                    }
                     self.export_job = None;
-                    self.notices.status(format!("Exported {p}"));
+                    if let Some(limit) = done.limit {
+                        self.notices
+                            .message("Refining ended", format!("{text}.\n\nThe {limit}."));
+                    }
+                    self.notices.status(text);
                 }
                 Some(Err(e)) => {
                     self.export_job = None;
@@ -229,6 +277,29 @@ impl FlameTab {
     pub fn windows(&mut self, ctx: &egui::Context, options: &Options) -> Option<FlameRequest> {
         let mut req = None;
         self.poll_jobs();
+        if let Some(j) = &self.export_job {
+            let mut act = None;
+            // Anchored at its top centre with a fixed width: the buttons stay where they are
+            // while the numbers change.
+            let r0 = ctx.content_rect();
+            egui::Window::new("Export image")
+                .id(egui::Id::unique("export-running"))
+                .collapsible(false)
+                .resizable(false)
+                .pivot(egui::Align2::CENTER_TOP)
+                .default_pos([r0.center().x, r0.top() + 80.0])
+                .min_width(440.0)
+                .max_width(440.0)
+                .show(ctx, |ui| act = export::job_window(ui, j));
+            match act {
+                Some(JobAction::SaveNow) => j.save_now(),
+                Some(JobAction::Stop) => j.stop(),
+                Some(JobAction::Cancel) => j.cancel(),
+                None => {}
+            }
+            // The numbers move without events from the render thread.
+            ctx.request_repaint_after(std::time::Duration::from_millis(200));
+        }
         if let Some(s) = &mut self.export_dialog {
             let mut browse = false;
             let mut r = None;
@@ -247,9 +318,13 @@ impl FlameTab {
                     let s = s.clone();
                     self.last_export_dir = s.path.parent().map(Path::to_path_buf);
                     let f = self.doc().flame().clone();
-                    self.export_job =
-                        Some(ExportJob::start(&f, &s, options.threads, self.repaint()));
-                    self.export_dialog = None;
+                    match ExportJob::start(&f, &s, options.threads, self.repaint()) {
+                        Ok(j) => {
+                            self.export_job = Some(j);
+                            self.export_dialog = None;
+                        }
+                        Err(e) => self.notices.message("Cannot export", e),
+                    }
                 }
                 Some(false) => self.export_dialog = None,
                 None => {}

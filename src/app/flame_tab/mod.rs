@@ -109,7 +109,8 @@ pub struct FlameTab {
     thumbs: Thumbnails,
     batch_job: Option<TaskWorker<Vec<Flame>>>,
     rng: FastRng,
-    last_export_dir: Option<PathBuf>,
+    /// Where the last export was written (the file choosers start there).
+    pub last_export_dir: Option<PathBuf>,
     /// Wakes the UI when a background job finishes.
     repaint: Repaint,
 }
@@ -320,10 +321,16 @@ impl FlameTab {
             ui.separator();
         }
         if let Some(j) = &self.export_job {
+            let st = j.status();
+            let text = if st.refining {
+                format!("export: quality {}", export::quality_text(st.quality_done))
+            } else {
+                format!("export {:.0}%", j.fraction() * 100.0)
+            };
             ui.add(
                 egui::ProgressBar::new(j.fraction() as f32)
                     .desired_width(140.0)
-                    .text(format!("export {:.0}%", j.fraction() * 100.0)),
+                    .text(text),
             );
             if ui.button("Cancel").clicked() {
                 j.cancel();
