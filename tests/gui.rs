@@ -1910,3 +1910,52 @@ fn export_cancel_writes_nothing_and_keeps_the_files_saved_before() {
         .collect();
     assert!(tmp.is_empty(), "{tmp:?}");
 }
+
+#[test]
+fn explore_box_counting_of_the_escape_time_boundary() {
+    use ugnis::app::explore_tab::dimension::BoxSource;
+    use ugnis::escape::{C, EscapeDoc, Family};
+    let mut h = explore_tab();
+    // The Julia set of z² + 0 is the unit circle: its boundary has dimension 1.
+    let mut doc = EscapeDoc::new(Family::Julia {
+        power: 2,
+        c: C { re: 0.0, im: 0.0 },
+    });
+    doc.view = ugnis::escape::View::new([0.0, 0.0], 1.2);
+    h.state_mut().escape.doc = doc;
+    explore_topic(&mut h, "Dimension");
+    let t = std::time::Instant::now();
+    while h.state().explore.dimension.busy() || h.state().explore.dimension.result.is_none() {
+        assert!(t.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    h.state_mut().explore.dimension.source = BoxSource::Escape;
+    h.run_steps(1);
+    h.get_by_label("Count boxes").click();
+    h.run_steps(1);
+    let t = std::time::Instant::now();
+    while !h
+        .state()
+        .explore
+        .dimension
+        .result
+        .as_ref()
+        .is_some_and(|r| r.source.contains("escape-time"))
+    {
+        assert!(t.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    let d = h
+        .state()
+        .explore
+        .dimension
+        .result
+        .as_ref()
+        .unwrap()
+        .count
+        .dimension()
+        .unwrap();
+    assert!((d - 1.0).abs() < 0.1, "{d}");
+}

@@ -376,7 +376,10 @@ impl UgnisApp {
                 }
             }
             Tab::Explore => {
-                if let Some(r) = self.explore.ui(ui, self.flame.doc().flame()) {
+                if let Some(r) = self
+                    .explore
+                    .ui(ui, self.flame.doc().flame(), &self.escape.doc)
+                {
                     self.explore_request(r);
                 }
             }

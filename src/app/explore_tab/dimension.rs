@@ -9,6 +9,7 @@ use eframe::egui::{self, Rect, Vec2};
 use super::{ExploreRequest, Plot, checked_drag, explanation, section};
 use crate::app::notice::Notice;
 use crate::app::worker::{Repaint, TaskWorker, task_worker};
+use crate::escape::EscapeDoc;
 use crate::explore::dimension::{
     self, BoxCount, COASTLINE_DATA, Ink, LineFit, MAX_RATIOS, MAX_SAMPLES, Mask, VossLevel,
 };
@@ -27,6 +28,8 @@ pub enum BoxSource {
     /// An IFS preset by index.
     Preset(usize),
     Image(PathBuf),
+    /// The boundary of the escape-time tab's set (its inside pixels next to an outside one).
+    Escape,
 }
 
 /// A finished count.
@@ -111,11 +114,11 @@ impl DimensionView {
     /// Count an image file's boxes.
     pub fn count_image(&mut self, path: &Path) {
         self.source = BoxSource::Image(path.to_path_buf());
-        self.start(None);
+        self.start(None, None);
     }
 
     /// Start counting the current source (`flame` for the flame source).
-    pub fn start(&mut self, flame: Option<&Flame>) {
+    pub fn start(&mut self, flame: Option<&Flame>, escape: Option<&EscapeDoc>) {
         self.started = true;
         self.problem = None;
         let points = self.points as u64;
@@ -163,6 +166,20 @@ impl DimensionView {
                     })
                 })
             }
+            BoxSource::Escape => {
+                let Some(doc) = escape.cloned() else {
+                    self.problem = Some("There is no escape-time picture to count".into());
+                    return;
+                };
+                Box::new(move || {
+                    let count = dimension::box_count_mask(&escape_boundary(&doc)?).map_err(s)?;
+                    Ok(BoxResult {
+                        source: "the boundary of the escape-time set".into(),
+                        count,
+                        voss: None,
+                    })
+                })
+            }
             BoxSource::Image(p) => {
                 let p = p.clone();
                 Box::new(move || {
@@ -190,6 +207,7 @@ impl DimensionView {
         match &self.source {
             BoxSource::Flame => "The current flame".into(),
             BoxSource::Preset(i) => format!("IFS: {}", self.presets[*i].name),
+            BoxSource::Escape => "The escape-time set's boundary".into(),
             BoxSource::Image(p) => format!(
                 "Image: {}",
                 p.file_name()
@@ -198,7 +216,12 @@ impl DimensionView {
         }
     }
 
-    pub(super) fn controls(&mut self, ui: &mut egui::Ui, flame: &Flame) -> Option<ExploreRequest> {
+    pub(super) fn controls(
+        &mut self,
+        ui: &mut egui::Ui,
+        flame: &Flame,
+        escape: &EscapeDoc,
+    ) -> Option<ExploreRequest> {
         let mut req = None;
         explanation(
             ui,
@@ -240,13 +263,18 @@ impl DimensionView {
             .width(260.0)
             .show_ui(ui, |ui| {
                 ui.selectable_value(&mut src, BoxSource::Flame, "The current flame");
+                ui.selectable_value(
+                    &mut src,
+                    BoxSource::Escape,
+                    "The escape-time set's boundary",
+                );
                 for (i, p) in self.presets.iter().enumerate() {
                     ui.selectable_value(&mut src, BoxSource::Preset(i), format!("IFS: {}", p.name));
                 }
             });
         let changed = src != self.source;
         self.source = src;
-        if !matches!(self.source, BoxSource::Image(_)) {
+        if !matches!(self.source, BoxSource::Image(_) | BoxSource::Escape) {
             ui.horizontal(|ui| {
                 ui.label("Points");
                 checked_drag(
@@ -268,7 +296,7 @@ impl DimensionView {
                 .clicked()
                 || (changed && matches!(self.source, BoxSource::Preset(_)))
             {
-                self.start(Some(flame));
+                self.start(Some(flame), Some(escape));
             }
             if ui
                 .button("Image…")
@@ -282,7 +310,7 @@ impl DimensionView {
             }
         });
         if !self.started {
-            self.start(Some(flame));
+            self.start(Some(flame), Some(escape));
         }
         super::problem_label(ui, &self.problem);
         if let Some(r) = &self.result {
@@ -479,6 +507,36 @@ pub fn parse_ratios(text: &str) -> Result<Vec<f64>, String> {
         return Err("Type at least one ratio between 0 and 1".into());
     }
     Ok(out)
+}
+
+/// The boundary of an escape-time document's set as a mask: rendered with the longer side at
+/// most 1024 pixels, a pixel is set when it is inside and one of its four neighbours is not.
+fn escape_boundary(doc: &EscapeDoc) -> Result<Mask, String> {
+    let side = doc.width.max(doc.height).max(1) as f64;
+    let k = (1024.0 / side).min(1.0);
+    let w = ((doc.width as f64 * k).round() as u32).max(16);
+    let h = ((doc.height as f64 * k).round() as u32).max(16);
+    let (_, samples) =
+        crate::escape::render::render(&doc.params, doc.view, w, h).map_err(|e| e.to_string())?;
+    let (wu, hu) = (w as usize, h as usize);
+    let inside = |x: usize, y: usize| samples.get(y * wu + x).is_some_and(|s| s.inside);
+    let mut bits = vec![false; wu * hu];
+    for y in 0..hu {
+        for x in 0..wu {
+            if inside(x, y) {
+                let out = (x > 0 && !inside(x - 1, y))
+                    || (x + 1 < wu && !inside(x + 1, y))
+                    || (y > 0 && !inside(x, y - 1))
+                    || (y + 1 < hu && !inside(x, y + 1));
+                bits[y * wu + x] = out;
+            }
+        }
+    }
+    Ok(Mask {
+        width: w,
+        height: h,
+        bits,
+    })
 }
 
 #[cfg(test)]

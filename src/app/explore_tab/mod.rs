@@ -20,6 +20,7 @@ use eframe::egui::{self, Color32, Pos2, Rect, Vec2};
 
 use crate::app::notice::Notices;
 use crate::app::worker::repaint_of;
+use crate::escape::EscapeDoc;
 use crate::explore::ifs::Ifs;
 use crate::explore::raster::Framing;
 use crate::explore::{P2, check_range};
@@ -158,7 +159,12 @@ impl ExploreTab {
     }
 
     /// Draw the tab; `flame` is the flame tab's current flame (box counting can count it).
-    pub fn ui(&mut self, ui: &mut egui::Ui, flame: &Flame) -> Option<ExploreRequest> {
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        flame: &Flame,
+        escape: &EscapeDoc,
+    ) -> Option<ExploreRequest> {
         let mut req = None;
         // Background results first, so the numbers below are current.
         for n in self.lsystem.poll() {
@@ -201,7 +207,7 @@ impl ExploreTab {
                         Topic::Interpolation => self.fif.controls(ui),
                         Topic::Julia => self.julia.controls(ui),
                         Topic::Lorenz => self.lorenz.controls(ui),
-                        Topic::Dimension => self.dimension.controls(ui, flame),
+                        Topic::Dimension => self.dimension.controls(ui, flame, escape),
                     };
                     if r.is_some() {
                         req = r;
