@@ -1551,30 +1551,21 @@ fn explore_box_counting_of_the_current_flame() {
     h.run_steps(3);
     explore_topic(&mut h, "Dimension");
     // Wait for the automatic count of the first preset, then count the flame tab's flame.
-    let t = std::time::Instant::now();
-    while h.state().explore.dimension.busy() || h.state().explore.dimension.result.is_none() {
-        assert!(t.elapsed() < std::time::Duration::from_secs(60));
-        std::thread::sleep(std::time::Duration::from_millis(20));
-        h.run_steps(1);
-    }
+    wait_until(&mut h, |a| {
+        !a.explore.dimension.busy() && a.explore.dimension.result.is_some()
+    });
     h.state_mut().explore.dimension.source = BoxSource::Flame;
     h.state_mut().explore.dimension.points = 300_000.0;
     h.run_steps(1);
     h.get_by_label("Count boxes").click();
     h.run_steps(1);
-    let t = std::time::Instant::now();
-    while !h
-        .state()
-        .explore
-        .dimension
-        .result
-        .as_ref()
-        .is_some_and(|r| r.source.contains("flame"))
-    {
-        assert!(t.elapsed() < std::time::Duration::from_secs(60));
-        std::thread::sleep(std::time::Duration::from_millis(20));
-        h.run_steps(1);
-    }
+    wait_until(&mut h, |a| {
+        a.explore
+            .dimension
+            .result
+            .as_ref()
+            .is_some_and(|r| r.source.contains("flame"))
+    });
     let r = h.state().explore.dimension.result.clone().unwrap();
     assert_eq!(r.count.samples, 300_000);
     // log 3 / log 2.
@@ -1682,6 +1673,16 @@ fn a_scene_or_lsystem_file_given_at_start_opens_in_its_tab() {
     let h = harness(Start::File(root.join("tests/fixtures/explore.l")));
     assert_eq!(h.state().tab, ugnis::app::Tab::Explore);
     assert!(h.state().explore.lsystem.file.is_some());
+}
+
+/// Step the UI (every 20 ms, for at most a minute) until `done` holds for the app.
+fn wait_until(h: &mut Harness<'_, UgnisApp>, done: impl Fn(&UgnisApp) -> bool) {
+    let t = std::time::Instant::now();
+    while !done(h.state()) {
+        assert!(t.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        h.run_steps(1);
+    }
 }
 
 /// Wait (stepping the UI) until the flame tab's export has finished; its status line.
@@ -1924,29 +1925,20 @@ fn explore_box_counting_of_the_escape_time_boundary() {
     doc.view = ugnis::escape::View::new([0.0, 0.0], 1.2);
     h.state_mut().escape.doc = doc;
     explore_topic(&mut h, "Dimension");
-    let t = std::time::Instant::now();
-    while h.state().explore.dimension.busy() || h.state().explore.dimension.result.is_none() {
-        assert!(t.elapsed() < std::time::Duration::from_secs(60));
-        std::thread::sleep(std::time::Duration::from_millis(20));
-        h.run_steps(1);
-    }
+    wait_until(&mut h, |a| {
+        !a.explore.dimension.busy() && a.explore.dimension.result.is_some()
+    });
     h.state_mut().explore.dimension.source = BoxSource::Escape;
     h.run_steps(1);
     h.get_by_label("Count boxes").click();
     h.run_steps(1);
-    let t = std::time::Instant::now();
-    while !h
-        .state()
-        .explore
-        .dimension
-        .result
-        .as_ref()
-        .is_some_and(|r| r.source.contains("escape-time"))
-    {
-        assert!(t.elapsed() < std::time::Duration::from_secs(60));
-        std::thread::sleep(std::time::Duration::from_millis(20));
-        h.run_steps(1);
-    }
+    wait_until(&mut h, |a| {
+        a.explore
+            .dimension
+            .result
+            .as_ref()
+            .is_some_and(|r| r.source.contains("escape-time"))
+    });
     let d = h
         .state()
         .explore
