@@ -26,7 +26,7 @@ use crate::flame::framing;
 use crate::flame::geometry::Geometry;
 use crate::flame::histogram::{Bucket, Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
-use crate::flame::model::Flame;
+use crate::flame::model::{Flame, PaletteMode};
 use crate::flame::rng::FastRng;
 use crate::flame::state::{Part, RenderState};
 use crate::flame::tonemap::{LogScale, OutputFormat, ToneMap};
@@ -908,10 +908,11 @@ fn iterate_into_generic(
     n: u64,
     rng: &mut FastRng,
 ) -> u64 {
-    buf.clear();
-    let map = geom.bucket_map();
     const L: usize = crate::flame::chaos::LANES;
-    let mut tmp = [(0u32, 0f32, 0f32); L];
+    buf.clear();
+    // At most n samples are kept, and each step writes up to L places beyond the kept ones.
+    buf.reserve(n as usize + L);
+    let map = geom.bucket_map();
     let (mut idx, mut keep) = ([0u32; L], [0u32; L]);
     let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs| {
         // Buckets as arrays (vectorised), then a branch-free compaction of the visible
@@ -922,12 +923,23 @@ fn iterate_into_generic(
             idx[j] = i;
             keep[j] = (inside & (vs[j] > 0.0)) as u32;
         }
+        // Written straight into the spare capacity of `buf`: every place is written before
+        // it is counted, only the kept ones are counted.
+        let len = buf.len();
+        assert!(buf.capacity() - len >= L);
+        let spare = buf.as_mut_ptr().wrapping_add(len);
         let mut k = 0;
         for j in 0..m {
-            tmp[k & (L - 1)] = (idx[j], cs[j] as f32, vs[j] as f32);
+            // SAFETY: k ≤ j < m ≤ L places after `len`, within the capacity just checked.
+            unsafe {
+                spare
+                    .add(k & (L - 1))
+                    .write((idx[j], cs[j] as f32, vs[j] as f32))
+            };
             k += keep[j] as usize;
         }
-        buf.extend_from_slice(&tmp[..k.min(L)]);
+        // SAFETY: places len..len + k were initialised just above (k ≤ m ≤ L).
+        unsafe { buf.set_len(len + k.min(m)) };
     });
     accumulate(pal, hist, buf);
     bad
@@ -939,17 +951,42 @@ fn accumulate(pal: &PlotPalette, hist: &mut Histogram, buf: &[Pending]) {
     // The adds scatter over a histogram larger than the caches: ask for the bucket a few
     // samples ahead so its cache miss overlaps the adds in between.
     const AHEAD: usize = 40;
+    // With a stepped palette the entries are looked up for a block of samples first, in a
+    // loop of conversions the compiler vectorises (the same entry as `PlotPalette::lookup`).
+    const BLOCK: usize = 64;
     let data = &mut hist.data;
-    for (i, &(idx, c, v)) in buf.iter().enumerate() {
+    let colors = &pal.colors[..];
+    let step = pal.mode == PaletteMode::Step && !colors.is_empty();
+    let (nf, top) = (colors.len() as f64, colors.len().saturating_sub(1) as f64);
+    let add = |data: &mut [Bucket], i: usize, idx: u32, p: [f32; 4], v: f32| {
         if let Some(&(ahead, _, _)) = buf.get(i + AHEAD) {
             prefetch(data.as_ptr().wrapping_add(ahead as usize));
         }
-        let p = pal.lookup(c as f64);
         let b = &mut data[idx as usize];
         b[0] += p[0] * v;
         b[1] += p[1] * v;
         b[2] += p[2] * v;
         b[3] += p[3] * v;
+    };
+    if !step {
+        for (i, &(idx, c, v)) in buf.iter().enumerate() {
+            add(data, i, idx, pal.lookup(c as f64), v);
+        }
+        return;
+    }
+    let mut entry = [0u32; BLOCK];
+    for (b, block) in buf.chunks(BLOCK).enumerate() {
+        for (e, &(_, c, _)) in entry.iter_mut().zip(block) {
+            // max/min also send NaN to 0, as the saturating cast of `lookup` does.
+            let f = (c as f64 * nf).max(0.0).min(top);
+            // SAFETY: f is finite and within 0..=top, which fits a u32.
+            *e = unsafe { f.to_int_unchecked::<u32>() };
+        }
+        for (j, (&(idx, _, v), &e)) in block.iter().zip(&entry).enumerate() {
+            // SAFETY: e ≤ top = colors.len() - 1.
+            let p = unsafe { *colors.get_unchecked(e as usize) };
+            add(data, b * BLOCK + j, idx, p, v);
+        }
     }
 }
 
@@ -1146,4 +1183,58 @@ pub fn render(flame: &Flame, opts: &RenderOptions) -> Result<DynamicImage, Rende
     let never = AtomicBool::new(false);
     r.run_all(1, &never, |_| {});
     Ok(r.finish())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gradient::Gradient;
+
+    /// The block-wise palette lookup of `accumulate` adds what `PlotPalette::lookup` gives,
+    /// bit for bit, at the edges too (NaN, negative, 1 and beyond), in both palette modes.
+    #[test]
+    fn accumulate_adds_the_entries_lookup_gives() {
+        let edge = [
+            f32::NAN,
+            -1.0,
+            -0.0,
+            0.0,
+            1e-9,
+            0.5,
+            0.999_999,
+            1.0,
+            1.5,
+            f32::INFINITY,
+        ];
+        let buf: Vec<Pending> = (0..300u32)
+            .map(|i| {
+                let c = match edge.get(i as usize % 13) {
+                    Some(&e) => e,
+                    None => (i as f32 * 0.618_034).fract(),
+                };
+                (i % 7, c, 0.25 + (i % 3) as f32)
+            })
+            .collect();
+        for mode in [PaletteMode::Step, PaletteMode::Linear] {
+            let flame = Flame {
+                palette: Gradient::grey_ramp(),
+                palette_mode: mode,
+                ..Flame::default()
+            };
+            let pal = PlotPalette::new(&flame);
+            let mut got = Histogram::new(7, 1);
+            accumulate(&pal, &mut got, &buf);
+            let mut want = Histogram::new(7, 1);
+            for &(idx, c, v) in &buf {
+                let p = pal.lookup(c as f64);
+                for (w, p) in want.data[idx as usize].iter_mut().zip(p) {
+                    *w += p * v;
+                }
+            }
+            let bits = |h: &Histogram| -> Vec<u32> {
+                h.data.iter().flatten().map(|v| v.to_bits()).collect()
+            };
+            assert_eq!(bits(&got), bits(&want), "{mode:?}");
+        }
+    }
 }
