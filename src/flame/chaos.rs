@@ -656,6 +656,27 @@ pub struct Chaos {
     /// Plotted visibility of each xform, and the one of all of them when they agree.
     vis: Vec<f64>,
     same_vis: Option<f64>,
+    /// Every xform is an affine map times `linear` (no post-affine), with no final xform,
+    /// camera or xaos: orbits then need no grouping by xform (see [`AffineStep`]).
+    affine: Option<Vec<AffineStep>>,
+}
+
+/// One linear-only xform as a table row, for stepping orbits in place: the chosen row of each
+/// orbit is read, no orbit moves. The arithmetic is the general path's, in its order.
+#[derive(Clone, Copy, Debug)]
+struct AffineStep {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: f64,
+    e: f64,
+    f: f64,
+    /// Weight of `linear`.
+    w: f64,
+    /// Colour blend c' = sc + keep·c: sc = speed·colour, keep = 1 − speed.
+    sc: f64,
+    keep: f64,
+    bad_limit: f64,
 }
 
 /// Build the 16 384-entry selection table for weights `w` (flame.md §3.1).
@@ -747,7 +768,31 @@ impl Chaos {
             }
         }
         let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();
+        let affine = (final_xform.is_none() && !xaos && Projection::of(flame).is_none())
+            .then(|| {
+                xforms
+                    .iter()
+                    .map(|x| {
+                        let w = x.linear_only.filter(|_| x.post.is_none())?;
+                        let a = x.coefs;
+                        Some(AffineStep {
+                            a: a.a,
+                            b: a.b,
+                            c: a.c,
+                            d: a.d,
+                            e: a.e,
+                            f: a.f,
+                            w,
+                            sc: x.color_speed * x.color,
+                            keep: 1.0 - x.color_speed,
+                            bad_limit: x.bad_limit,
+                        })
+                    })
+                    .collect::<Option<Vec<_>>>()
+            })
+            .flatten();
         Ok(Chaos {
+            affine,
             same_vis: vis.iter().all(|&v| v == vis[0]).then_some(vis[0]),
             vis,
             xforms,
@@ -875,90 +920,128 @@ impl Chaos {
             // Four interleaved streams of counters and positions avoid store-to-load chains on
             // a single counter.
             let w = nx + 1;
-            ln.counts.fill(0);
             // Four 16-bit draws per random word (14 bits are used, as flam3's table grain).
             const G: usize = CHOOSE_GRAIN - 1;
-            if self.xaos {
-                for q in 0..LANES / 4 {
-                    let mut u = rng.u64();
-                    for r in 0..4 {
-                        let l = 4 * q + r;
-                        let prev = src.last[l];
-                        let row = if prev == u16::MAX {
-                            0
-                        } else {
-                            prev as usize + 1
-                        };
-                        let i = self.tables[row * CHOOSE_GRAIN + (u as usize & G)] as usize;
-                        u >>= 16;
-                        ln.choice[l] = i as u16;
-                        ln.counts[r * w + i] += 1;
-                    }
-                }
-            } else {
+            if let (Some(rows), true) = (&self.affine, ln.clean) {
+                // Affine IFS past the fuse: every orbit steps in place by its drawn row.
                 let table = &self.tables[..CHOOSE_GRAIN];
                 for q in 0..LANES / 4 {
                     let mut u = rng.u64();
                     for r in 0..4 {
-                        let i = table[u as usize & G] as usize;
+                        ln.choice[4 * q + r] = table[u as usize & G];
                         u >>= 16;
-                        ln.choice[4 * q + r] = i as u16;
-                        ln.counts[r * w + i] += 1;
                     }
                 }
-            }
-            // bounds[i]: start of group i; positions of stream s inside group i follow.
-            let mut acc = 0usize;
-            for i in 0..nx {
-                ln.bounds[i] = acc;
-                for st in 0..4 {
-                    let c = ln.counts[st * w + i];
-                    ln.counts[st * w + i] = acc;
-                    acc += c;
+                let mut any_bad = false;
+                for l in 0..LANES {
+                    let i = ln.choice[l];
+                    let t = &rows[i as usize];
+                    let (x, y) = (src.x[l], src.y[l]);
+                    let (tx, ty) = (t.a * x + t.b * y + t.e, t.c * x + t.d * y + t.f);
+                    let (x, y) = (0.0 + t.w * tx, 0.0 + t.w * ty);
+                    dst.x[l] = x;
+                    dst.y[l] = y;
+                    dst.z[l] = 0.0 + t.w * src.z[l];
+                    dst.c[l] = t.sc + t.keep * src.c[l];
+                    let b = !within(x, t.bad_limit) | !within(y, t.bad_limit);
+                    ln.bad[l] = b;
+                    any_bad |= b;
+                    ln.group[l] = i;
                 }
-            }
-            ln.bounds[nx] = acc;
-            for l in 0..LANES {
-                let k = (l & 3) * w + ln.choice[l] as usize;
-                ln.order[ln.counts[k] & M] = l as u16;
-                ln.counts[k] += 1;
-            }
-            // Gather the orbits into `dst` in group order.
-            for (p, &l) in ln.order.iter().enumerate() {
-                let l = l as usize & M;
-                dst.x[p] = src.x[l];
-                dst.y[p] = src.y[l];
-                dst.z[p] = src.z[l];
-                dst.c[p] = src.c[l];
-            }
-            if self.xaos {
-                for (p, &l) in ln.order.iter().enumerate() {
-                    dst.last[p] = src.last[l as usize & M];
+                if any_bad {
+                    for l in 0..LANES {
+                        if ln.bad[l] {
+                            dst.x[l] = rng.f11();
+                            dst.y[l] = rng.f11();
+                            dst.z[l] = 0.0;
+                        }
+                    }
                 }
-            }
-            if !ln.clean {
+                ln.cur ^= 1;
+            } else {
+                ln.counts.fill(0);
+                if self.xaos {
+                    for q in 0..LANES / 4 {
+                        let mut u = rng.u64();
+                        for r in 0..4 {
+                            let l = 4 * q + r;
+                            let prev = src.last[l];
+                            let row = if prev == u16::MAX {
+                                0
+                            } else {
+                                prev as usize + 1
+                            };
+                            let i = self.tables[row * CHOOSE_GRAIN + (u as usize & G)] as usize;
+                            u >>= 16;
+                            ln.choice[l] = i as u16;
+                            ln.counts[r * w + i] += 1;
+                        }
+                    }
+                } else {
+                    let table = &self.tables[..CHOOSE_GRAIN];
+                    for q in 0..LANES / 4 {
+                        let mut u = rng.u64();
+                        for r in 0..4 {
+                            let i = table[u as usize & G] as usize;
+                            u >>= 16;
+                            ln.choice[4 * q + r] = i as u16;
+                            ln.counts[r * w + i] += 1;
+                        }
+                    }
+                }
+                // bounds[i]: start of group i; positions of stream s inside group i follow.
+                let mut acc = 0usize;
+                for i in 0..nx {
+                    ln.bounds[i] = acc;
+                    for st in 0..4 {
+                        let c = ln.counts[st * w + i];
+                        ln.counts[st * w + i] = acc;
+                        acc += c;
+                    }
+                }
+                ln.bounds[nx] = acc;
+                for l in 0..LANES {
+                    let k = (l & 3) * w + ln.choice[l] as usize;
+                    ln.order[ln.counts[k] & M] = l as u16;
+                    ln.counts[k] += 1;
+                }
+                // Gather the orbits into `dst` in group order.
                 for (p, &l) in ln.order.iter().enumerate() {
                     let l = l as usize & M;
-                    dst.consec[p] = src.consec[l];
-                    dst.step[p] = src.step[l];
-                    dst.last[p] = src.last[l];
+                    dst.x[p] = src.x[l];
+                    dst.y[p] = src.y[l];
+                    dst.z[p] = src.z[l];
+                    dst.c[p] = src.c[l];
                 }
-            }
-            ln.cur ^= 1;
-            for i in 0..nx {
-                let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
-                if end > start {
-                    let r = start..end;
-                    self.xforms[i].apply_soa(
-                        &mut dst.x[r.clone()],
-                        &mut dst.y[r.clone()],
-                        &mut dst.z[r.clone()],
-                        &mut dst.c[r.clone()],
-                        &mut ln.g,
-                        rng,
-                    );
-                    ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
-                    ln.group[r].fill(i as u16);
+                if self.xaos {
+                    for (p, &l) in ln.order.iter().enumerate() {
+                        dst.last[p] = src.last[l as usize & M];
+                    }
+                }
+                if !ln.clean {
+                    for (p, &l) in ln.order.iter().enumerate() {
+                        let l = l as usize & M;
+                        dst.consec[p] = src.consec[l];
+                        dst.step[p] = src.step[l];
+                        dst.last[p] = src.last[l];
+                    }
+                }
+                ln.cur ^= 1;
+                for i in 0..nx {
+                    let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
+                    if end > start {
+                        let r = start..end;
+                        self.xforms[i].apply_soa(
+                            &mut dst.x[r.clone()],
+                            &mut dst.y[r.clone()],
+                            &mut dst.z[r.clone()],
+                            &mut dst.c[r.clone()],
+                            &mut ln.g,
+                            rng,
+                        );
+                        ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
+                        ln.group[r].fill(i as u16);
+                    }
                 }
             }
             // The common step: no bad value, every orbit a sample.
@@ -1200,6 +1283,83 @@ mod tests {
         for (p, q) in [(a.1, b.1), (a.2, b.2), (a.3, b.3), (a.4, b.4)] {
             assert!((p - q).abs() < 0.01, "{a:?} vs {b:?}");
         }
+    }
+
+    /// Run the lane runner and bin the plotted points on an 8×8 grid over [−1, 2]²; also the
+    /// mean colour, the number of samples and of bad values.
+    fn lane_grid(ch: &Chaos, seed: u64) -> ([f64; 64], f64, f64, u64) {
+        let mut rng = FastRng::new(seed);
+        let mut ln = Lanes::new();
+        let (mut grid, mut n, mut c) = ([0.0; 64], 0.0, 0.0);
+        let mut bad = 0;
+        for _ in 0..30 {
+            bad += ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, cs, vs| {
+                for j in 0..xs.len() {
+                    if vs[j] >= 0.0 {
+                        assert!(xs[j].is_finite() && ys[j].is_finite());
+                        let cell = |v: f64| (((v + 1.0) / 3.0 * 8.0).clamp(0.0, 7.0)) as usize;
+                        grid[cell(ys[j]) * 8 + cell(xs[j])] += 1.0;
+                        n += 1.0;
+                        c += cs[j];
+                    }
+                }
+            });
+        }
+        (grid.map(|g| g / n), n, c / n, bad)
+    }
+
+    #[test]
+    fn affine_ifs_steps_orbits_in_place_with_the_same_statistics() {
+        // Unequal weights, a colour blend and a linear weight other than 1: the in-place rows
+        // and the grouped general path plot the same distribution.
+        let mut f = Flame::default();
+        for (i, (e, ff, w)) in [(0.0, 0.0, 1.0), (0.5, 0.0, 2.0), (0.25, 0.5, 0.5)]
+            .into_iter()
+            .enumerate()
+        {
+            let mut x = Xform::linear(Affine::new(0.5, 0.1, -0.1, 0.5, e, ff), w, i as f64 / 2.0);
+            x.vars[0].weight = 0.9;
+            x.color_speed = 0.3;
+            f.xforms.push(x);
+        }
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.affine.is_some());
+        let general = Chaos {
+            affine: None,
+            ..Chaos::new(&f).unwrap()
+        };
+        let (a, na, ca, _) = lane_grid(&ch, 3);
+        let (b, nb, cb, _) = lane_grid(&general, 3);
+        assert_eq!((na, nb), (300_000.0, 300_000.0));
+        assert!((ca - cb).abs() < 0.01, "{ca} vs {cb}");
+        let l1: f64 = a.iter().zip(&b).map(|(p, q)| (p - q).abs()).sum();
+        assert!(l1 < 0.02, "cell frequencies differ by {l1}");
+        // A post-affine, a final xform or xaos take the general path.
+        let mut g = f.clone();
+        g.xforms[1].post = Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0);
+        assert!(Chaos::new(&g).unwrap().affine.is_none());
+    }
+
+    #[test]
+    fn affine_ifs_replaces_bad_values_and_keeps_plotting() {
+        // An expanding map sends orbits past the bad-value limit: they restart at random
+        // points, are counted, and every plotted point is finite.
+        let mut f = Flame::default();
+        f.xforms.push(Xform::linear(
+            Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+            1.0,
+            0.0,
+        ));
+        f.xforms.push(Xform::linear(
+            Affine::new(1e30, 0.0, 0.0, 1e30, 0.0, 0.0),
+            1.0,
+            1.0,
+        ));
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.affine.is_some());
+        let (_, n, _, bad) = lane_grid(&ch, 4);
+        assert_eq!(n, 300_000.0);
+        assert!(bad > 1000, "{bad} bad values");
     }
 
     fn projection(cam: crate::flame::model::Camera3d) -> Projection {
