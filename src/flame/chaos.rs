@@ -844,6 +844,18 @@ impl Chaos {
         Pt { x, y, z: 0.0, c }
     }
 
+    /// A random start point iterated through the fuse, and the xform applied last.
+    fn fused_start(&self, rng: &mut FastRng) -> (Pt, usize) {
+        let mut p = Self::start_point(rng);
+        let mut last = None;
+        for _ in 0..FUSE {
+            let i = self.choose(last, rng);
+            p = self.xforms[i].apply(p, rng).0;
+            last = Some(i);
+        }
+        (p, last.unwrap_or(0))
+    }
+
     /// Run one sub-batch of `n` plotted samples (flame.md §3.3). `plot(p, vis)` receives
     /// every point after the fuse, final xform applied. Returns the number of bad values.
     #[inline(always)]
@@ -883,8 +895,9 @@ impl Chaos {
     /// at every step each orbit draws its xform, and each xform is applied to all the orbits
     /// that drew it as one array computation. The orbits persist between calls (a worker keeps
     /// one [`Lanes`] for its whole render): every orbit starts at a random point, is fused for
-    /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; only the
-    /// orbit restarts every 10 000 samples are replaced by 256 long orbits per worker.
+    /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; one
+    /// orbit, chosen at random, restarts (fused) at every call, so that orbits live about as
+    /// long as flam3's (one per sub-batch of 10 000 samples).
     ///
     /// `plot(xs, ys, zs, cs, vis)` receives the points of a step (final xform and camera
     /// applied) with their visibilities; an entry with a negative visibility is not a sample
@@ -906,6 +919,17 @@ impl Chaos {
                 (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
             }
             ln.started = true;
+        } else {
+            // flam3 starts a new orbit for every sub-batch of 10 000 samples; a flame that
+            // converges slowly (one contracting xform, say) shows the path towards its
+            // attractor from each start. Restart one orbit per call, chosen at random: every
+            // orbit then lives for ~LANES calls, about 10 000 of its own samples, the same
+            // share of fresh starts.
+            let l = rng.u32() as usize % LANES;
+            let (p, last) = self.fused_start(rng);
+            let o = &mut ln.sets[ln.cur & 1];
+            (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
+            (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
         }
         ln.counts.resize(4 * (nx + 1), 0);
         ln.bounds.resize(nx + 1, 0);
@@ -1338,6 +1362,48 @@ mod tests {
         let mut g = f.clone();
         g.xforms[1].post = Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0);
         assert!(Chaos::new(&g).unwrap().affine.is_none());
+    }
+
+    #[test]
+    fn orbits_restart_as_often_as_flam3s() {
+        // One xform contracting slowly to the origin: only fresh orbits plot points away from
+        // it. flam3 starts one orbit per sub-batch; the lane runner restarts one orbit per call,
+        // so the share of such points is about the same (long-lived orbits alone: ~20× fewer).
+        let mut f = Flame::default();
+        f.xforms.push(Xform::linear(
+            Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0),
+            1.0,
+            0.0,
+        ));
+        let ch = Chaos::new(&f).unwrap();
+        let (calls, n) = (5000, 200);
+        let mut rng = FastRng::new(8);
+        let (mut far, mut total) = (0.0, 0.0);
+        for _ in 0..calls {
+            ch.run_sub_batch(n, &mut rng, |p, _| {
+                far += (p.x.abs() > 0.01) as u8 as f64;
+                total += 1.0;
+            });
+        }
+        let scalar = far / total;
+        let mut ln = Lanes::new();
+        let (mut far, mut total) = (0.0, 0.0);
+        for _ in 0..calls {
+            ch.run_lanes(n, &mut rng, &mut ln, |xs, _ys, _zs, _cs, vs| {
+                for (x, v) in xs.iter().zip(vs) {
+                    if *v >= 0.0 {
+                        far += (x.abs() > 0.01) as u8 as f64;
+                        total += 1.0;
+                    }
+                }
+            });
+        }
+        let lanes = far / total;
+        assert!(scalar > 0.05, "{scalar}");
+        assert!(
+            (0.5..1.5).contains(&(lanes / scalar)),
+            "{lanes} vs {scalar}"
+        );
     }
 
     #[test]
