@@ -165,6 +165,16 @@ pub struct SpatialFilter {
 impl SpatialFilter {
     pub fn new(shape: FilterShape, radius: f64, os: u32) -> SpatialFilter {
         let os_i = os as usize;
+        if radius <= 0.0 {
+            // No filter: each pixel takes the first bucket of its block, as Fractorium does
+            // (flam3 has no such case and averages the block: a 2×2 box at supersample 2).
+            // Thin lines of flames made in Fractorium with filter 0 keep their width.
+            return SpatialFilter {
+                width: 1,
+                taps: vec![1.0],
+                gutter: 0,
+            };
+        }
         let sigma = support(shape);
         let fw = 2.0 * sigma * os as f64 * radius;
         let mut width = fw.floor() as usize + 1;
@@ -236,6 +246,14 @@ mod tests {
         let f = SpatialFilter::new(FilterShape::Gaussian, 1.0, 2);
         assert_eq!(f.width, 8);
         assert_eq!(f.gutter, 3);
+    }
+
+    #[test]
+    fn a_zero_radius_takes_one_bucket_per_pixel() {
+        for os in 1..=3 {
+            let f = SpatialFilter::new(FilterShape::Gaussian, 0.0, os);
+            assert_eq!((f.width, f.taps.clone(), f.gutter), (1, vec![1.0], 0));
+        }
     }
 
     #[test]
