@@ -310,11 +310,13 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("blur", eval::<34>)
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(34) | flag::FLAM3 | flag::RANDOM)
+        .sum()
         .prepare(prepare)
         .batch(batch::<34>),
     VarDef::new("gaussian_blur", eval::<35>)
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(35) | flag::FLAM3 | flag::RANDOM)
+        .sum()
         .prepare(prepare)
         .batch(batch::<35>),
     VarDef::new("radial_blur", eval::<36>)
@@ -331,6 +333,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(37) | flag::FLAM3 | flag::RANDOM)
+        .sum()
         .prepare(prepare)
         .batch(batch::<37>),
     VarDef::new("ngon", eval::<38>)
@@ -359,6 +362,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("arch", eval::<41>)
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(41) | flag::FLAM3 | flag::RANDOM)
+        .sum()
         .prepare(prepare)
         .batch(batch::<41>),
     VarDef::new("tangent", eval::<42>)
@@ -369,6 +373,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("square", eval::<43>)
         .needs(need::SUMSQ | need::SQRT)
         .flags(zf(43) | flag::FLAM3 | flag::RANDOM)
+        .sum()
         .prepare(prepare)
         .batch(batch::<43>),
     VarDef::new("rays", eval::<44>)

@@ -937,6 +937,54 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
 mod tests {
     use super::*;
 
+    /// The `pre_`/`post_` forms that add their output to the point in Fractorium (the blurs
+    /// and the random shapes); every other form replaces it. flam3's `pre_blur` adds too.
+    #[test]
+    fn blur_forms_add_to_the_point() {
+        let sum = [
+            "arch",
+            "blur",
+            "blur3D",
+            "blur_circle",
+            "blur_heart",
+            "blur_square",
+            "circleblur",
+            "CircleRand",
+            "concentric",
+            "dc_cube",
+            "gaussian_blur",
+            "line",
+            "Lissajous",
+            "pie",
+            "pie3D",
+            "randCubes",
+            "sineblur",
+            "sphereblur",
+            "Spirograph",
+            "square",
+            "square3D",
+            "starblur",
+            "SuperShape3D",
+            "waffle",
+            "zblur",
+            "ztranslate",
+        ];
+        for name in sum {
+            let (id, form) = parse_name(&format!("pre_{name}")).expect(name);
+            assert_eq!(form, Form::Pre);
+            assert_eq!(info(id).assign, Assign::Sum, "{name}");
+        }
+        for name in ["linear", "spherical", "julia", "stripes", "hexes"] {
+            let (id, _) = parse_name(&format!("pre_{name}")).expect(name);
+            assert_eq!(info(id).assign, Assign::Set, "{name}");
+        }
+        let (id, form) = parse_name("pre_blur").unwrap();
+        assert_eq!(
+            (id, form, info(id).assign),
+            (GAUSSIAN_BLUR, Form::Pre, Assign::Sum)
+        );
+    }
+
     /// The list of foreign names holds only names the registry does not know (an implemented
     /// variation is recognised by the registry, so its entry would be dead).
     #[test]
