@@ -717,29 +717,16 @@ impl Renderer {
     /// widest). Same exposure; noisier. The GUI shows it first after an edit and while
     /// dragging.
     pub fn preview_draft(&self) -> DynamicImage {
-        // Sum the thread histograms and log-scale in one pass (no merged copy).
-        let ls = LogScale::new(&self.flame, self.density());
-        let hists = &self.hists;
-        let acc: Vec<Bucket> = (0..hists[0].data.len())
-            .into_par_iter()
-            .with_min_len(4096)
-            .map(|i| {
-                let mut b = hists[0].data[i];
-                for h in &hists[1..] {
-                    let o = h.data[i];
-                    b = [b[0] + o[0], b[1] + o[1], b[2] + o[2], b[3] + o[3]];
-                }
-                if b[3] <= 0.0 {
-                    return [0.0; 4];
-                }
-                let s = ls.factor(b[3] as f64) as f32;
-                [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
-            })
-            .collect();
+        // The thread histograms are summed and log-scaled row by row inside the filter's bands
+        // (no merged copy, one pass over memory).
+        let src = Rows::Draft {
+            hists: &self.hists,
+            ls: LogScale::new(&self.flame, self.density()),
+        };
         filter_and_tonemap(
             &self.flame,
             &self.geom,
-            &acc,
+            &src,
             self.format,
             self.out_rows.clone(),
         )
@@ -1070,14 +1057,52 @@ pub fn develop_rows(
             &acc
         }
     };
-    filter_and_tonemap(flame, geom, acc, format, out_rows)
+    filter_and_tonemap(flame, geom, &Rows::Acc(acc), format, out_rows)
 }
 
 /// Spatial filter (separable, downsampling by os) and tone mapping into the output image.
+/// Where the filter reads its bucket rows from.
+enum Rows<'a> {
+    /// Log-scaled (density-estimated) buckets.
+    Acc(&'a [Bucket]),
+    /// Raw thread histograms, summed and log-scaled as they are read.
+    Draft {
+        hists: &'a [Histogram],
+        ls: LogScale,
+    },
+}
+
+impl Rows<'_> {
+    /// Bucket row `r` (`bw` buckets), in `buf` when it has to be computed.
+    fn row<'b>(&'b self, r: usize, bw: usize, buf: &'b mut Vec<Bucket>) -> &'b [Bucket] {
+        match self {
+            Rows::Acc(acc) => &acc[r * bw..(r + 1) * bw],
+            Rows::Draft { hists, ls } => {
+                buf.clear();
+                buf.extend_from_slice(&hists[0].data[r * bw..(r + 1) * bw]);
+                for h in &hists[1..] {
+                    for (b, o) in buf.iter_mut().zip(&h.data[r * bw..(r + 1) * bw]) {
+                        *b = [b[0] + o[0], b[1] + o[1], b[2] + o[2], b[3] + o[3]];
+                    }
+                }
+                for b in buf.iter_mut() {
+                    *b = if b[3] <= 0.0 {
+                        [0.0; 4]
+                    } else {
+                        let s = ls.factor(b[3] as f64) as f32;
+                        [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
+                    };
+                }
+                buf
+            }
+        }
+    }
+}
+
 fn filter_and_tonemap(
     flame: &Flame,
     geom: &Geometry,
-    acc: &[Bucket],
+    acc: &Rows,
     format: OutputFormat,
     out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
@@ -1100,8 +1125,9 @@ fn filter_and_tonemap(
         let r0 = (y_first + y0) * os + delta - acc_row0;
         let nr = (rows - 1) * os + fw;
         let mut tmp = vec![[0f64; 4]; nr * w];
+        let mut row = Vec::new();
         for r in 0..nr {
-            let src = &acc[(r0 + r) * bw..(r0 + r + 1) * bw];
+            let src = acc.row(r0 + r, bw, &mut row);
             for x in 0..w {
                 let mut s = [0f64; 4];
                 let base = x * os + delta;
@@ -1189,6 +1215,35 @@ pub fn render(flame: &Flame, opts: &RenderOptions) -> Result<DynamicImage, Rende
 mod tests {
     use super::*;
     use crate::gradient::Gradient;
+
+    /// Without density estimation the draft (thread histograms summed and log-scaled row by
+    /// row inside the filter) is the developed picture, byte for byte.
+    #[test]
+    fn the_draft_is_the_picture_when_density_estimation_is_off() {
+        let mut f = crate::io::read_flames(
+            std::path::Path::new(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/examples/orchid.flame"
+            )),
+            &Default::default(),
+        )
+        .unwrap()
+        .value
+        .remove(0);
+        f.resize_keep_framing(96, 72);
+        f.quality = 20.0;
+        f.supersample = 2;
+        f.estimator_radius = 0.0;
+        let opts = RenderOptions {
+            threads: 2,
+            ..RenderOptions::default()
+        };
+        let mut r = Renderer::new(&f, &opts).unwrap();
+        r.run(40_000, &AtomicBool::new(false));
+        let (draft, full) = (r.preview_draft().to_rgb8(), r.preview().to_rgb8());
+        assert!(draft.pixels().any(|p| p.0 != [0, 0, 0]));
+        assert_eq!(draft.as_raw(), full.as_raw());
+    }
 
     /// The block-wise palette lookup of `accumulate` adds what `PlotPalette::lookup` gives,
     /// bit for bit, at the edges too (NaN, negative, 1 and beyond), in both palette modes.

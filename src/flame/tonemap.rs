@@ -126,6 +126,7 @@ impl ToneMap {
 }
 
 /// flam3 `flam3_calc_newrgb`: scale a colour by ls with highlight handling.
+#[inline(always)]
 pub fn highlight(c: [f64; 3], ls: f64, hp: f64) -> [f64; 3] {
     if ls == 0.0 || (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0) {
         return [0.0; 3];
@@ -137,8 +138,12 @@ pub fn highlight(c: [f64; 3], ls: f64, hp: f64) -> [f64; 3] {
         }
     }
     let maxa = ls * c[m];
+    if maxa <= 255.0 || maxa.is_nan() {
+        // λ = 1: (1 − λ)·newls + λ·ls is ls exactly (newls is finite, c[m] > 0).
+        return [ls * c[0], ls * c[1], ls * c[2]];
+    }
     let newls = 255.0 / c[m];
-    if maxa > 255.0 && hp >= 0.0 {
+    if hp >= 0.0 {
         let col = [
             newls * c[0] / 255.0,
             newls * c[1] / 255.0,
@@ -149,7 +154,7 @@ pub fn highlight(c: [f64; 3], ls: f64, hp: f64) -> [f64; 3] {
         let col = hsv_to_rgb(hsv);
         [255.0 * col[0], 255.0 * col[1], 255.0 * col[2]]
     } else {
-        let lambda = if maxa <= 255.0 { 1.0 } else { (-hp).min(1.0) };
+        let lambda = (-hp).min(1.0);
         let s = (1.0 - lambda) * newls + lambda * ls;
         [s * c[0], s * c[1], s * c[2]]
     }
