@@ -6,9 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
-use ugnis::flame::render::{
-    MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Renderer, estimate_memory, short_num,
-};
+use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Renderer, short_num};
 use ugnis::flame::state::Part;
 use ugnis::flame::strips::{self, Strip};
 use ugnis::flame::{Flame, OutputFormat};
@@ -190,27 +188,15 @@ pub fn choose_strips(
         strips::plan(flame, k)?;
         return Ok(k);
     }
-    let budget = ugnis::memory::budget_or(opts.memory_limit);
-    let est = estimate_memory(flame, opts);
-    if est.total <= budget.bytes {
-        return Ok(1);
+    let fit = strips::fit(flame, opts)?;
+    if fit.strips > 1 {
+        eprintln!(
+            "{what}: {}: rendering in {} strips",
+            fit.describe(),
+            fit.strips
+        );
     }
-    match strips::strips_for_budget(flame, opts, budget.bytes)? {
-        Some(k) => {
-            eprintln!(
-                "{what}: needs about {} at once, {} available ({}): rendering in {k} strips",
-                ugnis::memory::fmt_bytes(est.total),
-                ugnis::memory::fmt_bytes(budget.bytes),
-                budget.source
-            );
-            Ok(k)
-        }
-        // Not even one-row strips fit: the whole render's check gives the clear message.
-        None => {
-            ugnis::flame::render::check_memory(flame, opts)?;
-            Ok(1)
-        }
-    }
+    Ok(fit.strips)
 }
 
 pub fn run(a: RenderArgs) -> Result<()> {

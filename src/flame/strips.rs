@@ -12,7 +12,10 @@ use std::ops::Range;
 use crate::flame::density::DeFilters;
 use crate::flame::geometry::Geometry;
 use crate::flame::model::Flame;
-use crate::flame::render::{RenderError, RenderOptions, estimate_memory_rows};
+use crate::flame::render::{
+    RenderError, RenderOptions, check_memory, estimate_memory, estimate_memory_rows,
+};
+use crate::memory::Budget;
 
 /// Most strips a render may be cut into.
 pub const MAX_STRIPS: usize = 10_000;
@@ -107,6 +110,53 @@ pub fn strips_for_budget(
         }
     }
     Ok(Some(hi))
+}
+
+/// How a render fits in memory.
+#[derive(Clone, Debug)]
+pub struct Fit {
+    /// 1: the whole image at once; more: in this many strips.
+    pub strips: usize,
+    /// The estimate of the whole render at once, in bytes.
+    pub needed: u64,
+    /// The memory it may use.
+    pub budget: Budget,
+}
+
+impl Fit {
+    /// "needs about 3.1 GiB at once, 2 GiB available (memory limit)".
+    pub fn describe(&self) -> String {
+        format!(
+            "needs about {} at once, {} available ({})",
+            crate::memory::fmt_bytes(self.needed),
+            crate::memory::fmt_bytes(self.budget.bytes),
+            self.budget.source
+        )
+    }
+}
+
+/// The fewest strips a render needs within its memory budget (`opts.memory_limit`, or what
+/// the system allows). The whole render's memory error when not even strips one output row
+/// high fit.
+pub fn fit(flame: &Flame, opts: &RenderOptions) -> Result<Fit, RenderError> {
+    let budget = crate::memory::budget_or(opts.memory_limit);
+    let needed = estimate_memory(flame, opts).total;
+    let strips = if needed <= budget.bytes {
+        1
+    } else {
+        match strips_for_budget(flame, opts, budget.bytes)? {
+            Some(k) => k,
+            None => {
+                check_memory(flame, opts)?;
+                1
+            }
+        }
+    };
+    Ok(Fit {
+        strips,
+        needed,
+        budget,
+    })
 }
 
 #[cfg(test)]

@@ -155,6 +155,7 @@ impl FlameTab {
             refine: false,
             save_state: false,
             resume: None,
+            memory_limit: None,
         });
     }
 
@@ -180,6 +181,7 @@ impl FlameTab {
                     refine: true,
                     save_state: true,
                     resume: Some(info),
+                    memory_limit: None,
                 });
             }
             Err(e) => self.notices.message("Cannot resume the render state", e),

@@ -17,8 +17,10 @@ use eframe::egui;
 use crate::app::a11y::named;
 use crate::app::worker::{TaskWorker, task_worker};
 use crate::flame::render::{
-    MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, quality_limit, quality_of_samples, short_num,
+    MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Renderer, quality_limit, quality_of_samples,
+    short_num,
 };
+use crate::flame::strips;
 use crate::flame::{Flame, OutputFormat};
 use crate::io;
 use crate::io::render_state::StateReader;
@@ -110,6 +112,9 @@ pub struct ExportSettings {
     pub save_state: bool,
     /// Continue this saved state instead of rendering the flame.
     pub resume: Option<ResumeInfo>,
+    /// Memory the render may use (`None`: what the system allows); larger exports are
+    /// rendered in strips.
+    pub memory_limit: Option<u64>,
 }
 
 impl ExportSettings {
@@ -136,6 +141,9 @@ pub struct JobStatus {
     pub saves: u32,
     /// The last thing worth telling: a save, a failed save.
     pub note: String,
+    /// Rendered in this many strips (0 or 1: the whole image at once); the picture is written
+    /// when the last one is done.
+    pub strips: usize,
 }
 
 /// How a finished export ended.
@@ -294,8 +302,20 @@ fn run(
                 seed: f.seed.unwrap_or(1),
                 threads,
                 format,
+                memory_limit: s.memory_limit,
                 ..RenderOptions::default()
             };
+            let fit = strips::fit(&f, &opts).map_err(|e| e.to_string())?;
+            if fit.strips > 1 {
+                if s.refine || s.save_state {
+                    return Err(format!(
+                        "this export {}: it can only be rendered in {} strips, which cannot                          keep refining or save a render state; turn those off, or make the                          picture smaller",
+                        fit.describe(),
+                        fit.strips
+                    ));
+                }
+                return run_strips(&f, &opts, &fit, s, control, cancel, progress);
+            }
             Renderer::new(&f, &opts).map_err(|e| e.to_string())?
         }
         Source::State(path, add) => {
@@ -391,6 +411,79 @@ fn run(
     })
 }
 
+/// An export larger than memory, band by band (see [`strips`]): every strip iterates the
+/// whole render and keeps its band; the PNG is streamed, so neither the picture nor the whole
+/// histogram is ever in memory. Written atomically when the last strip is done.
+fn run_strips(
+    f: &Flame,
+    opts: &RenderOptions,
+    fit: &strips::Fit,
+    s: &ExportSettings,
+    control: &Control,
+    cancel: &AtomicBool,
+    progress: &dyn Fn(f64),
+) -> Result<Finished, String> {
+    let cannot = |e: &dyn std::fmt::Display| format!("cannot write {}: {e}", s.path.display());
+    if io::kind_of(&s.path) != io::FileKind::Png {
+        return Err(format!(
+            "this export {}: it must be rendered in {} strips, which writes PNG only (a BMP              needs the whole picture in memory)",
+            fit.describe(),
+            fit.strips
+        ));
+    }
+    let k = fit.strips;
+    let plan = strips::plan(f, k).map_err(|e| e.to_string())?;
+    let mut file = io::atomic::AtomicFile::create(&s.path).map_err(|e| cannot(&e))?;
+    let out = file.file().try_clone().map_err(|e| cannot(&e))?;
+    let mut png = io::png::PngStream::new(
+        out,
+        f.width,
+        f.height,
+        opts.format,
+        &io::png::PngMeta::for_flame(f),
+    )
+    .map_err(|e| cannot(&e))?;
+    let start = Instant::now();
+    let mut samples = 0u64;
+    control.update(|st| {
+        st.asked = f.quality;
+        st.strips = k;
+        st.note = format!("{}: rendering in {k} strips", fit.describe());
+    });
+    for (i, strip) in plan.iter().enumerate() {
+        let part = Plan {
+            strip: Some(strip.clone()),
+            ..Plan::default()
+        };
+        let mut r = Renderer::with_plan(f, opts, &part).map_err(|e| e.to_string())?;
+        while !r.is_done() {
+            if !r.run(1_000_000, cancel) {
+                return Err("export cancelled (files saved before are kept)".into());
+            }
+            let done = (i as f64 + r.fraction()) / k as f64;
+            let secs = start.elapsed().as_secs_f64().max(1e-3);
+            let all = samples + r.samples_done();
+            control.update(|st| {
+                st.quality_done = f.quality * done;
+                st.samples_done = all;
+                st.samples_per_second = all as f64 / secs;
+                st.note = format!("strip {} of {k}", i + 1);
+            });
+            progress(done);
+        }
+        samples += r.samples_done();
+        png.write_rows(&r.finish()).map_err(|e| cannot(&e))?;
+    }
+    png.finish().map_err(|e| cannot(&e))?;
+    file.commit().map_err(|e| cannot(&e))?;
+    Ok(Finished {
+        quality_done: f.quality,
+        samples_done: samples,
+        state: None,
+        limit: None,
+    })
+}
+
 /// Write the picture of what is accumulated (exposed for the samples actually done) and, if
 /// asked, the render state; both atomically.
 fn write(r: &Renderer, s: &ExportSettings) -> Result<(), String> {
@@ -466,16 +559,20 @@ pub fn job_window(ui: &mut egui::Ui, job: &ExportJob) -> Option<JobAction> {
     // Always one line (empty until there is something to say), so the buttons stay put.
     ui.add(egui::Label::new(&st.note).truncate());
     ui.horizontal(|ui| {
+        let whole = st.strips <= 1;
         if ui
-            .add_enabled(st.samples_done > 0, egui::Button::new("Save now"))
+            .add_enabled(whole && st.samples_done > 0, egui::Button::new("Save now"))
             .on_hover_text("write the picture of what is rendered so far and go on")
             .clicked()
         {
             r = Some(JobAction::SaveNow);
         }
         if ui
-            .button("Stop")
+            .add_enabled(whole, egui::Button::new("Stop"))
             .on_hover_text("end after this pass and write the picture of what is rendered")
+            .on_disabled_hover_text(
+                "a render in strips writes its picture when the last strip is done",
+            )
             .clicked()
         {
             r = Some(JobAction::Stop);
@@ -629,4 +726,97 @@ fn size_row(ui: &mut egui::Ui, s: &mut ExportSettings) {
         }
     });
     ui.end_row();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn settings(path: PathBuf, memory_limit: Option<u64>) -> ExportSettings {
+        ExportSettings {
+            width: 64,
+            height: 48,
+            quality: 10.0,
+            supersample: 1,
+            bits16: false,
+            transparent: false,
+            path,
+            lock_aspect: true,
+            refine: false,
+            save_state: false,
+            resume: None,
+            memory_limit,
+        }
+    }
+
+    /// An export that does not fit in its memory is rendered in strips, and its pixels are
+    /// those of the export made at once; refining, a saved state or a BMP are refused then.
+    #[test]
+    fn an_export_larger_than_memory_is_rendered_in_strips_with_the_same_pixels() {
+        let mut f = crate::io::read_flames(
+            Path::new(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/examples/sierpinski.flame"
+            )),
+            &Default::default(),
+        )
+        .unwrap()
+        .value
+        .remove(0);
+        f.resize_keep_framing(64, 48);
+        f.quality = 10.0;
+        let dir = std::env::temp_dir().join(format!("ugnis-export-strips-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let never = AtomicBool::new(false);
+        let export = |s: &ExportSettings, c: &Control| {
+            run(
+                Source::Flame(Box::new(f.clone())),
+                s,
+                10.0,
+                2,
+                c,
+                &never,
+                &|_| {},
+            )
+        };
+        let whole = settings(dir.join("whole.png"), None);
+        export(&whole, &Control::default()).unwrap();
+        let opts = RenderOptions {
+            threads: 2,
+            ..RenderOptions::default()
+        };
+        let need = crate::flame::render::estimate_memory(&f, &opts).total;
+        let banded = settings(dir.join("strips.png"), Some(need - 1));
+        let c = Control::default();
+        let done = export(&banded, &c).unwrap();
+        let st = c.status.lock().unwrap().clone();
+        assert!(st.strips > 1, "{st:?}");
+        assert!(done.samples_done >= 10 * 64 * 48, "{done:?}");
+        let (a, b) = (
+            image::open(&whole.path).unwrap().to_rgb8(),
+            image::open(&banded.path).unwrap().to_rgb8(),
+        );
+        assert!(a.pixels().any(|p| p.0 != [0, 0, 0]));
+        assert_eq!(a.as_raw(), b.as_raw());
+        // The PNG carries its flame, as every export does.
+        assert_eq!(
+            crate::io::read_flames(&banded.path, &Default::default())
+                .unwrap()
+                .value
+                .len(),
+            1
+        );
+        for s in [
+            ExportSettings {
+                refine: true,
+                ..banded.clone()
+            },
+            settings(dir.join("strips.bmp"), Some(need - 1)),
+        ] {
+            let e = export(&s, &Control::default()).unwrap_err();
+            assert!(e.contains("strips"), "{e}");
+        }
+        assert!(!dir.join("strips.bmp").exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
