@@ -125,6 +125,35 @@ fn resume_continues_the_same_render() {
 }
 
 #[test]
+fn a_resumed_affine_ifs_continues_the_same_orbits() {
+    // Affine IFS orbits step in place once they are all past the fuse; a resumed render must
+    // take that path at the same steps as the render run on (else its orbits differ).
+    let ifs = |q: f64| {
+        let mut f =
+            ugnis::io::read_flames(&common::example("sierpinski.flame"), &Default::default())
+                .unwrap()
+                .value
+                .remove(0);
+        f.resize_keep_framing(80, 50);
+        f.quality = q;
+        f
+    };
+    let mut r = Renderer::new(&ifs(5.0), &opts(3, 2)).unwrap();
+    run(&mut r);
+    let (st, hist) = r.into_state().unwrap();
+    let mut r2 = Renderer::resume(&st, hist, 5.0, &opts(3, 2), None).unwrap();
+    run(&mut r2);
+    let resumed = r2.finish();
+    let mut whole = Renderer::new(&ifs(10.0), &opts(3, 2)).unwrap();
+    run(&mut whole);
+    let d = max_diff(&rgb(&resumed), &rgb(&whole.finish()));
+    assert!(
+        d <= 1,
+        "resumed render differs from the longer render by {d}"
+    );
+}
+
+#[test]
 fn states_of_other_versions_and_damaged_states_are_refused() {
     let f = flame(32, 24, 2.0);
     let mut r = Renderer::new(&f, &opts(1, 1)).unwrap();

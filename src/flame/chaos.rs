@@ -358,6 +358,16 @@ impl Lanes {
         o.consec = st.consec.as_slice().try_into().ok()?;
         o.step = st.step.as_slice().try_into().ok()?;
         l.started = st.started;
+        // At the end of every step `clean` says whether the counters are all clear; both sets
+        // then read as clean (the other one's counters are not gathered). Restored the same
+        // way, a resumed render takes the same paths (and so the same orbits) as one run on.
+        l.clean = l.started
+            && l.sets[0].consec.iter().all(|&c| c == 0)
+            && l.sets[0].step.iter().all(|&s| s >= 0);
+        if l.clean {
+            l.sets[1].consec = [0; LANES];
+            l.sets[1].step = [0; LANES];
+        }
         Some(l)
     }
 
