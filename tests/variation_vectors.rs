@@ -191,6 +191,7 @@ fn input(t: &Table, r: &[String]) -> ([f64; 3], Acc) {
         y: s[1],
         z: s[2],
         color: num(t.get(r, "color_in")),
+        hide: false,
     };
     (tx, acc)
 }

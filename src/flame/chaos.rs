@@ -57,6 +57,8 @@ pub struct CompiledXform {
     /// The weight of `linear` when it is the xform's only variation (no `pre_`/`post_`
     /// forms): the lane runner then skips the general variation machinery.
     pub linear_only: Option<f64>,
+    /// Some variation may hide the point ([`variations::flag::HIDES`]).
+    pub hides: bool,
 }
 
 /// |v| ≤ limit; false for NaN (which fails every comparison).
@@ -114,8 +116,14 @@ impl CompiledXform {
             ([], [v], []) if v.id == variations::LINEAR && !sets_color => Some(v.w),
             _ => None,
         };
+        let hides = pre_vars
+            .iter()
+            .chain(&vars)
+            .chain(&post_vars)
+            .any(|v| v.def.has(variations::flag::HIDES));
         CompiledXform {
             linear_only,
+            hides,
             coefs: x.coefs,
             post: if x.post.is_identity() {
                 None
@@ -140,6 +148,14 @@ impl CompiledXform {
     /// the point is a uniform random point of [−1, 1]² and the colour is still updated).
     #[inline(always)]
     pub fn apply(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
+        let (q, bad, _) = self.apply_hiding(p, rng);
+        (q, bad)
+    }
+
+    /// [`CompiledXform::apply`], also saying whether a variation hid the point (the orbit
+    /// goes on from it, the sample is not drawn).
+    #[inline(always)]
+    pub fn apply_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
         let blended = self.color_speed * self.color + (1.0 - self.color_speed) * p.c;
         let (tx, ty) = self.coefs.apply(p.x, p.y);
         let mut acc = Acc {
@@ -184,7 +200,7 @@ impl CompiledXform {
                 z: 0.0,
                 c: nc,
             };
-            return (q, true);
+            return (q, true, acc.hide);
         }
         (
             Pt {
@@ -194,6 +210,7 @@ impl CompiledXform {
                 c: nc,
             },
             false,
+            acc.hide,
         )
     }
 }
@@ -252,6 +269,8 @@ pub struct Lanes {
     counts: Vec<usize>,
     bounds: Vec<usize>,
     bad: [bool; LANES],
+    /// Hidden by a variation, at each place of the set just written.
+    hide: [bool; LANES],
     /// Visibility of each place of the set just written; negative: not a sample.
     vis: [f64; LANES],
     g: Scratch,
@@ -275,6 +294,8 @@ struct Scratch {
     pz: [f64; LANES],
     pc: [f64; LANES],
     bad: [bool; LANES],
+    /// A variation hid the point (see [`variations::flag::HIDES`]).
+    hide: [bool; LANES],
 }
 
 /// Points as a structure of arrays, for the final xform.
@@ -311,6 +332,7 @@ impl Scratch {
             pz: [0.0; LANES],
             pc: [0.0; LANES],
             bad: [false; LANES],
+            hide: [false; LANES],
         }
     }
 }
@@ -383,6 +405,7 @@ impl Lanes {
             counts: Vec::new(),
             bounds: Vec::new(),
             bad: [false; LANES],
+            hide: [false; LANES],
             vis: [0.0; LANES],
             g: Scratch::new(),
             fin: Group::new(),
@@ -410,6 +433,9 @@ impl CompiledXform {
     ) {
         let n = x.len().min(y.len()).min(z.len()).min(c.len()).min(LANES);
         let (x, y, z, c) = (&mut x[..n], &mut y[..n], &mut z[..n], &mut c[..n]);
+        if self.hides {
+            g.hide[..n].fill(false);
+        }
         let a = self.coefs;
         let (s, col) = (self.color_speed, self.color);
         for cj in c.iter_mut() {
@@ -448,6 +474,7 @@ impl CompiledXform {
                 }
                 (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
                 g.pc[j] = acc.color;
+                g.hide[j] |= acc.hide;
             }
         } else {
             g.pc[..n].copy_from_slice(c);
@@ -506,6 +533,7 @@ impl CompiledXform {
                 y: &mut g.py[..n],
                 z: &mut g.pz[..n],
                 color: &mut g.pc[..n],
+                hide: &mut g.hide[..n],
             };
             for v in &self.vars {
                 v.apply_batch(&soa, &mut acc, rng);
@@ -526,11 +554,13 @@ impl CompiledXform {
                     y: g.py[j],
                     z: g.pz[j],
                     color: g.pc[j],
+                    hide: false,
                 };
                 for v in &self.post_vars {
                     v.apply_post(&mut acc, cj, rng);
                 }
                 (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
+                g.hide[j] |= acc.hide;
             }
         }
         let (px, py) = (&mut g.px[..n], &mut g.py[..n]);
@@ -666,6 +696,8 @@ pub struct Chaos {
     /// Plotted visibility of each xform, and the one of all of them when they agree.
     vis: Vec<f64>,
     same_vis: Option<f64>,
+    /// Some xform (or the final one) may hide points: hidden samples count but add nothing.
+    hides: bool,
     /// Every xform is an affine map times `linear` (no post-affine), with no final xform,
     /// camera or xaos: orbits then need no grouping by xform (see [`AffineStep`]).
     affine: Option<Vec<AffineStep>>,
@@ -801,8 +833,10 @@ impl Chaos {
                     .collect::<Option<Vec<_>>>()
             })
             .flatten();
+        let hides = xforms.iter().chain(final_xform.as_ref()).any(|x| x.hides);
         Ok(Chaos {
             affine,
+            hides,
             same_vis: vis.iter().all(|&v| v == vis[0]).then_some(vis[0]),
             vis,
             xforms,
@@ -827,9 +861,18 @@ impl Chaos {
     /// Apply the final xform (if any, with its opacity as a probability) to a copy of a point.
     #[inline(always)]
     pub fn finalise(&self, p: Pt, rng: &mut FastRng) -> Pt {
+        self.finalise_hiding(p, rng).0
+    }
+
+    /// [`Chaos::finalise`], also saying whether the final xform hid the point.
+    #[inline(always)]
+    pub fn finalise_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
         match &self.final_xform {
-            Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => f.apply(p, rng).0,
-            _ => p,
+            Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => {
+                let (q, _, hide) = f.apply_hiding(p, rng);
+                (q, hide)
+            }
+            _ => (p, false),
         }
     }
 
@@ -879,7 +922,7 @@ impl Chaos {
         while k < n {
             let i = self.choose(last, rng);
             let xf = &self.xforms[i];
-            let (np, is_bad) = xf.apply(p, rng);
+            let (np, is_bad, hidden) = xf.apply_hiding(p, rng);
             p = np;
             if is_bad {
                 consec += 1;
@@ -891,8 +934,10 @@ impl Chaos {
             consec = 0;
             last = Some(i);
             if k >= 0 {
-                let q = self.finalise(p, rng);
-                plot(self.project(q, rng), xf.vis);
+                // A hidden sample counts, and adds nothing.
+                let (q, fin_hidden) = self.finalise_hiding(p, rng);
+                let v = if hidden || fin_hidden { 0.0 } else { xf.vis };
+                plot(self.project(q, rng), v);
             }
             k += 1;
         }
@@ -1074,6 +1119,13 @@ impl Chaos {
                             rng,
                         );
                         ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
+                        if self.hides {
+                            if self.xforms[i].hides {
+                                ln.hide[r.clone()].copy_from_slice(&ln.g.hide[..end - start]);
+                            } else {
+                                ln.hide[r.clone()].fill(false);
+                            }
+                        }
                         ln.group[r].fill(i as u16);
                     }
                 }
@@ -1086,6 +1138,14 @@ impl Chaos {
                     None => {
                         for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
                             *v = self.vis.get(g as usize).copied().unwrap_or(0.0);
+                        }
+                    }
+                }
+                if self.hides {
+                    // A hidden sample counts, and adds nothing.
+                    for (v, &h) in ln.vis.iter_mut().zip(&ln.hide) {
+                        if h {
+                            *v = 0.0;
                         }
                     }
                 }
@@ -1109,7 +1169,11 @@ impl Chaos {
                 dst.last[p] = ch;
                 if dst.step[p] >= 0 {
                     if plotted < n {
-                        let v = self.xforms[ch as usize].vis;
+                        let v = if self.hides && ln.hide[p] {
+                            0.0
+                        } else {
+                            self.xforms[ch as usize].vis
+                        };
                         plotted += 1;
                         if direct {
                             ln.vis[p] = v;
@@ -1151,6 +1215,13 @@ impl Chaos {
                         &mut ln.g,
                         rng,
                     );
+                    if f.hides {
+                        for (v, &h) in ln.fin_vis[..m].iter_mut().zip(&ln.g.hide[..m]) {
+                            if h {
+                                *v = 0.0;
+                            }
+                        }
+                    }
                 } else {
                     // Apply with probability = opacity: compact the chosen points, apply, put back.
                     ln.chosen.clear();
@@ -1176,6 +1247,13 @@ impl Chaos {
                         &mut ln.g,
                         rng,
                     );
+                    if f.hides {
+                        for (k, &j) in ln.chosen.iter().enumerate() {
+                            if ln.g.hide[k & M] {
+                                ln.fin_vis[j & M] = 0.0;
+                            }
+                        }
+                    }
                     for (k, &j) in ln.chosen.iter().enumerate() {
                         let (k, j) = (k & M, j & M);
                         fin.x[j] = t.x[k];
@@ -1414,6 +1492,58 @@ mod tests {
             (0.5..1.5).contains(&(lanes / scalar)),
             "{lanes} vs {scalar}"
         );
+    }
+
+    #[test]
+    fn hidden_samples_count_and_add_nothing() {
+        // crop_stars hides what falls outside its star: those samples come to the origin,
+        // count as samples, and are plotted with visibility 0, in the lanes and the scalar
+        // loop alike.
+        let crop = variations::by_name("crop_stars").unwrap();
+        let mut a = Xform::linear(Affine::new(0.9, 0.3, -0.3, 0.9, 0.2, 0.1), 1.0, 0.0);
+        a.vars = vec![crate::flame::model::Var::new(crop, 1.0)];
+        let mut b = Xform::linear(Affine::new(0.6, 0.0, 0.0, 0.6, -0.3, 0.2), 1.0, 1.0);
+        b.vars = vec![crate::flame::model::Var::new(variations::SPHERICAL, 0.5)];
+        let f = Flame {
+            xforms: vec![a, b],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.hides && ch.xforms[0].hides && !ch.xforms[1].hides);
+        let at_origin = |x: f64, y: f64| x == 0.0 && y == 0.0;
+        let mut rng = FastRng::new(2);
+        let mut ln = Lanes::new();
+        let (mut n, mut hidden) = (0u64, 0u64);
+        for _ in 0..20 {
+            ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs| {
+                for j in 0..xs.len() {
+                    if vs[j] < 0.0 {
+                        continue;
+                    }
+                    n += 1;
+                    if vs[j] == 0.0 {
+                        hidden += 1;
+                        assert!(at_origin(xs[j], ys[j]));
+                    } else {
+                        assert!(!at_origin(xs[j], ys[j]), "a hidden point was drawn");
+                    }
+                }
+            });
+        }
+        assert_eq!(n, 200_000);
+        let (mut m, mut hidden_scalar) = (0u64, 0u64);
+        for _ in 0..20 {
+            ch.run_sub_batch(10_000, &mut rng, |p, v| {
+                m += 1;
+                if v == 0.0 {
+                    hidden_scalar += 1;
+                    assert!(at_origin(p.x, p.y));
+                }
+            });
+        }
+        assert_eq!(m, 200_000);
+        let (fl, fs) = (hidden as f64 / 2e5, hidden_scalar as f64 / 2e5);
+        assert!(fl > 0.05 && (fl - fs).abs() < 0.02, "{fl} vs {fs}");
     }
 
     #[test]

@@ -184,7 +184,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_range("crop_stars_r2", 0.333, 0.0, 1.0),
             p_int("crop_stars_invert", 0.0, 0.0, 1.0),
         ])
-        .flags(flag::JWILDFIRE | flag::WRITES_ACC)
+        .flags(flag::JWILDFIRE | flag::WRITES_ACC | flag::HIDES)
         .prepare(crop_stars_prepare),
     VarDef::new("plane_wf", plane_wf)
         .params(&[
@@ -736,7 +736,7 @@ fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
     px += ecos * k;
     py += esin * k;
     let d = (px * px + py * py).sqrt() * signum_java(px);
-    // JWildfire hides (d > 0) outside, or (d <= 0) inside when inverted; NaN is kept.
+    // Hidden (d > 0) outside, or (d <= 0) inside when inverted; NaN is kept.
     let keep = if invert == 0.0 {
         d.is_nan() || d <= 0.0
     } else {
@@ -747,6 +747,8 @@ fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
     if keep {
         [v.w * t.x, v.w * t.y, 0.0]
     } else {
+        // The orbit goes on from the origin; the sample is not drawn.
+        acc.hide = true;
         [0.0, 0.0, 0.0]
     }
 }
@@ -1713,6 +1715,7 @@ mod tests {
                     y: 0.0,
                     z: 0.0,
                     color,
+                    hide: false,
                 };
                 let a = eval_prepared(v, *p, acc, true, rng);
                 [a.x, a.y, a.z, a.color]

@@ -1125,8 +1125,8 @@ fn dla_sample<R: Draw>(prm: &[f64], nodes: &[f64], r: &mut R) -> Option<([f64; 3
 
 /// dla3d_wf: a 3-D diffusion-limited aggregate grown from JWildfire's seeded generator, drawn
 /// as blurred spheres at the nodes and tubes along the links (or as bare links when the outer
-/// blur radius is 0), coloured by relative depth when dc_color is on. JWildfire hides the
-/// point where nothing is drawn; ugnis cannot hide it and adds nothing instead.
+/// blur radius is 0), coloured by relative depth when dc_color is on. Where nothing is drawn
+/// the point is hidden (the sample counts, nothing is added).
 fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     match dla_sample(&v.p, v.data(), rng) {
         Some((pos, color)) => {
@@ -1135,7 +1135,10 @@ fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
             }
             [v.w * pos[0], v.w * pos[1], v.w * pos[2]]
         }
-        None => [0.0; 3],
+        None => {
+            acc.hide = true;
+            [0.0; 3]
+        }
     }
 }
 
@@ -1809,7 +1812,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::JWILDFIRE | flag::WRITES_ACC),
     VarDef::new("dla3d_wf", dla3d_wf)
         .params(P_DLA)
-        .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR)
+        .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::HIDES)
         .shared(&[0, 1, 6, 7, 8, 9], dla_nodes),
     VarDef::new("dc_mandala", dc_mandala)
         .params(P_DC_MANDALA)
@@ -2000,6 +2003,7 @@ mod tests {
             y: -7.0,
             z: 0.25,
             color: 0.5,
+            hide: false,
         };
         let a = eval_prepared(&v, [x, y, 0.0], start, true, &mut rng);
         let ex = -6.56 * (1.4 * x).sin() - (1.56 * y).sin();
@@ -2107,6 +2111,7 @@ mod tests {
                 y: 0.3,
                 z: 0.5,
                 color: 0.9,
+                hide: false,
             };
             let a = eval_prepared(&v, [inp[0], inp[1], 0.4], start, true, &mut rng);
             assert_all_close("dc_mandala", &[a.x, a.y, a.z, a.color], want);
@@ -2133,6 +2138,7 @@ mod tests {
                     y: 1.0,
                     z: 3.0,
                     color: 0.5,
+                    hide: false,
                 };
                 let a = eval_prepared(&v, [9.0, 9.0, 9.0], start, true, &mut rng);
                 let (x, y) = ((a.x - 1.0) / 2.0, (a.y - 1.0) / 2.0);
@@ -2177,6 +2183,7 @@ mod tests {
             y: 0.0,
             z: 3.0,
             color: 0.0,
+            hide: false,
         };
         let a = eval_prepared(&v, [0.13, -0.27, 0.0], start, true, &mut rng);
         assert!(close(a.z, 3.0 + a.color * 0.5 + 0.25));

@@ -105,6 +105,8 @@ pub mod flag {
     pub const JWILDFIRE: u32 = 4096;
     /// Reads the xform's affine coefficients.
     pub const USES_AFFINE: u32 = 8192;
+    /// May hide the point: the orbit goes on, the sample is not drawn (JWildfire's crops).
+    pub const HIDES: u32 = 16384;
 }
 
 /// Regular, `pre_` or `post_` use of a variation.
@@ -340,6 +342,8 @@ pub struct Acc {
     pub y: f64,
     pub z: f64,
     pub color: f64,
+    /// The sample is not drawn (set by the [`flag::HIDES`] variations).
+    pub hide: bool,
 }
 
 /// A variation's formula: weighted output for input `t`; may read or change `acc` (only the
@@ -369,6 +373,8 @@ pub struct SoaAcc<'a> {
     pub y: &'a mut [f64],
     pub z: &'a mut [f64],
     pub color: &'a mut [f64],
+    /// Set where a variation hides the point (only formulas called point by point hide).
+    pub hide: &'a mut [bool],
 }
 
 /// A regular variation applied to a batch: adds its outputs to `acc`.
@@ -638,12 +644,14 @@ pub fn generic_batch(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRn
             y: acc.y[j],
             z: acc.z[j],
             color: acc.color[j],
+            hide: false,
         };
         let o = v.eval(&t, &mut a, rng);
         acc.x[j] = a.x + o[0];
         acc.y[j] = a.y + o[1];
         acc.z[j] = a.z + o[2];
         acc.color[j] = a.color;
+        acc.hide[j] |= a.hide;
     }
 }
 
@@ -919,6 +927,7 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
                 y: tr[1],
                 z: tr[2],
                 color: acc.color,
+                hide: acc.hide,
             }
         }
         Form::Post => {
