@@ -71,6 +71,7 @@ pub fn framing_orbit(chaos: &Chaos, n: usize) -> (Vec<f64>, Vec<f64>) {
     let mut xs = Vec::with_capacity(n);
     let mut ys = Vec::with_capacity(n);
     let mut bad = 0usize;
+    let mut skipped = 0usize;
     'restart: while xs.len() < n && bad < 10 * n {
         let mut p = Chaos::start_point(&mut rng);
         let mut last = None;
@@ -85,15 +86,24 @@ pub fn framing_orbit(chaos: &Chaos, n: usize) -> (Vec<f64>, Vec<f64>) {
         }
         while xs.len() < n {
             let i = chaos.choose(last, &mut rng);
-            let (np, is_bad) = chaos.xforms[i].apply(p, &mut rng);
+            let (np, is_bad, hidden) = chaos.xforms[i].apply_hiding(p, &mut rng);
             if is_bad {
                 bad += 1;
                 continue 'restart;
             }
             (p, last) = (np, Some(i));
-            let q = chaos.finalise(p, &mut rng);
+            let (q, fin_hidden) = chaos.finalise_hiding(p, &mut rng);
             let q = chaos.project(q, &mut rng);
             let (px, py) = (q.x, q.y);
+            // Hidden samples are not drawn, so they do not frame the picture either (and a
+            // flame that hides everything ends the orbit, as too many bad values do).
+            if hidden || fin_hidden {
+                skipped += 1;
+                if skipped >= 10 * n {
+                    break 'restart;
+                }
+                continue;
+            }
             if px.is_finite() && py.is_finite() {
                 xs.push(px);
                 ys.push(py);
@@ -143,6 +153,28 @@ mod tests {
         assert_eq!(f.y_bounds, [98.04638671875, 1899.95361328125]);
         assert_eq!(f.center, [499.5, 999.0]);
         assert!((f.scale - 0.1864691).abs() < 1e-7, "{}", f.scale);
+    }
+
+    #[test]
+    fn hidden_samples_do_not_frame_and_a_flame_hiding_all_ends() {
+        use crate::flame::variations::by_name;
+        // crop_stars hides what its signed distance puts outside the star, the origin among
+        // them, and a hidden point comes to the origin: once one is hidden, all are. The
+        // translation keeps the first points outside.
+        let crop = by_name("crop_stars").unwrap();
+        let mut x = Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, 2.0, 0.0), 1.0, 0.0);
+        x.vars = vec![crate::flame::model::Var::new(crop, 1.0)];
+        let fl = Flame {
+            xforms: vec![x],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&fl).unwrap();
+        let (xs, _) = framing_orbit(&ch, 1000);
+        assert!(xs.len() < 1000, "{}", xs.len());
+        assert!(
+            xs.iter().all(|&x| x != 0.0),
+            "a hidden point framed the picture"
+        );
     }
 
     #[test]
