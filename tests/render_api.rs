@@ -214,3 +214,18 @@ fn recolor_reuses_the_samples() {
     assert!(!plain.can_recolor());
     assert!(!plain.recolor(&ugnis::gradient::Gradient::grey_ramp(), f.palette_mode));
 }
+
+/// Without density estimation the quick preview (thread histograms summed and log-scaled row by
+/// row inside the filter) is the developed picture, byte for byte.
+#[test]
+fn the_draft_is_the_picture_when_density_estimation_is_off() {
+    let mut f = example("orchid.flame");
+    f.quality = 20.0;
+    f.supersample = 2;
+    f.estimator_radius = 0.0;
+    let mut r = Renderer::new(&f, &opts(1, 2)).unwrap();
+    r.run(40_000, &AtomicBool::new(false));
+    let (draft, full) = (r.preview_draft().to_rgb8(), r.preview().to_rgb8());
+    assert!(draft.pixels().any(|p| p.0 != [0, 0, 0]));
+    assert_eq!(draft.as_raw(), full.as_raw());
+}

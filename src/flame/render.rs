@@ -1216,35 +1216,6 @@ mod tests {
     use super::*;
     use crate::gradient::Gradient;
 
-    /// Without density estimation the draft (thread histograms summed and log-scaled row by
-    /// row inside the filter) is the developed picture, byte for byte.
-    #[test]
-    fn the_draft_is_the_picture_when_density_estimation_is_off() {
-        let mut f = crate::io::read_flames(
-            std::path::Path::new(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/examples/orchid.flame"
-            )),
-            &Default::default(),
-        )
-        .unwrap()
-        .value
-        .remove(0);
-        f.resize_keep_framing(96, 72);
-        f.quality = 20.0;
-        f.supersample = 2;
-        f.estimator_radius = 0.0;
-        let opts = RenderOptions {
-            threads: 2,
-            ..RenderOptions::default()
-        };
-        let mut r = Renderer::new(&f, &opts).unwrap();
-        r.run(40_000, &AtomicBool::new(false));
-        let (draft, full) = (r.preview_draft().to_rgb8(), r.preview().to_rgb8());
-        assert!(draft.pixels().any(|p| p.0 != [0, 0, 0]));
-        assert_eq!(draft.as_raw(), full.as_raw());
-    }
-
     /// The block-wise palette lookup of `accumulate` adds what `PlotPalette::lookup` gives,
     /// bit for bit, at the edges too (NaN, negative, 1 and beyond), in both palette modes.
     #[test]
