@@ -29,7 +29,7 @@ use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::{Flame, PaletteMode};
 use crate::flame::rng::FastRng;
 use crate::flame::state::{Part, RenderState};
-use crate::flame::tonemap::{LogScale, OutputFormat, ToneMap};
+use crate::flame::tonemap::{LogScale, LogTable, OutputFormat, ToneMap};
 use crate::memory::MemoryError;
 use crate::threads::Threads;
 
@@ -721,7 +721,7 @@ impl Renderer {
         // (no merged copy, one pass over memory).
         let src = Rows::Draft {
             hists: &self.hists,
-            ls: LogScale::new(&self.flame, self.density()),
+            ls: LogTable::new(LogScale::new(&self.flame, self.density())),
         };
         filter_and_tonemap(
             &self.flame,
@@ -1037,12 +1037,12 @@ pub fn develop_rows(
     format: OutputFormat,
     out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
-    let ls = LogScale::new(flame, density);
+    let ls = LogTable::new(LogScale::new(flame, density));
     let mut acc: Vec<Bucket> = Vec::new();
     let acc: &[Bucket] = match &geom.de {
         Some(de) => {
             acc.resize(geom.buckets(), [0.0; 4]);
-            de.splat(hist, &mut acc, |a| ls.factor(a as f64) as f32);
+            de.splat(hist, &mut acc, |a| ls.factor(a));
             &acc
         }
         None => {
@@ -1050,7 +1050,7 @@ pub fn develop_rows(
                 .data
                 .par_iter()
                 .map(|b| {
-                    let s = ls.factor(b[3] as f64) as f32;
+                    let s = ls.factor(b[3]);
                     [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
                 })
                 .collect();
@@ -1068,30 +1068,53 @@ enum Rows<'a> {
     /// Raw thread histograms, summed and log-scaled as they are read.
     Draft {
         hists: &'a [Histogram],
-        ls: LogScale,
+        ls: LogTable,
     },
 }
 
-impl Rows<'_> {
+impl<'a> Rows<'a> {
     /// Bucket row `r` (`bw` buckets), in `buf` when it has to be computed.
+    #[inline(always)]
     fn row<'b>(&'b self, r: usize, bw: usize, buf: &'b mut Vec<Bucket>) -> &'b [Bucket] {
         match self {
             Rows::Acc(acc) => &acc[r * bw..(r + 1) * bw],
             Rows::Draft { hists, ls } => {
-                buf.clear();
-                buf.extend_from_slice(&hists[0].data[r * bw..(r + 1) * bw]);
-                for h in &hists[1..] {
-                    for (b, o) in buf.iter_mut().zip(&h.data[r * bw..(r + 1) * bw]) {
-                        *b = [b[0] + o[0], b[1] + o[1], b[2] + o[2], b[3] + o[3]];
-                    }
-                }
-                for b in buf.iter_mut() {
-                    *b = if b[3] <= 0.0 {
+                let scale = |b: Bucket| {
+                    if b[3] <= 0.0 {
                         [0.0; 4]
                     } else {
-                        let s = ls.factor(b[3] as f64) as f32;
+                        let s = ls.factor(b[3]);
                         [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
-                    };
+                    }
+                };
+                let sum =
+                    |b: &Bucket, o: &Bucket| [b[0] + o[0], b[1] + o[1], b[2] + o[2], b[3] + o[3]];
+                let at = |h: &'a Histogram| &h.data[r * bw..(r + 1) * bw];
+                // Plain loops (no iterator adaptors) so that they are compiled for the
+                // caller's CPU features.
+                buf.resize(bw, [0.0; 4]);
+                match hists {
+                    [h] => {
+                        for (d, &b) in buf.iter_mut().zip(at(h)) {
+                            *d = scale(b);
+                        }
+                    }
+                    [h0, h1] => {
+                        for ((d, b), o) in buf.iter_mut().zip(at(h0)).zip(at(h1)) {
+                            *d = scale(sum(b, o));
+                        }
+                    }
+                    _ => {
+                        buf.copy_from_slice(at(&hists[0]));
+                        for h in &hists[1..] {
+                            for (b, o) in buf.iter_mut().zip(at(h)) {
+                                *b = sum(b, o);
+                            }
+                        }
+                        for b in buf.iter_mut() {
+                            *b = scale(*b);
+                        }
+                    }
                 }
                 buf
             }
@@ -1106,79 +1129,23 @@ fn filter_and_tonemap(
     format: OutputFormat,
     out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
-    let (w, os) = (geom.width, geom.os);
-    let h = out_rows.len();
-    let (y_first, acc_row0) = (out_rows.start, geom.row0);
-    let taps = &geom.filter.taps;
-    let fw = geom.filter.width;
-    let delta = geom.delta;
-    let bw = geom.bw;
-    let tm = ToneMap::new(flame, format.transparent);
+    let (w, h) = (geom.width, out_rows.len());
     let channels = if format.transparent { 4 } else { 3 };
-    const BAND: usize = 16;
-    let row_len = w * channels;
-    // Output values 0..=255 (f64), per band of rows, then encoded.
-    let encode = |y0: usize, out8: Option<&mut [u8]>, out16: Option<&mut [u16]>| {
-        let rows = BAND.min(h - y0);
-        // Horizontally filtered acc rows needed by this band (rows of `acc`, which starts at
-        // row `acc_row0` of the whole grid).
-        let r0 = (y_first + y0) * os + delta - acc_row0;
-        let nr = (rows - 1) * os + fw;
-        let mut tmp = vec![[0f64; 4]; nr * w];
-        let mut row = Vec::new();
-        for r in 0..nr {
-            let src = acc.row(r0 + r, bw, &mut row);
-            for x in 0..w {
-                let mut s = [0f64; 4];
-                let base = x * os + delta;
-                for (i, &t) in taps.iter().enumerate() {
-                    let b = src[base + i];
-                    s[0] += t * b[0] as f64;
-                    s[1] += t * b[1] as f64;
-                    s[2] += t * b[2] as f64;
-                    s[3] += t * b[3] as f64;
-                }
-                tmp[r * w + x] = s;
-            }
-        }
-        let (mut o8, mut o16) = (out8, out16);
-        for yy in 0..rows {
-            for x in 0..w {
-                let mut s = [0f64; 4];
-                for (j, &t) in taps.iter().enumerate() {
-                    let b = tmp[(yy * os + j) * w + x];
-                    s[0] += t * b[0];
-                    s[1] += t * b[1];
-                    s[2] += t * b[2];
-                    s[3] += t * b[3];
-                }
-                let (rgb, alpha) = tm.pixel(s);
-                let o = yy * row_len + x * channels;
-                if let Some(buf) = o8.as_deref_mut() {
-                    buf[o] = rgb[0] as u8;
-                    buf[o + 1] = rgb[1] as u8;
-                    buf[o + 2] = rgb[2] as u8;
-                    if channels == 4 {
-                        buf[o + 3] = (255.0 * alpha) as u8;
-                    }
-                }
-                if let Some(buf) = o16.as_deref_mut() {
-                    buf[o] = (256.0 * rgb[0]) as u16;
-                    buf[o + 1] = (256.0 * rgb[1]) as u16;
-                    buf[o + 2] = (256.0 * rgb[2]) as u16;
-                    if channels == 4 {
-                        buf[o + 3] = (65535.0 * alpha) as u16;
-                    }
-                }
-            }
-        }
+    let band = Band {
+        geom,
+        acc,
+        tm: ToneMap::new(flame, format.transparent),
+        channels,
+        y_first: out_rows.start,
+        h,
     };
+    let row_len = w * channels;
     let (wu, hu) = (w as u32, h as u32);
     if format.bits16 {
         let mut buf = vec![0u16; row_len * h];
-        buf.par_chunks_mut(row_len * BAND)
-            .enumerate()
-            .for_each(|(b, chunk)| encode(b * BAND, None, Some(chunk)));
+        in_bands(&mut buf, row_len * BAND, |sc, b, chunk| {
+            band.encode(sc, b * BAND, Out::U16(chunk))
+        });
         if channels == 4 {
             DynamicImage::ImageRgba16(
                 image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
@@ -1190,15 +1157,194 @@ fn filter_and_tonemap(
         }
     } else {
         let mut buf = vec![0u8; row_len * h];
-        buf.par_chunks_mut(row_len * BAND)
-            .enumerate()
-            .for_each(|(b, chunk)| encode(b * BAND, Some(chunk), None));
+        in_bands(&mut buf, row_len * BAND, |sc, b, chunk| {
+            band.encode(sc, b * BAND, Out::U8(chunk))
+        });
         if channels == 4 {
             DynamicImage::ImageRgba8(
                 image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
             )
         } else {
             DynamicImage::ImageRgb8(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
+        }
+    }
+}
+
+/// Run `f(scratch, index, chunk)` over the chunks of `buf` in parallel, with one scratch per
+/// worker (reused from band to band).
+fn in_bands<T: Send>(
+    buf: &mut [T],
+    chunk: usize,
+    f: impl Fn(&mut Scratch, usize, &mut [T]) + Sync,
+) {
+    buf.par_chunks_mut(chunk)
+        .enumerate()
+        .for_each_init(Scratch::default, |sc, (i, c)| f(sc, i, c));
+}
+
+/// Output rows filtered and tone-mapped together (bounded scratch memory per band).
+const BAND: usize = 16;
+
+/// Where a band's output values go.
+enum Out<'a> {
+    U8(&'a mut [u8]),
+    U16(&'a mut [u16]),
+}
+
+/// Rows a band works in, kept from band to band (every value is written before it is read).
+#[derive(Default)]
+struct Scratch {
+    /// Horizontally filtered bucket rows.
+    tmp: Vec<[f64; 4]>,
+    /// A bucket row computed on the fly.
+    row: Vec<Bucket>,
+    /// One output row, filtered.
+    line: Vec<[f64; 4]>,
+    alphas: Vec<f64>,
+}
+
+/// What every band of [`filter_and_tonemap`] shares.
+struct Band<'a> {
+    geom: &'a Geometry,
+    acc: &'a Rows<'a>,
+    tm: ToneMap,
+    channels: usize,
+    /// First output row of the image (of the whole picture's rows).
+    y_first: usize,
+    /// Output rows.
+    h: usize,
+}
+
+impl Band<'_> {
+    /// Filter and tone-map the output rows `y0..y0 + BAND` into `out`.
+    fn encode(&self, sc: &mut Scratch, y0: usize, out: Out) {
+        #[cfg(target_arch = "x86_64")]
+        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+            // SAFETY: the CPU has just reported AVX2 and FMA.
+            return unsafe { self.encode_avx2(sc, y0, out) };
+        }
+        self.encode_generic(sc, y0, out)
+    }
+
+    /// [`Band::encode`] for CPUs with AVX2 and FMA (the compiler contracts nothing into FMA, so
+    /// the values are the same as the generic copy's).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn encode_avx2(&self, sc: &mut Scratch, y0: usize, out: Out) {
+        self.encode_generic(sc, y0, out)
+    }
+
+    #[inline(always)]
+    fn encode_generic(&self, sc: &mut Scratch, y0: usize, mut out: Out) {
+        let geom = self.geom;
+        let (w, os, bw, delta) = (geom.width, geom.os, geom.bw, geom.delta);
+        let taps = &geom.filter.taps;
+        let fw = geom.filter.width;
+        let channels = self.channels;
+        let row_len = w * channels;
+        let rows = BAND.min(self.h - y0);
+        // Horizontally filtered acc rows needed by this band (rows of `acc`, which starts at
+        // row `geom.row0` of the whole grid).
+        let r0 = (self.y_first + y0) * os + delta - geom.row0;
+        let nr = (rows - 1) * os + fw;
+        // Loops run along a row (tap by tap) so that they vectorise; each sum still adds its
+        // terms in tap order, starting from 0 as a plain dot product would.
+        // (Plain loops, no iterator adaptors: they are compiled for the caller's CPU features.)
+        let Scratch {
+            tmp,
+            row,
+            line,
+            alphas,
+        } = sc;
+        tmp.resize(nr * w, [0.0; 4]);
+        line.resize(w, [0.0; 4]);
+        alphas.resize(w, 0.0);
+        let t0 = taps[0];
+        let first = |b: &Bucket| {
+            [
+                0.0 + t0 * b[0] as f64,
+                0.0 + t0 * b[1] as f64,
+                0.0 + t0 * b[2] as f64,
+                0.0 + t0 * b[3] as f64,
+            ]
+        };
+        for (r, dst) in tmp[..nr * w].chunks_exact_mut(w).enumerate() {
+            let src = self.acc.row(r0 + r, bw, row);
+            if os == 1 {
+                for (d, b) in dst.iter_mut().zip(&src[delta..delta + w]) {
+                    *d = first(b);
+                }
+            } else {
+                for (x, d) in dst.iter_mut().enumerate() {
+                    *d = first(&src[x * os + delta]);
+                }
+            }
+            for (i, &t) in taps.iter().enumerate().skip(1) {
+                let add = |d: &mut [f64; 4], b: &Bucket| {
+                    d[0] += t * b[0] as f64;
+                    d[1] += t * b[1] as f64;
+                    d[2] += t * b[2] as f64;
+                    d[3] += t * b[3] as f64;
+                };
+                if os == 1 {
+                    for (d, b) in dst.iter_mut().zip(&src[delta + i..delta + i + w]) {
+                        add(d, b);
+                    }
+                } else {
+                    for (x, d) in dst.iter_mut().enumerate() {
+                        add(d, &src[x * os + delta + i]);
+                    }
+                }
+            }
+        }
+        for yy in 0..rows {
+            let tmp_row = |j: usize| &tmp[(yy * os + j) * w..(yy * os + j + 1) * w];
+            for (d, b) in line.iter_mut().zip(tmp_row(0)) {
+                *d = [
+                    0.0 + t0 * b[0],
+                    0.0 + t0 * b[1],
+                    0.0 + t0 * b[2],
+                    0.0 + t0 * b[3],
+                ];
+            }
+            for (j, &t) in taps.iter().enumerate().skip(1) {
+                for (d, b) in line.iter_mut().zip(tmp_row(j)) {
+                    d[0] += t * b[0];
+                    d[1] += t * b[1];
+                    d[2] += t * b[2];
+                    d[3] += t * b[3];
+                }
+            }
+            for (al, s) in alphas.iter_mut().zip(line.iter()) {
+                *al = self.tm.alpha(s[3]);
+            }
+            let o = yy * row_len;
+            match &mut out {
+                Out::U8(buf) => {
+                    let dst = buf[o..o + row_len].chunks_exact_mut(channels);
+                    for ((px, &s), &a) in dst.zip(line.iter()).zip(alphas.iter()) {
+                        let (rgb, alpha) = self.tm.pixel_with_alpha(s, a);
+                        px[0] = rgb[0] as u8;
+                        px[1] = rgb[1] as u8;
+                        px[2] = rgb[2] as u8;
+                        if channels == 4 {
+                            px[3] = (255.0 * alpha) as u8;
+                        }
+                    }
+                }
+                Out::U16(buf) => {
+                    let dst = buf[o..o + row_len].chunks_exact_mut(channels);
+                    for ((px, &s), &a) in dst.zip(line.iter()).zip(alphas.iter()) {
+                        let (rgb, alpha) = self.tm.pixel_with_alpha(s, a);
+                        px[0] = (256.0 * rgb[0]) as u16;
+                        px[1] = (256.0 * rgb[1]) as u16;
+                        px[2] = (256.0 * rgb[2]) as u16;
+                        if channels == 4 {
+                            px[3] = (65535.0 * alpha) as u16;
+                        }
+                    }
+                }
+            }
         }
     }
 }

@@ -33,6 +33,41 @@ impl LogScale {
     }
 }
 
+/// [`LogScale::factor`] of a bucket's f32 count, with the factors of the small whole counts (the
+/// usual buckets of a preview: every sample adds 1) read from a table: same values, no log.
+#[derive(Clone, Debug)]
+pub struct LogTable {
+    pub ls: LogScale,
+    small: Vec<f32>,
+}
+
+impl LogTable {
+    /// Counts below this are looked up when whole.
+    const SMALL: u32 = 1024;
+
+    pub fn new(ls: LogScale) -> LogTable {
+        LogTable {
+            ls,
+            small: (0..Self::SMALL)
+                .map(|n| ls.factor(n as f64) as f32)
+                .collect(),
+        }
+    }
+
+    /// `ls.factor(a as f64) as f32`, bit for bit.
+    #[inline(always)]
+    pub fn factor(&self, a: f32) -> f32 {
+        // Saturating cast: negative and NaN give 0, which `a` then does not equal (NaN) or
+        // whose factor is 0 like a negative count's.
+        let n = a as u32;
+        if n < Self::SMALL && n as f32 == a {
+            self.small[n as usize]
+        } else {
+            self.ls.factor(a as f64) as f32
+        }
+    }
+}
+
 /// Output encoding of the tone-mapped image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct OutputFormat {
@@ -73,27 +108,43 @@ impl ToneMap {
         }
     }
 
-    /// alpha = a^g above the threshold, a linear blend below (flame.md §6).
+    /// alpha = a^g above the threshold, a linear blend below (flam3's gamma threshold), for
+    /// a > 0. Branch-free, so that a loop over a row of pixels vectorises.
     #[inline(always)]
     pub fn gamma_alpha(&self, a: f64) -> f64 {
+        let p = crate::flame::fastmath::pow_pos(a, self.g);
         if a >= self.threshold {
-            a.powf(self.g)
+            p
         } else {
             let f = a / self.threshold;
-            (1.0 - f) * a * self.thresh_factor + f * a.powf(self.g)
+            (1.0 - f) * a * self.thresh_factor + f * p
         }
+    }
+
+    /// The unclamped alpha of a filtered density `a_raw` (flam3 units): 0 where nothing was
+    /// drawn. Branch-free.
+    #[inline(always)]
+    pub fn alpha(&self, a_raw: f64) -> f64 {
+        let alpha = self.gamma_alpha(a_raw / 255.0);
+        if a_raw <= 0.0 { 0.0 } else { alpha }
     }
 
     /// Map filtered accumulators (flam3 units, channel/255 = density) to output values in
     /// 0..=255 (not yet truncated) and the alpha in [0, 1].
     #[inline(always)]
     pub fn pixel(&self, acc: [f64; 4]) -> ([f64; 3], f64) {
+        self.pixel_with_alpha(acc, self.alpha(acc[3]))
+    }
+
+    /// [`ToneMap::pixel`] given `alpha` = [`ToneMap::alpha`]`(acc[3])` (computed for a whole
+    /// row at once).
+    #[inline(always)]
+    pub fn pixel_with_alpha(&self, acc: [f64; 4], alpha: f64) -> ([f64; 3], f64) {
         let a_raw = acc[3];
         let (alpha, ls) = if a_raw <= 0.0 {
             (0.0, 0.0)
         } else {
             let a = a_raw / 255.0;
-            let alpha = self.gamma_alpha(a);
             let ls = self.vibrancy * 256.0 * alpha / a;
             (alpha.clamp(0.0, 1.0), ls)
         };
@@ -174,6 +225,28 @@ mod tests {
             contrast: 1.0,
             supersample: 1,
             ..Flame::default()
+        }
+    }
+
+    #[test]
+    fn the_log_table_gives_the_factor_bit_for_bit() {
+        let t = LogTable::new(LogScale::new(&oracle_flame(), 3.7));
+        for a in [
+            0.0f32,
+            1.0,
+            2.0,
+            7.0,
+            1023.0,
+            1024.0,
+            1e6,
+            0.5,
+            2.25,
+            -1.0,
+            -0.0,
+            f32::NAN,
+        ] {
+            let want = t.ls.factor(a as f64) as f32;
+            assert_eq!(t.factor(a).to_bits(), want.to_bits(), "{a}");
         }
     }
 
