@@ -1201,6 +1201,8 @@ struct Scratch {
     /// One output row, filtered.
     line: Vec<[f64; 4]>,
     alphas: Vec<f64>,
+    /// The row tone-mapped: output values and alpha.
+    toned: Vec<[f64; 4]>,
 }
 
 /// What every band of [`filter_and_tonemap`] shares.
@@ -1255,10 +1257,12 @@ impl Band<'_> {
             row,
             line,
             alphas,
+            toned,
         } = sc;
         tmp.resize(nr * w, [0.0; 4]);
         line.resize(w, [0.0; 4]);
         alphas.resize(w, 0.0);
+        toned.resize(w, [0.0; 4]);
         let t0 = taps[0];
         let first = |b: &Bucket| {
             [
@@ -1318,29 +1322,28 @@ impl Band<'_> {
             for (al, s) in alphas.iter_mut().zip(line.iter()) {
                 *al = self.tm.alpha(s[3]);
             }
+            self.tm.row(line, alphas, toned);
             let o = yy * row_len;
             match &mut out {
                 Out::U8(buf) => {
                     let dst = buf[o..o + row_len].chunks_exact_mut(channels);
-                    for ((px, &s), &a) in dst.zip(line.iter()).zip(alphas.iter()) {
-                        let (rgb, alpha) = self.tm.pixel_with_alpha(s, a);
-                        px[0] = rgb[0] as u8;
-                        px[1] = rgb[1] as u8;
-                        px[2] = rgb[2] as u8;
+                    for (px, t) in dst.zip(toned.iter()) {
+                        px[0] = t[0] as u8;
+                        px[1] = t[1] as u8;
+                        px[2] = t[2] as u8;
                         if channels == 4 {
-                            px[3] = (255.0 * alpha) as u8;
+                            px[3] = (255.0 * t[3]) as u8;
                         }
                     }
                 }
                 Out::U16(buf) => {
                     let dst = buf[o..o + row_len].chunks_exact_mut(channels);
-                    for ((px, &s), &a) in dst.zip(line.iter()).zip(alphas.iter()) {
-                        let (rgb, alpha) = self.tm.pixel_with_alpha(s, a);
-                        px[0] = (256.0 * rgb[0]) as u16;
-                        px[1] = (256.0 * rgb[1]) as u16;
-                        px[2] = (256.0 * rgb[2]) as u16;
+                    for (px, t) in dst.zip(toned.iter()) {
+                        px[0] = (256.0 * t[0]) as u16;
+                        px[1] = (256.0 * t[1]) as u16;
+                        px[2] = (256.0 * t[2]) as u16;
                         if channels == 4 {
-                            px[3] = (65535.0 * alpha) as u16;
+                            px[3] = (65535.0 * t[3]) as u16;
                         }
                     }
                 }
