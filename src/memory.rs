@@ -351,9 +351,15 @@ pub fn cgroup_left(cg: &CgroupMemory) -> Option<u64> {
 
 /// Memory left under this process's cgroup limits (None: no limit or not Linux).
 pub fn cgroup_memory_left() -> Option<u64> {
-    let cgroup = std::fs::read_to_string("/proc/self/cgroup").ok()?;
-    let mountinfo = std::fs::read_to_string("/proc/self/mountinfo").ok()?;
-    cgroup_left(&find_cgroup(&cgroup, &mountinfo)?)
+    // Where this process's cgroup is does not change while it runs; reading the mount table
+    // was most of the cost of starting a preview render.
+    static WHERE: std::sync::OnceLock<Option<CgroupMemory>> = std::sync::OnceLock::new();
+    let dir = WHERE.get_or_init(|| {
+        let cgroup = std::fs::read_to_string("/proc/self/cgroup").ok()?;
+        let mountinfo = std::fs::read_to_string("/proc/self/mountinfo").ok()?;
+        find_cgroup(&cgroup, &mountinfo)
+    });
+    cgroup_left(dir.as_ref()?)
 }
 
 #[cfg(test)]

@@ -7,7 +7,9 @@ pub const PER_CORE: usize = 4;
 
 /// Cores of this machine (1 when unknown).
 pub fn cores() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get())
+    // Read once: the standard library reads the cgroup's CPU quota on every call.
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
 }
 
 /// The largest thread count a render uses.

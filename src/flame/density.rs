@@ -106,6 +106,47 @@ impl DeFilters {
         }))
     }
 
+    /// [`DeFilters::new`], shared with the renders made recently with the same settings (the
+    /// editor starts a render at every edit; building the kernels took a fifth of that).
+    pub fn shared(
+        radius: f64,
+        minimum: f64,
+        curve: f64,
+        os: u32,
+    ) -> Result<Option<std::sync::Arc<DeFilters>>, DeError> {
+        use std::sync::{Arc, Mutex};
+        type Key = (u64, u64, u64, u32);
+        // The last few families of at most 2^20 taps (4 MB) each.
+        static RECENT: Mutex<Vec<(Key, Arc<DeFilters>)>> = Mutex::new(Vec::new());
+        let key = (radius.to_bits(), minimum.to_bits(), curve.to_bits(), os);
+        let found = {
+            let recent = RECENT.lock().unwrap_or_else(|e| e.into_inner());
+            recent
+                .iter()
+                .find(|(k, _)| *k == key)
+                .map(|(_, d)| d.clone())
+        };
+        if let Some(d) = found {
+            return Ok(Some(d));
+        }
+        let Some(d) = Self::new(radius, minimum, curve, os)? else {
+            return Ok(None);
+        };
+        let d = Arc::new(d);
+        // Only small families are kept (wide estimators on big supersamples reach hundreds of
+        // megabytes, which must go with their render).
+        let taps: usize = d.kernels.iter().flatten().map(|r| r.weights.len()).sum();
+        if taps > 1 << 20 {
+            return Ok(Some(d));
+        }
+        let mut recent = RECENT.lock().unwrap_or_else(|e| e.into_inner());
+        if recent.len() >= 4 {
+            recent.remove(0);
+        }
+        recent.push((key, d.clone()));
+        Ok(Some(d))
+    }
+
     /// Kernel of width h: coefficients G(1.5·d) for d = dist/h ≤ 1, normalised over the
     /// square of half-size `half`; but, as flam3 splats them, only the taps within
     /// ⌈h⌉ − 1 of the centre in both directions are kept (so the narrowest kernels lose a
@@ -311,6 +352,22 @@ mod tests {
         assert!(DeFilters::new(0.0, 0.0, 0.4, 1).unwrap().is_none());
         assert!(DeFilters::new(1.0, 2.0, 0.4, 1).is_err());
         assert!(DeFilters::new(1.0, 0.0, 0.0, 1).is_err());
+    }
+
+    #[test]
+    fn small_families_are_shared_and_wide_ones_are_not_kept() {
+        use std::sync::Arc;
+        let a = DeFilters::shared(3.25, 0.0, 0.4, 1).unwrap().unwrap();
+        let b = DeFilters::shared(3.25, 0.0, 0.4, 1).unwrap().unwrap();
+        assert!(Arc::ptr_eq(&a, &b));
+        assert_eq!(*a, DeFilters::new(3.25, 0.0, 0.4, 1).unwrap().unwrap());
+        let c = DeFilters::shared(3.25, 0.0, 0.4, 2).unwrap().unwrap();
+        assert!(!Arc::ptr_eq(&a, &c));
+        assert!(DeFilters::shared(0.0, 0.0, 0.4, 1).unwrap().is_none());
+        // 40 × supersample 6: several million taps, built anew each time.
+        let w1 = DeFilters::shared(40.0, 0.0, 0.4, 6).unwrap().unwrap();
+        let w2 = DeFilters::shared(40.0, 0.0, 0.4, 6).unwrap().unwrap();
+        assert!(!Arc::ptr_eq(&w1, &w2));
     }
 
     #[test]

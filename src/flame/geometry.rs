@@ -26,12 +26,12 @@ pub struct Geometry {
     /// World → continuous bucket coordinates (rotation, translation and scale in one map).
     pub bucket_from_world: Affine,
     pub filter: SpatialFilter,
-    pub de: Option<DeFilters>,
+    pub de: Option<std::sync::Arc<DeFilters>>,
 }
 
 impl Geometry {
     /// Build the geometry of a flame. `de` is `None` when DE is disabled (radius 0).
-    pub fn new(flame: &Flame, de: Option<DeFilters>) -> Geometry {
+    pub fn new(flame: &Flame, de: Option<std::sync::Arc<DeFilters>>) -> Geometry {
         let os = flame.supersample.max(1) as usize;
         let (w, h) = (flame.width as usize, flame.height as usize);
         let filter = SpatialFilter::new(flame.filter_shape, flame.filter, os as u32);

@@ -233,7 +233,7 @@ pub fn check_memory(flame: &Flame, opts: &RenderOptions) -> Result<MemoryEstimat
 
 /// The bucket geometry of a (framed) flame.
 pub fn geometry_of(flame: &Flame) -> Result<Geometry, RenderError> {
-    let de = DeFilters::new(
+    let de = DeFilters::shared(
         flame.estimator_radius,
         flame.estimator_minimum,
         flame.estimator_curve,
@@ -407,7 +407,7 @@ impl Renderer {
             None => check_memory(&flame, opts)?.threads,
             Some(s) => check_memory_rows(&flame, opts, s)?.threads,
         };
-        let de = DeFilters::new(
+        let de = DeFilters::shared(
             flame.estimator_radius,
             flame.estimator_minimum,
             flame.estimator_curve,

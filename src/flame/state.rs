@@ -105,7 +105,7 @@ pub struct RenderState {
 impl RenderState {
     /// Rows and columns of the bucket grid of the flame's histogram.
     pub fn grid(&self) -> Result<(usize, usize), String> {
-        let de = crate::flame::density::DeFilters::new(
+        let de = crate::flame::density::DeFilters::shared(
             self.flame.estimator_radius,
             self.flame.estimator_minimum,
             self.flame.estimator_curve,

@@ -40,7 +40,7 @@ pub fn plan(flame: &Flame, k: usize) -> Result<Vec<Strip>, RenderError> {
             MAX_STRIPS.min(h.max(1))
         )));
     }
-    let de = DeFilters::new(
+    let de = DeFilters::shared(
         flame.estimator_radius,
         flame.estimator_minimum,
         flame.estimator_curve,

@@ -58,6 +58,13 @@ pub enum PreviewMsg {
 
 /// Convert a rendered image to an egui image.
 pub fn to_color_image(img: &image::DynamicImage) -> egui::ColorImage {
+    if let image::DynamicImage::ImageRgb8(rgb) = img {
+        // The previews' usual format: one pass, no RGBA copy.
+        return egui::ColorImage::from_rgb(
+            [rgb.width() as usize, rgb.height() as usize],
+            rgb.as_raw(),
+        );
+    }
     let rgba = img.to_rgba8();
     egui::ColorImage::from_rgba_unmultiplied(
         [rgba.width() as usize, rgba.height() as usize],
