@@ -142,6 +142,16 @@ fn main() {
          worst drag rate {worst_fps:.1} fps (target ≥ 20): {}",
         if ok { "OK" } else { "MISSED" }
     );
+    // Issue #16's tighter goals, reported (not enforced: this machine's timing noise is ±10 %).
+    println!(
+        "speed goals ≤ 30 ms / ≥ 30 fps: edit→first {}, drag {}",
+        if worst_first <= 30.0 {
+            "met"
+        } else {
+            "not met"
+        },
+        if worst_fps >= 30.0 { "met" } else { "not met" }
+    );
     if !ok {
         std::process::exit(1);
     }

@@ -229,3 +229,16 @@ fn the_draft_is_the_picture_when_density_estimation_is_off() {
     assert!(draft.pixels().any(|p| p.0 != [0, 0, 0]));
     assert_eq!(draft.as_raw(), full.as_raw());
 }
+
+/// A preview asked to stop gives nothing (an editor drops a stale frame at once); not asked,
+/// it is the preview.
+#[test]
+fn a_stopped_preview_gives_nothing() {
+    let mut f = example("orchid.flame");
+    f.quality = 5.0;
+    let mut r = Renderer::new(&f, &opts(1, 2)).unwrap();
+    r.run(20_000, &AtomicBool::new(false));
+    assert!(r.preview_until(&AtomicBool::new(true)).is_none());
+    let full = r.preview_until(&AtomicBool::new(false)).unwrap();
+    assert_eq!(full.as_bytes(), r.preview().as_bytes());
+}

@@ -197,6 +197,18 @@ impl DeFilters {
     /// Splat every log-scaled bucket of `hist` into `acc` (same size), in parallel bands.
     /// `ls(A)` gives the log-scale factor of a bucket with alpha accumulator A.
     pub fn splat<F: Fn(f32) -> f32 + Sync>(&self, hist: &Histogram, acc: &mut [Bucket], ls: F) {
+        self.splat_until(hist, acc, ls, &std::sync::atomic::AtomicBool::new(false));
+    }
+
+    /// [`DeFilters::splat`], giving up (leaving `acc` incomplete) once `stop` is set: checked
+    /// before each band.
+    pub fn splat_until<F: Fn(f32) -> f32 + Sync>(
+        &self,
+        hist: &Histogram,
+        acc: &mut [Bucket],
+        ls: F,
+        stop: &std::sync::atomic::AtomicBool,
+    ) {
         let (bw, bh) = (hist.bw, hist.bh);
         assert_eq!(acc.len(), bw * bh);
         let half = self.half.max(0) as usize;
@@ -220,6 +232,9 @@ impl DeFilters {
                 jobs.push((b0, b1, lo, win));
             }
             jobs.into_par_iter().for_each(|(b0, b1, lo, win)| {
+                if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    return;
+                }
                 let rows_in_win = win.len() / bw;
                 for y in b0..b1 {
                     for x in 0..bw {

@@ -597,54 +597,49 @@ impl Renderer {
             Some(l) => l.iter_mut().map(Some).collect(),
             None => (0..self.hists.len()).map(|_| None).collect(),
         };
-        let results: Vec<(u64, u64, bool)> = std::thread::scope(|s| {
-            let handles: Vec<_> = self
-                .hists
-                .iter_mut()
-                .zip(self.lanes.iter_mut())
-                .zip(logs.iter_mut())
-                .enumerate()
-                .map(|(t, ((hist, lanes), log))| {
-                    s.spawn(move || {
-                        let mut done = 0u64;
-                        let mut bad = 0u64;
-                        // First batch index ≥ start that belongs to thread t.
-                        let first = start + (t as u64 + threads - start % threads) % threads;
-                        let mut j = first;
-                        let mut buf = Vec::with_capacity(SUB_BATCH as usize);
-                        while j < end {
-                            if cancel.load(Ordering::Relaxed) {
-                                return (done, bad, true);
-                            }
-                            // Each sub-batch has its own stream, named by its index in the
-                            // whole render (the same for every part and strip layout).
-                            let g = part.global(j);
-                            let n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
-                            let mut rng = FastRng::for_stream(seed, g);
-                            bad += match ifs3d {
-                                None => {
-                                    let b = iterate_into(
-                                        chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng,
-                                    );
-                                    if let Some(log) = log.as_deref_mut() {
-                                        log.extend_from_slice(&buf);
-                                    }
-                                    b
-                                }
-                                Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
-                            };
-                            done += n;
-                            j += threads;
+        let results: Vec<(u64, u64, bool)> = self
+            .hists
+            .par_iter_mut()
+            .zip(self.lanes.par_iter_mut())
+            .zip(logs.par_iter_mut())
+            .enumerate()
+            .with_max_len(1)
+            .map(|(t, ((hist, lanes), log))| {
+                {
+                    let mut done = 0u64;
+                    let mut bad = 0u64;
+                    // First batch index ≥ start that belongs to thread t.
+                    let first = start + (t as u64 + threads - start % threads) % threads;
+                    let mut j = first;
+                    let mut buf = Vec::with_capacity(SUB_BATCH as usize);
+                    while j < end {
+                        if cancel.load(Ordering::Relaxed) {
+                            return (done, bad, true);
                         }
-                        (done, bad, false)
-                    })
-                })
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| h.join().expect("render worker panicked"))
-                .collect()
-        });
+                        // Each sub-batch has its own stream, named by its index in the
+                        // whole render (the same for every part and strip layout).
+                        let g = part.global(j);
+                        let n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
+                        let mut rng = FastRng::for_stream(seed, g);
+                        bad += match ifs3d {
+                            None => {
+                                let b = iterate_into(
+                                    chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng,
+                                );
+                                if let Some(log) = log.as_deref_mut() {
+                                    log.extend_from_slice(&buf);
+                                }
+                                b
+                            }
+                            Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
+                        };
+                        done += n;
+                        j += threads;
+                    }
+                    (done, bad, false)
+                }
+            })
+            .collect();
         for (done, bad, cancelled) in results {
             self.samples_done += done;
             self.badvals += bad;
@@ -701,14 +696,22 @@ impl Renderer {
 
     /// The image as it stands (any time during the render).
     pub fn preview(&self) -> DynamicImage {
+        self.preview_until(&AtomicBool::new(false))
+            .expect("not stopped")
+    }
+
+    /// [`Renderer::preview`], or `None` as soon as `stop` is set (density estimation at low
+    /// density takes tens of milliseconds; an editor drops a picture that an edit made stale).
+    pub fn preview_until(&self, stop: &AtomicBool) -> Option<DynamicImage> {
         let m = self.merged();
-        develop_rows(
+        develop_rows_until(
             &self.flame,
             &self.geom,
             &m,
             self.density(),
             self.format,
             self.out_rows.clone(),
+            stop,
         )
     }
 
@@ -1037,12 +1040,26 @@ pub fn develop_rows(
     format: OutputFormat,
     out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
+    let never = AtomicBool::new(false);
+    develop_rows_until(flame, geom, hist, density, format, out_rows, &never).expect("not stopped")
+}
+
+/// [`develop_rows`], or `None` when `stop` is set before it is done (checked between bands).
+fn develop_rows_until(
+    flame: &Flame,
+    geom: &Geometry,
+    hist: &Histogram,
+    density: f64,
+    format: OutputFormat,
+    out_rows: std::ops::Range<usize>,
+    stop: &AtomicBool,
+) -> Option<DynamicImage> {
     let ls = LogTable::new(LogScale::new(flame, density));
     let mut acc: Vec<Bucket> = Vec::new();
     let acc: &[Bucket] = match &geom.de {
         Some(de) => {
             acc.resize(geom.buckets(), [0.0; 4]);
-            de.splat(hist, &mut acc, |a| ls.factor(a));
+            de.splat_until(hist, &mut acc, |a| ls.factor(a), stop);
             &acc
         }
         None => {
@@ -1057,7 +1074,7 @@ pub fn develop_rows(
             &acc
         }
     };
-    filter_and_tonemap(flame, geom, &Rows::Acc(acc), format, out_rows)
+    filter_and_tonemap_until(flame, geom, &Rows::Acc(acc), format, out_rows, stop)
 }
 
 /// Spatial filter (separable, downsampling by os) and tone mapping into the output image.
@@ -1129,6 +1146,23 @@ fn filter_and_tonemap(
     format: OutputFormat,
     out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
+    let never = AtomicBool::new(false);
+    filter_and_tonemap_until(flame, geom, acc, format, out_rows, &never).expect("not stopped")
+}
+
+/// [`filter_and_tonemap`], or `None` when `stop` is set before it is done (checked between
+/// bands).
+fn filter_and_tonemap_until(
+    flame: &Flame,
+    geom: &Geometry,
+    acc: &Rows,
+    format: OutputFormat,
+    out_rows: std::ops::Range<usize>,
+    stop: &AtomicBool,
+) -> Option<DynamicImage> {
+    if stop.load(Ordering::Relaxed) {
+        return None;
+    }
     let (w, h) = (geom.width, out_rows.len());
     let channels = if format.transparent { 4 } else { 3 };
     let band = Band {
@@ -1141,11 +1175,16 @@ fn filter_and_tonemap(
     };
     let row_len = w * channels;
     let (wu, hu) = (w as u32, h as u32);
-    if format.bits16 {
+    Some(if format.bits16 {
         let mut buf = vec![0u16; row_len * h];
         in_bands(&mut buf, row_len * BAND, |sc, b, chunk| {
-            band.encode(sc, b * BAND, Out::U16(chunk))
+            if !stop.load(Ordering::Relaxed) {
+                band.encode(sc, b * BAND, Out::U16(chunk))
+            }
         });
+        if stop.load(Ordering::Relaxed) {
+            return None;
+        }
         if channels == 4 {
             DynamicImage::ImageRgba16(
                 image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
@@ -1158,8 +1197,13 @@ fn filter_and_tonemap(
     } else {
         let mut buf = vec![0u8; row_len * h];
         in_bands(&mut buf, row_len * BAND, |sc, b, chunk| {
-            band.encode(sc, b * BAND, Out::U8(chunk))
+            if !stop.load(Ordering::Relaxed) {
+                band.encode(sc, b * BAND, Out::U8(chunk))
+            }
         });
+        if stop.load(Ordering::Relaxed) {
+            return None;
+        }
         if channels == 4 {
             DynamicImage::ImageRgba8(
                 image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"),
@@ -1167,7 +1211,7 @@ fn filter_and_tonemap(
         } else {
             DynamicImage::ImageRgb8(image::ImageBuffer::from_raw(wu, hu, buf).expect("buffer size"))
         }
-    }
+    })
 }
 
 /// Run `f(scratch, index, chunk)` over the chunks of `buf` in parallel, with one scratch per

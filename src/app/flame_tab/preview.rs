@@ -11,7 +11,7 @@ use crate::flame::Flame;
 use crate::flame::render::{RenderOptions, Renderer};
 
 /// Iteration time allowed for the first frame after an edit.
-const FIRST_FRAME_BUDGET_S: f64 = 0.022;
+const FIRST_FRAME_BUDGET_S: f64 = 0.018;
 /// The first frame has at least this many samples per pixel (a readable picture).
 const MIN_FIRST_QUALITY: f64 = 1.0;
 
@@ -243,7 +243,11 @@ impl State {
             let image = if first_pass || quick {
                 a.renderer.preview_draft()
             } else {
-                a.renderer.preview()
+                match a.renderer.preview_until(cx.cancel_flag()) {
+                    Some(image) => image,
+                    // A newer job waits: its frame, not this one, is wanted.
+                    None => return,
+                }
             };
             cx.send(PreviewEvent::Frame(PreviewFrame {
                 generation: a.job.generation,
