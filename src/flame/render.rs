@@ -597,6 +597,12 @@ impl Renderer {
             Some(l) => l.iter_mut().map(Some).collect(),
             None => (0..self.hists.len()).map(|_| None).collect(),
         };
+        // One job per histogram on the rayon pool (at most its size run at once): the pool's
+        // threads stay warm for the tone map that usually follows, where fresh threads per pass
+        // were sometimes stacked on one core by the scheduler. Thread t always fills histogram
+        // t with the same sub-batches, whichever pool thread runs it: the image does not
+        // depend on the pool.
+        let per_thread = (end - start).div_ceil(threads) * SUB_BATCH;
         let results: Vec<(u64, u64, bool)> = self
             .hists
             .par_iter_mut()
@@ -605,39 +611,40 @@ impl Renderer {
             .enumerate()
             .with_max_len(1)
             .map(|(t, ((hist, lanes), log))| {
-                {
-                    let mut done = 0u64;
-                    let mut bad = 0u64;
-                    // First batch index ≥ start that belongs to thread t.
-                    let first = start + (t as u64 + threads - start % threads) % threads;
-                    let mut j = first;
-                    let mut buf = Vec::with_capacity(SUB_BATCH as usize);
-                    while j < end {
-                        if cancel.load(Ordering::Relaxed) {
-                            return (done, bad, true);
-                        }
-                        // Each sub-batch has its own stream, named by its index in the
-                        // whole render (the same for every part and strip layout).
-                        let g = part.global(j);
-                        let n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
-                        let mut rng = FastRng::for_stream(seed, g);
-                        bad += match ifs3d {
-                            None => {
-                                let b = iterate_into(
-                                    chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng,
-                                );
-                                if let Some(log) = log.as_deref_mut() {
-                                    log.extend_from_slice(&buf);
-                                }
-                                b
-                            }
-                            Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
-                        };
-                        done += n;
-                        j += threads;
-                    }
-                    (done, bad, false)
+                let mut done = 0u64;
+                let mut bad = 0u64;
+                // First batch index ≥ start that belongs to thread t.
+                let first = start + (t as u64 + threads - start % threads) % threads;
+                let mut j = first;
+                let mut buf = Vec::with_capacity(SUB_BATCH as usize);
+                if let Some(log) = log.as_deref_mut() {
+                    // The pass's samples, without the copies of a doubling vector.
+                    log.reserve(per_thread as usize);
                 }
+                while j < end {
+                    if cancel.load(Ordering::Relaxed) {
+                        return (done, bad, true);
+                    }
+                    // Each sub-batch has its own stream, named by its index in the
+                    // whole render (the same for every part and strip layout).
+                    let g = part.global(j);
+                    let n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
+                    let mut rng = FastRng::for_stream(seed, g);
+                    bad += match ifs3d {
+                        None => {
+                            let b =
+                                iterate_into(chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng);
+                            if let Some(log) = log.as_deref_mut() {
+                                log.extend_from_slice(&buf);
+                            }
+                            b
+                        }
+                        Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
+                    };
+                    done += n;
+                    j += threads;
+                }
+                (done, bad, false)
             })
             .collect();
         for (done, bad, cancelled) in results {
