@@ -72,6 +72,14 @@ pub fn to_color_image(img: &image::DynamicImage) -> egui::ColorImage {
     )
 }
 
+/// Run `f` on the preview's own threads, or on the global pool when it has none.
+fn on_pool<R: Send>(pool: &Option<(usize, rayon::ThreadPool)>, f: impl FnOnce() -> R + Send) -> R {
+    match pool {
+        Some((_, p)) => p.install(f),
+        None => f(),
+    }
+}
+
 /// The live preview renderer: a [`Worker`] whose newest job wins.
 pub struct PreviewWorker {
     worker: Worker<PreviewMsg, PreviewEvent>,
@@ -125,19 +133,40 @@ struct State {
     active: Option<Active>,
     /// Samples per second of the latest passes (exponential average).
     rate: Option<f64>,
+    /// The preview's own threads (and their count): an export or a batch keeping the global
+    /// pool busy must not hold back the editor's frames.
+    pool: Option<(usize, rayon::ThreadPool)>,
 }
 
 impl State {
     fn run(&mut self, msg: PreviewMsg, cx: &JobContext<PreviewEvent>) {
+        let threads = match &msg {
+            PreviewMsg::Render(j) | PreviewMsg::Recolor(j) => j.threads,
+        }
+        .clamp(1, crate::threads::max_threads());
+        if self.pool.as_ref().is_none_or(|(n, _)| *n != threads) {
+            self.pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .thread_name(|i| format!("ugnis-preview-{i}"))
+                .build()
+                .ok()
+                .map(|p| (threads, p));
+        }
+        self.handle(msg, cx);
+    }
+
+    fn handle(&mut self, msg: PreviewMsg, cx: &JobContext<PreviewEvent>) {
         let t = Instant::now();
         let job = match msg {
             PreviewMsg::Render(job) => job,
             PreviewMsg::Recolor(job) => {
                 let g = job.generation;
+                let pool = &self.pool;
                 let recoloured = match self.active.as_mut() {
-                    Some(a) if a.job.generation == g => a
-                        .renderer
-                        .recolor(&job.flame.palette, job.flame.palette_mode),
+                    Some(a) if a.job.generation == g => on_pool(pool, || {
+                        a.renderer
+                            .recolor(&job.flame.palette, job.flame.palette_mode)
+                    }),
                     _ => false,
                 };
                 match self.active.as_mut() {
@@ -146,7 +175,7 @@ impl State {
                         a.job.flame.palette_mode = job.flame.palette_mode;
                         cx.send(PreviewEvent::Frame(PreviewFrame {
                             generation: g,
-                            image: to_color_image(&a.renderer.preview()),
+                            image: to_color_image(&on_pool(pool, || a.renderer.preview())),
                             fraction: a.renderer.fraction(),
                             elapsed_ms: t.elapsed().as_secs_f64() * 1000.0,
                             done: a.renderer.is_done(),
@@ -221,7 +250,8 @@ impl State {
                 .max(1);
             let t_pass = Instant::now();
             let before = a.renderer.samples_done();
-            if !a.renderer.run(want, cx.cancel_flag()) {
+            let cancel = cx.cancel_flag();
+            if !on_pool(&self.pool, || a.renderer.run(want, cancel)) {
                 // Cancelled by a newer job in the middle of a pass.
                 self.active = None;
                 return;
@@ -241,9 +271,9 @@ impl State {
             a.passes += 1;
             let quick = a.job.final_quality <= a.job.first_quality;
             let image = if first_pass || quick {
-                a.renderer.preview_draft()
+                on_pool(&self.pool, || a.renderer.preview_draft())
             } else {
-                match a.renderer.preview_until(cx.cancel_flag()) {
+                match on_pool(&self.pool, || a.renderer.preview_until(cancel)) {
                     Some(image) => image,
                     // A newer job waits: its frame, not this one, is wanted.
                     None => return,
