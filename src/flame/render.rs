@@ -733,13 +733,16 @@ impl Renderer {
             hists: &self.hists,
             ls: LogTable::new(LogScale::new(&self.flame, self.density())),
         };
+        let never = AtomicBool::new(false);
         filter_and_tonemap(
             &self.flame,
             &self.geom,
             &src,
             self.format,
             self.out_rows.clone(),
+            &never,
         )
+        .expect("not stopped")
     }
 
     /// True when the samples are kept and [`Renderer::recolor`] can be used.
@@ -1081,10 +1084,9 @@ fn develop_rows_until(
             &acc
         }
     };
-    filter_and_tonemap_until(flame, geom, &Rows::Acc(acc), format, out_rows, stop)
+    filter_and_tonemap(flame, geom, &Rows::Acc(acc), format, out_rows, stop)
 }
 
-/// Spatial filter (separable, downsampling by os) and tone mapping into the output image.
 /// Where the filter reads its bucket rows from.
 enum Rows<'a> {
     /// Log-scaled (density-estimated) buckets.
@@ -1146,20 +1148,9 @@ impl<'a> Rows<'a> {
     }
 }
 
+/// Spatial filter (separable, downsampling by os) and tone mapping into the output image, or
+/// `None` when `stop` is set before it is done (checked between bands).
 fn filter_and_tonemap(
-    flame: &Flame,
-    geom: &Geometry,
-    acc: &Rows,
-    format: OutputFormat,
-    out_rows: std::ops::Range<usize>,
-) -> DynamicImage {
-    let never = AtomicBool::new(false);
-    filter_and_tonemap_until(flame, geom, acc, format, out_rows, &never).expect("not stopped")
-}
-
-/// [`filter_and_tonemap`], or `None` when `stop` is set before it is done (checked between
-/// bands).
-fn filter_and_tonemap_until(
     flame: &Flame,
     geom: &Geometry,
     acc: &Rows,

@@ -152,10 +152,6 @@ impl State {
                 .ok()
                 .map(|p| (threads, p));
         }
-        self.handle(msg, cx);
-    }
-
-    fn handle(&mut self, msg: PreviewMsg, cx: &JobContext<PreviewEvent>) {
         let t = Instant::now();
         let job = match msg {
             PreviewMsg::Render(job) => job,
