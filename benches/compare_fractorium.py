@@ -15,6 +15,9 @@ default parameters (seeded: repeatable).
 Needs: Fractorium's renderer built with ../shared/tools/ember/build.sh (EMBER_HOME, default
 /tmp/ember), python3 with numpy and pillow, and a release build of ugnis (cargo build --release).
 
+UGNIS_BIN names another ugnis binary to compare (an A/B of two builds); --keep DIR keeps each
+flame's three pictures (ref, fr, ug) to look at.
+
 Examples:
   benches/compare_fractorium.py ../shared/testdata/real-flames/*.flame
   benches/compare_fractorium.py --generated 20 --speed
@@ -34,7 +37,7 @@ import numpy as np
 from PIL import Image
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-UGNIS = os.path.join(ROOT, "target", "release", "ugnis")
+UGNIS = os.environ.get("UGNIS_BIN", os.path.join(ROOT, "target", "release", "ugnis"))
 KIT = os.path.normpath(os.path.join(ROOT, "..", "shared", "tools", "ember"))
 EMBER_HOME = os.environ.get("EMBER_HOME", "/tmp/ember")
 
@@ -127,6 +130,7 @@ def main():
     ap.add_argument("--ref-quality", type=int, default=1000)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--speed", action="store_true", help="also print wall times and their ratio")
+    ap.add_argument("--keep", default=None, help="directory to keep each flame's three pictures in")
     a = ap.parse_args()
     if not os.path.exists(UGNIS):
         sys.exit(f"{UGNIS} missing: cargo build --release")
@@ -163,6 +167,11 @@ def main():
         if a.speed:
             line += f" {t_fr:7.2f} {t_ug:7.2f} {t_ug / t_fr:6.2f}"
         print(line, flush=True)
+        if a.keep:
+            os.makedirs(a.keep, exist_ok=True)
+            stem = re.sub(r"[^A-Za-z0-9_.-]", "_", f"{os.path.basename(f)}-{i}")
+            for x, p in (("ref", ref), ("fr", fr), ("ug", ug)):
+                os.replace(p, os.path.join(a.keep, f"{stem}.{x}.png"))
     if rows:
         d = [r[1] - r[0] for r in rows]
         print(f"\n{len(rows)} flames: Fractorium q{a.quality} vs its q{a.ref_quality}: median "

@@ -13,6 +13,10 @@ pub struct PlotPalette {
     /// Premultiplied RGBA entries (256 for most flames; files may carry other counts).
     pub colors: Vec<[f32; 4]>,
     pub mode: PaletteMode,
+    /// Entry ⌊c·scale + offset⌋ (step) or position c·scale (linear): the rule of
+    /// [`crate::flame::PaletteIndex`] for this many entries.
+    pub scale: f64,
+    pub offset: f64,
 }
 
 impl PlotPalette {
@@ -37,25 +41,30 @@ impl PlotPalette {
         } else {
             colors
         };
+        let (scale, offset) = flame
+            .palette_index
+            .scale_offset(colors.len(), flame.palette_mode);
         PlotPalette {
             colors,
             mode: flame.palette_mode,
+            scale,
+            offset,
         }
     }
 
-    /// Palette colour of colour coordinate `c` (flame.md §5.2): entry ⌊c·N⌋ of the N entries
-    /// (step), or linear interpolation between neighbouring entries.
+    /// Palette colour of colour coordinate `c`: entry ⌊c·scale + offset⌋ of the N entries
+    /// (step; flam3's ⌊c·N⌋), or linear interpolation between neighbouring entries at c·scale.
     #[inline(always)]
     pub fn lookup(&self, c: f64) -> [f32; 4] {
         let n = self.colors.len();
         let nf = n as f64;
         match self.mode {
             PaletteMode::Step => {
-                let k = (c * nf) as i64; // saturating cast; NaN → 0
+                let k = (c * self.scale + self.offset) as i64; // saturating cast; NaN → 0
                 self.colors[k.clamp(0, n as i64 - 1) as usize]
             }
             PaletteMode::Linear => {
-                let f = c * nf;
+                let f = c * self.scale;
                 let mut k = f.floor();
                 let mut u = f - k;
                 if k.is_nan() || k < 0.0 {
@@ -145,5 +154,61 @@ mod tests {
         let want = (128.5f64 / 255.0) as f32;
         assert!((v - want).abs() < 1e-6);
         assert_eq!(p.lookup(1.0)[0], 1.0);
+    }
+
+    /// The three programs' rules on a 256-entry grey ramp (entry k has grey k/255).
+    #[test]
+    fn palette_index_rules() {
+        use crate::flame::PaletteIndex::*;
+        let grey = |k: f64| (k / 255.0) as f32;
+        let at = |index, mode, c: f64| {
+            let f = Flame {
+                palette: Gradient::grey_ramp(),
+                palette_mode: mode,
+                palette_index: index,
+                ..Flame::default()
+            };
+            PlotPalette::new(&f).lookup(c)[0]
+        };
+        let step = PaletteMode::Step;
+        // flam3 ⌊256c⌋, Fractorium ⌊255c⌋, JWildfire ⌊254c + ½⌋.
+        assert_eq!(at(Flam3, step, 0.5), grey(128.0));
+        assert_eq!(at(Fractorium, step, 0.5), grey(127.0));
+        assert_eq!(at(JWildfire, step, 0.5), grey(127.0));
+        assert_eq!(at(JWildfire, step, 0.503), grey(128.0)); // 127.762 + ½
+        assert_eq!(at(Flam3, step, 0.1), grey(25.0));
+        assert_eq!(at(Fractorium, step, 0.1), grey(25.0));
+        assert_eq!(at(JWildfire, step, 0.1), grey(25.0)); // 25.4 + ½
+        assert_eq!(at(Flam3, step, 1.0), grey(255.0));
+        assert_eq!(at(Fractorium, step, 1.0), grey(255.0));
+        assert_eq!(at(JWildfire, step, 1.0), grey(254.0));
+        // Linear: positions 256c, 255c, 254c.
+        let lin = PaletteMode::Linear;
+        let close = |a: f32, k: f64| assert!((a - grey(k)).abs() < 1e-6, "{a} vs {k}/255");
+        close(at(Flam3, lin, 0.25), 64.0);
+        close(at(Fractorium, lin, 0.25), 63.75);
+        close(at(JWildfire, lin, 0.25), 63.5);
+        close(at(Fractorium, lin, 1.0), 255.0);
+        close(at(JWildfire, lin, 1.0), 254.0);
+    }
+
+    #[test]
+    fn palette_index_from_version() {
+        use crate::flame::PaletteIndex::{self, *};
+        for (v, want) in [
+            ("EMBER-LNX-1.0.0.19", Fractorium),
+            ("EMBER-WIN-1.0.0.7", Fractorium),
+            ("JWildfire V5.60 (07.05.2020)", JWildfire),
+            ("JWildfire V7.00 (07.08.2021)", JWildfire),
+            ("0.16 (06.11.2011)", JWildfire),
+            ("Apophysis 7x 2010 (R12)", Flam3),
+            ("Apophysis 2.09", Flam3),
+            ("FLAM3-LNX-3.1.1", Flam3),
+            ("ugnis-0.1.0", Flam3),
+            ("1.0 (beta)", Flam3),
+            ("", Flam3),
+        ] {
+            assert_eq!(PaletteIndex::from_version(v), want, "{v}");
+        }
     }
 }

@@ -25,7 +25,8 @@ pub mod tonemap;
 pub mod variations;
 
 pub use model::{
-    Affine, Camera3d, FilterShape, Flame, FlameKind, Ifs3d, NewFlame, PaletteMode, Var, Xform,
+    Affine, Camera3d, FilterShape, Flame, FlameKind, Ifs3d, NewFlame, PaletteIndex, PaletteMode,
+    Var, Xform,
 };
 pub use render::{RenderError, RenderOptions, Renderer, render};
 pub use tonemap::OutputFormat;

@@ -228,6 +228,80 @@ impl PaletteMode {
     }
 }
 
+/// Whose rule turns a colour coordinate c in [0, 1] into a position in a palette of N entries.
+/// The programs differ by half an entry to one entry, which is invisible on a smooth gradient
+/// but decides the colour where c settles on a few values (xforms of small colour speed)
+/// next to sharp steps of the gradient. Each file is drawn by the rule of the program that
+/// wrote it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum PaletteIndex {
+    /// flam3 and Apophysis: entry ⌊c·N⌋ (step), position c·N (linear).
+    #[default]
+    Flam3,
+    /// Fractorium: entry ⌊c·(N − 1)⌋, position c·(N − 1).
+    Fractorium,
+    /// JWildfire: the nearest entry to c·(N − 2) (step), position c·(N − 2) (its "smooth
+    /// gradient").
+    JWildfire,
+}
+
+impl PaletteIndex {
+    pub fn name(self) -> &'static str {
+        match self {
+            PaletteIndex::Flam3 => "flam3",
+            PaletteIndex::Fractorium => "fractorium",
+            PaletteIndex::JWildfire => "jwildfire",
+        }
+    }
+    pub fn from_name(s: &str) -> Option<Self> {
+        [Self::Flam3, Self::Fractorium, Self::JWildfire]
+            .into_iter()
+            .find(|m| m.name() == s)
+    }
+    /// The rule of the program named by a flame's `version` attribute: Fractorium writes
+    /// "EMBER-…", JWildfire "JWildfire V…" (its first releases only "0.16 (06.11.2011)").
+    pub fn from_version(v: &str) -> Self {
+        let v = v.trim();
+        let digits = |s: &str, n: usize| s.len() == n && s.bytes().all(|b| b.is_ascii_digit());
+        // "0.16 (06.11.2011)": a version number and a date in parentheses.
+        let early_jwildfire = v.split_once(" (").is_some_and(|(num, date)| {
+            let num: Vec<&str> = num.split('.').collect();
+            let date: Vec<&str> = date.trim_end_matches(')').split('.').collect();
+            num.len() == 2
+                && num
+                    .iter()
+                    .all(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+                && v.ends_with(')')
+                && date.len() == 3
+                && digits(date[0], 2)
+                && digits(date[1], 2)
+                && digits(date[2], 4)
+        });
+        if v.get(..5).is_some_and(|p| p.eq_ignore_ascii_case("ember")) {
+            PaletteIndex::Fractorium
+        } else if v
+            .get(..9)
+            .is_some_and(|p| p.eq_ignore_ascii_case("jwildfire"))
+            || early_jwildfire
+        {
+            PaletteIndex::JWildfire
+        } else {
+            PaletteIndex::Flam3
+        }
+    }
+    /// (scale, offset) for `n` entries: step reads entry ⌊c·scale + offset⌋, linear
+    /// interpolates at position c·scale.
+    pub fn scale_offset(self, n: usize, mode: PaletteMode) -> (f64, f64) {
+        let n = n as f64;
+        match (self, mode) {
+            (PaletteIndex::Flam3, _) => (n, 0.0),
+            (PaletteIndex::Fractorium, _) => ((n - 1.0).max(1.0), 0.0),
+            (PaletteIndex::JWildfire, PaletteMode::Step) => ((n - 2.0).max(1.0), 0.5),
+            (PaletteIndex::JWildfire, PaletteMode::Linear) => ((n - 2.0).max(1.0), 0.0),
+        }
+    }
+}
+
 /// A 3-D Fractint IFS shown through a fixed view (formats.md §2.2): rows
 /// a b c d e f g h i j k l p with x′ = a x + b y + c z + j, y′ = d x + e y + f z + k,
 /// z′ = g x + h y + i z + l.
@@ -366,6 +440,8 @@ pub struct Flame {
     pub highlight_power: f64,
     pub background: [f64; 3],
     pub palette_mode: PaletteMode,
+    /// Whose rule indexes the palette (the program that wrote the file).
+    pub palette_index: PaletteIndex,
     pub palette: Gradient,
     /// The file's palette when it has more than 256 entries (Fractorium writes such palettes):
     /// `palette` then holds it resampled to 256 for the editor. It renders and is saved only as
@@ -421,6 +497,7 @@ impl Default for Flame {
             highlight_power: -1.0,
             background: [0.0, 0.0, 0.0],
             palette_mode: PaletteMode::Step,
+            palette_index: PaletteIndex::Flam3,
             palette: Gradient::default(),
             palette_hires: None,
             curves: crate::flame::curves::Curves::default(),

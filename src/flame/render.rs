@@ -957,7 +957,8 @@ fn accumulate(pal: &PlotPalette, hist: &mut Histogram, buf: &[Pending]) {
     let data = &mut hist.data;
     let colors = &pal.colors[..];
     let step = pal.mode == PaletteMode::Step && !colors.is_empty();
-    let (nf, top) = (colors.len() as f64, colors.len().saturating_sub(1) as f64);
+    let (scale, offset) = (pal.scale, pal.offset);
+    let top = colors.len().saturating_sub(1) as f64;
     let add = |data: &mut [Bucket], i: usize, idx: u32, p: [f32; 4], v: f32| {
         if let Some(&(ahead, _, _)) = buf.get(i + AHEAD) {
             prefetch(data.as_ptr().wrapping_add(ahead as usize));
@@ -978,7 +979,7 @@ fn accumulate(pal: &PlotPalette, hist: &mut Histogram, buf: &[Pending]) {
     for (b, block) in buf.chunks(BLOCK).enumerate() {
         for (e, &(_, c, _)) in entry.iter_mut().zip(block) {
             // max/min also send NaN to 0, as the saturating cast of `lookup` does.
-            let f = (c as f64 * nf).max(0.0).min(top);
+            let f = (c as f64 * scale + offset).max(0.0).min(top);
             // SAFETY: f is finite and within 0..=top, which fits a u32.
             *e = unsafe { f.to_int_unchecked::<u32>() };
         }
@@ -1432,10 +1433,19 @@ mod tests {
                 (i % 7, c, 0.25 + (i % 3) as f32)
             })
             .collect();
-        for mode in [PaletteMode::Step, PaletteMode::Linear] {
+        let rules = [
+            crate::flame::PaletteIndex::Flam3,
+            crate::flame::PaletteIndex::Fractorium,
+            crate::flame::PaletteIndex::JWildfire,
+        ];
+        for (mode, index) in [PaletteMode::Step, PaletteMode::Linear]
+            .into_iter()
+            .flat_map(|m| rules.map(|r| (m, r)))
+        {
             let flame = Flame {
                 palette: Gradient::grey_ramp(),
                 palette_mode: mode,
+                palette_index: index,
                 ..Flame::default()
             };
             let pal = PlotPalette::new(&flame);
@@ -1451,7 +1461,7 @@ mod tests {
             let bits = |h: &Histogram| -> Vec<u32> {
                 h.data.iter().flatten().map(|v| v.to_bits()).collect()
             };
-            assert_eq!(bits(&got), bits(&want), "{mode:?}");
+            assert_eq!(bits(&got), bits(&want), "{mode:?} {index:?}");
         }
     }
 }

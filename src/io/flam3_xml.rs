@@ -12,7 +12,9 @@ use std::path::PathBuf;
 use quick_xml::events::Event;
 
 use crate::flame::curves::{self, Curves};
-use crate::flame::model::{Affine, FilterShape, Flame, FlameKind, PaletteMode, Var, Xform};
+use crate::flame::model::{
+    Affine, FilterShape, Flame, FlameKind, PaletteIndex, PaletteMode, Var, Xform,
+};
 use crate::flame::symmetry::add_symmetry;
 use crate::flame::variations::{self, Form};
 use crate::gradient::{Gradient, hue_rotate, resample_colors};
@@ -385,6 +387,11 @@ fn read_flame(
     let mut angle: Option<f64> = None;
     let mut contrast: Option<f64> = None;
     let mut est = (9.0, 0.0, 0.4, start);
+    // The palette rule: ugnis' own attribute, else the writing program's (`version`).
+    let mut palette_index: Option<PaletteIndex> = None;
+    let mut version_index = PaletteIndex::Flam3;
+    let mut palette_mode_seen = false;
+    let mut smooth_gradient: Option<(String, usize)> = None;
     for a in &attrs {
         let v = &a.value;
         match a.name {
@@ -398,7 +405,26 @@ fn read_flame(
                 }
                 f.name = v.to_string();
             }
-            "version" | "new_linear" => {}
+            "version" => version_index = PaletteIndex::from_version(v),
+            "new_linear" => {}
+            "ugnis_palette_index" => match PaletteIndex::from_name(v.trim()) {
+                Some(m) => palette_index = Some(m),
+                None => {
+                    return Err(cx.err(
+                        a.offset,
+                        "FLA004",
+                        format!(
+                            "ugnis_palette_index '{v}' must be 'flam3', 'fractorium' or 'jwildfire'"
+                        ),
+                    ));
+                }
+            },
+            // JWildfire's interpolated gradient; honoured for JWildfire's files (below) and
+            // written back either way.
+            "smooth_gradient" => {
+                smooth_gradient = Some((v.trim().to_string(), a.offset));
+                f.extra_attrs.push((a.name.to_string(), v.to_string()));
+            }
             "size" => {
                 let parts: Vec<&str> = v.split_whitespace().collect();
                 let ok = parts.len() == 2
@@ -552,7 +578,10 @@ fn read_flame(
                 est.3 = a.offset;
             }
             "palette_mode" => match PaletteMode::from_name(v.trim()) {
-                Some(m) => f.palette_mode = m,
+                Some(m) => {
+                    f.palette_mode = m;
+                    palette_mode_seen = true;
+                }
                 None => cx.warn(
                     a.offset,
                     "XML014",
@@ -632,6 +661,17 @@ fn read_flame(
     }
     if !rotate_seen && let Some(ang) = angle {
         f.rotate = -ang.to_degrees();
+    }
+    f.palette_index = palette_index.unwrap_or(version_index);
+    if let Some((v, _)) = &smooth_gradient {
+        if f.palette_index == PaletteIndex::JWildfire {
+            if !palette_mode_seen && matches!(v.as_str(), "1" | "true") {
+                f.palette_mode = PaletteMode::Linear;
+            }
+        } else if cx.ignored_set.insert(name_hash("smooth_gradient")) && cx.ignored_attrs.len() < 6
+        {
+            cx.ignored_attrs.push("smooth_gradient".to_string());
+        }
     }
     if let Some(c) = contrast {
         if c <= 0.0 {
@@ -1440,6 +1480,9 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         let _ = write!(s, " ugnis_seed=\"{seed}\"");
     }
     let _ = write!(s, " ugnis_kind=\"{}\"", f.kind.name());
+    if f.palette_index != PaletteIndex::Flam3 {
+        let _ = write!(s, " ugnis_palette_index=\"{}\"", f.palette_index.name());
+    }
     if let Some(aw) = f.auto_weights {
         let _ = write!(s, " ugnis_auto_weights=\"{}\"", aw as u8);
     }
@@ -1703,6 +1746,68 @@ mod tests {
         edited.palette.colors[0] = [1.0, 1.0, 1.0, 1.0];
         assert_eq!(edited.render_colors().len(), 256);
         assert!(flame_element(&edited).contains("<palette count=\"256\""));
+    }
+
+    /// Each file keeps the palette rule of the program that wrote it, through ugnis' own files.
+    #[test]
+    fn palette_rule_follows_the_writing_program() {
+        use crate::flame::PaletteIndex;
+        let flame = |head: &str| {
+            format!(
+                "<flame name=\"p\" {head} size=\"8 8\" center=\"0 0\" scale=\"4\">\
+                 <xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>"
+            )
+        };
+        let one = |head: &str| read(&flame(head), &opts()).unwrap().value.flames[0].clone();
+        for (head, index, mode) in [
+            (
+                "version=\"EMBER-LNX-1.0.0.19\" palette_mode=\"linear\"",
+                PaletteIndex::Fractorium,
+                PaletteMode::Linear,
+            ),
+            (
+                "version=\"JWildfire V5.60 (07.05.2020)\" smooth_gradient=\"0\"",
+                PaletteIndex::JWildfire,
+                PaletteMode::Step,
+            ),
+            (
+                "version=\"JWildfire V5.60 (07.05.2020)\" smooth_gradient=\"1\"",
+                PaletteIndex::JWildfire,
+                PaletteMode::Linear,
+            ),
+            (
+                "version=\"Apophysis 7x\"",
+                PaletteIndex::Flam3,
+                PaletteMode::Step,
+            ),
+            (
+                "smooth_gradient=\"1\"",
+                PaletteIndex::Flam3,
+                PaletteMode::Step,
+            ),
+            (
+                "version=\"ugnis-0.1.0\" ugnis_palette_index=\"jwildfire\"",
+                PaletteIndex::JWildfire,
+                PaletteMode::Step,
+            ),
+        ] {
+            let f = one(head);
+            assert_eq!((f.palette_index, f.palette_mode), (index, mode), "{head}");
+            let text = flame_element(&f);
+            assert_eq!(
+                text.contains("ugnis_palette_index="),
+                index != PaletteIndex::Flam3,
+                "{text}"
+            );
+            let back = read(&text, &opts()).unwrap().value.flames[0].clone();
+            assert_eq!(back, f, "{head}");
+        }
+        let e = read(&flame("ugnis_palette_index=\"apophysis\""), &opts()).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("must be 'flam3', 'fractorium' or 'jwildfire'"),
+            "{e}"
+        );
     }
 
     #[test]
