@@ -171,7 +171,10 @@ mod tests {
             PlotPalette::new(&f).lookup(c)[0]
         };
         let step = PaletteMode::Step;
-        // flam3 ⌊256c⌋, Fractorium ⌊255c⌋, JWildfire ⌊254c + ½⌋.
+        // flam3 ⌊256c⌋, Apophysis ⌊255c + ½⌋, Fractorium ⌊255c⌋, JWildfire ⌊254c + ½⌋.
+        assert_eq!(at(Apophysis, step, 0.5), grey(128.0)); // 127.5 + ½
+        assert_eq!(at(Apophysis, step, 0.498), grey(127.0)); // 126.99 + ½
+        assert_eq!(at(Apophysis, step, 1.0), grey(255.0));
         assert_eq!(at(Flam3, step, 0.5), grey(128.0));
         assert_eq!(at(Fractorium, step, 0.5), grey(127.0));
         assert_eq!(at(JWildfire, step, 0.5), grey(127.0));
@@ -200,9 +203,9 @@ mod tests {
             ("EMBER-WIN-1.0.0.7", Fractorium),
             ("JWildfire V5.60 (07.05.2020)", JWildfire),
             ("JWildfire V7.00 (07.08.2021)", JWildfire),
-            ("0.16 (06.11.2011)", JWildfire),
-            ("Apophysis 7x 2010 (R12)", Flam3),
-            ("Apophysis 2.09", Flam3),
+            ("0.16 (06.11.2011)", Apophysis),
+            ("Apophysis 7x 2010 (R12)", Apophysis),
+            ("Apophysis 2.09", Apophysis),
             ("FLAM3-LNX-3.1.1", Flam3),
             ("ugnis-0.1.0", Flam3),
             ("1.0 (beta)", Flam3),

@@ -235,9 +235,12 @@ impl PaletteMode {
 /// wrote it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum PaletteIndex {
-    /// flam3 and Apophysis: entry ⌊c·N⌋ (step), position c·N (linear).
+    /// flam3: entry ⌊c·N⌋ (step), position c·N (linear).
     #[default]
     Flam3,
+    /// Apophysis (and JWildfire's first releases): the nearest entry to c·(N − 1); position
+    /// c·(N − 1).
+    Apophysis,
     /// Fractorium: entry ⌊c·(N − 1)⌋, position c·(N − 1).
     Fractorium,
     /// JWildfire: the nearest entry to c·(N − 2) (step), position c·(N − 2) (its "smooth
@@ -249,17 +252,24 @@ impl PaletteIndex {
     pub fn name(self) -> &'static str {
         match self {
             PaletteIndex::Flam3 => "flam3",
+            PaletteIndex::Apophysis => "apophysis",
             PaletteIndex::Fractorium => "fractorium",
             PaletteIndex::JWildfire => "jwildfire",
         }
     }
     pub fn from_name(s: &str) -> Option<Self> {
-        [Self::Flam3, Self::Fractorium, Self::JWildfire]
-            .into_iter()
-            .find(|m| m.name() == s)
+        [
+            Self::Flam3,
+            Self::Apophysis,
+            Self::Fractorium,
+            Self::JWildfire,
+        ]
+        .into_iter()
+        .find(|m| m.name() == s)
     }
-    /// The rule of the program named by a flame's `version` attribute: Fractorium writes
-    /// "EMBER-…", JWildfire "JWildfire V…" (its first releases only "0.16 (06.11.2011)").
+    /// The rule of the program named by a flame's `version` attribute: Apophysis writes
+    /// "Apophysis 7x …", Fractorium "EMBER-…", JWildfire "JWildfire V…" (its first releases of
+    /// 2011 only "0.16 (06.11.2011)"; they indexed as Apophysis does).
     pub fn from_version(v: &str) -> Self {
         let v = v.trim();
         let digits = |s: &str, n: usize| s.len() == n && s.bytes().all(|b| b.is_ascii_digit());
@@ -277,14 +287,13 @@ impl PaletteIndex {
                 && digits(date[1], 2)
                 && digits(date[2], 4)
         });
-        if v.get(..5).is_some_and(|p| p.eq_ignore_ascii_case("ember")) {
+        let starts = |p: &str| v.get(..p.len()).is_some_and(|q| q.eq_ignore_ascii_case(p));
+        if starts("ember") {
             PaletteIndex::Fractorium
-        } else if v
-            .get(..9)
-            .is_some_and(|p| p.eq_ignore_ascii_case("jwildfire"))
-            || early_jwildfire
-        {
+        } else if starts("jwildfire") {
             PaletteIndex::JWildfire
+        } else if starts("apophysis") || early_jwildfire {
+            PaletteIndex::Apophysis
         } else {
             PaletteIndex::Flam3
         }
@@ -295,6 +304,8 @@ impl PaletteIndex {
         let n = n as f64;
         match (self, mode) {
             (PaletteIndex::Flam3, _) => (n, 0.0),
+            (PaletteIndex::Apophysis, PaletteMode::Step) => ((n - 1.0).max(1.0), 0.5),
+            (PaletteIndex::Apophysis, PaletteMode::Linear) => ((n - 1.0).max(1.0), 0.0),
             (PaletteIndex::Fractorium, _) => ((n - 1.0).max(1.0), 0.0),
             (PaletteIndex::JWildfire, PaletteMode::Step) => ((n - 2.0).max(1.0), 0.5),
             (PaletteIndex::JWildfire, PaletteMode::Linear) => ((n - 2.0).max(1.0), 0.0),

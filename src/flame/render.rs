@@ -1435,6 +1435,7 @@ mod tests {
             .collect();
         let rules = [
             crate::flame::PaletteIndex::Flam3,
+            crate::flame::PaletteIndex::Apophysis,
             crate::flame::PaletteIndex::Fractorium,
             crate::flame::PaletteIndex::JWildfire,
         ];

@@ -414,7 +414,7 @@ fn read_flame(
                         a.offset,
                         "FLA004",
                         format!(
-                            "ugnis_palette_index '{v}' must be 'flam3', 'fractorium' or 'jwildfire'"
+                            "ugnis_palette_index '{v}' must be 'flam3', 'apophysis', 'fractorium' or 'jwildfire'"
                         ),
                     ));
                 }
@@ -1777,6 +1777,11 @@ mod tests {
             ),
             (
                 "version=\"Apophysis 7x\"",
+                PaletteIndex::Apophysis,
+                PaletteMode::Step,
+            ),
+            (
+                "version=\"FLAM3-LNX-3.1.1\"",
                 PaletteIndex::Flam3,
                 PaletteMode::Step,
             ),
@@ -1802,10 +1807,10 @@ mod tests {
             let back = read(&text, &opts()).unwrap().value.flames[0].clone();
             assert_eq!(back, f, "{head}");
         }
-        let e = read(&flame("ugnis_palette_index=\"apophysis\""), &opts()).unwrap_err();
+        let e = read(&flame("ugnis_palette_index=\"xaos\""), &opts()).unwrap_err();
         assert!(
             e.to_string()
-                .contains("must be 'flam3', 'fractorium' or 'jwildfire'"),
+                .contains("must be 'flam3', 'apophysis', 'fractorium' or 'jwildfire'"),
             "{e}"
         );
     }
