@@ -53,6 +53,11 @@ fn list_variations() {
             .params
             .iter()
             .map(|p| format!("{}={}", p.name, p.default))
+            .chain(
+                d.texts
+                    .iter()
+                    .map(|t| format!("{}=\"{}\"", t.name, t.default)),
+            )
             .collect();
         out.push_str(&format!(
             "{:<24} {:<10} {:<22} {}\n",

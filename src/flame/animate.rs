@@ -140,6 +140,11 @@ fn lerp_vars(a: &[Var], b: &[Var], t: f64) -> Vec<Var> {
                 .zip(pb.iter().chain(std::iter::repeat(&0.0)))
                 .map(|(p, q)| lerp(*p, *q, t))
                 .collect(),
+            // Texts cannot be blended: the first flame's until the middle, then the second's.
+            texts: match other {
+                Some(w) if t >= 0.5 => w.texts.clone(),
+                _ => v.texts.clone(),
+            },
         });
     }
     for w in b
@@ -151,6 +156,7 @@ fn lerp_vars(a: &[Var], b: &[Var], t: f64) -> Vec<Var> {
             form: w.form,
             weight: lerp(0.0, w.weight, t),
             params: w.params.clone(),
+            texts: w.texts.clone(),
         });
     }
     out.retain(|v| v.weight != 0.0);

@@ -101,7 +101,8 @@ impl CompiledXform {
             if v.weight == 0.0 {
                 continue;
             }
-            let p = Prepared::new(v.id, v.form, v.weight, &v.params, x.coefs, compat);
+            let p =
+                Prepared::with_texts(v.id, v.form, v.weight, &v.params, &v.texts, x.coefs, compat);
             sets_color |= p.def.has(variations::flag::SETS_COLOR);
             match v.form {
                 Form::Pre => pre_vars.push(p),

@@ -12,6 +12,8 @@ pub struct Var {
     pub form: Form,
     pub weight: f64,
     pub params: Vec<f64>,
+    /// Text parameters in [`variations::VarDef::texts`] order (empty for most variations).
+    pub texts: Vec<String>,
 }
 
 impl Var {
@@ -27,6 +29,11 @@ impl Var {
             form,
             weight,
             params: variations::info(id).defaults(),
+            texts: variations::info(id)
+                .texts
+                .iter()
+                .map(|t| t.default.to_string())
+                .collect(),
         }
     }
 

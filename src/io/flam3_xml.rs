@@ -1200,6 +1200,7 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
     let mut color_speed: Option<f64> = None;
     let mut symmetry: Option<f64> = None;
     let mut params: Vec<(variations::VarId, Form, usize, f64, String, String)> = Vec::new();
+    let mut texts: Vec<(variations::VarId, Form, usize, String, String, String)> = Vec::new();
     // JWildfire writes NAME_fx_priority beside every variation it writes; in other programs'
     // files a variation is followed by its NAME_parameters. Both sets are built once, so an
     // xform with very many attributes is still read in linear time.
@@ -1329,6 +1330,15 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                 } else if let Some((id, form, pi)) = variations::param_of(name) {
                     let pv = cx.num(a)?;
                     params.push((id, form, pi, pv, name.to_string(), a.value.to_string()));
+                } else if let Some((id, form, ti)) = variations::text_of(name) {
+                    texts.push((
+                        id,
+                        form,
+                        ti,
+                        text_from_hex(v),
+                        name.to_string(),
+                        v.to_string(),
+                    ));
                 } else {
                     let numeric = parse_number(v).is_ok();
                     let marked = marked_vars.contains(name);
@@ -1380,6 +1390,12 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
             {
                 p.1 = form;
             }
+            for t in texts
+                .iter_mut()
+                .filter(|t| t.0 == id && t.1 == Form::Regular)
+            {
+                t.1 = form;
+            }
         }
     }
     // Parameters go to their variation; parameters of absent variations are kept as-is.
@@ -1390,8 +1406,35 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
             x.extra_attrs.push((name, raw));
         }
     }
+    for (id, form, ti, text, name, raw) in texts {
+        if let Some(var) = x.vars.iter_mut().find(|v| v.id == id && v.form == form) {
+            var.texts[ti] = variations::info(id).texts[ti].normalise(&text);
+        } else {
+            x.extra_attrs.push((name, raw));
+        }
+    }
     let _ = start;
     Ok(x)
+}
+
+/// A text parameter's value: JWildfire writes the hex digits of its bytes ("53594D" for
+/// "SYM"); a value that is not an even number of hex digits is taken as it stands.
+fn text_from_hex(v: &str) -> String {
+    let v = v.trim();
+    let hex = v.len().is_multiple_of(2) && v.bytes().all(|b| b.is_ascii_hexdigit());
+    if !hex {
+        return v.to_string();
+    }
+    let bytes: Vec<u8> = (0..v.len())
+        .step_by(2)
+        .filter_map(|i| u8::from_str_radix(&v[i..i + 2], 16).ok())
+        .collect();
+    String::from_utf8_lossy(&bytes).into_owned()
+}
+
+/// The hex digits of a text parameter's bytes, as JWildfire writes them.
+fn text_to_hex(t: &str) -> String {
+    t.bytes().map(|b| format!("{b:02X}")).collect()
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1564,6 +1607,10 @@ fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
         for i in 0..variations::info(v.id).params.len() {
             let name = variations::param_attr_name(v.id, v.form, i);
             let _ = write!(s, " {name}=\"{}\"", n(v.params[i]));
+        }
+        for (i, t) in v.texts.iter().enumerate() {
+            let name = variations::text_attr_name(v.id, v.form, i);
+            let _ = write!(s, " {name}=\"{}\"", text_to_hex(t));
         }
     }
     let c = x.coefs.to_coefs();
@@ -1813,6 +1860,39 @@ mod tests {
                 .contains("must be 'flam3', 'apophysis', 'fractorium' or 'jwildfire'"),
             "{e}"
         );
+    }
+
+    /// JWildfire's text parameters: the hex digits of their bytes, read into the variation and
+    /// written back the same way.
+    #[test]
+    fn text_parameters_round_trip_as_hex() {
+        let src = r#"<flame name="t" size="8 8" center="0 0" scale="4">
+<xform weight="1" color="0" text_wf="1" text_wf_font_size="100" text_wf_text="53594D20C3A9" text_wf_font_name="417269616C" coefs="1 0 0 1 0 0"/>
+<xform weight="1" color="1" linear="1" text_wf_text="4142" coefs="1 0 0 1 0 0"/></flame>"#;
+        let p = read(src, &opts()).unwrap();
+        assert!(
+            p.warnings.iter().all(|w| w.code == "XML018"), // no palette in this snippet
+            "{:?}",
+            p.warnings
+        );
+        let x = &p.value.flames[0].xforms;
+        let v = &x[0].vars[0];
+        assert_eq!(v.texts, ["SYM é", "Arial"]);
+        assert_eq!(v.params[0], 100.0);
+        // A text of an absent variation is kept as it was.
+        assert!(
+            x[1].extra_attrs
+                .contains(&("text_wf_text".into(), "4142".into()))
+        );
+        let text = write(&p.value);
+        assert!(text.contains("text_wf_text=\"53594D20C3A9\""), "{text}");
+        assert!(text.contains("text_wf_font_name=\"417269616C\""), "{text}");
+        let back = read(&text, &opts()).unwrap().value;
+        assert_eq!(back.flames, p.value.flames);
+        // Not hex digits: taken as written.
+        let plain = src.replace("53594D20C3A9", "hello!");
+        let q = read(&plain, &opts()).unwrap().value;
+        assert_eq!(q.flames[0].xforms[0].vars[0].texts[0], "hello!");
     }
 
     #[test]

@@ -119,6 +119,24 @@ pub fn panel(ui: &mut egui::Ui, x: &mut Xform, find: &mut VarFind) {
                     num(ui, &mut v.params[pi], &name);
                     ui.end_row();
                 }
+                for (ti, def) in info.texts.iter().enumerate() {
+                    let Some(text) = v.texts.get_mut(ti) else {
+                        break;
+                    };
+                    let l = ui.label(format!(
+                        "    {}",
+                        variations::text_attr_name(v.id, v.form, ti)
+                    ));
+                    let mut t = text.clone();
+                    if ui
+                        .add(egui::TextEdit::singleline(&mut t).desired_width(120.0))
+                        .labelled_by(l.id)
+                        .changed()
+                    {
+                        *text = def.normalise(&t);
+                    }
+                    ui.end_row();
+                }
             }
         });
     if let Some(k) = remove {

@@ -1105,7 +1105,7 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
 
 /// snowflake_wf's shared data: the count of points, then x, y and intensity per point (from
 /// parameters 0–10: the crystal's growth, its seed, scale and jitter).
-fn snowflake_points(q: &[f64]) -> Vec<f64> {
+fn snowflake_points(q: &[f64], _: &[String]) -> Vec<f64> {
     let canvas = snow_crystal(q);
     let (scale, jitter) = (q[9], q[10].clamp(0.0, 1.0));
     let mut rnd = Mwc::new(q[8] as i64);
@@ -1613,7 +1613,7 @@ fn knot_tube(curve: &KnotCurve, k: &[f64], steps: usize, radius: f64, facets: us
 
 /// knots3D's shared data: the count of triangles, then 9 coordinates per triangle (from
 /// parameters 0–17: the curve, the tube and its placement).
-fn knots3d_faces(q: &[f64]) -> Vec<f64> {
+fn knots3d_faces(q: &[f64], _: &[String]) -> Vec<f64> {
     let mut out = vec![0.0];
     let preset = q[0];
     if !(0.0..24.0).contains(&preset) {

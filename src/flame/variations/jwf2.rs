@@ -635,7 +635,7 @@ impl Turtle {
 }
 
 /// hilbert_js's segments (from the level, parameter 0).
-fn hilbert_segments(q: &[f64]) -> Vec<f64> {
+fn hilbert_segments(q: &[f64], _: &[String]) -> Vec<f64> {
     let mut t = Turtle {
         x: 0.0,
         y: 0.0,
@@ -671,7 +671,7 @@ fn rsquares(segs: &mut Vec<f64>, n: i64, x: f64, y: f64, size: f64) {
 }
 
 /// rsquares_js's segments (from the level, parameter 0).
-fn rsquares_segments(q: &[f64]) -> Vec<f64> {
+fn rsquares_segments(q: &[f64], _: &[String]) -> Vec<f64> {
     let mut segs = Vec::new();
     rsquares(&mut segs, q[0] as i64, 0.5, 0.5, 1.0);
     segs
@@ -700,7 +700,7 @@ fn tree(segs: &mut Vec<f64>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64, len:
 }
 
 /// tree_js's segments (from the level and the bend, branch and ratio parameters 0, 3–5).
-fn tree_segments(q: &[f64]) -> Vec<f64> {
+fn tree_segments(q: &[f64], _: &[String]) -> Vec<f64> {
     let shape = TreeShape {
         bend: q[3].to_radians(),
         branch: q[4].to_radians(),
@@ -1002,7 +1002,7 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
 
 /// dla3d_wf's shared data: [`DLA_STRIDE`] values per node (from the node count, seed, glue
 /// radius and force, parameters 0, 1 and 6–9).
-fn dla_nodes(q: &[f64]) -> Vec<f64> {
+fn dla_nodes(q: &[f64], _: &[String]) -> Vec<f64> {
     let max_nodes = q[0].max(0.0) as usize;
     let seed = q[1] as i64;
     let glue = q[6].max(0.1);
@@ -1696,6 +1696,7 @@ const P_DC_GABOR: &[Param] = &{
 // Registry
 
 pub(super) static DEFS: &[VarDef] = &[
+    super::text::TEXT_WF,
     VarDef::new("sym_ng1", sym_eval)
         .params(P_NG1)
         .flags(SYM)

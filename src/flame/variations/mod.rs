@@ -46,6 +46,7 @@ mod jwf;
 mod jwf2;
 mod noise;
 pub mod shared;
+mod text;
 pub mod util;
 
 pub use shared::{BuildFn, SharedDef};
@@ -151,6 +152,27 @@ pub enum ParamKind {
     Int,
     /// Rounded and clamped; 0 becomes ±1.
     IntNonZero,
+}
+
+/// A text parameter (JWildfire's "resources": a string, stored in files as the hex digits of
+/// its UTF-8 bytes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TextParam {
+    pub name: &'static str,
+    pub default: &'static str,
+    /// Most bytes a value may have (longer ones are cut at a character boundary).
+    pub max_len: usize,
+}
+
+impl TextParam {
+    /// `v` cut to at most [`TextParam::max_len`] bytes at a character boundary.
+    pub fn normalise(&self, v: &str) -> String {
+        let mut end = v.len().min(self.max_len);
+        while !v.is_char_boundary(end) {
+            end -= 1;
+        }
+        v[..end].to_string()
+    }
 }
 
 /// One parameter of a variation: full attribute name (e.g. `julian_power`), default and range.
@@ -386,6 +408,8 @@ pub struct VarDef {
     /// Canonical name (flam3's for flam3's variations, else Fractorium's or JWildfire's).
     pub name: &'static str,
     pub params: &'static [Param],
+    /// Text parameters (few variations have any).
+    pub texts: &'static [TextParam],
     /// [`need`] bits.
     pub needs: u8,
     /// [`flag`] bits.
@@ -414,6 +438,7 @@ impl VarDef {
         VarDef {
             name,
             params: &[],
+            texts: &[],
             needs: 0,
             flags: 0,
             assign: Assign::Set,
@@ -425,6 +450,10 @@ impl VarDef {
     }
     pub const fn params(mut self, params: &'static [Param]) -> VarDef {
         self.params = params;
+        self
+    }
+    pub const fn texts(mut self, texts: &'static [TextParam]) -> VarDef {
+        self.texts = texts;
         self
     }
     pub const fn needs(mut self, needs: u8) -> VarDef {
@@ -511,13 +540,35 @@ pub struct Prepared {
     /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
     /// shared through a process-wide cache); `None` for the variations without.
     pub data: Option<Arc<[f64]>>,
+    /// Text parameters in [`VarDef::texts`] order.
+    pub texts: Vec<String>,
 }
 
 impl Prepared {
     /// Prepare variation `id` used in `form` with weight `w` and stored parameters `params`
     /// (missing ones take their defaults).
     pub fn new(id: VarId, form: Form, w: f64, params: &[f64], aff: Affine, compat: bool) -> Self {
+        Self::with_texts(id, form, w, params, &[], aff, compat)
+    }
+
+    /// [`Prepared::new`] with stored text parameters `texts` (missing ones take their
+    /// defaults).
+    pub fn with_texts(
+        id: VarId,
+        form: Form,
+        w: f64,
+        params: &[f64],
+        texts: &[String],
+        aff: Affine,
+        compat: bool,
+    ) -> Self {
         let def = info(id);
+        let texts = def
+            .texts
+            .iter()
+            .enumerate()
+            .map(|(i, d)| d.normalise(texts.get(i).map_or(d.default, |t| t.as_str())))
+            .collect();
         let flam3 = def.has(flag::FLAM3);
         let p = def
             .params
@@ -538,9 +589,10 @@ impl Prepared {
             compat,
             state: VarState::default(),
             data: None,
+            texts,
         };
         if let Some(sd) = &def.shared {
-            v.data = Some(shared::data(id, sd, &v.p));
+            v.data = Some(shared::data(id, sd, &v.p, &v.texts));
         }
         if let Some(f) = def.prepare {
             f(&mut v);
@@ -675,6 +727,8 @@ struct Registry {
     names: HashMap<String, VarId>,
     /// Lower-case full parameter name → (id, parameter index).
     params: HashMap<String, (VarId, usize)>,
+    /// Lower-case full text parameter name → (id, text index).
+    texts: HashMap<String, (VarId, usize)>,
 }
 
 static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
@@ -692,6 +746,7 @@ static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
     let defs: Vec<&'static VarDef> = groups.iter().flat_map(|g| g.iter()).collect();
     let mut names = HashMap::new();
     let mut params = HashMap::new();
+    let mut texts = HashMap::new();
     for (i, d) in defs.iter().enumerate() {
         if d.has(flag::HIDDEN) {
             continue;
@@ -701,11 +756,15 @@ static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
         for (k, pa) in d.params.iter().enumerate() {
             params.insert(pa.name.to_ascii_lowercase(), (i as VarId, k));
         }
+        for (k, t) in d.texts.iter().enumerate() {
+            texts.insert(t.name.to_ascii_lowercase(), (i as VarId, k));
+        }
     }
     Registry {
         defs,
         names,
         params,
+        texts,
     }
 });
 
@@ -761,6 +820,26 @@ pub fn param_attr_name(id: VarId, form: Form, k: usize) -> String {
         return d.params[k].name.to_string();
     }
     format!("{}{}", form.prefix(), d.params[k].name)
+}
+
+/// The attribute name of text parameter `k` of a variation used in `form`.
+pub fn text_attr_name(id: VarId, form: Form, k: usize) -> String {
+    format!("{}{}", form.prefix(), info(id).texts[k].name)
+}
+
+/// If `attr` names a text parameter — `TEXT`, `pre_TEXT` or `post_TEXT` — the variation, form
+/// and text index (case-insensitive).
+pub fn text_of(attr: &str) -> Option<(VarId, Form, usize)> {
+    let key = attr.to_ascii_lowercase();
+    if let Some(&(id, k)) = REGISTRY.texts.get(&key) {
+        return Some((id, Form::Regular, k));
+    }
+    [("pre_", Form::Pre), ("post_", Form::Post)]
+        .into_iter()
+        .find_map(|(prefix, form)| {
+            let &(id, k) = REGISTRY.texts.get(key.strip_prefix(prefix)?)?;
+            Some((id, form, k))
+        })
 }
 
 /// Parameter names other programs write for a variation's parameters.

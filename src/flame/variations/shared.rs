@@ -17,9 +17,9 @@ use std::sync::{Arc, LazyLock, Mutex, OnceLock};
 use super::VarId;
 
 /// Builds a variation's shared data from its normalised parameters (all of them, in
-/// [`super::VarDef::params`] order). It must read only the parameters named by the key of its
-/// [`SharedDef`].
-pub type BuildFn = fn(p: &[f64]) -> Vec<f64>;
+/// [`super::VarDef::params`] order) and its text parameters. It must read only the parameters
+/// named by the key of its [`SharedDef`] (the texts are always part of the key).
+pub type BuildFn = fn(p: &[f64], texts: &[String]) -> Vec<f64>;
 
 /// How a variation builds its shared data.
 #[derive(Clone, Copy, Debug)]
@@ -121,14 +121,29 @@ fn with_cache<T>(cache: &Mutex<Cache>, f: impl FnOnce(&mut Cache) -> T) -> T {
 
 /// The shared data of variation `id` for the normalised parameters `p`: from the cache, or
 /// built by `def` and cached.
-pub(super) fn data(id: VarId, def: &SharedDef, p: &[f64]) -> Arc<[f64]> {
-    data_in(&CACHE, id, def, p)
+pub(super) fn data(id: VarId, def: &SharedDef, p: &[f64], texts: &[String]) -> Arc<[f64]> {
+    data_in(&CACHE, id, def, p, texts)
 }
 
-fn data_in(cache: &Mutex<Cache>, id: VarId, def: &SharedDef, p: &[f64]) -> Arc<[f64]> {
-    let key: Vec<u64> = def.key.iter().map(|&i| p[i].to_bits()).collect();
+fn data_in(
+    cache: &Mutex<Cache>,
+    id: VarId,
+    def: &SharedDef,
+    p: &[f64],
+    texts: &[String],
+) -> Arc<[f64]> {
+    let mut key: Vec<u64> = def.key.iter().map(|&i| p[i].to_bits()).collect();
+    for t in texts {
+        // Its length, then its bytes eight to a word.
+        key.push(t.len() as u64);
+        key.extend(t.as_bytes().chunks(8).map(|c| {
+            let mut w = [0u8; 8];
+            w[..c.len()].copy_from_slice(c);
+            u64::from_le_bytes(w)
+        }));
+    }
     let slot = with_cache(cache, |c| c.slot(id, &key));
-    let data = slot.get_or_init(|| (def.build)(p).into()).clone();
+    let data = slot.get_or_init(|| (def.build)(p, texts).into()).clone();
     // The new data's size counts now that it exists.
     with_cache(cache, Cache::trim);
     data
@@ -145,7 +160,7 @@ mod tests {
     use std::sync::atomic::{AtomicUsize, Ordering};
 
     /// Data of p[0] copies of p[1]; p[2] is not part of the key.
-    fn build(p: &[f64]) -> Vec<f64> {
+    fn build(p: &[f64], _: &[String]) -> Vec<f64> {
         vec![p[1]; p[0] as usize]
     }
 
@@ -157,23 +172,23 @@ mod tests {
     #[test]
     fn same_key_shares_one_build() {
         static BUILDS: AtomicUsize = AtomicUsize::new(0);
-        fn counted(p: &[f64]) -> Vec<f64> {
+        fn counted(p: &[f64], _: &[String]) -> Vec<f64> {
             BUILDS.fetch_add(1, Ordering::SeqCst);
-            build(p)
+            build(p, &[])
         }
         let counted_def = SharedDef {
             key: &[0, 1],
             build: counted,
         };
         let cache = Mutex::new(Cache::new(4, 1 << 20));
-        let a = data_in(&cache, 1, &counted_def, &[3.0, 7.0, 0.0]);
-        let b = data_in(&cache, 1, &counted_def, &[3.0, 7.0, 5.0]);
+        let a = data_in(&cache, 1, &counted_def, &[3.0, 7.0, 0.0], &[]);
+        let b = data_in(&cache, 1, &counted_def, &[3.0, 7.0, 5.0], &[]);
         assert!(Arc::ptr_eq(&a, &b));
         assert_eq!(&a[..], &[7.0; 3]);
         assert_eq!(BUILDS.load(Ordering::SeqCst), 1);
         // Another key, or another variation with the same key, is built anew.
-        let c = data_in(&cache, 1, &DEF, &[3.0, 8.0, 0.0]);
-        let d = data_in(&cache, 2, &DEF, &[3.0, 7.0, 0.0]);
+        let c = data_in(&cache, 1, &DEF, &[3.0, 8.0, 0.0], &[]);
+        let d = data_in(&cache, 2, &DEF, &[3.0, 7.0, 0.0], &[]);
         assert_eq!(&c[..], &[8.0; 3]);
         assert!(!Arc::ptr_eq(&a, &d));
         assert_eq!(with_cache(&cache, |c| c.len()), 3);
@@ -182,13 +197,13 @@ mod tests {
     #[test]
     fn least_recently_used_entries_go_first() {
         let cache = Mutex::new(Cache::new(2, 1 << 20));
-        let a = data_in(&cache, 1, &DEF, &[1.0, 1.0, 0.0]);
-        let _b = data_in(&cache, 1, &DEF, &[1.0, 2.0, 0.0]);
+        let a = data_in(&cache, 1, &DEF, &[1.0, 1.0, 0.0], &[]);
+        let _b = data_in(&cache, 1, &DEF, &[1.0, 2.0, 0.0], &[]);
         // Using a again makes b the oldest; a third key drops b.
-        let _ = data_in(&cache, 1, &DEF, &[1.0, 1.0, 0.0]);
-        let _c = data_in(&cache, 1, &DEF, &[1.0, 3.0, 0.0]);
+        let _ = data_in(&cache, 1, &DEF, &[1.0, 1.0, 0.0], &[]);
+        let _c = data_in(&cache, 1, &DEF, &[1.0, 3.0, 0.0], &[]);
         assert_eq!(with_cache(&cache, |c| c.len()), 2);
-        let again = data_in(&cache, 1, &DEF, &[1.0, 1.0, 0.0]);
+        let again = data_in(&cache, 1, &DEF, &[1.0, 1.0, 0.0], &[]);
         assert!(Arc::ptr_eq(&a, &again), "a was used recently and stays");
         let keys: Vec<f64> = with_cache(&cache, |c| {
             c.entries.iter().map(|e| f64::from_bits(e.key[1])).collect()
@@ -200,13 +215,13 @@ mod tests {
     fn byte_limit_drops_old_entries() {
         // Room for 100 doubles: two entries of 60 do not fit together.
         let cache = Mutex::new(Cache::new(64, 800));
-        let _a = data_in(&cache, 1, &DEF, &[60.0, 1.0, 0.0]);
-        let _b = data_in(&cache, 1, &DEF, &[60.0, 2.0, 0.0]);
+        let _a = data_in(&cache, 1, &DEF, &[60.0, 1.0, 0.0], &[]);
+        let _b = data_in(&cache, 1, &DEF, &[60.0, 2.0, 0.0], &[]);
         assert_eq!(with_cache(&cache, |c| c.len()), 1);
         let total: usize = with_cache(&cache, |c| c.entries.iter().map(Entry::bytes).sum());
         assert!(total <= 800);
         // Data larger than the whole budget is returned but not kept.
-        let big = data_in(&cache, 1, &DEF, &[200.0, 3.0, 0.0]);
+        let big = data_in(&cache, 1, &DEF, &[200.0, 3.0, 0.0], &[]);
         assert_eq!(big.len(), 200);
         assert_eq!(with_cache(&cache, |c| c.len()), 0);
     }
@@ -234,7 +249,8 @@ mod tests {
                 })
                 .collect();
             assert_ne!(base, other, "{}: nothing outside the key", d.name);
-            let (a, b) = ((sd.build)(&base), (sd.build)(&other));
+            let texts: Vec<String> = d.texts.iter().map(|t| t.default.to_string()).collect();
+            let (a, b) = ((sd.build)(&base, &texts), (sd.build)(&other, &texts));
             assert!(!a.is_empty(), "{}", d.name);
             let same =
                 a.len() == b.len() && a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits());
@@ -272,7 +288,7 @@ mod tests {
     #[test]
     fn threads_asking_at_once_share_one_build() {
         static SLOW_BUILDS: AtomicUsize = AtomicUsize::new(0);
-        fn slow(p: &[f64]) -> Vec<f64> {
+        fn slow(p: &[f64], _: &[String]) -> Vec<f64> {
             SLOW_BUILDS.fetch_add(1, Ordering::SeqCst);
             std::thread::sleep(std::time::Duration::from_millis(50));
             vec![p[0]; 10]
@@ -284,7 +300,7 @@ mod tests {
         let cache = Mutex::new(Cache::new(8, 1 << 20));
         let got: Vec<Arc<[f64]>> = std::thread::scope(|s| {
             let hs: Vec<_> = (0..4)
-                .map(|_| s.spawn(|| data_in(&cache, 9, &def, &[4.0])))
+                .map(|_| s.spawn(|| data_in(&cache, 9, &def, &[4.0], &[])))
                 .collect();
             hs.into_iter().map(|h| h.join().unwrap()).collect()
         });
