@@ -894,6 +894,53 @@ fn find_narrows_the_variation_list_with_all_ticked() {
 }
 
 #[test]
+fn the_palette_rule_is_chosen_in_the_flame_settings() {
+    use ugnis::flame::PaletteIndex;
+    // Tall enough for the whole Settings grid to be on screen.
+    let mut h = harness_sized(Start::File(example("sierpinski.flame")), 1280.0, 1600.0);
+    section(&mut h, "Settings");
+    assert_eq!(
+        h.state().flame.doc().flame().palette_index,
+        PaletteIndex::Flam3
+    );
+    h.get_by_role_and_label(Role::ComboBox, "rule").click();
+    h.run_steps(3);
+    h.get_by_label("as Fractorium").click();
+    h.run_steps(2);
+    assert_eq!(
+        h.state().flame.doc().flame().palette_index,
+        PaletteIndex::Fractorium
+    );
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(
+        h.state().flame.doc().flame().palette_index,
+        PaletteIndex::Flam3
+    );
+}
+
+/// Values of a file outside the editor's ranges (Fractorium files use gamma 9995) are shown,
+/// not clamped: looking at the settings changes nothing.
+#[test]
+fn looking_at_the_settings_does_not_clamp_the_file_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("wide.flame");
+    let text = std::fs::read_to_string(example("sierpinski.flame"))
+        .unwrap()
+        .replacen("gamma=\"2.2\"", "gamma=\"9995\" highlight_power=\"250\"", 1);
+    std::fs::write(&path, text).unwrap();
+    let mut h = harness_sized(Start::File(path), 1280.0, 1600.0);
+    let before = h.state().flame.doc().flame().clone();
+    assert_eq!(before.gamma, 9995.0);
+    for s in ["Settings", "Triangle", "Xaos"] {
+        section(&mut h, s);
+        h.run_steps(2);
+    }
+    assert_eq!(h.state().flame.doc().flame(), &before);
+    assert!(!h.state().flame.doc().can_undo(), "nothing was edited");
+}
+
+#[test]
 fn the_transform_list_selects_reorders_and_switches_off() {
     let mut h = open("sierpinski.flame");
     section(&mut h, "Transforms");

@@ -21,6 +21,8 @@ fn row(
         egui::DragValue::new(v)
             .speed(speed)
             .range(range)
+            // A file's value outside the range stays as it is until the user edits it.
+            .clamp_existing_to_range(false)
             .max_decimals(5),
     )
     .labelled_by(l.id)
@@ -41,13 +43,21 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
         ui.label("Size");
         ui.horizontal(|ui| {
             named(
-                ui.add(egui::DragValue::new(&mut f.width).range(1..=20000)),
+                ui.add(
+                    egui::DragValue::new(&mut f.width)
+                        .range(1..=20000)
+                        .clamp_existing_to_range(false),
+                ),
                 "Width",
             )
             .on_hover_text("width of the picture in pixels");
             ui.label("×");
             named(
-                ui.add(egui::DragValue::new(&mut f.height).range(1..=20000)),
+                ui.add(
+                    egui::DragValue::new(&mut f.height)
+                        .range(1..=20000)
+                        .clamp_existing_to_range(false),
+                ),
                 "Height",
             )
             .on_hover_text("height of the picture in pixels");
@@ -157,6 +167,46 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
             0.1,
             0.0..=50.0,
         );
+        ui.label("Palette");
+        ui.horizontal(|ui| {
+            use crate::flame::{PaletteIndex, PaletteMode};
+            let r = egui::ComboBox::from_label("mode")
+                .selected_text(f.palette_mode.name())
+                .show_ui(ui, |ui| {
+                    for m in [PaletteMode::Step, PaletteMode::Linear] {
+                        ui.selectable_value(&mut f.palette_mode, m, m.name());
+                    }
+                })
+                .response;
+            r.on_hover_text(
+                "step: each colour coordinate takes one gradient entry; \
+                 linear: blends the two nearest entries",
+            );
+            let rule = |i: PaletteIndex| match i {
+                PaletteIndex::Flam3 => "as flam3",
+                PaletteIndex::Apophysis => "as Apophysis",
+                PaletteIndex::Fractorium => "as Fractorium",
+                PaletteIndex::JWildfire => "as JWildfire",
+            };
+            let r = egui::ComboBox::from_label("rule")
+                .selected_text(rule(f.palette_index))
+                .show_ui(ui, |ui| {
+                    for i in [
+                        PaletteIndex::Flam3,
+                        PaletteIndex::Apophysis,
+                        PaletteIndex::Fractorium,
+                        PaletteIndex::JWildfire,
+                    ] {
+                        ui.selectable_value(&mut f.palette_index, i, rule(i));
+                    }
+                })
+                .response;
+            r.on_hover_text(
+                "whose rule turns a colour coordinate into a gradient position: the program \
+                 that wrote the file (they differ by up to one entry)",
+            );
+        });
+        ui.end_row();
         ui.label("Background");
         let mut bg = [
             f.background[0] as f32,

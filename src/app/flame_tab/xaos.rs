@@ -69,6 +69,7 @@ pub fn section(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
                                 egui::DragValue::new(&mut v)
                                     .speed(0.01)
                                     .range(0.0..=MAX_XAOS)
+                                    .clamp_existing_to_range(false)
                                     .max_decimals(4),
                             ),
                             &name,

@@ -25,7 +25,11 @@ fn num(ui: &mut egui::Ui, v: &mut f64, name: &str, tip: &str) -> bool {
 fn unit_slider(ui: &mut egui::Ui, v: &mut f64, name: &str, tip: &str) {
     ui.horizontal(|ui| {
         named(
-            ui.add(egui::Slider::new(v, 0.0..=1.0).show_value(false)),
+            ui.add(
+                egui::Slider::new(v, 0.0..=1.0)
+                    .show_value(false)
+                    .clamping(egui::SliderClamping::Edits),
+            ),
             name,
         )
         .on_hover_text(tip);
@@ -33,6 +37,7 @@ fn unit_slider(ui: &mut egui::Ui, v: &mut f64, name: &str, tip: &str) {
             ui.add(
                 egui::DragValue::new(v)
                     .range(0.0..=1.0)
+                    .clamp_existing_to_range(false)
                     .speed(0.005)
                     .max_decimals(4),
             ),
@@ -98,6 +103,7 @@ pub fn triangle_section(
                         egui::DragValue::new(&mut x.weight)
                             .speed(0.01)
                             .range(0.0..=1e6)
+                            .clamp_existing_to_range(false)
                             .max_decimals(6),
                     )
                     .labelled_by(l.id)
