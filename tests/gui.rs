@@ -1929,6 +1929,8 @@ fn export_cancel_writes_nothing_and_keeps_the_files_saved_before() {
         std::thread::sleep(std::time::Duration::from_millis(20));
         h.run_steps(1);
     }
+    // The last frame may have been drawn before the first samples arrived: draw one with them.
+    h.run_steps(2);
     h.get_by_role_and_label(Role::Button, "Save now").click();
     while h.state().flame.export_job.as_ref().unwrap().status().saves == 0 {
         assert!(t.elapsed() < std::time::Duration::from_secs(30));
