@@ -256,6 +256,12 @@ pub enum PaletteIndex {
 }
 
 impl PaletteIndex {
+    pub const ALL: [PaletteIndex; 4] = [
+        PaletteIndex::Flam3,
+        PaletteIndex::Apophysis,
+        PaletteIndex::Fractorium,
+        PaletteIndex::JWildfire,
+    ];
     pub fn name(self) -> &'static str {
         match self {
             PaletteIndex::Flam3 => "flam3",
@@ -265,34 +271,29 @@ impl PaletteIndex {
         }
     }
     pub fn from_name(s: &str) -> Option<Self> {
-        [
-            Self::Flam3,
-            Self::Apophysis,
-            Self::Fractorium,
-            Self::JWildfire,
-        ]
-        .into_iter()
-        .find(|m| m.name() == s)
+        Self::ALL.into_iter().find(|m| m.name() == s)
     }
     /// The rule of the program named by a flame's `version` attribute: Apophysis writes
     /// "Apophysis 7x …", Fractorium "EMBER-…", JWildfire "JWildfire V…" (its first releases of
     /// 2011 only "0.16 (06.11.2011)"; they indexed as Apophysis does).
     pub fn from_version(v: &str) -> Self {
         let v = v.trim();
-        let digits = |s: &str, n: usize| s.len() == n && s.bytes().all(|b| b.is_ascii_digit());
+        // Dot-separated groups of digits of the given lengths (0: any length but empty).
+        let digits = |s: &str, lens: &[usize]| {
+            let parts: Vec<&str> = s.split('.').collect();
+            parts.len() == lens.len()
+                && parts.iter().zip(lens).all(|(p, &n)| {
+                    !p.is_empty()
+                        && (n == 0 || p.len() == n)
+                        && p.bytes().all(|b| b.is_ascii_digit())
+                })
+        };
         // "0.16 (06.11.2011)": a version number and a date in parentheses.
         let early_jwildfire = v.split_once(" (").is_some_and(|(num, date)| {
-            let num: Vec<&str> = num.split('.').collect();
-            let date: Vec<&str> = date.trim_end_matches(')').split('.').collect();
-            num.len() == 2
-                && num
-                    .iter()
-                    .all(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
-                && v.ends_with(')')
-                && date.len() == 3
-                && digits(date[0], 2)
-                && digits(date[1], 2)
-                && digits(date[2], 4)
+            digits(num, &[0, 0])
+                && date
+                    .strip_suffix(')')
+                    .is_some_and(|d| digits(d, &[2, 2, 4]))
         });
         let starts = |p: &str| v.get(..p.len()).is_some_and(|q| q.eq_ignore_ascii_case(p));
         if starts("ember") {

@@ -1433,15 +1433,9 @@ mod tests {
                 (i % 7, c, 0.25 + (i % 3) as f32)
             })
             .collect();
-        let rules = [
-            crate::flame::PaletteIndex::Flam3,
-            crate::flame::PaletteIndex::Apophysis,
-            crate::flame::PaletteIndex::Fractorium,
-            crate::flame::PaletteIndex::JWildfire,
-        ];
         for (mode, index) in [PaletteMode::Step, PaletteMode::Linear]
             .into_iter()
-            .flat_map(|m| rules.map(|r| (m, r)))
+            .flat_map(|m| crate::flame::PaletteIndex::ALL.map(|r| (m, r)))
         {
             let flame = Flame {
                 palette: Gradient::grey_ramp(),

@@ -105,6 +105,14 @@ fn name_hash(name: &str) -> u64 {
 }
 
 impl Ctx<'_, '_> {
+    /// Counts `name` among the attributes kept but not interpreted (the first six are named in
+    /// the file's summary line).
+    fn ignore(&mut self, name: &str) {
+        if self.ignored_set.insert(name_hash(name)) && self.ignored_attrs.len() < 6 {
+            self.ignored_attrs.push(name.to_string());
+        }
+    }
+
     fn err(&self, off: usize, code: &'static str, msg: impl Into<String>) -> Diagnostic {
         Diagnostic::error(self.file, self.map.pos(off), code, msg)
     }
@@ -652,8 +660,8 @@ fn read_flame(
                         "FLA005",
                         format!("unknown attribute '{other}' kept"),
                     );
-                } else if cx.ignored_set.insert(name_hash(other)) && cx.ignored_attrs.len() < 6 {
-                    cx.ignored_attrs.push(other.to_string());
+                } else {
+                    cx.ignore(other);
                 }
                 f.extra_attrs.push((other.to_string(), v.to_string()));
             }
@@ -668,9 +676,8 @@ fn read_flame(
             if !palette_mode_seen && matches!(v.as_str(), "1" | "true") {
                 f.palette_mode = PaletteMode::Linear;
             }
-        } else if cx.ignored_set.insert(name_hash("smooth_gradient")) && cx.ignored_attrs.len() < 6
-        {
-            cx.ignored_attrs.push("smooth_gradient".to_string());
+        } else {
+            cx.ignore("smooth_gradient");
         }
     }
     if let Some(c) = contrast {
@@ -1353,10 +1360,8 @@ fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, start: usize
                     } else if !matches!(
                         name,
                         "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
-                    ) && cx.ignored_set.insert(name_hash(name))
-                        && cx.ignored_attrs.len() < 6
-                    {
-                        cx.ignored_attrs.push(name.to_string());
+                    ) {
+                        cx.ignore(name);
                     }
                     x.extra_attrs.push((name.to_string(), a.value.to_string()));
                 }

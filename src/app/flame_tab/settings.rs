@@ -191,12 +191,7 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
             let r = egui::ComboBox::from_label("rule")
                 .selected_text(rule(f.palette_index))
                 .show_ui(ui, |ui| {
-                    for i in [
-                        PaletteIndex::Flam3,
-                        PaletteIndex::Apophysis,
-                        PaletteIndex::Fractorium,
-                        PaletteIndex::JWildfire,
-                    ] {
+                    for i in PaletteIndex::ALL {
                         ui.selectable_value(&mut f.palette_index, i, rule(i));
                     }
                 })
