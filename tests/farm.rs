@@ -163,7 +163,7 @@ fn states_of_other_versions_and_damaged_states_are_refused() {
     let good = dir.join("good.ugnis-state");
     render_state::save(&good, &st, &hist).unwrap();
     let bytes = std::fs::read(&good).unwrap();
-    for v in [0u32, 2] {
+    for v in [0u32, 1, 3] {
         let mut b = bytes.clone();
         b[8..12].copy_from_slice(&v.to_le_bytes());
         let p = dir.join(format!("v{v}.ugnis-state"));
@@ -175,7 +175,7 @@ fn states_of_other_versions_and_damaged_states_are_refused() {
         );
         let (code, _, err) = ugnis(&["info", s(&p)]);
         assert_eq!(code, 1);
-        assert!(err.contains("reads version 1 only"), "{err}");
+        assert!(err.contains("reads version 2 only"), "{err}");
     }
     // Truncated: the end marker is missing.
     let p = dir.join("cut.ugnis-state");

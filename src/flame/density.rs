@@ -244,8 +244,7 @@ impl DeFilters {
                         }
                         let n = self.block_count(hist, x, y);
                         let k = self.select(n as f64);
-                        let s = ls(b[3]);
-                        let v = [b[0] * s, b[1] * s, b[2] * s, b[3] * s];
+                        let v = crate::flame::histogram::scale_bucket(b, ls(b[3]));
                         for row in &self.kernels[k] {
                             let yy = y as i64 + row.dy as i64;
                             if yy < lo as i64 || yy >= (lo + rows_in_win) as i64 {

@@ -3,11 +3,25 @@
 
 use crate::flame::model::{Flame, PaletteMode};
 
-/// One histogram bucket: R, G, B, A accumulated in "hits" (palette colour × visibility).
-/// A doubles as the hit count for density estimation (they are equal for opaque palettes).
+/// One histogram bucket: R, G, B accumulated in [`COLOR_UNIT`]s, A in "hits" (palette alpha ×
+/// visibility). A doubles as the hit count for density estimation.
 pub type Bucket = [f32; 4];
 
-/// The palette prepared for plotting: RGB pre-multiplied by alpha, as f32.
+/// Colours are accumulated in palette units, 1/255 of full intensity: an 8-bit palette entry
+/// of value k adds the whole number k, whose f32 sums are exact up to 2^24 — independent of the
+/// order of the adds, and with the low mantissa bits zero, so saved render states compress to
+/// a third of their raw size. The log scaling divides them out ([`scale_bucket`]).
+pub const COLOR_UNIT: f32 = 255.0;
+
+/// A bucket's colour in palette units times `s`/[`COLOR_UNIT`], its alpha times `s`: the
+/// log-density scaling of a bucket whose factor is `s`.
+#[inline(always)]
+pub fn scale_bucket(b: Bucket, s: f32) -> Bucket {
+    let c = s / COLOR_UNIT;
+    [b[0] * c, b[1] * c, b[2] * c, b[3] * s]
+}
+
+/// The palette prepared for plotting: RGB pre-multiplied by alpha in [`COLOR_UNIT`]s, as f32.
 #[derive(Clone, Debug)]
 pub struct PlotPalette {
     /// Premultiplied RGBA entries (256 for most flames; files may carry other counts).
@@ -26,12 +40,16 @@ impl PlotPalette {
             .iter()
             .map(|c| {
                 let a = c[3].clamp(0.0, 1.0);
-                [
-                    (c[0] * a) as f32,
-                    (c[1] * a) as f32,
-                    (c[2] * a) as f32,
-                    a as f32,
-                ]
+                let unit = |v: f64| {
+                    // 8-bit values (k/255 read from a file) become the whole number k.
+                    let u = v * a * COLOR_UNIT as f64;
+                    if (u - u.round()).abs() < 1e-9 {
+                        u.round() as f32
+                    } else {
+                        u as f32
+                    }
+                };
+                [unit(c[0]), unit(c[1]), unit(c[2]), a as f32]
             })
             .collect::<Vec<_>>();
         let colors = if colors.is_empty() {
@@ -145,22 +163,23 @@ mod tests {
         };
         let p = PlotPalette::new(&f);
         assert_eq!(p.lookup(0.0)[0], 0.0);
-        assert_eq!(p.lookup(1.0)[0], 1.0);
+        // In palette units: the 8-bit grey k adds exactly k.
+        assert_eq!(p.lookup(1.0)[0], 255.0);
         assert_eq!(p.lookup(-3.0)[0], 0.0);
-        assert_eq!(p.lookup(0.5)[0], (128.0f64 / 255.0) as f32);
+        assert_eq!(p.lookup(0.5)[0], 128.0);
+        assert_eq!(p.lookup(0.5)[3], 1.0);
         f.palette_mode = PaletteMode::Linear;
         let p = PlotPalette::new(&f);
         let v = p.lookup(0.5 + 0.5 / 256.0)[0];
-        let want = (128.5f64 / 255.0) as f32;
-        assert!((v - want).abs() < 1e-6);
-        assert_eq!(p.lookup(1.0)[0], 1.0);
+        assert!((v - 128.5).abs() < 1e-4);
+        assert_eq!(p.lookup(1.0)[0], 255.0);
     }
 
-    /// The three programs' rules on a 256-entry grey ramp (entry k has grey k/255).
+    /// The programs' rules on a 256-entry grey ramp (entry k has grey k/255, k palette units).
     #[test]
     fn palette_index_rules() {
         use crate::flame::PaletteIndex::*;
-        let grey = |k: f64| (k / 255.0) as f32;
+        let grey = |k: f64| k as f32;
         let at = |index, mode, c: f64| {
             let f = Flame {
                 palette: Gradient::grey_ramp(),
@@ -187,7 +206,7 @@ mod tests {
         assert_eq!(at(JWildfire, step, 1.0), grey(254.0));
         // Linear: positions 256c, 255c, 254c.
         let lin = PaletteMode::Linear;
-        let close = |a: f32, k: f64| assert!((a - grey(k)).abs() < 1e-6, "{a} vs {k}/255");
+        let close = |a: f32, k: f64| assert!((a - grey(k)).abs() < 1e-4, "{a} vs {k}");
         close(at(Flam3, lin, 0.25), 64.0);
         close(at(Fractorium, lin, 0.25), 63.75);
         close(at(JWildfire, lin, 0.25), 63.5);

@@ -24,7 +24,7 @@ use crate::flame::chaos::{Chaos, ChaosError, Lanes, SUB_BATCH};
 use crate::flame::density::{DeError, DeFilters};
 use crate::flame::framing;
 use crate::flame::geometry::Geometry;
-use crate::flame::histogram::{Bucket, Histogram, PlotPalette};
+use crate::flame::histogram::{Bucket, Histogram, PlotPalette, scale_bucket};
 use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::{Flame, PaletteMode};
 use crate::flame::rng::FastRng;
@@ -1077,10 +1077,7 @@ fn develop_rows_until(
             acc = hist
                 .data
                 .par_iter()
-                .map(|b| {
-                    let s = ls.factor(b[3]);
-                    [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
-                })
+                .map(|&b| scale_bucket(b, ls.factor(b[3])))
                 .collect();
             &acc
         }
@@ -1110,8 +1107,7 @@ impl<'a> Rows<'a> {
                     if b[3] <= 0.0 {
                         [0.0; 4]
                     } else {
-                        let s = ls.factor(b[3]);
-                        [b[0] * s, b[1] * s, b[2] * s, b[3] * s]
+                        scale_bucket(b, ls.factor(b[3]))
                     }
                 };
                 let sum =
@@ -1407,6 +1403,43 @@ pub fn render(flame: &Flame, opts: &RenderOptions) -> Result<DynamicImage, Rende
 mod tests {
     use super::*;
     use crate::gradient::Gradient;
+
+    /// An 8-bit palette adds whole palette units, so the colour sums of a render are whole
+    /// numbers (exact, whatever the order of the adds) — what makes saved states small.
+    #[test]
+    fn an_8_bit_palette_accumulates_whole_colour_sums() {
+        let mut flame = Flame {
+            width: 64,
+            height: 48,
+            center: [0.5, 0.5],
+            scale: 40.0,
+            quality: 20.0,
+            palette: Gradient::grey_ramp(),
+            ..Flame::default()
+        };
+        for (e, f, c) in [(0.0, 0.0, 0.0), (0.5, 0.0, 0.5), (0.25, 0.5, 1.0)] {
+            flame.xforms.push(crate::flame::model::Xform::linear(
+                crate::flame::affine::Affine::new(0.5, 0.0, 0.0, 0.5, e, f),
+                1.0,
+                c,
+            ));
+        }
+        let opts = RenderOptions {
+            threads: 2,
+            ..RenderOptions::default()
+        };
+        let mut r = Renderer::new(&flame, &opts).unwrap();
+        assert!(r.run_all(1, &AtomicBool::new(false), |_| {}));
+        let (_, hist) = r.into_state().unwrap();
+        let mut hit = 0;
+        for b in &hist.data {
+            for v in &b[..3] {
+                assert_eq!(v.fract(), 0.0, "{b:?}");
+            }
+            hit += (b[0] > 0.0) as usize;
+        }
+        assert!(hit > 100, "{hit} buckets with colour");
+    }
 
     /// The block-wise palette lookup of `accumulate` adds what `PlotPalette::lookup` gives,
     /// bit for bit, at the edges too (NaN, negative, 1 and beyond), in both palette modes.

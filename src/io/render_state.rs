@@ -36,7 +36,9 @@ use crate::io::diag::{Diagnostic, Pos};
 
 pub const MAGIC: &[u8; 8] = b"UGNISRS\x1a";
 /// The version this ugnis writes and reads.
-pub const FORMAT_VERSION: u32 = 1;
+/// 2: colours in palette units (whole numbers for 8-bit palettes), stored as integers when
+/// whole. Version 1 held them in units of 1.0.
+pub const FORMAT_VERSION: u32 = 2;
 /// Rows per compressed chunk.
 pub const CHUNK_ROWS: usize = 32;
 const MAX_HEADER: u32 = 64 << 20;
@@ -190,15 +192,33 @@ fn unshuffle(bytes: &[u8], n: usize) -> Vec<u32> {
         .collect()
 }
 
-/// Can this alpha value be stored as a whole number (and read back bit for bit)?
+/// Can this accumulator be stored as a whole number (and read back bit for bit)?
 fn integral(a: f32) -> bool {
     (0.0..=16_777_216.0).contains(&a) && (a as u32 as f32).to_bits() == a.to_bits()
 }
 
-/// A chunk before deflate: a bit per bucket (set: not all zero), a flag (1: the alphas are
-/// whole numbers, as hit counts of opaque palettes are, stored as integers, whose high bytes
-/// are mostly zero), the alphas of the set buckets, then their R, G, B, each as byte planes.
-/// Empty buckets cost one bit; the noisy low mantissa bytes are kept apart from the exponents.
+/// Flags of a chunk: its alphas, its colours are whole numbers stored as integers.
+const WHOLE_ALPHAS: u8 = 1;
+const WHOLE_COLOURS: u8 = 2;
+
+/// The words of accumulators: whole numbers as integers (high bytes mostly zero), else bits.
+fn words(values: impl Iterator<Item = f32>, whole: bool) -> Vec<u32> {
+    values
+        .map(|v| if whole { v as u32 } else { v.to_bits() })
+        .collect()
+}
+
+fn floats(words: Vec<u32>, whole: bool) -> Vec<f32> {
+    words
+        .into_iter()
+        .map(|w| if whole { w as f32 } else { f32::from_bits(w) })
+        .collect()
+}
+
+/// A chunk before deflate: a bit per bucket (set: not all zero), flags (whole alphas — hit
+/// counts of opaque palettes — and whole colours — sums of 8-bit palette entries — stored as
+/// integers), the alphas of the set buckets, then their R, G, B, each as byte planes. Empty
+/// buckets cost one bit; the noisy low mantissa bytes are kept apart from the exponents.
 fn compress(rows: &[Bucket]) -> std::io::Result<Vec<u8>> {
     let n = rows.len();
     let mut mask = vec![0u8; n.div_ceil(8)];
@@ -209,20 +229,14 @@ fn compress(rows: &[Bucket]) -> std::io::Result<Vec<u8>> {
             kept.push(b);
         }
     }
-    let ints = kept.iter().all(|b| integral(b[3]));
+    let whole_a = kept.iter().all(|b| integral(b[3]));
+    let whole_c = kept.iter().all(|b| b[..3].iter().all(|&v| integral(v)));
     let mut buf = Vec::with_capacity(mask.len() + 1 + kept.len() * 16);
     buf.extend_from_slice(&mask);
-    buf.push(ints as u8);
-    let alpha: Vec<u32> = kept
-        .iter()
-        .map(|b| if ints { b[3] as u32 } else { b[3].to_bits() })
-        .collect();
-    shuffle_into(&mut buf, &alpha);
-    let rgb: Vec<u32> = kept
-        .iter()
-        .flat_map(|b| [b[0].to_bits(), b[1].to_bits(), b[2].to_bits()])
-        .collect();
-    shuffle_into(&mut buf, &rgb);
+    buf.push(if whole_a { WHOLE_ALPHAS } else { 0 } | if whole_c { WHOLE_COLOURS } else { 0 });
+    shuffle_into(&mut buf, &words(kept.iter().map(|b| b[3]), whole_a));
+    let rgb = kept.iter().flat_map(|b| [b[0], b[1], b[2]]);
+    shuffle_into(&mut buf, &words(rgb, whole_c));
     let mut enc = flate2::write::DeflateEncoder::new(
         Vec::with_capacity(buf.len() / 2),
         flate2::Compression::fast(),
@@ -252,30 +266,25 @@ fn decompress(file: &str, at: u64, bytes: &[u8], out: &mut [Bucket]) -> Result<(
             mlen + 1 + 16 * m
         )));
     }
-    let ints = match buf[mlen] {
-        0 => false,
-        1 => true,
-        f => return Err(damaged(format!("unknown alpha encoding {f}"))),
-    };
-    let alpha = unshuffle(&buf[mlen + 1..mlen + 1 + 4 * m], m);
-    let rgb = unshuffle(&buf[mlen + 1 + 4 * m..], 3 * m);
+    let flags = buf[mlen];
+    if flags & !(WHOLE_ALPHAS | WHOLE_COLOURS) != 0 {
+        return Err(damaged(format!("unknown accumulator encoding {flags}")));
+    }
+    let alpha = floats(
+        unshuffle(&buf[mlen + 1..mlen + 1 + 4 * m], m),
+        flags & WHOLE_ALPHAS != 0,
+    );
+    let rgb = floats(
+        unshuffle(&buf[mlen + 1 + 4 * m..], 3 * m),
+        flags & WHOLE_COLOURS != 0,
+    );
     let mut k = 0;
     for (i, o) in out.iter_mut().enumerate() {
         if buf[i / 8] & (1 << (i % 8)) == 0 {
             *o = [0.0; 4];
             continue;
         }
-        let a = if ints {
-            alpha[k] as f32
-        } else {
-            f32::from_bits(alpha[k])
-        };
-        *o = [
-            f32::from_bits(rgb[3 * k]),
-            f32::from_bits(rgb[3 * k + 1]),
-            f32::from_bits(rgb[3 * k + 2]),
-            a,
-        ];
+        *o = [rgb[3 * k], rgb[3 * k + 1], rgb[3 * k + 2], alpha[k]];
         k += 1;
     }
     Ok(())
@@ -698,4 +707,78 @@ fn parse_header(text: &str, file: &str) -> Result<(RenderState, usize, usize), D
         return Err(err(file, Pos::File, "the bucket grid is too large"));
     }
     Ok((state, bw, bh))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Chunks come back bit for bit whatever their values: whole colours and alphas (stored as
+    /// integers), fractional ones, both mixed in one chunk, and the edge of f32's whole numbers.
+    #[test]
+    fn chunks_round_trip_bit_for_bit() {
+        let mut rng = crate::flame::rng::FastRng::new(5);
+        let whole = |rng: &mut crate::flame::rng::FastRng| -> Bucket {
+            let n = (rng.f01() * 60.0).floor() as f32;
+            let c = |rng: &mut crate::flame::rng::FastRng| (rng.f01() * 255.0).floor() as f32 * n;
+            [c(rng), c(rng), c(rng), n]
+        };
+        let cases: Vec<Vec<Bucket>> = vec![
+            (0..500).map(|_| whole(&mut rng)).collect(),
+            (0..500)
+                .map(|i| {
+                    let mut b = whole(&mut rng);
+                    if i == 250 {
+                        b[1] += 0.5; // one fractional colour: the chunk stores bits
+                    }
+                    b
+                })
+                .collect(),
+            (0..500)
+                .map(|_| [rng.f01() as f32, 0.3, 1e-9, rng.f01() as f32 * 7.0])
+                .collect(),
+            vec![
+                [16_777_216.0, 16_777_215.0, 0.0, 1.0],
+                [0.0; 4],
+                [1.0, 2.0, 3.0, 16_777_216.0],
+            ],
+            vec![[-1.0, 2.0, f32::NAN, 4.0], [1e30, 0.0, 0.0, -0.0]],
+        ];
+        for rows in cases {
+            let bytes = compress(&rows).unwrap();
+            let mut back = vec![[9.0f32; 4]; rows.len()];
+            decompress("t", 0, &bytes, &mut back).unwrap();
+            for (a, b) in rows.iter().zip(&back) {
+                assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
+            }
+        }
+    }
+
+    /// Sums of 8-bit palette entries (whole palette units) take far less room than the same
+    /// colours in units of 1.0, as version 1 stored them.
+    #[test]
+    fn whole_colours_compress_better_than_their_fractions() {
+        let mut rng = crate::flame::rng::FastRng::new(8);
+        let rows: Vec<Bucket> = (0..4096)
+            .map(|_| {
+                let n = 1.0 + (rng.f01() * 40.0).floor();
+                let mut c = [0.0f64; 3];
+                for _ in 0..n as usize {
+                    for v in &mut c {
+                        *v += (rng.f01() * 256.0).floor().min(255.0);
+                    }
+                }
+                [c[0] as f32, c[1] as f32, c[2] as f32, n as f32]
+            })
+            .collect();
+        let units = compress(&rows).unwrap().len();
+        let fractions: Vec<Bucket> = rows
+            .iter()
+            .map(|b| [b[0] / 255.0, b[1] / 255.0, b[2] / 255.0, b[3]])
+            .collect();
+        let ones = compress(&fractions).unwrap().len();
+        let raw = rows.len() * 16;
+        assert!(units * 10 < raw * 4, "{units} of {raw}");
+        assert!(units * 10 < ones * 8, "{units} vs {ones}");
+    }
 }
