@@ -168,6 +168,7 @@ impl EscapeTab {
                 ui.add(
                     egui::DragValue::new(&mut doc.params.max_iter)
                         .range(1..=1_000_000)
+                        .clamp_existing_to_range(false)
                         .speed(10.0),
                 )
                 .labelled_by(l.id)
@@ -200,14 +201,18 @@ impl EscapeTab {
                 named(r.response, "Gradient").on_hover_text("the colours of the picture");
                 ui.end_row();
                 let l = ui.label("Offset");
-                ui.add(egui::Slider::new(&mut doc.params.palette.offset, 0.0..=1.0))
-                    .labelled_by(l.id)
-                    .on_hover_text("shift the colours along the gradient");
+                ui.add(
+                    egui::Slider::new(&mut doc.params.palette.offset, 0.0..=1.0)
+                        .clamping(egui::SliderClamping::Edits),
+                )
+                .labelled_by(l.id)
+                .on_hover_text("shift the colours along the gradient");
                 ui.end_row();
                 let l = ui.label("Repeat");
                 ui.add(
                     egui::DragValue::new(&mut doc.params.palette.repeat)
                         .range(0.01..=256.0)
+                        .clamp_existing_to_range(false)
                         .speed(0.05),
                 )
                 .labelled_by(l.id)

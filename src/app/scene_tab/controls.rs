@@ -144,12 +144,21 @@ impl SceneTab {
                              r: std::ops::RangeInclusive<f64>| {
                                 let lb = ui.label(l);
                                 ui.horizontal(|ui| {
-                                    ui.add(egui::Slider::new(v, r.clone()).show_value(false))
-                                        .labelled_by(lb.id)
-                                        .on_hover_text(tip);
-                                    ui.add(egui::DragValue::new(v).range(r).speed(0.01))
-                                        .labelled_by(lb.id)
-                                        .on_hover_text(tip);
+                                    ui.add(
+                                        egui::Slider::new(v, r.clone())
+                                            .show_value(false)
+                                            .clamping(egui::SliderClamping::Edits),
+                                    )
+                                    .labelled_by(lb.id)
+                                    .on_hover_text(tip);
+                                    ui.add(
+                                        egui::DragValue::new(v)
+                                            .range(r)
+                                            .clamp_existing_to_range(false)
+                                            .speed(0.01),
+                                    )
+                                    .labelled_by(lb.id)
+                                    .on_hover_text(tip);
                                 });
                                 ui.end_row();
                             };
@@ -221,7 +230,12 @@ impl SceneTab {
                         }
                         let mut g = l.intensity.x;
                         if named(
-                            ui.add(egui::DragValue::new(&mut g).speed(0.1).range(0.0..=100.0)),
+                            ui.add(
+                                egui::DragValue::new(&mut g)
+                                    .speed(0.1)
+                                    .range(0.0..=100.0)
+                                    .clamp_existing_to_range(false),
+                            ),
                             &format!("light {} intensity", i + 1),
                         )
                         .on_hover_text("brightness of the light")
@@ -309,7 +323,8 @@ impl SceneTab {
                     ui.add(
                         egui::DragValue::new(&mut c.distance)
                             .speed(0.05)
-                            .range(0.5..=200.0),
+                            .range(0.5..=200.0)
+                            .clamp_existing_to_range(false),
                     )
                     .labelled_by(lb.id)
                     .on_hover_text("distance of the camera from its target");
@@ -323,7 +338,8 @@ impl SceneTab {
                     ui.add(
                         egui::DragValue::new(&mut c.polar_deg)
                             .speed(0.5)
-                            .range(1.0..=179.0),
+                            .range(1.0..=179.0)
+                            .clamp_existing_to_range(false),
                     )
                     .labelled_by(lb.id)
                     .on_hover_text("the camera's angle from straight above");
@@ -332,7 +348,8 @@ impl SceneTab {
                     ui.add(
                         egui::DragValue::new(&mut c.scale)
                             .speed(1.0)
-                            .range(1.0..=5000.0),
+                            .range(1.0..=5000.0)
+                            .clamp_existing_to_range(false),
                     )
                     .labelled_by(lb.id)
                     .on_hover_text("magnification of the picture");
@@ -395,7 +412,8 @@ fn quaternion_controls(ui: &mut egui::Ui, q: &mut QuaternionJulia) -> bool {
             ui.add(
                 egui::DragValue::new(&mut q.c[k])
                     .speed(0.005)
-                    .range(-2.0..=2.0),
+                    .range(-2.0..=2.0)
+                    .clamp_existing_to_range(false),
             )
             .labelled_by(lb.id)
             .on_hover_text("the constant of z ← z² + c, one quaternion component");
@@ -419,7 +437,8 @@ fn quaternion_controls(ui: &mut egui::Ui, q: &mut QuaternionJulia) -> bool {
         ui.add(
             egui::DragValue::new(&mut q.slice_value)
                 .speed(0.01)
-                .range(-2.0..=2.0),
+                .range(-2.0..=2.0)
+                .clamp_existing_to_range(false),
         )
         .labelled_by(lb.id)
         .on_hover_text("the value of the fixed component");
