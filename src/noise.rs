@@ -1,5 +1,5 @@
-//! Seeded gradient (Perlin) noise and fBm (surfaces.md §8.1), shared by the warped-Julia
-//! turbulence (escape.md §2.7) and the scene textures.
+//! Seeded gradient (Perlin) noise and fBm, shared by the warped-Julia turbulence and the scene
+//! textures.
 
 use crate::flame::rng::FastRng;
 

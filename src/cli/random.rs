@@ -1,4 +1,4 @@
-//! `ugnis random`: a batch of random flames (flame.md §8) into one `.fla`, with thumbnails.
+//! `ugnis random`: a batch of random flames into one `.fla`, with thumbnails.
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicU64, Ordering};

@@ -1,4 +1,4 @@
-//! Colouring of escape-time samples (escape.md §4): iteration bands, smooth count, distance
+//! Colouring of escape-time samples: iteration bands, smooth count, distance
 //! estimation, histogram colouring and Newton root basins, through the shared gradients.
 
 use super::family::Sample;
@@ -116,7 +116,7 @@ impl Palette {
     }
 }
 
-/// Cumulative histogram of integer counts over escaped samples (escape.md §4.4).
+/// Cumulative histogram of integer counts over escaped samples.
 pub struct CountHistogram {
     cumulative: Vec<f64>,
 }

@@ -1,4 +1,4 @@
-//! Iteration families (escape.md §2) and the scalar per-point iteration.
+//! Iteration families and the scalar per-point iteration.
 
 use super::complex::C;
 use super::warp::Warp;
@@ -45,8 +45,7 @@ impl Family {
         }
     }
 
-    /// Default escape radius for integer colouring and for smooth/distance colouring
-    /// (escape.md §1, §7.4).
+    /// Default escape radius for integer colouring and for smooth/distance colouring.
     pub fn default_bailout(&self, smooth: bool) -> f64 {
         match self {
             Family::Logistic { kose: false, .. } => 1e6,
@@ -129,7 +128,7 @@ impl Sample {
     }
 }
 
-/// ν = n + 1 − ln(ln|z|)/ln m (escape.md §4.2).
+/// ν = n + 1 − ln(ln|z|)/ln m.
 pub fn smooth_count(n: u32, z_norm2: f64, degree: f64) -> f64 {
     let ln_abs = 0.5 * z_norm2.ln();
     if !(ln_abs > 0.0) || !ln_abs.is_finite() {
@@ -138,7 +137,7 @@ pub fn smooth_count(n: u32, z_norm2: f64, degree: f64) -> f64 {
     n as f64 + 1.0 - ln_abs.ln() / degree.ln()
 }
 
-/// b = 2|z| ln|z| / |z′| (escape.md §4.3).
+/// b = 2|z| ln|z| / |z′|.
 pub fn distance_estimate(z: C, dz: C) -> f64 {
     let a = z.abs();
     2.0 * a * a.ln() / dz.abs()
@@ -286,7 +285,7 @@ impl NewtonSystem {
         n.is_finite().then_some(n)
     }
 
-    /// Iterate from z₀ until |Δz|² < 1e-10 (escape.md §2.6).
+    /// Iterate from z₀ until |Δz|² < 1e-10.
     pub fn iterate(&self, z0: C, max_iter: u32) -> Sample {
         let mut z = z0;
         for n in 1..=max_iter {

@@ -1,4 +1,4 @@
-//! Escape-time fractals (escape.md): Mandelbrot, Julia, z^m + c, Newton, logistic, the cubic
+//! Escape-time fractals: Mandelbrot, Julia, z^m + c, Newton, logistic, the cubic
 //! z³ + z + p, and the Borowicz warped-Julia textures; colouring; progressive parallel
 //! rendering with a vectorised lane engine; perturbation deep zoom for z² + c.
 

@@ -1,4 +1,4 @@
-//! Rendering escape-time views: the view geometry (escape.md §1), parallel rows, the lane
+//! Rendering escape-time views: the view geometry, parallel rows, the lane
 //! engine for quadratic families, progressive coarse-to-fine passes, optional Mariani–Silver
 //! block filling, and colouring into an image.
 
@@ -258,7 +258,7 @@ pub fn check_memory(
     Ok(need)
 }
 
-/// Check a view against the f64 precision limit (escape.md §1).
+/// Check a view against the f64 precision limit.
 pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
     if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
         return Err(EscapeError::BadSize(w, h));
@@ -1058,7 +1058,7 @@ mod tests {
 
     #[test]
     fn block_filling_agrees_with_the_full_computation() {
-        // escape.md §5.2: default view, 256×256, n_max 256, integer colouring: ≥ 99.9 %.
+        // Default view, 256×256, n_max 256, integer colouring: ≥ 99.9 % of pixels agree.
         let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
         p.coloring = Coloring::Bands;
         p.max_iter = 256;

@@ -1,4 +1,4 @@
-//! Warped Julia textures (escape.md §2.7, Borowicz): texture coordinates, the Möbius
+//! Warped Julia textures (Borowicz): texture coordinates, the Möbius
 //! (all-pass) warp g(p) = (p − ᾱ)/(1 − αp) and fBm turbulence.
 
 use super::complex::C;
@@ -47,7 +47,8 @@ pub enum WarpError {
     BadSampling,
 }
 
-/// The paper-figure presets (escape.md §2.7 table).
+/// Presets after the figures of Borowicz's paper: polar Julia, warped Julia and the turbulent
+/// galaxy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Preset {
     PolarJulia,

@@ -48,7 +48,7 @@ impl Affine {
         self.a * self.d - self.b * self.c
     }
 
-    /// flam3 `coefs` order: c00 c01 c10 c11 c20 c21 = a c b d e f (flame.md §1).
+    /// flam3 `coefs` order: c00 c01 c10 c11 c20 c21 = a c b d e f.
     pub fn to_coefs(&self) -> [f64; 6] {
         [self.a, self.c, self.b, self.d, self.e, self.f]
     }
@@ -69,7 +69,8 @@ impl Affine {
         }
     }
 
-    /// The editor triangle (O′, X′, Y′) of flame.md §1.1.
+    /// The editor triangle (O′, X′, Y′): the images of O = (0, 0), X = (1, 0) and Y = (0, −1)
+    /// (y points down on screen, so Y appears above O, as in Apophysis).
     pub fn triangle(&self) -> [[f64; 2]; 3] {
         [
             [self.e, self.f],
@@ -78,7 +79,7 @@ impl Affine {
         ]
     }
 
-    /// Coefficients from an editor triangle (O′, X′, Y′), flame.md §1.1.
+    /// Coefficients from an editor triangle (O′, X′, Y′).
     pub fn from_triangle(t: [[f64; 2]; 3]) -> Self {
         let [o, x, y] = t;
         Affine {

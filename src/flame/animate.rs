@@ -1,5 +1,5 @@
-//! Animation (flame.md §9 and flam3's interpolation): the thesis program's rotating triangles,
-//! and in-betweens of two or more flames.
+//! Animation: the thesis program's rotating triangles, and in-betweens of two or more flames
+//! (flam3's interpolation).
 
 use crate::flame::model::{Affine, Flame, Var, Xform};
 use crate::flame::rng::FastRng;
@@ -9,7 +9,7 @@ use crate::gradient::{Gradient, hsv_to_rgb, rgb_to_hsv};
 pub const ROTATION_STEP_DEG: f64 = 2.0;
 pub const FRAMES_PER_TURN: u32 = 90;
 
-/// Rotate an xform's triangle about its centroid (flame.md §9): L′ = R·L, O′ = C + R(O − C).
+/// Rotate an xform's triangle about its centroid: L′ = R·L, O′ = C + R(O − C).
 /// Centroid and determinant are unchanged.
 pub fn rotate_about_centroid(m: &Affine, angle: f64) -> Affine {
     let t = m.triangle();
@@ -337,7 +337,7 @@ mod tests {
 
     #[test]
     fn a_full_turn_restores_the_coefficients() {
-        // flame.md §9 oracle: 180 steps of 2° restore every coefficient within 1e-12 relative;
+        // Oracle: 180 steps of 2° restore every coefficient within 1e-12 relative;
         // centroid and |det| are invariant at every step.
         let m = Affine::new(0.5, -0.2, 0.3, 0.6, 0.1, -0.4);
         let c0 = centroid(&m);

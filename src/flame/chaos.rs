@@ -1,4 +1,4 @@
-//! The chaos game (flame.md §3): a flame compiled for fast iteration.
+//! The chaos game: a flame compiled for fast iteration.
 
 use crate::flame::fastmath;
 use crate::flame::model::{Affine, Flame, Xform};
@@ -722,7 +722,7 @@ struct AffineStep {
     bad_limit: f64,
 }
 
-/// Build the 16 384-entry selection table for weights `w` (flame.md §3.1).
+/// Build the 16 384-entry selection table for weights `w`.
 pub fn selection_table(w: &[f64]) -> Box<[u16]> {
     let n = w.len();
     let total: f64 = w.iter().sum();
@@ -910,7 +910,7 @@ impl Chaos {
         (p, last.unwrap_or(0))
     }
 
-    /// Run one sub-batch of `n` plotted samples (flame.md §3.3). `plot(p, vis)` receives
+    /// Run one sub-batch of `n` plotted samples. `plot(p, vis)` receives
     /// every point after the fuse, final xform applied. Returns the number of bad values.
     #[inline(always)]
     pub fn run_sub_batch<F: FnMut(Pt, f64)>(&self, n: u64, rng: &mut FastRng, mut plot: F) -> u64 {

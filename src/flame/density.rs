@@ -1,4 +1,4 @@
-//! Density estimation (flame.md §5.5): a family of Gaussian kernels whose width shrinks as the
+//! Density estimation: a family of Gaussian kernels whose width shrinks as the
 //! local hit count grows; each log-scaled bucket is splatted with the kernel chosen by its count.
 
 use rayon::prelude::*;
@@ -277,7 +277,7 @@ impl DeFilters {
         }
     }
 
-    /// Hit count of the os×os block around a bucket (flame.md §5.5).
+    /// Hit count of the os×os block around a bucket.
     fn block_count(&self, hist: &Histogram, x: usize, y: usize) -> f32 {
         let os = self.os;
         if os == 1 {

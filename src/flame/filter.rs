@@ -1,4 +1,4 @@
-//! Spatial filter kernels (flame.md §5.4).
+//! Spatial filter kernels.
 
 use std::f64::consts::PI;
 

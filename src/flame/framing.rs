@@ -1,4 +1,4 @@
-//! Automatic framing (flame.md §7): trimmed bounds of a short orbit (the thesis `GetBounds`
+//! Automatic framing: trimmed bounds of a short orbit (the thesis `GetBounds`
 //! with its defects corrected).
 
 use crate::flame::chaos::{Chaos, FUSE};

@@ -159,7 +159,7 @@ mod tests {
 
     #[test]
     fn the_3d_fern_stays_in_its_box() {
-        // formats.md §2.3: x [−1.623, 1.623], y [0.044, 7.997], z [−4.999, 0].
+        // Known bounds of the 3-D fern: x [−1.623, 1.623], y [0.044, 7.997], z [−4.999, 0].
         let rows = vec![
             [
                 0.0, 0.0, 0.0, 0.0, 0.18, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.01,

@@ -1,4 +1,4 @@
-//! The flame / IFS data model (flame.md §2).
+//! The flame / IFS data model.
 
 pub use crate::flame::affine::Affine;
 use crate::flame::variations::{self, Form, VarId};
@@ -57,7 +57,7 @@ impl Var {
     }
 }
 
-/// One transform of the IFS (flame.md §2).
+/// One transform of the IFS.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Xform {
     pub weight: f64,
@@ -149,7 +149,7 @@ impl Xform {
     }
 }
 
-/// Spatial filter kernels (flame.md §5.4).
+/// Spatial filter kernels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FilterShape {
     #[default]
@@ -211,7 +211,7 @@ impl FilterShape {
     }
 }
 
-/// How a colour coordinate indexes the palette (flame.md §5.2).
+/// How a colour coordinate indexes the palette.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum PaletteMode {
     #[default]
@@ -321,7 +321,7 @@ impl PaletteIndex {
     }
 }
 
-/// A 3-D Fractint IFS shown through a fixed view (formats.md §2.2): rows
+/// A 3-D Fractint IFS shown through a fixed view: rows
 /// a b c d e f g h i j k l p with x′ = a x + b y + c z + j, y′ = d x + e y + f z + k,
 /// z′ = g x + h y + i z + l.
 #[derive(Clone, Debug, PartialEq)]
@@ -337,8 +337,7 @@ impl Ifs3d {
     pub const FRACTINT_VIEW: [f64; 3] = [30.0, 30.0, 30.0];
 }
 
-/// Settings for new, random and imported flames (the Options dialog's "main" values,
-/// flame.md §10).
+/// Settings for new, random and imported flames (the Options dialog's "main" values).
 #[derive(Clone, Debug, PartialEq)]
 pub struct NewFlame {
     pub width: u32,
@@ -365,7 +364,8 @@ impl Default for NewFlame {
 }
 
 impl NewFlame {
-    /// An empty flame with these settings and the remaining flame.md §10 defaults.
+    /// An empty flame with these settings and the remaining default render
+    /// settings.
     pub fn flame(&self) -> Flame {
         Flame {
             width: self.width,
@@ -428,7 +428,7 @@ impl Camera3d {
     }
 }
 
-/// A fractal flame: camera, render settings, palette and transforms (flame.md §2).
+/// A fractal flame: camera, render settings, palette and transforms.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Flame {
     pub name: String,
@@ -553,7 +553,7 @@ impl Flame {
         self.scale * self.zoom.exp2() * self.cam_zoom
     }
 
-    /// Total chaos-game samples: quality·4^zoom·W·H (flame.md §5.1).
+    /// Total chaos-game samples: quality·4^zoom·W·H.
     pub fn total_samples(&self) -> u64 {
         let n = self.quality * (4f64).powf(self.zoom) * self.width as f64 * self.height as f64;
         if n.is_finite() && n > 0.0 {
@@ -609,7 +609,7 @@ impl Flame {
         self.height = height;
     }
 
-    /// Determinant-rule weights (flame.md §2.1) for the given maps.
+    /// Determinant-rule weights for the given maps.
     pub fn determinant_weights(maps: &[Affine]) -> Vec<f64> {
         let n = maps.len();
         if n == 0 {

@@ -1,4 +1,4 @@
-//! Random flames (flame.md §8): the thesis program's RandomIFS with flam3-genome's quality
+//! Random flames: the thesis program's RandomIFS with flam3-genome's quality
 //! check, reproducible from a seed.
 
 use crate::flame::chaos::{BAD_LIMIT, Chaos, FUSE};
@@ -39,11 +39,11 @@ pub enum SymmetryMode {
     None,
     /// flam3's random order.
     Random,
-    /// A fixed order k (flame.md §8.3: k < 0 adds a mirror).
+    /// A fixed order k (k < 0 adds a mirror).
     Order(i32),
 }
 
-/// The Random options (flame.md §10) and generator switches.
+/// The Random options and generator switches.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RandomOptions {
     pub min_xforms: usize,
@@ -221,7 +221,8 @@ pub fn random_variations(mode: &VariationMode, rng: &mut FastRng) -> Vec<Var> {
     }
 }
 
-/// One random candidate (flame.md §8.1 steps 1–7), not yet tested or framed.
+/// One random candidate (coefficients, variations, colours, weights, gradient, symmetry), not
+/// yet tested or framed.
 pub fn candidate(n: usize, opts: &RandomOptions, defaults: &NewFlame, rng: &mut FastRng) -> Flame {
     let mut f = defaults.flame();
     f.kind = FlameKind::Flame;
@@ -267,7 +268,7 @@ pub fn candidate(n: usize, opts: &RandomOptions, defaults: &NewFlame, rng: &mut 
     f
 }
 
-/// Pre-check after Apophysis `BlowsUp` (flame.md §8.2): 15 fuse + 5000 iterations from a
+/// Pre-check after Apophysis `BlowsUp`: 15 fuse + 5000 iterations from a
 /// random point; reject on a bad value or a span above 1000 world units.
 pub fn blows_up(f: &Flame, rng: &mut FastRng) -> bool {
     let Ok(chaos) = Chaos::new(f) else {
@@ -294,7 +295,7 @@ pub fn blows_up(f: &Flame, rng: &mut FastRng) -> bool {
     xmax - xmin > 1000.0 || ymax - ymin > 1000.0
 }
 
-/// The render test of flame.md §8.2 on an already framed 128×128 copy: accept iff
+/// The flam3-genome render test on an already framed 128×128 copy: accept iff
 /// avg ≥ 20, black ≥ 1 % and white ≤ 5 %.
 pub fn passes_render_test(f: &Flame) -> bool {
     let mut t = f.clone();
@@ -337,7 +338,7 @@ pub fn passes_render_test(f: &Flame) -> bool {
     sum / n >= 20.0 && black / n >= 0.01 && white / n <= 0.05
 }
 
-/// Generate one random flame from a seed (flame.md §8.1): the xform count stays fixed over the
+/// Generate one random flame from a seed: the xform count stays fixed over the
 /// retries, up to `max_attempts` candidates; the survivor is framed for its size.
 pub fn generate(seed: u64, opts: &RandomOptions, defaults: &NewFlame) -> Generated {
     let mut rng = FastRng::new(seed);
@@ -370,7 +371,7 @@ pub fn batch_seed(seed: u64, i: usize) -> u64 {
     FastRng::for_stream(seed, i as u64).u64()
 }
 
-/// A random batch (flame.md §8.5): `count` flames named random-001…, generated in parallel;
+/// A random batch: `count` flames named random-001…, generated in parallel;
 /// each stores its own seed (`ugnis_seed`) so that it can be regenerated.
 pub fn generate_batch(
     count: usize,

@@ -1,5 +1,5 @@
 //! The progressive renderer: chaos game into per-thread histograms, then density estimation,
-//! spatial filter and tone mapping (flame.md §3, §5, §6).
+//! spatial filter and tone mapping.
 //!
 //! ```text
 //! let mut r = Renderer::new(&flame, &RenderOptions::default())?;

@@ -1,4 +1,4 @@
-//! Symmetry xforms (flame.md §8.3, flam3 `flam3_add_symmetry`).
+//! Symmetry xforms (flam3 `flam3_add_symmetry`).
 
 use crate::flame::model::{Affine, Flame, Xform};
 use crate::flame::rng::FastRng;

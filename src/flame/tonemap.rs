@@ -1,4 +1,4 @@
-//! Log-density scaling (flame.md §5.3) and tone mapping (§6).
+//! Log-density scaling and tone mapping.
 
 use crate::flame::model::Flame;
 use crate::gradient::{hsv_to_rgb, rgb_to_hsv};

@@ -1,4 +1,4 @@
-//! Diagnostics shared by every parser (formats.md §1): file, 1-based line and column (in Unicode
+//! Diagnostics shared by every parser: file, 1-based line and column (in Unicode
 //! scalar values) or byte offset, a stable code and a message.
 
 use std::fmt;
@@ -163,7 +163,7 @@ impl NumberError {
     }
 }
 
-/// Parse a number of the grammar of formats.md §1:
+/// Parse a number in the grammar shared by every text format:
 /// `[+-]? ( digits [ "." digits? ] | "." digits ) ( [eE] [+-]? digits )?`.
 pub fn parse_number(tok: &str) -> Result<f64, NumberError> {
     let b = tok.as_bytes();

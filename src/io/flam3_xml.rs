@@ -1,4 +1,4 @@
-//! flam3 / Apophysis flame XML (`.flame`, `.flam3`) and ugnis `.fla` (formats.md §3, §4).
+//! flam3 / Apophysis flame XML (`.flame`, `.flam3`) and ugnis `.fla`.
 //!
 //! Reading accepts any well-formed document and takes every `<flame>` element at any depth.
 //! Everything ugnis does not interpret — unknown attributes, `<edit>` histories, variations it
@@ -379,7 +379,7 @@ fn read_flame(
 ) -> R<Flame> {
     let attrs = scan_attrs(e, start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
     let mut f = Flame {
-        // flam3 defaults for absent attributes (formats.md §3.2).
+        // flam3 defaults for absent attributes.
         width: 100,
         height: 100,
         scale: 50.0,
@@ -1443,7 +1443,7 @@ fn text_to_hex(t: &str) -> String {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Writing (formats.md §3.6)
+// Writing
 
 /// Write a whole `.fla`/`.flame` document.
 pub fn write(file: &FlameFile) -> String {

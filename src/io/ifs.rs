@@ -1,4 +1,4 @@
-//! Fractint `.ifs` files (formats.md §2): read, write, and conversion to and from flames.
+//! Fractint `.ifs` files: read, write, and conversion to and from flames.
 
 use std::fmt::Write as _;
 
@@ -520,7 +520,7 @@ pub fn conjugate_y(m: &Affine) -> Affine {
     Affine::new(m.a, -m.b, -m.c, m.d, m.e, -m.f)
 }
 
-/// A 2-D entry as a flame (formats.md §2.5); a 3-D entry as a flame that iterates the 3-D
+/// A 2-D entry as a flame; a 3-D entry as a flame that iterates the 3-D
 /// system and shows it through Fractint's default 30°/30°/30° view. The camera is left to
 /// automatic framing (the renderer frames flames without a camera).
 pub fn entry_to_flame(e: &IfsEntry, defaults: &NewFlame) -> Flame {
@@ -584,7 +584,7 @@ pub fn fractint_shares(p: &[f64]) -> Vec<f64> {
     out
 }
 
-/// Convert a flame to a 2-D `.ifs` entry (formats.md §2.6). Returns the entry and a warning
+/// Convert a flame to a 2-D `.ifs` entry. Returns the entry and a warning
 /// listing what the `.ifs` format cannot keep, or an error naming the first xform that is not
 /// a plain linear map.
 pub fn flame_to_entry(f: &Flame) -> Result<(IfsEntry, Option<String>), String> {
@@ -827,7 +827,7 @@ tri(3d){\n 1 0 0 0 1 0 0 0 1 0 0 0 1 }\n";
         assert_eq!(flame.xforms.len(), 4);
         assert_eq!(flame.kind, FlameKind::Ifs);
         assert!(!flame.has_camera);
-        // coefs="0.85 0.04 -0.04 0.85 0 -1.6" for the second row (formats.md §2.5).
+        // coefs="0.85 0.04 -0.04 0.85 0 -1.6" for the second row.
         assert_eq!(
             flame.xforms[1].coefs.to_coefs(),
             [0.85, 0.04, -0.04, 0.85, 0.0, -1.6]

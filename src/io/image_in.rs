@@ -1,5 +1,5 @@
 //! Reading images (JPEG, PNG, BMP, GIF) for gradients from images, with size limits and BMP
-//! header checks that report byte offsets (formats.md §9.2).
+//! header checks that report byte offsets.
 
 use std::path::Path;
 

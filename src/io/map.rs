@@ -1,4 +1,4 @@
-//! Fractint `.map` palettes (formats.md §5): up to 256 lines `R G B [comment]`.
+//! Fractint `.map` palettes: up to 256 lines `R G B [comment]`.
 
 use std::fmt::Write as _;
 

@@ -1,5 +1,5 @@
 //! Readers and writers of every file format ugnis opens or saves. Parsers report errors with
-//! file, line and column (formats.md §1) and never panic.
+//! file, line and column and never panic.
 
 pub mod atomic;
 pub mod bmp;

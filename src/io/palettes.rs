@@ -1,4 +1,4 @@
-//! flam3's palette library `flam3-palettes.xml` (formats.md §7): 701 numbered gradients,
+//! flam3's palette library `flam3-palettes.xml`: 701 numbered gradients,
 //! referenced by `palette="N"` in flames. The file ships with flam3 (Debian: `flam3-palette`);
 //! ugnis looks for it and never copies it.
 
@@ -209,8 +209,8 @@ mod tests {
         assert_eq!(parse(&dup, "x").unwrap_err().code, "PAL002");
     }
 
-    /// The installed flam3 library, when present (Debian flam3-palette), matches the fixture
-    /// facts of formats.md §7.
+    /// The installed flam3 library, when present (Debian flam3-palette), has 701 palettes and
+    /// the known colours of palettes 0 and 700.
     #[test]
     fn installed_library_if_present() {
         let Some(p) = find(None) else { return };

@@ -1,4 +1,4 @@
-//! PNG export with the flame embedded (formats.md §8), and reading a flame back from a PNG.
+//! PNG export with the flame embedded, and reading a flame back from a PNG.
 
 use std::io::{BufWriter, Cursor};
 use std::path::Path;

@@ -1,4 +1,4 @@
-//! Ultra Fractal / Apophysis `.ugr` gradient files (formats.md §6): several named gradients
+//! Ultra Fractal / Apophysis `.ugr` gradient files: several named gradients
 //! per file, keys at positions 0..399 on a circle, colour = R + 256·G + 65536·B.
 
 use std::fmt::Write as _;
@@ -226,7 +226,7 @@ fn rgb_of(c: i64) -> [f64; 3] {
     ]
 }
 
-/// Build the 256-entry table from keys (formats.md §6). Returns the gradient and whether a
+/// Build the 256-entry table from keys. Returns the gradient and whether a
 /// duplicate slot was replaced.
 fn from_keys(name: &str, keys: &[Key]) -> (Gradient, bool) {
     // slot j = round(I·255/399) of I mod 400; later duplicates replace earlier ones.

@@ -1,6 +1,6 @@
-//! Objects made of patches, their tessellation into triangle meshes (surfaces.md §4), and the
-//! generators the scene files use: surfaces of revolution, tubes along a cubic spine, the
-//! reference jug (§9), a teapot-style object and midpoint-displacement mountains (§8.2).
+//! Objects made of patches, their tessellation into triangle meshes, and the generators the
+//! scene files use: surfaces of revolution, tubes along a cubic spine, the reference jug, a
+//! teapot-style object and midpoint-displacement mountains.
 
 use glam::DVec3;
 
@@ -145,7 +145,8 @@ pub fn tessellate(patches: &[SurfacePatch], n: usize) -> Mesh {
 /// The quarter-circle constant κ = 4(√2 − 1)/3.
 pub const KAPPA: f64 = 0.552_284_749_830_793_4;
 
-/// Cubic quarter-circle weights (a_j, c_j) of §9.
+/// Cubic quarter-circle weights (a_j, c_j): the control points (r·a_j, r·c_j) approximate the
+/// quarter circle of radius r from (r, 0) to (0, r).
 const ARC_A: [f64; 4] = [1.0, 1.0, KAPPA, 0.0];
 const ARC_C: [f64; 4] = [0.0, KAPPA, 1.0, 1.0];
 
@@ -190,8 +191,8 @@ fn exact_rotate(p: DVec3, q: usize) -> DVec3 {
     }
 }
 
-/// A tube of `radius` around a cubic spine in the xy plane (§9 handle): four quarter patches.
-/// Texture: s = (q + w)/4 around, t = u along.
+/// A tube of `radius` around a cubic spine in the xy plane (as for the jug's handle): four quarter
+/// patches. Texture: s = (q + w)/4 around, t = u along.
 pub fn tube(spine: [DVec3; 4], radius: f64) -> Vec<SurfacePatch> {
     let sp = super::patch::Curve {
         points: spine.to_vec(),
@@ -230,7 +231,7 @@ pub fn tube(spine: [DVec3; 4], radius: f64) -> Vec<SurfacePatch> {
         .collect()
 }
 
-/// The jug's profile (§9): four G1 cubic segments (r, y).
+/// The reference jug's profile: four G1 cubic segments (r, y).
 pub const JUG_PROFILE: [[f64; 2]; 13] = [
     [0.0, 0.0],
     [0.3, 0.0],
@@ -311,7 +312,7 @@ pub fn teapot() -> Vec<SurfacePatch> {
     p
 }
 
-/// A fractal mountain by midpoint displacement on a square of two triangles (§8.2): K levels
+/// A fractal mountain by midpoint displacement on a square of two triangles: K levels
 /// give 2·4^K triangles on a (2^K + 1)² lattice. Each new midpoint is displaced once by a
 /// Gaussian N(0, σ_k²), σ_k = σ₀·2^(−kH), from a hash of its lattice position (crack-free,
 /// reproducible). The square spans [−size/2, size/2]² in x and z; heights along y. Texture:
@@ -526,7 +527,7 @@ mod tests {
         assert_eq!(m.positions.len(), 257 * 257);
         let again = mountain(8, 10.0, 1.0, 0.8, 5);
         assert_eq!(m.positions, again.positions);
-        // The one-triangle count of §8.2: 4^K triangles, (2^K + 1)(2^K + 2)/2 vertices.
+        // K levels on one triangle give 4^K triangles and (2^K + 1)(2^K + 2)/2 vertices.
         let k = 8u32;
         assert_eq!(4usize.pow(k), 65_536);
         assert_eq!((2usize.pow(k) + 1) * (2usize.pow(k) + 2) / 2, 33_153);

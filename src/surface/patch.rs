@@ -1,4 +1,4 @@
-//! Parametric patches (surfaces.md §2): Bézier of any degree, Hermite bicubic, bilinear,
+//! Parametric patches: Bézier of any degree, Hermite bicubic, bilinear,
 //! ruled and linear Coons patches; derivatives and normals with fallbacks at degenerate points.
 
 use glam::DVec3;
@@ -34,7 +34,7 @@ pub fn bernstein_deriv(n: usize, t: f64) -> Vec<f64> {
         .collect()
 }
 
-/// Hermite basis [F₁ F₂ F₃ F₄] at t (surfaces.md §2.4).
+/// Hermite basis [F₁ F₂ F₃ F₄] at t.
 pub fn hermite(t: f64) -> [f64; 4] {
     let (t2, t3) = (t * t, t * t * t);
     [
@@ -72,7 +72,7 @@ impl Curve {
     }
 }
 
-/// de Casteljau split of a cubic row at t = ½ (surfaces.md §2.5).
+/// de Casteljau split of a cubic row at t = ½.
 pub fn split_cubic(p: [DVec3; 4]) -> ([DVec3; 4], [DVec3; 4]) {
     let m = (p[0] + p[1] * 3.0 + p[2] * 3.0 + p[3]) / 8.0;
     (
@@ -114,7 +114,7 @@ pub enum PatchError {
 pub enum Patch {
     /// (n + 1)×(m + 1) control net, row i along u: `net[i·(m + 1) + j]`.
     Bezier { n: usize, m: usize, net: Vec<DVec3> },
-    /// The Hermite geometry matrix P of §2.4.
+    /// The 4×4 Hermite geometry matrix P: corners, tangents and twists.
     Hermite { g: [[DVec3; 4]; 4] },
     /// Corners p₀₀, p₀₁, p₁₀, p₁₁.
     Bilinear { p: [DVec3; 4] },
@@ -362,7 +362,7 @@ mod tests {
                 assert!((bernstein(n, t).iter().sum::<f64>() - 1.0).abs() < 1e-12);
             }
         }
-        // Cubic derivative formulas of §2.5.
+        // The cubic Bernstein derivative formulas.
         let t: f64 = 0.3;
         let d = bernstein_deriv(3, t);
         let want = [

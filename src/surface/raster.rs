@@ -1,4 +1,4 @@
-//! The software renderer (surfaces.md §4–7): adaptive tessellation, near-plane clipping,
+//! The software renderer: adaptive tessellation, near-plane clipping,
 //! z-buffer with a top-left fill rule (larger z nearer), perspective-correct attributes,
 //! deferred per-pixel Phong shading with mipmapped textures and Blinn bump mapping, parallel
 //! bands of rows, optional supersampling, stereo pairs.

@@ -1,5 +1,5 @@
 //! The scene model: objects (patches or meshes) with materials and textures, lights, camera
-//! and projection (surfaces.md §3, §6, §9).
+//! and projection.
 
 use glam::{DVec3, Vec3};
 
@@ -8,7 +8,7 @@ use super::quaternion::QuaternionJulia;
 use super::texture::Texture;
 use super::transform::Transform;
 
-/// Material of the illumination model (§6.1).
+/// Material of the Phong illumination model (see `illuminate`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
     pub ka: f64,
@@ -94,7 +94,7 @@ pub enum Projection {
     Stereo,
 }
 
-/// The orbit camera of §3: target T, distance ρ, azimuth θ (from +z towards +x) and polar
+/// An orbit camera: target T, distance ρ, azimuth θ (from +z towards +x) and polar
 /// angle φ (from +y).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
@@ -191,7 +191,7 @@ impl Default for Scene {
     }
 }
 
-/// The lighting model of §6.1 for one surface point (all vectors in one space):
+/// The Phong illumination model for one surface point (all vectors in one space):
 /// I = I_a·K_a·c + Σ I_l/(d + K)·(K_d·c·(n̂·L̂) + k_s·(R̂·Ŝ)ⁿ), clamped to [0, 1].
 #[allow(clippy::too_many_arguments)]
 pub fn illuminate(

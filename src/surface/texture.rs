@@ -1,4 +1,4 @@
-//! Textures (surfaces.md §7–8): RGB images with a mipmap pyramid, bilinear and trilinear
+//! Textures: RGB images with a mipmap pyramid, bilinear and trilinear
 //! sampling (wrap in s, clamp in t), and procedural sources: fBm and value noise, the Markov
 //! random field texture, checker and grid patterns.
 
@@ -147,7 +147,7 @@ pub fn fbm_texture(w: usize, h: usize, fbm: Fbm, a: Vec3, b: Vec3) -> Texture {
     Texture::from_texels(w, h, tex)
 }
 
-/// Value noise (Kovács, surfaces.md §8.1): lattice values in [−1, 1] from a seeded 256-entry
+/// Value noise (Kovács): lattice values in [−1, 1] from a seeded 256-entry
 /// permutation, smoothstep fade.
 #[derive(Clone, Debug)]
 pub struct ValueNoise {
@@ -206,7 +206,7 @@ pub fn value_noise_texture(w: usize, h: usize, seed: u64, cells: u32, a: Vec3, b
     Texture::from_texels(w, h, tex)
 }
 
-/// Markov random field parameters (surfaces.md §8.3).
+/// Markov random field parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MrfParams {
     pub alpha: f64,
@@ -232,7 +232,8 @@ impl Default for MrfParams {
     }
 }
 
-/// T for a site given its 8 neighbours (t, t′, u, u′, v, v′, w, w′) as in the table of §8.3.
+/// T for a site X given its 8 neighbours (t, t′, u, u′, v, v′, w, w′), laid out in rows from the
+/// top as v u w′ / t X t′ / w u′ v′.
 #[allow(clippy::too_many_arguments)]
 pub fn mrf_t(
     p: &MrfParams,

@@ -1,4 +1,4 @@
-//! 4×4 homogeneous transforms in the thesis's row-vector convention (surfaces.md §3):
+//! 4×4 homogeneous transforms in the thesis's row-vector convention:
 //! [X Y Z H] = [x y z 1]·T; "first T₁, then T₂" is T₁·T₂.
 
 use glam::{DVec3, DVec4};
@@ -281,7 +281,7 @@ pub fn foreshortening(phi: f64, theta: f64) -> (f64, f64, f64) {
     (f(DVec3::X), f(DVec3::Y), f(DVec3::Z))
 }
 
-/// Newell's polygon normal (a, b, c) and d (surfaces.md §6.2).
+/// Newell's polygon normal (a, b, c) and d.
 pub fn newell(points: &[DVec3]) -> (DVec3, f64) {
     let mut n = DVec3::ZERO;
     for i in 0..points.len() {
