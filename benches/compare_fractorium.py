@@ -16,7 +16,9 @@ Needs: Fractorium's renderer built with ../shared/tools/ember/build.sh (EMBER_HO
 /tmp/ember), python3 with numpy and pillow, and a release build of ugnis (cargo build --release).
 
 UGNIS_BIN names another ugnis binary to compare (an A/B of two builds); --keep DIR keeps each
-flame's three pictures (ref, fr, ug) to look at.
+flame's three pictures (ref, fr, ug) to look at. --ugnis-rule fractorium makes ugnis index the
+palette as Fractorium does for every file (by default ugnis follows the program that wrote the
+file, as Fractorium does not), to tell rendering differences from that deliberate one.
 
 Examples:
   benches/compare_fractorium.py ../shared/testdata/real-flames/*.flame
@@ -131,6 +133,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--speed", action="store_true", help="also print wall times and their ratio")
     ap.add_argument("--keep", default=None, help="directory to keep each flame's three pictures in")
+    ap.add_argument("--ugnis-rule", default=None,
+                    help="palette rule ugnis uses for every file (flam3, apophysis, fractorium, jwildfire)")
     a = ap.parse_args()
     if not os.path.exists(UGNIS):
         sys.exit(f"{UGNIS} missing: cargo build --release")
@@ -151,7 +155,14 @@ def main():
         h = max(1, round(a.width * h0 / w0))
         name = f"{os.path.basename(f)[:40]}#{i}"
         ref, fr, ug = (os.path.join(tmp, f"{x}.png") for x in ("ref", "fr", "ug"))
-        t_ug, r = ugnis(f, i, ug, a.width, h, a.quality, a.threads)
+        src = f
+        if a.ugnis_rule:
+            src = os.path.join(tmp, "ruled" + os.path.splitext(f)[1])
+            data = re.sub(rb'\sugnis_palette_index="[^"]*"', b"", open(f, "rb").read())
+            rule = a.ugnis_rule.encode()
+            data = re.sub(rb"<flame(\s|>)", b'<flame ugnis_palette_index="' + rule + b'"\\1', data)
+            open(src, "wb").write(data)
+        t_ug, r = ugnis(src, i, ug, a.width, h, a.quality, a.threads)
         if r.returncode != 0:
             print(f"{name:<48} skipped: ugnis: {r.stderr.strip().splitlines()[-1][:60]}")
             continue
