@@ -39,6 +39,12 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
             i += 1;
         }
         let name = &content[ns..i];
+        if !is_xml_name(name) {
+            return Err((
+                base + ns,
+                format!("'{name}' is not an attribute name (letters, digits, '_', '-', '.', ':')"),
+            ));
+        }
         while i < b.len() && b[i].is_ascii_whitespace() {
             i += 1;
         }
@@ -91,6 +97,15 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
         });
     }
     Ok(out)
+}
+
+/// An XML name: a letter, '_' or ':' (or any non-ASCII character), then those, digits, '-' and
+/// '.'. Anything else (a quote, '<', '&' …) could not be written back as a name.
+fn is_xml_name(name: &str) -> bool {
+    let mut chars = name.chars();
+    let start = |c: char| c.is_ascii_alphabetic() || c == '_' || c == ':' || !c.is_ascii();
+    chars.next().is_some_and(start)
+        && chars.all(|c| start(c) || c.is_ascii_digit() || c == '-' || c == '.')
 }
 
 /// An XML event with the byte range it occupies in the source.
@@ -193,6 +208,24 @@ mod tests {
         assert_eq!(scan_attrs(&format!("x{many}"), 0).unwrap().len(), 1000);
         let e = scan_attrs(&format!("x{many} a3=\"again\""), 0).unwrap_err();
         assert!(e.1.contains("'a3' appears twice"), "{}", e.1);
+    }
+
+    /// A name that could not be written back (a quote in it, a digit first, none at all) is an
+    /// error where it starts.
+    #[test]
+    fn attribute_names_are_xml_names() {
+        let ok = scan_attrs(r#"x a-b.c_d:e="1" _x="2" é="3""#, 0).unwrap();
+        assert_eq!(ok.len(), 3);
+        for (src, at) in [
+            (r#"x xyCo"ff="1""#, 2),
+            (r#"x 1a="1""#, 2),
+            (r#"x ="1""#, 2),
+            (r#"x a="1" b<c="2""#, 8),
+        ] {
+            let (pos, msg) = scan_attrs(src, 0).unwrap_err();
+            assert_eq!(pos, at, "{src}: {msg}");
+            assert!(msg.contains("not an attribute name"), "{src}: {msg}");
+        }
     }
 
     #[test]
