@@ -6,7 +6,9 @@ mod common;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
-use ugnis::io::{diag, escape_view, flam3_xml, ggr, ifs, image_in, map, palettes, png, scene, ugr};
+use ugnis::io::{
+    diag, escape_view, flam3_xml, ggr, ifs, image_in, lsystem, map, palettes, png, scene, ugr,
+};
 
 const CASES: u32 = 10_000;
 
@@ -280,6 +282,30 @@ fn scene_parser_never_panics() {
             Ok(())
         })
         .unwrap_or_else(|e| panic!("scene: {e}"));
+}
+
+/// Fractint L-systems: whatever parses is written back and read again, and its first orders are
+/// counted, derived and walked (small ones only: the limits are tested elsewhere).
+#[test]
+fn lsystem_parser_never_panics() {
+    let src = std::fs::read(common::fixture("explore.l")).unwrap();
+    fuzz("lsystem", [16; 32], src, |b| {
+        if let Ok(p) = lsystem::parse(&text(b), "f.l") {
+            if let Ok(out) = lsystem::write(&p.value.entries) {
+                let back = lsystem::parse(&out, "back.l").expect("re-reading what ugnis wrote");
+                assert_eq!(back.value.entries.len(), p.value.entries.len());
+            }
+            for e in p.value.entries.iter().take(3) {
+                let Ok(c) = e.compile() else { continue };
+                for order in 0..4 {
+                    if c.counts(order).visits < 1e5 {
+                        let _ = c.derive_string(order);
+                        let _ = c.extent(order);
+                    }
+                }
+            }
+        }
+    });
 }
 
 #[test]
