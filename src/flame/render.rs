@@ -85,6 +85,9 @@ pub enum RenderError {
     Settings(String),
     #[error(transparent)]
     OutOfMemory(#[from] MemoryError),
+    /// The saved histogram of a resumed render could not be read.
+    #[error("{0}")]
+    Saved(String),
 }
 
 /// Memory the buffers of a render will need, in bytes, part by part.
@@ -476,17 +479,34 @@ impl Renderer {
         opts: &RenderOptions,
         strip: Option<crate::flame::strips::Strip>,
     ) -> Result<Renderer, RenderError> {
+        Self::resume_with(state, add_quality, opts, strip, |h| {
+            if (hist.bw, hist.bh) != (h.bw, h.bh) {
+                return Err(format!(
+                    "the saved histogram is {}×{} buckets, the render needs {}×{}",
+                    hist.bw, hist.bh, h.bw, h.bh
+                ));
+            }
+            *h = hist;
+            Ok(())
+        })
+    }
+
+    /// [`Renderer::resume`] with the saved histogram written by `fill` into the renderer's
+    /// first histogram (zeroed, of the render's size, allocated after the memory check), so
+    /// that a saved histogram read from a file is never held twice. `fill`'s error is the
+    /// resume's error.
+    pub fn resume_with(
+        state: &RenderState,
+        add_quality: f64,
+        opts: &RenderOptions,
+        strip: Option<crate::flame::strips::Strip>,
+        fill: impl FnOnce(&mut Histogram) -> Result<(), String>,
+    ) -> Result<Renderer, RenderError> {
         let (part, next) = state.continuation().map_err(RenderError::Settings)?;
         let mut flame = state.flame.clone();
         flame.has_camera = true;
         let mut r = Self::with_plan(&flame, opts, &Plan { part, strip })?;
-        if (hist.bw, hist.bh) != (r.geom.bw, r.geom.bh) {
-            return Err(RenderError::Settings(format!(
-                "the saved histogram is {}×{} buckets, the render needs {}×{}",
-                hist.bw, hist.bh, r.geom.bw, r.geom.bh
-            )));
-        }
-        r.hists[0] = hist;
+        fill(&mut r.hists[0]).map_err(RenderError::Saved)?;
         r.logs = None;
         r.next_batch = next.min(r.batches_total);
         r.samples_done = state.samples_done;

@@ -494,17 +494,46 @@ impl StateReader {
 
     /// Bucket rows `rows` of the grid as a histogram of `bw` × `rows.len()` buckets.
     pub fn read_rows(&mut self, rows: Range<usize>) -> Result<Histogram, Diagnostic> {
-        let name = self.file_name.clone();
+        self.check_rows(&rows)?;
+        let mut h = Histogram::new(self.bw, rows.len());
+        self.read_rows_into(rows, &mut h)?;
+        Ok(h)
+    }
+
+    fn check_rows(&self, rows: &Range<usize>) -> Result<(), Diagnostic> {
         if rows.end > self.bh || rows.start > rows.end {
             return Err(err(
-                &name,
+                &self.file_name,
                 Pos::File,
                 format!("rows {rows:?} are outside the grid of {} rows", self.bh),
             ));
         }
+        Ok(())
+    }
+
+    /// [`StateReader::read_rows`] into `h` (`bw` × the rows' count buckets), inflating each
+    /// chunk in place (in parallel): the histogram is never held twice.
+    pub fn read_rows_into(
+        &mut self,
+        rows: Range<usize>,
+        h: &mut Histogram,
+    ) -> Result<(), Diagnostic> {
+        let name = self.file_name.clone();
+        self.check_rows(&rows)?;
         let bw = self.bw;
-        let mut h = Histogram::new(bw, rows.len());
-        // Read the compressed chunks that meet the range, then inflate them in parallel.
+        if (h.bw, h.bh) != (bw, rows.len()) {
+            return Err(err(
+                &name,
+                Pos::File,
+                format!(
+                    "the saved histogram has {bw}×{} buckets there, the render needs {}×{}",
+                    rows.len(),
+                    h.bw,
+                    h.bh
+                ),
+            ));
+        }
+        // Read the compressed chunks that meet the range (they tile the rows in order).
         let mut raw: Vec<(usize, usize, u64, Vec<u8>)> = Vec::new();
         for c in &self.chunks {
             if c.row0 + c.rows <= rows.start || c.row0 >= rows.end {
@@ -517,22 +546,31 @@ impl StateReader {
             self.file.read_exact(&mut b).map_err(|e| io_err(&name, e))?;
             raw.push((c.row0, c.rows, c.offset, b));
         }
-        let decoded: Vec<(usize, Vec<Bucket>)> = raw
-            .par_iter()
-            .map(|(row0, n, at, b)| {
-                let mut out = vec![[0f32; 4]; n * bw];
-                decompress(&name, *at, b, &mut out)?;
-                Ok((*row0, out))
-            })
-            .collect::<Result<_, Diagnostic>>()?;
-        for (row0, data) in decoded {
-            let n = data.len() / bw;
-            let lo = row0.max(rows.start);
-            let hi = (row0 + n).min(rows.end);
-            h.data[(lo - rows.start) * bw..(hi - rows.start) * bw]
-                .copy_from_slice(&data[(lo - row0) * bw..(hi - row0) * bw]);
+        // Each chunk's share of `h`: whole chunks are inflated straight into it, the (at most
+        // two) chunks cut by the range's ends through a buffer of their own.
+        let mut jobs = Vec::with_capacity(raw.len());
+        let mut rest: &mut [Bucket] = &mut h.data;
+        let mut next = rows.start;
+        for (row0, n, at, b) in &raw {
+            let (lo, hi) = ((*row0).max(rows.start), (row0 + n).min(rows.end));
+            let (_, tail) = rest.split_at_mut((lo - next) * bw);
+            let (dst, tail) = tail.split_at_mut((hi - lo) * bw);
+            rest = tail;
+            next = hi;
+            jobs.push((*row0, *n, *at, b, lo, dst));
         }
-        Ok(h)
+        jobs.into_par_iter()
+            .try_for_each(|(row0, n, at, b, lo, dst)| {
+                if dst.len() == n * bw {
+                    decompress(&name, at, b, dst)
+                } else {
+                    let mut out = vec![[0f32; 4]; n * bw];
+                    decompress(&name, at, b, &mut out)?;
+                    let from = (lo - row0) * bw;
+                    dst.copy_from_slice(&out[from..from + dst.len()]);
+                    Ok(())
+                }
+            })
     }
 
     /// The whole histogram.
@@ -548,13 +586,17 @@ impl StateReader {
         opts: &RenderOptions,
         strip: Option<Strip>,
     ) -> Result<Renderer, String> {
-        let hist = match &strip {
-            Some(s) => self.read_rows(s.hist_rows.clone()),
-            None => self.read_all(),
-        }
-        .map_err(|e| e.to_string())?;
-        Renderer::resume(&self.state, hist, add_quality, opts, strip)
-            .map_err(|e| format!("cannot continue '{}': {e}", self.file_name))
+        let rows = match &strip {
+            Some(s) => s.hist_rows.clone(),
+            None => 0..self.bh,
+        };
+        let state = self.state.clone();
+        // The renderer checks the memory it needs before it allocates; the saved buckets are
+        // then read into its first histogram.
+        Renderer::resume_with(&state, add_quality, opts, strip, |h| {
+            self.read_rows_into(rows, h).map_err(|e| e.to_string())
+        })
+        .map_err(|e| format!("cannot continue '{}': {e}", self.file_name))
     }
 }
 
@@ -752,6 +794,52 @@ mod tests {
                 assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
             }
         }
+    }
+
+    /// Rows cut out of the middle of chunks (32 rows each) read as the same rows of the whole
+    /// histogram, bit for bit; a destination of the wrong size is refused.
+    #[test]
+    fn a_band_of_rows_reads_as_the_same_rows_of_the_whole() {
+        use crate::flame::affine::Affine;
+        use crate::flame::model::{Flame, Xform};
+        use crate::flame::render::{RenderOptions, Renderer};
+        let mut f = Flame {
+            width: 40,
+            height: 90,
+            scale: 30.0,
+            center: [0.5, 0.5],
+            quality: 3.0,
+            ..Flame::default()
+        };
+        for (e, g) in [(0.0, 0.0), (0.5, 0.0), (0.25, 0.5)] {
+            f.xforms
+                .push(Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, e, g), 1.0, e));
+        }
+        let mut r = Renderer::new(&f, &RenderOptions::default()).unwrap();
+        assert!(r.run_all(1, &std::sync::atomic::AtomicBool::new(false), |_| {}));
+        let (st, hist) = r.into_state().unwrap();
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("s.ugnis-state");
+        save(&path, &st, &hist).unwrap();
+        let mut rd = StateReader::open(&path).unwrap();
+        let all = rd.read_all().unwrap();
+        assert_eq!(all.data, hist.data);
+        let bw = hist.bw;
+        for rows in [10..75, 0..32, 31..33, 64..hist.bh, 40..40] {
+            let band = rd.read_rows(rows.clone()).unwrap();
+            assert_eq!(
+                band.data,
+                hist.data[rows.start * bw..rows.end * bw],
+                "{rows:?}"
+            );
+        }
+        let mut wrong = Histogram::new(bw, 5);
+        let e = rd
+            .read_rows_into(10..20, &mut wrong)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("s.ugnis-state") && e.contains("buckets"), "{e}");
+        assert!(rd.read_rows(80..hist.bh + 1).is_err());
     }
 
     /// Sums of 8-bit palette entries (whole palette units) take far less room than the same
