@@ -308,6 +308,50 @@ fn lsystem_parser_never_panics() {
     });
 }
 
+/// Render states are binary (lengths, offsets, deflate): a damaged one is an error naming the
+/// file, never a panic or an allocation its size does not justify. Whatever opens is read band
+/// by band and continued under a memory limit.
+#[test]
+fn render_state_reader_never_panics() {
+    use ugnis::flame::render::{RenderOptions, Renderer};
+    use ugnis::io::render_state::{self, StateReader};
+    let flames = flam3_xml::read(
+        &std::fs::read_to_string(common::example("sierpinski.flame")).unwrap(),
+        &Default::default(),
+    )
+    .unwrap();
+    let mut f = flames.value.flames[0].clone();
+    f.width = 24;
+    f.height = 16;
+    f.quality = 2.0;
+    let mut r = Renderer::new(&f, &RenderOptions::default()).unwrap();
+    r.run(500, &std::sync::atomic::AtomicBool::new(false)); // unfinished: it can be continued
+    let (st, hist) = r.into_state().unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("good.ugnis-state");
+    render_state::save(&good, &st, &hist).unwrap();
+    let src = std::fs::read(&good).unwrap();
+    let path = dir.path().join("m.ugnis-state");
+    let opts = RenderOptions {
+        threads: 1,
+        memory_limit: Some(64 << 20),
+        ..RenderOptions::default()
+    };
+    fuzz("state", [17; 32], src, |b| {
+        std::fs::write(&path, b).unwrap();
+        let Ok(mut rd) = StateReader::open(&path) else {
+            return;
+        };
+        let (bw, bh) = rd.state.grid().unwrap_or((0, 0));
+        if bw.saturating_mul(bh) <= 1 << 16 {
+            let _ = rd.read_rows(0..bh.min(40));
+        }
+        if let Ok(mut r) = rd.renderer(0.5, &opts, None) {
+            r.run(200, &std::sync::atomic::AtomicBool::new(false));
+        }
+    });
+}
+
 #[test]
 fn map_parser_never_panics() {
     let mut src = std::fs::read(common::fixture("hand.map")).unwrap();
