@@ -642,6 +642,25 @@ impl Flame {
     }
 }
 
+/// Test flame: the Sierpinski triangle (three half-size maps, colours 0, ½ and 1) framed on
+/// the unit square, at this size and quality.
+#[cfg(test)]
+pub(crate) fn test_sierpinski(width: u32, height: u32, quality: f64) -> Flame {
+    let mut f = Flame {
+        width,
+        height,
+        center: [0.5, 0.5],
+        scale: width.min(height) as f64 * 0.7,
+        quality,
+        ..Flame::default()
+    };
+    for (e, g, c) in [(0.0, 0.0, 0.0), (0.5, 0.0, 0.5), (0.25, 0.5, 1.0)] {
+        f.xforms
+            .push(Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, e, g), 1.0, c));
+    }
+    f
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

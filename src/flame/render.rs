@@ -1428,22 +1428,10 @@ mod tests {
     /// numbers (exact, whatever the order of the adds) — what makes saved states small.
     #[test]
     fn an_8_bit_palette_accumulates_whole_colour_sums() {
-        let mut flame = Flame {
-            width: 64,
-            height: 48,
-            center: [0.5, 0.5],
-            scale: 40.0,
-            quality: 20.0,
+        let flame = Flame {
             palette: Gradient::grey_ramp(),
-            ..Flame::default()
+            ..crate::flame::model::test_sierpinski(64, 48, 20.0)
         };
-        for (e, f, c) in [(0.0, 0.0, 0.0), (0.5, 0.0, 0.5), (0.25, 0.5, 1.0)] {
-            flame.xforms.push(crate::flame::model::Xform::linear(
-                crate::flame::affine::Affine::new(0.5, 0.0, 0.0, 0.5, e, f),
-                1.0,
-                c,
-            ));
-        }
         let opts = RenderOptions {
             threads: 2,
             ..RenderOptions::default()

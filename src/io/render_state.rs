@@ -800,21 +800,8 @@ mod tests {
     /// histogram, bit for bit; a destination of the wrong size is refused.
     #[test]
     fn a_band_of_rows_reads_as_the_same_rows_of_the_whole() {
-        use crate::flame::affine::Affine;
-        use crate::flame::model::{Flame, Xform};
         use crate::flame::render::{RenderOptions, Renderer};
-        let mut f = Flame {
-            width: 40,
-            height: 90,
-            scale: 30.0,
-            center: [0.5, 0.5],
-            quality: 3.0,
-            ..Flame::default()
-        };
-        for (e, g) in [(0.0, 0.0), (0.5, 0.0), (0.25, 0.5)] {
-            f.xforms
-                .push(Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, e, g), 1.0, e));
-        }
+        let f = crate::flame::model::test_sierpinski(40, 90, 3.0);
         let mut r = Renderer::new(&f, &RenderOptions::default()).unwrap();
         assert!(r.run_all(1, &std::sync::atomic::AtomicBool::new(false), |_| {}));
         let (st, hist) = r.into_state().unwrap();
