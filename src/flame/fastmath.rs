@@ -9,6 +9,20 @@
 
 use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, FRAC_PI_4, PI};
 
+/// Whether this CPU has AVX2 and FMA, for the loops compiled twice (baseline and AVX2+FMA)
+/// and chosen at run time. (The standard library caches the detection: this is one load.)
+#[inline]
+pub fn has_avx2_fma() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
 const S1: f64 = -1.666_666_666_666_663_243_48e-01;
 const S2: f64 = 8.333_333_333_322_489_461_24e-03;
 const S3: f64 = -1.984_126_982_985_794_931_34e-04;

@@ -892,7 +892,7 @@ fn iterate_into(
     rng: &mut FastRng,
 ) -> u64 {
     #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+    if crate::flame::fastmath::has_avx2_fma() {
         // SAFETY: the CPU has just reported AVX2 and FMA.
         return unsafe { iterate_into_avx2(chaos, geom, pal, hist, buf, lanes, n, rng) };
     }
@@ -1280,7 +1280,7 @@ impl Band<'_> {
     /// Filter and tone-map the output rows `y0..y0 + BAND` into `out`.
     fn encode(&self, sc: &mut Scratch, y0: usize, out: Out) {
         #[cfg(target_arch = "x86_64")]
-        if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+        if crate::flame::fastmath::has_avx2_fma() {
             // SAFETY: the CPU has just reported AVX2 and FMA.
             return unsafe { self.encode_avx2(sc, y0, out) };
         }
