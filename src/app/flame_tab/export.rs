@@ -309,7 +309,9 @@ fn run(
             if fit.strips > 1 {
                 if s.refine || s.save_state {
                     return Err(format!(
-                        "this export {}: it can only be rendered in {} strips, which cannot                          keep refining or save a render state; turn those off, or make the                          picture smaller",
+                        "this export {}: it can only be rendered in {} strips, which cannot \
+                         keep refining or save a render state; turn those off, or make the \
+                         picture smaller",
                         fit.describe(),
                         fit.strips
                     ));
@@ -426,7 +428,8 @@ fn run_strips(
     let cannot = |e: &dyn std::fmt::Display| format!("cannot write {}: {e}", s.path.display());
     if io::kind_of(&s.path) != io::FileKind::Png {
         return Err(format!(
-            "this export {}: it must be rendered in {} strips, which writes PNG only (a BMP              needs the whole picture in memory)",
+            "this export {}: it must be rendered in {} strips, which writes PNG only (a BMP \
+             needs the whole picture in memory)",
             fit.describe(),
             fit.strips
         ));
@@ -815,6 +818,8 @@ mod tests {
         ] {
             let e = export(&s, &Control::default()).unwrap_err();
             assert!(e.contains("strips"), "{e}");
+            // One sentence, as the window shows it (no runs of spaces from the source's layout).
+            assert!(!e.contains("  ") && !e.contains('\n'), "{e:?}");
         }
         assert!(!dir.join("strips.bmp").exists());
         let _ = std::fs::remove_dir_all(&dir);
