@@ -1101,8 +1101,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * y, r * x)
         }
         POPCORN => {
-            let dx = (3.0 * y).tan();
-            let dy = (3.0 * x).tan();
+            let dx = fm::tan(3.0 * y);
+            let dy = fm::tan(3.0 * x);
             (w * (x + aff.e * fm::sin(dx)), w * (y + aff.f * fm::sin(dy)))
         }
         EXPONENTIAL => {
@@ -1111,7 +1111,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (d * c, d * s)
         }
         POWER => {
-            let r = w * t.sqrt.powf(t.ux);
+            let r = w * fm::pow_nonneg(t.sqrt, t.ux);
             (r * t.uy, r * t.ux)
         }
         COSINE => {
@@ -1188,7 +1188,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (x * r * c, y * r * s)
         }
         JULIAN => {
-            let r = w * t.sumsq.powf(p[9]);
+            let r = w * fm::pow_nonneg(t.sumsq, p[9]);
             let a = if v.compat {
                 let k = rand_size(rng, p[8]);
                 (t.atan_yx + 2.0 * PI * k) / p[0]
@@ -1200,7 +1200,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * c, r * s)
         }
         JULIASCOPE => {
-            let r = w * t.sumsq.powf(p[9]);
+            let r = w * fm::pow_nonneg(t.sumsq, p[9]);
             let a = if v.compat {
                 let k = (p[8] * rng.f01()).trunc();
                 if (k as i64) & 1 == 0 {
@@ -1287,12 +1287,12 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let (s, c) = sincos(ang);
             (w * s, w * s * s / c)
         }
-        TANGENT => (w * fm::sin(x) / fm::cos(y), w * y.tan()),
+        TANGENT => (w * fm::sin(x) / fm::cos(y), w * fm::tan(y)),
         SQUARE => (w * (rng.f01() - 0.5), w * (rng.f01() - 0.5)),
         RAYS => {
             let ang = w * rng.f01() * PI;
             let r = w / zeps(t.sumsq);
-            let tanr = w * ang.tan() * r;
+            let tanr = w * fm::tan(ang) * r;
             (tanr * fm::cos(x), tanr * fm::sin(y))
         }
         BLADE => {
@@ -1573,8 +1573,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (p2v * t.atan_xy, p2v * 0.5 * t.sumsq.ln())
         }
         POPCORN2 => (
-            w * (x + p[0] * fm::sin((y * p[2]).tan())),
-            w * (y + p[1] * fm::sin((x * p[2]).tan())),
+            w * (x + p[0] * fm::sin(fm::tan(y * p[2]))),
+            w * (y + p[1] * fm::sin(fm::tan(x * p[2]))),
         ),
         SCRY => {
             let r = 1.0 / zeps(t.sqrt * (t.sumsq + p[8]));
@@ -1641,7 +1641,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         WEDGE_JULIA => {
             let (angle, count, power) = (p[0], p[1], p[2]);
-            let r = w * t.sumsq.powf(p[10]);
+            let r = w * fm::pow_nonneg(t.sumsq, p[10]);
             let k = rand_size(rng, p[9]);
             let mut a = (t.atan_yx + 2.0 * PI * k) / power;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
