@@ -249,6 +249,23 @@ pub fn pow_pos(x: f64, y: f64) -> f64 {
     exp(y * ln_pos(x))
 }
 
+/// a mod b with the sign of a (Rust's `%`, C's `fmod`), bit for bit, without the library's
+/// loop in the usual case: with q = trunc(a/b) right, a − q·b is exact in one fused
+/// multiply-add; when q is not (a/b rounded across an integer, or a quotient beyond 2⁵²,
+/// infinities, NaN, b = 0) the result shows it and `%` is used.
+#[inline(always)]
+pub fn fmod(a: f64, b: f64) -> f64 {
+    let q = (a / b).trunc();
+    let r = (-q).mul_add(b, a);
+    let r = if r == 0.0 { 0f64.copysign(a) } else { r };
+    let same_sign = r.is_sign_negative() == a.is_sign_negative();
+    if q.abs() < 4_503_599_627_370_496.0 && same_sign && r.abs() < b.abs() {
+        r
+    } else {
+        a % b
+    }
+}
+
 /// xʸ for x ≥ 0 (0 and +∞ included) and finite y, branch-free (so loops over arrays
 /// vectorise), for the variations' powers of radii: 0 and ∞ as libm gives them, results beyond
 /// the double range ∞ and below e⁻⁷⁰⁸ 0 (libm: a subnormal); otherwise relative error about
@@ -374,6 +391,48 @@ mod tests {
                 let l = (y * x.ln()).abs();
                 let close = ulps(got, want) <= 4.0 * (1.0 + l);
                 assert!(got == want || close, "{x}^{y}: {got} vs {want}");
+            }
+        }
+    }
+
+    #[test]
+    fn fmod_is_rems_bits() {
+        let mut rng = FastRng::new(21);
+        let mut fast = 0;
+        let n = 300_000;
+        for i in 0..n {
+            let a = rng.f11() * [1.0, 10.0, 1e6, 1e18, 1e-300][i % 5];
+            let b = rng.f11() * [1.0, 0.1, 3.0, 1e-9, 1e300][(i / 5) % 5];
+            // Whole multiples and near-multiples too (a/b rounds to an integer there).
+            let a = match i % 7 {
+                0 => b * (rng.f11() * 1000.0).round(),
+                1 => (b * (rng.f11() * 1000.0).round()).next_up(),
+                _ => a,
+            };
+            let (got, want) = (fmod(a, b), a % b);
+            assert_eq!(
+                got.to_bits(),
+                want.to_bits(),
+                "{a:e} % {b:e}: {got:e} vs {want:e}"
+            );
+            let q = (a / b).trunc();
+            fast += (q.abs() < 1e15) as usize;
+        }
+        assert!(fast > n / 2);
+        let special = [
+            0.0,
+            -0.0,
+            1.0,
+            -2.5,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            1e308,
+        ];
+        for a in special {
+            for b in special {
+                let (got, want) = (fmod(a, b), a % b);
+                assert!(got.to_bits() == want.to_bits() || got.is_nan() && want.is_nan());
             }
         }
     }

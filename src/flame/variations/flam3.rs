@@ -1122,7 +1122,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         RINGS => {
             let dx = zeps(aff.e * aff.e);
             let r = t.sqrt;
-            let r = w * ((r + dx) % (2.0 * dx) - dx + r * (1.0 - dx));
+            let r = w * (fm::fmod(r + dx, 2.0 * dx) - dx + r * (1.0 - dx));
             (r * t.uy, r * t.ux)
         }
         FAN => {
@@ -1130,7 +1130,11 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let dx2 = 0.5 * dx;
             let mut a = t.atan_xy;
             let r = w * t.sqrt;
-            a += if (a + aff.f) % dx > dx2 { -dx2 } else { dx2 };
+            a += if fm::fmod(a + aff.f, dx) > dx2 {
+                -dx2
+            } else {
+                dx2
+            };
             let (s, c) = sincos(a);
             (r * c, r * s)
         }
@@ -1150,7 +1154,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let (dx, dx2) = (p[8], p[9]);
             let mut a = t.atan_xy;
             let r = w * t.sqrt;
-            if (a + p[1]) % dx > dx2 {
+            if fm::fmod(a + p[1], dx) > dx2 {
                 a -= dx2;
             } else {
                 a += dx2;
@@ -1368,9 +1372,9 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let x2 = 2.0 * x;
             let mut ny = 0.5 * (2.0 * y).atan2(x2y2 - 1.0) + p[8];
             if ny > FRAC_PI_2 {
-                ny = -FRAC_PI_2 + (ny + FRAC_PI_2) % PI;
+                ny = -FRAC_PI_2 + fm::fmod(ny + FRAC_PI_2, PI);
             } else if ny < -FRAC_PI_2 {
-                ny = FRAC_PI_2 - (FRAC_PI_2 - ny) % PI;
+                ny = FRAC_PI_2 - fm::fmod(FRAC_PI_2 - ny, PI);
             }
             let f = tt + x2;
             let g = tt - x2;
@@ -1540,16 +1544,16 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let (mx, my) = (p[0], p[1]);
             let (xr, yr) = (2.0 * mx, 2.0 * my);
             let nx = if x > mx {
-                -mx + (x + mx) % xr
+                -mx + fm::fmod(x + mx, xr)
             } else if x < -mx {
-                mx - (mx - x) % xr
+                mx - fm::fmod(mx - x, xr)
             } else {
                 x
             };
             let ny = if y > my {
-                -my + (y + my) % yr
+                -my + fm::fmod(y + my, yr)
             } else if y < -my {
-                my - (my - y) % yr
+                my - fm::fmod(my - y, yr)
             } else {
                 y
             };
