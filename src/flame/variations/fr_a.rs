@@ -74,9 +74,11 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ),
     VarDef::new("blur3D", blur3d)
+        .batch(super::inline_batch!(blur3d))
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
     VarDef::new("blur_circle", blur_circle)
+        .batch(super::inline_batch!(blur_circle))
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .sum(),
     VarDef::new("blur_heart", blur_heart)
@@ -88,6 +90,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("blur_linear", blur_linear)
+        .batch(super::inline_batch!(blur_linear))
         .params(&[
             p("blur_linear_length", 0.0),
             p_cyclic("blur_linear_angle", 0.0, 0.0, TAU),
@@ -105,6 +108,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("blur_zoom", blur_zoom)
+        .batch(super::inline_batch!(blur_zoom))
         .params(&[
             p("blur_zoom_length", 0.0),
             p("blur_zoom_x", 0.0),
@@ -124,13 +128,16 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_boarders2),
     VarDef::new("bSwirl", bswirl).params(&[p("bSwirl_in", 0.0), p("bSwirl_out", 0.0)]),
-    VarDef::new("bTransform", btransform).params(&[
-        p("bTransform_rotate", 0.0),
-        p_nonzero("bTransform_power", 0.0, 1.0, 2147483647.0),
-        p("bTransform_move", 0.0),
-        p("bTransform_split", 0.0),
-    ]),
+    VarDef::new("bTransform", btransform)
+        .batch(super::inline_batch!(btransform))
+        .params(&[
+            p("bTransform_rotate", 0.0),
+            p_nonzero("bTransform_power", 0.0, 1.0, 2147483647.0),
+            p("bTransform_move", 0.0),
+            p("bTransform_split", 0.0),
+        ]),
     VarDef::new("bubble2", bubble2)
+        .batch(super::inline_batch!(bubble2))
         .params(&[
             p("bubble2_x", 1.0),
             p("bubble2_y", 1.0),
@@ -156,6 +163,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::WRITES_Z)
         .prepare(prep_bubble_t3d),
     VarDef::new("bwraps", bwraps)
+        .batch(super::inline_batch!(bwraps))
         .params(&[
             p("bwraps_cellsize", 1.0),
             p("bwraps_space", 0.0),
@@ -202,6 +210,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("circlecrop", circlecrop)
+        .batch(super::inline_batch!(circlecrop))
         .params(&[
             p("circlecrop_radius", 1.0),
             p("circlecrop_x", 0.0),
@@ -305,6 +314,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_cpow3),
     VarDef::new("crackle", crackle)
+        .batch(super::inline_batch!(crackle))
         .params(&[
             p_range("crackle_cellsize", 1.0, 0.0001, f64::INFINITY),
             p("crackle_power", 0.2),

@@ -48,6 +48,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(crob_prepare),
     VarDef::new("crop", crop)
+        .batch(super::inline_batch!(crop))
         .params(&[
             p("crop_left", -1.0),
             p("crop_top", -1.0),
@@ -86,6 +87,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(cubic_lattice_3d_prepare),
     VarDef::new("curl3D", curl3d)
+        .batch(super::inline_batch!(curl3d))
         .params(&[
             p("curl3D_cx", 0.0),
             p("curl3D_cy", 0.0),
@@ -106,7 +108,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR | flag::COMPAT)
         .prepare(curl_sp_prepare),
     VarDef::new("curvature", curvature).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
-    VarDef::new("cylinder2", cylinder2),
+    VarDef::new("cylinder2", cylinder2).batch(super::inline_batch!(cylinder2)),
     VarDef::new("d_spherical", d_spherical)
         .params(&[p("d_spherical_weight", 0.5)])
         .needs(need::SUMSQ)
@@ -151,6 +153,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(dc_cylinder_prepare),
     VarDef::new("dc_gridout", dc_gridout).flags(flag::SETS_COLOR),
     VarDef::new("dc_linear", dc_linear)
+        .batch(super::inline_batch!(dc_linear))
         .params(&[
             p("dc_linear_offset", 0.0),
             p("dc_linear_angle", 0.0),
@@ -301,6 +304,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ),
     VarDef::new("ennepers", ennepers),
     VarDef::new("epispiral", epispiral)
+        .batch(super::inline_batch!(epispiral))
         .params(&[
             p("epispiral_n", 6.0),
             p("epispiral_thickness", 0.0),
@@ -361,6 +365,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
     VarDef::new("falloff2", falloff2)
+        .batch(super::inline_batch!(falloff2))
         .params(&[
             p("falloff2_scatter", 1.0),
             p("falloff2_mindist", 0.5),

@@ -28,7 +28,9 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("fibonacci2", fibonacci2)
         .params(&[p("fibonacci2_sc", 1.0), p("fibonacci2_sc2", 1.0)])
         .prepare(fib_prepare),
-    VarDef::new("flatten", flatten).flags(flag::WRITES_ACC | flag::WRITES_Z),
+    VarDef::new("flatten", flatten)
+        .batch(super::inline_batch!(flatten))
+        .flags(flag::WRITES_ACC | flag::WRITES_Z),
     VarDef::new("flipcircle", flipcircle).needs(need::SUMSQ),
     VarDef::new("flipx", flipx),
     VarDef::new("flipy", flipy),
@@ -55,7 +57,9 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ANGLES),
     VarDef::new("funnel", funnel).params(&[p_int("funnel_effect", 8.0, NEG_INF, INF)]),
     VarDef::new("gamma", gamma).needs(need::SQRT | need::ATAN_YX),
-    VarDef::new("gaussian", gaussian).flags(flag::RANDOM),
+    VarDef::new("gaussian", gaussian)
+        .batch(super::inline_batch!(gaussian))
+        .flags(flag::RANDOM),
     VarDef::new("gdoffs", gdoffs)
         .params(&[
             p_range("gdoffs_delta_x", 0.0, 0.0, 16.0),
@@ -70,6 +74,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(gdoffs_prepare),
     VarDef::new("glynnia", glynnia)
+        .batch(super::inline_batch!(glynnia))
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(glynnia_prepare),
@@ -158,6 +163,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[p("helix_frequency", 1.0), p("helix_width", 0.5)])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("hemisphere", hemisphere)
+        .batch(super::inline_batch!(hemisphere))
         .needs(need::SUMSQ)
         .flags(flag::WRITES_Z),
     VarDef::new("henon", henon).params(&[p("henon_a", 0.5), p("henon_b", 1.0)]),
@@ -208,6 +214,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_ACC | flag::WRITES_ACC)
         .prepare(hexcrop_prepare),
     VarDef::new("hexes", hexes)
+        .batch(super::inline_batch!(hexes))
         .params(&[
             p("hexes_cellsize", 1.0),
             p("hexes_power", 1.0),
@@ -237,6 +244,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[p("ho_xpow", 3.0), p("ho_ypow", 3.0), p("ho_zpow", 3.0)])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("hole", hole)
+        .batch(super::inline_batch!(hole))
         .params(&[p("hole_a", 1.0), p_int("hole_inside", 0.0, 0.0, 1.0)])
         .needs(need::SQRT | need::ANGLES | need::ATAN_YX),
     VarDef::new("hypercrop", hypercrop)
@@ -272,6 +280,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(hypertile12_prepare),
     VarDef::new("hypertile2", hypertile2)
+        .batch(super::inline_batch!(hypertile2))
         .params(&[p("hypertile2_p", 3.0), p("hypertile2_q", 7.0)])
         .flags(flag::RANDOM)
         .prepare(hypertile12_prepare),
@@ -322,6 +331,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("jac_dn", jac_dn).params(&[p_range("jac_dn_k", 0.5, -1.0, 1.0)]),
     VarDef::new("jac_sn", jac_sn).params(&[p_range("jac_sn_k", 0.5, -1.0, 1.0)]),
     VarDef::new("julia3D", julia3d)
+        .batch(super::inline_batch!(julia3d))
         .params(&[p_int_nonzero("julia3D_power", 2.0, NEG_INF, INF)])
         .needs(need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)

@@ -17,6 +17,7 @@ const NINF: f64 = f64::NEG_INFINITY;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("julia3Dz", julia3dz)
+        .batch(super::inline_batch!(julia3dz))
         .params(&[p_int_nonzero("julia3Dz_power", 2.0, NINF, INF)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
@@ -106,7 +107,9 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum()
         .prepare(prep_line),
-    VarDef::new("linear3D", linear3d).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("linear3D", linear3d)
+        .batch(super::inline_batch!(linear3d))
+        .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("linearT", linear_t).params(&[p("linearT_powX", 1.0), p("linearT_powY", 1.0)]),
     VarDef::new("linearT3D", linear_t3d)
         .params(&[
@@ -227,6 +230,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .prepare(prep_murl2),
     VarDef::new("nBlur", nblur)
+        .batch(super::inline_batch!(nblur))
         .params(&[
             p_int("nBlur_numEdges", 3.0, NINF, INF),
             p_int("nBlur_numStripes", 0.0, NINF, INF),
@@ -262,6 +266,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(prep_octapol),
     VarDef::new("ortho", ortho)
+        .batch(super::inline_batch!(ortho))
         .params(&[
             p_cyclic("ortho_in", 0.0, -PI, PI),
             p_cyclic("ortho_out", 0.0, -PI, PI),
@@ -320,6 +325,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::SETS_COLOR)
         .prepare(prep_pixel_flow),
     VarDef::new("poincare", poincare)
+        .batch(super::inline_batch!(poincare))
         .params(&[
             p("poincare_c1r", 1.0),
             p_cyclic("poincare_c1a", -1.0, -PI, PI),

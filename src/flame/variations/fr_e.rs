@@ -1323,6 +1323,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[p("shift_x", 0.0), p("shift_y", 0.0), p("shift_angle", 0.0)])
         .prepare(angle_prep),
     VarDef::new("shredlin", shredlin)
+        .batch(super::inline_batch!(shredlin))
         .params(&[
             p_nonzero("shredlin_xdistance", 1.0, -INF, INF),
             p_range("shredlin_xwidth", 0.5, -1.0, 1.0),
@@ -1343,6 +1344,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[p("sigmoid_shiftx", 1.0), p("sigmoid_shifty", 1.0)])
         .prepare(sigmoid_prep),
     VarDef::new("sineblur", sineblur)
+        .batch(super::inline_batch!(sineblur))
         .params(&[p_range("sineblur_power", 1.0, 0.0, INF)])
         .flags(flag::RANDOM)
         .sum(),
@@ -1357,7 +1359,9 @@ pub(super) static DEFS: &[VarDef] = &[
             p("sinusgrid_freqy", 1.0),
         ])
         .prepare(sinusgrid_prep),
-    VarDef::new("sinusoidal3D", sinusoidal3d).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("sinusoidal3D", sinusoidal3d)
+        .batch(super::inline_batch!(sinusoidal3d))
+        .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("smartshape", smartshape)
         .params(&[
             p_range("smartshape_power", 4.0, 2.0, INF),
@@ -1374,6 +1378,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
     VarDef::new("Spherical3D", spherical3d)
+        .batch(super::inline_batch!(spherical3d))
         .needs(S)
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("SphericalN", spherical_n)
@@ -1419,6 +1424,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(S)
         .flags(flag::RANDOM),
     VarDef::new("splits3D", splits3d)
+        .batch(super::inline_batch!(splits3d))
         .params(&[
             p("splits3D_x", 0.0),
             p("splits3D_y", 0.0),
@@ -1454,6 +1460,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(sschecks_prep),
     VarDef::new("starblur", starblur)
+        .batch(super::inline_batch!(starblur))
         .params(&[
             p("starblur_power", 5.0),
             p("starblur_range", 0.401_622_831_7),

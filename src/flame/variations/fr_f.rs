@@ -1863,6 +1863,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(POLAR_NEEDS)
         .prepare(swirl3r_prep),
     VarDef::new("synth", synth)
+        .batch(super::inline_batch!(synth))
         .params(SYNTH_PARAMS)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(flag::RANDOM),
@@ -1907,6 +1908,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::WRITES_Z)
         .prepare(taurus_prep),
     VarDef::new("tile_hlp", tile_hlp)
+        .batch(super::inline_batch!(tile_hlp))
         .params(&[p_nonzero(
             "tile_hlp_width",
             1.0,
@@ -1916,6 +1918,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(tile_hlp_prep),
     VarDef::new("tile_log", tile_log)
+        .batch(super::inline_batch!(tile_log))
         .params(&[p("tile_log_spread", 1.0)])
         .flags(flag::RANDOM),
     VarDef::new("trade", trade)
@@ -2209,13 +2212,18 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(POLAR_NEEDS)
         .prepare(shape_prep),
     VarDef::new("zblur", zblur)
+        .batch(super::inline_batch!(zblur))
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
     VarDef::new("zcone", zcone)
+        .batch(super::inline_batch!(zcone))
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::WRITES_Z),
-    VarDef::new("zscale", zscale).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("zscale", zscale)
+        .batch(super::inline_batch!(zscale))
+        .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("ztranslate", ztranslate)
+        .batch(super::inline_batch!(ztranslate))
         .flags(flag::WRITES_Z)
         .sum(),
 ];
