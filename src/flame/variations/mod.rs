@@ -620,7 +620,19 @@ impl Prepared {
     /// Evaluate the formula: the weighted output for input `t`.
     #[inline(always)]
     pub fn eval(&self, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-        let mut o = (self.def.eval)(self, t, acc, rng);
+        self.eval_with(self.def.eval, t, acc, rng)
+    }
+
+    /// [`Prepared::eval`] with the formula `f` (the variation's own: a function item inlines).
+    #[inline(always)]
+    fn eval_with(
+        &self,
+        f: impl Fn(&Prepared, &VarIn, &mut Acc, &mut FastRng) -> V3,
+        t: &VarIn,
+        acc: &mut Acc,
+        rng: &mut FastRng,
+    ) -> V3 {
+        let mut o = f(self, t, acc, rng);
         if self.def.flags & flag::WRITES_Z == 0 {
             o[2] = self.default_z(t);
         }
@@ -691,7 +703,6 @@ pub fn batch_with(
     f: impl Fn(&Prepared, &VarIn, &mut Acc, &mut FastRng) -> V3,
 ) {
     let n = acc.x.len();
-    let writes_z = v.def.flags & flag::WRITES_Z != 0;
     for j in 0..n {
         let t = VarIn {
             x: s.x[j],
@@ -712,10 +723,7 @@ pub fn batch_with(
             color: acc.color[j],
             hide: false,
         };
-        let mut o = f(v, &t, &mut a, rng);
-        if !writes_z {
-            o[2] = v.default_z(&t);
-        }
+        let o = v.eval_with(&f, &t, &mut a, rng);
         acc.x[j] = a.x + o[0];
         acc.y[j] = a.y + o[1];
         acc.z[j] = a.z + o[2];
