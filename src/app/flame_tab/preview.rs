@@ -8,7 +8,7 @@ use eframe::egui;
 
 use crate::app::worker::{JobContext, Worker};
 use crate::flame::Flame;
-use crate::flame::render::{RenderOptions, Renderer};
+use crate::flame::render::{RenderOptions, Renderer, Spare};
 
 /// Iteration time allowed for the first frame after an edit.
 const FIRST_FRAME_BUDGET_S: f64 = 0.018;
@@ -136,6 +136,8 @@ struct State {
     /// The preview's own threads (and their count): an export or a batch keeping the global
     /// pool busy must not hold back the editor's frames.
     pool: Option<(usize, rayon::ThreadPool)>,
+    /// Memory of a cancelled job, for the next one.
+    spare: Spare,
 }
 
 impl State {
@@ -188,6 +190,13 @@ impl State {
         }
     }
 
+    /// Drop the active job, keeping its memory for the next one.
+    fn retire_active(&mut self) {
+        if let Some(a) = self.active.take() {
+            self.spare = a.renderer.into_spare();
+        }
+    }
+
     /// Set up the renderer of a new job; false (and an error event) when it cannot render.
     fn start(&mut self, job: PreviewJob, t: Instant, cx: &JobContext<PreviewEvent>) -> bool {
         let mut flame = job.flame.clone();
@@ -200,7 +209,12 @@ impl State {
             keep_samples: job.final_quality > job.first_quality,
             ..RenderOptions::default()
         };
-        match Renderer::new(&flame, &opts) {
+        // The replaced render's memory is reused (a new job is never recoloured with the old
+        // samples); what the new one does not take is freed.
+        self.retire_active();
+        let made = Renderer::reusing(&flame, &opts, &mut self.spare);
+        self.spare = Spare::default();
+        match made {
             Ok(r) => {
                 let mut first = (job.first_quality / flame.quality).clamp(0.0, 1.0);
                 // Keep the first frame within its time budget on this machine: fewer samples
@@ -249,7 +263,7 @@ impl State {
             let cancel = cx.cancel_flag();
             if !on_pool(&self.pool, || a.renderer.run(want, cancel)) {
                 // Cancelled by a newer job in the middle of a pass.
-                self.active = None;
+                self.retire_active();
                 return;
             }
             let (n, secs) = (
