@@ -222,7 +222,9 @@ impl ToneMap {
     }
 
     /// The scaled colour and clamped alpha of a pixel when [`highlight`] leaves the colour as
-    /// it is (vibrancy 1), and whether it does not (a channel above 255, or NaN).
+    /// it is (vibrancy 1), and whether it does not: a channel above 255 or NaN — except with a
+    /// highlight power of −1 or below (flam3's default), whose blend weight λ = 1 keeps the
+    /// scale ls exactly (0·newls + ls) whenever the channels are finite.
     #[inline(always)]
     fn usual(&self, s: [f64; 4], au: f64) -> ([f64; 3], f64, bool) {
         let empty = s[3] <= 0.0;
@@ -234,8 +236,9 @@ impl ToneMap {
             ls * (s[1].max(0.0) / 255.0),
             ls * (s[2].max(0.0) / 255.0),
         ];
-        let slow = !(n[0] <= 255.0 && n[1] <= 255.0 && n[2] <= 255.0);
-        (n, alpha, slow)
+        let saturating = !(n[0] <= 255.0 && n[1] <= 255.0 && n[2] <= 255.0);
+        let kept = self.highlight_power <= -1.0 && n.iter().all(|v| v.is_finite());
+        (n, alpha, saturating && !kept)
     }
 }
 
@@ -340,6 +343,9 @@ mod tests {
             (false, 1.0, 1.0, false),
             (true, 1.0, 1.0, false),
             (false, -1.0, 1.0, false),
+            (true, -1.0, 1.0, false),
+            (false, -3.0, 1.0, false),
+            (false, -0.5, 1.0, false),
             (true, -0.5, 0.6, false),
             (false, 2.0, 1.0, true),
         ] {
