@@ -1,9 +1,9 @@
-//! Animation: the thesis program's rotating triangles, and in-betweens of two or more flames
-//! (flam3's interpolation).
+//! Animation in the editor: the thesis program's rotating triangles, and in-betweens of two or
+//! more flames (flam3's interpolation).
 
-use crate::flame::model::{Affine, Flame, Var, Xform};
+use crate::flame::interpolate::interpolate_at;
+use crate::flame::model::{Affine, Flame};
 use crate::flame::rng::FastRng;
-use crate::gradient::{Gradient, hsv_to_rgb, rgb_to_hsv};
 
 /// Angular step of the rotation animation: 2° per frame, 90 frames per 180° turn.
 pub const ROTATION_STEP_DEG: f64 = 2.0;
@@ -75,229 +75,16 @@ pub fn rotation_frames(flame: &Flame, frames: usize, seed: u64) -> Vec<Flame> {
     out
 }
 
-fn lerp(a: f64, b: f64, t: f64) -> f64 {
-    a + (b - a) * t
-}
-
-/// Interpolate one column (x, y) of a linear part in polar form: angle along the shorter
-/// turn, magnitude logarithmically (flam3's "log" interpolation); linear when a column is 0.
-fn lerp_column(a: [f64; 2], b: [f64; 2], t: f64) -> [f64; 2] {
-    if a == b {
-        return a;
-    }
-    let (ra, rb) = (a[0].hypot(a[1]), b[0].hypot(b[1]));
-    if ra < 1e-12 || rb < 1e-12 {
-        return [lerp(a[0], b[0], t), lerp(a[1], b[1], t)];
-    }
-    let (ta, mut tb) = (a[1].atan2(a[0]), b[1].atan2(b[0]));
-    let pi = std::f64::consts::PI;
-    if tb - ta > pi {
-        tb -= 2.0 * pi;
-    } else if tb - ta < -pi {
-        tb += 2.0 * pi;
-    }
-    let r = (lerp(ra.ln(), rb.ln(), t)).exp();
-    let th = lerp(ta, tb, t);
-    [r * th.cos(), r * th.sin()]
-}
-
-/// Interpolate an affine map: linear part column by column in polar form, translation
-/// linearly. t = 0 and t = 1 return the end points exactly.
-pub fn lerp_affine(a: &Affine, b: &Affine, t: f64) -> Affine {
-    if t <= 0.0 {
-        return *a;
-    }
-    if t >= 1.0 {
-        return *b;
-    }
-    let x = lerp_column([a.a, a.c], [b.a, b.c], t);
-    let y = lerp_column([a.b, a.d], [b.b, b.d], t);
-    Affine {
-        a: x[0],
-        c: x[1],
-        b: y[0],
-        d: y[1],
-        e: lerp(a.e, b.e, t),
-        f: lerp(a.f, b.f, t),
-    }
-}
-
-fn lerp_vars(a: &[Var], b: &[Var], t: f64) -> Vec<Var> {
-    let mut out: Vec<Var> = Vec::new();
-    for v in a {
-        let other = b.iter().find(|w| w.id == v.id && w.form == v.form);
-        let (wb, pb) = match other {
-            Some(w) => (w.weight, w.params.clone()),
-            None => (0.0, v.params.clone()),
-        };
-        out.push(Var {
-            id: v.id,
-            form: v.form,
-            weight: lerp(v.weight, wb, t),
-            params: v
-                .params
-                .iter()
-                .zip(pb.iter().chain(std::iter::repeat(&0.0)))
-                .map(|(p, q)| lerp(*p, *q, t))
-                .collect(),
-            // Texts cannot be blended: the first flame's until the middle, then the second's.
-            texts: match other {
-                Some(w) if t >= 0.5 => w.texts.clone(),
-                _ => v.texts.clone(),
-            },
-        });
-    }
-    for w in b
-        .iter()
-        .filter(|w| !a.iter().any(|v| v.id == w.id && v.form == w.form))
-    {
-        out.push(Var {
-            id: w.id,
-            form: w.form,
-            weight: lerp(0.0, w.weight, t),
-            params: w.params.clone(),
-            texts: w.texts.clone(),
-        });
-    }
-    out.retain(|v| v.weight != 0.0);
-    out
-}
-
-fn lerp_xform(a: &Xform, b: &Xform, t: f64) -> Xform {
-    Xform {
-        weight: lerp(a.weight, b.weight, t),
-        color: lerp(a.color, b.color, t),
-        color_speed: lerp(a.color_speed, b.color_speed, t),
-        opacity: lerp(a.opacity, b.opacity, t),
-        coefs: lerp_affine(&a.coefs, &b.coefs, t),
-        direct_color: lerp(a.direct_color, b.direct_color, t),
-        post: lerp_affine(&a.post, &b.post, t),
-        vars: lerp_vars(&a.vars, &b.vars, t),
-        chaos: (0..a.chaos.len().max(b.chaos.len()))
-            .map(|j| {
-                lerp(
-                    a.chaos.get(j).copied().unwrap_or(1.0),
-                    b.chaos.get(j).copied().unwrap_or(1.0),
-                    t,
-                )
-            })
-            .collect(),
-        extra_attrs: if t < 0.5 {
-            a.extra_attrs.clone()
-        } else {
-            b.extra_attrs.clone()
-        },
-        extra_children: Vec::new(),
-    }
-}
-
-/// A stand-in for a missing xform: the other flame's xform with weight 0, so that it fades in
-/// (or out) by weight without changing shape.
-fn absent(x: &Xform) -> Xform {
-    Xform {
-        weight: 0.0,
-        ..x.clone()
-    }
-}
-
-/// Palettes blend entry by entry in HSV, hue along the shorter way (flam3's
-/// `palette_interpolation="hsv_circular"`).
-pub fn lerp_palette(a: &Gradient, b: &Gradient, t: f64) -> Gradient {
-    let colors = a
-        .colors
-        .iter()
-        .zip(&b.colors)
-        .map(|(ca, cb)| {
-            let ha = rgb_to_hsv([ca[0], ca[1], ca[2]]);
-            let hb = rgb_to_hsv([cb[0], cb[1], cb[2]]);
-            let mut dh = hb[0] - ha[0];
-            if dh > 3.0 {
-                dh -= 6.0;
-            } else if dh < -3.0 {
-                dh += 6.0;
-            }
-            // A grey end keeps the other's hue.
-            let h = if ha[1] < 1e-9 {
-                hb[0]
-            } else if hb[1] < 1e-9 {
-                ha[0]
-            } else {
-                ha[0] + dh * t
-            };
-            let rgb = hsv_to_rgb([h, lerp(ha[1], hb[1], t), lerp(ha[2], hb[2], t)]);
-            [rgb[0], rgb[1], rgb[2], lerp(ca[3], cb[3], t)]
-        })
-        .collect();
-    Gradient {
-        name: if t < 0.5 {
-            a.name.clone()
-        } else {
-            b.name.clone()
-        },
-        colors,
-        stops: Vec::new(),
-        map_entries: None,
-    }
-}
-
-/// The flame a fraction `t` of the way from `a` to `b` (flam3-style: xforms paired by index,
-/// missing ones faded in by weight, affine maps in polar form, palettes in HSV, camera and
-/// tone settings linearly). Size, quality and other render settings come from `a`.
+/// The flame a fraction `t` ∈ [0, 1] of the way from `a` to `b`, blended as flam3 blends two
+/// control points (see [`crate::flame::interpolate`]): xforms paired by index and padded to
+/// match, affine maps in polar form, palettes in HSV, camera and tone settings linearly.
 pub fn interpolate(a: &Flame, b: &Flame, t: f64) -> Flame {
-    let t = t.clamp(0.0, 1.0);
-    let n = a.xforms.len().max(b.xforms.len());
-    let xforms = (0..n)
-        .map(|i| match (a.xforms.get(i), b.xforms.get(i)) {
-            (Some(x), Some(y)) => lerp_xform(x, y, t),
-            (Some(x), None) => lerp_xform(x, &absent(x), t),
-            (None, Some(y)) => lerp_xform(&absent(y), y, t),
-            (None, None) => unreachable!(),
-        })
-        .collect();
-    let identity_final = Xform {
-        weight: 0.0,
-        color_speed: 0.0,
-        ..Xform::default()
-    };
-    let final_xform = match (&a.final_xform, &b.final_xform) {
-        (None, None) => None,
-        (Some(x), Some(y)) => Some(lerp_xform(x, y, t)),
-        // The identity (linear, x → x) final xform changes nothing: blend from or to it.
-        (Some(x), None) => Some(lerp_xform(x, &identity_final, t)).filter(|_| t < 1.0),
-        (None, Some(y)) => Some(lerp_xform(&identity_final, y, t)).filter(|_| t > 0.0),
-    };
-    let mut f = a.clone();
-    f.name = format!("{}-{}-{:.3}", a.name, b.name, t);
-    f.xforms = xforms;
-    f.final_xform = final_xform;
-    f.center = [
-        lerp(a.center[0], b.center[0], t),
-        lerp(a.center[1], b.center[1], t),
-    ];
-    // Scale geometrically, so that a zoom runs at a steady speed.
-    f.scale = if a.scale > 0.0 && b.scale > 0.0 {
-        (lerp(a.scale.ln(), b.scale.ln(), t)).exp()
-    } else {
-        lerp(a.scale, b.scale, t)
-    };
-    f.zoom = lerp(a.zoom, b.zoom, t);
-    f.rotate = lerp(a.rotate, b.rotate, t);
-    f.brightness = lerp(a.brightness, b.brightness, t);
-    f.contrast = lerp(a.contrast, b.contrast, t);
-    f.gamma = lerp(a.gamma, b.gamma, t);
-    f.gamma_threshold = lerp(a.gamma_threshold, b.gamma_threshold, t);
-    f.vibrancy = lerp(a.vibrancy, b.vibrancy, t);
-    f.highlight_power = lerp(a.highlight_power, b.highlight_power, t);
-    for k in 0..3 {
-        f.background[k] = lerp(a.background[k], b.background[k], t);
-    }
-    f.palette = if t <= 0.0 {
-        a.palette.clone()
-    } else if t >= 1.0 {
-        b.palette.clone()
-    } else {
-        lerp_palette(&a.palette, &b.palette, t)
-    };
+    let (mut a, mut b) = (a.clone(), b.clone());
+    let name = format!("{}-{}-{:.3}", a.name, b.name, t);
+    a.anim.time = 0.0;
+    b.anim.time = 1.0;
+    let mut f = interpolate_at(&[a, b], t.clamp(0.0, 1.0));
+    f.name = name;
     f.seed = None;
     f
 }
@@ -309,20 +96,29 @@ pub fn interpolation_frames(flames: &[Flame], frames: usize) -> Vec<Flame> {
         (0, _) | (_, 0) => Vec::new(),
         (1, n) => vec![flames[0].clone(); n],
         (_, 1) => vec![flames[0].clone()],
-        (m, n) => (0..n)
-            .map(|k| {
-                let s = k as f64 * (m - 1) as f64 / (n - 1) as f64;
-                let i = (s.floor() as usize).min(m - 2);
-                interpolate(&flames[i], &flames[i + 1], s - i as f64)
-            })
-            .collect(),
+        (m, n) => {
+            let keys: Vec<Flame> = flames
+                .iter()
+                .enumerate()
+                .map(|(i, f)| {
+                    let mut f = f.clone();
+                    f.anim.time = i as f64;
+                    f
+                })
+                .collect();
+            (0..n)
+                .map(|k| interpolate_at(&keys, k as f64 * (m - 1) as f64 / (n - 1) as f64))
+                .collect()
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flame::model::{Var, Xform};
     use crate::flame::variations;
+    use crate::gradient::Gradient;
 
     fn tri_flame() -> Flame {
         Flame {
@@ -400,8 +196,14 @@ mod tests {
         b.xforms[1].vars = vec![Var::new(variations::SWIRL, 1.0)];
         let f0 = interpolate(&a, &b, 0.0);
         let f1 = interpolate(&a, &b, 1.0);
-        assert_eq!(f0.xforms[0].coefs, a.xforms[0].coefs);
-        assert_eq!(f1.xforms[0].coefs, b.xforms[0].coefs);
+        let near = |x: &Affine, y: &Affine| {
+            x.to_coefs()
+                .iter()
+                .zip(y.to_coefs())
+                .all(|(p, q)| (p - q).abs() < 1e-12)
+        };
+        assert!(near(&f0.xforms[0].coefs, &a.xforms[0].coefs));
+        assert!(near(&f1.xforms[0].coefs, &b.xforms[0].coefs));
         assert_eq!(f1.xforms[1].vars, b.xforms[1].vars);
         let h = interpolate(&a, &b, 0.5);
         let g = h.xforms[0].coefs;
@@ -425,12 +227,19 @@ mod tests {
         let h = interpolate(&a, &b, 0.5);
         assert_eq!(h.xforms.len(), 3);
         assert!((h.xforms[2].weight - 0.125).abs() < 1e-15);
-        assert_eq!(h.xforms[2].coefs, Affine::IDENTITY);
+        // The identity survives the polar blend up to rounding (cos 90° is 6e-17).
+        let g = h.xforms[2].coefs.to_coefs();
+        assert!(
+            g.iter()
+                .zip(Affine::IDENTITY.to_coefs())
+                .all(|(p, q)| (p - q).abs() < 1e-15)
+        );
         let mut c = tri_flame();
         c.center = [1.0, 2.0];
         let seq = interpolation_frames(&[a.clone(), b.clone(), c.clone()], 5);
         assert_eq!(seq.len(), 5);
-        assert_eq!(seq[0].xforms[..2], a.xforms[..]);
+        assert_eq!(seq[0].xforms[0].weight, a.xforms[0].weight);
+        assert_eq!(seq[0].xforms[1].vars, a.xforms[1].vars);
         assert_eq!(
             seq[0].xforms[2].weight, 0.0,
             "b's extra xform is absent at the start"
@@ -441,9 +250,11 @@ mod tests {
 
     #[test]
     fn palettes_blend_through_hsv() {
-        let red = Gradient::from_rgb("r", &[[1.0, 0.0, 0.0]; 256]);
-        let green = Gradient::from_rgb("g", &[[0.0, 1.0, 0.0]; 256]);
-        let mid = lerp_palette(&red, &green, 0.5);
+        let mut red = tri_flame();
+        red.palette = Gradient::from_rgb("r", &[[1.0, 0.0, 0.0]; 256]);
+        let mut green = tri_flame();
+        green.palette = Gradient::from_rgb("g", &[[0.0, 1.0, 0.0]; 256]);
+        let mid = interpolate(&red, &green, 0.5).palette;
         // Hue halfway between red (0) and green (2) is yellow (1), fully saturated.
         let c = mid.colors[10];
         assert!((c[0] - 1.0).abs() < 1e-12 && (c[1] - 1.0).abs() < 1e-12 && c[2].abs() < 1e-12);

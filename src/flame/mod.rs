@@ -12,10 +12,12 @@ pub mod framing;
 pub mod geometry;
 pub mod histogram;
 pub mod ifs3d;
+pub mod interpolate;
 pub mod model;
 pub mod mutate;
 pub mod random;
 pub mod render;
+pub mod sequence;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
 pub mod state;

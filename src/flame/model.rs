@@ -1,6 +1,7 @@
 //! The flame / IFS data model.
 
 pub use crate::flame::affine::Affine;
+use crate::flame::sequence::{Animation, MotionFunction};
 use crate::flame::variations::{self, Form, VarId};
 use crate::gradient::Gradient;
 
@@ -73,6 +74,11 @@ pub struct Xform {
     pub vars: Vec<Var>,
     /// Xaos multipliers towards xforms 0, 1, …; missing entries are 1.
     pub chaos: Vec<f64>,
+    /// Whether the xform turns when a loop rotates the flame (flam3's `animate`; 0: it stays,
+    /// as symmetry xforms do).
+    pub animate: f64,
+    /// flam3's `<motion>` elements: periodic changes over a loop.
+    pub motion: Vec<Motion>,
     /// Attributes this version of ugnis does not interpret, kept in file order for round trip
     /// (this includes variations that are known to flam3 but not implemented here).
     pub extra_attrs: Vec<(String, String)>,
@@ -92,8 +98,44 @@ impl Default for Xform {
             direct_color: 1.0,
             vars: vec![Var::new(variations::LINEAR, 1.0)],
             chaos: Vec::new(),
+            animate: 1.0,
+            motion: Vec::new(),
             extra_attrs: Vec::new(),
             extra_children: Vec::new(),
+        }
+    }
+}
+
+/// An xform's `<motion>` element: over a loop (blend 0 → 1) the xform's values move by
+/// `delta · function(frequency · blend)`. Every number of `delta` is an amount of change (zero
+/// where the element names nothing); its variations carry the changes of the xform's
+/// variation weights and parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Motion {
+    /// Whole periods per loop (`motion_frequency`).
+    pub frequency: i32,
+    pub function: MotionFunction,
+    pub delta: Xform,
+}
+
+impl Motion {
+    /// A motion element that changes nothing yet.
+    pub fn new(frequency: i32, function: MotionFunction) -> Motion {
+        Motion {
+            frequency,
+            function,
+            delta: Xform {
+                weight: 0.0,
+                color: 0.0,
+                color_speed: 0.0,
+                opacity: 0.0,
+                coefs: Affine::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+                post: Affine::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+                direct_color: 0.0,
+                vars: Vec::new(),
+                animate: 0.0,
+                ..Xform::default()
+            },
         }
     }
 }
@@ -468,6 +510,8 @@ pub struct Flame {
     pub palette_hires: Option<Vec<[f64; 4]>>,
     /// Colour curves applied to the final picture (Fractorium's; identity by default).
     pub curves: crate::flame::curves::Curves,
+    /// The control point's time and how it animates (flam3's sequence settings).
+    pub anim: Animation,
     pub xforms: Vec<Xform>,
     pub final_xform: Option<Xform>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
@@ -520,6 +564,7 @@ impl Default for Flame {
             palette: Gradient::default(),
             palette_hires: None,
             curves: crate::flame::curves::Curves::default(),
+            anim: Animation::default(),
             xforms: Vec::new(),
             final_xform: None,
             solo_xform: None,
