@@ -2,6 +2,7 @@
 //! output are in tests/animation.rs).
 
 use super::*;
+use crate::flame::loops::{loop_frame, rotate, sequence};
 use crate::flame::model::Motion;
 use crate::flame::sequence::MotionFunction;
 

@@ -3,6 +3,7 @@
 
 pub mod affine;
 pub mod animate;
+pub mod animated;
 pub mod chaos;
 pub mod curves;
 pub mod density;
@@ -13,6 +14,8 @@ pub mod geometry;
 pub mod histogram;
 pub mod ifs3d;
 pub mod interpolate;
+pub mod keyframes;
+pub mod loops;
 pub mod model;
 pub mod mutate;
 pub mod random;

@@ -1,6 +1,7 @@
 //! The flame / IFS data model.
 
 pub use crate::flame::affine::Affine;
+use crate::flame::keyframes::Keyframes;
 use crate::flame::sequence::{Animation, MotionFunction};
 use crate::flame::variations::{self, Form, VarId};
 use crate::gradient::Gradient;
@@ -512,6 +513,8 @@ pub struct Flame {
     pub curves: crate::flame::curves::Curves,
     /// The control point's time and how it animates (flam3's sequence settings).
     pub anim: Animation,
+    /// ugnis' own keyframe animation of this flame's settings.
+    pub keys: Keyframes,
     pub xforms: Vec<Xform>,
     pub final_xform: Option<Xform>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
@@ -565,6 +568,7 @@ impl Default for Flame {
             palette_hires: None,
             curves: crate::flame::curves::Curves::default(),
             anim: Animation::default(),
+            keys: Keyframes::default(),
             xforms: Vec::new(),
             final_xform: None,
             solo_xform: None,
