@@ -150,6 +150,11 @@ impl AtomicFile {
         })
     }
 
+    /// Where the temporary file is (for a program that writes it by name).
+    pub fn temp_path(&self) -> &Path {
+        self.tmp.path()
+    }
+
     /// The temporary file (clone the handle to give a writer its own).
     pub fn file(&mut self) -> &mut std::fs::File {
         self.tmp.as_file_mut()

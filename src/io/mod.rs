@@ -18,6 +18,7 @@ pub mod render_state;
 pub mod scene;
 pub mod svg;
 pub mod ugr;
+pub mod video;
 pub mod xml;
 
 use std::path::Path;
