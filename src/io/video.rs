@@ -558,7 +558,7 @@ mod tests {
         }
         let e = match failed {
             Some(e) => e,
-            None => v.finish().err().expect("ffmpeg exited with 3"),
+            None => v.finish().expect_err("ffmpeg exited with 3"),
         };
         assert!(e.to_string().contains("ffmpeg failed"), "{e}");
         assert!(!p.exists());
