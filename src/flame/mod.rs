@@ -17,6 +17,7 @@ pub mod interpolate;
 pub mod keyframes;
 pub mod loops;
 pub mod model;
+pub mod motion_blur;
 pub mod mutate;
 pub mod random;
 pub mod render;

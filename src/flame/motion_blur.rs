@@ -1,0 +1,162 @@
+//! The sub-frames of a motion-blurred frame, as flam3-animate renders a sequence: frame t is
+//! drawn from `temporal_samples` flames at the times t + δᵢ spread over the exposure
+//! (`temporal_filter_width`), each flame's colours weighted by the temporal filter, the frame's
+//! samples shared among them (so a blurred frame costs what a still costs). The picture is
+//! developed with the settings flam3 uses: brightness, contrast and the log scale of the last
+//! sub-frame (the scale divided by the filter's mean weight), gamma, vibrancy and background
+//! averaged over the sub-frames, density estimation of the first, highlight power of the frame
+//! and the spatial filter of the sequence's first flame.
+
+use crate::flame::interpolate::interpolate_at;
+use crate::flame::model::Flame;
+use crate::flame::sequence::TemporalFilter;
+
+/// One sub-frame: the flame at its time, its weight, and its share of the frame's samples.
+#[derive(Clone, Debug)]
+pub struct SubFrame {
+    pub flame: Flame,
+    pub weight: f64,
+    pub samples: u64,
+}
+
+/// A frame to render with motion blur.
+#[derive(Clone, Debug)]
+pub struct MotionFrame {
+    /// The settings the picture is developed with (size, filter, tone, log scale).
+    pub develop: Flame,
+    pub subframes: Vec<SubFrame>,
+    /// The filter's mean weight (flam3's `sumfilt`): the log scale divides the density by it.
+    pub mean_weight: f64,
+}
+
+impl MotionFrame {
+    /// Samples of the whole frame.
+    pub fn total_samples(&self) -> u64 {
+        self.subframes.iter().map(|s| s.samples).sum()
+    }
+
+    /// True when every sub-frame is the same flame (a still: nothing moves).
+    pub fn is_still(&self) -> bool {
+        let first = &self.subframes[0].flame;
+        self.subframes.iter().all(|s| {
+            s.flame.xforms == first.xforms
+                && s.flame.final_xform == first.final_xform
+                && s.flame.palette == first.palette
+                && s.flame.center == first.center
+                && s.flame.scale == first.scale
+                && s.flame.zoom == first.zoom
+                && s.flame.rotate == first.rotate
+                && s.flame.cam == first.cam
+        })
+    }
+}
+
+/// The frame at `time` of a sequence of control points sorted by time (see
+/// [`crate::flame::interpolate::check_times`]), with `temporal_samples` sub-frames as the
+/// flame at that time says (`limit` caps them: a frame needs enough samples per sub-frame).
+pub fn frame_at(cps: &[Flame], time: f64, limit: u32) -> MotionFrame {
+    let frame = interpolate_at(cps, time);
+    let mut anim = frame.anim;
+    anim.temporal_samples = anim.temporal_samples.clamp(1, limit.max(1));
+    let filter = TemporalFilter::of(&anim);
+    let n = filter.deltas.len();
+    let (w, h) = (frame.width, frame.height);
+    let px = w as f64 * h as f64;
+    let mut subframes = Vec::with_capacity(n);
+    for (delta, weight) in filter.deltas.iter().zip(&filter.weights) {
+        let mut f = if n == 1 {
+            frame.clone()
+        } else {
+            interpolate_at(cps, time + delta)
+        };
+        // The bucket grid is the frame's; each sub-frame brings its own camera.
+        f.width = w;
+        f.height = h;
+        f.supersample = frame.supersample;
+        f.filter = cps[0].filter;
+        f.filter_shape = cps[0].filter_shape;
+        let density = f.quality.max(0.0) * 4f64.powf(f.zoom);
+        let samples = (density * px / n as f64).round() as u64;
+        subframes.push(SubFrame {
+            flame: f,
+            weight: *weight,
+            samples,
+        });
+    }
+    let k = subframes.len() as f64;
+    let mean = |get: fn(&Flame) -> f64| subframes.iter().map(|s| get(&s.flame)).sum::<f64>() / k;
+    let mut develop = subframes[subframes.len() - 1].flame.clone();
+    develop.gamma = mean(|f| f.gamma);
+    develop.vibrancy = mean(|f| f.vibrancy);
+    develop.background = [
+        mean(|f| f.background[0]),
+        mean(|f| f.background[1]),
+        mean(|f| f.background[2]),
+    ];
+    let first = &subframes[0].flame;
+    develop.estimator_radius = first.estimator_radius;
+    develop.estimator_minimum = first.estimator_minimum;
+    develop.estimator_curve = first.estimator_curve;
+    develop.highlight_power = frame.highlight_power;
+    develop.anim.time = time;
+    MotionFrame {
+        develop,
+        subframes,
+        mean_weight: filter.mean_weight,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::model::{Affine, Xform};
+    use crate::flame::sequence::TemporalFilterType;
+
+    fn cp(time: f64, center: f64, gamma: f64) -> Flame {
+        let mut f = Flame {
+            width: 40,
+            height: 30,
+            quality: 100.0,
+            center: [center, 0.0],
+            gamma,
+            xforms: vec![Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+                1.0,
+                0.0,
+            )],
+            ..Flame::default()
+        };
+        f.anim.time = time;
+        f.anim.temporal_samples = 5;
+        f
+    }
+
+    #[test]
+    fn sub_frames_span_the_exposure_and_share_the_samples() {
+        let cps = [cp(0.0, 0.0, 2.0), cp(10.0, 10.0, 4.0)];
+        let m = frame_at(&cps, 5.0, 1000);
+        assert_eq!(m.subframes.len(), 5);
+        let centers: Vec<f64> = m.subframes.iter().map(|s| s.flame.center[0]).collect();
+        assert_eq!(centers, vec![4.5, 4.75, 5.0, 5.25, 5.5]);
+        assert_eq!(m.total_samples(), 40 * 30 * 100);
+        assert_eq!(m.mean_weight, 1.0);
+        assert!(!m.is_still());
+        // The develop settings: gamma averaged, the camera of the last sub-frame.
+        assert!((m.develop.gamma - 3.0).abs() < 1e-12);
+        assert_eq!(m.develop.center[0], 5.5);
+        // A cap on sub-frames, and one flame is a still.
+        assert_eq!(frame_at(&cps, 5.0, 2).subframes.len(), 2);
+        assert!(frame_at(&cps[..1], 5.0, 1000).is_still());
+    }
+
+    #[test]
+    fn an_exp_filter_weights_the_late_sub_frames() {
+        let mut a = cp(0.0, 0.0, 2.0);
+        a.anim.temporal_filter_type = TemporalFilterType::Exp;
+        a.anim.temporal_filter_exp = 1.0;
+        let m = frame_at(&[a.clone(), cp(10.0, 10.0, 2.0)], 0.0, 1000);
+        let w: Vec<f64> = m.subframes.iter().map(|s| s.weight).collect();
+        assert_eq!(w, vec![0.2, 0.4, 0.6, 0.8, 1.0]);
+        assert!((m.mean_weight - 0.6).abs() < 1e-12);
+    }
+}
