@@ -15,6 +15,7 @@ pub mod memory;
 pub mod noise;
 pub mod palette;
 pub mod rng;
+pub mod sound;
 pub mod surface;
 pub mod threads;
 
