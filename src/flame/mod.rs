@@ -3,9 +3,11 @@
 
 pub mod affine;
 pub mod animate;
+mod budget;
 pub mod chaos;
 pub mod curves;
 pub mod density;
+mod develop;
 pub mod fastmath;
 pub mod filter;
 pub mod framing;
@@ -14,10 +16,12 @@ pub mod histogram;
 pub mod ifs3d;
 pub mod model;
 pub mod mutate;
+mod plot;
 pub mod random;
 pub mod render;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
+mod settings;
 pub mod state;
 pub mod strips;
 pub mod symmetry;
