@@ -4,7 +4,8 @@
 use super::FUSE;
 use super::batch::Scratch;
 
-/// Number of independent orbits iterated together by [`Chaos::run_lanes`](super::Chaos::run_lanes).
+/// Number of independent orbits iterated together by
+/// [`Chaos::run_lanes`](super::Chaos::run_lanes).
 pub const LANES: usize = 256;
 
 /// The state of [`LANES`] orbits: position, colour coordinate, the xform applied last (xaos
@@ -36,7 +37,8 @@ impl Orbits {
 }
 
 /// The orbits of the lane runner. They live for the whole render of one worker thread (see
-/// [`Chaos::run_lanes`](super::Chaos::run_lanes)). Fixed-size arrays: every index is provably in range.
+/// [`Chaos::run_lanes`](super::Chaos::run_lanes)). Fixed-size arrays: every index is provably
+/// in range.
 ///
 /// Orbits are interchangeable, so they need not keep their places: every step reads one set
 /// of orbits and writes the other, grouped by the xform each orbit drew, so that each xform
