@@ -66,108 +66,15 @@ impl CompiledXform {
         if self.hides {
             g.hide[..n].fill(false);
         }
-        let a = self.coefs;
-        let (s, col) = (self.color_speed, self.color);
-        for cj in c.iter_mut() {
-            *cj = s * col + (1.0 - s) * *cj;
-        }
-        for j in 0..n {
-            let (tx, ty) = a.apply(x[j], y[j]);
-            x[j] = tx;
-            y[j] = ty;
-        }
+        self.blend_and_map(n, x, y, c);
         if let Some(w) = self.linear_only {
-            // Only `linear`: the sum of the variations is w times the point (written as the
-            // general path computes it, 0 + w·v, so both give the same bits).
-            for j in 0..n {
-                x[j] = 0.0 + w * x[j];
-                y[j] = 0.0 + w * y[j];
-                z[j] = 0.0 + w * z[j];
-            }
-            if let Some(post) = &self.post {
-                for j in 0..n {
-                    (x[j], y[j]) = post.apply(x[j], y[j]);
-                }
-            }
+            self.linear_and_post(n, w, x, y, z);
             self.mark_bad(x, y, z, &mut g.bad[..n], rng);
             return;
         }
-        if !self.pre_vars.is_empty() {
-            for j in 0..n {
-                let mut acc = Acc {
-                    color: c[j],
-                    ..Acc::default()
-                };
-                let mut tr = [x[j], y[j], z[j]];
-                for v in &self.pre_vars {
-                    v.apply_pre(&mut tr, &mut acc, c[j], rng);
-                }
-                (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
-                g.pc[j] = acc.color;
-                g.hide[j] |= acc.hide;
-            }
-        } else {
-            g.pc[..n].copy_from_slice(c);
-        }
+        self.pre_forms(n, x, y, z, c, g, rng);
         if !self.vars.is_empty() {
-            let needs = self.needs;
-            let (xs, ys) = (&*x, &*y);
-            let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
-            if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
-                for j in 0..n {
-                    sumsq[j] = xs[j] * xs[j] + ys[j] * ys[j];
-                    sqrt[j] = sumsq[j].sqrt();
-                }
-            }
-            if needs & need::ATAN_XY != 0 {
-                let at = &mut g.atan_xy[..n];
-                for j in 0..n {
-                    at[j] = fastmath::atan2(xs[j], ys[j]);
-                }
-            }
-            if needs & need::ATAN_YX != 0 {
-                let at = &mut g.atan_yx[..n];
-                for j in 0..n {
-                    at[j] = fastmath::atan2(ys[j], xs[j]);
-                }
-            }
-            if needs & need::ANGLES != 0 {
-                let (ux, uy) = (&mut g.ux[..n], &mut g.uy[..n]);
-                for j in 0..n {
-                    let r = if sqrt[j] == 0.0 {
-                        f64::EPSILON
-                    } else {
-                        sqrt[j]
-                    };
-                    ux[j] = xs[j] / r;
-                    uy[j] = ys[j] / r;
-                }
-            }
-            let soa = SoaIn {
-                x: xs,
-                y: ys,
-                z: &*z,
-                sumsq,
-                sqrt,
-                ux: &g.ux[..n],
-                uy: &g.uy[..n],
-                atan_xy: &g.atan_xy[..n],
-                atan_yx: &g.atan_yx[..n],
-                color: &*c,
-            };
-            g.px[..n].fill(0.0);
-            g.py[..n].fill(0.0);
-            g.pz[..n].fill(0.0);
-            let mut acc = SoaAcc {
-                x: &mut g.px[..n],
-                y: &mut g.py[..n],
-                z: &mut g.pz[..n],
-                color: &mut g.pc[..n],
-                hide: &mut g.hide[..n],
-            };
-            for v in &self.vars {
-                v.apply_batch(&soa, &mut acc, rng);
-            }
+            self.regular_forms(n, x, y, z, c, g, rng);
         } else if !self.pre_vars.is_empty() {
             g.px[..n].copy_from_slice(x);
             g.py[..n].copy_from_slice(y);
@@ -177,22 +84,193 @@ impl CompiledXform {
             g.py[..n].fill(0.0);
             g.pz[..n].fill(0.0);
         }
-        if !self.post_vars.is_empty() {
-            for (j, &cj) in c.iter().enumerate() {
-                let mut acc = Acc {
-                    x: g.px[j],
-                    y: g.py[j],
-                    z: g.pz[j],
-                    color: g.pc[j],
-                    hide: false,
-                };
-                for v in &self.post_vars {
-                    v.apply_post(&mut acc, cj, rng);
-                }
-                (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
-                g.hide[j] |= acc.hide;
+        self.post_forms(n, c, g, rng);
+        self.finish_group(n, x, y, z, c, g, rng);
+    }
+
+    /// Blend the colours towards the xform's colour and apply the affine map to the first `n`
+    /// points.
+    #[inline(always)]
+    fn blend_and_map(&self, n: usize, x: &mut [f64], y: &mut [f64], c: &mut [f64]) {
+        let a = self.coefs;
+        let (s, col) = (self.color_speed, self.color);
+        for cj in c[..n].iter_mut() {
+            *cj = s * col + (1.0 - s) * *cj;
+        }
+        for j in 0..n {
+            let (tx, ty) = a.apply(x[j], y[j]);
+            x[j] = tx;
+            y[j] = ty;
+        }
+    }
+
+    /// Only `linear`, of weight `w`: the sum of the variations is w times the point (written
+    /// as the general path computes it, 0 + w·v, so both give the same bits), then the
+    /// post-affine map.
+    #[inline(always)]
+    fn linear_and_post(&self, n: usize, w: f64, x: &mut [f64], y: &mut [f64], z: &mut [f64]) {
+        for j in 0..n {
+            x[j] = 0.0 + w * x[j];
+            y[j] = 0.0 + w * y[j];
+            z[j] = 0.0 + w * z[j];
+        }
+        if let Some(post) = &self.post {
+            for j in 0..n {
+                (x[j], y[j]) = post.apply(x[j], y[j]);
             }
         }
+    }
+
+    /// The `pre_` forms, point by point: each replaces (or moves) the point; the colour they
+    /// set goes to `g.pc` (the blended colour when there are none).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn pre_forms(
+        &self,
+        n: usize,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        c: &[f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        if self.pre_vars.is_empty() {
+            g.pc[..n].copy_from_slice(&c[..n]);
+            return;
+        }
+        for j in 0..n {
+            let mut acc = Acc {
+                color: c[j],
+                ..Acc::default()
+            };
+            let mut tr = [x[j], y[j], z[j]];
+            for v in &self.pre_vars {
+                v.apply_pre(&mut tr, &mut acc, c[j], rng);
+            }
+            (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
+            g.pc[j] = acc.color;
+            g.hide[j] |= acc.hide;
+        }
+    }
+
+    /// The quantities of the first `n` points that the regular variations read (the
+    /// [`need`] bits of the xform): r², r, the two atan2 orders, the unit vector.
+    #[inline(always)]
+    fn derived(&self, n: usize, xs: &[f64], ys: &[f64], g: &mut Scratch) {
+        let needs = self.needs;
+        let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
+        if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
+            for j in 0..n {
+                sumsq[j] = xs[j] * xs[j] + ys[j] * ys[j];
+                sqrt[j] = sumsq[j].sqrt();
+            }
+        }
+        if needs & need::ATAN_XY != 0 {
+            let at = &mut g.atan_xy[..n];
+            for j in 0..n {
+                at[j] = fastmath::atan2(xs[j], ys[j]);
+            }
+        }
+        if needs & need::ATAN_YX != 0 {
+            let at = &mut g.atan_yx[..n];
+            for j in 0..n {
+                at[j] = fastmath::atan2(ys[j], xs[j]);
+            }
+        }
+        if needs & need::ANGLES != 0 {
+            let (ux, uy) = (&mut g.ux[..n], &mut g.uy[..n]);
+            for j in 0..n {
+                let r = if sqrt[j] == 0.0 {
+                    f64::EPSILON
+                } else {
+                    sqrt[j]
+                };
+                ux[j] = xs[j] / r;
+                uy[j] = ys[j] / r;
+            }
+        }
+    }
+
+    /// Every regular variation over the whole group, their outputs summed into `g.px`,
+    /// `g.py`, `g.pz` (and their colours into `g.pc`).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn regular_forms(
+        &self,
+        n: usize,
+        x: &[f64],
+        y: &[f64],
+        z: &[f64],
+        c: &[f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        let (xs, ys) = (&x[..n], &y[..n]);
+        self.derived(n, xs, ys, g);
+        let soa = SoaIn {
+            x: xs,
+            y: ys,
+            z: &z[..n],
+            sumsq: &g.sumsq[..n],
+            sqrt: &g.sqrt[..n],
+            ux: &g.ux[..n],
+            uy: &g.uy[..n],
+            atan_xy: &g.atan_xy[..n],
+            atan_yx: &g.atan_yx[..n],
+            color: &c[..n],
+        };
+        g.px[..n].fill(0.0);
+        g.py[..n].fill(0.0);
+        g.pz[..n].fill(0.0);
+        let mut acc = SoaAcc {
+            x: &mut g.px[..n],
+            y: &mut g.py[..n],
+            z: &mut g.pz[..n],
+            color: &mut g.pc[..n],
+            hide: &mut g.hide[..n],
+        };
+        for v in &self.vars {
+            v.apply_batch(&soa, &mut acc, rng);
+        }
+    }
+
+    /// The `post_` forms, point by point, on the summed points in `g`.
+    #[inline(always)]
+    fn post_forms(&self, n: usize, c: &[f64], g: &mut Scratch, rng: &mut FastRng) {
+        if self.post_vars.is_empty() {
+            return;
+        }
+        for (j, &cj) in c[..n].iter().enumerate() {
+            let mut acc = Acc {
+                x: g.px[j],
+                y: g.py[j],
+                z: g.pz[j],
+                color: g.pc[j],
+                hide: false,
+            };
+            for v in &self.post_vars {
+                v.apply_post(&mut acc, cj, rng);
+            }
+            (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
+            g.hide[j] |= acc.hide;
+        }
+    }
+
+    /// The post-affine map and the direct colour, then the points of `g` back into `x, y,
+    /// z` and their bad values flagged.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn finish_group(
+        &self,
+        n: usize,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        c: &mut [f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
         let (px, py) = (&mut g.px[..n], &mut g.py[..n]);
         if let Some(post) = &self.post {
             for j in 0..n {
@@ -207,10 +285,10 @@ impl CompiledXform {
                 c[j] = if v.is_nan() { 0.0 } else { v };
             }
         }
-        x.copy_from_slice(px);
-        y.copy_from_slice(py);
-        z.copy_from_slice(&g.pz[..n]);
-        self.mark_bad(x, y, z, &mut g.bad[..n], rng);
+        x[..n].copy_from_slice(px);
+        y[..n].copy_from_slice(py);
+        z[..n].copy_from_slice(&g.pz[..n]);
+        self.mark_bad(&mut x[..n], &mut y[..n], &mut z[..n], &mut g.bad[..n], rng);
     }
 
     /// Flag the bad points of a group and restart them at a random point of the plane (a NaN

@@ -4,10 +4,23 @@
 //! each xform to its group as one array computation. Then bad values are retried, fused orbits
 //! counted, and the samples go through the final xform and the camera to the plot callback.
 
-use super::lanes::{LANES, Lanes};
+use super::lanes::{LANES, Lanes, Orbits};
 use super::xform::within;
-use super::{CHOOSE_GRAIN, Chaos};
+use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform};
 use crate::flame::rng::FastRng;
+
+/// Mask of a lane index: indices masked by it are provably in range.
+const M: usize = LANES - 1;
+/// Mask of a 14-bit table index: four 16-bit draws per random word, 14 bits used (flam3's
+/// table grain).
+const G: usize = CHOOSE_GRAIN - 1;
+
+/// The two sets of orbits as (`sets[first]`, the other one).
+#[inline(always)]
+fn split_sets(sets: &mut [Orbits; 2], first: usize) -> (&mut Orbits, &mut Orbits) {
+    let [s0, s1] = sets;
+    if first & 1 == 0 { (s0, s1) } else { (s1, s0) }
+}
 
 impl Chaos {
     /// Iterate until `n` more samples are plotted, with [`LANES`] orbits advanced together:
@@ -31,6 +44,51 @@ impl Chaos {
         mut plot: F,
     ) -> u64 {
         let nx = self.xforms.len();
+        self.start_orbits(ln, rng);
+        ln.counts.resize(4 * (nx + 1), 0);
+        ln.bounds.resize(nx + 1, 0);
+        let mut plotted = 0u64;
+        let mut bad = 0u64;
+        let direct = self.final_xform.is_none() && self.projection.is_none();
+        while plotted < n {
+            match (&self.affine, ln.clean) {
+                (Some(rows), true) => self.step_in_place(rows, ln, rng),
+                _ => self.step_grouped(ln, rng),
+            }
+            // The common step: no bad value, every orbit a sample.
+            if ln.clean && direct && !ln.bad.iter().any(|&b| b) && plotted + LANES as u64 <= n {
+                self.all_samples(ln);
+                plotted += LANES as u64;
+                let o = &ln.sets[ln.cur & 1];
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis);
+                continue;
+            }
+            let (nf, took, bad_values) = self.samples_of_step(ln, n - plotted, direct);
+            plotted += took;
+            bad += bad_values;
+            if direct {
+                let o = &ln.sets[ln.cur & 1];
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis);
+                continue;
+            }
+            let m = nf.min(LANES);
+            self.finish_samples(ln, m, rng);
+            let fin = &ln.fin;
+            plot(
+                &fin.x[..m],
+                &fin.y[..m],
+                &fin.z[..m],
+                &fin.c[..m],
+                &ln.fin_vis[..m],
+            );
+        }
+        bad
+    }
+
+    /// Start every orbit at a random point on the first call; on later calls restart one
+    /// orbit, chosen at random, fused.
+    #[inline(always)]
+    fn start_orbits(&self, ln: &mut Lanes, rng: &mut FastRng) {
         if !ln.started {
             let o = &mut ln.sets[ln.cur & 1];
             for l in 0..LANES {
@@ -50,299 +108,331 @@ impl Chaos {
             (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
             (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
         }
-        ln.counts.resize(4 * (nx + 1), 0);
-        ln.bounds.resize(nx + 1, 0);
-        let mut plotted = 0u64;
-        let mut bad = 0u64;
-        const M: usize = LANES - 1;
-        let direct = self.final_xform.is_none() && self.projection.is_none();
-        while plotted < n {
-            let [s0, s1] = &mut ln.sets;
-            let (src, dst) = if ln.cur & 1 == 0 { (s0, s1) } else { (s1, s0) };
-            // Draw every orbit's xform; group the orbits by xform (counting sort).
-            // Four interleaved streams of counters and positions avoid store-to-load chains on
-            // a single counter.
-            let w = nx + 1;
-            // Four 16-bit draws per random word (14 bits are used, as flam3's table grain).
-            const G: usize = CHOOSE_GRAIN - 1;
-            if let (Some(rows), true) = (&self.affine, ln.clean) {
-                // Affine IFS past the fuse: every orbit steps in place by its drawn row.
-                let table = &self.tables[..CHOOSE_GRAIN];
-                for q in 0..LANES / 4 {
-                    let mut u = rng.u64();
-                    for r in 0..4 {
-                        ln.choice[4 * q + r] = table[u as usize & G];
-                        u >>= 16;
-                    }
-                }
-                let mut any_bad = false;
-                for l in 0..LANES {
-                    let i = ln.choice[l];
-                    let t = &rows[i as usize];
-                    let (x, y) = (src.x[l], src.y[l]);
-                    let (tx, ty) = (t.a * x + t.b * y + t.e, t.c * x + t.d * y + t.f);
-                    let (x, y) = (0.0 + t.w * tx, 0.0 + t.w * ty);
-                    dst.x[l] = x;
-                    dst.y[l] = y;
-                    dst.z[l] = 0.0 + t.w * src.z[l];
-                    dst.c[l] = t.sc + t.keep * src.c[l];
-                    let b = !within(x, t.bad_limit) | !within(y, t.bad_limit);
-                    ln.bad[l] = b;
-                    any_bad |= b;
-                    ln.group[l] = i;
-                }
-                if any_bad {
-                    for l in 0..LANES {
-                        if ln.bad[l] {
-                            dst.x[l] = rng.f11();
-                            dst.y[l] = rng.f11();
-                            dst.z[l] = 0.0;
-                        }
-                    }
-                }
-                ln.cur ^= 1;
-            } else {
-                ln.counts.fill(0);
-                if self.xaos {
-                    for q in 0..LANES / 4 {
-                        let mut u = rng.u64();
-                        for r in 0..4 {
-                            let l = 4 * q + r;
-                            let prev = src.last[l];
-                            let row = if prev == u16::MAX {
-                                0
-                            } else {
-                                prev as usize + 1
-                            };
-                            let i = self.tables[row * CHOOSE_GRAIN + (u as usize & G)] as usize;
-                            u >>= 16;
-                            ln.choice[l] = i as u16;
-                            ln.counts[r * w + i] += 1;
-                        }
-                    }
-                } else {
-                    let table = &self.tables[..CHOOSE_GRAIN];
-                    for q in 0..LANES / 4 {
-                        let mut u = rng.u64();
-                        for r in 0..4 {
-                            let i = table[u as usize & G] as usize;
-                            u >>= 16;
-                            ln.choice[4 * q + r] = i as u16;
-                            ln.counts[r * w + i] += 1;
-                        }
-                    }
-                }
-                // bounds[i]: start of group i; positions of stream s inside group i follow.
-                let mut acc = 0usize;
-                for i in 0..nx {
-                    ln.bounds[i] = acc;
-                    for st in 0..4 {
-                        let c = ln.counts[st * w + i];
-                        ln.counts[st * w + i] = acc;
-                        acc += c;
-                    }
-                }
-                ln.bounds[nx] = acc;
-                for l in 0..LANES {
-                    let k = (l & 3) * w + ln.choice[l] as usize;
-                    ln.order[ln.counts[k] & M] = l as u16;
-                    ln.counts[k] += 1;
-                }
-                // Gather the orbits into `dst` in group order.
-                for (p, &l) in ln.order.iter().enumerate() {
-                    let l = l as usize & M;
-                    dst.x[p] = src.x[l];
-                    dst.y[p] = src.y[l];
-                    dst.z[p] = src.z[l];
-                    dst.c[p] = src.c[l];
-                }
-                if self.xaos {
-                    for (p, &l) in ln.order.iter().enumerate() {
-                        dst.last[p] = src.last[l as usize & M];
-                    }
-                }
-                if !ln.clean {
-                    for (p, &l) in ln.order.iter().enumerate() {
-                        let l = l as usize & M;
-                        dst.consec[p] = src.consec[l];
-                        dst.step[p] = src.step[l];
-                        dst.last[p] = src.last[l];
-                    }
-                }
-                ln.cur ^= 1;
-                for i in 0..nx {
-                    let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
-                    if end > start {
-                        let r = start..end;
-                        self.xforms[i].apply_soa(
-                            &mut dst.x[r.clone()],
-                            &mut dst.y[r.clone()],
-                            &mut dst.z[r.clone()],
-                            &mut dst.c[r.clone()],
-                            &mut ln.g,
-                            rng,
-                        );
-                        ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
-                        if self.hides {
-                            if self.xforms[i].hides {
-                                ln.hide[r.clone()].copy_from_slice(&ln.g.hide[..end - start]);
-                            } else {
-                                ln.hide[r.clone()].fill(false);
-                            }
-                        }
-                        ln.group[r].fill(i as u16);
-                    }
+    }
+
+    /// One step of an affine IFS past the fuse: every orbit steps in place by its drawn row
+    /// into the other set, which becomes the current one.
+    #[inline(always)]
+    fn step_in_place(&self, rows: &[AffineStep], ln: &mut Lanes, rng: &mut FastRng) {
+        let (src, dst) = split_sets(&mut ln.sets, ln.cur);
+        let table = &self.tables[..CHOOSE_GRAIN];
+        for q in 0..LANES / 4 {
+            let mut u = rng.u64();
+            for r in 0..4 {
+                ln.choice[4 * q + r] = table[u as usize & G];
+                u >>= 16;
+            }
+        }
+        let mut any_bad = false;
+        for l in 0..LANES {
+            let i = ln.choice[l];
+            let t = &rows[i as usize];
+            let (x, y) = (src.x[l], src.y[l]);
+            let (tx, ty) = (t.a * x + t.b * y + t.e, t.c * x + t.d * y + t.f);
+            let (x, y) = (0.0 + t.w * tx, 0.0 + t.w * ty);
+            dst.x[l] = x;
+            dst.y[l] = y;
+            dst.z[l] = 0.0 + t.w * src.z[l];
+            dst.c[l] = t.sc + t.keep * src.c[l];
+            let b = !within(x, t.bad_limit) | !within(y, t.bad_limit);
+            ln.bad[l] = b;
+            any_bad |= b;
+            ln.group[l] = i;
+        }
+        if any_bad {
+            for l in 0..LANES {
+                if ln.bad[l] {
+                    dst.x[l] = rng.f11();
+                    dst.y[l] = rng.f11();
+                    dst.z[l] = 0.0;
                 }
             }
-            // The common step: no bad value, every orbit a sample.
-            if ln.clean && direct && !ln.bad.iter().any(|&b| b) && plotted + LANES as u64 <= n {
-                dst.last = ln.group;
-                match self.same_vis {
-                    Some(v) => ln.vis = [v; LANES],
-                    None => {
-                        for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
-                            *v = self.vis.get(g as usize).copied().unwrap_or(0.0);
-                        }
+        }
+        ln.cur ^= 1;
+    }
+
+    /// One step of any other flame: draw each orbit's xform, gather the orbits into the other
+    /// set grouped by xform (which becomes the current one), and apply each xform to its group.
+    #[inline(always)]
+    fn step_grouped(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        self.draw_xforms(ln, rng);
+        self.order_by_xform(ln);
+        self.gather(ln);
+        self.apply_groups(ln, rng);
+    }
+
+    /// Draw every orbit's xform into `ln.choice` (from its xaos row, if any) and count the
+    /// draws of each xform in `ln.counts`. Four interleaved streams of counters and positions
+    /// avoid store-to-load chains on a single counter.
+    #[inline(always)]
+    fn draw_xforms(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        let w = self.xforms.len() + 1;
+        ln.counts.fill(0);
+        if self.xaos {
+            let src = &ln.sets[ln.cur & 1];
+            for q in 0..LANES / 4 {
+                let mut u = rng.u64();
+                for r in 0..4 {
+                    let l = 4 * q + r;
+                    let prev = src.last[l];
+                    let row = if prev == u16::MAX {
+                        0
+                    } else {
+                        prev as usize + 1
+                    };
+                    let i = self.tables[row * CHOOSE_GRAIN + (u as usize & G)] as usize;
+                    u >>= 16;
+                    ln.choice[l] = i as u16;
+                    ln.counts[r * w + i] += 1;
+                }
+            }
+        } else {
+            let table = &self.tables[..CHOOSE_GRAIN];
+            for q in 0..LANES / 4 {
+                let mut u = rng.u64();
+                for r in 0..4 {
+                    let i = table[u as usize & G] as usize;
+                    u >>= 16;
+                    ln.choice[4 * q + r] = i as u16;
+                    ln.counts[r * w + i] += 1;
+                }
+            }
+        }
+    }
+
+    /// A counting sort of the orbits by drawn xform: `ln.bounds[i]` is where group i starts,
+    /// `ln.order` lists the orbits group by group.
+    #[inline(always)]
+    fn order_by_xform(&self, ln: &mut Lanes) {
+        let nx = self.xforms.len();
+        let w = nx + 1;
+        // bounds[i]: start of group i; positions of stream s inside group i follow.
+        let mut acc = 0usize;
+        for i in 0..nx {
+            ln.bounds[i] = acc;
+            for st in 0..4 {
+                let c = ln.counts[st * w + i];
+                ln.counts[st * w + i] = acc;
+                acc += c;
+            }
+        }
+        ln.bounds[nx] = acc;
+        for l in 0..LANES {
+            let k = (l & 3) * w + ln.choice[l] as usize;
+            ln.order[ln.counts[k] & M] = l as u16;
+            ln.counts[k] += 1;
+        }
+    }
+
+    /// Gather the orbits into the other set in group order; it becomes the current one.
+    #[inline(always)]
+    fn gather(&self, ln: &mut Lanes) {
+        let (src, dst) = split_sets(&mut ln.sets, ln.cur);
+        for (p, &l) in ln.order.iter().enumerate() {
+            let l = l as usize & M;
+            dst.x[p] = src.x[l];
+            dst.y[p] = src.y[l];
+            dst.z[p] = src.z[l];
+            dst.c[p] = src.c[l];
+        }
+        if self.xaos {
+            for (p, &l) in ln.order.iter().enumerate() {
+                dst.last[p] = src.last[l as usize & M];
+            }
+        }
+        if !ln.clean {
+            for (p, &l) in ln.order.iter().enumerate() {
+                let l = l as usize & M;
+                dst.consec[p] = src.consec[l];
+                dst.step[p] = src.step[l];
+                dst.last[p] = src.last[l];
+            }
+        }
+        ln.cur ^= 1;
+    }
+
+    /// Apply each xform to its group of the current set, noting bad values, hidden points and
+    /// the xform of each place.
+    #[inline(always)]
+    fn apply_groups(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        let dst = &mut ln.sets[ln.cur & 1];
+        for i in 0..self.xforms.len() {
+            let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
+            if end > start {
+                let r = start..end;
+                self.xforms[i].apply_soa(
+                    &mut dst.x[r.clone()],
+                    &mut dst.y[r.clone()],
+                    &mut dst.z[r.clone()],
+                    &mut dst.c[r.clone()],
+                    &mut ln.g,
+                    rng,
+                );
+                ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
+                if self.hides {
+                    if self.xforms[i].hides {
+                        ln.hide[r.clone()].copy_from_slice(&ln.g.hide[..end - start]);
+                    } else {
+                        ln.hide[r.clone()].fill(false);
                     }
                 }
-                if self.hides {
-                    // A hidden sample counts, and adds nothing.
-                    for (v, &h) in ln.vis.iter_mut().zip(&ln.hide) {
+                ln.group[r].fill(i as u16);
+            }
+        }
+    }
+
+    /// A step where every orbit is a sample: note the xforms applied and the visibilities.
+    #[inline(always)]
+    fn all_samples(&self, ln: &mut Lanes) {
+        ln.sets[ln.cur & 1].last = ln.group;
+        match self.same_vis {
+            Some(v) => ln.vis = [v; LANES],
+            None => {
+                for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
+                    *v = self.vis.get(g as usize).copied().unwrap_or(0.0);
+                }
+            }
+        }
+        if self.hides {
+            // A hidden sample counts, and adds nothing.
+            for (v, &h) in ln.vis.iter_mut().zip(&ln.hide) {
+                if h {
+                    *v = 0.0;
+                }
+            }
+        }
+    }
+
+    /// Bad-value retries, step counting, and which points of the step are samples (at most
+    /// `left`). With `direct` the samples get their visibility in `ln.vis` (−1: not a sample);
+    /// otherwise they are copied to `ln.fin` for the final xform and the camera. Returns how
+    /// many were copied, how many samples the step gave and how many bad values it met.
+    #[inline(always)]
+    fn samples_of_step(&self, ln: &mut Lanes, left: u64, direct: bool) -> (usize, u64, u64) {
+        let (dst, src) = split_sets(&mut ln.sets, ln.cur);
+        let (mut nf, mut took, mut bad) = (0usize, 0u64, 0u64);
+        for p in 0..LANES {
+            ln.vis[p] = -1.0;
+            if ln.bad[p] {
+                dst.consec[p] += 1;
+                bad += 1;
+                if dst.consec[p] < 5 {
+                    continue;
+                }
+            }
+            dst.consec[p] = 0;
+            let ch = ln.group[p];
+            dst.last[p] = ch;
+            if dst.step[p] >= 0 {
+                if took < left {
+                    let v = if self.hides && ln.hide[p] {
+                        0.0
+                    } else {
+                        self.xforms[ch as usize].vis
+                    };
+                    took += 1;
+                    if direct {
+                        ln.vis[p] = v;
+                    } else {
+                        let k = nf & M;
+                        ln.fin.x[k] = dst.x[p];
+                        ln.fin.y[k] = dst.y[p];
+                        ln.fin.z[k] = dst.z[p];
+                        ln.fin.c[k] = dst.c[p];
+                        ln.fin_vis[k] = v;
+                        nf += 1;
+                    }
+                }
+            } else {
+                dst.step[p] += 1;
+            }
+        }
+        if !ln.clean && dst.consec.iter().all(|&c| c == 0) && dst.step.iter().all(|&s| s >= 0) {
+            // From now on the counters are not gathered: both sets must read as clean.
+            ln.clean = true;
+            src.consec = [0; LANES];
+            src.step = [0; LANES];
+        } else if ln.clean && dst.consec.iter().any(|&c| c != 0) {
+            ln.clean = false;
+        }
+        (nf, took, bad)
+    }
+
+    /// The first `m` samples of `ln.fin` through the final xform (hidden ones get visibility
+    /// 0) and the camera.
+    #[inline(always)]
+    fn finish_samples(&self, ln: &mut Lanes, m: usize, rng: &mut FastRng) {
+        if let Some(f) = &self.final_xform {
+            if f.opacity >= 1.0 {
+                let fin = &mut ln.fin;
+                f.apply_soa(
+                    &mut fin.x[..m],
+                    &mut fin.y[..m],
+                    &mut fin.z[..m],
+                    &mut fin.c[..m],
+                    &mut ln.g,
+                    rng,
+                );
+                if f.hides {
+                    for (v, &h) in ln.fin_vis[..m].iter_mut().zip(&ln.g.hide[..m]) {
                         if h {
                             *v = 0.0;
                         }
                     }
                 }
-                plotted += LANES as u64;
-                plot(&dst.x, &dst.y, &dst.z, &dst.c, &ln.vis);
-                continue;
+            } else {
+                Self::final_by_opacity(f, ln, m, rng);
             }
-            // Bad-value retries, step counting, and which points are samples.
-            let mut nf = 0usize;
-            for p in 0..LANES {
-                ln.vis[p] = -1.0;
-                if ln.bad[p] {
-                    dst.consec[p] += 1;
-                    bad += 1;
-                    if dst.consec[p] < 5 {
-                        continue;
-                    }
-                }
-                dst.consec[p] = 0;
-                let ch = ln.group[p];
-                dst.last[p] = ch;
-                if dst.step[p] >= 0 {
-                    if plotted < n {
-                        let v = if self.hides && ln.hide[p] {
-                            0.0
-                        } else {
-                            self.xforms[ch as usize].vis
-                        };
-                        plotted += 1;
-                        if direct {
-                            ln.vis[p] = v;
-                        } else {
-                            let k = nf & M;
-                            ln.fin.x[k] = dst.x[p];
-                            ln.fin.y[k] = dst.y[p];
-                            ln.fin.z[k] = dst.z[p];
-                            ln.fin.c[k] = dst.c[p];
-                            ln.fin_vis[k] = v;
-                            nf += 1;
-                        }
-                    }
-                } else {
-                    dst.step[p] += 1;
-                }
-            }
-            if !ln.clean && dst.consec.iter().all(|&c| c == 0) && dst.step.iter().all(|&s| s >= 0) {
-                // From now on the counters are not gathered: both sets must read as clean.
-                ln.clean = true;
-                src.consec = [0; LANES];
-                src.step = [0; LANES];
-            } else if ln.clean && dst.consec.iter().any(|&c| c != 0) {
-                ln.clean = false;
-            }
-            if direct {
-                plot(&dst.x, &dst.y, &dst.z, &dst.c, &ln.vis);
-                continue;
-            }
-            let m = nf.min(LANES);
-            if let Some(f) = &self.final_xform {
-                let fin = &mut ln.fin;
-                if f.opacity >= 1.0 {
-                    f.apply_soa(
-                        &mut fin.x[..m],
-                        &mut fin.y[..m],
-                        &mut fin.z[..m],
-                        &mut fin.c[..m],
-                        &mut ln.g,
-                        rng,
-                    );
-                    if f.hides {
-                        for (v, &h) in ln.fin_vis[..m].iter_mut().zip(&ln.g.hide[..m]) {
-                            if h {
-                                *v = 0.0;
-                            }
-                        }
-                    }
-                } else {
-                    // Apply with probability = opacity: compact the chosen points, apply, put back.
-                    ln.chosen.clear();
-                    for j in 0..m {
-                        if rng.f01() < f.opacity {
-                            ln.chosen.push(j);
-                        }
-                    }
-                    let t = &mut ln.tmp;
-                    for (k, &j) in ln.chosen.iter().enumerate() {
-                        let (k, j) = (k & M, j & M);
-                        t.x[k] = fin.x[j];
-                        t.y[k] = fin.y[j];
-                        t.z[k] = fin.z[j];
-                        t.c[k] = fin.c[j];
-                    }
-                    let k = ln.chosen.len().min(LANES);
-                    f.apply_soa(
-                        &mut t.x[..k],
-                        &mut t.y[..k],
-                        &mut t.z[..k],
-                        &mut t.c[..k],
-                        &mut ln.g,
-                        rng,
-                    );
-                    if f.hides {
-                        for (k, &j) in ln.chosen.iter().enumerate() {
-                            if ln.g.hide[k & M] {
-                                ln.fin_vis[j & M] = 0.0;
-                            }
-                        }
-                    }
-                    for (k, &j) in ln.chosen.iter().enumerate() {
-                        let (k, j) = (k & M, j & M);
-                        fin.x[j] = t.x[k];
-                        fin.y[j] = t.y[k];
-                        fin.z[j] = t.z[k];
-                        fin.c[j] = t.c[k];
-                    }
-                }
-            }
-            if let Some(pr) = &self.projection {
-                let fin = &mut ln.fin;
-                for j in 0..m {
-                    (fin.x[j], fin.y[j]) = pr.project(fin.x[j], fin.y[j], fin.z[j], rng);
-                }
-            }
-            let fin = &ln.fin;
-            plot(
-                &fin.x[..m],
-                &fin.y[..m],
-                &fin.z[..m],
-                &fin.c[..m],
-                &ln.fin_vis[..m],
-            );
         }
-        bad
+        if let Some(pr) = &self.projection {
+            let fin = &mut ln.fin;
+            for j in 0..m {
+                (fin.x[j], fin.y[j]) = pr.project(fin.x[j], fin.y[j], fin.z[j], rng);
+            }
+        }
+    }
+
+    /// The final xform `f` applied to each of the first `m` samples of `ln.fin` with
+    /// probability = its opacity: the chosen points are compacted, transformed and put back.
+    #[inline(always)]
+    fn final_by_opacity(f: &CompiledXform, ln: &mut Lanes, m: usize, rng: &mut FastRng) {
+        ln.chosen.clear();
+        for j in 0..m {
+            if rng.f01() < f.opacity {
+                ln.chosen.push(j);
+            }
+        }
+        let (fin, t) = (&mut ln.fin, &mut ln.tmp);
+        for (k, &j) in ln.chosen.iter().enumerate() {
+            let (k, j) = (k & M, j & M);
+            t.x[k] = fin.x[j];
+            t.y[k] = fin.y[j];
+            t.z[k] = fin.z[j];
+            t.c[k] = fin.c[j];
+        }
+        let k = ln.chosen.len().min(LANES);
+        f.apply_soa(
+            &mut t.x[..k],
+            &mut t.y[..k],
+            &mut t.z[..k],
+            &mut t.c[..k],
+            &mut ln.g,
+            rng,
+        );
+        if f.hides {
+            for (k, &j) in ln.chosen.iter().enumerate() {
+                if ln.g.hide[k & M] {
+                    ln.fin_vis[j & M] = 0.0;
+                }
+            }
+        }
+        for (k, &j) in ln.chosen.iter().enumerate() {
+            let (k, j) = (k & M, j & M);
+            fin.x[j] = t.x[k];
+            fin.y[j] = t.y[k];
+            fin.z[j] = t.z[k];
+            fin.c[j] = t.c[k];
+        }
     }
 }
 
