@@ -20,9 +20,8 @@ pub struct RenderOptions {
     /// [`crate::memory::budget`] (available memory, `ulimit -v`, cgroup limit).
     pub memory_limit: Option<u64>,
     pub format: OutputFormat,
-    /// Keep every plotted sample (12 bytes each) so that
-    /// [`Renderer::recolor`](crate::flame::render::Renderer::recolor) can change the palette
-    /// without iterating again. Ignored above [`MAX_KEPT_SAMPLES`].
+    /// Keep every plotted sample (12 bytes each) so that `Renderer::recolor` can change the
+    /// palette without iterating again. Ignored above [`MAX_KEPT_SAMPLES`].
     pub keep_samples: bool,
 }
 
@@ -145,8 +144,8 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
 }
 
 /// The highest quality a render of `flame` may reach: [`MAX_QUALITY`], or less when the
-/// samples of its zoom and size would pass [`MAX_TOTAL_SAMPLES`] first.
-/// [`Renderer::extend`](crate::flame::render::Renderer::extend) refuses to go past it.
+/// samples of its zoom and size would pass [`MAX_TOTAL_SAMPLES`] first. `Renderer::extend`
+/// refuses to go past it.
 pub fn quality_limit(flame: &Flame) -> f64 {
     let per_quality = 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
     let by_samples = MAX_TOTAL_SAMPLES / per_quality;

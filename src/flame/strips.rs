@@ -103,7 +103,7 @@ pub fn strips_for_budget(
     Ok(Some(hi))
 }
 
-/// As [`check_memory`](crate::flame::render::check_memory) for one strip of a render in strips.
+/// As [`check_memory`] for one strip of a render in strips.
 pub fn check_memory_rows(
     flame: &Flame,
     opts: &RenderOptions,

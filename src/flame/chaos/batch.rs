@@ -3,9 +3,8 @@
 //! computed once per point, every regular variation run over the group, then the `post_`
 //! forms, the post-affine, the direct colour and the bad-value check.
 
-use super::CompiledXform;
-use super::lanes::LANES;
 use super::xform::within;
+use super::{CompiledXform, LANES};
 use crate::flame::fastmath;
 use crate::flame::rng::FastRng;
 use crate::flame::variations::{Acc, SoaAcc, SoaIn, need};

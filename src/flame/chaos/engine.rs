@@ -4,9 +4,9 @@
 //! each xform to its group as one array computation. Then bad values are retried, fused orbits
 //! counted, and the samples go through the final xform and the camera to the plot callback.
 
-use super::lanes::{LANES, Lanes, Orbits};
+use super::lanes::{Lanes, Orbits};
 use super::xform::within;
-use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform};
+use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, LANES};
 use crate::flame::rng::FastRng;
 
 /// Mask of a lane index: indices masked by it are provably in range.

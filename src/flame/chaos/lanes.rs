@@ -1,12 +1,8 @@
 //! The orbits of the lane runner: [`LANES`] orbits as arrays, two sets that a step reads and
 //! writes in turn, the scratch space of a step, and the state a saved render keeps of them.
 
-use super::FUSE;
 use super::batch::Scratch;
-
-/// Number of independent orbits iterated together by
-/// [`Chaos::run_lanes`](super::Chaos::run_lanes).
-pub const LANES: usize = 256;
+use super::{FUSE, LANES};
 
 /// The state of [`LANES`] orbits: position, colour coordinate, the xform applied last (xaos
 /// row; `u16::MAX` before the first), consecutive bad values, and steps done (an orbit plots

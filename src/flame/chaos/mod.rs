@@ -19,7 +19,7 @@ mod lanes;
 mod projection;
 mod xform;
 
-pub use lanes::{LANES, LaneState, Lanes};
+pub use lanes::{LaneState, Lanes};
 pub use projection::Projection;
 pub use xform::{BAD_LIMIT_WIDE, CompiledXform, adjust_opacity};
 
@@ -33,6 +33,8 @@ pub const CHOOSE_GRAIN: usize = 16384;
 pub const FUSE: i64 = 15;
 /// Samples per sub-batch.
 pub const SUB_BATCH: u64 = 10_000;
+/// Number of independent orbits iterated together by [`Chaos::run_lanes`].
+pub const LANES: usize = 256;
 /// A coordinate beyond this magnitude is a bad value.
 pub const BAD_LIMIT: f64 = 1e10;
 
