@@ -45,6 +45,7 @@ impl Scratch {
     }
 }
 
+// The steps of `apply_soa` take the group as slices of one length (at most `LANES`).
 impl CompiledXform {
     /// Apply to the points `x, y, z, c` (at most [`LANES`]; in place; `g.bad` flags set; a
     /// bad point is replaced by a random point of [−1, 1]²). The pre-affine points and their
@@ -65,15 +66,15 @@ impl CompiledXform {
         if self.hides {
             g.hide[..n].fill(false);
         }
-        self.blend_and_map(n, x, y, c);
+        self.blend_and_map(x, y, c);
         if let Some(w) = self.linear_only {
-            self.linear_and_post(n, w, x, y, z);
+            self.linear_and_post(w, x, y, z);
             self.mark_bad(x, y, z, &mut g.bad[..n], rng);
             return;
         }
-        self.pre_forms(n, x, y, z, c, g, rng);
+        self.pre_forms(x, y, z, c, g, rng);
         if !self.vars.is_empty() {
-            self.regular_forms(n, x, y, z, c, g, rng);
+            self.regular_forms(x, y, z, c, g, rng);
         } else if !self.pre_vars.is_empty() {
             g.px[..n].copy_from_slice(x);
             g.py[..n].copy_from_slice(y);
@@ -83,14 +84,14 @@ impl CompiledXform {
             g.py[..n].fill(0.0);
             g.pz[..n].fill(0.0);
         }
-        self.post_forms(n, c, g, rng);
-        self.finish_group(n, x, y, z, c, g, rng);
+        self.post_forms(c, g, rng);
+        self.finish_group(x, y, z, c, g, rng);
     }
 
-    /// Blend the colours towards the xform's colour and apply the affine map to the first `n`
-    /// points.
+    /// Blend the colours towards the xform's colour and apply the affine map to the points.
     #[inline(always)]
-    fn blend_and_map(&self, n: usize, x: &mut [f64], y: &mut [f64], c: &mut [f64]) {
+    fn blend_and_map(&self, x: &mut [f64], y: &mut [f64], c: &mut [f64]) {
+        let n = x.len();
         let a = self.coefs;
         let (s, col) = (self.color_speed, self.color);
         for cj in c[..n].iter_mut() {
@@ -107,7 +108,8 @@ impl CompiledXform {
     /// as the general path computes it, 0 + w·v, so both give the same bits), then the
     /// post-affine map.
     #[inline(always)]
-    fn linear_and_post(&self, n: usize, w: f64, x: &mut [f64], y: &mut [f64], z: &mut [f64]) {
+    fn linear_and_post(&self, w: f64, x: &mut [f64], y: &mut [f64], z: &mut [f64]) {
+        let n = x.len();
         for j in 0..n {
             x[j] = 0.0 + w * x[j];
             y[j] = 0.0 + w * y[j];
@@ -122,11 +124,9 @@ impl CompiledXform {
 
     /// The `pre_` forms, point by point: each replaces (or moves) the point; the colour they
     /// set goes to `g.pc` (the blended colour when there are none).
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn pre_forms(
         &self,
-        n: usize,
         x: &mut [f64],
         y: &mut [f64],
         z: &mut [f64],
@@ -134,6 +134,7 @@ impl CompiledXform {
         g: &mut Scratch,
         rng: &mut FastRng,
     ) {
+        let n = x.len();
         if self.pre_vars.is_empty() {
             g.pc[..n].copy_from_slice(&c[..n]);
             return;
@@ -153,10 +154,11 @@ impl CompiledXform {
         }
     }
 
-    /// The quantities of the first `n` points that the regular variations read (the
-    /// [`need`] bits of the xform): r², r, the two atan2 orders, the unit vector.
+    /// The quantities of the points that the regular variations read (the [`need`] bits of
+    /// the xform): r², r, the two atan2 orders, the unit vector.
     #[inline(always)]
-    fn derived(&self, n: usize, xs: &[f64], ys: &[f64], g: &mut Scratch) {
+    fn derived(&self, xs: &[f64], ys: &[f64], g: &mut Scratch) {
+        let n = xs.len();
         let needs = self.needs;
         let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
         if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
@@ -193,11 +195,9 @@ impl CompiledXform {
 
     /// Every regular variation over the whole group, their outputs summed into `g.px`,
     /// `g.py`, `g.pz` (and their colours into `g.pc`).
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn regular_forms(
         &self,
-        n: usize,
         x: &[f64],
         y: &[f64],
         z: &[f64],
@@ -205,8 +205,9 @@ impl CompiledXform {
         g: &mut Scratch,
         rng: &mut FastRng,
     ) {
+        let n = x.len();
         let (xs, ys) = (&x[..n], &y[..n]);
-        self.derived(n, xs, ys, g);
+        self.derived(xs, ys, g);
         let soa = SoaIn {
             x: xs,
             y: ys,
@@ -236,7 +237,8 @@ impl CompiledXform {
 
     /// The `post_` forms, point by point, on the summed points in `g`.
     #[inline(always)]
-    fn post_forms(&self, n: usize, c: &[f64], g: &mut Scratch, rng: &mut FastRng) {
+    fn post_forms(&self, c: &[f64], g: &mut Scratch, rng: &mut FastRng) {
+        let n = c.len();
         if self.post_vars.is_empty() {
             return;
         }
@@ -258,11 +260,9 @@ impl CompiledXform {
 
     /// The post-affine map and the direct colour, then the points of `g` back into `x, y,
     /// z` and their bad values flagged.
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     fn finish_group(
         &self,
-        n: usize,
         x: &mut [f64],
         y: &mut [f64],
         z: &mut [f64],
@@ -270,6 +270,7 @@ impl CompiledXform {
         g: &mut Scratch,
         rng: &mut FastRng,
     ) {
+        let n = x.len();
         let (px, py) = (&mut g.px[..n], &mut g.py[..n]);
         if let Some(post) = &self.post {
             for j in 0..n {
