@@ -14,6 +14,11 @@
 //! a generator seeded from (seed, j) by thread j mod T into that thread's histogram. The image
 //! therefore depends only on the flame, the seed and the thread count — not on timing or on how
 //! the work was split into passes.
+//!
+//! The renderer drives parts that live beside it: `settings` (options, errors, limits),
+//! `budget` (the memory estimate and check), `plot` (samples into the histograms), `develop`
+//! (histogram to image) and `strips` (renders larger than memory). Their public items are
+//! re-exported here.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
