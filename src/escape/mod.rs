@@ -12,8 +12,12 @@ pub mod dd;
 pub mod deep;
 pub mod doc;
 pub mod family;
+mod guess;
+mod job;
 pub mod lanes;
+mod params;
 pub mod render;
+mod view;
 pub mod warp;
 
 pub use color::{Coloring, Palette};

@@ -156,7 +156,7 @@ pub fn kernel(shape: FilterShape, x: f64) -> f64 {
 pub struct SpatialFilter {
     /// fwidth, same parity as the supersample factor.
     pub width: usize,
-    /// Normalised 1-D taps (sum 1); K[i][j] = taps[i]·taps[j].
+    /// Normalised 1-D taps (sum 1); `K[i][j] = taps[i]·taps[j]`.
     pub taps: Vec<f64>,
     /// Gutter (fwidth − os)/2.
     pub gutter: usize,
@@ -209,7 +209,7 @@ impl SpatialFilter {
         }
     }
 
-    /// The 2-D weight K[i][j].
+    /// The 2-D weight `K[i][j]`.
     pub fn weight(&self, i: usize, j: usize) -> f64 {
         self.taps[i] * self.taps[j]
     }

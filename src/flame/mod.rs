@@ -4,9 +4,11 @@
 pub mod affine;
 pub mod animate;
 pub mod animated;
+mod budget;
 pub mod chaos;
 pub mod curves;
 pub mod density;
+mod develop;
 pub mod fastmath;
 pub mod filter;
 pub mod framing;
@@ -19,11 +21,13 @@ pub mod loops;
 pub mod model;
 pub mod motion_blur;
 pub mod mutate;
+mod plot;
 pub mod random;
 pub mod render;
 pub mod sequence;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
+mod settings;
 pub mod state;
 pub mod strips;
 pub mod symmetry;

@@ -9,12 +9,9 @@
 
 use std::ops::Range;
 
-use crate::flame::density::DeFilters;
-use crate::flame::geometry::Geometry;
+use crate::flame::budget::{MemoryEstimate, check_memory, estimate_memory, estimate_memory_rows};
 use crate::flame::model::Flame;
-use crate::flame::render::{
-    RenderError, RenderOptions, check_memory, estimate_memory, estimate_memory_rows,
-};
+use crate::flame::settings::{RenderError, RenderOptions, geometry_of};
 use crate::memory::Budget;
 
 /// Most strips a render may be cut into.
@@ -40,13 +37,7 @@ pub fn plan(flame: &Flame, k: usize) -> Result<Vec<Strip>, RenderError> {
             MAX_STRIPS.min(h.max(1))
         )));
     }
-    let de = DeFilters::shared(
-        flame.estimator_radius,
-        flame.estimator_minimum,
-        flame.estimator_curve,
-        flame.supersample.max(1),
-    )?;
-    let geom = Geometry::new(flame, de);
+    let geom = geometry_of(flame)?;
     let (os, g, delta, fw, bh) = (
         geom.os,
         geom.gutter,
@@ -112,6 +103,28 @@ pub fn strips_for_budget(
     Ok(Some(hi))
 }
 
+/// As [`check_memory`] for one strip of a render in strips.
+pub fn check_memory_rows(
+    flame: &Flame,
+    opts: &RenderOptions,
+    strip: &Strip,
+) -> Result<MemoryEstimate, RenderError> {
+    let rows = (strip.hist_rows.len() as u64, strip.out_rows.len() as u64);
+    let est = estimate_memory_rows(flame, opts, Some(rows));
+    crate::memory::check(
+        est.total,
+        opts.memory_limit,
+        || {
+            format!(
+                "a strip of {} rows of a {}×{} flame render at supersample {} with {} thread(s)",
+                rows.1, flame.width, flame.height, flame.supersample, est.threads
+            )
+        },
+        || format!("use more strips, or {}", est.hint(flame)),
+    )?;
+    Ok(est)
+}
+
 /// How a render fits in memory.
 #[derive(Clone, Debug)]
 pub struct Fit {
@@ -162,6 +175,7 @@ pub fn fit(flame: &Flame, opts: &RenderOptions) -> Result<Fit, RenderError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flame::geometry::Geometry;
 
     #[test]
     fn strips_cover_the_image_and_tile_the_grid() {

@@ -1,0 +1,256 @@
+//! What defines an escape-time picture besides its size and view ([`EscapeParams`], block
+//! [`Fill`]), why one cannot be rendered ([`EscapeError`]), and the checks made before
+//! anything is allocated: the precision limits of a view (f64, or double-double for deep
+//! zoom), the settings, and the memory.
+
+use super::color::{Coloring, Palette};
+use super::complex::C;
+use super::family::{Family, Sample};
+use super::view::View;
+
+/// Relative pixel size below which the Mandelbrot set is drawn by perturbation.
+pub const DEEP_BELOW: f64 = 1e-12;
+/// Relative pixel size limits: f64 arithmetic, and perturbation around a double-double centre.
+pub const F64_LIMIT: f64 = 1e-13;
+pub const DD_LIMIT: f64 = 1e-28;
+
+/// Block filling.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Fill {
+    /// Every pixel computed (the default).
+    #[default]
+    Exact,
+    /// Mariani–Silver rectangles: filled when their whole border agrees (not for Newton).
+    Guess,
+}
+
+/// Everything that defines an escape-time picture except its size and view.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EscapeParams {
+    pub family: Family,
+    pub max_iter: u32,
+    pub coloring: Coloring,
+    /// Escape radius; None: the family's default for the colouring.
+    pub bailout: Option<f64>,
+    pub periodicity: bool,
+    pub fill: Fill,
+    pub palette: Palette,
+}
+
+impl EscapeParams {
+    pub fn new(family: Family) -> EscapeParams {
+        let coloring = if matches!(family, Family::Newton { .. }) {
+            Coloring::Basins
+        } else if matches!(family, Family::WarpedJulia(_)) {
+            Coloring::Bands
+        } else {
+            Coloring::Smooth
+        };
+        // Four gradient entries per iteration spread the outside over the whole gradient
+        // (with one, the first few dozen iterations use a fifth of it).
+        let repeat = if coloring == Coloring::Basins {
+            1.0
+        } else {
+            4.0
+        };
+        EscapeParams {
+            family,
+            max_iter: 256,
+            coloring,
+            bailout: None,
+            periodicity: true,
+            fill: Fill::Exact,
+            palette: Palette {
+                repeat,
+                ..Palette::default()
+            },
+        }
+    }
+
+    pub fn bailout(&self) -> f64 {
+        self.bailout
+            .unwrap_or_else(|| self.family.default_bailout(self.coloring.smooth()))
+    }
+}
+
+/// Why a view cannot be rendered.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EscapeError {
+    #[error(
+        "zoomed in to the limit of 64-bit floating point (pixel {pixel:.3e} at |centre| {scale:.3e}); \
+         zoom out (deep zoom is available for z² + c: the Mandelbrot set and its Julia sets)"
+    )]
+    PrecisionLimit { pixel: f64, scale: f64 },
+    #[error(
+        "zoomed in to the deep-zoom limit (pixel {pixel:.3e} at |centre| {scale:.3e}, \
+         double-double precision); zoom out"
+    )]
+    DeepLimit { pixel: f64, scale: f64 },
+    #[error("image size {0}x{1} must be between 1x1 and 30000x30000")]
+    BadSize(u32, u32),
+    #[error("{0}")]
+    Settings(String),
+    #[error(transparent)]
+    OutOfMemory(#[from] crate::memory::MemoryError),
+}
+
+/// Bytes an escape-time render of `w`×`h` needs, before anything is allocated: one sample per
+/// pixel, the RGB image and the copy made while encoding it, the reference orbit of a deep
+/// zoom (up to `max_iter` points, twice with a critical orbit) and the iteration-count table
+/// of histogram colouring.
+pub fn estimate_memory(params: &EscapeParams, view: &View, w: u32, h: u32) -> u64 {
+    let px = w as u64 * h as u64;
+    let samples = px * std::mem::size_of::<Sample>() as u64;
+    let image = px * 3 * 2;
+    let iters = params.max_iter as u64 + 2;
+    let orbit = if is_deep(&params.family, view, h) {
+        2 * iters * std::mem::size_of::<C>() as u64
+    } else {
+        0
+    };
+    let histogram = if params.coloring == Coloring::Histogram {
+        iters * 16
+    } else {
+        0
+    };
+    samples + image + orbit + histogram
+}
+
+/// Refuse an escape-time render that does not fit in memory (see [`crate::memory`]).
+pub fn check_memory(
+    params: &EscapeParams,
+    view: &View,
+    w: u32,
+    h: u32,
+    configured: Option<u64>,
+) -> Result<u64, EscapeError> {
+    let need = estimate_memory(params, view, w, h);
+    crate::memory::check(
+        need,
+        configured,
+        || format!("a {w}×{h} escape-time render"),
+        || {
+            let mut hint = String::from("reduce the image size");
+            if params.coloring == Coloring::Histogram || is_deep(&params.family, view, h) {
+                hint.push_str(&format!(" or the maximum iterations ({})", params.max_iter));
+            }
+            hint
+        },
+    )?;
+    Ok(need)
+}
+
+/// Check a view against the f64 precision limit.
+pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
+    if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
+        return Err(EscapeError::BadSize(w, h));
+    }
+    let (pixel, scale) = (view.pixel_size(h), view_scale(view));
+    if !(pixel >= F64_LIMIT * scale) || !pixel.is_finite() {
+        return Err(EscapeError::PrecisionLimit { pixel, scale });
+    }
+    Ok(())
+}
+
+/// Families that zoom past the f64 limit by perturbation.
+pub fn supports_deep_zoom(family: &Family) -> bool {
+    matches!(
+        family,
+        Family::Mandelbrot { power: 2 } | Family::Julia { power: 2, .. }
+    )
+}
+
+/// Check a view for a family: the f64 limit, or the deep-zoom limit where it applies.
+pub fn check_view_for(family: &Family, view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
+    if !supports_deep_zoom(family) {
+        return check_view(view, w, h);
+    }
+    if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
+        return Err(EscapeError::BadSize(w, h));
+    }
+    let (pixel, scale) = (view.pixel_size(h), view_scale(view));
+    if !(pixel >= DD_LIMIT * scale) || !pixel.is_finite() {
+        return Err(EscapeError::DeepLimit { pixel, scale });
+    }
+    Ok(())
+}
+
+/// True when the view is drawn by perturbation (deep zoom).
+pub fn is_deep(family: &Family, view: &View, h: u32) -> bool {
+    supports_deep_zoom(family) && view.pixel_size(h) < DEEP_BELOW * view_scale(view)
+}
+
+fn view_scale(view: &View) -> f64 {
+    view.center[0].abs().max(view.center[1].abs()).max(1.0)
+}
+
+pub(super) fn check_params(p: &EscapeParams) -> Result<(), EscapeError> {
+    if p.max_iter == 0 || p.max_iter > 100_000_000 {
+        return Err(EscapeError::Settings(format!(
+            "max iterations {} must be between 1 and 100000000",
+            p.max_iter
+        )));
+    }
+    match &p.family {
+        Family::Mandelbrot { power } | Family::Julia { power, .. } if !(2..=9).contains(power) => {
+            return Err(EscapeError::Settings(format!(
+                "power {power} must be between 2 and 9"
+            )));
+        }
+        Family::Newton { coeffs }
+            if coeffs.iter().filter(|c| c.norm2() > 0.0).count() < 2 || coeffs.len() < 2 =>
+        {
+            return Err(EscapeError::Settings(
+                "Newton needs a polynomial of degree 1 or more with a non-zero constant or linear term"
+                    .into(),
+            ));
+        }
+        _ => {}
+    }
+    let b = p.bailout();
+    if !(b > 0.0 && b.is_finite()) {
+        return Err(EscapeError::Settings(format!(
+            "escape radius {b} must be positive"
+        )));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn view_maps_pixels_both_ways_with_y_up() {
+        let v = View::new([-0.7, 0.2], 1.5);
+        let p = v.world_from_pixel(0.0, 0.0, 400, 300);
+        assert!(p.re < -0.7 && p.im > 0.2, "top-left is up and left");
+        let q = v.pixel_from_world(p, 400, 300);
+        assert!((q[0] - 0.5).abs() < 1e-9 && (q[1] - 0.5).abs() < 1e-9);
+        let z = v.zoomed_at(100.0, 50.0, 400, 300, 2.0);
+        let before = v.world_from_pixel(99.5, 49.5, 400, 300);
+        let after = z.world_from_pixel(99.5, 49.5, 400, 300);
+        assert!(
+            (before - after).abs() < 1e-12,
+            "the point under the cursor stays"
+        );
+        assert!(check_view(&v, 400, 300).is_ok());
+        let deep = View::new([-0.7, 0.2], 1e-12);
+        assert!(matches!(
+            check_view(&deep, 400, 300),
+            Err(EscapeError::PrecisionLimit { .. })
+        ));
+        // The Mandelbrot set z² + c zooms on by perturbation, to the double-double limit.
+        let m2 = Family::Mandelbrot { power: 2 };
+        assert!(check_view_for(&m2, &deep, 400, 300).is_ok());
+        assert!(is_deep(&m2, &deep, 300));
+        assert!(!is_deep(&m2, &v, 300));
+        let m3 = Family::Mandelbrot { power: 3 };
+        assert!(check_view_for(&m3, &deep, 400, 300).is_err());
+        let too_deep = View::new([-0.7, 0.2], 1e-27);
+        assert!(matches!(
+            check_view_for(&m2, &too_deep, 400, 300),
+            Err(EscapeError::DeepLimit { .. })
+        ));
+    }
+}

@@ -1,0 +1,402 @@
+//! One compiled xform applied to a group of points as arrays: the colour blend and the affine
+//! map over the whole group, the quantities the regular variations read (radius, angles)
+//! computed once per point, every regular variation run over the group, then the `post_`
+//! forms, the post-affine, the direct colour and the bad-value check.
+
+use super::xform::within;
+use super::{CompiledXform, LANES};
+use crate::flame::fastmath;
+use crate::flame::rng::FastRng;
+use crate::flame::variations::{Acc, SoaAcc, SoaIn, need};
+
+/// Per-point scratch arrays of one xform application.
+#[derive(Clone, Debug)]
+pub(super) struct Scratch {
+    pub(super) sumsq: [f64; LANES],
+    pub(super) sqrt: [f64; LANES],
+    pub(super) atan_xy: [f64; LANES],
+    pub(super) atan_yx: [f64; LANES],
+    pub(super) ux: [f64; LANES],
+    pub(super) uy: [f64; LANES],
+    pub(super) px: [f64; LANES],
+    pub(super) py: [f64; LANES],
+    pub(super) pz: [f64; LANES],
+    pub(super) pc: [f64; LANES],
+    pub(super) bad: [bool; LANES],
+    /// A variation hid the point (see [`crate::flame::variations::flag::HIDES`]).
+    pub(super) hide: [bool; LANES],
+}
+impl Scratch {
+    pub(super) fn new() -> Scratch {
+        Scratch {
+            sumsq: [0.0; LANES],
+            sqrt: [0.0; LANES],
+            atan_xy: [0.0; LANES],
+            atan_yx: [0.0; LANES],
+            ux: [0.0; LANES],
+            uy: [0.0; LANES],
+            px: [0.0; LANES],
+            py: [0.0; LANES],
+            pz: [0.0; LANES],
+            pc: [0.0; LANES],
+            bad: [false; LANES],
+            hide: [false; LANES],
+        }
+    }
+}
+
+// The steps of `apply_soa` take the group as slices of one length (at most `LANES`).
+impl CompiledXform {
+    /// Apply to the points `x, y, z, c` (at most [`LANES`]; in place; `g.bad` flags set; a
+    /// bad point is replaced by a random point of [−1, 1]²). The pre-affine points and their
+    /// derived quantities are computed as arrays, then every regular variation runs over the
+    /// whole group.
+    #[inline(always)]
+    pub(super) fn apply_soa(
+        &self,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        c: &mut [f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        let n = x.len().min(y.len()).min(z.len()).min(c.len()).min(LANES);
+        let (x, y, z, c) = (&mut x[..n], &mut y[..n], &mut z[..n], &mut c[..n]);
+        if self.hides {
+            g.hide[..n].fill(false);
+        }
+        self.blend_and_map(x, y, c);
+        if let Some(w) = self.linear_only {
+            self.linear_and_post(w, x, y, z);
+            self.mark_bad(x, y, z, &mut g.bad[..n], rng);
+            return;
+        }
+        self.pre_forms(x, y, z, c, g, rng);
+        if !self.vars.is_empty() {
+            self.regular_forms(x, y, z, c, g, rng);
+        } else if !self.pre_vars.is_empty() {
+            g.px[..n].copy_from_slice(x);
+            g.py[..n].copy_from_slice(y);
+            g.pz[..n].copy_from_slice(z);
+        } else {
+            g.px[..n].fill(0.0);
+            g.py[..n].fill(0.0);
+            g.pz[..n].fill(0.0);
+        }
+        self.post_forms(c, g, rng);
+        self.finish_group(x, y, z, c, g, rng);
+    }
+
+    /// Blend the colours towards the xform's colour and apply the affine map to the points.
+    #[inline(always)]
+    fn blend_and_map(&self, x: &mut [f64], y: &mut [f64], c: &mut [f64]) {
+        let n = x.len();
+        let a = self.coefs;
+        let (s, col) = (self.color_speed, self.color);
+        for cj in c[..n].iter_mut() {
+            *cj = s * col + (1.0 - s) * *cj;
+        }
+        for j in 0..n {
+            let (tx, ty) = a.apply(x[j], y[j]);
+            x[j] = tx;
+            y[j] = ty;
+        }
+    }
+
+    /// Only `linear`, of weight `w`: the sum of the variations is w times the point (written
+    /// as the general path computes it, 0 + w·v, so both give the same bits), then the
+    /// post-affine map.
+    #[inline(always)]
+    fn linear_and_post(&self, w: f64, x: &mut [f64], y: &mut [f64], z: &mut [f64]) {
+        let n = x.len();
+        for j in 0..n {
+            x[j] = 0.0 + w * x[j];
+            y[j] = 0.0 + w * y[j];
+            z[j] = 0.0 + w * z[j];
+        }
+        if let Some(post) = &self.post {
+            for j in 0..n {
+                (x[j], y[j]) = post.apply(x[j], y[j]);
+            }
+        }
+    }
+
+    /// The `pre_` forms, point by point: each replaces (or moves) the point; the colour they
+    /// set goes to `g.pc` (the blended colour when there are none).
+    #[inline(always)]
+    fn pre_forms(
+        &self,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        c: &[f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        let n = x.len();
+        if self.pre_vars.is_empty() {
+            g.pc[..n].copy_from_slice(&c[..n]);
+            return;
+        }
+        for j in 0..n {
+            let mut acc = Acc {
+                color: c[j],
+                ..Acc::default()
+            };
+            let mut tr = [x[j], y[j], z[j]];
+            for v in &self.pre_vars {
+                v.apply_pre(&mut tr, &mut acc, c[j], rng);
+            }
+            (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
+            g.pc[j] = acc.color;
+            g.hide[j] |= acc.hide;
+        }
+    }
+
+    /// The quantities of the points that the regular variations read (the [`need`] bits of
+    /// the xform): r², r, the two atan2 orders, the unit vector.
+    #[inline(always)]
+    fn derived(&self, xs: &[f64], ys: &[f64], g: &mut Scratch) {
+        let n = xs.len();
+        let needs = self.needs;
+        let (sumsq, sqrt) = (&mut g.sumsq[..n], &mut g.sqrt[..n]);
+        if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
+            for j in 0..n {
+                sumsq[j] = xs[j] * xs[j] + ys[j] * ys[j];
+                sqrt[j] = sumsq[j].sqrt();
+            }
+        }
+        if needs & need::ATAN_XY != 0 {
+            let at = &mut g.atan_xy[..n];
+            for j in 0..n {
+                at[j] = fastmath::atan2(xs[j], ys[j]);
+            }
+        }
+        if needs & need::ATAN_YX != 0 {
+            let at = &mut g.atan_yx[..n];
+            for j in 0..n {
+                at[j] = fastmath::atan2(ys[j], xs[j]);
+            }
+        }
+        if needs & need::ANGLES != 0 {
+            let (ux, uy) = (&mut g.ux[..n], &mut g.uy[..n]);
+            for j in 0..n {
+                let r = if sqrt[j] == 0.0 {
+                    f64::EPSILON
+                } else {
+                    sqrt[j]
+                };
+                ux[j] = xs[j] / r;
+                uy[j] = ys[j] / r;
+            }
+        }
+    }
+
+    /// Every regular variation over the whole group, their outputs summed into `g.px`,
+    /// `g.py`, `g.pz` (and their colours into `g.pc`).
+    #[inline(always)]
+    fn regular_forms(
+        &self,
+        x: &[f64],
+        y: &[f64],
+        z: &[f64],
+        c: &[f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        let n = x.len();
+        let (xs, ys) = (&x[..n], &y[..n]);
+        self.derived(xs, ys, g);
+        let soa = SoaIn {
+            x: xs,
+            y: ys,
+            z: &z[..n],
+            sumsq: &g.sumsq[..n],
+            sqrt: &g.sqrt[..n],
+            ux: &g.ux[..n],
+            uy: &g.uy[..n],
+            atan_xy: &g.atan_xy[..n],
+            atan_yx: &g.atan_yx[..n],
+            color: &c[..n],
+        };
+        g.px[..n].fill(0.0);
+        g.py[..n].fill(0.0);
+        g.pz[..n].fill(0.0);
+        let mut acc = SoaAcc {
+            x: &mut g.px[..n],
+            y: &mut g.py[..n],
+            z: &mut g.pz[..n],
+            color: &mut g.pc[..n],
+            hide: &mut g.hide[..n],
+        };
+        for v in &self.vars {
+            v.apply_batch(&soa, &mut acc, rng);
+        }
+    }
+
+    /// The `post_` forms, point by point, on the summed points in `g`.
+    #[inline(always)]
+    fn post_forms(&self, c: &[f64], g: &mut Scratch, rng: &mut FastRng) {
+        let n = c.len();
+        if self.post_vars.is_empty() {
+            return;
+        }
+        for (j, &cj) in c[..n].iter().enumerate() {
+            let mut acc = Acc {
+                x: g.px[j],
+                y: g.py[j],
+                z: g.pz[j],
+                color: g.pc[j],
+                hide: false,
+            };
+            for v in &self.post_vars {
+                v.apply_post(&mut acc, cj, rng);
+            }
+            (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
+            g.hide[j] |= acc.hide;
+        }
+    }
+
+    /// The post-affine map and the direct colour, then the points of `g` back into `x, y,
+    /// z` and their bad values flagged.
+    #[inline(always)]
+    fn finish_group(
+        &self,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        c: &mut [f64],
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
+        let n = x.len();
+        let (px, py) = (&mut g.px[..n], &mut g.py[..n]);
+        if let Some(post) = &self.post {
+            for j in 0..n {
+                (px[j], py[j]) = post.apply(px[j], py[j]);
+            }
+        }
+        if self.sets_color {
+            let dc = self.direct_color;
+            let pc = &g.pc[..n];
+            for j in 0..n {
+                let v = c[j] + dc * (pc[j] - c[j]);
+                c[j] = if v.is_nan() { 0.0 } else { v };
+            }
+        }
+        x[..n].copy_from_slice(px);
+        y[..n].copy_from_slice(py);
+        z[..n].copy_from_slice(&g.pz[..n]);
+        self.mark_bad(&mut x[..n], &mut y[..n], &mut z[..n], &mut g.bad[..n], rng);
+    }
+
+    /// Flag the bad points of a group and restart them at a random point of the plane (a NaN
+    /// or infinite z must not carry over).
+    #[inline(always)]
+    fn mark_bad(
+        &self,
+        x: &mut [f64],
+        y: &mut [f64],
+        z: &mut [f64],
+        bad: &mut [bool],
+        rng: &mut FastRng,
+    ) {
+        let n = bad.len().min(x.len()).min(y.len()).min(z.len());
+        let mut any_bad = false;
+        for j in 0..n {
+            let b = !within(x[j], self.bad_limit) | !within(y[j], self.bad_limit);
+            bad[j] = b;
+            any_bad |= b;
+        }
+        if any_bad {
+            for j in 0..n {
+                if bad[j] {
+                    x[j] = rng.f11();
+                    y[j] = rng.f11();
+                    z[j] = 0.0;
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::chaos::{Chaos, Pt};
+    use crate::flame::model::{Affine, Flame, Xform};
+    use crate::flame::variations;
+
+    #[test]
+    fn pre_and_post_forms_wrap_the_regular_variations() {
+        use crate::flame::model::Var;
+        use crate::flame::variations::{Form, LINEAR, SINUSOIDAL, SPHERICAL};
+        let mut x = Xform::linear(Affine::new(0.8, 0.2, -0.3, 0.9, 0.1, -0.2), 1.0, 0.0);
+        x.vars = vec![
+            Var::with_form(SINUSOIDAL, Form::Pre, 1.0),
+            Var::new(LINEAR, 0.5),
+            Var::with_form(SPHERICAL, Form::Post, 1.0),
+        ];
+        let f = Flame {
+            xforms: vec![x.clone()],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(2);
+        let p = Pt {
+            x: 0.4,
+            y: -0.7,
+            z: 0.0,
+            c: 0.5,
+        };
+        let (q, bad) = ch.xforms[0].apply(p, &mut rng);
+        assert!(!bad);
+        // affine → sin (replaces the point) → 0.5·linear → spherical of the sum.
+        let (tx, ty) = x.coefs.apply(p.x, p.y);
+        let (sx, sy) = (0.5 * tx.sin(), 0.5 * ty.sin());
+        let r2 = sx * sx + sy * sy;
+        assert!(
+            (q.x - sx / r2).abs() < 1e-12 && (q.y - sy / r2).abs() < 1e-12,
+            "{q:?}"
+        );
+        // The same through the batched lanes.
+        let (mut gx, mut gy, mut gz, mut gc) = ([p.x], [p.y], [p.z], [p.c]);
+        let mut s = Scratch::new();
+        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, &mut s, &mut rng);
+        assert!((gx[0] - q.x).abs() < 1e-12 && (gy[0] - q.y).abs() < 1e-12);
+    }
+
+    #[test]
+    fn linear_only_xforms_take_the_short_path_with_the_same_bits() {
+        let mut x = Xform::linear(Affine::new(0.5, -0.3, 0.2, 0.7, 0.1, -0.4), 1.0, 0.25);
+        x.vars[0].weight = 0.8;
+        x.post = Affine::new(0.9, 0.1, -0.2, 1.1, 0.05, 0.3);
+        x.color_speed = 0.4;
+        let f = Flame {
+            xforms: vec![x],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        assert_eq!(ch.xforms[0].linear_only, Some(0.8));
+        let mut rng = FastRng::new(5);
+        let pts: Vec<Pt> = (0..16).map(|_| Chaos::start_point(&mut rng)).collect();
+        let mut gx: Vec<f64> = pts.iter().map(|p| p.x).collect();
+        let mut gy: Vec<f64> = pts.iter().map(|p| p.y).collect();
+        let mut gz: Vec<f64> = pts.iter().map(|p| p.z + 0.5).collect();
+        let mut gc: Vec<f64> = pts.iter().map(|p| p.c).collect();
+        let mut s = Scratch::new();
+        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, &mut s, &mut rng);
+        for (j, p) in pts.iter().enumerate() {
+            let (q, bad) = ch.xforms[0].apply(Pt { z: p.z + 0.5, ..*p }, &mut rng);
+            assert!(!bad && !s.bad[j]);
+            assert_eq!((q.x, q.y, q.z, q.c), (gx[j], gy[j], gz[j], gc[j]));
+        }
+        // Any other variation, or a pre_/post_ form, takes the general path.
+        let mut f2 = f.clone();
+        f2.xforms[0]
+            .vars
+            .push(crate::flame::model::Var::new(variations::SPHERICAL, 0.1));
+        assert_eq!(Chaos::new(&f2).unwrap().xforms[0].linear_only, None);
+    }
+}

@@ -1,0 +1,670 @@
+//! The lane runner, the renderer's hot loop: [`LANES`] orbits advanced together. At every
+//! step each orbit draws its xform; an affine IFS past its fuse then steps every orbit in place
+//! by its drawn row, any other flame groups the orbits by xform (a counting sort) and applies
+//! each xform to its group as one array computation. Then bad values are retried, fused orbits
+//! counted, and the samples go through the final xform and the camera to the plot callback.
+
+use super::lanes::{Lanes, Orbits};
+use super::xform::within;
+use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, LANES};
+use crate::flame::rng::FastRng;
+
+/// Mask of a lane index: indices masked by it are provably in range.
+const M: usize = LANES - 1;
+/// Mask of a 14-bit table index: four 16-bit draws per random word, 14 bits used (flam3's
+/// table grain).
+const G: usize = CHOOSE_GRAIN - 1;
+
+/// The two sets of orbits as (`sets[first]`, the other one).
+#[inline(always)]
+fn split_sets(sets: &mut [Orbits; 2], first: usize) -> (&mut Orbits, &mut Orbits) {
+    let [s0, s1] = sets;
+    if first & 1 == 0 { (s0, s1) } else { (s1, s0) }
+}
+
+impl Chaos {
+    /// Iterate until `n` more samples are plotted, with [`LANES`] orbits advanced together:
+    /// at every step each orbit draws its xform, and each xform is applied to all the orbits
+    /// that drew it as one array computation. The orbits persist between calls (a worker keeps
+    /// one [`Lanes`] for its whole render): every orbit starts at a random point, is fused for
+    /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; one
+    /// orbit, chosen at random, restarts (fused) at every call, so that orbits live about as
+    /// long as flam3's (one per sub-batch of 10 000 samples).
+    ///
+    /// `plot(xs, ys, zs, cs, vis)` receives the points of a step (final xform and camera
+    /// applied) with their visibilities; an entry with a negative visibility is not a sample
+    /// (an orbit still in its fuse or retrying a bad value, or beyond the `n` asked for) and
+    /// must be skipped. Returns the number of bad values.
+    #[inline(always)]
+    pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
+        &self,
+        n: u64,
+        rng: &mut FastRng,
+        ln: &mut Lanes,
+        mut plot: F,
+    ) -> u64 {
+        let nx = self.xforms.len();
+        self.start_orbits(ln, rng);
+        ln.counts.resize(4 * (nx + 1), 0);
+        ln.bounds.resize(nx + 1, 0);
+        let mut plotted = 0u64;
+        let mut bad = 0u64;
+        let direct = self.final_xform.is_none() && self.projection.is_none();
+        while plotted < n {
+            match (&self.affine, ln.clean) {
+                (Some(rows), true) => self.step_in_place(rows, ln, rng),
+                _ => self.step_grouped(ln, rng),
+            }
+            // The common step: no bad value, every orbit a sample.
+            if ln.clean && direct && !ln.bad.iter().any(|&b| b) && plotted + LANES as u64 <= n {
+                self.all_samples(ln);
+                plotted += LANES as u64;
+                let o = &ln.sets[ln.cur & 1];
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis);
+                continue;
+            }
+            let (nf, took, bad_values) = self.samples_of_step(ln, n - plotted, direct);
+            plotted += took;
+            bad += bad_values;
+            if direct {
+                let o = &ln.sets[ln.cur & 1];
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis);
+                continue;
+            }
+            let m = nf.min(LANES);
+            self.finish_samples(ln, m, rng);
+            let fin = &ln.fin;
+            plot(
+                &fin.x[..m],
+                &fin.y[..m],
+                &fin.z[..m],
+                &fin.c[..m],
+                &ln.fin_vis[..m],
+            );
+        }
+        bad
+    }
+
+    /// Start every orbit at a random point on the first call; on later calls restart one
+    /// orbit, chosen at random, fused.
+    #[inline(always)]
+    fn start_orbits(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        if !ln.started {
+            let o = &mut ln.sets[ln.cur & 1];
+            for l in 0..LANES {
+                let p = Self::start_point(rng);
+                (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
+            }
+            ln.started = true;
+        } else {
+            // flam3 starts a new orbit for every sub-batch of 10 000 samples; a flame that
+            // converges slowly (one contracting xform, say) shows the path towards its
+            // attractor from each start. Restart one orbit per call, chosen at random: every
+            // orbit then lives for ~LANES calls, about 10 000 of its own samples, the same
+            // share of fresh starts.
+            let l = rng.u32() as usize % LANES;
+            let (p, last) = self.fused_start(rng);
+            let o = &mut ln.sets[ln.cur & 1];
+            (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
+            (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
+        }
+    }
+
+    /// One step of an affine IFS past the fuse: every orbit steps in place by its drawn row
+    /// into the other set, which becomes the current one.
+    #[inline(always)]
+    fn step_in_place(&self, rows: &[AffineStep], ln: &mut Lanes, rng: &mut FastRng) {
+        let (src, dst) = split_sets(&mut ln.sets, ln.cur);
+        let table = &self.tables[..CHOOSE_GRAIN];
+        for q in 0..LANES / 4 {
+            let mut u = rng.u64();
+            for r in 0..4 {
+                ln.choice[4 * q + r] = table[u as usize & G];
+                u >>= 16;
+            }
+        }
+        let mut any_bad = false;
+        for l in 0..LANES {
+            let i = ln.choice[l];
+            let t = &rows[i as usize];
+            let (x, y) = (src.x[l], src.y[l]);
+            let (tx, ty) = (t.a * x + t.b * y + t.e, t.c * x + t.d * y + t.f);
+            let (x, y) = (0.0 + t.w * tx, 0.0 + t.w * ty);
+            dst.x[l] = x;
+            dst.y[l] = y;
+            dst.z[l] = 0.0 + t.w * src.z[l];
+            dst.c[l] = t.sc + t.keep * src.c[l];
+            let b = !within(x, t.bad_limit) | !within(y, t.bad_limit);
+            ln.bad[l] = b;
+            any_bad |= b;
+            ln.group[l] = i;
+        }
+        if any_bad {
+            for l in 0..LANES {
+                if ln.bad[l] {
+                    dst.x[l] = rng.f11();
+                    dst.y[l] = rng.f11();
+                    dst.z[l] = 0.0;
+                }
+            }
+        }
+        ln.cur ^= 1;
+    }
+
+    /// One step of any other flame: draw each orbit's xform, gather the orbits into the other
+    /// set grouped by xform (which becomes the current one), and apply each xform to its group.
+    #[inline(always)]
+    fn step_grouped(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        self.draw_xforms(ln, rng);
+        self.order_by_xform(ln);
+        self.gather(ln);
+        self.apply_groups(ln, rng);
+    }
+
+    /// Draw every orbit's xform into `ln.choice` (from its xaos row, if any) and count the
+    /// draws of each xform in `ln.counts`. Four interleaved streams of counters and positions
+    /// avoid store-to-load chains on a single counter.
+    #[inline(always)]
+    fn draw_xforms(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        let w = self.xforms.len() + 1;
+        ln.counts.fill(0);
+        if self.xaos {
+            let src = &ln.sets[ln.cur & 1];
+            for q in 0..LANES / 4 {
+                let mut u = rng.u64();
+                for r in 0..4 {
+                    let l = 4 * q + r;
+                    let prev = src.last[l];
+                    let row = if prev == u16::MAX {
+                        0
+                    } else {
+                        prev as usize + 1
+                    };
+                    let i = self.tables[row * CHOOSE_GRAIN + (u as usize & G)] as usize;
+                    u >>= 16;
+                    ln.choice[l] = i as u16;
+                    ln.counts[r * w + i] += 1;
+                }
+            }
+        } else {
+            let table = &self.tables[..CHOOSE_GRAIN];
+            for q in 0..LANES / 4 {
+                let mut u = rng.u64();
+                for r in 0..4 {
+                    let i = table[u as usize & G] as usize;
+                    u >>= 16;
+                    ln.choice[4 * q + r] = i as u16;
+                    ln.counts[r * w + i] += 1;
+                }
+            }
+        }
+    }
+
+    /// A counting sort of the orbits by drawn xform: `ln.bounds[i]` is where group i starts,
+    /// `ln.order` lists the orbits group by group.
+    #[inline(always)]
+    fn order_by_xform(&self, ln: &mut Lanes) {
+        let nx = self.xforms.len();
+        let w = nx + 1;
+        // bounds[i]: start of group i; positions of stream s inside group i follow.
+        let mut acc = 0usize;
+        for i in 0..nx {
+            ln.bounds[i] = acc;
+            for st in 0..4 {
+                let c = ln.counts[st * w + i];
+                ln.counts[st * w + i] = acc;
+                acc += c;
+            }
+        }
+        ln.bounds[nx] = acc;
+        for l in 0..LANES {
+            let k = (l & 3) * w + ln.choice[l] as usize;
+            ln.order[ln.counts[k] & M] = l as u16;
+            ln.counts[k] += 1;
+        }
+    }
+
+    /// Gather the orbits into the other set in group order; it becomes the current one.
+    #[inline(always)]
+    fn gather(&self, ln: &mut Lanes) {
+        let (src, dst) = split_sets(&mut ln.sets, ln.cur);
+        for (p, &l) in ln.order.iter().enumerate() {
+            let l = l as usize & M;
+            dst.x[p] = src.x[l];
+            dst.y[p] = src.y[l];
+            dst.z[p] = src.z[l];
+            dst.c[p] = src.c[l];
+        }
+        if self.xaos {
+            for (p, &l) in ln.order.iter().enumerate() {
+                dst.last[p] = src.last[l as usize & M];
+            }
+        }
+        if !ln.clean {
+            for (p, &l) in ln.order.iter().enumerate() {
+                let l = l as usize & M;
+                dst.consec[p] = src.consec[l];
+                dst.step[p] = src.step[l];
+                dst.last[p] = src.last[l];
+            }
+        }
+        ln.cur ^= 1;
+    }
+
+    /// Apply each xform to its group of the current set, noting bad values, hidden points and
+    /// the xform of each place.
+    #[inline(always)]
+    fn apply_groups(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        let dst = &mut ln.sets[ln.cur & 1];
+        for i in 0..self.xforms.len() {
+            let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
+            if end > start {
+                let r = start..end;
+                self.xforms[i].apply_soa(
+                    &mut dst.x[r.clone()],
+                    &mut dst.y[r.clone()],
+                    &mut dst.z[r.clone()],
+                    &mut dst.c[r.clone()],
+                    &mut ln.g,
+                    rng,
+                );
+                ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
+                if self.hides {
+                    if self.xforms[i].hides {
+                        ln.hide[r.clone()].copy_from_slice(&ln.g.hide[..end - start]);
+                    } else {
+                        ln.hide[r.clone()].fill(false);
+                    }
+                }
+                ln.group[r].fill(i as u16);
+            }
+        }
+    }
+
+    /// A step where every orbit is a sample: note the xforms applied and the visibilities.
+    #[inline(always)]
+    fn all_samples(&self, ln: &mut Lanes) {
+        ln.sets[ln.cur & 1].last = ln.group;
+        match self.same_vis {
+            Some(v) => ln.vis = [v; LANES],
+            None => {
+                for (v, &g) in ln.vis.iter_mut().zip(&ln.group) {
+                    *v = self.vis.get(g as usize).copied().unwrap_or(0.0);
+                }
+            }
+        }
+        if self.hides {
+            // A hidden sample counts, and adds nothing.
+            for (v, &h) in ln.vis.iter_mut().zip(&ln.hide) {
+                if h {
+                    *v = 0.0;
+                }
+            }
+        }
+    }
+
+    /// Bad-value retries, step counting, and which points of the step are samples (at most
+    /// `left`). With `direct` the samples get their visibility in `ln.vis` (−1: not a sample);
+    /// otherwise they are copied to `ln.fin` for the final xform and the camera. Returns how
+    /// many were copied, how many samples the step gave and how many bad values it met.
+    #[inline(always)]
+    fn samples_of_step(&self, ln: &mut Lanes, left: u64, direct: bool) -> (usize, u64, u64) {
+        let (dst, src) = split_sets(&mut ln.sets, ln.cur);
+        let (mut nf, mut took, mut bad) = (0usize, 0u64, 0u64);
+        for p in 0..LANES {
+            ln.vis[p] = -1.0;
+            if ln.bad[p] {
+                dst.consec[p] += 1;
+                bad += 1;
+                if dst.consec[p] < 5 {
+                    continue;
+                }
+            }
+            dst.consec[p] = 0;
+            let ch = ln.group[p];
+            dst.last[p] = ch;
+            if dst.step[p] >= 0 {
+                if took < left {
+                    let v = if self.hides && ln.hide[p] {
+                        0.0
+                    } else {
+                        self.xforms[ch as usize].vis
+                    };
+                    took += 1;
+                    if direct {
+                        ln.vis[p] = v;
+                    } else {
+                        let k = nf & M;
+                        ln.fin.x[k] = dst.x[p];
+                        ln.fin.y[k] = dst.y[p];
+                        ln.fin.z[k] = dst.z[p];
+                        ln.fin.c[k] = dst.c[p];
+                        ln.fin_vis[k] = v;
+                        nf += 1;
+                    }
+                }
+            } else {
+                dst.step[p] += 1;
+            }
+        }
+        if !ln.clean && dst.consec.iter().all(|&c| c == 0) && dst.step.iter().all(|&s| s >= 0) {
+            // From now on the counters are not gathered: both sets must read as clean.
+            ln.clean = true;
+            src.consec = [0; LANES];
+            src.step = [0; LANES];
+        } else if ln.clean && dst.consec.iter().any(|&c| c != 0) {
+            ln.clean = false;
+        }
+        (nf, took, bad)
+    }
+
+    /// The first `m` samples of `ln.fin` through the final xform (hidden ones get visibility
+    /// 0) and the camera.
+    #[inline(always)]
+    fn finish_samples(&self, ln: &mut Lanes, m: usize, rng: &mut FastRng) {
+        if let Some(f) = &self.final_xform {
+            if f.opacity >= 1.0 {
+                let fin = &mut ln.fin;
+                f.apply_soa(
+                    &mut fin.x[..m],
+                    &mut fin.y[..m],
+                    &mut fin.z[..m],
+                    &mut fin.c[..m],
+                    &mut ln.g,
+                    rng,
+                );
+                if f.hides {
+                    for (v, &h) in ln.fin_vis[..m].iter_mut().zip(&ln.g.hide[..m]) {
+                        if h {
+                            *v = 0.0;
+                        }
+                    }
+                }
+            } else {
+                Self::final_by_opacity(f, ln, m, rng);
+            }
+        }
+        if let Some(pr) = &self.projection {
+            let fin = &mut ln.fin;
+            for j in 0..m {
+                (fin.x[j], fin.y[j]) = pr.project(fin.x[j], fin.y[j], fin.z[j], rng);
+            }
+        }
+    }
+
+    /// The final xform `f` applied to each of the first `m` samples of `ln.fin` with
+    /// probability = its opacity: the chosen points are compacted, transformed and put back.
+    #[inline(always)]
+    fn final_by_opacity(f: &CompiledXform, ln: &mut Lanes, m: usize, rng: &mut FastRng) {
+        ln.chosen.clear();
+        for j in 0..m {
+            if rng.f01() < f.opacity {
+                ln.chosen.push(j);
+            }
+        }
+        let (fin, t) = (&mut ln.fin, &mut ln.tmp);
+        for (k, &j) in ln.chosen.iter().enumerate() {
+            let (k, j) = (k & M, j & M);
+            t.x[k] = fin.x[j];
+            t.y[k] = fin.y[j];
+            t.z[k] = fin.z[j];
+            t.c[k] = fin.c[j];
+        }
+        let k = ln.chosen.len().min(LANES);
+        f.apply_soa(
+            &mut t.x[..k],
+            &mut t.y[..k],
+            &mut t.z[..k],
+            &mut t.c[..k],
+            &mut ln.g,
+            rng,
+        );
+        if f.hides {
+            for (k, &j) in ln.chosen.iter().enumerate() {
+                if ln.g.hide[k & M] {
+                    ln.fin_vis[j & M] = 0.0;
+                }
+            }
+        }
+        for (k, &j) in ln.chosen.iter().enumerate() {
+            let (k, j) = (k & M, j & M);
+            fin.x[j] = t.x[k];
+            fin.y[j] = t.y[k];
+            fin.z[j] = t.z[k];
+            fin.c[j] = t.c[k];
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::model::{Affine, Flame, Xform};
+    use crate::flame::variations;
+
+    #[test]
+    fn lanes_match_the_scalar_statistics() {
+        // A flame with a non-trivial variation mix: the mean and spread of the plotted points
+        // and colours agree between the scalar and the lane runner.
+        let mut f = Flame::default();
+        let mut a = Xform::linear(Affine::new(0.6, -0.3, 0.4, 0.5, 0.2, -0.1), 1.0, 0.0);
+        a.vars = vec![
+            crate::flame::model::Var::new(variations::SWIRL, 0.6),
+            crate::flame::model::Var::new(variations::POLAR, 0.4),
+        ];
+        let mut b = Xform::linear(Affine::new(-0.5, 0.2, 0.1, 0.7, -0.3, 0.4), 2.0, 1.0);
+        b.vars = vec![crate::flame::model::Var::new(variations::SPHERICAL, 0.8)];
+        b.post = Affine::new(0.9, 0.0, 0.0, 0.9, 0.1, 0.0);
+        f.xforms = vec![a, b];
+        let mut fx = Xform::linear(Affine::new(1.0, 0.1, 0.0, 1.0, 0.0, 0.0), 0.0, 0.5);
+        fx.vars = vec![crate::flame::model::Var::new(variations::SINUSOIDAL, 1.0)];
+        fx.opacity = 0.7;
+        f.final_xform = Some(fx);
+        let ch = Chaos::new(&f).unwrap();
+        let stats = |lanes: bool| {
+            let mut rng = FastRng::new(11);
+            let mut sc = Lanes::new();
+            let (mut n, mut sx, mut sy, mut sc2, mut sxx) = (0.0, 0.0, 0.0, 0.0, 0.0);
+            for _ in 0..40 {
+                // Bounded statistics: the spherical xform gives heavy tails.
+                let mut plot = |x: f64, y: f64, c: f64, _v: f64| {
+                    n += 1.0;
+                    sx += x.clamp(-3.0, 3.0);
+                    sy += y.clamp(-3.0, 3.0);
+                    sc2 += c;
+                    sxx += (x.abs() < 0.5) as u8 as f64;
+                };
+                if lanes {
+                    ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, _zs, cs, vs| {
+                        for j in 0..xs.len() {
+                            if vs[j] >= 0.0 {
+                                plot(xs[j], ys[j], cs[j], vs[j]);
+                            }
+                        }
+                    });
+                } else {
+                    ch.run_sub_batch(10_000, &mut rng, |p, v| plot(p.x, p.y, p.c, v));
+                }
+            }
+            (n, sx / n, sy / n, sc2 / n, sxx / n)
+        };
+        let a = stats(false);
+        let b = stats(true);
+        assert_eq!(a.0, 400_000.0);
+        assert_eq!(b.0, 400_000.0);
+        for (p, q) in [(a.1, b.1), (a.2, b.2), (a.3, b.3), (a.4, b.4)] {
+            assert!((p - q).abs() < 0.01, "{a:?} vs {b:?}");
+        }
+    }
+
+    /// Run the lane runner and bin the plotted points on an 8×8 grid over [−1, 2]²; also the
+    /// mean colour, the number of samples and of bad values.
+    fn lane_grid(ch: &Chaos, seed: u64) -> ([f64; 64], f64, f64, u64) {
+        let mut rng = FastRng::new(seed);
+        let mut ln = Lanes::new();
+        let (mut grid, mut n, mut c) = ([0.0; 64], 0.0, 0.0);
+        let mut bad = 0;
+        for _ in 0..30 {
+            bad += ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, cs, vs| {
+                for j in 0..xs.len() {
+                    if vs[j] >= 0.0 {
+                        assert!(xs[j].is_finite() && ys[j].is_finite());
+                        let cell = |v: f64| (((v + 1.0) / 3.0 * 8.0).clamp(0.0, 7.0)) as usize;
+                        grid[cell(ys[j]) * 8 + cell(xs[j])] += 1.0;
+                        n += 1.0;
+                        c += cs[j];
+                    }
+                }
+            });
+        }
+        (grid.map(|g| g / n), n, c / n, bad)
+    }
+
+    #[test]
+    fn affine_ifs_steps_orbits_in_place_with_the_same_statistics() {
+        // Unequal weights, a colour blend and a linear weight other than 1: the in-place rows
+        // and the grouped general path plot the same distribution.
+        let mut f = Flame::default();
+        for (i, (e, ff, w)) in [(0.0, 0.0, 1.0), (0.5, 0.0, 2.0), (0.25, 0.5, 0.5)]
+            .into_iter()
+            .enumerate()
+        {
+            let mut x = Xform::linear(Affine::new(0.5, 0.1, -0.1, 0.5, e, ff), w, i as f64 / 2.0);
+            x.vars[0].weight = 0.9;
+            x.color_speed = 0.3;
+            f.xforms.push(x);
+        }
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.affine.is_some());
+        let general = Chaos {
+            affine: None,
+            ..Chaos::new(&f).unwrap()
+        };
+        let (a, na, ca, _) = lane_grid(&ch, 3);
+        let (b, nb, cb, _) = lane_grid(&general, 3);
+        assert_eq!((na, nb), (300_000.0, 300_000.0));
+        assert!((ca - cb).abs() < 0.01, "{ca} vs {cb}");
+        let l1: f64 = a.iter().zip(&b).map(|(p, q)| (p - q).abs()).sum();
+        assert!(l1 < 0.02, "cell frequencies differ by {l1}");
+        // A post-affine, a final xform or xaos take the general path.
+        let mut g = f.clone();
+        g.xforms[1].post = Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0);
+        assert!(Chaos::new(&g).unwrap().affine.is_none());
+    }
+
+    #[test]
+    fn orbits_restart_as_often_as_flam3s() {
+        // One xform contracting slowly to the origin: only fresh orbits plot points away from
+        // it. flam3 starts one orbit per sub-batch; the lane runner restarts one orbit per call,
+        // so the share of such points is about the same (long-lived orbits alone: ~20× fewer).
+        let mut f = Flame::default();
+        f.xforms.push(Xform::linear(
+            Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0),
+            1.0,
+            0.0,
+        ));
+        let ch = Chaos::new(&f).unwrap();
+        let (calls, n) = (5000, 200);
+        let mut rng = FastRng::new(8);
+        let (mut far, mut total) = (0.0, 0.0);
+        for _ in 0..calls {
+            ch.run_sub_batch(n, &mut rng, |p, _| {
+                far += (p.x.abs() > 0.01) as u8 as f64;
+                total += 1.0;
+            });
+        }
+        let scalar = far / total;
+        let mut ln = Lanes::new();
+        let (mut far, mut total) = (0.0, 0.0);
+        for _ in 0..calls {
+            ch.run_lanes(n, &mut rng, &mut ln, |xs, _ys, _zs, _cs, vs| {
+                for (x, v) in xs.iter().zip(vs) {
+                    if *v >= 0.0 {
+                        far += (x.abs() > 0.01) as u8 as f64;
+                        total += 1.0;
+                    }
+                }
+            });
+        }
+        let lanes = far / total;
+        assert!(scalar > 0.05, "{scalar}");
+        assert!(
+            (0.5..1.5).contains(&(lanes / scalar)),
+            "{lanes} vs {scalar}"
+        );
+    }
+
+    #[test]
+    fn hidden_samples_count_and_add_nothing() {
+        // crop_stars hides what falls outside its star: those samples come to the origin,
+        // count as samples, and are plotted with visibility 0, in the lanes and the scalar
+        // loop alike.
+        let crop = variations::by_name("crop_stars").unwrap();
+        let mut a = Xform::linear(Affine::new(0.9, 0.3, -0.3, 0.9, 0.2, 0.1), 1.0, 0.0);
+        a.vars = vec![crate::flame::model::Var::new(crop, 1.0)];
+        let mut b = Xform::linear(Affine::new(0.6, 0.0, 0.0, 0.6, -0.3, 0.2), 1.0, 1.0);
+        b.vars = vec![crate::flame::model::Var::new(variations::SPHERICAL, 0.5)];
+        let f = Flame {
+            xforms: vec![a, b],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.hides && ch.xforms[0].hides && !ch.xforms[1].hides);
+        let at_origin = |x: f64, y: f64| x == 0.0 && y == 0.0;
+        let mut rng = FastRng::new(2);
+        let mut ln = Lanes::new();
+        let (mut n, mut hidden) = (0u64, 0u64);
+        for _ in 0..20 {
+            ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs| {
+                for j in 0..xs.len() {
+                    if vs[j] < 0.0 {
+                        continue;
+                    }
+                    n += 1;
+                    if vs[j] == 0.0 {
+                        hidden += 1;
+                        assert!(at_origin(xs[j], ys[j]));
+                    } else {
+                        assert!(!at_origin(xs[j], ys[j]), "a hidden point was drawn");
+                    }
+                }
+            });
+        }
+        assert_eq!(n, 200_000);
+        let (mut m, mut hidden_scalar) = (0u64, 0u64);
+        for _ in 0..20 {
+            ch.run_sub_batch(10_000, &mut rng, |p, v| {
+                m += 1;
+                if v == 0.0 {
+                    hidden_scalar += 1;
+                    assert!(at_origin(p.x, p.y));
+                }
+            });
+        }
+        assert_eq!(m, 200_000);
+        let (fl, fs) = (hidden as f64 / 2e5, hidden_scalar as f64 / 2e5);
+        assert!(fl > 0.05 && (fl - fs).abs() < 0.02, "{fl} vs {fs}");
+    }
+
+    #[test]
+    fn affine_ifs_replaces_bad_values_and_keeps_plotting() {
+        // An expanding map sends orbits past the bad-value limit: they restart at random
+        // points, are counted, and every plotted point is finite.
+        let mut f = Flame::default();
+        f.xforms.push(Xform::linear(
+            Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+            1.0,
+            0.0,
+        ));
+        f.xforms.push(Xform::linear(
+            Affine::new(1e30, 0.0, 0.0, 1e30, 0.0, 0.0),
+            1.0,
+            1.0,
+        ));
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.affine.is_some());
+        let (_, n, _, bad) = lane_grid(&ch, 4);
+        assert_eq!(n, 300_000.0);
+        assert!(bad > 1000, "{bad} bad values");
+    }
+}

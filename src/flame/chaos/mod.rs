@@ -1,0 +1,479 @@
+//! The chaos game: a flame compiled for fast iteration, and the loops that iterate it.
+//!
+//! [`Chaos`] holds the flame's compiled xforms ([`CompiledXform`]), the tables that draw the
+//! next xform (one per xaos row) and the 3-D camera ([`Projection`]). It iterates in two ways:
+//!
+//! - one orbit at a time, flam3's loop ([`Chaos::run_sub_batch`], here), which automatic
+//!   framing and the dimension estimate use;
+//! - [`LANES`] orbits at once ([`Chaos::run_lanes`], the renderer's hot loop): every step
+//!   draws each orbit's xform, groups the orbits by xform and applies each xform to its group
+//!   as arrays. The orbits live in a worker's [`Lanes`] for its whole render.
+//!
+//! The parts: `xform` compiles one xform and applies it to a point; `batch` applies it to a
+//! group of points as arrays; `lanes` holds the orbits of the lane runner and their saved
+//! state; `engine` is the lane runner; `projection` is the 3-D camera.
+
+mod batch;
+mod engine;
+mod lanes;
+mod projection;
+mod xform;
+
+pub use lanes::{LaneState, Lanes};
+pub use projection::Projection;
+pub use xform::{BAD_LIMIT_WIDE, CompiledXform, adjust_opacity};
+
+use crate::flame::model::Flame;
+use crate::flame::rng::FastRng;
+use crate::flame::variations;
+
+/// flam3 `CHOOSE_XFORM_GRAIN`.
+pub const CHOOSE_GRAIN: usize = 16384;
+/// Fuse iterations at the start of every sub-batch (flam3 `FUSE_27`).
+pub const FUSE: i64 = 15;
+/// Samples per sub-batch.
+pub const SUB_BATCH: u64 = 10_000;
+/// Number of independent orbits iterated together by [`Chaos::run_lanes`].
+pub const LANES: usize = 256;
+/// A coordinate beyond this magnitude is a bad value.
+pub const BAD_LIMIT: f64 = 1e10;
+
+/// Why a flame cannot be iterated.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ChaosError {
+    #[error("cannot iterate empty flame: it has no transforms")]
+    NoXforms,
+    #[error("cannot iterate empty flame: all transform weights are 0")]
+    ZeroWeights,
+    #[error("transform {0} has weight {1}; weights must be finite and non-negative")]
+    BadWeight(usize, f64),
+    #[error("transform {0}: xaos row has zero total; at least one reachable transform is needed")]
+    XaosRowZero(usize),
+    #[error("transform {0}: xaos value {1} must be finite and non-negative")]
+    BadXaos(usize, f64),
+}
+/// A point of an orbit: position and colour coordinate.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Pt {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub c: f64,
+}
+/// A flame compiled for the chaos game.
+#[derive(Clone, Debug)]
+pub struct Chaos {
+    pub xforms: Vec<CompiledXform>,
+    pub final_xform: Option<CompiledXform>,
+    /// The 3-D camera, if the flame has one.
+    pub projection: Option<Projection>,
+    /// Row 0: plain weights. Rows 1..=n: xaos rows after xform i − 1 (only when xaos is used),
+    /// CHOOSE_GRAIN entries each, concatenated.
+    tables: Vec<u16>,
+    xaos: bool,
+    /// Plotted visibility of each xform, and the one of all of them when they agree.
+    vis: Vec<f64>,
+    same_vis: Option<f64>,
+    /// Some xform (or the final one) may hide points: hidden samples count but add nothing.
+    hides: bool,
+    /// Every xform is an affine map times `linear` (no post-affine), with no final xform,
+    /// camera or xaos: orbits then need no grouping by xform (see [`AffineStep`]).
+    affine: Option<Vec<AffineStep>>,
+}
+
+/// One linear-only xform as a table row, for stepping orbits in place: the chosen row of each
+/// orbit is read, no orbit moves. The arithmetic is the general path's, in its order.
+#[derive(Clone, Copy, Debug)]
+struct AffineStep {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: f64,
+    e: f64,
+    f: f64,
+    /// Weight of `linear`.
+    w: f64,
+    /// Colour blend c' = sc + keep·c: sc = speed·colour, keep = 1 − speed.
+    sc: f64,
+    keep: f64,
+    bad_limit: f64,
+}
+
+/// Build the 16 384-entry selection table for weights `w`.
+pub fn selection_table(w: &[f64]) -> Box<[u16]> {
+    let n = w.len();
+    let total: f64 = w.iter().sum();
+    let delta = total / CHOOSE_GRAIN as f64;
+    let mut t = vec![0u16; CHOOSE_GRAIN].into_boxed_slice();
+    let mut j = 0usize;
+    let mut acc = w[0];
+    let mut r = 0.0;
+    for slot in t.iter_mut() {
+        while r >= acc && j < n - 1 {
+            j += 1;
+            acc += w[j];
+        }
+        *slot = j as u16;
+        r += delta;
+    }
+    t
+}
+
+impl Chaos {
+    pub fn new(flame: &Flame) -> Result<Self, ChaosError> {
+        let n = flame.xforms.len();
+        if n == 0 {
+            return Err(ChaosError::NoXforms);
+        }
+        for (i, x) in flame.xforms.iter().enumerate() {
+            if !(x.weight.is_finite() && x.weight >= 0.0) {
+                return Err(ChaosError::BadWeight(i, x.weight));
+            }
+        }
+        let weights: Vec<f64> = flame.xforms.iter().map(|x| x.weight).collect();
+        if weights.iter().sum::<f64>() <= 0.0 {
+            return Err(ChaosError::ZeroWeights);
+        }
+        let xforms: Vec<CompiledXform> = flame
+            .xforms
+            .iter()
+            .enumerate()
+            .map(|(i, x)| {
+                let o = match flame.solo_xform {
+                    Some(s) if s < n && s != i => 0.0,
+                    _ => x.opacity,
+                };
+                CompiledXform::new(x, o, true)
+            })
+            .collect();
+        let xaos = flame
+            .xforms
+            .iter()
+            .any(|x| (0..n).any(|j| x.chaos_to(j) != 1.0));
+        let mut tables = selection_table(&weights).into_vec();
+        if xaos {
+            for (i, x) in flame.xforms.iter().enumerate() {
+                let row: Vec<f64> = (0..n)
+                    .map(|j| {
+                        let c = x.chaos_to(j);
+                        if !(c.is_finite() && c >= 0.0) {
+                            return Err(ChaosError::BadXaos(i, c));
+                        }
+                        Ok(weights[j] * c)
+                    })
+                    .collect::<Result<_, _>>()?;
+                if row.iter().sum::<f64>() <= 0.0 {
+                    return Err(ChaosError::XaosRowZero(i));
+                }
+                tables.extend_from_slice(&selection_table(&row));
+            }
+        }
+        let final_xform = flame
+            .final_xform
+            .as_ref()
+            .map(|f| CompiledXform::new(f, f.opacity, true));
+        // flam3 resets points beyond 1e10; Fractorium only NaN. Flames that use a variation
+        // flam3 does not have follow Fractorium.
+        let fractorium = flame
+            .xforms
+            .iter()
+            .chain(flame.final_xform.as_ref())
+            .flat_map(|x| &x.vars)
+            .any(|v| v.weight != 0.0 && !variations::info(v.id).has(variations::flag::FLAM3));
+        let mut xforms = xforms;
+        let mut final_xform = final_xform;
+        if fractorium {
+            for x in xforms.iter_mut().chain(final_xform.as_mut()) {
+                x.bad_limit = BAD_LIMIT_WIDE;
+            }
+        }
+        let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();
+        let affine = (final_xform.is_none() && !xaos && Projection::of(flame).is_none())
+            .then(|| {
+                xforms
+                    .iter()
+                    .map(|x| {
+                        let w = x.linear_only.filter(|_| x.post.is_none())?;
+                        let a = x.coefs;
+                        Some(AffineStep {
+                            a: a.a,
+                            b: a.b,
+                            c: a.c,
+                            d: a.d,
+                            e: a.e,
+                            f: a.f,
+                            w,
+                            sc: x.color_speed * x.color,
+                            keep: 1.0 - x.color_speed,
+                            bad_limit: x.bad_limit,
+                        })
+                    })
+                    .collect::<Option<Vec<_>>>()
+            })
+            .flatten();
+        let hides = xforms.iter().chain(final_xform.as_ref()).any(|x| x.hides);
+        Ok(Chaos {
+            affine,
+            hides,
+            same_vis: vis.iter().all(|&v| v == vis[0]).then_some(vis[0]),
+            vis,
+            xforms,
+            final_xform,
+            projection: Projection::of(flame),
+            tables,
+            xaos,
+        })
+    }
+
+    /// Draw the next xform; `last` is the previously applied xform (None at the start).
+    #[inline(always)]
+    pub fn choose(&self, last: Option<usize>, rng: &mut FastRng) -> usize {
+        let row = match (self.xaos, last) {
+            (true, Some(i)) => i + 1,
+            _ => 0,
+        };
+        let u = rng.u32() as usize & (CHOOSE_GRAIN - 1);
+        self.tables[row * CHOOSE_GRAIN + u] as usize
+    }
+
+    /// Apply the final xform (if any, with its opacity as a probability) to a copy of a point.
+    #[inline(always)]
+    pub fn finalise(&self, p: Pt, rng: &mut FastRng) -> Pt {
+        self.finalise_hiding(p, rng).0
+    }
+
+    /// [`Chaos::finalise`], also saying whether the final xform hid the point.
+    #[inline(always)]
+    pub fn finalise_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
+        match &self.final_xform {
+            Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => {
+                let (q, _, hide) = f.apply_hiding(p, rng);
+                (q, hide)
+            }
+            _ => (p, false),
+        }
+    }
+
+    /// Where a point is plotted: through the 3-D camera, if any (z is kept).
+    #[inline(always)]
+    pub fn project(&self, p: Pt, rng: &mut FastRng) -> Pt {
+        match &self.projection {
+            Some(pr) => {
+                let (x, y) = pr.project(p.x, p.y, p.z, rng);
+                Pt { x, y, ..p }
+            }
+            None => p,
+        }
+    }
+
+    /// A random starting point of an orbit: x, y uniform in [−1, 1], z = 0, colour in [0, 1).
+    #[inline(always)]
+    pub fn start_point(rng: &mut FastRng) -> Pt {
+        let x = rng.f11();
+        let y = rng.f11();
+        let c = rng.f01();
+        Pt { x, y, z: 0.0, c }
+    }
+
+    /// A random start point iterated through the fuse, and the xform applied last.
+    fn fused_start(&self, rng: &mut FastRng) -> (Pt, usize) {
+        let mut p = Self::start_point(rng);
+        let mut last = None;
+        for _ in 0..FUSE {
+            let i = self.choose(last, rng);
+            p = self.xforms[i].apply(p, rng).0;
+            last = Some(i);
+        }
+        (p, last.unwrap_or(0))
+    }
+
+    /// Run one sub-batch of `n` plotted samples. `plot(p, vis)` receives
+    /// every point after the fuse, final xform applied. Returns the number of bad values.
+    #[inline(always)]
+    pub fn run_sub_batch<F: FnMut(Pt, f64)>(&self, n: u64, rng: &mut FastRng, mut plot: F) -> u64 {
+        let mut p = Self::start_point(rng);
+        let mut k: i64 = -FUSE;
+        let mut consec = 0u32;
+        let mut bad = 0u64;
+        let mut last = None;
+        let n = n as i64;
+        while k < n {
+            let i = self.choose(last, rng);
+            let xf = &self.xforms[i];
+            let (np, is_bad, hidden) = xf.apply_hiding(p, rng);
+            p = np;
+            if is_bad {
+                consec += 1;
+                bad += 1;
+                if consec < 5 {
+                    continue;
+                }
+            }
+            consec = 0;
+            last = Some(i);
+            if k >= 0 {
+                // A hidden sample counts, and adds nothing.
+                let (q, fin_hidden) = self.finalise_hiding(p, rng);
+                let v = if hidden || fin_hidden { 0.0 } else { xf.vis };
+                plot(self.project(q, rng), v);
+            }
+            k += 1;
+        }
+        bad
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::model::{Affine, Xform};
+
+    #[test]
+    fn selection_table_matches_weights() {
+        let t = selection_table(&[1.0, 3.0]);
+        let ones = t.iter().filter(|&&v| v == 1).count();
+        assert_eq!(ones, 16384 * 3 / 4);
+        assert_eq!(t[0], 0);
+        assert_eq!(t[16383], 1);
+        // A tiny weight may get no entry (flam3 quantisation); never out of range.
+        let t = selection_table(&[1.0, 1e-9, 1.0]);
+        assert!(t.iter().all(|&v| v < 3));
+    }
+
+    #[test]
+    fn empty_and_bad_flames_are_rejected() {
+        let mut f = Flame::default();
+        assert_eq!(Chaos::new(&f).unwrap_err(), ChaosError::NoXforms);
+        f.xforms.push(Xform::linear(Affine::IDENTITY, 0.0, 0.0));
+        assert_eq!(Chaos::new(&f).unwrap_err(), ChaosError::ZeroWeights);
+        f.xforms[0].weight = -1.0;
+        assert!(matches!(Chaos::new(&f), Err(ChaosError::BadWeight(0, _))));
+        f.xforms[0].weight = 1.0;
+        f.xforms[0].chaos = vec![0.0];
+        assert_eq!(Chaos::new(&f).unwrap_err(), ChaosError::XaosRowZero(0));
+    }
+
+    #[test]
+    fn sierpinski_points_stay_on_the_attractor() {
+        let mut f = Flame::default();
+        for (e, ff) in [(0.0, 0.0), (0.5, 0.0), (0.25, 0.5)] {
+            f.xforms.push(Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, e, ff),
+                1.0,
+                0.0,
+            ));
+        }
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(5);
+        let mut count = 0;
+        let bad = ch.run_sub_batch(10_000, &mut rng, |p, vis| {
+            let (x, y) = (p.x, p.y);
+            assert!((-1e-6..=1.0 + 1e-6).contains(&x) && (-1e-6..=1.0 + 1e-6).contains(&y));
+            assert_eq!(vis, 1.0);
+            count += 1;
+        });
+        assert_eq!(count, 10_000);
+        assert_eq!(bad, 0);
+    }
+
+    #[test]
+    fn xaos_restricts_transitions() {
+        // Xform 0 may only go to 1, 1 only to 0: colours alternate exactly.
+        let mut f = Flame::default();
+        let mut a = Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0), 1.0, 0.0);
+        a.color_speed = 1.0;
+        a.chaos = vec![0.0, 1.0];
+        let mut b = Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, 0.5, 0.0), 1.0, 1.0);
+        b.color_speed = 1.0;
+        b.chaos = vec![1.0, 0.0];
+        f.xforms = vec![a, b];
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(9);
+        let mut prev: Option<f64> = None;
+        ch.run_sub_batch(1000, &mut rng, |p, _| {
+            let c = p.c;
+            if let Some(p) = prev {
+                assert_ne!(p, c);
+            }
+            prev = Some(c);
+        });
+    }
+
+    #[test]
+    fn bad_values_are_retried() {
+        // A map that expands by 10⁶ escapes past 1e10 within two steps: the point is
+        // replaced by a random point and nothing non-finite or huge is ever plotted.
+        let f = Flame {
+            xforms: vec![Xform::linear(
+                Affine::new(1e6, 0.0, 0.0, 1e6, 0.0, 0.0),
+                1.0,
+                0.0,
+            )],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(1);
+        let bad = ch.run_sub_batch(100, &mut rng, |p, _| {
+            assert!(p.x.abs() <= BAD_LIMIT && p.y.abs() <= BAD_LIMIT);
+        });
+        assert!(bad > 0);
+    }
+
+    #[test]
+    fn a_bad_value_restarts_in_the_plane() {
+        // A 3-D point that escapes is replaced by a random point with z = 0: a NaN or huge z
+        // carried over would poison every later step of 3-D variations (tanq, sinhq …).
+        let mut x = Xform::linear(Affine::new(1e11, 0.0, 0.0, 1e11, 0.0, 0.0), 1.0, 0.0);
+        x.vars = vec![crate::flame::model::Var::new(
+            variations::by_name("linear3D").unwrap(),
+            1.0,
+        )];
+        let f = Flame {
+            xforms: vec![x],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(3);
+        // An infinite x is bad for every flame (linear3D is not flam3's, so 1e10 is not).
+        let p = Pt {
+            x: f64::INFINITY,
+            y: 0.5,
+            z: f64::NAN,
+            c: 0.0,
+        };
+        let (q, bad) = ch.xforms[0].apply(p, &mut rng);
+        assert!(bad);
+        assert_eq!(q.z, 0.0);
+        assert!(q.x.abs() <= 1.0 && q.y.abs() <= 1.0);
+        // Lanes: plotted points after restarts stay finite.
+        let mut seen = 0;
+        let mut ln = Lanes::new();
+        ch.run_lanes(
+            2000,
+            &mut rng,
+            &mut ln,
+            |xs: &[f64], ys: &[f64], zs: &[f64], _, vs: &[f64]| {
+                for k in (0..xs.len()).filter(|&k| vs[k] >= 0.0) {
+                    assert!(xs[k].is_finite() && ys[k].is_finite() && zs[k].is_finite());
+                    seen += 1;
+                }
+            },
+        );
+        assert!(seen > 0);
+    }
+
+    #[test]
+    fn flames_of_fractorium_variations_only_reset_nan() {
+        // flam3 resets coordinates beyond 1e10; Fractorium only NaN (and ugnis infinity).
+        let mut f = Flame {
+            xforms: vec![Xform::linear(Affine::IDENTITY, 1.0, 0.0)],
+            ..Flame::default()
+        };
+        assert_eq!(Chaos::new(&f).unwrap().xforms[0].bad_limit, BAD_LIMIT);
+        f.xforms[0].vars.push(crate::flame::model::Var::new(
+            variations::by_name("tanq").unwrap(),
+            0.5,
+        ));
+        assert_eq!(Chaos::new(&f).unwrap().xforms[0].bad_limit, BAD_LIMIT_WIDE);
+    }
+}

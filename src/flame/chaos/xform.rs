@@ -1,0 +1,198 @@
+//! One xform compiled for the chaos game: its variations prepared and sorted by form
+//! (`pre_`, regular, `post_`), what they need per point, its colour and opacity, and its
+//! application to one point.
+
+use super::{BAD_LIMIT, Pt};
+use crate::flame::model::{Affine, Xform};
+use crate::flame::rng::FastRng;
+use crate::flame::variations::{self, Acc, Form, Prepared, VarIn};
+
+/// One xform ready for iteration.
+#[derive(Clone, Debug)]
+pub struct CompiledXform {
+    pub coefs: Affine,
+    pub post: Option<Affine>,
+    /// `pre_` variations, in order: each replaces (or moves) the transformed point.
+    pub pre_vars: Vec<Prepared>,
+    /// Regular variations: their outputs are summed.
+    pub vars: Vec<Prepared>,
+    /// `post_` variations, in order: each replaces (or moves) the summed point.
+    pub post_vars: Vec<Prepared>,
+    /// Per-point quantities the regular variations read ([`variations::need`] bits).
+    pub needs: u8,
+    pub color: f64,
+    pub color_speed: f64,
+    /// How much of a colour set by a variation is kept (Fractorium's `direct_color`).
+    pub direct_color: f64,
+    /// Some variation sets the colour.
+    pub sets_color: bool,
+    /// Plotted visibility o^(log2 10).
+    pub vis: f64,
+    pub opacity: f64,
+    /// A coordinate of larger magnitude (or NaN) is a bad value: [`BAD_LIMIT`] or
+    /// [`BAD_LIMIT_WIDE`].
+    pub bad_limit: f64,
+    /// The weight of `linear` when it is the xform's only variation (no `pre_`/`post_`
+    /// forms): the lane runner then skips the general variation machinery.
+    pub linear_only: Option<f64>,
+    /// Some variation may hide the point ([`variations::flag::HIDES`]).
+    pub hides: bool,
+}
+
+/// |v| ≤ limit; false for NaN (which fails every comparison).
+#[inline(always)]
+pub(super) fn within(v: f64, limit: f64) -> bool {
+    v.abs() <= limit
+}
+
+/// Largest magnitude of a good coordinate for flames of Fractorium's variations: Fractorium
+/// only treats NaN as a bad value (its trig and quaternion variations bring far-away points
+/// back), so only NaN and infinity are bad there.
+pub const BAD_LIMIT_WIDE: f64 = f64::MAX;
+
+/// flam3 `adjust_percentage`: vis = o^(log₂10), with 0 ↦ 0.
+pub fn adjust_opacity(o: f64) -> f64 {
+    if o <= 0.0 {
+        0.0
+    } else {
+        o.powf(std::f64::consts::LOG2_10)
+    }
+}
+impl CompiledXform {
+    pub fn new(x: &Xform, opacity: f64, compat: bool) -> Self {
+        let mut pre_vars = Vec::new();
+        let mut vars = Vec::new();
+        let mut post_vars = Vec::new();
+        let mut needs = 0u8;
+        let mut sets_color = false;
+        for v in &x.vars {
+            if v.weight == 0.0 {
+                continue;
+            }
+            let p =
+                Prepared::with_texts(v.id, v.form, v.weight, &v.params, &v.texts, x.coefs, compat);
+            sets_color |= p.def.has(variations::flag::SETS_COLOR);
+            match v.form {
+                Form::Pre => pre_vars.push(p),
+                Form::Regular => {
+                    needs |= p.def.needs;
+                    vars.push(p);
+                }
+                Form::Post => post_vars.push(p),
+            }
+        }
+        let linear_only = match (&pre_vars[..], &vars[..], &post_vars[..]) {
+            ([], [v], []) if v.id == variations::LINEAR && !sets_color => Some(v.w),
+            _ => None,
+        };
+        let hides = pre_vars
+            .iter()
+            .chain(&vars)
+            .chain(&post_vars)
+            .any(|v| v.def.has(variations::flag::HIDES));
+        CompiledXform {
+            linear_only,
+            hides,
+            coefs: x.coefs,
+            post: if x.post.is_identity() {
+                None
+            } else {
+                Some(x.post)
+            },
+            pre_vars,
+            vars,
+            post_vars,
+            needs,
+            color: x.color,
+            color_speed: x.color_speed,
+            direct_color: x.direct_color,
+            sets_color,
+            vis: adjust_opacity(opacity),
+            opacity,
+            bad_limit: BAD_LIMIT,
+        }
+    }
+
+    /// Apply to a point. Returns the new point and whether it was a bad value (in which case
+    /// the point is a uniform random point of [−1, 1]² and the colour is still updated).
+    #[inline(always)]
+    pub fn apply(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
+        let (q, bad, _) = self.apply_hiding(p, rng);
+        (q, bad)
+    }
+
+    /// [`CompiledXform::apply`], also saying whether a variation hid the point (the orbit
+    /// goes on from it, the sample is not drawn).
+    #[inline(always)]
+    pub fn apply_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
+        let blended = self.color_speed * self.color + (1.0 - self.color_speed) * p.c;
+        let (tx, ty) = self.coefs.apply(p.x, p.y);
+        let mut acc = Acc {
+            color: blended,
+            ..Acc::default()
+        };
+        let mut tr = [tx, ty, p.z];
+        for v in &self.pre_vars {
+            v.apply_pre(&mut tr, &mut acc, blended, rng);
+        }
+        if !self.vars.is_empty() {
+            let t = VarIn::new(tr[0], tr[1], tr[2], blended, self.needs, false);
+            acc.x = 0.0;
+            acc.y = 0.0;
+            acc.z = 0.0;
+            for v in &self.vars {
+                let o = v.eval(&t, &mut acc, rng);
+                acc.x += o[0];
+                acc.y += o[1];
+                acc.z += o[2];
+            }
+        } else if !self.pre_vars.is_empty() {
+            (acc.x, acc.y, acc.z) = (tr[0], tr[1], tr[2]);
+        }
+        for v in &self.post_vars {
+            v.apply_post(&mut acc, blended, rng);
+        }
+        if let Some(post) = &self.post {
+            (acc.x, acc.y) = post.apply(acc.x, acc.y);
+        }
+        let mut nc = blended;
+        if self.sets_color {
+            nc = blended + self.direct_color * (acc.color - blended);
+            if nc.is_nan() {
+                nc = 0.0;
+            }
+        }
+        if !(within(acc.x, self.bad_limit) && within(acc.y, self.bad_limit)) {
+            let q = Pt {
+                x: rng.f11(),
+                y: rng.f11(),
+                z: 0.0,
+                c: nc,
+            };
+            return (q, true, acc.hide);
+        }
+        (
+            Pt {
+                x: acc.x,
+                y: acc.y,
+                z: acc.z,
+                c: nc,
+            },
+            false,
+            acc.hide,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn opacity_adjustment_oracles() {
+        assert!((adjust_opacity(0.5) - 0.1).abs() < 1e-12);
+        assert!((adjust_opacity(0.25) - 0.01).abs() < 1e-12);
+        assert_eq!(adjust_opacity(1.0), 1.0);
+        assert_eq!(adjust_opacity(0.0), 0.0);
+    }
+}
