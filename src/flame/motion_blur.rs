@@ -149,6 +149,74 @@ mod tests {
         assert!(frame_at(&cps[..1], 5.0, 1000).is_still());
     }
 
+    /// A flame whose every point lands on (0, 0): one bright dot, moved by the camera.
+    fn dot_at(time: f64, center_x: f64) -> Flame {
+        let mut f = Flame {
+            width: 64,
+            height: 16,
+            scale: 64.0,
+            quality: 50.0,
+            center: [center_x, 0.0],
+            estimator_radius: 0.0,
+            filter: 0.2,
+            xforms: vec![Xform::linear(
+                Affine::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+                1.0,
+                0.5,
+            )],
+            ..Flame::default()
+        };
+        f.palette.colors = vec![[1.0, 1.0, 1.0, 1.0]; 256];
+        f.anim.time = time;
+        f.anim.temporal_samples = 64;
+        f
+    }
+
+    fn lit_columns(img: &image::DynamicImage) -> Vec<u32> {
+        let rgba = img.to_rgba8();
+        (0..rgba.width())
+            .filter(|&x| (0..rgba.height()).any(|y| rgba.get_pixel(x, y)[0] > 40))
+            .collect()
+    }
+
+    #[test]
+    fn a_moving_camera_smears_a_dot_over_the_exposure() {
+        use crate::flame::render::{RenderOptions, Renderer};
+        let opts = RenderOptions {
+            threads: 2,
+            ..RenderOptions::default()
+        };
+        let never = std::sync::atomic::AtomicBool::new(false);
+        let render = |m: &MotionFrame| {
+            let mut r = Renderer::motion(m, &opts).unwrap();
+            assert!(r.run_all(2, &never, |_| {}));
+            r.finish()
+        };
+        // The camera moves 0.25 units (16 pixels) a frame to the right: the dot moves left.
+        let cps = [dot_at(0.0, -1.0), dot_at(8.0, 1.0)];
+        let cols = lit_columns(&render(&frame_at(&cps, 4.0, 1000)));
+        let (first, last) = (cols[0], *cols.last().unwrap());
+        assert!(
+            (22..=26).contains(&first) && (38..=42).contains(&last),
+            "{cols:?}"
+        );
+        assert_eq!(
+            cols.len() as u32,
+            last - first + 1,
+            "one unbroken streak: {cols:?}"
+        );
+        // Without motion the dot stays a dot.
+        let still = [dot_at(0.0, 0.0), dot_at(8.0, 0.0)];
+        let m = frame_at(&still, 4.0, 1000);
+        assert!(m.is_still());
+        assert!(lit_columns(&render(&m)).len() <= 3);
+        // The same frame renders the same bits whatever the passes.
+        let once = render(&frame_at(&cps, 4.0, 1000));
+        let mut r = Renderer::motion(&frame_at(&cps, 4.0, 1000), &opts).unwrap();
+        assert!(r.run_all(7, &never, |_| {}));
+        assert_eq!(r.finish().to_rgba8().as_raw(), once.to_rgba8().as_raw());
+    }
+
     #[test]
     fn an_exp_filter_weights_the_late_sub_frames() {
         let mut a = cp(0.0, 0.0, 2.0);

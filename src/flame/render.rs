@@ -20,6 +20,7 @@
 //! (histogram to image) and `strips` (renders larger than memory). Their public items are
 //! re-exported here.
 
+use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use image::DynamicImage;
@@ -32,6 +33,7 @@ use crate::flame::geometry::Geometry;
 use crate::flame::histogram::{Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::model::Flame;
+use crate::flame::motion_blur::MotionFrame;
 use crate::flame::plot::{Pending, accumulate, iterate_3d, iterate_into};
 use crate::flame::rng::FastRng;
 use crate::flame::state::{Part, RenderState};
@@ -101,6 +103,8 @@ pub struct Renderer {
     geom: Geometry,
     /// Output rows this render develops (all, or the strip's).
     out_rows: std::ops::Range<usize>,
+    /// The histogram rows of a render in strips (`None`: all).
+    window: Option<std::ops::Range<usize>>,
     palette: PlotPalette,
     hists: Vec<Histogram>,
     /// Each worker's orbits, kept between passes.
@@ -120,6 +124,54 @@ pub struct Renderer {
     samples_done: u64,
     badvals: u64,
     cancelled: bool,
+    /// Set for a motion-blurred frame: the sub-frames its sub-batches draw from.
+    motion: Option<Arc<Motion>>,
+}
+
+/// The sub-frames of a motion-blurred frame, prepared for the renderer.
+struct Motion {
+    /// Each sub-frame's flame and weight.
+    subframes: Vec<(Flame, f64)>,
+    /// The sub-batches of the whole frame in order: (sub-frame, samples).
+    batches: Vec<(u32, u32)>,
+    /// The temporal filter's mean weight (the log scale divides the density by it).
+    mean_weight: f64,
+}
+
+/// What a worker thread draws a motion-blurred frame's sub-batch with: the sub-frame's xforms,
+/// camera and weighted palette.
+struct SubFrameTools {
+    index: u32,
+    n_xforms: usize,
+    chaos: Chaos,
+    geom: Geometry,
+    palette: PlotPalette,
+}
+
+impl SubFrameTools {
+    fn new(m: &Motion, index: u32, window: Option<std::ops::Range<usize>>) -> SubFrameTools {
+        let (flame, weight) = &m.subframes[index as usize];
+        // Checked when the render was prepared.
+        let chaos = Chaos::new(flame).expect("sub-frame flames were validated");
+        let mut geom = Geometry::new(flame, None);
+        if let Some(rows) = window {
+            geom = geom.window(rows);
+        }
+        let mut palette = PlotPalette::new(flame);
+        let w = *weight as f32;
+        for c in &mut palette.colors {
+            for v in c.iter_mut() {
+                *v *= w;
+            }
+        }
+        SubFrameTools {
+            index,
+            n_xforms: flame.xforms.len(),
+            chaos,
+            geom,
+            palette,
+        }
+    }
 }
 
 impl Renderer {
@@ -217,6 +269,7 @@ impl Renderer {
             ifs3d,
             geom,
             out_rows,
+            window: plan.strip.as_ref().map(|s| s.hist_rows.clone()),
             hists,
             lanes,
             logs,
@@ -230,8 +283,68 @@ impl Renderer {
             samples_done: 0,
             badvals: 0,
             cancelled: false,
+            motion: None,
             flame,
         })
+    }
+
+    /// Prepare a motion-blurred frame (see [`crate::flame::motion_blur::frame_at`]): every
+    /// sub-frame's samples drawn from its own flame into one histogram, colours weighted by the
+    /// temporal filter, developed with the frame's settings. A frame in which nothing moves is
+    /// rendered as a still. Saved render states and recolouring are not available for moving
+    /// frames.
+    pub fn motion(frame: &MotionFrame, opts: &RenderOptions) -> Result<Renderer, RenderError> {
+        Self::motion_with_plan(frame, opts, &Plan::default())
+    }
+
+    /// As [`Renderer::motion`] for one part of the samples and/or one strip of the image.
+    pub fn motion_with_plan(
+        frame: &MotionFrame,
+        opts: &RenderOptions,
+        plan: &Plan,
+    ) -> Result<Renderer, RenderError> {
+        if frame.is_still() {
+            return Self::with_plan(&frame.develop, opts, plan);
+        }
+        // Every sub-frame must be a flame the chaos game can run.
+        let checked: Result<Vec<()>, RenderError> = frame
+            .subframes
+            .par_iter()
+            .map(|s| {
+                validate_settings(&s.flame)?;
+                Chaos::new(&s.flame)?;
+                Ok(())
+            })
+            .collect();
+        checked?;
+        let mut r = Self::build(&frame.develop, opts, plan, &mut Spare::default())?;
+        let mut batches = Vec::new();
+        for (i, s) in frame.subframes.iter().enumerate() {
+            let mut left = s.samples;
+            while left > 0 {
+                let n = left.min(SUB_BATCH);
+                batches.push((i as u32, n as u32));
+                left -= n;
+            }
+        }
+        let total: u64 = frame.total_samples().max(1);
+        if batches.is_empty() {
+            batches.push((0, 1));
+        }
+        r.total = total;
+        r.part_total = r.part.samples(total);
+        r.batches_total = r.part.local_batches(batches.len() as u64);
+        r.logs = None;
+        r.motion = Some(Arc::new(Motion {
+            subframes: frame
+                .subframes
+                .iter()
+                .map(|s| (s.flame.clone(), s.weight))
+                .collect(),
+            batches,
+            mean_weight: frame.mean_weight,
+        }));
+        Ok(r)
     }
 
     /// Continue a saved render with `add_quality` more samples per pixel. `hist` holds the
@@ -377,6 +490,8 @@ impl Renderer {
         let end = (start + n_batches).min(self.batches_total);
         let threads = self.hists.len() as u64;
         let (chaos, geom, pal) = (&self.chaos, &self.geom, &self.palette);
+        let motion = self.motion.as_deref();
+        let window = self.window.clone();
         let ifs3d = self.ifs3d.as_ref();
         let (seed, total, part) = (self.seed, self.total, self.part);
         let mut logs: Vec<Option<&mut Vec<Pending>>> = match &mut self.logs {
@@ -403,6 +518,8 @@ impl Renderer {
                 let first = start + (t as u64 + threads - start % threads) % threads;
                 let mut j = first;
                 let mut buf = Vec::with_capacity(SUB_BATCH as usize);
+                // The sub-frame this thread drew its last sub-batch from (motion blur).
+                let mut tools: Option<SubFrameTools> = None;
                 if let Some(log) = log.as_deref_mut() {
                     // The pass's samples, without the copies of a doubling vector.
                     log.reserve(per_thread as usize);
@@ -414,7 +531,21 @@ impl Renderer {
                     // Each sub-batch has its own stream, named by its index in the
                     // whole render (the same for every part and strip layout).
                     let g = part.global(j);
-                    let n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
+                    let mut n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
+                    let (mut chaos, mut geom, mut pal) = (chaos, geom, pal);
+                    if let Some(m) = motion {
+                        let (s, k) = m.batches[g as usize];
+                        n = k as u64;
+                        if tools.as_ref().is_none_or(|t| t.index != s) {
+                            let t = SubFrameTools::new(m, s, window.clone());
+                            if tools.as_ref().is_none_or(|o| o.n_xforms != t.n_xforms) {
+                                lanes.forget_last_xforms();
+                            }
+                            tools = Some(t);
+                        }
+                        let t = tools.as_ref().expect("just set");
+                        (chaos, geom, pal) = (&t.chaos, &t.geom, &t.palette);
+                    }
                     let mut rng = FastRng::for_stream(seed, g);
                     bad += match ifs3d {
                         None => {
@@ -472,11 +603,14 @@ impl Renderer {
     /// Density used by the log scaling: the flame's quality·4^zoom when done, otherwise the
     /// samples actually done per pixel (so that previews are correctly exposed).
     fn density(&self) -> f64 {
+        // A motion-blurred frame's hits are weighted by the temporal filter: on average by its
+        // mean weight.
+        let weight = self.motion.as_ref().map_or(1.0, |m| m.mean_weight);
         if self.complete() {
-            return self.flame.quality * 4f64.powf(self.flame.zoom);
+            return self.flame.quality * 4f64.powf(self.flame.zoom) * weight;
         }
         let px = self.flame.width as f64 * self.flame.height as f64;
-        (self.samples_done.max(1) as f64) / px
+        (self.samples_done.max(1) as f64) / px * weight
     }
 
     fn merged(&self) -> Histogram {
@@ -525,7 +659,7 @@ impl Renderer {
 
     /// True when the samples are kept and [`Renderer::recolor`] can be used.
     pub fn can_recolor(&self) -> bool {
-        self.logs.is_some() && self.ifs3d.is_none()
+        self.logs.is_some() && self.ifs3d.is_none() && self.motion.is_none()
     }
 
     /// Change the palette (and palette mode) by re-accumulating the kept samples: no iteration.
@@ -572,7 +706,7 @@ impl Renderer {
     }
 
     fn state(&self) -> Option<RenderState> {
-        if self.cancelled {
+        if self.cancelled || self.motion.is_some() {
             return None;
         }
         let mut flame = self.flame.clone();

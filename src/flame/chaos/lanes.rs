@@ -143,6 +143,15 @@ impl Lanes {
         Some(l)
     }
 
+    /// Forget which xform each orbit applied last, so that the next step draws from the flame's
+    /// plain weights (for orbits handed to a flame whose xforms are not the ones they ran
+    /// with: the sub-frames of a motion-blurred frame).
+    pub fn forget_last_xforms(&mut self) {
+        for set in &mut self.sets {
+            set.last = [u16::MAX; LANES];
+        }
+    }
+
     pub fn new() -> Box<Lanes> {
         Box::new(Lanes {
             sets: [Orbits::new(), Orbits::new()],
