@@ -231,10 +231,15 @@ pub fn threads(requested: usize) -> usize {
     t.count
 }
 
-/// A rayon pool of a resolved thread count.
+/// A rayon pool of the thread count asked for (0: all cores), resolved by [`threads`].
 pub fn pool(requested: usize) -> Result<rayon::ThreadPool> {
+    pool_of(threads(requested))
+}
+
+/// A rayon pool of exactly `count` threads (a count [`threads`] has resolved).
+pub fn pool_of(count: usize) -> Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
-        .num_threads(threads(requested))
+        .num_threads(count)
         .build()
         .context("cannot start worker threads")
 }

@@ -214,10 +214,7 @@ pub fn run(a: RandomArgs) -> Result<()> {
             || "use a smaller --size or fewer --threads".into(),
         )?;
     }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .context("cannot start worker threads")?;
+    let pool = super::pool_of(threads)?;
     let work = a.count as u64 * if a.thumbs.is_some() { 2 } else { 1 };
     let pb = super::progress_bar(work, "random flames");
     let defaults = NewFlame::default();

@@ -106,10 +106,7 @@ pub fn load_flames(input: &Path, palettes: Option<&PathBuf>, strict: bool) -> Re
         },
         ..ReadOptions::default()
     };
-    let parsed = match io::kind_of(input) {
-        FileKind::Ifs => io::ifs_flames(input)?,
-        _ => io::read_flames(input, &opts)?,
-    };
+    let parsed = io::read_flames(input, &opts)?;
     for w in &parsed.warnings {
         if strict && w.code == "XML020" {
             bail!("{w} (--strict)");
