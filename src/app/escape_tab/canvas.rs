@@ -9,7 +9,7 @@ use crate::escape::{Family, View};
 impl EscapeTab {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
-        let (rect, resp, ppp, size) = crate::app::canvas_area(ui);
+        let (rect, resp, ppp, size) = crate::app::widgets::canvas_area(ui);
         let warped = matches!(self.doc.params.family, Family::WarpedJulia(_));
         // The document follows the panel's size, keeping the world width.
         if !warped && [self.doc.width, self.doc.height] != size {
