@@ -16,6 +16,7 @@ pub mod palettes;
 pub mod png;
 pub mod render_state;
 pub mod scene;
+pub mod strip_png;
 pub mod svg;
 pub mod ugr;
 pub mod xml;
