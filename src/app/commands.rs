@@ -1,15 +1,14 @@
 //! What every command does. File commands (New, Open, Save, Save As, Export) and Undo/Redo
 //! act on the current tab's document; the flame commands act on the flame tab.
 
-
 use eframe::egui;
 
 use super::actions::{Action, VARIATION_MENU};
 use super::dialogs::Purpose;
 use super::explore_tab::Topic;
-use super::shell::Pending;
 use super::help::HelpPage;
 use super::options_dialog::OptionsTab;
+use super::shell::Pending;
 use super::shell::{Tab, UgnisApp};
 use crate::flame::random::VariationMode;
 use crate::io;

@@ -27,7 +27,7 @@ pub fn run(a: ConvertArgs) -> Result<()> {
         if io::view_of(ki) != View::Flame || ki == FileKind::Unknown {
             bail!("{}: cannot convert this file to flames", a.input.display());
         }
-        let p = io::read_flame_file(&a.input, &Default::default())?;
+        let p = super::read_flame_file(&a.input, &Default::default())?;
         for w in &p.warnings {
             eprintln!("{w}");
         }
