@@ -162,7 +162,7 @@ impl EscapeTab {
     ) {
         if let Some(d) = &mut self.main {
             d.request(&self.doc.params, self.doc.view, render_size);
-            d.poll(&ctx, "escape-main");
+            d.poll(ctx, "escape-main");
             if let Some(t) = &d.texture {
                 let img_rect = match (d.shown_view, warped) {
                     // Until the new frame arrives, draw the old one where its view now lies.

@@ -112,9 +112,8 @@ impl SceneTab {
                 self.selected_object = i;
             }
         }
-        if self.scene.objects.get(self.selected_object).is_none() {
-            return None;
-        }
+        // Nothing more without a selected object.
+        self.scene.objects.get(self.selected_object)?;
         let req = self
             .texture_choice(ui, flame, escape)
             .then_some(SceneRequest::TextureImage);

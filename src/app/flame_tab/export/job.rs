@@ -144,7 +144,7 @@ fn run(
     progress: &dyn Fn(f64),
 ) -> Result<Finished, String> {
     let mut r = match start(source, s, threads, control)? {
-        Started::Whole(r) => r,
+        Started::Whole(r) => *r,
         Started::Strips(f, opts, fit) => {
             return run_strips(&f, &opts, &fit, s, control, cancel, progress);
         }
@@ -181,7 +181,7 @@ fn run(
 /// How an export starts: a renderer for the whole picture, or a flame too large for memory
 /// that is rendered in strips.
 enum Started {
-    Whole(Renderer),
+    Whole(Box<Renderer>),
     Strips(Box<Flame>, RenderOptions, strips::Fit),
 }
 
@@ -219,9 +219,9 @@ fn start(
                 }
                 return Ok(Started::Strips(f, opts, fit));
             }
-            Ok(Started::Whole(
+            Ok(Started::Whole(Box::new(
                 Renderer::new(&f, &opts).map_err(|e| e.to_string())?,
-            ))
+            )))
         }
         Source::State(path, add) => {
             control.update(|st| st.loading = true);
@@ -234,7 +234,7 @@ fn start(
             };
             let r = rd.renderer(add, &opts, None)?;
             control.update(|st| st.loading = false);
-            Ok(Started::Whole(r))
+            Ok(Started::Whole(Box::new(r)))
         }
     }
 }
