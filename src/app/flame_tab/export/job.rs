@@ -6,7 +6,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-use super::{ExportSettings, Finished, JobStatus, quality_text};
+use super::resume::quality_text;
+use super::settings::ExportSettings;
 use crate::app::worker::{TaskWorker, task_worker};
 use crate::flame::render::{
     MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Renderer, quality_limit, short_num,
@@ -15,6 +16,47 @@ use crate::flame::strips;
 use crate::flame::{Flame, OutputFormat};
 use crate::io;
 use crate::io::render_state::StateReader;
+
+/// What a running export has done, for the window and the tests.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct JobStatus {
+    /// The histogram of a saved state is being read.
+    pub loading: bool,
+    /// The quality asked for (with a resumed state: its quality plus the added quality).
+    pub asked: f64,
+    /// The quality the samples done amount to.
+    pub quality_done: f64,
+    pub samples_done: u64,
+    pub samples_per_second: f64,
+    /// The asked quality is reached and the render goes on.
+    pub refining: bool,
+    /// Pictures written by "Save now".
+    pub saves: u32,
+    /// The last thing worth telling: a save, a failed save.
+    pub note: String,
+    /// Rendered in this many strips (0 or 1: the whole image at once); the picture is written
+    /// when the last one is done.
+    pub strips: usize,
+}
+
+/// How a finished export ended.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Finished {
+    pub quality_done: f64,
+    pub samples_done: u64,
+    /// The state file written, if any.
+    pub state: Option<PathBuf>,
+    /// Why refining ended by itself (the quality limit), if it did.
+    pub limit: Option<String>,
+}
+
+/// What the running export's window asks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JobAction {
+    SaveNow,
+    Stop,
+    Cancel,
+}
 
 /// Flags and status shared by the window and the render thread.
 #[derive(Default)]

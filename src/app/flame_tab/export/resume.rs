@@ -1,8 +1,8 @@
-//! A saved render state to continue in the Export dialog, as its file describes it.
+//! A saved render state to continue in the Export dialog, as its file describes it, and how
+//! qualities are written for people.
 
 use std::path::{Path, PathBuf};
 
-use super::quality_text;
 use crate::flame::render::quality_of_samples;
 use crate::io::render_state::StateReader;
 
@@ -63,5 +63,14 @@ impl ResumeInfo {
             quality_text(self.quality),
             self.samples_done
         )
+    }
+}
+
+/// A quality for people: whole numbers as they are, others with one decimal.
+pub fn quality_text(q: f64) -> String {
+    if (q - q.round()).abs() < 1e-9 {
+        format!("{q:.0}")
+    } else {
+        format!("{q:.1}")
     }
 }

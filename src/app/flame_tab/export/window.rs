@@ -5,7 +5,9 @@ use std::path::PathBuf;
 
 use eframe::egui;
 
-use super::{ExportJob, ExportSettings, JobAction, quality_text, state_path};
+use super::job::{ExportJob, JobAction};
+use super::resume::quality_text;
+use super::settings::{ExportSettings, state_path};
 use crate::app::a11y::named;
 use crate::flame::render::{MAX_QUALITY, MIN_QUALITY};
 
