@@ -93,8 +93,15 @@ fn run_gui(file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
 }
 
 #[cfg(not(feature = "gui"))]
-fn run_gui(_file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
-    anyhow::bail!(
-        "this build has no GUI (built without the 'gui' feature); use a subcommand, see --help"
-    )
+fn run_gui(file: Option<std::path::PathBuf>) -> anyhow::Result<()> {
+    match file {
+        Some(f) => anyhow::bail!(
+            "this build has no GUI (built without the 'gui' feature); read {} with `{}`",
+            f.display(),
+            cli::command_for(&f)
+        ),
+        None => anyhow::bail!(
+            "this build has no GUI (built without the 'gui' feature); use a subcommand, see --help"
+        ),
+    }
 }

@@ -1,4 +1,4 @@
-//! Random flames (issue #5): symmetry shows in the picture, the quality check's pass rate over
+//! Random flames: symmetry shows in the picture, the quality check's pass rate over
 //! 1000 seeds, batches are reproducible, transform counts stay in range.
 
 use rayon::prelude::*;

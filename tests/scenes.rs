@@ -1,4 +1,4 @@
-//! Textured Bézier scenes (issue #7): the jug against its committed reference image, the
+//! Textured Bézier scenes: the jug against its committed reference image, the
 //! convex-hull silhouette check, every example renders, and projections differ as they should.
 
 mod common;

@@ -1,16 +1,14 @@
 //! What every command does. File commands (New, Open, Save, Save As, Export) and Undo/Redo
 //! act on the current tab's document; the flame commands act on the flame tab.
 
-use std::path::Path;
-
 use eframe::egui;
 
 use super::actions::{Action, VARIATION_MENU};
 use super::dialogs::Purpose;
 use super::explore_tab::Topic;
-use super::files::Pending;
 use super::help::HelpPage;
 use super::options_dialog::OptionsTab;
+use super::shell::Pending;
 use super::shell::{Tab, UgnisApp};
 use crate::flame::random::VariationMode;
 use crate::io;
@@ -177,27 +175,6 @@ impl UgnisApp {
             self.explore
                 .notices
                 .status("Explore saves only L-system pictures (L-systems › Export)");
-        }
-    }
-
-    /// Open a file of the recent files list in the tab it belongs to.
-    pub fn open_recent(&mut self, path: &Path) {
-        match io::kind_of(path) {
-            io::FileKind::EscapeView => {
-                self.tab = Tab::Escape;
-                self.file_chosen(Purpose::OpenView, path.to_path_buf());
-            }
-            _ if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("toml")) =>
-            {
-                self.tab = Tab::Scene;
-                self.file_chosen(Purpose::OpenScene, path.to_path_buf());
-            }
-            _ => {
-                self.tab = Tab::Flame;
-                self.guard_dirty(Pending::Open(path.to_path_buf()), "opening another file");
-            }
         }
     }
 }

@@ -1,27 +1,16 @@
 //! Opening and saving: the file chooser for every purpose, what happens with the chosen file,
-//! and the "save changes?" question before anything would discard unsaved work.
+//! the view a file opens in (by [`io::view_of`], for Open, Recent files, dropped files and
+//! the file given at start), and the "save changes?" question before anything would discard
+//! unsaved work.
 
 use std::path::{Path, PathBuf};
 
 use super::dialogs::{FileBrowser, Purpose};
-use super::explore_tab::ExploreRequest;
-use super::options::Options;
-use super::shell::{Tab, UgnisApp};
-use crate::flame::{Affine, Flame};
-use crate::io;
-
-/// Something to do once the user has answered "save changes?".
-#[derive(Clone, Debug)]
-pub(super) enum Pending {
-    Exit,
-    /// File › New in the flame tab.
-    New,
-    Open(PathBuf),
-    BrowseOpen,
-    /// Replace the open file by these flames (a new, unsaved document of this name) and show
-    /// the flame tab.
-    Flames(Vec<Flame>, String),
-}
+use super::explore_tab::{ExploreRequest, Topic};
+use super::loading::{Loaded, load_any};
+use super::notice::Notice;
+use super::shell::{Pending, Tab, UgnisApp};
+use crate::io::{self, View};
 
 impl UgnisApp {
     /// Do `p` now, or after asking about unsaved changes of the open file.
@@ -145,14 +134,73 @@ impl UgnisApp {
         ));
     }
 
-    /// Open a flame, IFS or view file, replacing the document (the caller asked about
-    /// unsaved changes).
-    pub fn open_path(&mut self, path: &Path) {
-        if io::kind_of(path) == io::FileKind::EscapeView {
-            self.file_chosen(Purpose::OpenView, path.to_path_buf());
-            self.tab = Tab::Escape;
-            return;
+    /// Open `path` in the view that opens its kind ([`io::view_of`]), as Recent files and
+    /// dropped files do. Flames replace the open flames after the question about unsaved
+    /// changes (`what` says what would discard them).
+    pub fn open_file(&mut self, path: &Path, what: &str) {
+        match io::view_of(io::kind_of(path)) {
+            View::Flame => {
+                self.tab = Tab::Flame;
+                self.guard_dirty(Pending::Open(path.to_path_buf()), what);
+            }
+            view => self.open_in(view, path),
         }
+    }
+
+    /// Open `path` in the view that opens its kind now (for flames the caller asked about
+    /// unsaved changes), as File › Open does.
+    pub fn open_path(&mut self, path: &Path) {
+        self.open_in(io::view_of(io::kind_of(path)), path);
+    }
+
+    /// Open `path` in `view` now, showing the view; a document that opens is remembered in
+    /// the recent files.
+    pub(super) fn open_in(&mut self, view: View, path: &Path) {
+        let document = matches!(
+            view,
+            View::Flame | View::Escape | View::Scene | View::LSystem
+        );
+        if self.load_into(view, path) && document {
+            self.remember(path);
+        }
+    }
+
+    /// Open `path` in `view` and show it; true when it opened. Failures are told in the
+    /// view's message box.
+    pub(super) fn load_into(&mut self, view: View, path: &Path) -> bool {
+        match view {
+            View::Flame => {
+                self.tab = Tab::Flame;
+                self.open_flames(path)
+            }
+            View::Escape => {
+                self.tab = Tab::Escape;
+                self.escape.open(path)
+            }
+            View::Scene => {
+                self.tab = Tab::Scene;
+                self.scene.open(path)
+            }
+            View::LSystem => {
+                self.tab = Tab::Explore;
+                self.explore.topic = Topic::LSystems;
+                let n = self.explore.lsystem.open(path);
+                let opened = matches!(n, Notice::Status(_));
+                self.explore.notices.push(n);
+                opened
+            }
+            View::Gradients => self.load_gradients(path),
+            View::GradientFromImage => self.gradient_from_image(path),
+            View::RenderState => {
+                self.tab = Tab::Flame;
+                self.flame.open_resume_dialog(path);
+                true
+            }
+        }
+    }
+
+    /// Replace the open flames by the flames of `path`; true when it opened.
+    fn open_flames(&mut self, path: &Path) -> bool {
         match load_any(path, &self.options) {
             Ok(Loaded {
                 flames,
@@ -174,9 +222,54 @@ impl UgnisApp {
                 if !warnings.is_empty() {
                     self.flame.notices.message("Warnings", warnings.join("\n"));
                 }
-                self.remember(path);
+                true
             }
-            Err(e) => self.flame.notices.message("Cannot open", e),
+            Err(e) => {
+                self.flame.notices.message("Cannot open", e);
+                false
+            }
+        }
+    }
+
+    /// Add the gradients of a gradient file to the gradient list and apply the first.
+    fn load_gradients(&mut self, path: &Path) -> bool {
+        match io::read_gradients(path) {
+            Ok(p) => {
+                let n = p.value.len();
+                if let Some(first) = p.value.first().cloned() {
+                    self.flame.apply_gradient(first);
+                }
+                self.flame.gradients.add(p.value);
+                self.flame.gradients.open = true;
+                self.flame
+                    .notices
+                    .status(format!("Loaded {n} gradient(s) from {}", path.display()));
+                true
+            }
+            Err(e) => {
+                self.flame
+                    .notices
+                    .message("Cannot load gradient", e.to_string());
+                false
+            }
+        }
+    }
+
+    /// Make a gradient of an image's colours, add it to the gradient list and apply it.
+    fn gradient_from_image(&mut self, path: &Path) -> bool {
+        match io::image_in::gradient_from_image(path, 1) {
+            Ok(g) => {
+                self.flame.gradients.add(vec![g.clone()]);
+                self.flame.apply_gradient(g);
+                self.flame.gradients.open = true;
+                true
+            }
+            Err(e) => {
+                self.flame
+                    .notices
+                    .message("Cannot read the image", e.to_string());
+                false
+            }
         }
     }
 
@@ -206,44 +299,18 @@ impl UgnisApp {
                     self.allow_close = true;
                 }
             }
-            Purpose::LoadGradient => match io::read_gradients(&path) {
-                Ok(p) => {
-                    let n = p.value.len();
-                    if let Some(first) = p.value.first().cloned() {
-                        self.flame.apply_gradient(first);
-                    }
-                    self.flame.gradients.add(p.value);
-                    self.flame.gradients.open = true;
-                    self.flame
-                        .notices
-                        .status(format!("Loaded {n} gradient(s) from {}", path.display()));
-                }
-                Err(e) => self
-                    .flame
-                    .notices
-                    .message("Cannot load gradient", e.to_string()),
-            },
-            Purpose::GradientFromImage => match io::image_in::gradient_from_image(&path, 1) {
-                Ok(g) => {
-                    self.flame.gradients.add(vec![g.clone()]);
-                    self.flame.apply_gradient(g);
-                    self.flame.gradients.open = true;
-                }
-                Err(e) => self
-                    .flame
-                    .notices
-                    .message("Cannot read the image", e.to_string()),
-            },
+            Purpose::LoadGradient => {
+                self.load_gradients(&path);
+            }
+            Purpose::GradientFromImage => {
+                self.gradient_from_image(&path);
+            }
             Purpose::Export => {
                 if let Some(s) = &mut self.flame.export_dialog {
                     s.path = path;
                 }
             }
-            Purpose::OpenView => {
-                if self.escape.open(&path) {
-                    self.remember(&path);
-                }
-            }
+            Purpose::OpenView => self.open_in(View::Escape, &path),
             Purpose::SaveView => {
                 let p = with_ext(path, "esc");
                 if self.escape.save(&p) {
@@ -251,11 +318,7 @@ impl UgnisApp {
                 }
             }
             Purpose::ExportEscape => self.escape.export(with_ext(path, "png")),
-            Purpose::OpenScene => {
-                if self.scene.open(&path) {
-                    self.remember(&path);
-                }
-            }
+            Purpose::OpenScene => self.open_in(View::Scene, &path),
             Purpose::SaveScene => {
                 let p = with_ext(path, "toml");
                 if self.scene.save(&p) {
@@ -264,76 +327,13 @@ impl UgnisApp {
             }
             Purpose::SceneTexture => self.scene.set_image_texture(&path),
             Purpose::ExportScene => self.scene.export(with_ext(path, "png")),
-            Purpose::OpenLSystem => {
-                let n = self.explore.lsystem.open(&path);
-                self.explore.notices.push(n);
-            }
+            Purpose::OpenLSystem => self.open_in(View::LSystem, &path),
             Purpose::ExportLSystem => {
                 let n = self.explore.lsystem.export(with_ext(path, "svg"));
                 self.explore.notices.push(n);
             }
             Purpose::BoxCountImage => self.explore.dimension.count_image(&path),
-            Purpose::ResumeState => {
-                self.tab = Tab::Flame;
-                self.flame.open_resume_dialog(&path);
-            }
-        }
-    }
-}
-
-/// Load flames from any supported file, with the Options' defaults for IFS files.
-pub fn load_any(path: &Path, options: &Options) -> Result<Loaded, String> {
-    let p = match io::kind_of(path) {
-        io::FileKind::Ifs => io::ifs_flames_with(path, &options.new_flame()),
-        _ => io::read_flames(path, &Default::default()),
-    }
-    .map_err(|e| e.to_string())?;
-    if p.value.is_empty() {
-        return Err(format!("{}: no flames", path.display()));
-    }
-    let mut flames = p.value;
-    for f in &mut flames {
-        keep_foreign_weights(f);
-    }
-    // Attributes of other programs are kept and written back: worth a status line, not a
-    // message box that must be dismissed before anything else.
-    let (notes, warnings): (Vec<_>, Vec<_>) = p
-        .warnings
-        .iter()
-        .partition(|w| INFORMATIONAL.contains(&w.code));
-    Ok(Loaded {
-        flames,
-        warnings: warnings.iter().map(|w| w.to_string()).collect(),
-        notes: notes.iter().map(|w| w.to_string()).collect(),
-    })
-}
-
-/// Reader diagnostics that lose nothing (kept and written back unchanged).
-const INFORMATIONAL: &[&str] = &["XML021"];
-
-/// The flames of a file with what reading them had to say.
-pub struct Loaded {
-    pub flames: Vec<Flame>,
-    /// Shown in a message box.
-    pub warnings: Vec<String>,
-    /// Shown in the status line.
-    pub notes: Vec<String>,
-}
-
-/// A flame from another program keeps its own weights: triangle edits re-derive weights from
-/// the areas only when the file asks for it or the weights already follow the areas.
-fn keep_foreign_weights(f: &mut Flame) {
-    if f.auto_weights.is_none() {
-        let maps: Vec<Affine> = f.xforms.iter().map(|x| x.coefs).collect();
-        let rule = Flame::determinant_weights(&maps);
-        let total: f64 = f.xforms.iter().map(|x| x.weight).sum();
-        let follows = total > 0.0
-            && f.xforms
-                .iter()
-                .zip(&rule)
-                .all(|(x, w)| (x.weight / total - w).abs() < 1e-6);
-        if !follows {
-            f.auto_weights = Some(false);
+            Purpose::ResumeState => self.open_in(View::RenderState, &path),
         }
     }
 }

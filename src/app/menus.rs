@@ -6,11 +6,8 @@ use std::path::PathBuf;
 use eframe::egui;
 
 use super::actions::{self, Action, MENU, MENUS, VARIATION_MENU};
-use super::dialogs::Purpose;
-use super::files::Pending;
 use super::shell::{Tab, UgnisApp};
 use crate::flame::random::VariationMode;
-use crate::io;
 
 impl UgnisApp {
     /// Shortcuts, pasted flames and dropped files.
@@ -59,15 +56,7 @@ impl UgnisApp {
                 .collect()
         });
         if let Some(p) = dropped.into_iter().next() {
-            match io::kind_of(&p) {
-                io::FileKind::Ugr | io::FileKind::Map | io::FileKind::Ggr => {
-                    self.file_chosen(Purpose::LoadGradient, p)
-                }
-                io::FileKind::Jpeg | io::FileKind::Gif | io::FileKind::Bmp => {
-                    self.file_chosen(Purpose::GradientFromImage, p)
-                }
-                _ => self.guard_dirty(Pending::Open(p), "opening the dropped file"),
-            }
+            self.open_file(&p, "opening the dropped file");
         }
     }
 
@@ -198,7 +187,7 @@ impl UgnisApp {
             self.act(&ctx, a);
         }
         if let Some(p) = recent {
-            self.open_recent(&p);
+            self.open_file(&p, "opening another file");
         }
     }
 

@@ -5,7 +5,8 @@
 //! * [`shell`] — the window: the options, the four tabs, message boxes, the file chooser and
 //!   the "save changes?" question. [`menus`] draws its menu bar, toolbar and status bar and
 //!   handles shortcuts, pasted flames and dropped files; [`actions`] lists every command with
-//!   its menu and shortcut; [`files`] opens and saves.
+//!   its menu and shortcut; [`files`] opens and saves, every file in the view
+//!   [`crate::io::view_of`] names, with the flames read by `loading.rs`.
 //! * One folder per tab, each owning its document, background worker and panels:
 //!   [`flame_tab`] (flames: file and batch, live preview, triangle editor, gradient,
 //!   mutations, export), [`escape_tab`] (escape-time fractals), [`scene_tab`] (textured
@@ -15,7 +16,8 @@
 //!   the Help menu's windows.
 //! * Shared pieces: [`worker`] (the one background worker: newest job wins, cancel,
 //!   progress, join on drop), [`notice`] (status lines and message boxes), [`options`] (the
-//!   persisted settings and their dialog), [`dialogs`] (file browser, message and confirm).
+//!   persisted settings and their dialog), [`dialogs`] (file browser, message and confirm),
+//!   `widgets.rs` (the picture area of the escape-time, scene and Explore tabs).
 
 pub mod a11y;
 pub mod actions;
@@ -26,12 +28,14 @@ pub mod explore_tab;
 pub mod files;
 pub mod flame_tab;
 pub mod help;
+mod loading;
 pub mod menus;
 pub mod notice;
 pub mod options;
 pub mod options_dialog;
 pub mod scene_tab;
 pub mod shell;
+mod widgets;
 pub mod worker;
 
 use std::path::PathBuf;
@@ -70,20 +74,4 @@ pub fn run(file: Option<PathBuf>) -> Result<(), eframe::Error> {
             Ok(Box::new(app))
         }),
     )
-}
-
-/// The rest of the panel as an interactive picture area: its rectangle, its response, the
-/// pixels per point and its size in device pixels (at least 16×16).
-pub(crate) fn canvas_area(
-    ui: &mut eframe::egui::Ui,
-) -> (eframe::egui::Rect, eframe::egui::Response, f32, [u32; 2]) {
-    use eframe::egui::{Sense, Vec2};
-    let avail = ui.available_size().max(Vec2::splat(32.0));
-    let (rect, resp) = ui.allocate_exact_size(avail, Sense::click_and_drag());
-    let ppp = ui.ctx().pixels_per_point();
-    let size = [
-        ((rect.width() * ppp) as u32).max(16),
-        ((rect.height() * ppp) as u32).max(16),
-    ];
-    (rect, resp, ppp, size)
 }

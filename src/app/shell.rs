@@ -10,16 +10,17 @@ use eframe::egui;
 use super::dialogs::{self, Confirm, FileBrowser, Purpose};
 use super::escape_tab::{EscapeRequest, EscapeTab};
 use super::explore_tab::ExploreTab;
-use super::files::{Loaded, Pending, load_any};
 use super::flame_tab::first_flame::striking_flame;
 use super::flame_tab::{FlameRequest, FlameTab};
 use super::help::{self, HelpPage};
+use super::loading::{Loaded, load_any};
 use super::options::Options;
 use super::options_dialog::{self, OptionsTab};
 use super::scene_tab::{SceneRequest, SceneTab};
 use super::worker::{Repaint, repaint_of};
+use crate::flame::Flame;
 use crate::flame::random::{self, VariationMode};
-use crate::io;
+use crate::io::{self, View};
 
 /// How the application starts.
 pub enum Start {
@@ -36,6 +37,19 @@ pub enum Tab {
     Escape,
     Scene,
     Explore,
+}
+
+/// Something to do once the user has answered "save changes?".
+#[derive(Clone, Debug)]
+pub(super) enum Pending {
+    Exit,
+    /// File › New in the flame tab.
+    New,
+    Open(PathBuf),
+    BrowseOpen,
+    /// Replace the open file by these flames (a new, unsaved document of this name) and show
+    /// the flame tab.
+    Flames(Vec<Flame>, String),
 }
 
 /// The application.
@@ -73,99 +87,67 @@ pub(super) fn seed_from_time() -> u64 {
         .map_or(1, |d| d.as_nanos() as u64)
 }
 
+/// The flames to start with, their file and a status note; what went wrong is added to
+/// `messages`.
+fn start_flames(
+    start: Start,
+    options: &Options,
+    messages: &mut Vec<(String, String)>,
+) -> (Vec<Flame>, Option<PathBuf>, Option<String>) {
+    let random_flame = |seed: u64| {
+        let opts = options.random_options(VariationMode::default());
+        vec![random::generate(seed, &opts, &options.new_flame()).flame]
+    };
+    match start {
+        Start::Flames(f) if !f.is_empty() => (f, None, None),
+        Start::Flames(_) => (random_flame(1), None, None),
+        Start::Random(seed) => (vec![striking_flame(seed, options)], None, None),
+        Start::File(p) => match load_any(&p, options) {
+            Ok(Loaded {
+                flames,
+                warnings,
+                notes,
+            }) => {
+                if !warnings.is_empty() {
+                    messages.push(("Warnings".to_string(), warnings.join("\n")));
+                }
+                (flames, Some(p), notes.into_iter().next())
+            }
+            Err(e) => {
+                messages.push(("Cannot open".to_string(), e));
+                (random_flame(1), None, None)
+            }
+        },
+    }
+}
+
 impl UgnisApp {
     /// A new application. With `ctx` the background renderers start (the live preview and the
     /// thumbnails); without it (tests) nothing renders.
+    ///
+    /// A file to start with opens in the view that opens its kind ([`io::view_of`]): flames
+    /// are the flame document, any other file opens beside a random flame.
     pub fn new(options: Options, start: Start, ctx: Option<egui::Context>) -> UgnisApp {
-        let mut messages = Vec::new();
-        let mut start_note = None;
-        // A view file opens in the escape-time tab, a scene in the scene tab and an L-system
-        // file in Explore (each next to a random flame).
-        let mut escape_start = None;
-        let mut other_start: Option<(Tab, PathBuf)> = None;
-        let start = match start {
-            Start::File(p) if io::kind_of(&p) == io::FileKind::LSystem => {
-                other_start = Some((Tab::Explore, p));
-                Start::Random(seed_from_time())
-            }
-            Start::File(p)
-                if p.extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case("toml")) =>
-            {
-                other_start = Some((Tab::Scene, p));
-                Start::Random(seed_from_time())
-            }
-            Start::File(p) if io::kind_of(&p) == io::FileKind::EscapeView => {
-                match io::escape_view::read(&p) {
-                    Ok(v) => escape_start = Some((v.value, p)),
-                    Err(e) => messages.push(("Cannot open".to_string(), e.to_string())),
-                }
-                Start::Random(seed_from_time())
-            }
-            s => s,
-        };
-        let defaults = options.new_flame();
-        let random_flame = |seed: u64| {
-            let opts = options.random_options(VariationMode::default());
-            vec![random::generate(seed, &opts, &defaults).flame]
-        };
-        let (flames, path) = match start {
-            Start::Flames(f) if !f.is_empty() => (f, None),
-            Start::Flames(_) => (random_flame(1), None),
-            Start::Random(seed) => (vec![striking_flame(seed, &options)], None),
-            Start::File(p) => match load_any(&p, &options) {
-                Ok(Loaded {
-                    flames,
-                    warnings,
-                    notes,
-                }) => {
-                    if !warnings.is_empty() {
-                        messages.push(("Warnings".to_string(), warnings.join("\n")));
-                    }
-                    start_note = notes.into_iter().next();
-                    (flames, Some(p))
-                }
-                Err(e) => {
-                    messages.push(("Cannot open".to_string(), e));
-                    (random_flame(1), None)
-                }
+        let (start, other) = match start {
+            Start::File(p) => match io::view_of(io::kind_of(&p)) {
+                View::Flame => (Start::File(p), None),
+                view => (Start::Random(seed_from_time()), Some((view, p))),
             },
+            s => (s, None),
         };
+        let mut messages = Vec::new();
+        let (flames, path, start_note) = start_flames(start, &options, &mut messages);
         let mut flame = FlameTab::new(flames, path, ctx.as_ref(), seed_from_time(), &options);
         if let Some(n) = start_note {
             flame.notices.status(n);
         }
-        let mut escape = EscapeTab::new(ctx.as_ref());
-        let tab = match escape_start {
-            Some((d, p)) => {
-                escape.doc = d;
-                escape.path = Some(p);
-                Tab::Escape
-            }
-            None => Tab::Flame,
-        };
-        let mut scene = SceneTab::new(ctx.as_ref());
-        let mut explore = ExploreTab::new(ctx.as_ref());
-        let tab = match other_start {
-            Some((Tab::Scene, p)) => {
-                scene.open(&p);
-                Tab::Scene
-            }
-            Some((_, p)) => {
-                let n = explore.lsystem.open(&p);
-                explore.notices.push(n);
-                explore.topic = super::explore_tab::Topic::LSystems;
-                Tab::Explore
-            }
-            None => tab,
-        };
-        UgnisApp {
+        let mut app = UgnisApp {
+            escape: EscapeTab::new(ctx.as_ref()),
+            scene: SceneTab::new(ctx.as_ref()),
+            explore: ExploreTab::new(ctx.as_ref()),
             options,
-            tab,
+            tab: Tab::Flame,
             flame,
-            escape,
-            scene,
-            explore,
             show_toolbar: true,
             show_status: true,
             browser: None,
@@ -180,7 +162,11 @@ impl UgnisApp {
             persist: false,
             ctx,
             frame_log: std::env::var_os("UGNIS_FRAME_TIMES").map(|_| Vec::new()),
+        };
+        if let Some((view, p)) = other {
+            app.load_into(view, &p);
         }
+        app
     }
 
     /// Wakes the UI from background threads.

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::{Result, bail};
 use clap::Args;
 
-use ugnis::io::{self, FileKind};
+use ugnis::io::{self, FileKind, View};
 
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
@@ -23,51 +23,41 @@ fn is_flames(k: FileKind) -> bool {
 pub fn run(a: ConvertArgs) -> Result<()> {
     let (ki, ko) = (io::kind_of(&a.input), io::kind_of(&a.output));
     if is_flames(ko) {
-        let mut root: Option<String> = None;
-        let flames = match ki {
-            FileKind::Ifs => {
-                let p = io::ifs_flames(&a.input)?;
-                for w in &p.warnings {
-                    eprintln!("{w}");
-                }
-                let mut flames = Vec::new();
-                for mut f in p.value {
-                    if f.ifs3d.is_some() && ko != FileKind::Ifs {
-                        eprintln!(
-                            "warning: skipping '{}': 3-D IFS entries cannot be represented as flames",
-                            f.name
-                        );
-                        continue;
-                    }
-                    // Frame now, so other programs get a camera.
-                    if f.ifs3d.is_none() {
-                        ugnis::flame::framing::apply_auto_frame(&mut f);
-                    }
-                    flames.push(f);
-                }
-                if flames.is_empty() {
-                    bail!("{}: nothing to convert", a.input.display());
-                }
-                flames
+        // Any file the flame editor opens, but not one of unknown kind.
+        if io::view_of(ki) != View::Flame || ki == FileKind::Unknown {
+            bail!("{}: cannot convert this file to flames", a.input.display());
+        }
+        let p = super::read_flame_file(&a.input, &Default::default())?;
+        for w in &p.warnings {
+            eprintln!("{w}");
+        }
+        let from_ifs = ki == FileKind::Ifs;
+        let mut flames = Vec::new();
+        for mut f in p.value.flames {
+            if f.ifs3d.is_some() && ko != FileKind::Ifs {
+                eprintln!(
+                    "warning: skipping '{}': 3-D IFS entries cannot be represented as flames",
+                    f.name
+                );
+                continue;
             }
-            FileKind::Fla | FileKind::FlameXml | FileKind::Png => {
-                let p = io::read_flame_file(&a.input, &Default::default())?;
-                for w in &p.warnings {
-                    eprintln!("{w}");
-                }
-                if !p.value.name.is_empty() {
-                    root = Some(p.value.name.clone());
-                }
-                p.value.flames
+            // IFS entries have no camera: frame them now, so other programs get one.
+            if from_ifs && f.ifs3d.is_none() {
+                ugnis::flame::framing::apply_auto_frame(&mut f);
             }
-            _ => bail!("{}: cannot convert this file to flames", a.input.display()),
-        };
-        let name = root.unwrap_or_else(|| {
-            a.output
-                .file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default()
-        });
+            flames.push(f);
+        }
+        if from_ifs && flames.is_empty() {
+            bail!("{}: nothing to convert", a.input.display());
+        }
+        let name = Some(p.value.name)
+            .filter(|n| !n.is_empty())
+            .unwrap_or_else(|| {
+                a.output
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default()
+            });
         for w in io::write_flames(&a.output, &name, &flames)? {
             eprintln!("warning: {w}");
         }

@@ -85,7 +85,7 @@ pub fn run(a: InfoArgs) -> Result<()> {
     };
     // Written at once; a reader that stops early (`| head -1`) ends the output quietly.
     let mut out = String::new();
-    if path.extension().is_some_and(|e| e == "ugnis-state") {
+    if io::kind_of(path) == FileKind::RenderState {
         return describe_state(path);
     }
     match io::kind_of(path) {
@@ -122,12 +122,13 @@ pub fn run(a: InfoArgs) -> Result<()> {
             }
         }
         _ => {
-            let p = io::read_flames(path, &Default::default())?;
+            let p = super::read_flame_file(path, &Default::default())?;
             for w in &p.warnings {
                 eprintln!("{w}");
             }
-            let _ = writeln!(out, "{}: {} flame(s)", path.display(), p.value.len());
-            for f in &p.value {
+            let flames = &p.value.flames;
+            let _ = writeln!(out, "{}: {} flame(s)", path.display(), flames.len());
+            for f in flames {
                 let _ = writeln!(
                     out,
                     "  {:<24} {}x{}  {} xforms{}  variations: {}",

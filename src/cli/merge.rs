@@ -1,7 +1,6 @@
 //! `ugnis merge`: sum the histograms of saved render parts, then density estimation and tone
 //! mapping once.
 
-use std::io::BufWriter;
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
@@ -11,8 +10,8 @@ use ugnis::flame::OutputFormat;
 use ugnis::flame::render::{RenderOptions, develop_rows, geometry_of};
 use ugnis::flame::state::RenderState;
 use ugnis::flame::strips;
-use ugnis::io::atomic::AtomicFile;
-use ugnis::io::render_state::{StateReader, StateWriter};
+use ugnis::io::render_state::StateReader;
+use ugnis::io::strip_png::StripFiles;
 use ugnis::io::{self, FileKind};
 
 /// Most states one merge reads.
@@ -116,38 +115,15 @@ pub fn run(a: MergeArgs) -> Result<()> {
     if whole_bmp && k > 1 {
         bail!("a merge in strips writes PNG only (BMP needs the whole image in memory)");
     }
-    let mut png_file = match &a.output {
-        Some(o) if !whole_bmp => Some(AtomicFile::create(o).with_context(|| cannot(o))?),
-        _ => None,
-    };
-    let mut png = match (&mut png_file, &a.output) {
-        (Some(f), Some(o)) => {
-            let mut meta = io::png::PngMeta::for_flame(&flame);
-            meta.samples = Some(merged.samples_done);
-            Some(
-                io::png::PngStream::new(
-                    f.file().try_clone()?,
-                    flame.width,
-                    flame.height,
-                    format,
-                    &meta,
-                )
-                .with_context(|| cannot(o))?,
-            )
-        }
-        _ => None,
-    };
-    let mut state_file = match &a.save_state {
-        Some(p) => Some(AtomicFile::create(p).with_context(|| cannot(p))?),
-        None => None,
-    };
-    let mut state_w = match (&mut state_file, &a.save_state) {
-        (Some(f), Some(p)) => Some(
-            StateWriter::new(BufWriter::new(f.file().try_clone()?), &merged)
-                .with_context(|| cannot(p))?,
-        ),
-        _ => None,
-    };
+    let mut files = StripFiles::new();
+    if let Some(o) = a.output.as_ref().filter(|_| !whole_bmp) {
+        let mut meta = io::png::PngMeta::for_flame(&flame);
+        meta.samples = Some(merged.samples_done);
+        files = files.with_png(o, (flame.width, flame.height), format, &meta)?;
+    }
+    if let Some(p) = &a.save_state {
+        files = files.with_state(p, Some(&merged))?;
+    }
     let pb = super::progress_bar(k as u64, "merging");
     for strip in &plan {
         super::check_interrupted()?;
@@ -161,37 +137,24 @@ pub fn run(a: MergeArgs) -> Result<()> {
             let h = r.read_rows(rows.clone())?;
             sum.add(&h);
         }
-        if let (Some(w), Some(p)) = (&mut state_w, &a.save_state) {
-            let core = &strip.core_rows;
-            let (lo, hi) = (
-                (core.start - rows.start) * geom.bw,
-                (core.end - rows.start) * geom.bw,
-            );
-            w.write_rows(&sum.data[lo..hi]).with_context(|| cannot(p))?;
-        }
-        if a.output.is_some() {
+        let core = &strip.core_rows;
+        let (lo, hi) = (
+            (core.start - rows.start) * geom.bw,
+            (core.end - rows.start) * geom.bw,
+        );
+        files.write_state(&merged, &sum.data[lo..hi])?;
+        if let Some(o) = &a.output {
             let g = geom.window(rows.clone());
             let img = develop_rows(&flame, &g, &sum, density, format, strip.out_rows.clone());
-            if let (Some(p), Some(o)) = (&mut png, &a.output) {
-                p.write_rows(&img).with_context(|| cannot(o))?;
-            } else if let Some(o) = &a.output {
+            if files.has_png() {
+                files.write_image(&img)?;
+            } else {
                 io::bmp::save(o, &img).with_context(|| cannot(o))?;
             }
         }
         pb.inc(1);
     }
     pb.finish_and_clear();
-    if let Some(w) = state_w {
-        w.finish()?;
-    }
-    if let (Some(f), Some(p)) = (state_file, &a.save_state) {
-        f.commit().with_context(|| cannot(p))?;
-    }
-    if let Some(p) = png {
-        p.finish()?;
-    }
-    if let (Some(f), Some(o)) = (png_file, &a.output) {
-        f.commit().with_context(|| cannot(o))?;
-    }
+    files.finish()?;
     Ok(())
 }

@@ -26,6 +26,9 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 use indicatif::{ProgressBar, ProgressStyle};
+use ugnis::io::diag::Parsed;
+use ugnis::io::flam3_xml::{FlameFile, ReadOptions};
+use ugnis::io::{self, View};
 
 /// How progress is shown on stderr.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -231,12 +234,44 @@ pub fn threads(requested: usize) -> usize {
     t.count
 }
 
-/// A rayon pool of a resolved thread count.
+/// A rayon pool of the thread count asked for (0: all cores), resolved by [`threads`].
 pub fn pool(requested: usize) -> Result<rayon::ThreadPool> {
+    pool_of(threads(requested))
+}
+
+/// A rayon pool of exactly `count` threads (a count [`threads`] has resolved).
+pub fn pool_of(count: usize) -> Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
-        .num_threads(threads(requested))
+        .num_threads(count)
         .build()
         .context("cannot start worker threads")
+}
+
+/// The command that reads `path`, by the view that opens its kind ([`io::view_of`]): for
+/// messages about a file given to a command that does not read it.
+pub fn command_for(path: &Path) -> String {
+    let p = path.display();
+    match io::view_of(io::kind_of(path)) {
+        View::Flame => format!("ugnis render {p} -o OUT.png"),
+        View::Escape => format!("ugnis escape --view {p} -o OUT.png"),
+        View::Scene => format!("ugnis scene {p} -o OUT.png"),
+        View::LSystem => format!("ugnis lsystem {p} -o OUT.svg"),
+        View::Gradients => format!("ugnis info {p}"),
+        View::GradientFromImage => format!("ugnis convert {p} OUT.ugr"),
+        View::RenderState => format!("ugnis render --resume {p} -o OUT.png"),
+    }
+}
+
+/// Read the flames of any flame source ([`io::read_flame_file`]); a file that another view
+/// opens is refused with the command that reads it.
+pub fn read_flame_file(path: &Path, opts: &ReadOptions) -> Result<Parsed<FlameFile>> {
+    io::read_flame_file(path, opts).map_err(|e| {
+        if io::view_of(io::kind_of(path)) == View::Flame {
+            e.into()
+        } else {
+            anyhow::anyhow!("{e}\n  try: {}", command_for(path))
+        }
+    })
 }
 
 /// Check before long work that an output file can be written (its directory exists and

@@ -1,6 +1,6 @@
 //! `ugnis random`: a batch of random flames into one `.fla`, with thumbnails.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use anyhow::{Context, Result, bail};
@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 use ugnis::flame::random::{self, RandomOptions, SymmetryMode, VariationMode};
 use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, estimate_memory};
-use ugnis::flame::{NewFlame, variations};
+use ugnis::flame::{Flame, NewFlame, variations};
 use ugnis::io;
 
 #[derive(Args, Debug)]
@@ -130,6 +130,52 @@ fn batch_bytes(count: usize, opts: &RandomOptions) -> u64 {
 }
 
 pub fn run(a: RandomArgs) -> Result<()> {
+    let opts = options(&a)?;
+    super::check_output(&a.output)?;
+    let seed = a.seed.unwrap_or_else(|| {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(1, |d| d.as_nanos() as u64)
+    });
+    let threads = super::threads(a.threads);
+    if let Some(dir) = &a.thumbs {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create '{}'", dir.display()))?;
+        super::check_output(&dir.join("thumbnail.png"))?;
+        check_thumbnail_memory(&a, threads)?;
+    }
+    let pool = super::pool_of(threads)?;
+    let work = a.count as u64 * if a.thumbs.is_some() { 2 } else { 1 };
+    let pb = super::progress_bar(work, "random flames");
+    let (flames, passed) = generate(&pool, &a, &opts, seed, &pb)?;
+    if let Some(dir) = &a.thumbs {
+        thumbnails(&pool, &a, dir, &flames, &pb)?;
+    }
+    pb.finish_and_clear();
+    let name = a
+        .output
+        .file_stem()
+        .map_or_else(|| "random".into(), |s| s.to_string_lossy().into_owned());
+    io::write_flames(&a.output, &name, &flames)
+        .with_context(|| format!("cannot write '{}'", a.output.display()))?;
+    if a.count > 1 {
+        super::print_stdout(&format!(
+            "wrote {} flames to {} (seed {seed}; {passed} passed the quality check){}\n",
+            a.count,
+            a.output.display(),
+            a.thumbs
+                .as_ref()
+                .map(|d| format!("; thumbnails in {}", d.display()))
+                .unwrap_or_default()
+        ))?;
+    }
+    Ok(())
+}
+
+/// Check the arguments and make the options of the batch's flames. The batch must be
+/// readable again: what would exceed the read limit is refused at once (the writer checks
+/// the exact size again).
+fn options(a: &RandomArgs) -> Result<RandomOptions> {
     let max_count = ugnis::io::flam3_xml::MAX_FLAMES;
     if a.count == 0 || a.count > max_count {
         bail!(
@@ -168,8 +214,6 @@ pub fn run(a: RandomArgs) -> Result<()> {
         symmetry: symmetry_mode(a.symmetry.as_deref())?,
         ..RandomOptions::default()
     };
-    // The batch must be readable again: refuse at once what would exceed the read limit (the
-    // writer checks the exact size again).
     let bytes = batch_bytes(a.count, &opts);
     let limit = io::max_file_size(kind);
     if bytes > limit {
@@ -183,43 +227,41 @@ pub fn run(a: RandomArgs) -> Result<()> {
             limit >> 20
         );
     }
-    super::check_output(&a.output)?;
-    let seed = a.seed.unwrap_or_else(|| {
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(1, |d| d.as_nanos() as u64)
-    });
-    let threads = super::threads(a.threads);
-    if let Some(dir) = &a.thumbs {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("cannot create '{}'", dir.display()))?;
-        super::check_output(&dir.join("thumbnail.png"))?;
-        // Thumbnails render in parallel, one single-threaded render per worker.
-        let (tw, th) = a.size;
-        let probe = ugnis::flame::Flame {
-            width: tw,
-            height: th,
-            quality: a.quality,
-            ..NewFlame::default().flame()
-        };
-        let ro = RenderOptions {
-            threads: 1,
-            ..RenderOptions::default()
-        };
-        let one = estimate_memory(&probe, &ro);
-        ugnis::memory::check(
-            one.total.saturating_mul(threads as u64),
-            None,
-            || format!("{threads} thumbnails of {tw}×{th} rendered at once"),
-            || "use a smaller --size or fewer --threads".into(),
-        )?;
-    }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .context("cannot start worker threads")?;
-    let work = a.count as u64 * if a.thumbs.is_some() { 2 } else { 1 };
-    let pb = super::progress_bar(work, "random flames");
+    Ok(opts)
+}
+
+/// Thumbnails render in parallel, one single-threaded render per worker: refuse at once
+/// when that many at once do not fit in memory.
+fn check_thumbnail_memory(a: &RandomArgs, threads: usize) -> Result<()> {
+    let (tw, th) = a.size;
+    let probe = ugnis::flame::Flame {
+        width: tw,
+        height: th,
+        quality: a.quality,
+        ..NewFlame::default().flame()
+    };
+    let ro = RenderOptions {
+        threads: 1,
+        ..RenderOptions::default()
+    };
+    let one = estimate_memory(&probe, &ro);
+    ugnis::memory::check(
+        one.total.saturating_mul(threads as u64),
+        None,
+        || format!("{threads} thumbnails of {tw}×{th} rendered at once"),
+        || "use a smaller --size or fewer --threads".into(),
+    )?;
+    Ok(())
+}
+
+/// The batch's flames, named random-001…, and how many passed the quality check.
+fn generate(
+    pool: &rayon::ThreadPool,
+    a: &RandomArgs,
+    opts: &RandomOptions,
+    seed: u64,
+    pb: &super::Progress,
+) -> Result<(Vec<Flame>, u64)> {
     let defaults = NewFlame::default();
     let passed = AtomicU64::new(0);
     let flames: Vec<Option<_>> = pool.install(|| {
@@ -229,7 +271,7 @@ pub fn run(a: RandomArgs) -> Result<()> {
                 if super::interrupted() {
                     return None;
                 }
-                let g = random::generate(random::batch_seed(seed, i), &opts, &defaults);
+                let g = random::generate(random::batch_seed(seed, i), opts, &defaults);
                 if g.passed {
                     passed.fetch_add(1, Ordering::Relaxed);
                 }
@@ -244,56 +286,46 @@ pub fn run(a: RandomArgs) -> Result<()> {
     for (i, f) in flames.iter_mut().enumerate() {
         f.name = format!("random-{:0width$}", i + 1);
     }
-    if let Some(dir) = &a.thumbs {
-        let (tw, th) = a.size;
-        let results: Vec<Result<()>> = pool.install(|| {
-            flames
-                .par_iter()
-                .map(|f| {
-                    super::check_interrupted()?;
-                    let mut t = f.clone();
-                    t.resize_keep_framing(tw, th);
-                    t.quality = a.quality;
-                    let ro = RenderOptions {
-                        seed: 1,
-                        threads: 1,
-                        ..RenderOptions::default()
-                    };
-                    let mut r = Renderer::new(&t, &ro)
-                        .with_context(|| format!("cannot render '{}'", f.name))?;
-                    if !r.run_all(1, super::interrupt_flag(), |_| {}) {
-                        return Err(super::Interrupted.into());
-                    }
-                    let img = r.finish();
-                    let path = dir.join(format!("{}.png", f.name));
-                    io::png::save(&path, &img, &io::png::PngMeta::for_flame(f))
-                        .with_context(|| format!("cannot write '{}'", path.display()))?;
-                    pb.inc(1);
-                    Ok(())
-                })
-                .collect()
-        });
-        super::check_interrupted()?;
-        results.into_iter().collect::<Result<Vec<()>>>()?;
-    }
-    pb.finish_and_clear();
-    let name = a
-        .output
-        .file_stem()
-        .map_or_else(|| "random".into(), |s| s.to_string_lossy().into_owned());
-    io::write_flames(&a.output, &name, &flames)
-        .with_context(|| format!("cannot write '{}'", a.output.display()))?;
-    if a.count > 1 {
-        let ok = passed.load(Ordering::Relaxed);
-        super::print_stdout(&format!(
-            "wrote {} flames to {} (seed {seed}; {ok} passed the quality check){}\n",
-            a.count,
-            a.output.display(),
-            a.thumbs
-                .as_ref()
-                .map(|d| format!("; thumbnails in {}", d.display()))
-                .unwrap_or_default()
-        ))?;
-    }
+    Ok((flames, passed.load(Ordering::Relaxed)))
+}
+
+/// A PNG thumbnail of every flame (with the flame embedded) in `dir`, rendered in parallel.
+fn thumbnails(
+    pool: &rayon::ThreadPool,
+    a: &RandomArgs,
+    dir: &Path,
+    flames: &[Flame],
+    pb: &super::Progress,
+) -> Result<()> {
+    let (tw, th) = a.size;
+    let results: Vec<Result<()>> = pool.install(|| {
+        flames
+            .par_iter()
+            .map(|f| {
+                super::check_interrupted()?;
+                let mut t = f.clone();
+                t.resize_keep_framing(tw, th);
+                t.quality = a.quality;
+                let ro = RenderOptions {
+                    seed: 1,
+                    threads: 1,
+                    ..RenderOptions::default()
+                };
+                let mut r = Renderer::new(&t, &ro)
+                    .with_context(|| format!("cannot render '{}'", f.name))?;
+                if !r.run_all(1, super::interrupt_flag(), |_| {}) {
+                    return Err(super::Interrupted.into());
+                }
+                let img = r.finish();
+                let path = dir.join(format!("{}.png", f.name));
+                io::png::save(&path, &img, &io::png::PngMeta::for_flame(f))
+                    .with_context(|| format!("cannot write '{}'", path.display()))?;
+                pb.inc(1);
+                Ok(())
+            })
+            .collect()
+    });
+    super::check_interrupted()?;
+    results.into_iter().collect::<Result<Vec<()>>>()?;
     Ok(())
 }

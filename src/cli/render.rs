@@ -1,6 +1,5 @@
 //! `ugnis render`: render a flame file to PNG or BMP.
 
-use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
@@ -10,9 +9,9 @@ use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Render
 use ugnis::flame::state::Part;
 use ugnis::flame::strips::{self, Strip};
 use ugnis::flame::{Flame, OutputFormat};
-use ugnis::io::atomic::AtomicFile;
 use ugnis::io::flam3_xml::{LibrarySource, ReadOptions};
-use ugnis::io::render_state::{StateReader, StateWriter};
+use ugnis::io::render_state::StateReader;
+use ugnis::io::strip_png::{StripError, StripFiles, StripHooks, StripProgress, render_strips};
 use ugnis::io::{self, FileKind};
 
 #[derive(Args, Debug)]
@@ -106,17 +105,14 @@ pub fn load_flames(input: &Path, palettes: Option<&PathBuf>, strict: bool) -> Re
         },
         ..ReadOptions::default()
     };
-    let parsed = match io::kind_of(input) {
-        FileKind::Ifs => io::ifs_flames(input)?,
-        _ => io::read_flames(input, &opts)?,
-    };
+    let parsed = super::read_flame_file(input, &opts)?;
     for w in &parsed.warnings {
         if strict && w.code == "XML020" {
             bail!("{w} (--strict)");
         }
         eprintln!("{w}");
     }
-    Ok(parsed.value)
+    Ok(parsed.value.flames)
 }
 
 /// Pick one flame by --index or --name (default: the first).
@@ -328,8 +324,8 @@ fn run_whole(
     Ok(())
 }
 
-/// Render band by band: the PNG is streamed and the state written chunk by chunk, so neither
-/// the image nor the whole histogram is ever in memory.
+/// Render band by band ([`io::strip_png`]): the PNG is streamed and the state written chunk
+/// by chunk, so neither the image nor the whole histogram is ever in memory.
 fn run_strips(
     a: &RenderArgs,
     source: &mut Source,
@@ -343,75 +339,35 @@ fn run_strips(
     if out.is_some_and(|o| io::kind_of(o) == FileKind::Bmp) {
         bail!("a render in strips writes PNG only (BMP needs the whole image in memory)");
     }
-    let cannot = |p: &Path| format!("cannot write '{}'", p.display());
-    let mut png_file = match out {
-        Some(o) => Some((AtomicFile::create(o).with_context(|| cannot(o))?, o)),
-        None => None,
-    };
-    let mut png = match &mut png_file {
-        Some((f, o)) => Some(
-            io::png::PngStream::new(
-                f.file().try_clone()?,
-                flame.width,
-                flame.height,
-                opts.format,
-                &io::png::PngMeta::for_flame(&flame),
-            )
-            .with_context(|| cannot(o))?,
-        ),
-        None => None,
-    };
-    let mut state_file = match &a.save_state {
-        Some(p) => Some((AtomicFile::create(p).with_context(|| cannot(p))?, p)),
-        None => None,
-    };
-    let mut state_w: Option<StateWriter<BufWriter<std::fs::File>>> = None;
+    let mut files = StripFiles::new();
+    if let Some(o) = out {
+        let meta = io::png::PngMeta::for_flame(&flame);
+        files = files.with_png(o, (flame.width, flame.height), opts.format, &meta)?;
+    }
+    if let Some(p) = &a.save_state {
+        files = files.with_state(p, None)?;
+    }
     let pb = super::progress_bar(
         (k * 1000) as u64,
         &format!("rendering {label} in {k} strips"),
     );
-    for (s, strip) in plan.iter().enumerate() {
-        let mut r = source.renderer(opts, Some(strip.clone()))?;
-        let done = r.run_all(20, super::interrupt_flag(), |f| {
-            pb.set_position(((s as f64 + f) * 1000.0) as u64)
-        });
-        if !done {
-            return Err(super::Interrupted.into());
-        }
-        let g = r.geometry().clone();
-        let (img, st) = r.finish_with_state();
-        if let (Some(p), Some((_, o))) = (&mut png, &png_file) {
-            p.write_rows(&img).with_context(|| cannot(o))?;
-        }
-        if let Some((sf, path)) = &mut state_file {
-            let (st, hist) = st.context("the render was interrupted; no state to save")?;
-            // Every strip iterates the same samples with the same orbits, so any strip's
-            // counters are the whole render's; the header is written with the first.
-            if state_w.is_none() {
-                let f = sf.file().try_clone()?;
-                state_w =
-                    Some(StateWriter::new(BufWriter::new(f), &st).with_context(|| cannot(path))?);
-            }
-            let core = &strip.core_rows;
-            let (lo, hi) = ((core.start - g.row0) * g.bw, (core.end - g.row0) * g.bw);
-            if let Some(w) = state_w.as_mut() {
-                w.write_rows(&hist.data[lo..hi])
-                    .with_context(|| cannot(path))?;
-            }
-        }
-    }
+    let mut report =
+        |p: &StripProgress| pb.set_position(((p.strip as f64 + p.strip_fraction) * 1000.0) as u64);
+    let renderer = |strip: &Strip| {
+        source
+            .renderer(opts, Some(strip.clone()))
+            .map_err(|e| StripError::Render(format!("{e:#}")))
+    };
+    let hooks = StripHooks {
+        cancel: super::interrupt_flag(),
+        pass: None,
+        progress: &mut report,
+    };
+    let done = render_strips(&plan, files, renderer, hooks);
     pb.finish_and_clear();
-    if let Some(w) = state_w {
-        w.finish()?;
+    match done {
+        Ok(_) => Ok(()),
+        Err(StripError::Cancelled) => Err(super::Interrupted.into()),
+        Err(e) => Err(e.into()),
     }
-    if let Some((f, p)) = state_file {
-        f.commit().with_context(|| cannot(p))?;
-    }
-    if let Some(p) = png {
-        p.finish()?;
-    }
-    if let Some((f, o)) = png_file {
-        f.commit().with_context(|| cannot(o))?;
-    }
-    Ok(())
 }

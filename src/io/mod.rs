@@ -16,6 +16,7 @@ pub mod palettes;
 pub mod png;
 pub mod render_state;
 pub mod scene;
+pub mod strip_png;
 pub mod svg;
 pub mod ugr;
 pub mod video;
@@ -86,11 +87,27 @@ pub fn read_bytes(path: &Path) -> Result<Vec<u8>, Diagnostic> {
 /// Read at most `limit` bytes of a regular file (see [`open_regular`]) or of standard input
 /// (`-`). The limit is enforced while reading, so a file that grows is cut off too.
 pub fn read_bytes_limited(path: &Path, limit: u64) -> Result<Vec<u8>, Diagnostic> {
-    use std::io::Read;
     let name = path.display().to_string();
+    if is_stdin(path) {
+        read_limited(std::io::stdin().lock(), None, limit, &name)
+    } else {
+        let (f, meta) = open_regular(path)?;
+        read_limited(f, Some(meta.len()), limit, &name)
+    }
+}
+
+/// Read at most `limit` bytes from `r`, whose length is `len` when known (a longer file is
+/// refused before anything is read).
+fn read_limited(
+    r: impl std::io::Read,
+    len: Option<u64>,
+    limit: u64,
+    name: &str,
+) -> Result<Vec<u8>, Diagnostic> {
+    use std::io::Read;
     let too_big = |size: Option<u64>| {
         Diagnostic::error(
-            &name,
+            name,
             Pos::File,
             "IO002",
             match size {
@@ -107,24 +124,16 @@ pub fn read_bytes_limited(path: &Path, limit: u64) -> Result<Vec<u8>, Diagnostic
             },
         )
     };
-    let read_err = |e: std::io::Error| {
-        Diagnostic::error(&name, Pos::File, "IO001", format!("cannot read: {e}"))
-    };
     let mut out = Vec::new();
-    if is_stdin(path) {
-        std::io::stdin()
-            .lock()
-            .take(limit + 1)
-            .read_to_end(&mut out)
-            .map_err(read_err)?;
-    } else {
-        let (f, meta) = open_regular(path)?;
-        if meta.len() > limit {
-            return Err(too_big(Some(meta.len())));
+    if let Some(n) = len {
+        if n > limit {
+            return Err(too_big(Some(n)));
         }
-        out.reserve(meta.len() as usize);
-        f.take(limit + 1).read_to_end(&mut out).map_err(read_err)?;
+        out.reserve(n as usize);
     }
+    r.take(limit + 1)
+        .read_to_end(&mut out)
+        .map_err(|e| Diagnostic::error(name, Pos::File, "IO001", format!("cannot read: {e}")))?;
     if out.len() as u64 > limit {
         return Err(too_big(None));
     }
@@ -151,7 +160,34 @@ pub enum FileKind {
     EscapeView,
     /// Fractint L-system (.l)
     LSystem,
+    /// ugnis textured Bézier scene (.toml)
+    Scene,
+    /// A saved flame render to continue or merge (.ugnis-state)
+    RenderState,
     Unknown,
+}
+
+impl FileKind {
+    /// What a file of this kind is, for messages ("a Fractint L-system file (.l)").
+    pub fn describe(self) -> &'static str {
+        match self {
+            FileKind::FlameXml => "a flame file (.flame, .flam3, .xml)",
+            FileKind::Fla => "a flame file (.fla)",
+            FileKind::Png => "a PNG image",
+            FileKind::Ifs => "a Fractint IFS file (.ifs)",
+            FileKind::Ugr => "a gradient file (.ugr)",
+            FileKind::Map => "a gradient file (.map)",
+            FileKind::Ggr => "a GIMP gradient (.ggr)",
+            FileKind::Bmp => "a BMP image",
+            FileKind::Jpeg => "a JPEG image",
+            FileKind::Gif => "a GIF image",
+            FileKind::EscapeView => "an escape-time view (.esc)",
+            FileKind::LSystem => "a Fractint L-system file (.l)",
+            FileKind::Scene => "a scene (.toml)",
+            FileKind::RenderState => "a render state (.ugnis-state)",
+            FileKind::Unknown => "a file of unknown kind",
+        }
+    }
 }
 
 pub fn kind_of(path: &Path) -> FileKind {
@@ -172,74 +208,176 @@ pub fn kind_of(path: &Path) -> FileKind {
         "gif" => FileKind::Gif,
         "esc" => FileKind::EscapeView,
         "l" => FileKind::LSystem,
+        "toml" => FileKind::Scene,
+        "ugnis-state" => FileKind::RenderState,
         _ => FileKind::Unknown,
     }
 }
 
-/// Read the flames of any flame source: XML (.flame/.flam3/.fla), PNG with an embedded flame.
+/// Where ugnis opens a file: the view (and in it the document) a kind of file belongs to.
+/// The editor's Open, Recent files, dropped files and the file given at start all go by
+/// [`view_of`], and so do the command line's readers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    /// The flames of the flame editor: flame XML, a PNG with a flame, the entries of an IFS
+    /// file, and any file of unknown kind (read as flame XML).
+    Flame,
+    /// The escape-time view (.esc).
+    Escape,
+    /// The scene view (.toml).
+    Scene,
+    /// The L-system topic of Explore (.l).
+    LSystem,
+    /// The flame editor's gradient list (.ugr, .map, .ggr).
+    Gradients,
+    /// A gradient made from the colours of an image (.bmp, .jpg, .gif; a PNG opens as a flame).
+    GradientFromImage,
+    /// Continuing a saved render in the flame editor's export (.ugnis-state).
+    RenderState,
+}
+
+impl View {
+    /// The view's name in messages ("the escape-time view").
+    pub fn describe(self) -> &'static str {
+        match self {
+            View::Flame => "the flame editor",
+            View::Escape => "the escape-time view",
+            View::Scene => "the scene view",
+            View::LSystem => "the L-system view",
+            View::Gradients => "the gradient list",
+            View::GradientFromImage => "a gradient made from the image",
+            View::RenderState => "the export that continues it",
+        }
+    }
+}
+
+/// The view that opens a kind of file (see [`View`]).
+pub fn view_of(kind: FileKind) -> View {
+    match kind {
+        FileKind::FlameXml | FileKind::Fla | FileKind::Png | FileKind::Ifs | FileKind::Unknown => {
+            View::Flame
+        }
+        FileKind::EscapeView => View::Escape,
+        FileKind::Scene => View::Scene,
+        FileKind::LSystem => View::LSystem,
+        FileKind::Ugr | FileKind::Map | FileKind::Ggr => View::Gradients,
+        FileKind::Bmp | FileKind::Jpeg | FileKind::Gif => View::GradientFromImage,
+        FileKind::RenderState => View::RenderState,
+    }
+}
+
+/// Read the flames of any flame source (see [`View::Flame`]): flame XML (.flame/.flam3/.fla),
+/// a PNG with an embedded flame, or a Fractint `.ifs` file (a flame per entry, 3-D entries
+/// through the fixed view). A file another view opens is refused, naming that view.
 pub fn read_flames(
     path: &Path,
     opts: &flam3_xml::ReadOptions,
 ) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
-    let p = read_flame_file(path, opts)?;
+    read_flames_with(path, opts, &crate::flame::NewFlame::default())
+}
+
+/// As [`read_flames`], with the display settings and gradient for flames made from the
+/// entries of an IFS file.
+pub fn read_flames_with(
+    path: &Path,
+    opts: &flam3_xml::ReadOptions,
+    ifs_defaults: &crate::flame::NewFlame,
+) -> Result<Parsed<Vec<Flame>>, Diagnostic> {
+    let p = read_flame_file_with(path, opts, ifs_defaults)?;
     Ok(Parsed {
         value: p.value.flames,
         warnings: p.warnings,
     })
 }
 
-/// As [`read_flames`], keeping the document's `<flames name>`.
+/// As [`read_flames`], keeping the document's `<flames name>` (empty for an IFS file).
 pub fn read_flame_file(
     path: &Path,
     opts: &flam3_xml::ReadOptions,
 ) -> Result<Parsed<flam3_xml::FlameFile>, Diagnostic> {
+    read_flame_file_with(path, opts, &crate::flame::NewFlame::default())
+}
+
+/// [`read_flame_file`] with the defaults of flames made from IFS entries. The file is
+/// opened once: its first bytes tell a PNG from text.
+fn read_flame_file_with(
+    path: &Path,
+    opts: &flam3_xml::ReadOptions,
+    ifs_defaults: &crate::flame::NewFlame,
+) -> Result<Parsed<flam3_xml::FlameFile>, Diagnostic> {
     let name = path.display().to_string();
     let kind = kind_of(path);
-    if kind == FileKind::LSystem {
+    if kind == FileKind::Ifs {
+        let p = ifs_flames_with(path, ifs_defaults)?;
+        return Ok(Parsed {
+            value: flam3_xml::FlameFile {
+                name: String::new(),
+                flames: p.value,
+            },
+            warnings: p.warnings,
+        });
+    }
+    let view = view_of(kind);
+    if view != View::Flame {
         return Err(Diagnostic::error(
             &name,
             Pos::File,
             "IO005",
-            "a Fractint L-system file (.l), not a flame; L-systems open in the L-system view",
+            format!(
+                "{}, not a flame; ugnis opens it in {}",
+                kind.describe(),
+                view.describe()
+            ),
         ));
     }
     let mut o = opts.clone();
     o.file = name.clone();
     o.fla = kind == FileKind::Fla;
-    let text = if kind == FileKind::Png || (!is_stdin(path) && starts_with_png(path)?) {
-        // Streamed: a PNG of any size opens as long as the genome precedes the image data.
-        o.fla = false;
-        if is_stdin(path) {
-            png::read_genome(&read_bytes(path)?, &name)?
-        } else {
-            let (f, _) = open_regular(path)?;
-            png::read_genome_from(std::io::BufReader::new(f), &name)?
-        }
-    } else {
+    let text = if is_stdin(path) {
         let bytes = read_bytes(path)?;
-        if bytes.starts_with(b"\x89PNG") {
+        if bytes.starts_with(PNG_SIGNATURE) {
+            o.fla = false;
             png::read_genome(&bytes, &name)?
         } else {
-            String::from_utf8(bytes).map_err(|e| {
-                Diagnostic::error(
-                    &name,
-                    Pos::Byte(e.utf8_error().valid_up_to() as u64),
-                    "XML001",
-                    "file is not valid UTF-8 text",
-                )
-            })?
+            utf8_text(bytes, &name)?
+        }
+    } else {
+        let (f, meta) = open_regular(path)?;
+        let mut r = std::io::BufReader::new(f);
+        if kind == FileKind::Png || starts_with_png(&mut r) {
+            // Streamed: a PNG of any size opens as long as the genome precedes the image data.
+            o.fla = false;
+            png::read_genome_from(r, &name)?
+        } else {
+            utf8_text(
+                read_limited(r, Some(meta.len()), max_file_size(kind), &name)?,
+                &name,
+            )?
         }
     };
     flam3_xml::read(&text, &o)
 }
 
-/// Does a regular file start with the PNG signature?
-fn starts_with_png(path: &Path) -> Result<bool, Diagnostic> {
-    use std::io::Read;
-    let (f, _) = open_regular(path)?;
-    let mut head = [0u8; 4];
-    let n = f.take(4).read(&mut head).unwrap_or(0);
-    Ok(n == 4 && &head == b"\x89PNG")
+/// The first bytes of every PNG file.
+const PNG_SIGNATURE: &[u8] = b"\x89PNG";
+
+/// Does the file start with the PNG signature? Looks at the reader's buffer without taking
+/// anything from it.
+fn starts_with_png(r: &mut impl std::io::BufRead) -> bool {
+    r.fill_buf()
+        .is_ok_and(|head| head.starts_with(PNG_SIGNATURE))
+}
+
+/// Bytes as UTF-8 text; an error names the first byte that is not.
+fn utf8_text(bytes: Vec<u8>, name: &str) -> Result<String, Diagnostic> {
+    String::from_utf8(bytes).map_err(|e| {
+        Diagnostic::error(
+            name,
+            Pos::Byte(e.utf8_error().valid_up_to() as u64),
+            "XML001",
+            "file is not valid UTF-8 text",
+        )
+    })
 }
 
 /// Read a Fractint `.ifs` file (UTF-8, or Windows-1252 with a warning).
@@ -456,4 +594,67 @@ pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<Str
         source,
     })?;
     Ok(warnings)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fixture(name: &str) -> std::path::PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures")
+            .join(name)
+    }
+
+    #[test]
+    fn every_kind_opens_in_its_view() {
+        for (name, kind, view) in [
+            ("a.flame", FileKind::FlameXml, View::Flame),
+            ("a.flam3", FileKind::FlameXml, View::Flame),
+            ("a.FLA", FileKind::Fla, View::Flame),
+            ("a.png", FileKind::Png, View::Flame),
+            ("a.ifs", FileKind::Ifs, View::Flame),
+            ("notes.txt", FileKind::Unknown, View::Flame),
+            ("a.esc", FileKind::EscapeView, View::Escape),
+            ("a.toml", FileKind::Scene, View::Scene),
+            ("a.l", FileKind::LSystem, View::LSystem),
+            ("a.ugr", FileKind::Ugr, View::Gradients),
+            ("a.map", FileKind::Map, View::Gradients),
+            ("a.ggr", FileKind::Ggr, View::Gradients),
+            ("a.jpg", FileKind::Jpeg, View::GradientFromImage),
+            ("a.bmp", FileKind::Bmp, View::GradientFromImage),
+            ("a.ugnis-state", FileKind::RenderState, View::RenderState),
+        ] {
+            assert_eq!(kind_of(Path::new(name)), kind, "{name}");
+            assert_eq!(view_of(kind), view, "{name}");
+        }
+    }
+
+    #[test]
+    fn flames_are_read_from_ifs_entries_too() {
+        let ifs = fixture("library.ifs");
+        let direct = ifs_flames(&ifs).unwrap().value;
+        let read = read_flames(&ifs, &Default::default()).unwrap().value;
+        assert!(!read.is_empty());
+        assert_eq!(read, direct);
+        assert!(
+            read_flame_file(&ifs, &Default::default())
+                .unwrap()
+                .value
+                .name
+                .is_empty()
+        );
+    }
+
+    #[test]
+    fn a_file_of_another_view_is_refused_naming_that_view() {
+        for (name, view) in [
+            ("explore.l", "L-system view"),
+            ("hand.ugr", "gradient list"),
+        ] {
+            let e = read_flames(&fixture(name), &Default::default()).unwrap_err();
+            assert_eq!(e.code, "IO005", "{name}");
+            assert!(e.to_string().contains(view), "{name}: {e}");
+        }
+    }
 }

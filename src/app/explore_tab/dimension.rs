@@ -222,7 +222,6 @@ impl DimensionView {
         flame: &Flame,
         escape: &EscapeDoc,
     ) -> Option<ExploreRequest> {
-        let mut req = None;
         explanation(
             ui,
             "A dimension says how the amount of a set grows as you look closer. Cut a line \
@@ -232,6 +231,16 @@ impl DimensionView {
              otherwise count the boxes of a grid the set touches, finer and finer, and read the \
              dimension off the slope of the log-log plot.",
         );
+        self.similarity_section(ui);
+        let req = self.box_counting_section(ui, flame, escape);
+        super::problem_label(ui, &self.problem);
+        self.box_counting_result(ui);
+        divider_section(ui);
+        req
+    }
+
+    /// The similarity dimension of the typed contraction ratios, with examples.
+    fn similarity_section(&mut self, ui: &mut egui::Ui) {
         section(ui, "Similarity dimension");
         ui.label("Contraction ratios (e.g. 4 * 1/3 or 0.5, 0.25, 0.25):");
         crate::app::a11y::named(
@@ -256,6 +265,17 @@ impl DimensionView {
             Ok(d) => ui.label(format!("Similarity dimension: {d:.5}")),
             Err(e) => ui.colored_label(egui::Color32::from_rgb(255, 120, 100), e),
         };
+    }
+
+    /// What to box-count (the flame, the escape-time boundary, an IFS or an image), how many
+    /// points, and Count boxes; counts once by itself at the first look.
+    fn box_counting_section(
+        &mut self,
+        ui: &mut egui::Ui,
+        flame: &Flame,
+        escape: &EscapeDoc,
+    ) -> Option<ExploreRequest> {
+        let mut req = None;
         section(ui, "Box counting");
         let mut src = self.source.clone();
         egui::ComboBox::from_id_salt("explore-box-source")
@@ -312,7 +332,11 @@ impl DimensionView {
         if !self.started {
             self.start(Some(flame), Some(escape));
         }
-        super::problem_label(ui, &self.problem);
+        req
+    }
+
+    /// The box-counting dimension found, and the lacunarity when it was measured.
+    fn box_counting_result(&self, ui: &mut egui::Ui) {
         if let Some(r) = &self.result {
             let c = &r.count;
             ui.label(format!("{}: {} samples", r.source, c.samples));
@@ -361,21 +385,26 @@ impl DimensionView {
                 );
             }
         }
-        section(ui, "Divider method (coastline)");
-        match dimension::divider_dimension(&COASTLINE_DATA) {
-            Ok((f, d)) => {
-                ui.label(format!(
-                    "Slope of ln length against ln ruler: {:.6}; D = 1 − slope = {d:.4}",
-                    f.slope
-                ));
-            }
-            Err(e) => {
-                ui.label(e.to_string());
-            }
-        }
-        req
     }
+}
 
+/// The divider (coastline) method on its sample data.
+fn divider_section(ui: &mut egui::Ui) {
+    section(ui, "Divider method (coastline)");
+    match dimension::divider_dimension(&COASTLINE_DATA) {
+        Ok((f, d)) => {
+            ui.label(format!(
+                "Slope of ln length against ln ruler: {:.6}; D = 1 − slope = {d:.4}",
+                f.slope
+            ));
+        }
+        Err(e) => {
+            ui.label(e.to_string());
+        }
+    }
+}
+
+impl DimensionView {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let (rect, _resp, _ppp, _size, painter) = super::dark_canvas(ui);
         let wide = rect.width() >= rect.height();

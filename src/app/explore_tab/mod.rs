@@ -385,7 +385,7 @@ impl ScreenFraming {
 pub(crate) fn dark_canvas(
     ui: &mut egui::Ui,
 ) -> (Rect, egui::Response, f32, [u32; 2], egui::Painter) {
-    let (rect, resp, ppp, size) = crate::app::canvas_area(ui);
+    let (rect, resp, ppp, size) = crate::app::widgets::canvas_area(ui);
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, rgb(BACKGROUND));
     (rect, resp, ppp, size, painter)

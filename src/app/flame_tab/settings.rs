@@ -6,6 +6,7 @@ use eframe::egui;
 
 use super::document::Document;
 use crate::app::a11y::named;
+use crate::flame::Flame;
 
 /// One labelled number row of the grid.
 fn row(
@@ -35,186 +36,11 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
     let mut f = doc.flame().clone();
     let before = f.clone();
     egui::Grid::new("flame-grid").num_columns(2).show(ui, |ui| {
-        let l = ui.label("Name");
-        ui.text_edit_singleline(&mut f.name)
-            .labelled_by(l.id)
-            .on_hover_text("the flame's name in the file");
-        ui.end_row();
-        ui.label("Size");
-        ui.horizontal(|ui| {
-            named(
-                ui.add(
-                    egui::DragValue::new(&mut f.width)
-                        .range(1..=20000)
-                        .clamp_existing_to_range(false),
-                ),
-                "Width",
-            )
-            .on_hover_text("width of the picture in pixels");
-            ui.label("×");
-            named(
-                ui.add(
-                    egui::DragValue::new(&mut f.height)
-                        .range(1..=20000)
-                        .clamp_existing_to_range(false),
-                ),
-                "Height",
-            )
-            .on_hover_text("height of the picture in pixels");
-        });
-        ui.end_row();
-        row(
-            ui,
-            "Centre x",
-            "the world point in the middle of the picture",
-            &mut f.center[0],
-            0.01,
-            -1e6..=1e6,
-        );
-        row(
-            ui,
-            "Centre y",
-            "the world point in the middle of the picture (y down)",
-            &mut f.center[1],
-            0.01,
-            -1e6..=1e6,
-        );
-        row(
-            ui,
-            "Scale",
-            "pixels per world unit at zoom 0",
-            &mut f.scale,
-            0.5,
-            0.001..=1e7,
-        );
-        row(
-            ui,
-            "Zoom",
-            "magnification as a power of 2 (1 = twice as close)",
-            &mut f.zoom,
-            0.01,
-            -20.0..=20.0,
-        );
-        row(
-            ui,
-            "Rotate (°)",
-            "turns the picture (positive: clockwise)",
-            &mut f.rotate,
-            0.5,
-            -3600.0..=3600.0,
-        );
-        row(
-            ui,
-            "Quality",
-            "samples per pixel of the final render",
-            &mut f.quality,
-            1.0,
-            0.01..=1e6,
-        );
-        row(
-            ui,
-            "Brightness",
-            "overall brightness of the tone mapping",
-            &mut f.brightness,
-            0.05,
-            0.01..=1000.0,
-        );
-        row(
-            ui,
-            "Gamma",
-            "gamma of the tone mapping (higher: more detail in dark parts)",
-            &mut f.gamma,
-            0.05,
-            0.01..=100.0,
-        );
-        row(
-            ui,
-            "Gamma threshold",
-            "below this density gamma is linear (less noise)",
-            &mut f.gamma_threshold,
-            0.001,
-            0.0..=10.0,
-        );
-        row(
-            ui,
-            "Vibrancy",
-            "0: gamma per channel; 1: colours keep their saturation",
-            &mut f.vibrancy,
-            0.01,
-            0.0..=10.0,
-        );
-        row(
-            ui,
-            "Highlight power",
-            "how bright areas fade to white (−1: off)",
-            &mut f.highlight_power,
-            0.05,
-            -1.0..=100.0,
-        );
-        row(
-            ui,
-            "Contrast",
-            "contrast of the tone mapping",
-            &mut f.contrast,
-            0.01,
-            0.01..=100.0,
-        );
-        row(
-            ui,
-            "DE radius",
-            "density estimation: blur radius for sparse areas (0: off)",
-            &mut f.estimator_radius,
-            0.1,
-            0.0..=50.0,
-        );
-        ui.label("Palette");
-        ui.horizontal(|ui| {
-            use crate::flame::{PaletteIndex, PaletteMode};
-            let r = egui::ComboBox::from_label("mode")
-                .selected_text(f.palette_mode.name())
-                .show_ui(ui, |ui| {
-                    for m in [PaletteMode::Step, PaletteMode::Linear] {
-                        ui.selectable_value(&mut f.palette_mode, m, m.name());
-                    }
-                })
-                .response;
-            r.on_hover_text(
-                "step: each colour coordinate takes one gradient entry; \
-                 linear: blends the two nearest entries",
-            );
-            let rule = |i: PaletteIndex| match i {
-                PaletteIndex::Flam3 => "as flam3",
-                PaletteIndex::Apophysis => "as Apophysis",
-                PaletteIndex::Fractorium => "as Fractorium",
-                PaletteIndex::JWildfire => "as JWildfire",
-            };
-            let r = egui::ComboBox::from_label("rule")
-                .selected_text(rule(f.palette_index))
-                .show_ui(ui, |ui| {
-                    for i in PaletteIndex::ALL {
-                        ui.selectable_value(&mut f.palette_index, i, rule(i));
-                    }
-                })
-                .response;
-            r.on_hover_text(
-                "whose rule turns a colour coordinate into a gradient position: the program \
-                 that wrote the file (they differ by up to one entry)",
-            );
-        });
-        ui.end_row();
-        ui.label("Background");
-        let mut bg = [
-            f.background[0] as f32,
-            f.background[1] as f32,
-            f.background[2] as f32,
-        ];
-        if named(ui.color_edit_button_rgb(&mut bg), "Background colour")
-            .on_hover_text("the colour behind the flame")
-            .changed()
-        {
-            f.background = bg.map(|v| v as f64);
-        }
-        ui.end_row();
+        name_and_size_rows(ui, &mut f);
+        camera_rows(ui, &mut f);
+        tone_rows(ui, &mut f);
+        palette_row(ui, &mut f);
+        background_row(ui, &mut f);
     });
     if f.estimator_radius < f.estimator_minimum {
         f.estimator_minimum = f.estimator_radius;
@@ -222,4 +48,204 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
     if f != before {
         doc.edit_while(dragging, |g| *g = f);
     }
+}
+
+/// The flame's name and picture size.
+fn name_and_size_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    let l = ui.label("Name");
+    ui.text_edit_singleline(&mut f.name)
+        .labelled_by(l.id)
+        .on_hover_text("the flame's name in the file");
+    ui.end_row();
+    ui.label("Size");
+    ui.horizontal(|ui| {
+        named(
+            ui.add(
+                egui::DragValue::new(&mut f.width)
+                    .range(1..=20000)
+                    .clamp_existing_to_range(false),
+            ),
+            "Width",
+        )
+        .on_hover_text("width of the picture in pixels");
+        ui.label("×");
+        named(
+            ui.add(
+                egui::DragValue::new(&mut f.height)
+                    .range(1..=20000)
+                    .clamp_existing_to_range(false),
+            ),
+            "Height",
+        )
+        .on_hover_text("height of the picture in pixels");
+    });
+    ui.end_row();
+}
+
+/// Where the picture looks: centre, scale, zoom and rotation.
+fn camera_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    row(
+        ui,
+        "Centre x",
+        "the world point in the middle of the picture",
+        &mut f.center[0],
+        0.01,
+        -1e6..=1e6,
+    );
+    row(
+        ui,
+        "Centre y",
+        "the world point in the middle of the picture (y down)",
+        &mut f.center[1],
+        0.01,
+        -1e6..=1e6,
+    );
+    row(
+        ui,
+        "Scale",
+        "pixels per world unit at zoom 0",
+        &mut f.scale,
+        0.5,
+        0.001..=1e7,
+    );
+    row(
+        ui,
+        "Zoom",
+        "magnification as a power of 2 (1 = twice as close)",
+        &mut f.zoom,
+        0.01,
+        -20.0..=20.0,
+    );
+    row(
+        ui,
+        "Rotate (°)",
+        "turns the picture (positive: clockwise)",
+        &mut f.rotate,
+        0.5,
+        -3600.0..=3600.0,
+    );
+}
+
+/// Quality and the tone mapping.
+fn tone_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    row(
+        ui,
+        "Quality",
+        "samples per pixel of the final render",
+        &mut f.quality,
+        1.0,
+        0.01..=1e6,
+    );
+    row(
+        ui,
+        "Brightness",
+        "overall brightness of the tone mapping",
+        &mut f.brightness,
+        0.05,
+        0.01..=1000.0,
+    );
+    row(
+        ui,
+        "Gamma",
+        "gamma of the tone mapping (higher: more detail in dark parts)",
+        &mut f.gamma,
+        0.05,
+        0.01..=100.0,
+    );
+    row(
+        ui,
+        "Gamma threshold",
+        "below this density gamma is linear (less noise)",
+        &mut f.gamma_threshold,
+        0.001,
+        0.0..=10.0,
+    );
+    row(
+        ui,
+        "Vibrancy",
+        "0: gamma per channel; 1: colours keep their saturation",
+        &mut f.vibrancy,
+        0.01,
+        0.0..=10.0,
+    );
+    row(
+        ui,
+        "Highlight power",
+        "how bright areas fade to white (−1: off)",
+        &mut f.highlight_power,
+        0.05,
+        -1.0..=100.0,
+    );
+    row(
+        ui,
+        "Contrast",
+        "contrast of the tone mapping",
+        &mut f.contrast,
+        0.01,
+        0.01..=100.0,
+    );
+    row(
+        ui,
+        "DE radius",
+        "density estimation: blur radius for sparse areas (0: off)",
+        &mut f.estimator_radius,
+        0.1,
+        0.0..=50.0,
+    );
+}
+
+/// How colour coordinates pick gradient entries: the palette mode and whose rule.
+fn palette_row(ui: &mut egui::Ui, f: &mut Flame) {
+    ui.label("Palette");
+    ui.horizontal(|ui| {
+        use crate::flame::{PaletteIndex, PaletteMode};
+        let r = egui::ComboBox::from_label("mode")
+            .selected_text(f.palette_mode.name())
+            .show_ui(ui, |ui| {
+                for m in [PaletteMode::Step, PaletteMode::Linear] {
+                    ui.selectable_value(&mut f.palette_mode, m, m.name());
+                }
+            })
+            .response;
+        r.on_hover_text(
+            "step: each colour coordinate takes one gradient entry; \
+             linear: blends the two nearest entries",
+        );
+        let rule = |i: PaletteIndex| match i {
+            PaletteIndex::Flam3 => "as flam3",
+            PaletteIndex::Apophysis => "as Apophysis",
+            PaletteIndex::Fractorium => "as Fractorium",
+            PaletteIndex::JWildfire => "as JWildfire",
+        };
+        let r = egui::ComboBox::from_label("rule")
+            .selected_text(rule(f.palette_index))
+            .show_ui(ui, |ui| {
+                for i in PaletteIndex::ALL {
+                    ui.selectable_value(&mut f.palette_index, i, rule(i));
+                }
+            })
+            .response;
+        r.on_hover_text(
+            "whose rule turns a colour coordinate into a gradient position: the program \
+             that wrote the file (they differ by up to one entry)",
+        );
+    });
+    ui.end_row();
+}
+
+/// The colour behind the flame.
+fn background_row(ui: &mut egui::Ui, f: &mut Flame) {
+    ui.label("Background");
+    let mut bg = [
+        f.background[0] as f32,
+        f.background[1] as f32,
+        f.background[2] as f32,
+    ];
+    if named(ui.color_edit_button_rgb(&mut bg), "Background colour")
+        .on_hover_text("the colour behind the flame")
+        .changed()
+    {
+        f.background = bg.map(|v| v as f64);
+    }
+    ui.end_row();
 }

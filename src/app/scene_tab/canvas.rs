@@ -9,7 +9,7 @@ use super::{SceneJob, SceneTab};
 impl SceneTab {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
-        let (rect, resp, ppp, size) = crate::app::canvas_area(ui);
+        let (rect, resp, ppp, size) = crate::app::widgets::canvas_area(ui);
         // Interaction.
         let px_per_unit = self.scene.camera.scale * size[1] as f64 / 480.0 / ppp as f64;
         let ctrl = ctx.input(|i| i.modifiers.command);
