@@ -55,7 +55,19 @@ impl MotionFrame {
 /// [`crate::flame::interpolate::check_times`]), with `temporal_samples` sub-frames as the
 /// flame at that time says (`limit` caps them: a frame needs enough samples per sub-frame).
 pub fn frame_at(cps: &[Flame], time: f64, limit: u32) -> MotionFrame {
-    let frame = interpolate_at(cps, time);
+    frame_from(time, limit, &cps[0], |t| interpolate_at(cps, t))
+}
+
+/// The frame at `time` of any animation: `flame_at(t)` gives the flame at time t (of a
+/// sequence, or with keyframes applied); `first` is the animation's first flame, whose spatial
+/// filter every frame uses (as flam3 does).
+pub fn frame_from(
+    time: f64,
+    limit: u32,
+    first: &Flame,
+    flame_at: impl Fn(f64) -> Flame,
+) -> MotionFrame {
+    let frame = flame_at(time);
     let mut anim = frame.anim;
     anim.temporal_samples = anim.temporal_samples.clamp(1, limit.max(1));
     let filter = TemporalFilter::of(&anim);
@@ -67,14 +79,14 @@ pub fn frame_at(cps: &[Flame], time: f64, limit: u32) -> MotionFrame {
         let mut f = if n == 1 {
             frame.clone()
         } else {
-            interpolate_at(cps, time + delta)
+            flame_at(time + delta)
         };
         // The bucket grid is the frame's; each sub-frame brings its own camera.
         f.width = w;
         f.height = h;
         f.supersample = frame.supersample;
-        f.filter = cps[0].filter;
-        f.filter_shape = cps[0].filter_shape;
+        f.filter = first.filter;
+        f.filter_shape = first.filter_shape;
         let density = f.quality.max(0.0) * 4f64.powf(f.zoom);
         let samples = (density * px / n as f64).round() as u64;
         subframes.push(SubFrame {

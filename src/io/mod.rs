@@ -1,6 +1,7 @@
 //! Readers and writers of every file format ugnis opens or saves. Parsers report errors with
 //! file, line and column and never panic.
 
+pub mod animation;
 pub mod atomic;
 pub mod bmp;
 pub mod diag;

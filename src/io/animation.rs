@@ -1,0 +1,381 @@
+//! Rendering an animation to files, for the command line and the editor alike: the frames of a
+//! flam3 sequence (frame t is time t, motion-blurred as flam3-animate does), of a flame's
+//! keyframes, of the thesis rotation or of in-betweens through a file's flames — written as
+//! numbered PNGs, each saved atomically, and optionally encoded into a video as they come.
+//!
+//! A run that stops (cancelled, a full disk, a crash) leaves only whole frames; the next run
+//! skips the frames already on disk, so long animations resume where they stopped.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+
+use image::DynamicImage;
+
+use crate::flame::animate::{RotationAnimation, interpolate};
+use crate::flame::interpolate::{check_times, interpolate_at};
+use crate::flame::model::Flame;
+use crate::flame::motion_blur::{MotionFrame, frame_from};
+use crate::flame::render::{RenderError, RenderOptions, Renderer};
+use crate::flame::sequence::MAX_TEMPORAL_SAMPLES;
+use crate::io::video::{Video, VideoError, VideoOptions};
+
+/// Most frames one animation may have.
+pub const MAX_FRAMES: u64 = 10_000_000;
+
+/// What moves.
+#[derive(Clone, Debug)]
+pub enum Source {
+    /// A flam3 sequence: control points sorted by time; frame t is the flame at time t.
+    Sequence(Vec<Flame>),
+    /// One flame with keyframes; frame k applies its curves at k.
+    Keys(Flame),
+    /// The thesis rotation: every triangle turns about its centre, 2° a frame.
+    Rotation { flame: Flame, seed: u64 },
+    /// In-betweens through the flames in order over `frames` frames (flam3's blend).
+    Interpolation { flames: Vec<Flame>, frames: u64 },
+}
+
+/// Why an animation could not be rendered.
+#[derive(Debug, thiserror::Error)]
+pub enum AnimError {
+    #[error("{0}")]
+    Settings(String),
+    #[error("frame {frame}: {source}")]
+    Render { frame: String, source: RenderError },
+    #[error("'{path}': {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error(
+        "{source}\nThe frames written so far are kept in '{frames}'; run the same command again \
+         to encode them (frames already on disk are not rendered again)."
+    )]
+    Video { source: VideoError, frames: PathBuf },
+    #[error("interrupted")]
+    Interrupted,
+}
+
+/// One frame to make: its time (or index) and its file name.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameSpec {
+    pub time: f64,
+    pub name: String,
+}
+
+impl Source {
+    /// Checks the source can be animated (a sequence's times strictly increase).
+    pub fn check(&self) -> Result<(), AnimError> {
+        match self {
+            Source::Sequence(cps) => {
+                if cps.is_empty() {
+                    return Err(AnimError::Settings("the sequence holds no flame".into()));
+                }
+                check_times(cps).map_err(|i| {
+                    AnimError::Settings(format!(
+                        "flame {} ('{}') has time {}, but the times of a sequence must be numbers \
+                         that increase from flame to flame (the one before has {})",
+                        i + 1,
+                        cps[i].name,
+                        cps[i].anim.time,
+                        i.checked_sub(1)
+                            .map_or("none".to_string(), |j| cps[j].anim.time.to_string())
+                    ))
+                })
+            }
+            Source::Interpolation { flames, .. } if flames.len() < 2 => Err(AnimError::Settings(
+                "interpolation needs at least two flames".into(),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// The frames flam3-animate makes by default: for a sequence, the whole times from the first
+    /// flame's up to one before the last's; for keyframes, frames 0 … frames − 1.
+    pub fn default_range(&self) -> (f64, f64) {
+        match self {
+            Source::Sequence(cps) => {
+                let first = cps[0].anim.time.trunc();
+                let last = (cps[cps.len() - 1].anim.time.trunc() - 1.0).max(first);
+                (first, last)
+            }
+            Source::Keys(f) => (0.0, f.keys.frames.saturating_sub(1) as f64),
+            Source::Rotation { .. } => (0.0, 89.0),
+            Source::Interpolation { frames, .. } => (0.0, frames.saturating_sub(1) as f64),
+        }
+    }
+
+    /// The frame at `time`, with the motion blur its flames ask for (sequences and keyframes;
+    /// `blur` false renders the instant only). `adjust` changes every flame before it is used
+    /// (size, quality). `cursor` keeps the rotation's state from one frame to the next, so
+    /// frames in order cost one step each.
+    pub fn frame(
+        &self,
+        time: f64,
+        blur: bool,
+        adjust: &dyn Fn(&mut Flame),
+        cursor: &mut Cursor,
+    ) -> MotionFrame {
+        let limit = if blur { MAX_TEMPORAL_SAMPLES } else { 1 };
+        let adjusted = |mut f: Flame| {
+            adjust(&mut f);
+            f
+        };
+        match self {
+            Source::Sequence(cps) => {
+                frame_from(time, limit, &cps[0], |t| adjusted(interpolate_at(cps, t)))
+            }
+            Source::Keys(base) => {
+                frame_from(time, limit, base, |t| adjusted(base.keys.apply(base, t)))
+            }
+            Source::Rotation { flame, seed } => {
+                let k = time.max(0.0) as u64;
+                let (at, f, anim) = match cursor.rotation.take() {
+                    Some(c) if c.0 <= k => c,
+                    _ => (0, flame.clone(), RotationAnimation::new(*seed)),
+                };
+                let (mut f, mut anim) = (f, anim);
+                for _ in at..k {
+                    anim.step(&mut f);
+                }
+                cursor.rotation = Some((k, f.clone(), anim));
+                still(adjusted(f))
+            }
+            Source::Interpolation { flames, frames } => {
+                let n = *frames;
+                let m = flames.len();
+                let k = time.max(0.0) as u64;
+                let f = if n <= 1 {
+                    flames[0].clone()
+                } else {
+                    let s = k as f64 * (m - 1) as f64 / (n - 1) as f64;
+                    let i = (s.floor() as usize).min(m - 2);
+                    interpolate(&flames[i], &flames[i + 1], s - i as f64)
+                };
+                still(adjusted(f))
+            }
+        }
+    }
+}
+
+/// What [`Source::frame`] keeps between frames.
+#[derive(Default)]
+pub struct Cursor {
+    rotation: Option<(u64, Flame, RotationAnimation)>,
+}
+
+/// A frame without motion blur.
+fn still(f: Flame) -> MotionFrame {
+    frame_from(0.0, 1, &f.clone(), |_| f.clone())
+}
+
+/// The frames of times `first` to `last` every `step`, named by the time as flam3-animate names
+/// them (`prefix` and five digits: `00003.png`).
+pub fn frames_by_time(
+    first: f64,
+    last: f64,
+    step: f64,
+    prefix: &str,
+) -> Result<Vec<FrameSpec>, AnimError> {
+    if !(first.is_finite() && last.is_finite() && step.is_finite() && step > 0.0) {
+        return Err(AnimError::Settings(format!(
+            "frames {first} to {last} every {step}: expected numbers, the step positive"
+        )));
+    }
+    let count = ((last - first) / step).floor() + 1.0;
+    if count < 1.0 {
+        return Err(AnimError::Settings(format!(
+            "no frame from {first} to {last}"
+        )));
+    }
+    if count > MAX_FRAMES as f64 {
+        return Err(AnimError::Settings(format!(
+            "{count} frames; an animation has at most {MAX_FRAMES}"
+        )));
+    }
+    Ok((0..count as u64)
+        .map(|k| {
+            let t = first + k as f64 * step;
+            let name = if t.fract() == 0.0 && t >= 0.0 {
+                format!("{prefix}{:05}.png", t as i64)
+            } else {
+                format!("{prefix}{t}.png")
+            };
+            FrameSpec { time: t, name }
+        })
+        .collect())
+}
+
+/// An animation to write.
+pub struct Job {
+    pub source: Source,
+    pub frames: Vec<FrameSpec>,
+    /// Where the PNG frames go.
+    pub dir: PathBuf,
+    /// A video made of the frames, with its settings.
+    pub video: Option<(PathBuf, VideoOptions)>,
+    pub render: RenderOptions,
+    pub size: Option<(u32, u32)>,
+    pub quality: Option<f64>,
+    /// Motion blur as the flames ask (false: every frame at its instant).
+    pub blur: bool,
+}
+
+/// How far a job has got.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Progress {
+    /// Frames finished (rendered or found on disk).
+    pub done: usize,
+    pub total: usize,
+    /// Of the frame being rendered.
+    pub fraction: f64,
+    /// Frames found on disk and not rendered again.
+    pub skipped: usize,
+}
+
+/// What a finished job did.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Summary {
+    pub rendered: usize,
+    pub skipped: usize,
+    pub video: Option<PathBuf>,
+}
+
+/// The size of a PNG on disk, if it is one (frames written by an earlier run).
+fn png_size(path: &Path) -> Option<(u32, u32)> {
+    let f = std::fs::File::open(path).ok()?;
+    let r = png::Decoder::new(std::io::BufReader::new(f))
+        .read_info()
+        .ok()?;
+    Some((r.info().width, r.info().height))
+}
+
+impl Job {
+    /// The flame adjustments of the job (size and quality).
+    fn adjust(&self) -> impl Fn(&mut Flame) + '_ {
+        move |f: &mut Flame| {
+            if let Some((w, h)) = self.size {
+                f.resize_keep_framing(w, h);
+            }
+            if let Some(q) = self.quality {
+                f.quality = q;
+            }
+        }
+    }
+
+    /// Render every frame not yet on disk, then (or meanwhile) the video. `progress` is called
+    /// after each pass of a frame and after each frame.
+    pub fn run(
+        &self,
+        cancel: &AtomicBool,
+        mut progress: impl FnMut(Progress),
+    ) -> Result<Summary, AnimError> {
+        self.source.check()?;
+        if self.frames.len() as u64 > MAX_FRAMES {
+            return Err(AnimError::Settings(format!(
+                "{} frames; an animation has at most {MAX_FRAMES}",
+                self.frames.len()
+            )));
+        }
+        std::fs::create_dir_all(&self.dir).map_err(|source| AnimError::Io {
+            path: self.dir.clone(),
+            source,
+        })?;
+        let adjust = self.adjust();
+        let total = self.frames.len();
+        let mut summary = Summary::default();
+        let mut video: Option<Video> = None;
+        let mut cursor = Cursor::default();
+        for (k, spec) in self.frames.iter().enumerate() {
+            let path = self.dir.join(&spec.name);
+            let frame = self
+                .source
+                .frame(spec.time, self.blur, &adjust, &mut cursor);
+            let (w, h) = (frame.develop.width, frame.develop.height);
+            let img = if png_size(&path) == Some((w, h)) {
+                summary.skipped += 1;
+                let on_disk = image::open(&path).map_err(|e| AnimError::Io {
+                    path: path.clone(),
+                    source: std::io::Error::other(e),
+                });
+                // Only needed for the video.
+                if self.video.is_some() {
+                    Some(on_disk?)
+                } else {
+                    None
+                }
+            } else {
+                let img = self.render_frame(&frame, spec, cancel, |fraction| {
+                    progress(Progress {
+                        done: k,
+                        total,
+                        fraction,
+                        skipped: summary.skipped,
+                    })
+                })?;
+                crate::io::save_flame_image(
+                    &path,
+                    &img,
+                    &frame.develop,
+                    frame.total_samples(),
+                    None,
+                )
+                .map_err(|source| AnimError::Io {
+                    path: path.clone(),
+                    source,
+                })?;
+                summary.rendered += 1;
+                Some(img)
+            };
+            if let (Some((vpath, vopts)), Some(img)) = (&self.video, img) {
+                let v = match &mut video {
+                    Some(v) => v,
+                    None => video.insert(
+                        Video::create(vpath, w, h, total as u32, vopts)
+                            .map_err(|e| self.video_error(e))?,
+                    ),
+                };
+                v.push(&img.to_rgba8()).map_err(|e| self.video_error(e))?;
+            }
+            progress(Progress {
+                done: k + 1,
+                total,
+                fraction: 1.0,
+                skipped: summary.skipped,
+            });
+        }
+        if let Some(v) = video {
+            v.finish().map_err(|e| self.video_error(e))?;
+            summary.video = self.video.as_ref().map(|(p, _)| p.clone());
+        }
+        Ok(summary)
+    }
+
+    fn video_error(&self, source: VideoError) -> AnimError {
+        AnimError::Video {
+            source,
+            frames: self.dir.clone(),
+        }
+    }
+
+    fn render_frame(
+        &self,
+        frame: &MotionFrame,
+        spec: &FrameSpec,
+        cancel: &AtomicBool,
+        progress: impl FnMut(f64),
+    ) -> Result<DynamicImage, AnimError> {
+        let mut r = Renderer::motion(frame, &self.render).map_err(|source| AnimError::Render {
+            frame: spec.name.clone(),
+            source,
+        })?;
+        if !r.run_all(10, cancel, progress) {
+            return Err(AnimError::Interrupted);
+        }
+        Ok(r.finish())
+    }
+}
+
+#[cfg(test)]
+#[path = "animation_tests.rs"]
+mod tests;

@@ -1,0 +1,157 @@
+//! Tests of animation jobs: frame names, checks, resuming and videos.
+
+use super::*;
+use crate::flame::model::{Affine, Xform};
+
+fn cp(time: f64, turn: f64) -> Flame {
+    let (s, c) = turn.sin_cos();
+    let mut f = Flame {
+        width: 32,
+        height: 24,
+        quality: 5.0,
+        scale: 12.0,
+        xforms: vec![
+            Xform::linear(
+                Affine::new(0.5 * c, -0.5 * s, 0.5 * s, 0.5 * c, 0.5, 0.0),
+                1.0,
+                0.0,
+            ),
+            Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, -0.5, 0.3), 1.0, 1.0),
+        ],
+        ..Flame::default()
+    };
+    f.anim.time = time;
+    f.anim.temporal_samples = 4;
+    f
+}
+
+fn scratch(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("ugnis-anim-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn job(dir: &Path) -> Job {
+    let source = Source::Sequence(vec![cp(0.0, 0.0), cp(4.0, 1.0)]);
+    let (a, b) = source.default_range();
+    Job {
+        frames: frames_by_time(a, b, 1.0, "").unwrap(),
+        source,
+        dir: dir.to_path_buf(),
+        video: None,
+        render: RenderOptions {
+            threads: 2,
+            ..RenderOptions::default()
+        },
+        size: None,
+        quality: None,
+        blur: true,
+    }
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn frames_are_named_by_their_time_as_flam3_animate_names_them() {
+    let f = frames_by_time(3.0, 5.0, 1.0, "seq-").unwrap();
+    let n: Vec<&str> = f.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(n, ["seq-00003.png", "seq-00004.png", "seq-00005.png"]);
+    assert_eq!(
+        frames_by_time(0.0, 1.0, 0.5, "").unwrap()[1].name,
+        "0.5.png"
+    );
+    assert!(frames_by_time(5.0, 3.0, 1.0, "").is_err());
+    assert!(frames_by_time(0.0, 1e12, 1.0, "").is_err());
+    assert!(frames_by_time(0.0, 3.0, 0.0, "").is_err());
+    assert!(frames_by_time(f64::NAN, 3.0, 1.0, "").is_err());
+    // flam3-animate's default range: from the first time to one before the last.
+    let s = Source::Sequence(vec![cp(2.0, 0.0), cp(9.0, 0.0)]);
+    assert_eq!(s.default_range(), (2.0, 8.0));
+}
+
+#[test]
+fn times_out_of_order_are_refused_with_the_flame_named() {
+    let s = Source::Sequence(vec![cp(0.0, 0.0), cp(5.0, 0.0), cp(5.0, 0.0)]);
+    let e = s.check().unwrap_err().to_string();
+    assert!(e.contains("flame 3") && e.contains("increase"), "{e}");
+    assert!(Source::Sequence(vec![cp(f64::NAN, 0.0)]).check().is_err());
+}
+
+#[test]
+fn a_rerun_skips_the_frames_on_disk() {
+    let d = scratch("resume");
+    let j = job(&d);
+    let never = AtomicBool::new(false);
+    let s = j.run(&never, |_| {}).unwrap();
+    assert_eq!((s.rendered, s.skipped), (4, 0));
+    assert_eq!(
+        names(&d),
+        ["00000.png", "00001.png", "00002.png", "00003.png"]
+    );
+    let before = std::fs::read(d.join("00002.png")).unwrap();
+    std::fs::remove_file(d.join("00002.png")).unwrap();
+    let s = j.run(&never, |_| {}).unwrap();
+    assert_eq!((s.rendered, s.skipped), (1, 3));
+    // The same seed renders the same frame.
+    assert_eq!(std::fs::read(d.join("00002.png")).unwrap(), before);
+}
+
+#[test]
+fn a_cancelled_run_leaves_only_whole_frames() {
+    let d = scratch("cancel");
+    let j = job(&d);
+    let stop = AtomicBool::new(true);
+    assert!(matches!(j.run(&stop, |_| {}), Err(AnimError::Interrupted)));
+    assert!(names(&d).is_empty(), "{:?}", names(&d));
+}
+
+#[test]
+fn frames_and_a_video_come_out_together() {
+    let d = scratch("video");
+    let mut j = job(&d.join("frames"));
+    j.video = Some((d.join("loop.apng"), VideoOptions::default()));
+    let s = j.run(&AtomicBool::new(false), |_| {}).unwrap();
+    assert_eq!(s.video, Some(d.join("loop.apng")));
+    assert_eq!(names(&d.join("frames")).len(), 4);
+    let r = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(d.join("loop.apng")).unwrap(),
+    ))
+    .read_info()
+    .unwrap();
+    assert_eq!(r.info().animation_control.unwrap().num_frames, 4);
+    // Encoding again from the frames on disk renders nothing.
+    std::fs::remove_file(d.join("loop.apng")).unwrap();
+    let s = j.run(&AtomicBool::new(false), |_| {}).unwrap();
+    assert_eq!((s.rendered, s.skipped), (0, 4));
+    assert!(d.join("loop.apng").exists());
+}
+
+#[test]
+fn rotation_frames_step_from_the_start_whatever_the_order() {
+    let src = Source::Rotation {
+        flame: cp(0.0, 0.3),
+        seed: 7,
+    };
+    let adjust = |_: &mut Flame| {};
+    let mut c = Cursor::default();
+    let in_order: Vec<Flame> = (0..5)
+        .map(|k| src.frame(k as f64, true, &adjust, &mut c).develop)
+        .collect();
+    let alone = src
+        .frame(3.0, true, &adjust, &mut Cursor::default())
+        .develop;
+    assert_eq!(alone.xforms, in_order[3].xforms);
+    // Going back restarts from the first frame.
+    assert_eq!(
+        src.frame(1.0, true, &adjust, &mut c).develop.xforms,
+        in_order[1].xforms
+    );
+}
