@@ -48,7 +48,6 @@ impl<'t, 'o: 't> Ctx<'t, 'o> {
             library: OnceCell::new(),
         }
     }
-
 }
 
 impl Ctx<'_, '_> {
