@@ -7,6 +7,7 @@ pub mod diag;
 pub mod error;
 pub mod escape_view;
 pub mod flam3_xml;
+mod fractint_text;
 pub mod ggr;
 pub mod ifs;
 pub mod image_in;
