@@ -2,7 +2,9 @@
 
 use std::fmt::Write as _;
 
-use crate::flame::model::{Affine, Flame, FlameKind, Ifs3d, NewFlame, Xform};
+pub use crate::explore::ifs::conjugate_y;
+use crate::explore::ifs::linear_flame;
+use crate::flame::model::{Affine, Flame, Ifs3d, NewFlame, Xform};
 use crate::flame::variations;
 use crate::io::diag::fmt_num;
 
@@ -109,22 +111,14 @@ pub fn write(f: &IfsFile) -> Result<String, String> {
     Ok(s)
 }
 
-/// Fractint (y up) ↔ flame (y down): conjugation with y → −y, its own inverse.
-pub fn conjugate_y(m: &Affine) -> Affine {
-    Affine::new(m.a, -m.b, -m.c, m.d, m.e, -m.f)
-}
-
 /// A 2-D entry as a flame; a 3-D entry as a flame that iterates the 3-D
 /// system and shows it through Fractint's default 30°/30°/30° view. The camera is left to
 /// automatic framing (the renderer frames flames without a camera).
 pub fn entry_to_flame(e: &IfsEntry, defaults: &NewFlame) -> Flame {
-    let mut f = defaults.flame();
-    f.name = e.name.clone();
-    f.kind = FlameKind::Ifs;
-    f.has_camera = false;
-    let p = e.probabilities();
-    let psum: f64 = p.iter().sum();
     if e.three_d {
+        // One placeholder xform (the identity) keeps the flame valid for code that expects
+        // xforms.
+        let mut f = linear_flame(&e.name, &[Affine::IDENTITY], [1.0], defaults);
         f.ifs3d = Some(Ifs3d {
             rows: e
                 .rows
@@ -133,33 +127,20 @@ pub fn entry_to_flame(e: &IfsEntry, defaults: &NewFlame) -> Flame {
                 .collect(),
             view_degrees: Ifs3d::FRACTINT_VIEW,
         });
-        // One placeholder xform keeps the flame valid for code that expects xforms.
-        f.xforms = vec![Xform::linear(Affine::IDENTITY, 1.0, 0.0)];
         return f;
     }
-    let n = e.rows.len();
-    let maps: Vec<Affine> = e.maps2d().iter().map(conjugate_y).collect();
+    let p = e.probabilities();
+    let psum: f64 = p.iter().sum();
+    let maps = e.maps2d();
     let weights = if p.iter().any(|v| *v < 0.0) {
         fractint_shares(&p)
     } else if psum > 0.0 {
         p.iter().map(|v| v / psum).collect()
     } else {
+        // |det| is the same for a map and its y-flipped conjugate.
         Flame::determinant_weights(&maps)
     };
-    f.xforms = maps
-        .iter()
-        .zip(weights)
-        .enumerate()
-        .map(|(i, (m, w))| {
-            let c = if n > 1 {
-                i as f64 / (n - 1) as f64
-            } else {
-                0.0
-            };
-            Xform::linear(*m, w, c)
-        })
-        .collect();
-    f
+    linear_flame(&e.name, &maps, weights, defaults)
 }
 
 /// The share of r ∈ [0, 1) each row gets under Fractint's selection: the first row whose

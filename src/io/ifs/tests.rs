@@ -1,6 +1,7 @@
 //! Tests of the `.ifs` reader and writer and of the conversions to and from flames.
 
 use super::*;
+use crate::flame::model::FlameKind;
 use crate::io::diag::Pos;
 
 const LIB: &str = "; a test library in Fractint's syntax\r\n\
