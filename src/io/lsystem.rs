@@ -15,6 +15,7 @@
 
 use crate::explore::lsystem::{self, ANGLE_DIVISIONS, Angle, LSystem, MAX_RULE_LEN, RESERVED};
 use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, lines, parse_int};
+use crate::io::error::LSystemWriteError;
 use crate::io::fractint_text::{BadName, Word, check_name, header, strip_comment, words};
 
 /// Most entries per file.
@@ -450,46 +451,41 @@ fn divisions(a: Angle) -> Option<u32> {
 /// format cannot hold (an angle that is not 360°/n for n in 3..49, extra draw symbols, turning
 /// brackets, a start heading that is not a multiple of δ) is refused with the reason. The swap
 /// flag becomes a leading `!` and the start heading leading `+`, which Fractint reads the same.
-pub fn write(systems: &[LSystem]) -> Result<String, String> {
+pub fn write(systems: &[LSystem]) -> Result<String, LSystemWriteError> {
     let mut s = String::new();
     let mut names: Vec<String> = Vec::new();
     for (i, sys) in systems.iter().enumerate() {
-        sys.compile()
-            .map_err(|e| format!("'{}' cannot be saved: {e}", sys.name))?;
+        sys.compile().map_err(|reason| LSystemWriteError::Invalid {
+            name: sys.name.clone(),
+            reason,
+        })?;
         let name = entry_name(&sys.name);
         if names.iter().any(|n| n.eq_ignore_ascii_case(&name)) {
-            return Err(format!(
-                "two entries are named '{name}'; Fractint would only find the first"
-            ));
+            return Err(LSystemWriteError::SameName(name));
         }
         let n = divisions(sys.angle)
             .filter(|n| ANGLE_DIVISIONS.contains(n))
-            .ok_or_else(|| {
-                format!(
-                    "'{}': angle {}° is not 360°/n for an integer n from 3 to 49; .l files cannot hold it",
-                    sys.name,
-                    sys.angle.degrees()
-                )
+            .ok_or_else(|| LSystemWriteError::Angle {
+                name: sys.name.clone(),
+                degrees: sys.angle.degrees(),
             })?;
         if !sys.draw_symbols.is_empty() {
-            return Err(format!(
-                "'{}': in .l files only F and D draw; '{}' cannot be made to draw",
-                sys.name, sys.draw_symbols
-            ));
+            return Err(LSystemWriteError::DrawSymbols {
+                name: sys.name.clone(),
+                symbols: sys.draw_symbols.clone(),
+            });
         }
         if sys.bracket_turn {
-            return Err(format!(
-                "'{}': brackets that also turn cannot be written to a .l file",
-                sys.name
-            ));
+            return Err(LSystemWriteError::TurningBrackets(sys.name.clone()));
         }
         let delta = 360.0 / n as f64;
         let turns = (sys.start_heading / delta).round();
         if (turns * delta - sys.start_heading).abs() > 1e-9 {
-            return Err(format!(
-                "'{}': the start heading {}° is not a multiple of δ = {delta}°",
-                sys.name, sys.start_heading
-            ));
+            return Err(LSystemWriteError::StartHeading {
+                name: sys.name.clone(),
+                heading: sys.start_heading,
+                delta,
+            });
         }
         let turns = (turns as i64).rem_euclid(n as i64) as usize;
         // The start heading as leading turns, written before the swap so they turn left; the

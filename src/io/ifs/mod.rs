@@ -7,6 +7,7 @@ use crate::explore::ifs::linear_flame;
 use crate::flame::model::{Affine, Flame, Ifs3d, NewFlame, Xform};
 use crate::flame::variations;
 use crate::io::diag::fmt_num;
+use crate::io::error::IfsWriteError;
 
 mod read;
 
@@ -73,22 +74,19 @@ fn same_name(a: &str, b: &str) -> bool {
 
 /// Write an `.ifs` file: CRLF, two-space indent, a blank line between entries. Names that
 /// Fractint would confuse (equal in their first 18 characters, ignoring case) are an error.
-pub fn write(f: &IfsFile) -> Result<String, String> {
+pub fn write(f: &IfsFile) -> Result<String, IfsWriteError> {
     for (i, a) in f.entries.iter().enumerate() {
         if a.name.is_empty()
             || a.name
                 .contains(|c: char| c.is_whitespace() || "(){};".contains(c))
         {
-            return Err(format!(
-                "'{}' cannot be an .ifs entry name (no spaces or ( ) {{ }} ;)",
-                a.name
-            ));
+            return Err(IfsWriteError::EntryName(a.name.clone()));
         }
         if let Some(b) = f.entries[..i].iter().find(|b| same_name(&a.name, &b.name)) {
-            return Err(format!(
-                "entry names '{}' and '{}' are the same for Fractint (first {NAME_LEN} characters, ignoring case)",
-                b.name, a.name
-            ));
+            return Err(IfsWriteError::SameName {
+                first: b.name.clone(),
+                second: a.name.clone(),
+            });
         }
     }
     let mut s = String::new();
@@ -162,7 +160,7 @@ pub fn fractint_shares(p: &[f64]) -> Vec<f64> {
 /// Convert a flame to a 2-D `.ifs` entry. Returns the entry and a warning
 /// listing what the `.ifs` format cannot keep, or an error naming the first xform that is not
 /// a plain linear map.
-pub fn flame_to_entry(f: &Flame) -> Result<(IfsEntry, Option<String>), String> {
+pub fn flame_to_entry(f: &Flame) -> Result<(IfsEntry, Option<String>), IfsWriteError> {
     if let Some(i3) = &f.ifs3d {
         return Ok((
             IfsEntry {
@@ -177,21 +175,16 @@ pub fn flame_to_entry(f: &Flame) -> Result<(IfsEntry, Option<String>), String> {
     let mut rows = Vec::with_capacity(n);
     let wsum: f64 = f.xforms.iter().map(|x| x.weight).sum();
     if wsum <= 0.0 {
-        return Err("the flame's weights sum to 0".into());
+        return Err(IfsWriteError::ZeroWeights);
     }
     let mut lost: Vec<&str> = Vec::new();
     for (i, x) in f.xforms.iter().enumerate() {
-        let l = linear_weight(x).map_err(|v| {
-            format!(
-                "xform {} uses variation '{v}'; only linear flames can be saved as .ifs",
-                i + 1
-            )
+        let l = linear_weight(x).map_err(|variation| IfsWriteError::NotLinear {
+            xform: i + 1,
+            variation,
         })?;
         if (0..n).any(|j| x.chaos_to(j) != 1.0) {
-            return Err(format!(
-                "xform {} uses xaos; .ifs files have no xaos",
-                i + 1
-            ));
+            return Err(IfsWriteError::Xaos(i + 1));
         }
         let scaled = Affine::new(
             l * x.coefs.a,
@@ -211,7 +204,7 @@ pub fn flame_to_entry(f: &Flame) -> Result<(IfsEntry, Option<String>), String> {
         let identity =
             fx.coefs.is_identity() && fx.post.is_identity() && linear_weight(fx) == Ok(1.0);
         if !identity {
-            return Err("the flame has a final xform; .ifs files have none".into());
+            return Err(IfsWriteError::FinalXform);
         }
     }
     lost.extend(["colours", "gradient", "camera"]);

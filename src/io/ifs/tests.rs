@@ -132,7 +132,12 @@ fn write_read_round_trip_is_exact() {
             },
         ],
     };
-    assert!(write(&dup).unwrap_err().contains("same for Fractint"));
+    assert!(
+        write(&dup)
+            .unwrap_err()
+            .to_string()
+            .contains("same for Fractint")
+    );
 }
 
 #[test]
@@ -165,7 +170,7 @@ fn only_linear_flames_export() {
     let mut flame = entry_to_flame(f.get("fern").unwrap(), &NewFlame::default());
     flame.xforms[2].vars = vec![crate::flame::model::Var::new(variations::SWIRL, 1.0)];
     assert_eq!(
-        flame_to_entry(&flame).unwrap_err(),
+        flame_to_entry(&flame).unwrap_err().to_string(),
         "xform 3 uses variation 'swirl'; only linear flames can be saved as .ifs"
     );
     // Linear weight and post fold into the map.

@@ -27,6 +27,7 @@ use crate::flame::chaos::LANES;
 use crate::flame::histogram::Histogram;
 use crate::flame::state::RenderState;
 use crate::io::diag::{Diagnostic, Pos};
+use crate::io::error::WriteError;
 
 mod chunk;
 mod read;
@@ -71,9 +72,9 @@ fn io_err(file: &str, e: std::io::Error) -> Diagnostic {
 
 /// Check that a state's flame survives the trip through its XML (3-D IFS flames, for one, have
 /// no XML form).
-pub fn check_saveable(st: &RenderState) -> Result<(), String> {
+pub fn check_saveable(st: &RenderState) -> Result<(), WriteError> {
     if st.flame.ifs3d.is_some() {
-        return Err("a render state of a 3-D IFS cannot be saved (its maps have no flame XML form); render it in one go".into());
+        return Err(WriteError::Ifs3dState);
     }
     Ok(())
 }

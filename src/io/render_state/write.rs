@@ -6,7 +6,7 @@ use std::io::Write;
 use rayon::prelude::*;
 
 use super::chunk::compress;
-use super::{CHUNK_ROWS, FORMAT_VERSION, LANE_SET_BYTES, MAGIC};
+use super::{CHUNK_ROWS, FORMAT_VERSION, LANE_SET_BYTES, MAGIC, check_saveable};
 use crate::flame::histogram::Bucket;
 use crate::flame::state::RenderState;
 
@@ -26,15 +26,6 @@ fn header_text(st: &RenderState, grid: (usize, usize)) -> String {
         grid.1,
         crate::io::flam3_xml::flame_element(&st.flame)
     )
-}
-
-/// Check that a state's flame survives the trip through its XML (3-D IFS flames, for one, have
-/// no XML form).
-pub fn check_saveable(st: &RenderState) -> Result<(), String> {
-    if st.flame.ifs3d.is_some() {
-        return Err("a render state of a 3-D IFS cannot be saved (its maps have no flame XML form); render it in one go".into());
-    }
-    Ok(())
 }
 
 /// Writes a state: header and orbits at once, then the histogram rows in order.
