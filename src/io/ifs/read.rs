@@ -347,7 +347,7 @@ impl Reader<'_> {
         let name = &open.name;
         let row = open.row_len();
         let n = open.nums.len();
-        if n == 0 || n % row != 0 {
+        if n == 0 || !n.is_multiple_of(row) {
             return Err(self.err(
                 at,
                 "IFS007",
