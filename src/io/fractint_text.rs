@@ -1,6 +1,37 @@
 //! The text of Fractint's entry files (`.ifs`, `.l`): lines without their `;` comments, words
-//! with their byte offsets, entry headers `name {` and the rule for entry names. Each format
-//! reads its entries on top of these and reports problems with its own codes.
+//! with their byte offsets, entry headers `name {`, the rule for entry names, and where
+//! problems are reported. Each format reads its entries on top of these and reports problems
+//! with its own codes.
+
+use crate::io::diag::{Diagnostic, SourceMap};
+
+/// Diagnostics at byte offsets of a file, and the warnings so far.
+pub(super) struct Reporter<'a> {
+    pub(super) file: &'a str,
+    pub(super) map: SourceMap<'a>,
+    pub(super) warnings: Vec<Diagnostic>,
+}
+
+impl<'a> Reporter<'a> {
+    pub(super) fn new(text: &'a str, file: &'a str) -> Self {
+        Reporter {
+            file,
+            map: SourceMap::new(text),
+            warnings: Vec::new(),
+        }
+    }
+
+    /// An error at byte `off`.
+    pub(super) fn err(&self, off: usize, code: &'static str, msg: String) -> Diagnostic {
+        Diagnostic::error(self.file, self.map.pos(off), code, msg)
+    }
+
+    /// A warning at byte `off`, kept.
+    pub(super) fn warn(&mut self, off: usize, code: &'static str, msg: String) {
+        let d = Diagnostic::warning(self.file, self.map.pos(off), code, msg);
+        self.warnings.push(d);
+    }
+}
 
 /// A whitespace-separated word and the byte offset of its first character in the file.
 pub(super) struct Word<'a> {
@@ -66,21 +97,46 @@ pub(super) fn header(code: &str, base: usize) -> Option<Header<'_>> {
     })
 }
 
-/// What is wrong with an entry name.
-pub(super) enum BadName {
-    /// Nothing before `{`.
-    Missing,
-    /// Spaces or `}` in it: names are one word.
-    NotOneWord,
+/// An entry name that is not one: where, what, and whether it is missing (nothing before
+/// `{`) rather than more than one word.
+pub(super) struct BadName {
+    pub(super) missing: bool,
+    pub(super) off: usize,
+    pub(super) message: String,
 }
 
-/// Check an entry name (trimmed): present, and one word.
-pub(super) fn check_name(name: &str) -> Result<(), BadName> {
+/// Check the entry name `name` (trimmed) of header `h`: present, and one word (no spaces, no
+/// `}`).
+pub(super) fn check_name(name: &str, h: &Header) -> Result<(), BadName> {
     if name.is_empty() {
-        Err(BadName::Missing)
+        Err(BadName {
+            missing: true,
+            off: h.brace,
+            message: "'{' without an entry name before it".into(),
+        })
     } else if name.contains(char::is_whitespace) || name.contains('}') {
-        Err(BadName::NotOneWord)
+        Err(BadName {
+            missing: false,
+            off: h.start,
+            message: format!("'{name}' is not an entry name (names have no spaces)"),
+        })
     } else {
         Ok(())
     }
+}
+
+/// A valid entry name from any name: whitespace and the `reserved` characters become `_`;
+/// an empty name becomes `fallback`.
+pub(super) fn entry_name(name: &str, reserved: &str, fallback: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_whitespace() || reserved.contains(c) {
+                '_'
+            } else {
+                c
+            }
+        })
+        .collect();
+    if s.is_empty() { fallback.into() } else { s }
 }

@@ -16,7 +16,7 @@
 use crate::explore::lsystem::{self, ANGLE_DIVISIONS, Angle, LSystem, MAX_RULE_LEN, RESERVED};
 use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, lines, parse_int};
 use crate::io::error::LSystemWriteError;
-use crate::io::fractint_text::{BadName, Word, check_name, header, strip_comment, words};
+use crate::io::fractint_text::{self, Reporter, Word, check_name, header, strip_comment, words};
 
 /// Most entries per file.
 pub const MAX_ENTRIES: usize = 10_000;
@@ -51,24 +51,20 @@ type R<T> = Result<T, Diagnostic>;
 
 /// The reader of an `.l` file: the file, its positions, the warnings so far.
 struct Reader<'a> {
-    file: &'a str,
-    map: SourceMap<'a>,
-    warnings: Vec<Diagnostic>,
+    rep: Reporter<'a>,
 }
 
 /// Parse the text of an `.l` file.
 pub fn parse(text: &str, file: &str) -> R<Parsed<LFile>> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut rd = Reader {
-        file,
-        map: SourceMap::new(text),
-        warnings: Vec::new(),
+        rep: Reporter::new(text, file),
     };
     let mut out = LFile::default();
     let mut cur: Option<Open> = None;
     for (base, line) in lines(text) {
         if line.chars().count() >= LINE_LIMIT {
-            rd.warn(
+            rd.rep.warn(
                 base,
                 "LSY011",
                 format!(
@@ -105,13 +101,13 @@ pub fn parse(text: &str, file: &str) -> R<Parsed<LFile>> {
         }
     }
     if let Some(o) = cur {
-        return Err(rd.err(
+        return Err(rd.rep.err(
             o.at,
             "LSY003",
             format!(
                 "unterminated entry '{}' opened at {}: end of file before '}}'",
                 o.name,
-                match rd.map.pos(o.at) {
+                match rd.rep.map.pos(o.at) {
                     Pos::LineCol(l, c) => format!("{l}:{c}"),
                     _ => String::new(),
                 }
@@ -120,20 +116,11 @@ pub fn parse(text: &str, file: &str) -> R<Parsed<LFile>> {
     }
     Ok(Parsed {
         value: out,
-        warnings: rd.warnings,
+        warnings: rd.rep.warnings,
     })
 }
 
 impl Reader<'_> {
-    fn err(&self, off: usize, code: &'static str, msg: String) -> Diagnostic {
-        Diagnostic::error(self.file, self.map.pos(off), code, msg)
-    }
-
-    fn warn(&mut self, off: usize, code: &'static str, msg: String) {
-        let d = Diagnostic::warning(self.file, self.map.pos(off), code, msg);
-        self.warnings.push(d);
-    }
-
     /// A header line `Name {` outside any entry (`out`: the entries so far): the new entry and
     /// the offset of its `{`.
     fn header(&mut self, code: &str, base: usize, toks: &[Word], out: &LFile) -> R<(Open, usize)> {
@@ -142,7 +129,7 @@ impl Reader<'_> {
             let l = first.text.to_ascii_lowercase();
             return Err(
                 if l == "angle" || l == "axiom" || first.text.contains('=') {
-                    self.err(
+                    self.rep.err(
                         first.off,
                         "LSY001",
                         format!(
@@ -151,7 +138,7 @@ impl Reader<'_> {
                         ),
                     )
                 } else {
-                    self.err(
+                    self.rep.err(
                         first.off,
                         "LSY002",
                         format!(
@@ -163,25 +150,9 @@ impl Reader<'_> {
             );
         };
         let name = h.before.trim();
-        match check_name(name) {
-            Ok(()) => {}
-            Err(BadName::Missing) => {
-                return Err(self.err(
-                    h.brace,
-                    "LSY002",
-                    "'{' without an entry name before it".into(),
-                ));
-            }
-            Err(BadName::NotOneWord) => {
-                return Err(self.err(
-                    first.off,
-                    "LSY002",
-                    format!("'{name}' is not an entry name (names have no spaces)"),
-                ));
-            }
-        }
+        check_name(name, &h).map_err(|b| self.rep.err(b.off, "LSY002", b.message))?;
         if out.entries.len() >= MAX_ENTRIES {
-            return Err(self.err(
+            return Err(self.rep.err(
                 first.off,
                 "LSY015",
                 format!("more than {MAX_ENTRIES} entries in one file"),
@@ -192,7 +163,7 @@ impl Reader<'_> {
             .iter()
             .find(|e| e.name.eq_ignore_ascii_case(name))
         {
-            self.warn(
+            self.rep.warn(
                 first.off,
                 "LSY014",
                 format!(
@@ -215,7 +186,7 @@ impl Reader<'_> {
     /// a production `X=s` or `}`. True when the line closes the entry.
     fn item(&mut self, open: &mut Open, code: &str, base: usize, toks: &[Word]) -> R<bool> {
         if let Some(t) = toks.iter().find(|t| t.text.contains('{')) {
-            return Err(self.err(
+            return Err(self.rep.err(
                 t.off + t.text.find('{').unwrap_or(0),
                 "LSY004",
                 format!("'{{' inside entry '{}' (is its '}}' missing?)", open.name),
@@ -225,7 +196,7 @@ impl Reader<'_> {
         let lower = first.text.to_ascii_lowercase();
         if first.text == "}" {
             if let Some(t) = toks.get(1) {
-                return Err(self.err(
+                return Err(self.rep.err(
                     t.off,
                     "LSY001",
                     format!("'{}' after the '}}' that closes '{}'", t.text, open.name),
@@ -239,7 +210,7 @@ impl Reader<'_> {
         } else if let Some(eq) = code.find('=') {
             self.production(open, code, base, eq)
         } else {
-            Err(self.err(
+            Err(self.rep.err(
                 first.off,
                 "LSY009",
                 format!(
@@ -254,7 +225,7 @@ impl Reader<'_> {
     fn angle(&mut self, open: &mut Open, toks: &[Word]) -> R<bool> {
         let first = &toks[0];
         let v = toks.get(1).ok_or_else(|| {
-            self.err(
+            self.rep.err(
                 first.off + first.text.len(),
                 "LSY016",
                 "expected the angle divisions n after 'Angle' (δ = 360°/n)".into(),
@@ -265,14 +236,14 @@ impl Reader<'_> {
             .ok()
             .filter(|n| *n >= 0 && ANGLE_DIVISIONS.contains(&(*n as u32)))
             .ok_or_else(|| {
-                self.err(
+                self.rep.err(
                     v.off,
                     "LSY007",
                     format!("angle '{vt}' must be an integer from 3 to 49 (δ = 360°/n)"),
                 )
             })?;
         if open.angle.is_some() {
-            self.warn(
+            self.rep.warn(
                 first.off,
                 "LSY012",
                 format!("a second Angle in '{}'; the last one counts", open.name),
@@ -286,16 +257,16 @@ impl Reader<'_> {
     fn axiom(&mut self, open: &mut Open, toks: &[Word]) -> R<bool> {
         let first = &toks[0];
         let v = toks.get(1).ok_or_else(|| {
-            self.err(
+            self.rep.err(
                 first.off + first.text.len(),
                 "LSY016",
                 "expected the axiom string after 'Axiom'".into(),
             )
         })?;
         let (s, glued) = self.unglue(v);
-        check_string(&s, v.off, &self.map, self.file)?;
+        check_string(&s, v.off, &self.rep.map, self.rep.file)?;
         if open.axiom.is_some() {
-            self.warn(
+            self.rep.warn(
                 first.off,
                 "LSY012",
                 format!("a second Axiom in '{}'; the last one counts", open.name),
@@ -313,14 +284,14 @@ impl Reader<'_> {
         let sym = match (chars.next(), chars.next()) {
             (Some(c), None) => c,
             (None, _) => {
-                return Err(self.err(
+                return Err(self.rep.err(
                     base + eq,
                     "LSY009",
                     "a production needs its symbol before '=' (e.g. F=F+F)".into(),
                 ));
             }
             _ => {
-                return Err(self.err(
+                return Err(self.rep.err(
                     lhs_off,
                     "LSY009",
                     format!("'{lhs}' before '=': a production rewrites one symbol (e.g. F=F+F)"),
@@ -328,7 +299,7 @@ impl Reader<'_> {
             }
         };
         if RESERVED.contains(sym.to_ascii_lowercase()) {
-            return Err(self.err(
+            return Err(self.rep.err(
                 lhs_off,
                 "LSY008",
                 format!("'{sym}' is a turtle command and cannot have a production"),
@@ -340,7 +311,7 @@ impl Reader<'_> {
             Some(t) if t.text == "}" => (String::new(), self.rest_closes(&rtoks, "")?),
             Some(t) => {
                 let (s, glued) = self.unglue(t);
-                check_string(&s, t.off, &self.map, self.file)?;
+                check_string(&s, t.off, &self.rep.map, self.rep.file)?;
                 let closes =
                     glued || self.rest_closes(&rtoks[1..], &format!("the production {sym}="))?;
                 (s, closes)
@@ -355,7 +326,7 @@ impl Reader<'_> {
         match rest {
             [] => Ok(false),
             [t] if t.text == "}" => Ok(true),
-            [t, ..] => Err(self.err(
+            [t, ..] => Err(self.rep.err(
                 t.off,
                 "LSY009",
                 format!(
@@ -370,7 +341,7 @@ impl Reader<'_> {
     fn unglue(&mut self, t: &Word) -> (String, bool) {
         match t.text.strip_suffix('}') {
             Some(s) if !s.is_empty() => {
-                self.warn(
+                self.rep.warn(
                     t.off + s.len(),
                     "LSY013",
                     "'}' glued to the string; Fractint needs it on its own".into(),
@@ -384,14 +355,14 @@ impl Reader<'_> {
     /// The entry closed at `close_off`: it needs an angle and an axiom.
     fn finish(&self, o: Open, close_off: usize) -> R<LSystem> {
         let Some(n) = o.angle else {
-            return Err(self.err(
+            return Err(self.rep.err(
                 close_off,
                 "LSY005",
                 format!("entry '{}' has no 'Angle n' line", o.name),
             ));
         };
         let Some(axiom) = o.axiom else {
-            return Err(self.err(
+            return Err(self.rep.err(
                 close_off,
                 "LSY006",
                 format!("entry '{}' has no 'Axiom' line", o.name),
@@ -423,17 +394,7 @@ fn check_string(s: &str, off: usize, map: &SourceMap, file: &str) -> Result<(), 
 
 /// A valid entry name from any name (spaces and reserved characters become '_').
 pub fn entry_name(name: &str) -> String {
-    let s: String = name
-        .chars()
-        .map(|c| {
-            if c.is_whitespace() || "{};=".contains(c) {
-                '_'
-            } else {
-                c
-            }
-        })
-        .collect();
-    if s.is_empty() { "lsystem".into() } else { s }
+    fractint_text::entry_name(name, "{};=", "lsystem")
 }
 
 /// The angle divisions n with δ = 360°/n, if δ is such an angle.

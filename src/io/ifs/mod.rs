@@ -8,6 +8,7 @@ use crate::flame::model::{Affine, Flame, Ifs3d, NewFlame, Xform};
 use crate::flame::variations;
 use crate::io::diag::fmt_num;
 use crate::io::error::IfsWriteError;
+use crate::io::fractint_text;
 
 mod read;
 
@@ -240,17 +241,7 @@ fn linear_weight(x: &Xform) -> Result<f64, String> {
 
 /// A valid entry name from a flame name (spaces and reserved characters become '_').
 pub fn entry_name(name: &str) -> String {
-    let s: String = name
-        .chars()
-        .map(|c| {
-            if c.is_whitespace() || "(){};".contains(c) {
-                '_'
-            } else {
-                c
-            }
-        })
-        .collect();
-    if s.is_empty() { "ifs".into() } else { s }
+    fractint_text::entry_name(name, "(){};", "ifs")
 }
 
 #[cfg(test)]

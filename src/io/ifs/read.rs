@@ -2,8 +2,8 @@
 //! Fractint's tolerances and warnings, and old files of bare rows without a header.
 
 use super::{FRACTINT_MAX_ROWS, IfsEntry, IfsFile, MAX_ENTRIES, MAX_ROWS, NAME_LEN, same_name};
-use crate::io::diag::{Diagnostic, NumberError, Parsed, Pos, SourceMap, lines, parse_number};
-use crate::io::fractint_text::{BadName, Header, Word, check_name, header, strip_comment, words};
+use crate::io::diag::{Diagnostic, NumberError, Parsed, Pos, lines, parse_number};
+use crate::io::fractint_text::{Header, Reporter, Word, check_name, header, strip_comment, words};
 
 /// An entry being read.
 struct OpenEntry {
@@ -23,9 +23,7 @@ impl OpenEntry {
 
 /// The reader of `name { … }` entries: the file, its positions, what was read and said.
 struct Reader<'a> {
-    file: &'a str,
-    map: SourceMap<'a>,
-    warnings: Vec<Diagnostic>,
+    rep: Reporter<'a>,
     out: IfsFile,
 }
 
@@ -106,9 +104,7 @@ fn parse_legacy(text: &str, file: &str, numbers: usize) -> Result<Parsed<IfsFile
 /// Parse `name { … }` entries.
 fn parse_entries(text: &str, file: &str) -> R<Parsed<IfsFile>> {
     let mut rd = Reader {
-        file,
-        map: SourceMap::new(text),
-        warnings: Vec::new(),
+        rep: Reporter::new(text, file),
         out: IfsFile::default(),
     };
     let mut cur: Option<OpenEntry> = None;
@@ -122,7 +118,7 @@ fn parse_entries(text: &str, file: &str) -> R<Parsed<IfsFile>> {
             continue;
         };
         if let Some(b) = code.find('{') {
-            return Err(rd.err(
+            return Err(rd.rep.err(
                 base + b,
                 "IFS005",
                 format!("'{{' inside entry '{}' (entries cannot nest)", open.name),
@@ -133,10 +129,10 @@ fn parse_entries(text: &str, file: &str) -> R<Parsed<IfsFile>> {
         }
     }
     if let Some(open) = cur {
-        let Pos::LineCol(l, c) = rd.map.pos(open.hdr) else {
+        let Pos::LineCol(l, c) = rd.rep.map.pos(open.hdr) else {
             unreachable!()
         };
-        return Err(rd.err(
+        return Err(rd.rep.err(
             text.len(),
             "IFS004",
             format!("unterminated entry '{}' opened at {l}:{c}", open.name),
@@ -144,20 +140,11 @@ fn parse_entries(text: &str, file: &str) -> R<Parsed<IfsFile>> {
     }
     Ok(Parsed {
         value: rd.out,
-        warnings: rd.warnings,
+        warnings: rd.rep.warnings,
     })
 }
 
 impl Reader<'_> {
-    fn err(&self, off: usize, code: &'static str, msg: String) -> Diagnostic {
-        Diagnostic::error(self.file, self.map.pos(off), code, msg)
-    }
-
-    fn warn(&mut self, off: usize, code: &'static str, msg: String) {
-        let d = Diagnostic::warning(self.file, self.map.pos(off), code, msg);
-        self.warnings.push(d);
-    }
-
     /// A header line outside any entry: name [ "(" qualifier ")" ] "{" — the name may be glued
     /// to "(" or "{"; nothing but a comment may follow "{".
     fn header(&self, code: &str, base: usize, toks: &[Word]) -> R<OpenEntry> {
@@ -165,13 +152,13 @@ impl Reader<'_> {
             let first = toks[0].text;
             return Err(
                 if first.parse::<f64>().is_ok() || first.starts_with(['-', '+', '.']) {
-                    self.err(
+                    self.rep.err(
                         toks[0].off,
                         "IFS001",
                         format!("'{first}' outside any entry; an entry starts with 'name {{'"),
                     )
                 } else {
-                    self.err(
+                    self.rep.err(
                         toks[0].off,
                         "IFS002",
                         format!("expected '{{' after the entry name '{first}' on the same line"),
@@ -181,28 +168,15 @@ impl Reader<'_> {
         };
         let (name_part, qual) = self.qualifier(&h)?;
         let name = name_part.trim();
-        match check_name(name) {
-            Ok(()) => {}
-            Err(BadName::Missing) => {
-                return Err(self.err(
-                    h.brace,
-                    "IFS002",
-                    "'{' without an entry name before it".into(),
-                ));
-            }
-            Err(BadName::NotOneWord) => {
-                return Err(self.err(
-                    h.start,
-                    "IFS001",
-                    format!("'{name}' is not an entry name (names have no spaces)"),
-                ));
-            }
-        }
+        check_name(name, &h).map_err(|b| {
+            let code = if b.missing { "IFS002" } else { "IFS001" };
+            self.rep.err(b.off, code, b.message)
+        })?;
         let three_d = match qual {
             None => false,
             Some((q, _)) if q.eq_ignore_ascii_case("3d") => true,
             Some((q, off)) => {
-                return Err(self.err(
+                return Err(self.rep.err(
                     off,
                     "IFS009",
                     format!("unknown qualifier '({q})'; only (3D) is known"),
@@ -211,7 +185,7 @@ impl Reader<'_> {
         };
         let after = h.after.trim_start();
         if !after.is_empty() {
-            return Err(self.err(
+            return Err(self.rep.err(
                 h.brace + 1 + (h.after.len() - after.len()),
                 "IFS003",
                 format!(
@@ -221,7 +195,7 @@ impl Reader<'_> {
             ));
         }
         if self.out.entries.len() >= MAX_ENTRIES {
-            return Err(self.err(
+            return Err(self.rep.err(
                 h.start,
                 "IFS016",
                 format!("more than {MAX_ENTRIES} entries"),
@@ -242,7 +216,7 @@ impl Reader<'_> {
             return Ok((before, None));
         };
         let close = before[p..].find(')').map(|c| p + c).ok_or_else(|| {
-            self.err(
+            self.rep.err(
                 h.start + p,
                 "IFS009",
                 "unclosed '(' in the entry header".into(),
@@ -250,7 +224,7 @@ impl Reader<'_> {
         })?;
         let q = before[p + 1..close].trim();
         if !before[close + 1..].trim().is_empty() {
-            return Err(self.err(
+            return Err(self.rep.err(
                 h.start + close + 1,
                 "IFS002",
                 "unexpected text before '{'".into(),
@@ -270,7 +244,7 @@ impl Reader<'_> {
                 s = "";
             } else if let Some(stripped) = s.strip_suffix('}') {
                 // `.33}`: Fractint does not see the end here; accept with a warning.
-                self.warn(
+                self.rep.warn(
                     t.off + stripped.len(),
                     "IFS010",
                     "'}' glued to a number; Fractint would not recognise the end of the entry"
@@ -280,7 +254,7 @@ impl Reader<'_> {
                 s = stripped;
             }
             if s.contains('{') {
-                return Err(self.err(
+                return Err(self.rep.err(
                     t.off,
                     "IFS005",
                     format!("'{{' inside entry '{}' (entries cannot nest)", open.name),
@@ -294,7 +268,7 @@ impl Reader<'_> {
                 self.out.entries.push(entry);
                 // Anything after '}' on the same line starts over as outside text.
                 if let Some(next) = toks.get(k + 1) {
-                    return Err(self.err(
+                    return Err(self.rep.err(
                         next.off,
                         "IFS001",
                         format!(
@@ -314,7 +288,7 @@ impl Reader<'_> {
         match parse_number(s) {
             Ok(v) => {
                 if open.nums.len() >= MAX_ROWS * open.row_len() {
-                    return Err(self.err(
+                    return Err(self.rep.err(
                         off,
                         "IFS016",
                         format!("entry '{}' has more than {MAX_ROWS} rows", open.name),
@@ -324,7 +298,9 @@ impl Reader<'_> {
                 Ok(())
             }
             Err(NumberError::Overflow) => {
-                Err(self.err(off, "IFS008", format!("'{s}' is not a finite number")))
+                Err(self
+                    .rep
+                    .err(off, "IFS008", format!("'{s}' is not a finite number")))
             }
             Err(e) => {
                 let lower = s.to_ascii_lowercase();
@@ -336,7 +312,7 @@ impl Reader<'_> {
                         e.describe(s)
                     )
                 };
-                Err(self.err(off, "IFS006", msg))
+                Err(self.rep.err(off, "IFS006", msg))
             }
         }
     }
@@ -348,7 +324,7 @@ impl Reader<'_> {
         let row = open.row_len();
         let n = open.nums.len();
         if n == 0 || !n.is_multiple_of(row) {
-            return Err(self.err(
+            return Err(self.rep.err(
                 at,
                 "IFS007",
                 format!(
@@ -369,7 +345,7 @@ impl Reader<'_> {
                 // Real collections have these (Fractint walks the cumulative sum, so the row
                 // is never chosen and shrinks the others' share): accept with Fractint's
                 // semantics and warn.
-                self.warn(
+                self.rep.warn(
                     off,
                     "IFS008",
                     format!("row {} of '{name}' has negative probability {p}; using Fractint's cumulative selection", ri + 1),
@@ -392,7 +368,7 @@ impl Reader<'_> {
         let name = &entry.name;
         let row = entry.row_len();
         if psum == 0.0 {
-            self.warn(
+            self.rep.warn(
                 hdr,
                 "IFS008",
                 format!(
@@ -401,14 +377,14 @@ impl Reader<'_> {
             );
         } else if (psum - 1.0).abs() > 1e-6 + 1e-12 && entry.rows.iter().all(|r| r[row - 1] >= 0.0)
         {
-            self.warn(
+            self.rep.warn(
                 hdr,
                 "IFS011",
                 format!("probabilities of '{name}' sum to {psum}, not 1; they are renormalised"),
             );
         }
         if entry.rows.len() > FRACTINT_MAX_ROWS {
-            self.warn(
+            self.rep.warn(
                 hdr,
                 "IFS013",
                 format!(
@@ -421,7 +397,7 @@ impl Reader<'_> {
             for (ri, m) in entry.maps2d().iter().enumerate() {
                 let s = m.max_singular_value();
                 if s >= 1.0 {
-                    self.warn(
+                    self.rep.warn(
                         hdr,
                         "IFS014",
                         format!("map {} of '{name}' is not contractive (largest singular value {s:.4}); the attractor may not exist", ri + 1),
@@ -434,7 +410,7 @@ impl Reader<'_> {
                 "entry name '{name}' repeats '{}' (Fractint compares the first {NAME_LEN} characters, ignoring case)",
                 prev.name
             );
-            self.warn(hdr, "IFS012", msg);
+            self.rep.warn(hdr, "IFS012", msg);
         }
     }
 }
