@@ -88,7 +88,8 @@ pub(super) fn read_flame(
         st.hue,
         start,
     )?;
-    check_iterable(cx, &f, start).map(|()| f)
+    check_iterable(cx, &f, start)?;
+    Ok(f)
 }
 
 /// Size, centre, scale, rotation and the 3-D camera. False if `a` is none of them.
