@@ -386,7 +386,7 @@ fn bmp_reader_never_panics() {
     let img = image::DynamicImage::ImageRgb8(image::RgbImage::from_fn(5, 4, |x, y| {
         image::Rgb([x as u8 * 40, y as u8 * 60, 7])
     }));
-    let src = ugnis::io::bmp::encode(&img);
+    let src = ugnis::io::bmp::encode(&img).unwrap();
     fuzz("bmp", [7; 32], src, |b| {
         let _ = image_in::decode_rgb(b, "f.bmp");
     });

@@ -768,7 +768,9 @@ fn writers_and_readers_agree() {
     assert!(out.contains("40 flame(s)"), "{out}");
     // Writers refuse what the readers would refuse.
     assert!(ugnis::io::check_readable_size(&dir.join("a.fla"), 200 << 20).is_ok());
-    let e = ugnis::io::check_readable_size(&dir.join("a.fla"), 300 << 20).unwrap_err();
+    let e = ugnis::io::check_readable_size(&dir.join("a.fla"), 300 << 20)
+        .unwrap_err()
+        .to_string();
     assert!(
         e.contains("300 MiB, more than ugnis reads (256 MiB)"),
         "{e}"

@@ -3,6 +3,9 @@
 
 use std::path::PathBuf;
 
+use crate::explore::ExploreError;
+use crate::io::ifs::NAME_LEN;
+
 /// Why a file could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum WriteError {
@@ -21,17 +24,90 @@ pub enum WriteError {
         "'{name}' is a 3-D IFS entry; 3-D IFS entries cannot be represented as flames (save as .ifs)"
     )]
     Ifs3dAsFlame { name: String },
-    /// The data cannot be expressed in the format (the reason says what).
-    #[error("{0}")]
-    NotRepresentable(String),
-    /// The file would be larger than ugnis reads back (the reason says how large).
-    #[error("{0}")]
-    TooLarge(String),
+    /// A flame the `.ifs` format cannot hold.
+    #[error("'{name}': {reason}")]
+    FlameAsIfs { name: String, reason: IfsWriteError },
+    /// Entries an `.ifs` file cannot hold.
+    #[error(transparent)]
+    Ifs(#[from] IfsWriteError),
+    /// L-systems an `.l` file cannot hold.
+    #[error(transparent)]
+    LSystem(#[from] LSystemWriteError),
+    /// A drawing that is refused (its size, its number of segments).
+    #[error(transparent)]
+    Explore(#[from] ExploreError),
+    /// The file would be larger than ugnis reads back.
+    #[error(
+        "{path}: the file would be {mib} MiB, more than ugnis reads ({limit_mib} MiB); save fewer items per file"
+    )]
+    TooLarge {
+        path: PathBuf,
+        /// The size it would have, rounded up.
+        mib: u64,
+        /// The read limit of its kind.
+        limit_mib: u64,
+    },
+    /// A render state of a 3-D IFS: its maps have no flame XML form.
+    #[error(
+        "a render state of a 3-D IFS cannot be saved (its maps have no flame XML form); render it in one go"
+    )]
+    Ifs3dState,
     /// The operating system refused the write.
     #[error("cannot write '{path}': {source}")]
     Io {
         path: PathBuf,
         #[source]
         source: std::io::Error,
+    },
+}
+
+/// Why flames or entries cannot be written as a Fractint `.ifs` file.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum IfsWriteError {
+    /// Names are one word without Fractint's reserved characters.
+    #[error("'{0}' cannot be an .ifs entry name (no spaces or ( ) {{ }} ;)")]
+    EntryName(String),
+    /// Fractint compares names by their first [`NAME_LEN`] characters, ignoring case.
+    #[error(
+        "entry names '{first}' and '{second}' are the same for Fractint (first {NAME_LEN} characters, ignoring case)"
+    )]
+    SameName { first: String, second: String },
+    #[error("the flame's weights sum to 0")]
+    ZeroWeights,
+    /// An xform (numbered from 1) with a variation other than linear.
+    #[error("xform {xform} uses variation '{variation}'; only linear flames can be saved as .ifs")]
+    NotLinear { xform: usize, variation: String },
+    /// An xform (numbered from 1) with xaos.
+    #[error("xform {0} uses xaos; .ifs files have no xaos")]
+    Xaos(usize),
+    #[error("the flame has a final xform; .ifs files have none")]
+    FinalXform,
+}
+
+/// Why L-systems cannot be written as a Fractint `.l` file.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LSystemWriteError {
+    /// The system does not compile.
+    #[error("'{name}' cannot be saved: {reason}")]
+    Invalid { name: String, reason: ExploreError },
+    /// Fractint opens the first of two entries with one name.
+    #[error("two entries are named '{0}'; Fractint would only find the first")]
+    SameName(String),
+    /// `.l` angles are 360°/n for n from 3 to 49.
+    #[error(
+        "'{name}': angle {degrees}° is not 360°/n for an integer n from 3 to 49; .l files cannot hold it"
+    )]
+    Angle { name: String, degrees: f64 },
+    /// Only F and D draw in `.l` files.
+    #[error("'{name}': in .l files only F and D draw; '{symbols}' cannot be made to draw")]
+    DrawSymbols { name: String, symbols: String },
+    #[error("'{0}': brackets that also turn cannot be written to a .l file")]
+    TurningBrackets(String),
+    /// The start heading is written as turns of δ.
+    #[error("'{name}': the start heading {heading}° is not a multiple of δ = {delta}°")]
+    StartHeading {
+        name: String,
+        heading: f64,
+        delta: f64,
     },
 }

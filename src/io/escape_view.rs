@@ -15,7 +15,7 @@
 //! ```
 
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use super::diag::{Diagnostic, Parsed, Pos};
 use crate::escape::dd::Dd;
@@ -205,356 +205,427 @@ pub fn write(doc: &EscapeDoc) -> String {
     s
 }
 
-/// Read a view file; `base` is the directory relative gradient paths are resolved against.
-pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<EscapeDoc>, Diagnostic> {
-    let err = |line: usize, code: &'static str, msg: String| {
-        Diagnostic::error(name, Pos::LineCol(line, 1), code, msg)
-    };
-    let mut entries: Vec<(usize, String, String)> = Vec::new();
+/// One `key = value` line of a view file: the key in lower case, the value trimmed.
+struct Setting<'a> {
+    file: &'a str,
+    line: usize,
+    key: String,
+    value: &'a str,
+}
+
+type R<T> = Result<T, Diagnostic>;
+
+/// A setting: its key and what reading its value does (the value's type is the reader the
+/// setter calls: [`Setting::real`], [`Setting::complex`], …).
+struct Key<T> {
+    name: &'static str,
+    set: fn(&mut T, &Setting) -> R<()>,
+}
+
+const fn key<T>(name: &'static str, set: fn(&mut T, &Setting) -> R<()>) -> Key<T> {
+    Key { name, set }
+}
+
+impl Setting<'_> {
+    fn err(&self, code: &'static str, msg: String) -> Diagnostic {
+        Diagnostic::error(self.file, Pos::LineCol(self.line, 1), code, msg)
+    }
+
+    /// `{key} '{value}': {expected}` (ESC003).
+    fn expected(&self, what: &str) -> Diagnostic {
+        self.err("ESC003", format!("{} '{}': {what}", self.key, self.value))
+    }
+
+    fn number<T: std::str::FromStr>(&self) -> R<T> {
+        self.value.parse::<T>().map_err(|_| {
+            self.err(
+                "ESC003",
+                format!("{} '{}' is not a valid number", self.key, self.value),
+            )
+        })
+    }
+
+    /// A whole number from `lo` to `hi` (ESC004 outside).
+    fn count(&self, lo: u32, hi: u32) -> R<u32> {
+        let n: u32 = self.number()?;
+        if !(lo..=hi).contains(&n) {
+            return Err(self.err(
+                "ESC004",
+                format!("{} {n} must be between {lo} and {hi}", self.key),
+            ));
+        }
+        Ok(n)
+    }
+
+    /// A finite real number.
+    fn real(&self) -> R<f64> {
+        let v: f64 = self.number()?;
+        if !v.is_finite() {
+            return Err(self.err("ESC003", format!("{} must be finite", self.key)));
+        }
+        Ok(v)
+    }
+
+    /// A finite real number above 0 (ESC004 otherwise).
+    fn positive(&self) -> R<f64> {
+        let v = self.real()?;
+        if v <= 0.0 {
+            return Err(self.err("ESC004", format!("{} must be positive", self.key)));
+        }
+        Ok(v)
+    }
+
+    /// `re, im` (or a single real).
+    fn complex(&self) -> R<C> {
+        parse_complex(self.value).ok_or_else(|| self.expected("expected 're, im'"))
+    }
+
+    fn boolean(&self) -> R<bool> {
+        match self.value.to_ascii_lowercase().as_str() {
+            "true" | "1" | "yes" | "on" => Ok(true),
+            "false" | "0" | "no" | "off" => Ok(false),
+            _ => Err(self.expected("expected true or false")),
+        }
+    }
+}
+
+/// The lines of a view file as settings (blank lines and `#` comments skipped).
+fn settings<'a>(text: &'a str, file: &'a str) -> R<Vec<Setting<'a>>> {
+    let mut out = Vec::new();
     for (k, raw) in text.lines().enumerate() {
         let line = raw.trim();
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
+        let err = |msg: String| Diagnostic::error(file, Pos::LineCol(k + 1, 1), "ESC001", msg);
         let Some((key, value)) = line.split_once('=') else {
-            return Err(err(
-                k + 1,
-                "ESC001",
-                format!("expected 'key = value', found '{line}'"),
-            ));
+            return Err(err(format!("expected 'key = value', found '{line}'")));
         };
-        entries.push((
-            k + 1,
-            key.trim().to_ascii_lowercase(),
-            value.trim().to_string(),
-        ));
-        if entries.len() > 200 {
-            return Err(err(k + 1, "ESC001", "more than 200 settings".into()));
+        out.push(Setting {
+            file,
+            line: k + 1,
+            key: key.trim().to_ascii_lowercase(),
+            value: value.trim(),
+        });
+        if out.len() > 200 {
+            return Err(err("more than 200 settings".into()));
         }
     }
-    let get = |key: &str| entries.iter().rev().find(|e| e.1 == key);
-    let kind_line = get("kind").ok_or_else(|| {
-        Diagnostic::error(
-            name,
-            Pos::File,
-            "ESC002",
-            "missing 'kind = …' (mandelbrot, julia, …)",
-        )
-    })?;
-    let mut family = family_from_name(&kind_line.2).ok_or_else(|| {
-        err(
-            kind_line.0,
-            "ESC002",
-            format!(
-                "unknown kind '{}': expected mandelbrot, multibrot, julia, newton, logistic, cubic or warped-julia",
-                kind_line.2
-            ),
-        )
-    })?;
-    let mut warnings = Vec::new();
-    let complex = |key: &str| -> Result<Option<C>, Diagnostic> {
-        match get(key) {
-            None => Ok(None),
-            Some((l, _, v)) => parse_complex(v)
-                .map(Some)
-                .ok_or_else(|| err(*l, "ESC003", format!("{key} '{v}': expected 're, im'"))),
+    Ok(out)
+}
+
+/// Apply the settings that `keys` know, in the table's order; a key given twice counts once,
+/// with its last value.
+fn apply<T>(keys: &[Key<T>], settings: &[Setting], target: &mut T) -> R<()> {
+    for k in keys {
+        if let Some(s) = settings.iter().rev().find(|s| s.key == k.name) {
+            (k.set)(target, s)?;
         }
-    };
-    fn number<T: std::str::FromStr>(
-        e: Option<&(usize, String, String)>,
-        what: &str,
-        name: &str,
-    ) -> Result<Option<T>, Diagnostic> {
-        match e {
-            None => Ok(None),
-            Some((l, _, v)) => v.parse::<T>().map(Some).map_err(|_| {
-                Diagnostic::error(
-                    name,
-                    Pos::LineCol(*l, 1),
+    }
+    Ok(())
+}
+
+/// The parts of a warped Julia, built into a [`Warp`] once all are read.
+struct WarpDraft {
+    c: C,
+    alpha: C,
+    /// The line of `alpha`, where an invalid warp is reported (0 without one).
+    alpha_line: usize,
+    lambda: f64,
+    fbm: Fbm,
+    /// Given by `sampling`; the preset's otherwise (then `radius` and `scale` are not read).
+    sampling: Option<Sampling>,
+    zero_mean: bool,
+    warnings: Vec<Diagnostic>,
+}
+
+/// The view being read, and what reading it said.
+struct ViewDraft {
+    doc: EscapeDoc,
+    /// The directory relative gradient paths are resolved against.
+    base: Option<PathBuf>,
+    warnings: Vec<Diagnostic>,
+}
+
+/// Settings of the families; each applies to the families that have it.
+const FAMILY_KEYS: &[Key<Family>] = &[
+    key("power", |f, s| {
+        let n = s.count(2, 9)?;
+        if let Family::Mandelbrot { power } | Family::Julia { power, .. } = f {
+            *power = n;
+        }
+        Ok(())
+    }),
+    key("c", |f, s| {
+        if let Family::Julia { c, .. } = f {
+            *c = s.complex()?;
+        }
+        Ok(())
+    }),
+    key("poly", |f, s| {
+        if let Family::Newton { coeffs } = f {
+            *coeffs = parse_poly(s.value).ok_or_else(|| {
+                s.expected("expected 2–33 coefficients, highest degree first, e.g. '1 0 0 -1'")
+            })?;
+        }
+        Ok(())
+    }),
+    key("z0", |f, s| {
+        if let Family::Logistic { z0, .. } = f {
+            *z0 = s.complex()?;
+        }
+        Ok(())
+    }),
+    key("kose", |f, s| {
+        if let Family::Logistic { kose, .. } = f {
+            *kose = s.boolean()?;
+        }
+        Ok(())
+    }),
+    key("p", |f, s| {
+        if let Family::Cubic { p } = f {
+            *p = s.complex()?;
+        }
+        Ok(())
+    }),
+];
+
+/// Settings of the warped Julia family.
+const WARP_KEYS: &[Key<WarpDraft>] = &[
+    key("octaves", |w, s| {
+        let n: u32 = s.number()?;
+        if !(1..=16).contains(&n) {
+            w.warnings.push(Diagnostic::warning(
+                s.file,
+                Pos::LineCol(s.line, 1),
+                "ESC007",
+                format!("octaves {n} is outside 1..16; using {}", n.clamp(1, 16)),
+            ));
+        }
+        w.fbm.octaves = n.clamp(1, 16);
+        Ok(())
+    }),
+    key("lacunarity", |w, s| {
+        w.fbm.lacunarity = s.real()?;
+        Ok(())
+    }),
+    key("gain", |w, s| {
+        w.fbm.gain = s.real()?;
+        Ok(())
+    }),
+    key("frequency", |w, s| {
+        w.fbm.frequency = s.real()?;
+        Ok(())
+    }),
+    key("seed", |w, s| {
+        w.fbm.seed = s.number()?;
+        Ok(())
+    }),
+    key("sampling", |w, s| {
+        w.sampling = Some(match s.value.to_ascii_lowercase().as_str() {
+            "polar" => Sampling::Polar { radius: 1.0 },
+            "rect" | "rectangular" => Sampling::Rect { scale: 3.0 },
+            other => {
+                return Err(s.err(
                     "ESC003",
-                    format!("{what} '{v}' is not a valid number"),
-                )
-            }),
-        }
-    }
-    let real = |key: &str| -> Result<Option<f64>, Diagnostic> {
-        let v: Option<f64> = number(get(key), key, name)?;
-        match v {
-            Some(x) if !x.is_finite() => Err(err(
-                get(key).map_or(0, |e| e.0),
-                "ESC003",
-                format!("{key} must be finite"),
-            )),
-            v => Ok(v),
-        }
-    };
-    let boolean = |key: &str| -> Result<Option<bool>, Diagnostic> {
-        match get(key) {
-            None => Ok(None),
-            Some((l, _, v)) => match v.to_ascii_lowercase().as_str() {
-                "true" | "1" | "yes" | "on" => Ok(Some(true)),
-                "false" | "0" | "no" | "off" => Ok(Some(false)),
-                _ => Err(err(
-                    *l,
-                    "ESC003",
-                    format!("{key} '{v}': expected true or false"),
-                )),
-            },
-        }
-    };
-    let power: Option<u32> = number(get("power"), "power", name)?;
-    if let Some(pw) = power
-        && !(2..=9).contains(&pw)
-    {
-        return Err(err(
-            get("power").map_or(0, |e| e.0),
-            "ESC004",
-            format!("power {pw} must be between 2 and 9"),
-        ));
-    }
-    match &mut family {
-        Family::Mandelbrot { power: p } => {
-            *p = power.unwrap_or(if kind_line.2.eq_ignore_ascii_case("multibrot") {
-                3
-            } else {
-                2
-            })
-        }
-        Family::Julia { power: p, c } => {
-            *p = power.unwrap_or(2);
-            if let Some(v) = complex("c")? {
-                *c = v;
-            }
-        }
-        Family::Newton { coeffs } => {
-            if let Some((l, _, v)) = get("poly") {
-                *coeffs = parse_poly(v).ok_or_else(|| {
-                    err(*l, "ESC003", format!("poly '{v}': expected 2–33 coefficients, highest degree first, e.g. '1 0 0 -1'"))
-                })?;
-            }
-        }
-        Family::Logistic { z0, kose } => {
-            if let Some(v) = complex("z0")? {
-                *z0 = v;
-            }
-            if let Some(k) = boolean("kose")? {
-                *kose = k;
-            }
-        }
-        Family::Cubic { p } => {
-            if let Some(v) = complex("p")? {
-                *p = v;
-            }
-        }
-        Family::WarpedJulia(w) => {
-            let d = Fbm::default();
-            let octaves: u32 = number(get("octaves"), "octaves", name)?.unwrap_or(d.octaves);
-            if !(1..=16).contains(&octaves) {
-                warnings.push(Diagnostic::warning(
-                    name,
-                    Pos::LineCol(get("octaves").map_or(0, |e| e.0), 1),
-                    "ESC007",
-                    format!(
-                        "octaves {octaves} is outside 1..16; using {}",
-                        octaves.clamp(1, 16)
-                    ),
+                    format!("sampling '{other}': expected polar or rect"),
                 ));
             }
-            let fbm = Fbm {
-                octaves: octaves.clamp(1, 16),
-                lacunarity: real("lacunarity")?.unwrap_or(d.lacunarity),
-                gain: real("gain")?.unwrap_or(d.gain),
-                frequency: real("frequency")?.unwrap_or(d.frequency),
-                seed: number(get("seed"), "seed", name)?.unwrap_or(d.seed),
-            };
-            let sampling = match get("sampling").map(|e| e.2.to_ascii_lowercase()) {
-                None => w.sampling,
-                Some(s) if s == "polar" => Sampling::Polar {
-                    radius: real("radius")?.unwrap_or(1.0),
-                },
-                Some(s) if s == "rect" || s == "rectangular" => Sampling::Rect {
-                    scale: real("scale")?.unwrap_or(3.0),
-                },
-                Some(s) => {
-                    return Err(err(
-                        get("sampling").map_or(0, |e| e.0),
-                        "ESC003",
-                        format!("sampling '{s}': expected polar or rect"),
-                    ));
-                }
-            };
-            let built = Warp::new(
-                complex("c")?.unwrap_or(w.c),
-                complex("alpha")?.unwrap_or(w.alpha),
-                real("turbulence")?.unwrap_or(w.lambda),
-                fbm,
-                sampling,
-                boolean("zero_mean")?.unwrap_or(false),
-            )
-            .map_err(|e| err(get("alpha").map_or(0, |e| e.0), "ESC004", e.to_string()))?;
-            *w = built;
+        });
+        Ok(())
+    }),
+    key("radius", |w, s| {
+        if let Some(Sampling::Polar { radius }) = &mut w.sampling {
+            *radius = s.real()?;
         }
-    }
-    let mut doc = EscapeDoc::new(family);
-    if let Some((l, _, v)) = get("size") {
-        let (w, h) = v
+        Ok(())
+    }),
+    key("scale", |w, s| {
+        if let Some(Sampling::Rect { scale }) = &mut w.sampling {
+            *scale = s.real()?;
+        }
+        Ok(())
+    }),
+    key("c", |w, s| {
+        w.c = s.complex()?;
+        Ok(())
+    }),
+    key("alpha", |w, s| {
+        w.alpha = s.complex()?;
+        w.alpha_line = s.line;
+        Ok(())
+    }),
+    key("turbulence", |w, s| {
+        w.lambda = s.real()?;
+        Ok(())
+    }),
+    key("zero_mean", |w, s| {
+        w.zero_mean = s.boolean()?;
+        Ok(())
+    }),
+];
+
+/// Settings of the view, the picture and the colouring (`width` after `size`: the width is
+/// kept as the view's height for that aspect).
+const VIEW_KEYS: &[Key<ViewDraft>] = &[
+    key("size", |v, s| {
+        let (w, h) = s
+            .value
             .split_once(['x', 'X'])
             .and_then(|(a, b)| Some((a.trim().parse::<u32>().ok()?, b.trim().parse::<u32>().ok()?)))
             .filter(|(w, h)| (1..=30000).contains(w) && (1..=30000).contains(h))
             .ok_or_else(|| {
-                err(
-                    *l,
+                s.err(
                     "ESC004",
-                    format!("size '{v}': expected WxH between 1x1 and 30000x30000"),
+                    format!(
+                        "size '{}': expected WxH between 1x1 and 30000x30000",
+                        s.value
+                    ),
                 )
             })?;
-        doc.width = w;
-        doc.height = h;
-    }
-    if let Some((l, _, v)) = get("center") {
-        let c = parse_center(v)
-            .ok_or_else(|| err(*l, "ESC003", format!("center '{v}': expected 're, im'")))?;
-        doc.view = doc.view.with_center_dd(c);
-    }
-    if let Some(wd) = real("width")? {
-        if wd <= 0.0 {
-            return Err(err(
-                get("width").map_or(0, |e| e.0),
-                "ESC004",
-                "width must be positive".into(),
-            ));
-        }
-        doc.view.half_height = wd / 2.0 * doc.height as f64 / doc.width as f64;
-    }
-    let p = &mut doc.params;
-    if let Some(n) = number::<u32>(get("max_iter"), "max_iter", name)? {
-        if n == 0 || n > 100_000_000 {
-            return Err(err(
-                get("max_iter").map_or(0, |e| e.0),
-                "ESC004",
-                format!("max_iter {n} must be between 1 and 100000000"),
-            ));
-        }
-        p.max_iter = n;
-    }
-    if let Some((l, _, v)) = get("coloring") {
-        p.coloring = Coloring::from_name(v).ok_or_else(|| {
-            err(
-                *l,
-                "ESC003",
-                format!("coloring '{v}': expected bands, smooth, distance, histogram or basins"),
-            )
-        })?;
-    }
-    if let Some((l, _, v)) = get("gradient") {
-        let g = resolve_gradient_parsed(v, base).map_err(|m| err(*l, "ESC005", m))?;
-        p.palette.gradient = g.value;
-        warnings.extend(g.warnings);
-        doc.gradient_source = v.clone();
-    }
-    if let Some(o) = real("offset")? {
-        p.palette.offset = o;
-    }
-    if let Some(r) = real("repeat")? {
-        p.palette.repeat = r;
-    }
-    if p.palette.repeat <= 0.0 {
-        return Err(err(
-            get("repeat").map_or(0, |e| e.0),
-            "ESC004",
-            "repeat must be positive".into(),
-        ));
-    }
-    if let Some((l, _, v)) = get("inside") {
-        let rgb: Vec<u8> = v
+        (v.doc.width, v.doc.height) = (w, h);
+        Ok(())
+    }),
+    key("center", |v, s| {
+        let c = parse_center(s.value).ok_or_else(|| s.expected("expected 're, im'"))?;
+        v.doc.view = v.doc.view.with_center_dd(c);
+        Ok(())
+    }),
+    key("width", |v, s| {
+        let wd = s.positive()?;
+        v.doc.view.half_height = wd / 2.0 * v.doc.height as f64 / v.doc.width as f64;
+        Ok(())
+    }),
+    key("max_iter", |v, s| {
+        v.doc.params.max_iter = s.count(1, 100_000_000)?;
+        Ok(())
+    }),
+    key("coloring", |v, s| {
+        v.doc.params.coloring = Coloring::from_name(s.value)
+            .ok_or_else(|| s.expected("expected bands, smooth, distance, histogram or basins"))?;
+        Ok(())
+    }),
+    key("gradient", |v, s| {
+        let g =
+            resolve_gradient_parsed(s.value, v.base.as_deref()).map_err(|m| s.err("ESC005", m))?;
+        v.doc.params.palette.gradient = g.value;
+        v.warnings.extend(g.warnings);
+        v.doc.gradient_source = s.value.to_string();
+        Ok(())
+    }),
+    key("offset", |v, s| {
+        v.doc.params.palette.offset = s.real()?;
+        Ok(())
+    }),
+    key("repeat", |v, s| {
+        v.doc.params.palette.repeat = s.positive()?;
+        Ok(())
+    }),
+    key("inside", |v, s| {
+        let rgb: Vec<u8> = s
+            .value
             .split_whitespace()
             .filter_map(|t| t.parse().ok())
             .collect();
-        p.palette.inside = <[u8; 3]>::try_from(rgb).map_err(|_| {
-            err(
-                *l,
-                "ESC003",
-                format!("inside '{v}': expected three numbers 0–255"),
-            )
-        })?;
-    }
-    if let Some(b) = real("bailout")? {
-        if b <= 0.0 {
-            return Err(err(
-                get("bailout").map_or(0, |e| e.0),
-                "ESC004",
-                "bailout must be positive".into(),
-            ));
-        }
-        p.bailout = Some(b);
-    }
-    if let Some(v) = boolean("periodicity")? {
-        p.periodicity = v;
-    }
-    if let Some((l, _, v)) = get("fill") {
-        p.fill = match v.to_ascii_lowercase().as_str() {
+        v.doc.params.palette.inside =
+            <[u8; 3]>::try_from(rgb).map_err(|_| s.expected("expected three numbers 0–255"))?;
+        Ok(())
+    }),
+    key("bailout", |v, s| {
+        v.doc.params.bailout = Some(s.positive()?);
+        Ok(())
+    }),
+    key("periodicity", |v, s| {
+        v.doc.params.periodicity = s.boolean()?;
+        Ok(())
+    }),
+    key("fill", |v, s| {
+        v.doc.params.fill = match s.value.to_ascii_lowercase().as_str() {
             "exact" => Fill::Exact,
             "guess" | "guessing" | "mariani-silver" => Fill::Guess,
-            _ => {
-                return Err(err(
-                    *l,
-                    "ESC003",
-                    format!("fill '{v}': expected exact or guess"),
-                ));
-            }
+            _ => return Err(s.expected("expected exact or guess")),
         };
+        Ok(())
+    }),
+];
+
+/// Settings that are read elsewhere (`kind`) or accepted and ignored.
+const OTHER_KEYS: [&str; 4] = ["kind", "threads", "name", "comment"];
+
+/// Read a view file; `base` is the directory relative gradient paths are resolved against.
+pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<EscapeDoc>, Diagnostic> {
+    let settings = settings(text, name)?;
+    let kind = settings
+        .iter()
+        .rev()
+        .find(|s| s.key == "kind")
+        .ok_or_else(|| {
+            Diagnostic::error(
+                name,
+                Pos::File,
+                "ESC002",
+                "missing 'kind = …' (mandelbrot, julia, …)",
+            )
+        })?;
+    let mut family = family_from_name(kind.value).ok_or_else(|| {
+        kind.err(
+            "ESC002",
+            format!(
+                "unknown kind '{}': expected mandelbrot, multibrot, julia, newton, logistic, cubic or warped-julia",
+                kind.value
+            ),
+        )
+    })?;
+    apply(FAMILY_KEYS, &settings, &mut family)?;
+    let mut warnings = Vec::new();
+    if let Family::WarpedJulia(w) = &mut family {
+        let mut d = WarpDraft {
+            c: w.c,
+            alpha: w.alpha,
+            alpha_line: 0,
+            lambda: w.lambda,
+            fbm: Fbm::default(),
+            sampling: None,
+            zero_mean: false,
+            warnings: Vec::new(),
+        };
+        apply(WARP_KEYS, &settings, &mut d)?;
+        *w = Warp::new(
+            d.c,
+            d.alpha,
+            d.lambda,
+            d.fbm,
+            d.sampling.unwrap_or(w.sampling),
+            d.zero_mean,
+        )
+        .map_err(|e| {
+            Diagnostic::error(name, Pos::LineCol(d.alpha_line, 1), "ESC004", e.to_string())
+        })?;
+        warnings = d.warnings;
     }
-    const KNOWN: [&str; 33] = [
-        "kind",
-        "power",
-        "c",
-        "poly",
-        "z0",
-        "kose",
-        "p",
-        "alpha",
-        "turbulence",
-        "octaves",
-        "lacunarity",
-        "gain",
-        "frequency",
-        "seed",
-        "zero_mean",
-        "sampling",
-        "radius",
-        "scale",
-        "center",
-        "width",
-        "size",
-        "max_iter",
-        "coloring",
-        "gradient",
-        "offset",
-        "repeat",
-        "inside",
-        "periodicity",
-        "fill",
-        "bailout",
-        "threads",
-        "name",
-        "comment",
-    ];
-    for (l, k, _) in &entries {
-        if !KNOWN.contains(&k.as_str()) {
-            warnings.push(Diagnostic {
-                warning: true,
-                ..Diagnostic::error(
-                    name,
-                    Pos::LineCol(*l, 1),
-                    "ESC006",
-                    format!("unknown setting '{k}' ignored"),
-                )
-            });
-        }
+    let mut view = ViewDraft {
+        doc: EscapeDoc::new(family),
+        base: base.map(Path::to_path_buf),
+        warnings,
+    };
+    apply(VIEW_KEYS, &settings, &mut view)?;
+    let known = |k: &str| {
+        OTHER_KEYS.contains(&k)
+            || FAMILY_KEYS.iter().any(|x| x.name == k)
+            || WARP_KEYS.iter().any(|x| x.name == k)
+            || VIEW_KEYS.iter().any(|x| x.name == k)
+    };
+    for s in settings.iter().filter(|s| !known(&s.key)) {
+        view.warnings.push(Diagnostic::warning(
+            name,
+            Pos::LineCol(s.line, 1),
+            "ESC006",
+            format!("unknown setting '{}' ignored", s.key),
+        ));
     }
     Ok(Parsed {
-        value: doc,
-        warnings,
+        value: view.doc,
+        warnings: view.warnings,
     })
 }
 

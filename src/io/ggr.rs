@@ -192,172 +192,33 @@ pub fn parse_segments(
     stem: &str,
 ) -> Result<Parsed<GimpGradient>, Diagnostic> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let map = SourceMap::new(text);
-    let err = |off: usize, code, msg: String| Diagnostic::error(file, map.pos(off), code, msg);
-    let mut warnings = Vec::new();
+    let mut rd = Reader {
+        file,
+        map: SourceMap::new(text),
+        end: text.len(),
+        warnings: Vec::new(),
+        endpoint_warned: false,
+    };
     // Blank lines are skipped everywhere; GIMP writes none, hand-edited files may have some.
     let mut rows = lines(text)
         .into_iter()
         .filter(|(_, l)| !l.trim().is_empty());
-    let Some((h_off, header)) = rows.next() else {
-        return Err(Diagnostic::error(
-            file,
-            Pos::File,
-            "GGR001",
-            "empty file; expected the header 'GIMP Gradient'",
-        ));
-    };
-    // GIMP's development builds (2.99, 3.0 release candidates) write "LIGMA Gradient".
-    if !matches!(header.trim(), "GIMP Gradient" | "LIGMA Gradient") {
-        return Err(err(
-            h_off,
-            "GGR001",
-            format!(
-                "expected the header 'GIMP Gradient', found '{}'",
-                clip(header.trim())
-            ),
-        ));
-    }
-    let Some((mut off, mut line)) = rows.next() else {
-        return Err(err(
-            text.len(),
-            "GGR002",
-            "file ends after the header; expected the number of segments".into(),
-        ));
-    };
-    let mut name = stem.to_string();
-    if let Some(n) = line.trim_start().strip_prefix("Name:") {
-        let n = n.trim();
-        if !n.is_empty() {
-            name = n.to_string();
-        }
-        (off, line) = rows.next().ok_or_else(|| {
-            err(
-                text.len(),
-                "GGR002",
-                "file ends after the name; expected the number of segments".into(),
-            )
-        })?;
-    }
-    let count_tok = line.trim();
-    let count = parse_int(count_tok)
-        .ok()
-        .filter(|&n| n >= 1 && n as u64 <= MAX_SEGMENTS as u64)
-        .ok_or_else(|| {
-            err(
-                off + (line.len() - line.trim_start().len()),
-                "GGR002",
-                format!(
-                    "'{}' is not a segment count; expected an integer 1..{MAX_SEGMENTS}",
-                    clip(count_tok)
-                ),
-            )
-        })? as usize;
+    let (name, count) = rd.header(&mut rows, stem)?;
     let mut segments = Vec::with_capacity(count.min(1024));
-    let mut endpoint_warned = false;
     for k in 0..count {
         let Some((off, line)) = rows.next() else {
-            return Err(err(
-                text.len(),
+            return Err(rd.err(
+                rd.end,
                 "GGR003",
                 format!("file ends after {k} of {count} segments"),
             ));
         };
-        let toks: Vec<(usize, &str)> = line
-            .split_whitespace()
-            .map(|t| (off + (t.as_ptr() as usize - line.as_ptr() as usize), t))
-            .collect();
-        if !(11..=15).contains(&toks.len()) {
-            return Err(err(
-                off,
-                "GGR003",
-                format!(
-                    "segment {} has {} values; expected 'left middle right', two RGBA colours, \
-                     then blend and colouring types (11 to 15 values)",
-                    k + 1,
-                    toks.len()
-                ),
-            ));
-        }
-        let mut v = [0f64; 11];
-        for (slot, &(o, t)) in v.iter_mut().zip(&toks) {
-            *slot = parse_number(t).map_err(|e| err(o, "GGR004", e.describe(t)))?;
-        }
-        let int_at = |i: usize, max: i64, what: &str| -> Result<i64, Diagnostic> {
-            match toks.get(i) {
-                None => Ok(0),
-                Some(&(o, t)) => parse_int(t)
-                    .ok()
-                    .filter(|n| (0..=max).contains(n))
-                    .ok_or_else(|| {
-                        err(
-                            o,
-                            "GGR005",
-                            format!("'{}' is not a {what} type; expected 0..{max}", clip(t)),
-                        )
-                    }),
-            }
-        };
-        let blend = match int_at(11, 5, "blend")? {
-            0 => Blend::Linear,
-            1 => Blend::Curved,
-            2 => Blend::Sine,
-            3 => Blend::SphereIncreasing,
-            4 => Blend::SphereDecreasing,
-            _ => Blend::Step,
-        };
-        let coloring = match int_at(12, 2, "colouring")? {
-            0 => Coloring::Rgb,
-            1 => Coloring::HsvCcw,
-            _ => Coloring::HsvCw,
-        };
-        for i in [13, 14] {
-            if int_at(i, 4, "endpoint colour")? != 0 && !endpoint_warned {
-                endpoint_warned = true;
-                warnings.push(Diagnostic::warning(
-                    file,
-                    map.pos(toks[i].0),
-                    "GGR006",
-                    "segment uses GIMP's foreground/background colour; the stored colour is used",
-                ));
-            }
-        }
-        let [l, m, r] = [v[0], v[1], v[2]];
-        let in_unit = |x: f64| (-1e-6..=1.0 + 1e-6).contains(&x);
-        if !(in_unit(l) && in_unit(m) && in_unit(r) && l <= m + 1e-6 && m <= r + 1e-6) {
-            return Err(err(
-                toks[0].0,
-                "GGR004",
-                format!(
-                    "segment {} has positions {l} {m} {r}; expected 0 ≤ left ≤ middle ≤ right ≤ 1",
-                    k + 1
-                ),
-            ));
-        }
-        let color = |c: &[f64]| -> Result<[f64; 4], Diagnostic> {
-            if c.iter().any(|x| !in_unit(*x)) {
-                return Err(err(
-                    toks[3].0,
-                    "GGR004",
-                    format!("segment {} has a colour value outside 0..1", k + 1),
-                ));
-            }
-            Ok([c[0], c[1], c[2], c[3]].map(|x| x.clamp(0.0, 1.0)))
-        };
-        segments.push(Segment {
-            left: l.clamp(0.0, 1.0),
-            middle: m.clamp(l.clamp(0.0, 1.0), r.clamp(0.0, 1.0)),
-            right: r.clamp(0.0, 1.0),
-            left_color: color(&v[3..7])?,
-            right_color: color(&v[7..11])?,
-            blend,
-            coloring,
-        });
+        segments.push(rd.segment(k, off, line)?);
     }
     if let Some((off, line)) = rows.next() {
-        warnings.push(Diagnostic::warning(
+        rd.warnings.push(Diagnostic::warning(
             file,
-            map.pos(off),
+            rd.map.pos(off),
             "GGR007",
             format!(
                 "text after the {count} segments is ignored: '{}'",
@@ -371,7 +232,7 @@ pub fn parse_segments(
     let first = segments[0].left;
     let last = segments[segments.len() - 1].right;
     if gaps || first > 1e-6 || last < 1.0 - 1e-6 {
-        warnings.push(Diagnostic::warning(
+        rd.warnings.push(Diagnostic::warning(
             file,
             Pos::File,
             "GGR008",
@@ -380,8 +241,192 @@ pub fn parse_segments(
     }
     Ok(Parsed {
         value: GimpGradient { name, segments },
-        warnings,
+        warnings: rd.warnings,
     })
+}
+
+/// The reader of a `.ggr` file: the file, its positions, the warnings so far.
+struct Reader<'a> {
+    file: &'a str,
+    map: SourceMap<'a>,
+    /// The text's length (where "file ends" errors point).
+    end: usize,
+    warnings: Vec<Diagnostic>,
+    /// GGR006 is said once per file.
+    endpoint_warned: bool,
+}
+
+impl Reader<'_> {
+    fn err(&self, off: usize, code: &'static str, msg: String) -> Diagnostic {
+        Diagnostic::error(self.file, self.map.pos(off), code, msg)
+    }
+
+    /// The header lines: `GIMP Gradient`, an optional `Name:` (else `stem`), the segment
+    /// count.
+    fn header<'t>(
+        &self,
+        rows: &mut impl Iterator<Item = (usize, &'t str)>,
+        stem: &str,
+    ) -> Result<(String, usize), Diagnostic> {
+        let Some((h_off, header)) = rows.next() else {
+            return Err(Diagnostic::error(
+                self.file,
+                Pos::File,
+                "GGR001",
+                "empty file; expected the header 'GIMP Gradient'",
+            ));
+        };
+        // GIMP's development builds (2.99, 3.0 release candidates) write "LIGMA Gradient".
+        if !matches!(header.trim(), "GIMP Gradient" | "LIGMA Gradient") {
+            return Err(self.err(
+                h_off,
+                "GGR001",
+                format!(
+                    "expected the header 'GIMP Gradient', found '{}'",
+                    clip(header.trim())
+                ),
+            ));
+        }
+        let Some((mut off, mut line)) = rows.next() else {
+            return Err(self.err(
+                self.end,
+                "GGR002",
+                "file ends after the header; expected the number of segments".into(),
+            ));
+        };
+        let mut name = stem.to_string();
+        if let Some(n) = line.trim_start().strip_prefix("Name:") {
+            let n = n.trim();
+            if !n.is_empty() {
+                name = n.to_string();
+            }
+            (off, line) = rows.next().ok_or_else(|| {
+                self.err(
+                    self.end,
+                    "GGR002",
+                    "file ends after the name; expected the number of segments".into(),
+                )
+            })?;
+        }
+        let count_tok = line.trim();
+        let count = parse_int(count_tok)
+            .ok()
+            .filter(|&n| n >= 1 && n as u64 <= MAX_SEGMENTS as u64)
+            .ok_or_else(|| {
+                self.err(
+                    off + (line.len() - line.trim_start().len()),
+                    "GGR002",
+                    format!(
+                        "'{}' is not a segment count; expected an integer 1..{MAX_SEGMENTS}",
+                        clip(count_tok)
+                    ),
+                )
+            })? as usize;
+        Ok((name, count))
+    }
+
+    /// Segment `k` on the line at `off`: positions, two RGBA colours, then optional blend,
+    /// colouring and endpoint colour types.
+    fn segment(&mut self, k: usize, off: usize, line: &str) -> Result<Segment, Diagnostic> {
+        let toks: Vec<(usize, &str)> = line
+            .split_whitespace()
+            .map(|t| (off + (t.as_ptr() as usize - line.as_ptr() as usize), t))
+            .collect();
+        if !(11..=15).contains(&toks.len()) {
+            return Err(self.err(
+                off,
+                "GGR003",
+                format!(
+                    "segment {} has {} values; expected 'left middle right', two RGBA colours, \
+                     then blend and colouring types (11 to 15 values)",
+                    k + 1,
+                    toks.len()
+                ),
+            ));
+        }
+        let mut v = [0f64; 11];
+        for (slot, &(o, t)) in v.iter_mut().zip(&toks) {
+            *slot = parse_number(t).map_err(|e| self.err(o, "GGR004", e.describe(t)))?;
+        }
+        let blend = match self.type_at(&toks, 11, 5, "blend")? {
+            0 => Blend::Linear,
+            1 => Blend::Curved,
+            2 => Blend::Sine,
+            3 => Blend::SphereIncreasing,
+            4 => Blend::SphereDecreasing,
+            _ => Blend::Step,
+        };
+        let coloring = match self.type_at(&toks, 12, 2, "colouring")? {
+            0 => Coloring::Rgb,
+            1 => Coloring::HsvCcw,
+            _ => Coloring::HsvCw,
+        };
+        for i in [13, 14] {
+            if self.type_at(&toks, i, 4, "endpoint colour")? != 0 && !self.endpoint_warned {
+                self.endpoint_warned = true;
+                self.warnings.push(Diagnostic::warning(
+                    self.file,
+                    self.map.pos(toks[i].0),
+                    "GGR006",
+                    "segment uses GIMP's foreground/background colour; the stored colour is used",
+                ));
+            }
+        }
+        let [l, m, r] = [v[0], v[1], v[2]];
+        let in_unit = |x: f64| (-1e-6..=1.0 + 1e-6).contains(&x);
+        if !(in_unit(l) && in_unit(m) && in_unit(r) && l <= m + 1e-6 && m <= r + 1e-6) {
+            return Err(self.err(
+                toks[0].0,
+                "GGR004",
+                format!(
+                    "segment {} has positions {l} {m} {r}; expected 0 ≤ left ≤ middle ≤ right ≤ 1",
+                    k + 1
+                ),
+            ));
+        }
+        let color = |c: &[f64]| -> Result<[f64; 4], Diagnostic> {
+            if c.iter().any(|x| !in_unit(*x)) {
+                return Err(self.err(
+                    toks[3].0,
+                    "GGR004",
+                    format!("segment {} has a colour value outside 0..1", k + 1),
+                ));
+            }
+            Ok([c[0], c[1], c[2], c[3]].map(|x| x.clamp(0.0, 1.0)))
+        };
+        Ok(Segment {
+            left: l.clamp(0.0, 1.0),
+            middle: m.clamp(l.clamp(0.0, 1.0), r.clamp(0.0, 1.0)),
+            right: r.clamp(0.0, 1.0),
+            left_color: color(&v[3..7])?,
+            right_color: color(&v[7..11])?,
+            blend,
+            coloring,
+        })
+    }
+
+    /// The type number at token `i` (0 when absent), from 0 to `max`.
+    fn type_at(
+        &self,
+        toks: &[(usize, &str)],
+        i: usize,
+        max: i64,
+        what: &str,
+    ) -> Result<i64, Diagnostic> {
+        match toks.get(i) {
+            None => Ok(0),
+            Some(&(o, t)) => parse_int(t)
+                .ok()
+                .filter(|n| (0..=max).contains(n))
+                .ok_or_else(|| {
+                    self.err(
+                        o,
+                        "GGR005",
+                        format!("'{}' is not a {what} type; expected 0..{max}", clip(t)),
+                    )
+                }),
+        }
+    }
 }
 
 fn clip(s: &str) -> String {

@@ -217,6 +217,7 @@ mod tests {
             h as u32,
             image::Rgb([200, 100, 50]),
         )))
+        .unwrap()
     }
 
     #[test]

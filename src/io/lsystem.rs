@@ -15,6 +15,8 @@
 
 use crate::explore::lsystem::{self, ANGLE_DIVISIONS, Angle, LSystem, MAX_RULE_LEN, RESERVED};
 use crate::io::diag::{Diagnostic, Parsed, Pos, SourceMap, lines, parse_int};
+use crate::io::error::LSystemWriteError;
+use crate::io::fractint_text::{self, Reporter, Word, check_name, header, strip_comment, words};
 
 /// Most entries per file.
 pub const MAX_ENTRIES: usize = 10_000;
@@ -36,36 +38,6 @@ impl LFile {
     }
 }
 
-struct Tok<'a> {
-    text: &'a str,
-    off: usize,
-}
-
-/// Whitespace-separated words of `code` (which starts at byte `base` of the file).
-fn words(code: &str, base: usize) -> Vec<Tok<'_>> {
-    let mut out = Vec::new();
-    let mut start: Option<usize> = None;
-    for (i, ch) in code.char_indices() {
-        if ch.is_whitespace() {
-            if let Some(s) = start.take() {
-                out.push(Tok {
-                    text: &code[s..i],
-                    off: base + s,
-                });
-            }
-        } else if start.is_none() {
-            start = Some(i);
-        }
-    }
-    if let Some(s) = start {
-        out.push(Tok {
-            text: &code[s..],
-            off: base + s,
-        });
-    }
-    out
-}
-
 /// An entry being read.
 struct Open {
     name: String,
@@ -75,18 +47,24 @@ struct Open {
     rules: Vec<(char, String)>,
 }
 
+type R<T> = Result<T, Diagnostic>;
+
+/// The reader of an `.l` file: the file, its positions, the warnings so far.
+struct Reader<'a> {
+    rep: Reporter<'a>,
+}
+
 /// Parse the text of an `.l` file.
-pub fn parse(text: &str, file: &str) -> Result<Parsed<LFile>, Diagnostic> {
+pub fn parse(text: &str, file: &str) -> R<Parsed<LFile>> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let map = SourceMap::new(text);
-    let err = |off: usize, code, msg: String| Diagnostic::error(file, map.pos(off), code, msg);
-    let warn = |off: usize, code, msg: String| Diagnostic::warning(file, map.pos(off), code, msg);
-    let mut warnings = Vec::new();
+    let mut rd = Reader {
+        rep: Reporter::new(text, file),
+    };
     let mut out = LFile::default();
     let mut cur: Option<Open> = None;
     for (base, line) in lines(text) {
         if line.chars().count() >= LINE_LIMIT {
-            warnings.push(warn(
+            rd.rep.warn(
                 base,
                 "LSY011",
                 format!(
@@ -94,258 +72,42 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<LFile>, Diagnostic> {
                     line.chars().count(),
                     LINE_LIMIT - 1
                 ),
-            ));
+            );
         }
-        let code = match line.find(';') {
-            Some(i) => &line[..i],
-            None => line,
-        };
         let mut base = base;
-        let mut code = code;
+        let mut code = strip_comment(line);
         if cur.is_none() {
             let toks = words(code, base);
-            let Some(first) = toks.first() else {
+            if toks.is_empty() {
                 continue;
-            };
-            let Some(brace) = code.find('{') else {
-                let l = first.text.to_ascii_lowercase();
-                return Err(
-                    if l == "angle" || l == "axiom" || first.text.contains('=') {
-                        err(
-                            first.off,
-                            "LSY001",
-                            format!(
-                                "'{}' outside any entry; an entry starts with 'Name {{'",
-                                first.text
-                            ),
-                        )
-                    } else {
-                        err(
-                            first.off,
-                            "LSY002",
-                            format!(
-                                "expected '{{' after the entry name '{}' on the same line",
-                                first.text
-                            ),
-                        )
-                    },
-                );
-            };
-            let name = code[..brace].trim();
-            if name.is_empty() {
-                return Err(err(
-                    base + brace,
-                    "LSY002",
-                    "'{' without an entry name before it".into(),
-                ));
             }
-            if name.contains(char::is_whitespace) || name.contains('}') {
-                return Err(err(
-                    first.off,
-                    "LSY002",
-                    format!("'{name}' is not an entry name (names have no spaces)"),
-                ));
-            }
-            if out.entries.len() >= MAX_ENTRIES {
-                return Err(err(
-                    first.off,
-                    "LSY015",
-                    format!("more than {MAX_ENTRIES} entries in one file"),
-                ));
-            }
-            if let Some(prev) = out
-                .entries
-                .iter()
-                .find(|e| e.name.eq_ignore_ascii_case(name))
-            {
-                warnings.push(warn(
-                    first.off,
-                    "LSY014",
-                    format!(
-                        "a second entry named '{name}' (Fractint opens only the first, '{}')",
-                        prev.name
-                    ),
-                ));
-            }
-            cur = Some(Open {
-                name: name.to_string(),
-                at: first.off,
-                angle: None,
-                axiom: None,
-                rules: Vec::new(),
-            });
-            base += brace + 1;
-            code = &code[brace + 1..];
+            let (open, brace) = rd.header(code, base, &toks, &out)?;
+            cur = Some(open);
+            // The rest of the header line is read as the entry's first line.
+            code = &code[brace - base + 1..];
+            base = brace + 1;
         }
         let Some(open) = cur.as_mut() else {
             continue;
         };
         let toks = words(code, base);
-        let Some(first) = toks.first() else {
+        if toks.is_empty() {
             continue;
-        };
-        if let Some(t) = toks.iter().find(|t| t.text.contains('{')) {
-            return Err(err(
-                t.off + t.text.find('{').unwrap_or(0),
-                "LSY004",
-                format!("'{{' inside entry '{}' (is its '}}' missing?)", open.name),
-            ));
         }
-        // What follows the item on its line: nothing, or the closing brace.
-        let rest_closes = |rest: &[Tok], what: &str| -> Result<bool, Diagnostic> {
-            match rest {
-                [] => Ok(false),
-                [t] if t.text == "}" => Ok(true),
-                [t, ..] => Err(err(
-                    t.off,
-                    "LSY009",
-                    format!(
-                        "unexpected '{}' after {what}; put each item on its own line (strings have no spaces)",
-                        t.text
-                    ),
-                )),
-            }
-        };
-        // A string glued to the closing brace: `F+F}`.
-        let unglue = |t: &Tok<'_>, warnings: &mut Vec<Diagnostic>| -> (String, bool) {
-            match t.text.strip_suffix('}') {
-                Some(s) if !s.is_empty() => {
-                    warnings.push(warn(
-                        t.off + s.len(),
-                        "LSY013",
-                        "'}' glued to the string; Fractint needs it on its own".into(),
-                    ));
-                    (s.to_string(), true)
-                }
-                _ => (t.text.to_string(), false),
-            }
-        };
-        let lower = first.text.to_ascii_lowercase();
-        let closes = if first.text == "}" {
-            if let Some(t) = toks.get(1) {
-                return Err(err(
-                    t.off,
-                    "LSY001",
-                    format!("'{}' after the '}}' that closes '{}'", t.text, open.name),
-                ));
-            }
-            true
-        } else if lower == "angle" {
-            let v = toks.get(1).ok_or_else(|| {
-                err(
-                    first.off + first.text.len(),
-                    "LSY016",
-                    "expected the angle divisions n after 'Angle' (δ = 360°/n)".into(),
-                )
-            })?;
-            let (vt, glued) = unglue(v, &mut warnings);
-            let n = parse_int(&vt)
-                .ok()
-                .filter(|n| *n >= 0 && ANGLE_DIVISIONS.contains(&(*n as u32)))
-                .ok_or_else(|| {
-                    err(
-                        v.off,
-                        "LSY007",
-                        format!("angle '{vt}' must be an integer from 3 to 49 (δ = 360°/n)"),
-                    )
-                })?;
-            if open.angle.is_some() {
-                warnings.push(warn(
-                    first.off,
-                    "LSY012",
-                    format!("a second Angle in '{}'; the last one counts", open.name),
-                ));
-            }
-            open.angle = Some(n as u32);
-            glued || rest_closes(&toks[2..], "the angle")?
-        } else if lower == "axiom" {
-            let v = toks.get(1).ok_or_else(|| {
-                err(
-                    first.off + first.text.len(),
-                    "LSY016",
-                    "expected the axiom string after 'Axiom'".into(),
-                )
-            })?;
-            let (s, glued) = unglue(v, &mut warnings);
-            check_string(&s, v.off, &map, file)?;
-            if open.axiom.is_some() {
-                warnings.push(warn(
-                    first.off,
-                    "LSY012",
-                    format!("a second Axiom in '{}'; the last one counts", open.name),
-                ));
-            }
-            open.axiom = Some(s);
-            glued || rest_closes(&toks[2..], "the axiom")?
-        } else if let Some(eq) = code.find('=') {
-            let lhs = code[..eq].trim();
-            let lhs_off = base + code[..eq].find(|c: char| !c.is_whitespace()).unwrap_or(0);
-            let mut chars = lhs.chars();
-            let sym = match (chars.next(), chars.next()) {
-                (Some(c), None) => c,
-                (None, _) => {
-                    return Err(err(
-                        base + eq,
-                        "LSY009",
-                        "a production needs its symbol before '=' (e.g. F=F+F)".into(),
-                    ));
-                }
-                _ => {
-                    return Err(err(
-                        lhs_off,
-                        "LSY009",
-                        format!(
-                            "'{lhs}' before '=': a production rewrites one symbol (e.g. F=F+F)"
-                        ),
-                    ));
-                }
-            };
-            if RESERVED.contains(sym.to_ascii_lowercase()) {
-                return Err(err(
-                    lhs_off,
-                    "LSY008",
-                    format!("'{sym}' is a turtle command and cannot have a production"),
-                ));
-            }
-            let rtoks = words(&code[eq + 1..], base + eq + 1);
-            let (body, closes) = match rtoks.first() {
-                None => (String::new(), false),
-                Some(t) if t.text == "}" => (String::new(), rest_closes(&rtoks, "")?),
-                Some(t) => {
-                    let (s, glued) = unglue(t, &mut warnings);
-                    check_string(&s, t.off, &map, file)?;
-                    (
-                        s,
-                        glued || rest_closes(&rtoks[1..], &format!("the production {sym}="))?,
-                    )
-                }
-            };
-            open.rules.push((sym, body));
-            closes
-        } else {
-            return Err(err(
-                first.off,
-                "LSY009",
-                format!(
-                    "expected 'Angle n', 'Axiom string', a production 'X=string' or '}}' in '{}', found '{}'",
-                    open.name, first.text
-                ),
-            ));
-        };
-        if closes {
+        if rd.item(open, code, base, &toks)? {
             let Some(o) = cur.take() else { continue };
             let close_off = toks.last().map_or(base, |t| t.off + t.text.len() - 1);
-            out.entries.push(finish(o, close_off, &err)?);
+            out.entries.push(rd.finish(o, close_off)?);
         }
     }
     if let Some(o) = cur {
-        return Err(err(
+        return Err(rd.rep.err(
             o.at,
             "LSY003",
             format!(
                 "unterminated entry '{}' opened at {}: end of file before '}}'",
                 o.name,
-                match map.pos(o.at) {
+                match rd.rep.map.pos(o.at) {
                     Pos::LineCol(l, c) => format!("{l}:{c}"),
                     _ => String::new(),
                 }
@@ -354,32 +116,262 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<LFile>, Diagnostic> {
     }
     Ok(Parsed {
         value: out,
-        warnings,
+        warnings: rd.rep.warnings,
     })
 }
 
-fn finish(
-    o: Open,
-    close_off: usize,
-    err: &dyn Fn(usize, &'static str, String) -> Diagnostic,
-) -> Result<LSystem, Diagnostic> {
-    let Some(n) = o.angle else {
-        return Err(err(
-            close_off,
-            "LSY005",
-            format!("entry '{}' has no 'Angle n' line", o.name),
-        ));
-    };
-    let Some(axiom) = o.axiom else {
-        return Err(err(
-            close_off,
-            "LSY006",
-            format!("entry '{}' has no 'Axiom' line", o.name),
-        ));
-    };
-    let mut s = LSystem::new(&o.name, &axiom, &[], Angle::Divisions(n));
-    s.rules = o.rules;
-    Ok(s)
+impl Reader<'_> {
+    /// A header line `Name {` outside any entry (`out`: the entries so far): the new entry and
+    /// the offset of its `{`.
+    fn header(&mut self, code: &str, base: usize, toks: &[Word], out: &LFile) -> R<(Open, usize)> {
+        let first = &toks[0];
+        let Some(h) = header(code, base) else {
+            let l = first.text.to_ascii_lowercase();
+            return Err(
+                if l == "angle" || l == "axiom" || first.text.contains('=') {
+                    self.rep.err(
+                        first.off,
+                        "LSY001",
+                        format!(
+                            "'{}' outside any entry; an entry starts with 'Name {{'",
+                            first.text
+                        ),
+                    )
+                } else {
+                    self.rep.err(
+                        first.off,
+                        "LSY002",
+                        format!(
+                            "expected '{{' after the entry name '{}' on the same line",
+                            first.text
+                        ),
+                    )
+                },
+            );
+        };
+        let name = h.before.trim();
+        check_name(name, &h).map_err(|b| self.rep.err(b.off, "LSY002", b.message))?;
+        if out.entries.len() >= MAX_ENTRIES {
+            return Err(self.rep.err(
+                first.off,
+                "LSY015",
+                format!("more than {MAX_ENTRIES} entries in one file"),
+            ));
+        }
+        if let Some(prev) = out
+            .entries
+            .iter()
+            .find(|e| e.name.eq_ignore_ascii_case(name))
+        {
+            self.rep.warn(
+                first.off,
+                "LSY014",
+                format!(
+                    "a second entry named '{name}' (Fractint opens only the first, '{}')",
+                    prev.name
+                ),
+            );
+        }
+        let open = Open {
+            name: name.to_string(),
+            at: first.off,
+            angle: None,
+            axiom: None,
+            rules: Vec::new(),
+        };
+        Ok((open, h.brace))
+    }
+
+    /// One item of an entry (`code` at byte `base`, split into `toks`): `Angle n`, `Axiom s`,
+    /// a production `X=s` or `}`. True when the line closes the entry.
+    fn item(&mut self, open: &mut Open, code: &str, base: usize, toks: &[Word]) -> R<bool> {
+        if let Some(t) = toks.iter().find(|t| t.text.contains('{')) {
+            return Err(self.rep.err(
+                t.off + t.text.find('{').unwrap_or(0),
+                "LSY004",
+                format!("'{{' inside entry '{}' (is its '}}' missing?)", open.name),
+            ));
+        }
+        let first = &toks[0];
+        let lower = first.text.to_ascii_lowercase();
+        if first.text == "}" {
+            if let Some(t) = toks.get(1) {
+                return Err(self.rep.err(
+                    t.off,
+                    "LSY001",
+                    format!("'{}' after the '}}' that closes '{}'", t.text, open.name),
+                ));
+            }
+            Ok(true)
+        } else if lower == "angle" {
+            self.angle(open, toks)
+        } else if lower == "axiom" {
+            self.axiom(open, toks)
+        } else if let Some(eq) = code.find('=') {
+            self.production(open, code, base, eq)
+        } else {
+            Err(self.rep.err(
+                first.off,
+                "LSY009",
+                format!(
+                    "expected 'Angle n', 'Axiom string', a production 'X=string' or '}}' in '{}', found '{}'",
+                    open.name, first.text
+                ),
+            ))
+        }
+    }
+
+    /// `Angle n` (δ = 360°/n); true when `}` follows.
+    fn angle(&mut self, open: &mut Open, toks: &[Word]) -> R<bool> {
+        let first = &toks[0];
+        let v = toks.get(1).ok_or_else(|| {
+            self.rep.err(
+                first.off + first.text.len(),
+                "LSY016",
+                "expected the angle divisions n after 'Angle' (δ = 360°/n)".into(),
+            )
+        })?;
+        let (vt, glued) = self.unglue(v);
+        let n = parse_int(&vt)
+            .ok()
+            .filter(|n| *n >= 0 && ANGLE_DIVISIONS.contains(&(*n as u32)))
+            .ok_or_else(|| {
+                self.rep.err(
+                    v.off,
+                    "LSY007",
+                    format!("angle '{vt}' must be an integer from 3 to 49 (δ = 360°/n)"),
+                )
+            })?;
+        if open.angle.is_some() {
+            self.rep.warn(
+                first.off,
+                "LSY012",
+                format!("a second Angle in '{}'; the last one counts", open.name),
+            );
+        }
+        open.angle = Some(n as u32);
+        Ok(glued || self.rest_closes(&toks[2..], "the angle")?)
+    }
+
+    /// `Axiom string`; true when `}` follows.
+    fn axiom(&mut self, open: &mut Open, toks: &[Word]) -> R<bool> {
+        let first = &toks[0];
+        let v = toks.get(1).ok_or_else(|| {
+            self.rep.err(
+                first.off + first.text.len(),
+                "LSY016",
+                "expected the axiom string after 'Axiom'".into(),
+            )
+        })?;
+        let (s, glued) = self.unglue(v);
+        check_string(&s, v.off, &self.rep.map, self.rep.file)?;
+        if open.axiom.is_some() {
+            self.rep.warn(
+                first.off,
+                "LSY012",
+                format!("a second Axiom in '{}'; the last one counts", open.name),
+            );
+        }
+        open.axiom = Some(s);
+        Ok(glued || self.rest_closes(&toks[2..], "the axiom")?)
+    }
+
+    /// A production `X=string` with its `=` at `eq` of `code`; true when `}` follows.
+    fn production(&mut self, open: &mut Open, code: &str, base: usize, eq: usize) -> R<bool> {
+        let lhs = code[..eq].trim();
+        let lhs_off = base + code[..eq].find(|c: char| !c.is_whitespace()).unwrap_or(0);
+        let mut chars = lhs.chars();
+        let sym = match (chars.next(), chars.next()) {
+            (Some(c), None) => c,
+            (None, _) => {
+                return Err(self.rep.err(
+                    base + eq,
+                    "LSY009",
+                    "a production needs its symbol before '=' (e.g. F=F+F)".into(),
+                ));
+            }
+            _ => {
+                return Err(self.rep.err(
+                    lhs_off,
+                    "LSY009",
+                    format!("'{lhs}' before '=': a production rewrites one symbol (e.g. F=F+F)"),
+                ));
+            }
+        };
+        if RESERVED.contains(sym.to_ascii_lowercase()) {
+            return Err(self.rep.err(
+                lhs_off,
+                "LSY008",
+                format!("'{sym}' is a turtle command and cannot have a production"),
+            ));
+        }
+        let rtoks = words(&code[eq + 1..], base + eq + 1);
+        let (body, closes) = match rtoks.first() {
+            None => (String::new(), false),
+            Some(t) if t.text == "}" => (String::new(), self.rest_closes(&rtoks, "")?),
+            Some(t) => {
+                let (s, glued) = self.unglue(t);
+                check_string(&s, t.off, &self.rep.map, self.rep.file)?;
+                let closes =
+                    glued || self.rest_closes(&rtoks[1..], &format!("the production {sym}="))?;
+                (s, closes)
+            }
+        };
+        open.rules.push((sym, body));
+        Ok(closes)
+    }
+
+    /// What follows the item on its line: nothing, or the closing brace.
+    fn rest_closes(&self, rest: &[Word], what: &str) -> R<bool> {
+        match rest {
+            [] => Ok(false),
+            [t] if t.text == "}" => Ok(true),
+            [t, ..] => Err(self.rep.err(
+                t.off,
+                "LSY009",
+                format!(
+                    "unexpected '{}' after {what}; put each item on its own line (strings have no spaces)",
+                    t.text
+                ),
+            )),
+        }
+    }
+
+    /// A string glued to the closing brace (`F+F}`): the string, and whether it closes.
+    fn unglue(&mut self, t: &Word) -> (String, bool) {
+        match t.text.strip_suffix('}') {
+            Some(s) if !s.is_empty() => {
+                self.rep.warn(
+                    t.off + s.len(),
+                    "LSY013",
+                    "'}' glued to the string; Fractint needs it on its own".into(),
+                );
+                (s.to_string(), true)
+            }
+            _ => (t.text.to_string(), false),
+        }
+    }
+
+    /// The entry closed at `close_off`: it needs an angle and an axiom.
+    fn finish(&self, o: Open, close_off: usize) -> R<LSystem> {
+        let Some(n) = o.angle else {
+            return Err(self.rep.err(
+                close_off,
+                "LSY005",
+                format!("entry '{}' has no 'Angle n' line", o.name),
+            ));
+        };
+        let Some(axiom) = o.axiom else {
+            return Err(self.rep.err(
+                close_off,
+                "LSY006",
+                format!("entry '{}' has no 'Axiom' line", o.name),
+            ));
+        };
+        let mut s = LSystem::new(&o.name, &axiom, &[], Angle::Divisions(n));
+        s.rules = o.rules;
+        Ok(s)
+    }
 }
 
 /// Check an axiom or production body that starts at byte `off` of the file.
@@ -402,17 +394,7 @@ fn check_string(s: &str, off: usize, map: &SourceMap, file: &str) -> Result<(), 
 
 /// A valid entry name from any name (spaces and reserved characters become '_').
 pub fn entry_name(name: &str) -> String {
-    let s: String = name
-        .chars()
-        .map(|c| {
-            if c.is_whitespace() || "{};=".contains(c) {
-                '_'
-            } else {
-                c
-            }
-        })
-        .collect();
-    if s.is_empty() { "lsystem".into() } else { s }
+    fractint_text::entry_name(name, "{};=", "lsystem")
 }
 
 /// The angle divisions n with δ = 360°/n, if δ is such an angle.
@@ -430,46 +412,41 @@ fn divisions(a: Angle) -> Option<u32> {
 /// format cannot hold (an angle that is not 360°/n for n in 3..49, extra draw symbols, turning
 /// brackets, a start heading that is not a multiple of δ) is refused with the reason. The swap
 /// flag becomes a leading `!` and the start heading leading `+`, which Fractint reads the same.
-pub fn write(systems: &[LSystem]) -> Result<String, String> {
+pub fn write(systems: &[LSystem]) -> Result<String, LSystemWriteError> {
     let mut s = String::new();
     let mut names: Vec<String> = Vec::new();
     for (i, sys) in systems.iter().enumerate() {
-        sys.compile()
-            .map_err(|e| format!("'{}' cannot be saved: {e}", sys.name))?;
+        sys.compile().map_err(|reason| LSystemWriteError::Invalid {
+            name: sys.name.clone(),
+            reason,
+        })?;
         let name = entry_name(&sys.name);
         if names.iter().any(|n| n.eq_ignore_ascii_case(&name)) {
-            return Err(format!(
-                "two entries are named '{name}'; Fractint would only find the first"
-            ));
+            return Err(LSystemWriteError::SameName(name));
         }
         let n = divisions(sys.angle)
             .filter(|n| ANGLE_DIVISIONS.contains(n))
-            .ok_or_else(|| {
-                format!(
-                    "'{}': angle {}° is not 360°/n for an integer n from 3 to 49; .l files cannot hold it",
-                    sys.name,
-                    sys.angle.degrees()
-                )
+            .ok_or_else(|| LSystemWriteError::Angle {
+                name: sys.name.clone(),
+                degrees: sys.angle.degrees(),
             })?;
         if !sys.draw_symbols.is_empty() {
-            return Err(format!(
-                "'{}': in .l files only F and D draw; '{}' cannot be made to draw",
-                sys.name, sys.draw_symbols
-            ));
+            return Err(LSystemWriteError::DrawSymbols {
+                name: sys.name.clone(),
+                symbols: sys.draw_symbols.clone(),
+            });
         }
         if sys.bracket_turn {
-            return Err(format!(
-                "'{}': brackets that also turn cannot be written to a .l file",
-                sys.name
-            ));
+            return Err(LSystemWriteError::TurningBrackets(sys.name.clone()));
         }
         let delta = 360.0 / n as f64;
         let turns = (sys.start_heading / delta).round();
         if (turns * delta - sys.start_heading).abs() > 1e-9 {
-            return Err(format!(
-                "'{}': the start heading {}° is not a multiple of δ = {delta}°",
-                sys.name, sys.start_heading
-            ));
+            return Err(LSystemWriteError::StartHeading {
+                name: sys.name.clone(),
+                heading: sys.start_heading,
+                delta,
+            });
         }
         let turns = (turns as i64).rem_euclid(n as i64) as usize;
         // The start heading as leading turns, written before the swap so they turn left; the

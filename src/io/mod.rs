@@ -8,6 +8,7 @@ pub mod diag;
 pub mod error;
 pub mod escape_view;
 pub mod flam3_xml;
+mod fractint_text;
 pub mod ggr;
 pub mod ifs;
 pub mod image_in;
@@ -427,10 +428,12 @@ pub fn read_lsystems(path: &Path) -> Result<Parsed<lsystem::LFile>, Diagnostic> 
 pub fn write_lsystems(
     path: &Path,
     systems: &[crate::explore::lsystem::LSystem],
-) -> Result<(), String> {
+) -> Result<(), WriteError> {
     let text = lsystem::write(systems)?;
-    atomic::write_atomic(path, text.as_bytes())
-        .map_err(|e| format!("cannot write '{}': {e}", path.display()))
+    atomic::write_atomic(path, text.as_bytes()).map_err(|source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// Read the gradients of a gradient file (.ugr: several; .map, .ggr: one) or make one from an
@@ -513,7 +516,7 @@ pub fn write_gradients(
             });
         }
     };
-    check_readable_size(path, text.len()).map_err(WriteError::TooLarge)?;
+    check_readable_size(path, text.len())?;
     atomic::write_atomic(path, text.as_bytes()).map_err(|source| WriteError::Io {
         path: path.to_path_buf(),
         source,
@@ -522,15 +525,14 @@ pub fn write_gradients(
 
 /// Refuse to write what ugnis would refuse to read: a text larger than the read limit of
 /// the file's kind.
-pub fn check_readable_size(path: &Path, bytes: usize) -> Result<(), String> {
+pub fn check_readable_size(path: &Path, bytes: usize) -> Result<(), WriteError> {
     let limit = max_file_size(kind_of(path));
     if bytes as u64 > limit {
-        return Err(format!(
-            "{}: the file would be {} MiB, more than ugnis reads ({} MiB); save fewer items per file",
-            path.display(),
-            (bytes as u64).div_ceil(1 << 20),
-            limit >> 20
-        ));
+        return Err(WriteError::TooLarge {
+            path: path.to_path_buf(),
+            mib: (bytes as u64).div_ceil(1 << 20),
+            limit_mib: limit >> 20,
+        });
     }
     Ok(())
 }
@@ -563,12 +565,14 @@ pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<Str
         FileKind::Ifs => {
             let mut f = ifs::IfsFile::default();
             for fl in flames {
-                let (e, w) = ifs::flame_to_entry(fl)
-                    .map_err(|e| WriteError::NotRepresentable(format!("'{}': {e}", fl.name)))?;
+                let (e, w) = ifs::flame_to_entry(fl).map_err(|reason| WriteError::FlameAsIfs {
+                    name: fl.name.clone(),
+                    reason,
+                })?;
                 warnings.extend(w);
                 f.entries.push(e);
             }
-            ifs::write(&f).map_err(WriteError::NotRepresentable)?
+            ifs::write(&f)?
         }
         FileKind::Fla | FileKind::FlameXml => {
             if let Some(f) = flames.iter().find(|f| f.ifs3d.is_some()) {
@@ -589,7 +593,7 @@ pub fn write_flames(path: &Path, name: &str, flames: &[Flame]) -> Result<Vec<Str
             });
         }
     };
-    check_readable_size(path, text.len()).map_err(WriteError::TooLarge)?;
+    check_readable_size(path, text.len())?;
     atomic::write_atomic(path, text.as_bytes()).map_err(|source| WriteError::Io {
         path: path.to_path_buf(),
         source,

@@ -8,6 +8,7 @@ use crate::explore::lsystem::{Compiled, Segment};
 use crate::explore::raster::{Framing, palette_color};
 use crate::explore::{Bounds, ExploreError};
 use crate::io::atomic::write_atomic_with;
+use crate::io::error::WriteError;
 
 /// Most segments written to one SVG file (about 15 bytes each).
 pub const MAX_SEGMENTS: u64 = 5_000_000;
@@ -120,8 +121,8 @@ pub fn save_lsystem(
     width: u32,
     height: u32,
     background: Option<[u8; 3]>,
-) -> Result<(), String> {
-    crate::explore::raster::check_size(width, height).map_err(|e| e.to_string())?;
+) -> Result<(), WriteError> {
+    crate::explore::raster::check_size(width, height)?;
     let segs = sys.counts(order).segments;
     if segs > MAX_SEGMENTS as f64 {
         return Err(ExploreError::TooLarge {
@@ -130,10 +131,10 @@ pub fn save_lsystem(
             limit: MAX_SEGMENTS as f64,
             hint: " segments; lower the order or write a PNG".into(),
         }
-        .to_string());
+        .into());
     }
     // Check the walk (order limit, nesting) before creating the file.
-    sys.extent(order).map_err(|e| e.to_string())?;
+    sys.extent(order)?;
     let title = format!("{} (order {order})", sys.system.name);
     write_atomic_with(path, |file| {
         let mut w = std::io::BufWriter::new(file);
@@ -146,7 +147,10 @@ pub fn save_lsystem(
         })?;
         w.flush()
     })
-    .map_err(|e| format!("cannot write '{}': {e}", path.display()))
+    .map_err(|source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 #[cfg(test)]

@@ -17,50 +17,102 @@ struct Key {
 /// Parse the text of a `.ugr` file.
 pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let map = SourceMap::new(text);
-    let err = |off: usize, code, msg: String| Diagnostic::error(file, map.pos(off), code, msg);
+    let rd = Reader {
+        file,
+        map: SourceMap::new(text),
+    };
     let mut warnings = Vec::new();
     let mut out = Vec::new();
-    let b = text.as_bytes();
     let mut i = 0;
-    let skip_ws = |i: &mut usize| {
-        while *i < b.len() && b[*i].is_ascii_whitespace() {
-            *i += 1;
-        }
-    };
-    loop {
-        skip_ws(&mut i);
-        if i >= b.len() {
-            break;
-        }
-        if b[i] == b';' {
-            while i < b.len() && b[i] != b'\n' && b[i] != b'\r' {
-                i += 1;
-            }
+    while let Some(e) = rd.next_entry(text, &mut i)? {
+        if e.name.contains("(3D)") {
             continue;
         }
+        if out.len() >= MAX_GRADIENTS {
+            return Err(rd.err(
+                e.start,
+                "UGR007",
+                format!("more than {MAX_GRADIENTS} gradients"),
+            ));
+        }
+        out.push(rd.gradient(&e, &mut warnings)?);
+    }
+    Ok(Parsed {
+        value: out,
+        warnings,
+    })
+}
+
+/// Numbers with the offsets they were read at.
+type Located = Vec<(i64, usize)>;
+
+/// One `name { … }` entry of a `.ugr` file.
+struct Entry<'t> {
+    name: String,
+    /// Offset of the header.
+    start: usize,
+    /// The text between the braces and its offset.
+    body: &'t str,
+    body_off: usize,
+}
+
+/// The reader of a `.ugr` file: the file and its positions.
+struct Reader<'a> {
+    file: &'a str,
+    map: SourceMap<'a>,
+}
+
+impl Reader<'_> {
+    fn err(&self, off: usize, code: &'static str, msg: String) -> Diagnostic {
+        Diagnostic::error(self.file, self.map.pos(off), code, msg)
+    }
+
+    /// The next entry from byte `*i` on (skipping whitespace and `;` comments), None at the
+    /// end of the text.
+    fn next_entry<'t>(
+        &self,
+        text: &'t str,
+        i: &mut usize,
+    ) -> Result<Option<Entry<'t>>, Diagnostic> {
+        let b = text.as_bytes();
+        loop {
+            while *i < b.len() && b[*i].is_ascii_whitespace() {
+                *i += 1;
+            }
+            if *i >= b.len() {
+                return Ok(None);
+            }
+            if b[*i] != b';' {
+                break;
+            }
+            while *i < b.len() && b[*i] != b'\n' && b[*i] != b'\r' {
+                *i += 1;
+            }
+        }
         // Header: name … "{" on the same line.
-        let line_end = text[i..].find(['\n', '\r']).map_or(text.len(), |e| i + e);
-        let header = &text[i..line_end];
+        let start = *i;
+        let line_end = text[start..]
+            .find(['\n', '\r'])
+            .map_or(text.len(), |e| start + e);
+        let header = &text[start..line_end];
         let Some(brace) = header.find('{') else {
-            return Err(err(
-                i,
+            return Err(self.err(
+                start,
                 "UGR001",
                 format!("expected 'name {{' on this line, found '{}'", header.trim()),
             ));
         };
         let name = header[..brace].trim().to_string();
         if name.is_empty() {
-            return Err(err(
-                i + brace,
+            return Err(self.err(
+                start + brace,
                 "UGR001",
                 "'{' without a gradient name".into(),
             ));
         }
-        let start = i;
-        i += brace + 1;
+        let body_off = start + brace + 1;
         // Body up to the matching "}" (quoted strings may contain braces).
-        let mut j = i;
+        let mut j = body_off;
         let mut in_quote = false;
         while j < b.len() && (in_quote || b[j] != b'}') {
             if b[j] == b'"' {
@@ -69,77 +121,34 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic
             j += 1;
         }
         if j >= b.len() {
-            return Err(err(
+            return Err(self.err(
                 start,
                 "UGR002",
                 format!("gradient '{name}' has no closing '}}'"),
             ));
         }
-        let body = &text[i..j];
-        let body_off = i;
-        i = j + 1;
-        if name.contains("(3D)") {
-            continue;
-        }
-        if out.len() >= MAX_GRADIENTS {
-            return Err(err(
-                start,
-                "UGR007",
-                format!("more than {MAX_GRADIENTS} gradients"),
-            ));
-        }
-        let Some(gpos) = body.find("gradient:") else {
-            return Err(err(
-                start,
-                "UGR003",
-                format!("gradient '{name}' has no 'gradient:' section"),
-            ));
-        };
-        let section_end = body[gpos..]
-            .find("opacity:")
-            .map_or(body.len(), |o| gpos + o);
-        let section = &body[gpos + "gradient:".len()..section_end];
-        let sec_off = body_off + gpos + "gradient:".len();
-        let mut indices: Vec<(i64, usize)> = Vec::new();
-        let mut colors: Vec<(i64, usize)> = Vec::new();
-        let mut title: Option<String> = None;
-        for (tok, off) in ugr_tokens(section, sec_off) {
-            let Some((k, v)) = tok.split_once('=') else {
-                continue;
-            };
-            match k.to_ascii_lowercase().as_str() {
-                "index" => {
-                    let n = parse_int(v).map_err(|_| {
-                        err(off, "UGR006", format!("index '{v}' is not an integer"))
-                    })?;
-                    indices.push((n, off));
-                }
-                "color" => {
-                    let n = parse_int(v).map_err(|_| {
-                        err(off, "UGR006", format!("color '{v}' is not an integer"))
-                    })?;
-                    if !(0..=16_777_215).contains(&n) {
-                        return Err(err(
-                            off,
-                            "UGR006",
-                            format!("color {n} is outside 0..16777215"),
-                        ));
-                    }
-                    colors.push((n, off));
-                }
-                "title" => title = Some(v.trim_matches('"').to_string()),
-                _ => {}
-            }
-        }
+        *i = j + 1;
+        Ok(Some(Entry {
+            name,
+            start,
+            body: &text[body_off..j],
+            body_off,
+        }))
+    }
+
+    /// The gradient of an entry: the index/color keys of its `gradient:` section.
+    fn gradient(&self, e: &Entry, warnings: &mut Vec<Diagnostic>) -> Result<Gradient, Diagnostic> {
+        let (name, start) = (&e.name, e.start);
+        let (indices, colors) = self.keys(e)?;
         if indices.is_empty() || colors.is_empty() {
-            return Err(err(
+            return Err(self.err(
                 start,
                 "UGR004",
                 format!("gradient '{name}' has no index/color pair"),
             ));
         }
         if indices.len() != colors.len() {
-            return Err(err(
+            return Err(self.err(
                 start,
                 "UGR005",
                 format!(
@@ -159,8 +168,8 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic
                 k => format!(" ({} more indices are outside too)", k - 1),
             };
             warnings.push(Diagnostic::warning(
-                file,
-                map.pos(off),
+                self.file,
+                self.map.pos(off),
                 "UGR009",
                 format!(
                     "index {n} of gradient '{name}' is outside 0..399; taken modulo 400 ({}){more}",
@@ -173,24 +182,66 @@ pub fn parse(text: &str, file: &str) -> Result<Parsed<Vec<Gradient>>, Diagnostic
             .zip(&colors)
             .map(|(&(index, _), &(color, _))| Key { index, color })
             .collect();
-        let (g, dup) = from_keys(&name, &keys);
+        let (g, dup) = from_keys(name, &keys);
         if dup {
             warnings.push(Diagnostic::warning(
-                file,
-                map.pos(start),
+                self.file,
+                self.map.pos(start),
                 "UGR008",
                 format!(
                     "gradient '{name}' has two keys at the same position; the later one is used"
                 ),
             ));
         }
-        let _ = title;
-        out.push(g);
+        Ok(g)
     }
-    Ok(Parsed {
-        value: out,
-        warnings,
-    })
+
+    /// The `index=` and `color=` values of an entry's `gradient:` section (up to `opacity:`),
+    /// with their offsets.
+    fn keys(&self, e: &Entry) -> Result<(Located, Located), Diagnostic> {
+        let Some(gpos) = e.body.find("gradient:") else {
+            return Err(self.err(
+                e.start,
+                "UGR003",
+                format!("gradient '{}' has no 'gradient:' section", e.name),
+            ));
+        };
+        let section_end = e.body[gpos..]
+            .find("opacity:")
+            .map_or(e.body.len(), |o| gpos + o);
+        let section = &e.body[gpos + "gradient:".len()..section_end];
+        let sec_off = e.body_off + gpos + "gradient:".len();
+        let mut indices: Located = Vec::new();
+        let mut colors: Located = Vec::new();
+        for (tok, off) in ugr_tokens(section, sec_off) {
+            let Some((k, v)) = tok.split_once('=') else {
+                continue;
+            };
+            match k.to_ascii_lowercase().as_str() {
+                "index" => {
+                    let n = parse_int(v).map_err(|_| {
+                        self.err(off, "UGR006", format!("index '{v}' is not an integer"))
+                    })?;
+                    indices.push((n, off));
+                }
+                "color" => {
+                    let n = parse_int(v).map_err(|_| {
+                        self.err(off, "UGR006", format!("color '{v}' is not an integer"))
+                    })?;
+                    if !(0..=16_777_215).contains(&n) {
+                        return Err(self.err(
+                            off,
+                            "UGR006",
+                            format!("color {n} is outside 0..16777215"),
+                        ));
+                    }
+                    colors.push((n, off));
+                }
+                _ => {}
+            }
+        }
+        Ok((indices, colors))
+    }
 }
 
 /// Whitespace-separated tokens with byte offsets; a `"…"` string stays in one token.

@@ -252,7 +252,8 @@ impl LSystemView {
         worker.submit(Box::new(move |_, _| {
             let counts = c.counts(order);
             if svg {
-                io::svg::save_lsystem(&path, &c, order, w, h, Some(BACKGROUND))?;
+                io::svg::save_lsystem(&path, &c, order, w, h, Some(BACKGROUND))
+                    .map_err(|e| e.to_string())?;
             } else {
                 let img = c
                     .render(order, w, h, BACKGROUND)

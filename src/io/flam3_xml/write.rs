@@ -1,0 +1,260 @@
+//! Writing flames as flam3 XML: the whole `.fla`/`.flame` document, or one `<flame>` element
+//! (as embedded in PNG files). Every attribute and child kept from reading is written back.
+
+use std::fmt::Write as _;
+
+use super::{FLA_FORMAT, FlameFile};
+use crate::flame::model::{Flame, PaletteIndex, Xform};
+use crate::flame::variations;
+use crate::io::diag::fmt_num;
+use crate::io::xml::escape_attr;
+
+/// Write a whole `.fla`/`.flame` document.
+pub fn write(file: &FlameFile) -> String {
+    let mut s = String::new();
+    s.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    let _ = writeln!(
+        s,
+        "<flames name=\"{}\" ugnis_format=\"{FLA_FORMAT}\">",
+        escape_attr(&file.name)
+    );
+    let mut used: Vec<String> = Vec::new();
+    for (i, f) in file.flames.iter().enumerate() {
+        // Every flame needs a unique non-empty name.
+        let mut name = if f.name.trim().is_empty() {
+            format!("flame-{:03}", i + 1)
+        } else {
+            f.name.clone()
+        };
+        if used.contains(&name) {
+            let base = name.clone();
+            let mut k = 2;
+            while used.contains(&name) {
+                name = format!("{base}-{k}");
+                k += 1;
+            }
+        }
+        used.push(name.clone());
+        write_flame(&mut s, f, &name, "   ");
+    }
+    s.push_str("</flames>\n");
+    s
+}
+
+/// One `<flame>…</flame>` element (no declaration, no root), as embedded in PNG files.
+pub fn flame_element(f: &Flame) -> String {
+    let mut s = String::new();
+    let name = if f.name.is_empty() {
+        "ugnis".to_string()
+    } else {
+        f.name.clone()
+    };
+    write_flame(&mut s, f, &name, "");
+    s
+}
+
+fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
+    let n = fmt_num;
+    let _ = write!(
+        s,
+        "{ind}<flame name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
+         supersample=\"{}\" filter=\"{}\" filter_shape=\"{}\" quality=\"{}\" background=\"{} {} {}\" brightness=\"{}\" \
+         gamma=\"{}\" gamma_threshold=\"{}\" vibrancy=\"{}\" highlight_power=\"{}\" estimator_radius=\"{}\" \
+         estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\" new_linear=\"1\" ugnis_contrast=\"{}\"",
+        escape_attr(name),
+        crate::VERSION,
+        f.width,
+        f.height,
+        n(f.center[0]),
+        n(f.center[1]),
+        n(f.scale),
+        n(f.rotate),
+        n(f.zoom),
+        f.supersample,
+        n(f.filter),
+        f.filter_shape.name(),
+        n(f.quality),
+        n(f.background[0]),
+        n(f.background[1]),
+        n(f.background[2]),
+        n(f.brightness),
+        n(f.gamma),
+        n(f.gamma_threshold),
+        n(f.vibrancy),
+        n(f.highlight_power),
+        n(f.estimator_radius),
+        n(f.estimator_minimum),
+        n(f.estimator_curve),
+        f.palette_mode.name(),
+        n(f.contrast),
+    );
+    if let Some(seed) = f.seed {
+        let _ = write!(s, " ugnis_seed=\"{seed}\"");
+    }
+    let _ = write!(s, " ugnis_kind=\"{}\"", f.kind.name());
+    if f.palette_index != PaletteIndex::Flam3 {
+        let _ = write!(s, " ugnis_palette_index=\"{}\"", f.palette_index.name());
+    }
+    if let Some(aw) = f.auto_weights {
+        let _ = write!(s, " ugnis_auto_weights=\"{}\"", aw as u8);
+    }
+    if !f.palette.name.is_empty() {
+        let _ = write!(s, " ugnis_gradient=\"{}\"", escape_attr(&f.palette.name));
+    }
+    if let Some(solo) = f.solo_xform {
+        let _ = write!(s, " soloxform=\"{solo}\"");
+    }
+    if !f.curves.is_identity() {
+        for (ci, name) in ["overall_curve", "red_curve", "green_curve", "blue_curve"]
+            .iter()
+            .enumerate()
+        {
+            let v: Vec<String> = f.curves.points[ci]
+                .iter()
+                .flat_map(|p| [n(p[0]), n(p[1])])
+                .collect();
+            let _ = write!(s, " {name}=\"{}\"", v.join(" "));
+        }
+    }
+    if f.cam_zoom != 1.0 {
+        let _ = write!(s, " cam_zoom=\"{}\"", n(f.cam_zoom));
+    }
+    let c = &f.cam;
+    if !c.is_flat() || c.blur_curve != 0.0 {
+        let _ = write!(
+            s,
+            " cam_pitch=\"{}\" cam_yaw=\"{}\" cam_perspective=\"{}\" cam_zpos=\"{}\" cam_dof=\"{}\"",
+            n(c.pitch),
+            n(c.yaw),
+            n(c.perspective),
+            n(c.zpos),
+            n(c.dof)
+        );
+        if c.blur_curve != 0.0 {
+            let _ = write!(s, " blur_curve=\"{}\"", n(c.blur_curve));
+        }
+    }
+    for (k, v) in &f.extra_attrs {
+        let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
+    }
+    s.push_str(">\n");
+    let inner = format!("{ind}   ");
+    for x in &f.xforms {
+        write_xform(s, x, "xform", &inner);
+    }
+    if let Some(fx) = &f.final_xform {
+        write_xform(s, fx, "finalxform", &inner);
+    }
+    write_palette(s, f.render_colors(), &inner);
+    for c in &f.extra_children {
+        let _ = writeln!(s, "{inner}{}", c.trim());
+    }
+    let _ = writeln!(s, "{ind}</flame>");
+}
+
+fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
+    let n = fmt_num;
+    let _ = write!(s, "{ind}<{tag}");
+    if tag == "xform" {
+        let _ = write!(s, " weight=\"{}\"", n(x.weight));
+    }
+    let _ = write!(s, " color=\"{}\"", n(x.color));
+    if x.color_speed != 0.5 {
+        let _ = write!(s, " symmetry=\"{}\"", n(1.0 - 2.0 * x.color_speed));
+    }
+    let _ = write!(s, " color_speed=\"{}\"", n(x.color_speed));
+    if x.opacity != 1.0 {
+        let _ = write!(s, " opacity=\"{}\"", n(x.opacity));
+    }
+    if x.direct_color != 1.0 {
+        let _ = write!(s, " direct_color=\"{}\"", n(x.direct_color));
+    }
+    for v in &x.vars {
+        let _ = write!(s, " {}=\"{}\"", v.attr_name(), n(v.weight));
+    }
+    for v in &x.vars {
+        for i in 0..variations::info(v.id).params.len() {
+            let name = variations::param_attr_name(v.id, v.form, i);
+            let _ = write!(s, " {name}=\"{}\"", n(v.params[i]));
+        }
+        for (i, t) in v.texts.iter().enumerate() {
+            let name = variations::text_attr_name(v.id, v.form, i);
+            let _ = write!(s, " {name}=\"{}\"", text_to_hex(t));
+        }
+    }
+    let c = x.coefs.to_coefs();
+    let _ = write!(
+        s,
+        " coefs=\"{} {} {} {} {} {}\"",
+        n(c[0]),
+        n(c[1]),
+        n(c[2]),
+        n(c[3]),
+        n(c[4]),
+        n(c[5])
+    );
+    if !x.post.is_identity() {
+        let p = x.post.to_coefs();
+        let _ = write!(
+            s,
+            " post=\"{} {} {} {} {} {}\"",
+            n(p[0]),
+            n(p[1]),
+            n(p[2]),
+            n(p[3]),
+            n(p[4]),
+            n(p[5])
+        );
+    }
+    let mut chaos = x.chaos.clone();
+    while chaos.last() == Some(&1.0) {
+        chaos.pop();
+    }
+    if !chaos.is_empty() {
+        let v: Vec<String> = chaos.iter().map(|c| n(*c)).collect();
+        let _ = write!(s, " chaos=\"{}\"", v.join(" "));
+    }
+    for (k, v) in &x.extra_attrs {
+        let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
+    }
+    if x.extra_children.is_empty() {
+        s.push_str("/>\n");
+    } else {
+        s.push_str(">\n");
+        for c in &x.extra_children {
+            let _ = writeln!(s, "{ind}   {}", c.trim());
+        }
+        let _ = writeln!(s, "{ind}</{tag}>");
+    }
+}
+
+fn to8(v: f64) -> u8 {
+    (v.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+fn write_palette(s: &mut String, colors: &[[f64; 4]], ind: &str) {
+    let rgba = colors.iter().any(|c| c[3] < 1.0);
+    let fmt = if rgba { "RGBA" } else { "RGB" };
+    let _ = writeln!(
+        s,
+        "{ind}<palette count=\"{}\" format=\"{fmt}\">",
+        colors.len()
+    );
+    for line in colors.chunks(8) {
+        s.push_str(ind);
+        s.push_str("   ");
+        for c in line {
+            let _ = write!(s, "{:02X}{:02X}{:02X}", to8(c[0]), to8(c[1]), to8(c[2]));
+            if rgba {
+                let _ = write!(s, "{:02X}", to8(c[3]));
+            }
+        }
+        s.push('\n');
+    }
+    let _ = writeln!(s, "{ind}</palette>");
+}
+
+/// The hex digits of a text parameter's bytes, as JWildfire writes them.
+fn text_to_hex(t: &str) -> String {
+    t.bytes().map(|b| format!("{b:02X}")).collect()
+}

@@ -1,0 +1,90 @@
+//! Render state files (`.ugnis-state`): a flame render's histogram and everything needed to
+//! continue it or merge it with other parts of the same render.
+//!
+//! Layout (little-endian):
+//!
+//! ```text
+//! "UGNISRS\x1a"                        8-byte magic
+//! u32 version                          FORMAT_VERSION
+//! u32 n, n bytes                       header: UTF-8 lines "key value", then "flame" and the
+//!                                      flame's XML element on the following lines
+//! u32 k, k × lane set                  each worker's orbits: 256 × (x, y, z, c as f64, last
+//!                                      as u16, consec as u8, step as i32), then started as u8
+//! repeated: "ROWS" u32 row0 u32 rows u64 n, n bytes
+//!                                      bucket rows row0.. of the grid: deflate of a bit per
+//!                                      bucket (empty or not), then the non-empty buckets'
+//!                                      alphas and colours as byte planes (see `compress`)
+//! "END\0" u32 chunk count              the end (a truncated file has none)
+//! ```
+//!
+//! The chunks tile the bucket rows in order, so a reader can fetch any band of rows without
+//! holding the whole histogram (renders in strips, merges of posters).
+
+use std::io::BufWriter;
+use std::path::Path;
+
+use crate::flame::chaos::LANES;
+use crate::flame::histogram::Histogram;
+use crate::flame::state::RenderState;
+use crate::io::diag::{Diagnostic, Pos};
+use crate::io::error::WriteError;
+
+mod chunk;
+mod read;
+mod write;
+
+#[cfg(test)]
+mod tests;
+
+pub use read::StateReader;
+pub use write::StateWriter;
+
+/// The file's first eight bytes.
+pub const MAGIC: &[u8; 8] = b"UGNISRS\x1a";
+/// The version this ugnis writes and reads.
+/// 2: colours in palette units (whole numbers for 8-bit palettes), stored as integers when
+/// whole. Version 1 held them in units of 1.0.
+pub const FORMAT_VERSION: u32 = 2;
+/// Rows per compressed chunk.
+pub const CHUNK_ROWS: usize = 32;
+/// Longest header accepted.
+const MAX_HEADER: u32 = 64 << 20;
+/// Most orbit sets accepted.
+const MAX_LANE_SETS: u32 = 4096;
+/// Bytes of one orbit set.
+const LANE_SET_BYTES: usize = LANES * (4 * 8 + 2 + 1 + 4) + 1;
+
+fn err(file: &str, pos: Pos, msg: impl Into<String>) -> Diagnostic {
+    Diagnostic::error(file, pos, "STATE001", msg)
+}
+
+fn io_err(file: &str, e: std::io::Error) -> Diagnostic {
+    if e.kind() == std::io::ErrorKind::UnexpectedEof {
+        err(
+            file,
+            Pos::File,
+            "the file ends early (truncated: was it still being written?)",
+        )
+    } else {
+        err(file, Pos::File, format!("cannot read: {e}"))
+    }
+}
+
+/// Check that a state's flame survives the trip through its XML (3-D IFS flames, for one, have
+/// no XML form).
+pub fn check_saveable(st: &RenderState) -> Result<(), WriteError> {
+    if st.flame.ifs3d.is_some() {
+        return Err(WriteError::Ifs3dState);
+    }
+    Ok(())
+}
+
+/// Save a whole state atomically.
+pub fn save(path: &Path, st: &RenderState, hist: &Histogram) -> std::io::Result<()> {
+    crate::io::atomic::write_atomic_with(path, |f| {
+        let mut w = StateWriter::new(BufWriter::new(f), st)?;
+        w.write_rows(&hist.data)?;
+        w.finish()?;
+        Ok(())
+    })
+}
