@@ -53,7 +53,7 @@ pub fn run(a: SceneArgs) -> Result<()> {
     super::check_output(&a.output)?;
     // The size is checked before the scene's textures are made (which takes a while).
     if let Some((w, h)) = a.size {
-        let max = ugnis::surface::raster::MAX_SIDE;
+        let max = ugnis::surface::MAX_SIDE;
         if w > max || h > max {
             bail!("--size {w}x{h}: a scene image is at most {max}x{max}");
         }
