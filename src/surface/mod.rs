@@ -18,6 +18,7 @@ mod renderer;
 mod resolution;
 pub mod scene;
 mod shading;
+mod spec;
 pub mod texture;
 pub mod transform;
 
@@ -30,5 +31,6 @@ pub use renderer::{
 };
 pub use resolution::MAX_TRIANGLES;
 pub use scene::{Camera, Geometry, Light, Material, Object, Projection, Renderer, Scene};
+pub use spec::{GeometrySpec, ObjectSpec, SceneSpec, TextureError, TextureKind, TextureSpec};
 pub use texture::Texture;
 pub use transform::Transform;
