@@ -29,6 +29,7 @@ pub(crate) struct Eye {
 
 impl Eye {
     /// View-space point → (x, y, z, w).
+    #[inline]
     pub(crate) fn clip(&self, p: DVec3) -> [f64; 4] {
         let v = self.view.apply(p);
         let w = match self.k {
@@ -38,6 +39,7 @@ impl Eye {
         [v.x + self.dx, v.y, v.z, w]
     }
 
+    #[inline]
     pub(crate) fn screen(&self, c: [f64; 4]) -> [f64; 3] {
         [
             self.cx + self.scale * c[0] / c[3],
@@ -48,6 +50,7 @@ impl Eye {
 
     /// The ray through screen point (px, py) in world space: origin, unit direction and the
     /// smallest t the z-buffer would draw (its near plane w ≥ 1e-3).
+    #[inline]
     pub(crate) fn ray(&self, px: f64, py: f64) -> (DVec3, DVec3, f64) {
         let sx = (px - self.cx) / self.scale;
         let sy = (self.cy - py) / self.scale;
@@ -66,6 +69,7 @@ impl Eye {
     }
 
     /// World-space size of one pixel at distance t along a ray (perspective grows with t).
+    #[inline]
     pub(crate) fn pixel_size(&self, t: f64) -> f64 {
         match self.k {
             Some(k) => t / (self.scale * k),

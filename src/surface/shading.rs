@@ -6,6 +6,7 @@ use glam::{DVec3, Vec3};
 use super::scene::{Scene, illuminate_visible};
 
 /// Blinn's perturbed normal n′ = N + [P_s (N × Q_t) + P_t (Q_s × N)]/|N| with N = Q_s × Q_t.
+#[inline]
 pub fn bump_normal(qs: DVec3, qt: DVec3, ps: f64, pt: f64) -> DVec3 {
     let n = qs.cross(qt);
     let len = n.length();
