@@ -1,7 +1,8 @@
 //! An L-system as written (axiom, productions, angle, interpretation flags) and the limits of
 //! what is derived and drawn from one.
 
-/// Symbols a derived string may have ([`Compiled::derive_string`](super::Compiled::derive_string)).
+/// Symbols a derived string may have
+/// ([`Compiled::derive_string`](super::Compiled::derive_string)).
 pub const MAX_STRING: f64 = 1e7;
 /// Symbols the turtle may visit when drawing (the string is never built).
 pub const MAX_DRAW_SYMBOLS: f64 = 5e8;
