@@ -193,27 +193,21 @@ fn huge_scenes_are_refused_before_tessellating() {
     let rev = ugnis::io::scene::parse(&text, "r.toml", &dir)
         .unwrap()
         .scene;
-    let est = ugnis::surface::raster::estimate_memory(&rev);
+    let est = ugnis::surface::estimate_memory(&rev);
+    assert!(est.triangles <= ugnis::surface::MAX_TRIANGLES, "{est:?}");
+    assert!(est.triangles > ugnis::surface::MAX_TRIANGLES / 2, "{est:?}");
     assert!(
-        est.triangles <= ugnis::surface::raster::MAX_TRIANGLES,
-        "{est:?}"
-    );
-    assert!(
-        est.triangles > ugnis::surface::raster::MAX_TRIANGLES / 2,
-        "{est:?}"
-    );
-    assert!(
-        ugnis::surface::raster::check(&rev, Some(1 << 30)).is_ok(),
+        ugnis::surface::check(&rev, Some(1 << 30)).is_ok(),
         "{est:?}"
     );
     // The estimate of a large but legal scene against a small budget.
     let mut sc = ugnis::io::scene::read(&jug).unwrap().scene;
-    let est = ugnis::surface::raster::estimate_memory(&sc);
+    let est = ugnis::surface::estimate_memory(&sc);
     assert!(est.triangles > 0 && est.total > est.pixels);
     sc.width = 16_000;
     sc.height = 16_000;
     sc.supersample = 4;
-    let e = ugnis::surface::raster::check(&sc, Some(1 << 30)).unwrap_err();
+    let e = ugnis::surface::check(&sc, Some(1 << 30)).unwrap_err();
     assert!(
         matches!(e, ugnis::surface::RenderError::OutOfMemory(_)),
         "{e}"

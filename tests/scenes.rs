@@ -48,7 +48,7 @@ fn silhouette_lies_inside_the_projected_control_nets() {
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for sp in p {
         for c in sp.patch.control_points() {
-            let q = ugnis::surface::raster::project(&s, s.objects[0].transform.apply(c)).unwrap();
+            let q = ugnis::surface::project(&s, s.objects[0].transform.apply(c)).unwrap();
             x0 = x0.min(q[0]);
             x1 = x1.max(q[0]);
             y0 = y0.min(q[1]);

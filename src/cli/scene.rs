@@ -53,41 +53,44 @@ pub fn run(a: SceneArgs) -> Result<()> {
     super::check_output(&a.output)?;
     // The size is checked before the scene's textures are made (which takes a while).
     if let Some((w, h)) = a.size {
-        let max = ugnis::surface::raster::MAX_SIDE;
+        let max = ugnis::surface::MAX_SIDE;
         if w > max || h > max {
             bail!("--size {w}x{h}: a scene image is at most {max}x{max}");
         }
     }
     let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
-        let mut loaded = io::scene::read(&a.file)?;
-        for w in &loaded.warnings {
+        let mut parsed = io::scene::read_spec(&a.file)?;
+        for w in &parsed.warnings {
             eprintln!("{w}");
         }
+        let scene = &mut parsed.spec.scene;
         if let Some((w, h)) = a.size {
-            loaded.scene.width = w;
-            loaded.scene.height = h;
+            scene.width = w;
+            scene.height = h;
         }
         if let Some(s) = a.supersample {
             if !(1..=4).contains(&s) {
                 bail!("--supersample {s} must be between 1 and 4");
             }
-            loaded.scene.supersample = s;
+            scene.supersample = s;
         }
         match a.render {
-            Some(RenderArg::Zbuffer) => loaded.scene.renderer = Renderer::ZBuffer,
-            Some(RenderArg::Raycast) => loaded.scene.renderer = Renderer::RayCast,
+            Some(RenderArg::Zbuffer) => scene.renderer = Renderer::ZBuffer,
+            Some(RenderArg::Raycast) => scene.renderer = Renderer::RayCast,
             None => {}
         }
         if let Some(sh) = a.shadows {
-            if loaded.scene.renderer != Renderer::RayCast {
+            if scene.renderer != Renderer::RayCast {
                 bail!("--shadows needs the ray caster (--render raycast or render = \"raycast\" in the scene)");
             }
-            loaded.scene.shadows = matches!(sh, OnOff::On);
+            scene.shadows = matches!(sh, OnOff::On);
         }
-        for n in &loaded.notes {
+        for n in &parsed.notes {
             println!("{n}");
         }
+        super::check_interrupted()?;
+        let loaded = parsed.build()?;
         super::check_interrupted()?;
         match ugnis::surface::try_render(&loaded.scene, Some(super::interrupt_flag())) {
             Ok(img) => Ok(img),

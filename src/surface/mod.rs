@@ -3,21 +3,34 @@
 //! with shadows as a second renderer; procedural fractal textures, midpoint-displacement
 //! mountains, the Menger sponge and ray-marched quaternion Julia sets.
 
+mod bounds;
 pub mod bvh;
+mod eye;
+mod frame;
+mod implicit;
 pub mod menger;
 pub mod mesh;
 pub mod patch;
 pub mod quaternion;
 pub mod raster;
 pub mod raycast;
+mod renderer;
+mod resolution;
 pub mod scene;
+mod shading;
+mod spec;
 pub mod texture;
 pub mod transform;
 
+pub use eye::project;
 pub use mesh::{Mesh, SurfacePatch, TexMap};
 pub use patch::Patch;
 pub use quaternion::{QuaternionJulia, SliceAxis};
-pub use raster::{RenderError, render, try_render};
+pub use renderer::{
+    MAX_SIDE, MemoryEstimate, RenderError, check, estimate_memory, render, try_render,
+};
+pub use resolution::MAX_TRIANGLES;
 pub use scene::{Camera, Geometry, Light, Material, Object, Projection, Renderer, Scene};
+pub use spec::{GeometrySpec, ObjectSpec, SceneSpec, TextureError, TextureKind, TextureSpec};
 pub use texture::Texture;
 pub use transform::Transform;

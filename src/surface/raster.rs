@@ -1,7 +1,7 @@
-//! The software renderer: adaptive tessellation, near-plane clipping,
-//! z-buffer with a top-left fill rule (larger z nearer), perspective-correct attributes,
-//! deferred per-pixel Phong shading with mipmapped textures and Blinn bump mapping, parallel
-//! bands of rows, optional supersampling, stereo pairs.
+//! The z-buffer renderer: adaptive tessellation, near-plane clipping, z-buffer with a top-left
+//! fill rule (larger z nearer), perspective-correct attributes, deferred per-pixel shading,
+//! parallel bands of rows; quaternion Julia objects are ray-marched per pixel and kept where
+//! nearer.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -9,92 +9,19 @@ use glam::{DVec3, Vec3};
 use image::RgbImage;
 use rayon::prelude::*;
 
-use super::mesh::SurfacePatch;
-use super::mesh::{Mesh, projected_extent, resolution_for, tessellate};
-use super::scene::{Geometry, Object, Projection, Renderer, Scene, illuminate_visible};
-use super::transform::Transform;
+use super::eye::Eye;
+use super::frame::picture;
+use super::implicit::{Implicit, implicit_objects};
+use super::mesh::{Mesh, tessellate};
+use super::resolution::resolutions;
+use super::scene::{Geometry, Scene};
+use super::shading::{SurfacePoint, shade};
 
 /// Attribute interpolated perspective-correctly: a/w and 1/w are affine in screen space.
 pub fn perspective_lerp(a0: f64, a1: f64, w0: f64, w1: f64, t: f64) -> f64 {
     let num = (1.0 - t) * a0 / w0 + t * a1 / w1;
     let den = (1.0 - t) / w0 + t / w1;
     num / den
-}
-
-/// Blinn's perturbed normal n′ = N + [P_s (N × Q_t) + P_t (Q_s × N)]/|N| with N = Q_s × Q_t.
-pub fn bump_normal(qs: DVec3, qt: DVec3, ps: f64, pt: f64) -> DVec3 {
-    let n = qs.cross(qt);
-    let len = n.length();
-    if len == 0.0 {
-        return n;
-    }
-    n + (n.cross(qt) * ps + qs.cross(n) * pt) / len
-}
-
-/// How one eye sees: world → view transform, projection and screen placement.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Eye {
-    pub(crate) view: Transform,
-    /// View → world (for rays).
-    pub(crate) world_from_view: Transform,
-    /// Horizontal shift of view space (stereo).
-    pub(crate) dx: f64,
-    /// Perspective distance k (None: parallel projection).
-    pub(crate) k: Option<f64>,
-    pub(crate) cx: f64,
-    pub(crate) cy: f64,
-    pub(crate) scale: f64,
-    /// Eye position in world space (lighting).
-    pub(crate) pos: DVec3,
-    /// View-space z where parallel rays start (in front of everything).
-    pub(crate) ray_z: f64,
-}
-
-impl Eye {
-    /// View-space point → (x, y, z, w).
-    pub(crate) fn clip(&self, p: DVec3) -> [f64; 4] {
-        let v = self.view.apply(p);
-        let w = match self.k {
-            Some(k) => 1.0 - v.z / k,
-            None => 1.0,
-        };
-        [v.x + self.dx, v.y, v.z, w]
-    }
-
-    pub(crate) fn screen(&self, c: [f64; 4]) -> [f64; 3] {
-        [
-            self.cx + self.scale * c[0] / c[3],
-            self.cy - self.scale * c[1] / c[3],
-            c[2] / c[3],
-        ]
-    }
-
-    /// The ray through screen point (px, py) in world space: origin, unit direction and the
-    /// smallest t the z-buffer would draw (its near plane w ≥ 1e-3).
-    pub(crate) fn ray(&self, px: f64, py: f64) -> (DVec3, DVec3, f64) {
-        let sx = (px - self.cx) / self.scale;
-        let sy = (self.cy - py) / self.scale;
-        // Perspective: x* = (x + dx)/w with w = 1 − z/k, so the points of the pixel are
-        // (−dx, 0, k) + λ·(sx, sy, −k) for λ = w > 0.
-        let (o, d) = match self.k {
-            Some(k) => (DVec3::new(-self.dx, 0.0, k), DVec3::new(sx, sy, -k)),
-            None => (DVec3::new(sx - self.dx, sy, self.ray_z), DVec3::NEG_Z),
-        };
-        let len = d.length();
-        let t_min = if self.k.is_some() { 1e-3 * len } else { 0.0 };
-        let ow = self.world_from_view.apply(o);
-        let dw = self.world_from_view.apply_dir(d / len);
-        let dl = dw.length();
-        (ow, dw / dl, t_min * dl)
-    }
-
-    /// World-space size of one pixel at distance t along a ray (perspective grows with t).
-    pub(crate) fn pixel_size(&self, t: f64) -> f64 {
-        match self.k {
-            Some(k) => t / (self.scale * k),
-            None => 1.0 / self.scale,
-        }
-    }
 }
 
 /// A vertex after clipping: clip coordinates and world-space attributes.
@@ -199,44 +126,6 @@ fn top_left(a: [f64; 3], b: [f64; 3], positive: bool) -> bool {
     }
 }
 
-/// Most triangles the patches of a scene are tessellated into (for one eye). Each object's
-/// grid follows its projected size (about 6 pixels a cell); when the sum would exceed this,
-/// every grid is coarsened by the same factor, so that memory and time stay bounded for
-/// scenes of thousands of patches, whose cells are then a few pixels larger.
-pub const MAX_TRIANGLES: u64 = 1_500_000;
-
-/// The tessellation grid of every object for one eye (0 for meshes), within
-/// [`MAX_TRIANGLES`].
-pub(crate) fn resolutions(scene: &Scene, eye: &Eye) -> Vec<usize> {
-    let mut n: Vec<usize> = scene
-        .objects
-        .iter()
-        .map(|o| match &o.geometry {
-            Geometry::Patches(p) => patch_resolution(o, p, eye),
-            Geometry::Mesh(_) | Geometry::QuaternionJulia(_) => 0,
-        })
-        .collect();
-    let patch_triangles = |n: &[usize]| -> u64 {
-        scene
-            .objects
-            .iter()
-            .zip(n)
-            .map(|(o, &k)| match &o.geometry {
-                Geometry::Patches(p) => p.len() as u64 * 2 * (k * k) as u64,
-                Geometry::Mesh(_) | Geometry::QuaternionJulia(_) => 0,
-            })
-            .sum()
-    };
-    let total = patch_triangles(&n);
-    if total > MAX_TRIANGLES {
-        let k = (MAX_TRIANGLES as f64 / total as f64).sqrt();
-        for v in n.iter_mut().filter(|v| **v > 0) {
-            *v = ((*v as f64 * k).floor() as usize).max(1);
-        }
-    }
-    n
-}
-
 /// World-space meshes of all objects for one eye (tessellation adapted to projected size).
 fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
     let n = resolutions(scene, eye);
@@ -253,83 +142,6 @@ fn build_meshes(scene: &Scene, eye: &Eye) -> Vec<Mesh> {
         .collect()
 }
 
-/// Tessellation grid of an object's patches for one eye: about 6 pixels per cell.
-pub(crate) fn patch_resolution(o: &Object, p: &[SurfacePatch], eye: &Eye) -> usize {
-    let to_screen = |q: DVec3| {
-        let c = eye.clip(o.transform.apply(q));
-        (c[3] > 1e-3).then(|| {
-            let s = eye.screen(c);
-            [s[0], s[1]]
-        })
-    };
-    resolution_for(projected_extent(p, to_screen))
-}
-
-/// A visible surface point, ready for shading (both renderers).
-pub(crate) struct SurfacePoint {
-    pub(crate) object: usize,
-    pub(crate) pos: DVec3,
-    pub(crate) normal: DVec3,
-    pub(crate) st: [f64; 2],
-    /// Largest change of (s, t) per pixel (mipmap level).
-    pub(crate) footprint: f32,
-    /// Texture tangents ∂P/∂s and ∂P/∂t (zero: no bump mapping).
-    pub(crate) ts: DVec3,
-    pub(crate) tt: DVec3,
-}
-
-/// Texture, Blinn bump mapping and the lighting model at one surface point; `visible(j)`
-/// says whether light j reaches it (shadows).
-pub(crate) fn shade(
-    scene: &Scene,
-    eye_pos: DVec3,
-    p: &SurfacePoint,
-    visible: &dyn Fn(usize) -> bool,
-) -> Vec3 {
-    let obj = &scene.objects[p.object];
-    let st = p.st;
-    let mut normal = p.normal;
-    let tex = obj
-        .texture
-        .and_then(|i| scene.textures.get(i))
-        .map_or(Vec3::ONE, |tx| {
-            tx.sample(st[0] as f32, st[1] as f32, p.footprint)
-        });
-    if obj.material.bump != 0.0
-        && let Some(bt) = obj
-            .bump_texture
-            .or(obj.texture)
-            .and_then(|i| scene.textures.get(i))
-    {
-        let (ds, dt) = bt.texel_step();
-        let (s0, t0) = (st[0] as f32, st[1] as f32);
-        let ps = (bt.height(s0 + ds, t0) - bt.height(s0 - ds, t0)) as f64 / (2.0 * ds as f64);
-        let pt = (bt.height(s0, t0 + dt) - bt.height(s0, t0 - dt)) as f64 / (2.0 * dt as f64);
-        let (qs, qt) = (p.ts, p.tt);
-        let mut nb = bump_normal(qs, qt, ps * obj.material.bump, pt * obj.material.bump);
-        let n0 = qs.cross(qt);
-        if n0.dot(normal) < 0.0 {
-            // The tangent frame is left-handed relative to the shading normal.
-            nb = -bump_normal(qt, qs, pt * obj.material.bump, ps * obj.material.bump);
-        }
-        if nb.length_squared() > 0.0 {
-            normal = nb;
-        }
-    }
-    illuminate_visible(
-        &obj.material,
-        tex,
-        normal,
-        p.pos,
-        eye_pos,
-        &scene.lights,
-        scene.ambient,
-        scene.attenuation_k,
-        scene.blinn,
-        visible,
-    )
-}
-
 /// Bytes per tessellated vertex while rendering: the mesh (position, normal, texture
 /// coordinates, tangents) and its transformed copy, the clipped vertex array (with the copy
 /// made while it is filled) and the screen positions.
@@ -338,152 +150,17 @@ const BYTES_PER_VERTEX: u64 = 2 * (24 + 24 + 8 + 48) + 2 * std::mem::size_of::<V
 /// growing vector) and its entries in the row bins.
 const BYTES_PER_TRIANGLE: u64 = 12 + 3 * std::mem::size_of::<Tri>() as u64 / 2 + 16;
 
-/// Memory a scene render needs, part by part, estimated before tessellating.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct MemoryEstimate {
-    /// Vertices and triangles after tessellation (all eyes).
-    pub vertices: u64,
-    pub triangles: u64,
-    /// Meshes, clipped vertices, screen triangles and their bins.
-    pub geometry: u64,
-    /// Colour buffers at the supersampled size and the output image.
-    pub pixels: u64,
-    pub total: u64,
+/// Bytes of the z-buffer's geometry for a tessellation of `vertices` and `triangles`.
+pub(crate) fn geometry_bytes(vertices: u64, triangles: u64) -> u64 {
+    vertices
+        .saturating_mul(BYTES_PER_VERTEX)
+        .saturating_add(triangles.saturating_mul(BYTES_PER_TRIANGLE))
 }
 
-/// The pixel size a scene renders at (supersampled), and the eyes with their widths.
-fn eyes(scene: &Scene) -> (usize, usize, Vec<(Eye, usize)>) {
-    let ss = scene.supersample.clamp(1, 4) as usize;
-    let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
-    let eyes = if let Projection::Stereo = scene.camera.projection {
-        let half = w / 2;
-        let k = scene.camera.distance;
-        vec![
-            (eye_for(scene, half, h, k / 20.0), half),
-            (eye_for(scene, half, h, -k / 20.0), half),
-        ]
-    } else {
-        vec![(eye_for(scene, w, h, 0.0), w)]
-    };
-    (w, h, eyes)
-}
-
-/// Estimate the memory of a render (the textures, already made, are not counted): the
-/// tessellation the renderer will choose, every triangle visible, colour buffers per eye.
-pub fn estimate_memory(scene: &Scene) -> MemoryEstimate {
-    let (w, h, eyes) = eyes(scene);
-    // Eyes render one after the other: the larger tessellation counts.
-    let (mut vertices, mut triangles) = (0u64, 0u64);
-    for (eye, _) in &eyes {
-        let (mut v, mut t) = (0u64, 0u64);
-        for (o, k) in scene.objects.iter().zip(resolutions(scene, eye)) {
-            let (dv, dt) = match &o.geometry {
-                Geometry::Patches(p) => {
-                    let n = k.max(1) as u64;
-                    (
-                        p.len() as u64 * (n + 1) * (n + 1),
-                        p.len() as u64 * 2 * n * n,
-                    )
-                }
-                Geometry::Mesh(m) => (m.positions.len() as u64, m.triangles.len() as u64),
-                // Ray-marched per pixel: no geometry.
-                Geometry::QuaternionJulia(_) => (0, 0),
-            };
-            v = v.saturating_add(dv);
-            t = t.saturating_add(dt);
-        }
-        vertices = vertices.max(v);
-        triangles = triangles.max(t);
-    }
-    let geometry = match scene.renderer {
-        Renderer::ZBuffer => vertices
-            .saturating_mul(BYTES_PER_VERTEX)
-            .saturating_add(triangles.saturating_mul(BYTES_PER_TRIANGLE)),
-        // The ray caster keeps the world meshes, a bounding volume hierarchy and one
-        // reference (16 bytes) per triangle.
-        Renderer::RayCast => vertices
-            .saturating_mul(104)
-            .saturating_add(super::bvh::bytes_for(triangles as usize) as u64)
-            .saturating_add(triangles.saturating_mul(16)),
-    };
-    let px = (w * h) as u64;
-    let colour = std::mem::size_of::<Vec3>() as u64;
-    // A stereo pair keeps the left picture while the right one is made, then joins them.
-    let pixels = px * colour * if eyes.len() > 1 { 2 } else { 1 }
-        + (scene.width as u64 * scene.height as u64) * 3 * 2;
-    MemoryEstimate {
-        vertices,
-        triangles,
-        geometry,
-        pixels,
-        total: geometry.saturating_add(pixels),
-    }
-}
-
-/// Largest scene image side.
-pub const MAX_SIDE: u32 = 16_384;
-
-/// Why a scene cannot be rendered.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub enum RenderError {
-    #[error("{0}")]
-    Settings(String),
-    #[error(transparent)]
-    OutOfMemory(#[from] crate::memory::MemoryError),
-    #[error("rendering was cancelled")]
-    Cancelled,
-}
-
-/// Check a scene's size and memory before rendering it (`configured`: a memory limit instead
-/// of the system's budget).
-pub fn check(scene: &Scene, configured: Option<u64>) -> Result<MemoryEstimate, RenderError> {
-    let (w, h) = (scene.width, scene.height);
-    if w == 0 || h == 0 || w > MAX_SIDE || h > MAX_SIDE {
-        return Err(RenderError::Settings(format!(
-            "image size {w}x{h} must be between 1x1 and {MAX_SIDE}x{MAX_SIDE}"
-        )));
-    }
-    if !(1..=4).contains(&scene.supersample) {
-        return Err(RenderError::Settings(format!(
-            "supersample {} must be between 1 and 4",
-            scene.supersample
-        )));
-    }
-    if let Projection::Stereo = scene.camera.projection
-        && w < 2
-    {
-        return Err(RenderError::Settings(format!(
-            "a stereo pair puts two pictures side by side: the width ({w}) must be at least 2"
-        )));
-    }
-    let est = estimate_memory(scene);
-    crate::memory::check(
-        est.total,
-        configured,
-        || {
-            format!(
-                "a {w}×{h} scene at supersample {} with {} object{} ({} triangles)",
-                scene.supersample,
-                scene.objects.len(),
-                if scene.objects.len() == 1 { "" } else { "s" },
-                est.triangles
-            )
-        },
-        || {
-            let mut h = String::from("reduce the image size");
-            if scene.supersample > 1 {
-                h.push_str(&format!(" or the supersample ({})", scene.supersample));
-            }
-            h.push_str(", or use fewer objects or profile segments");
-            h
-        },
-    )?;
-    Ok(est)
-}
-
+/// Rows per band: the unit of parallel work, with its own depth buffer.
 const BAND: usize = 16;
 
-/// Render one eye into a w×h buffer (linear RGB).
+/// Render one eye into a w×h buffer (linear RGB); None when cancelled.
 fn render_eye(
     scene: &Scene,
     eye: &Eye,
@@ -492,10 +169,50 @@ fn render_eye(
     cancel: Option<&AtomicBool>,
 ) -> Option<Vec<Vec3>> {
     let meshes = build_meshes(scene, eye);
-    // Shared vertex array: every mesh's vertices, then the vertices made by clipping.
+    let (mut verts, bases) = clip_vertices(&meshes, eye);
+    let screen: Vec<[f64; 3]> = verts.par_iter().map(|v| eye.screen(v.c)).collect();
+    let mut tris = visible_triangles(&meshes, &verts, &screen, &bases, w, h);
+    let extra = clip_crossing(&meshes, &verts, &bases, eye, w, h, &mut tris);
+    verts.extend(extra);
+    let bins = bin_rows(&tris, h);
+    let implicit = implicit_objects(scene);
+    let mut eye = *eye;
+    if !implicit.is_empty() {
+        eye.place_ray_start(scene);
+    }
+    let frame = Frame {
+        scene,
+        eye: &eye,
+        w,
+        tris: &tris,
+        verts: &verts,
+        implicit: &implicit,
+    };
+    let mut color = vec![scene.background; w * h];
+    let stopped = AtomicBool::new(false);
+    color
+        .par_chunks_mut(w * BAND)
+        .zip(bins.par_iter())
+        .enumerate()
+        .for_each(|(b, (out, bin))| {
+            if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
+                stopped.store(true, Ordering::Relaxed);
+                return;
+            }
+            frame.band(b * BAND, out, bin);
+        });
+    if stopped.load(Ordering::Relaxed) {
+        return None;
+    }
+    Some(color)
+}
+
+/// The shared vertex array of all meshes in clip coordinates, and where each mesh's vertices
+/// start in it.
+fn clip_vertices(meshes: &[Mesh], eye: &Eye) -> (Vec<Vert>, Vec<u32>) {
     let mut verts: Vec<Vert> = Vec::with_capacity(meshes.iter().map(|m| m.positions.len()).sum());
     let mut bases = Vec::with_capacity(meshes.len());
-    for m in &meshes {
+    for m in meshes {
         bases.push(verts.len() as u32);
         verts.par_extend((0..m.positions.len()).into_par_iter().map(|i| Vert {
             c: eye.clip(m.positions[i]),
@@ -506,69 +223,101 @@ fn render_eye(
             tt: m.tangents.get(i).map_or(DVec3::Y, |t| t.1),
         }));
     }
-    let screen: Vec<[f64; 3]> = verts.par_iter().map(|v| eye.screen(v.c)).collect();
-    let make_tri = |idx: [u32; 3], s: [[f64; 3]; 3], object: u32, vv: [&Vert; 3]| -> Option<Tri> {
-        let area = edge(s[0], s[1], s[2][0], s[2][1]);
-        if area == 0.0 || !area.is_finite() {
-            return None;
-        }
-        let ymin = s.iter().map(|p| p[1]).fold(f64::MAX, f64::min);
-        let ymax = s.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
-        let xmin = s.iter().map(|p| p[0]).fold(f64::MAX, f64::min);
-        let xmax = s.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
-        if ymax < 0.0 || ymin > h as f64 || xmax < 0.0 || xmin > w as f64 {
-            return None;
-        }
-        let pos = area > 0.0;
-        let sg = if pos { 1.0 } else { -1.0 };
-        let e = [
-            edge_eq(s[1], s[2]),
-            edge_eq(s[2], s[0]),
-            edge_eq(s[0], s[1]),
-        ]
-        .map(|q| q.map(|v| v * sg));
-        let on_edge = [
-            top_left(s[1], s[2], pos),
-            top_left(s[2], s[0], pos),
-            top_left(s[0], s[1], pos),
-        ];
-        let c = [
-            (s[0][0] + s[1][0] + s[2][0]) / 3.0,
-            (s[0][1] + s[1][1] + s[2][1]) / 3.0,
-        ];
-        let mut t = Tri {
-            idx,
-            s,
-            e,
-            on_edge,
-            inv_area: 1.0 / area.abs(),
-            object,
-            footprint: 0.0,
-            y0: (ymin - 0.5).ceil().max(0.0) as i64,
-            y1: ((ymax - 0.5).floor() as i64).min(h as i64 - 1),
-        };
-        t.footprint = footprint(&t, vv, c) as f32;
-        Some(t)
+    (verts, bases)
+}
+
+/// The screen triangle of vertices `idx` at screen points `s`, with its edge equations, rows
+/// and texture footprint; None when degenerate or outside the w×h picture.
+fn screen_triangle(
+    idx: [u32; 3],
+    s: [[f64; 3]; 3],
+    object: u32,
+    vv: [&Vert; 3],
+    w: usize,
+    h: usize,
+) -> Option<Tri> {
+    let area = edge(s[0], s[1], s[2][0], s[2][1]);
+    if area == 0.0 || !area.is_finite() {
+        return None;
+    }
+    let ymin = s.iter().map(|p| p[1]).fold(f64::MAX, f64::min);
+    let ymax = s.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
+    let xmin = s.iter().map(|p| p[0]).fold(f64::MAX, f64::min);
+    let xmax = s.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
+    if ymax < 0.0 || ymin > h as f64 || xmax < 0.0 || xmin > w as f64 {
+        return None;
+    }
+    let pos = area > 0.0;
+    let sg = if pos { 1.0 } else { -1.0 };
+    let e = [
+        edge_eq(s[1], s[2]),
+        edge_eq(s[2], s[0]),
+        edge_eq(s[0], s[1]),
+    ]
+    .map(|q| q.map(|v| v * sg));
+    let on_edge = [
+        top_left(s[1], s[2], pos),
+        top_left(s[2], s[0], pos),
+        top_left(s[0], s[1], pos),
+    ];
+    let c = [
+        (s[0][0] + s[1][0] + s[2][0]) / 3.0,
+        (s[0][1] + s[1][1] + s[2][1]) / 3.0,
+    ];
+    let mut t = Tri {
+        idx,
+        s,
+        e,
+        on_edge,
+        inv_area: 1.0 / area.abs(),
+        object,
+        footprint: 0.0,
+        y0: (ymin - 0.5).ceil().max(0.0) as i64,
+        y1: ((ymax - 0.5).floor() as i64).min(h as i64 - 1),
     };
-    let mut extra: Vec<Vert> = Vec::new();
-    let (vref, sref, bref, mk) = (&verts, &screen, &bases, &make_tri);
-    let mut tris: Vec<Tri> = meshes
+    t.footprint = footprint(&t, vv, c) as f32;
+    Some(t)
+}
+
+/// The screen triangles of every mesh triangle wholly in front of the near plane.
+fn visible_triangles(
+    meshes: &[Mesh],
+    verts: &[Vert],
+    screen: &[[f64; 3]],
+    bases: &[u32],
+    w: usize,
+    h: usize,
+) -> Vec<Tri> {
+    meshes
         .par_iter()
         .enumerate()
         .flat_map_iter(|(oi, m)| {
-            let base = bref[oi];
+            let base = bases[oi];
             m.triangles.iter().filter_map(move |t| {
                 let idx = t.map(|i| i + base);
-                let vv = idx.map(|i| &vref[i as usize]);
+                let vv = idx.map(|i| &verts[i as usize]);
                 if vv.iter().all(|v| v.c[3] >= 1e-3) {
-                    mk(idx, idx.map(|i| sref[i as usize]), oi as u32, vv)
+                    screen_triangle(idx, idx.map(|i| screen[i as usize]), oi as u32, vv, w, h)
                 } else {
                     None
                 }
             })
         })
-        .collect();
-    // Triangles crossing the near plane: clip (rare; sequential).
+        .collect()
+}
+
+/// Triangles crossing the near plane: clipped (rare; sequential), their pieces added to
+/// `tris`. Returns the vertices made by clipping, which follow `verts`.
+fn clip_crossing(
+    meshes: &[Mesh],
+    verts: &[Vert],
+    bases: &[u32],
+    eye: &Eye,
+    w: usize,
+    h: usize,
+    tris: &mut Vec<Tri>,
+) -> Vec<Vert> {
+    let mut extra: Vec<Vert> = Vec::new();
     for (oi, m) in meshes.iter().enumerate() {
         let base = bases[oi];
         for t in &m.triangles {
@@ -582,11 +331,13 @@ fn render_eye(
                 let first = (verts.len() + extra.len()) as u32;
                 let tri_v = [clipped[0], clipped[k], clipped[k + 1]];
                 let s3 = tri_v.map(|v| eye.screen(v.c));
-                if let Some(t) = make_tri(
+                if let Some(t) = screen_triangle(
                     [first, first + 1, first + 2],
                     s3,
                     oi as u32,
                     [&tri_v[0], &tri_v[1], &tri_v[2]],
+                    w,
+                    h,
                 ) {
                     extra.extend(tri_v);
                     tris.push(t);
@@ -594,8 +345,11 @@ fn render_eye(
             }
         }
     }
-    verts.extend(extra);
-    // Bin triangles into bands of rows.
+    extra
+}
+
+/// The triangles of every band of rows, by index.
+fn bin_rows(tris: &[Tri], h: usize) -> Vec<Vec<u32>> {
     let nb = h.div_ceil(BAND);
     let mut bins: Vec<Vec<u32>> = vec![Vec::new(); nb];
     for (i, t) in tris.iter().enumerate() {
@@ -607,137 +361,168 @@ fn render_eye(
             bin.push(i as u32);
         }
     }
-    let implicit = super::raycast::implicit_objects(scene);
-    let mut eye = *eye;
-    if !implicit.is_empty() {
-        eye.place_ray_start(scene);
-    }
-    let eye = &eye;
-    let mut color = vec![scene.background; w * h];
-    let stopped = AtomicBool::new(false);
-    color
-        .par_chunks_mut(w * BAND)
-        .zip(bins.par_iter())
-        .enumerate()
-        .for_each(|(b, (out, bin))| {
-            if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
-                stopped.store(true, Ordering::Relaxed);
-                return;
+    bins
+}
+
+/// What every band of rows reads: the scene, the eye, the picture width, the screen triangles
+/// with their vertices and the ray-marched objects.
+struct Frame<'a> {
+    scene: &'a Scene,
+    eye: &'a Eye,
+    w: usize,
+    tris: &'a [Tri],
+    verts: &'a [Vert],
+    implicit: &'a [Implicit],
+}
+
+/// No triangle: the background, or a ray-marched object.
+const NO_TRIANGLE: u32 = u32::MAX;
+
+impl Frame<'_> {
+    /// Render the rows from `y_base` into `out` (whole rows): the band's triangles `bin` by
+    /// depth, the ray-marched objects where nearer, then each visible pixel shaded once.
+    fn band(&self, y_base: usize, out: &mut [Vec3], bin: &[u32]) {
+        let w = self.w;
+        let rows = out.len() / w;
+        // Visibility pass: depth, triangle and barycentrics per pixel.
+        let mut depth = vec![f64::NEG_INFINITY; w * rows];
+        let mut hit = vec![(NO_TRIANGLE, 0.0f64, 0.0f64); w * rows];
+        for &ti in bin {
+            self.rasterise(ti, y_base, rows, &mut depth, &mut hit);
+        }
+        // Quaternion Julia objects: ray-marched per pixel, kept where nearer.
+        let mut marched: Vec<(u32, f64)> = Vec::new();
+        if !self.implicit.is_empty() {
+            marched = self.march(y_base, rows, &mut depth, &mut hit);
+        }
+        // Shading pass: each visible pixel once.
+        for (k, &(ti, b1, b2)) in hit.iter().enumerate() {
+            if let Some(&(ii, t)) = marched.get(k).filter(|m| m.0 != u32::MAX) {
+                let (x, r) = (k % w, k / w);
+                let (o, d, _) = self.eye.ray(x as f64 + 0.5, (y_base + r) as f64 + 0.5);
+                let (p, _) = self.implicit[ii as usize].surface_point(o, d, t, self.eye);
+                out[k] = shade(self.scene, self.eye.pos, &p, &|_| true);
+                continue;
             }
-            let rows = out.len() / w;
-            let y_base = b * BAND;
-            // Visibility pass: depth, triangle and barycentrics per pixel.
-            let mut depth = vec![f64::NEG_INFINITY; w * rows];
-            let mut hit = vec![(u32::MAX, 0.0f64, 0.0f64); w * rows];
-            for &ti in bin {
-                let t = &tris[ti as usize];
-                let s = t.s;
-                let xmin = s.iter().map(|p| p[0]).fold(f64::MAX, f64::min);
-                let xmax = s.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
-                let x0 = (xmin - 0.5).ceil().max(0.0) as usize;
-                let x1 = ((xmax - 0.5).floor() as i64).min(w as i64 - 1);
-                if x1 < x0 as i64 {
+            if ti == NO_TRIANGLE {
+                continue;
+            }
+            let p = self.surface_point(&self.tris[ti as usize], b1, b2);
+            out[k] = shade(self.scene, self.eye.pos, &p, &|_| true);
+        }
+    }
+
+    /// Draw triangle `ti` into the band's depth buffer: each covered pixel centre (top-left
+    /// rule on shared edges) keeps the nearest triangle and its barycentrics.
+    fn rasterise(
+        &self,
+        ti: u32,
+        y_base: usize,
+        rows: usize,
+        depth: &mut [f64],
+        hit: &mut [(u32, f64, f64)],
+    ) {
+        let w = self.w;
+        let t = &self.tris[ti as usize];
+        let s = t.s;
+        let xmin = s.iter().map(|p| p[0]).fold(f64::MAX, f64::min);
+        let xmax = s.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
+        let x0 = (xmin - 0.5).ceil().max(0.0) as usize;
+        let x1 = ((xmax - 0.5).floor() as i64).min(w as i64 - 1);
+        if x1 < x0 as i64 {
+            return;
+        }
+        let ya = t.y0.max(y_base as i64);
+        let yb = t.y1.min((y_base + rows) as i64 - 1);
+        let [e0, e1, e2] = t.e;
+        for y in ya..=yb {
+            let py = y as f64 + 0.5;
+            let row = (y as usize - y_base) * w;
+            for x in x0..=x1 as usize {
+                let px = x as f64 + 0.5;
+                let v0 = e0[0] * px + e0[1] * py + e0[2];
+                let v1 = e1[0] * px + e1[1] * py + e1[2];
+                let v2 = e2[0] * px + e2[1] * py + e2[2];
+                if v0 < 0.0 || v1 < 0.0 || v2 < 0.0 {
                     continue;
                 }
-                let ya = t.y0.max(y_base as i64);
-                let yb = t.y1.min((y_base + rows) as i64 - 1);
-                let [e0, e1, e2] = t.e;
-                for y in ya..=yb {
-                    let py = y as f64 + 0.5;
-                    let row = (y as usize - y_base) * w;
-                    for x in x0..=x1 as usize {
-                        let px = x as f64 + 0.5;
-                        let v0 = e0[0] * px + e0[1] * py + e0[2];
-                        let v1 = e1[0] * px + e1[1] * py + e1[2];
-                        let v2 = e2[0] * px + e2[1] * py + e2[2];
-                        if v0 < 0.0 || v1 < 0.0 || v2 < 0.0 {
-                            continue;
-                        }
-                        if (v0 == 0.0 && !t.on_edge[0])
-                            || (v1 == 0.0 && !t.on_edge[1])
-                            || (v2 == 0.0 && !t.on_edge[2])
-                        {
-                            continue;
-                        }
-                        let (b0, b1, b2) = (v0 * t.inv_area, v1 * t.inv_area, v2 * t.inv_area);
-                        // z* = z/w is affine in screen space.
-                        let z = b0 * s[0][2] + b1 * s[1][2] + b2 * s[2][2];
-                        let k = row + x;
-                        if z > depth[k] {
-                            depth[k] = z;
-                            hit[k] = (ti, b1, b2);
-                        }
+                if (v0 == 0.0 && !t.on_edge[0])
+                    || (v1 == 0.0 && !t.on_edge[1])
+                    || (v2 == 0.0 && !t.on_edge[2])
+                {
+                    continue;
+                }
+                let (b0, b1, b2) = (v0 * t.inv_area, v1 * t.inv_area, v2 * t.inv_area);
+                // z* = z/w is affine in screen space.
+                let z = b0 * s[0][2] + b1 * s[1][2] + b2 * s[2][2];
+                let k = row + x;
+                if z > depth[k] {
+                    depth[k] = z;
+                    hit[k] = (ti, b1, b2);
+                }
+            }
+        }
+    }
+
+    /// March every pixel's ray into the quaternion Julia objects: per pixel (object, ray
+    /// parameter) where one is nearer than the triangles (`u32::MAX`: none).
+    fn march(
+        &self,
+        y_base: usize,
+        rows: usize,
+        depth: &mut [f64],
+        hit: &mut [(u32, f64, f64)],
+    ) -> Vec<(u32, f64)> {
+        let (w, eye) = (self.w, self.eye);
+        let mut marched = vec![(u32::MAX, 0.0); w * rows];
+        for r in 0..rows {
+            let py = (y_base + r) as f64 + 0.5;
+            for x in 0..w {
+                let (o, d, t_min) = eye.ray(x as f64 + 0.5, py);
+                let k = r * w + x;
+                for (ii, im) in self.implicit.iter().enumerate() {
+                    let Some(t) = im.hit(o, d, t_min, f64::INFINITY, eye) else {
+                        continue;
+                    };
+                    let c = eye.clip(o + d * t);
+                    let z = c[2] / c[3];
+                    if z > depth[k] {
+                        depth[k] = z;
+                        hit[k].0 = NO_TRIANGLE;
+                        marched[k] = (ii as u32, t);
                     }
                 }
             }
-            // Quaternion Julia objects: ray-marched per pixel, kept where nearer.
-            let mut marched: Vec<(u32, f64)> = Vec::new();
-            if !implicit.is_empty() {
-                marched = vec![(u32::MAX, 0.0); w * rows];
-                for r in 0..rows {
-                    let py = (y_base + r) as f64 + 0.5;
-                    for x in 0..w {
-                        let (o, d, t_min) = eye.ray(x as f64 + 0.5, py);
-                        let k = r * w + x;
-                        for (ii, im) in implicit.iter().enumerate() {
-                            let Some(t) = im.hit(o, d, t_min, f64::INFINITY, eye) else {
-                                continue;
-                            };
-                            let c = eye.clip(o + d * t);
-                            let z = c[2] / c[3];
-                            if z > depth[k] {
-                                depth[k] = z;
-                                hit[k].0 = u32::MAX;
-                                marched[k] = (ii as u32, t);
-                            }
-                        }
-                    }
-                }
-            }
-            // Shading pass: each visible pixel once.
-            for (k, &(ti, b1, b2)) in hit.iter().enumerate() {
-                if let Some(&(ii, t)) = marched.get(k).filter(|m| m.0 != u32::MAX) {
-                    let (x, r) = (k % w, k / w);
-                    let (o, d, _) = eye.ray(x as f64 + 0.5, (y_base + r) as f64 + 0.5);
-                    let (p, _) = implicit[ii as usize].surface_point(o, d, t, eye);
-                    out[k] = shade(scene, eye.pos, &p, &|_| true);
-                    continue;
-                }
-                if ti == u32::MAX {
-                    continue;
-                }
-                let t = &tris[ti as usize];
-                let v = t.idx.map(|i| &verts[i as usize]);
-                let b0 = 1.0 - b1 - b2;
-                // Perspective-correct weights.
-                let iw = [b0 / v[0].c[3], b1 / v[1].c[3], b2 / v[2].c[3]];
-                let sum = iw[0] + iw[1] + iw[2];
-                let wt = [iw[0] / sum, iw[1] / sum, iw[2] / sum];
-                let mix3 = |f: &dyn Fn(&Vert) -> DVec3| {
-                    f(v[0]) * wt[0] + f(v[1]) * wt[1] + f(v[2]) * wt[2]
-                };
-                let pos = mix3(&|v| v.pos);
-                let normal = mix3(&|v| v.normal);
-                let st = [
-                    v[0].tex[0] * wt[0] + v[1].tex[0] * wt[1] + v[2].tex[0] * wt[2],
-                    v[0].tex[1] * wt[0] + v[1].tex[1] * wt[1] + v[2].tex[1] * wt[2],
-                ];
-                let p = SurfacePoint {
-                    object: t.object as usize,
-                    pos,
-                    normal,
-                    st,
-                    footprint: t.footprint,
-                    ts: mix3(&|v| v.ts),
-                    tt: mix3(&|v| v.tt),
-                };
-                out[k] = shade(scene, eye.pos, &p, &|_| true);
-            }
-        });
-    if stopped.load(Ordering::Relaxed) {
-        return None;
+        }
+        marched
     }
-    Some(color)
+
+    /// The surface point at barycentrics (b1, b2) of a screen triangle, its attributes
+    /// interpolated perspective-correctly.
+    fn surface_point(&self, t: &Tri, b1: f64, b2: f64) -> SurfacePoint {
+        let v = t.idx.map(|i| &self.verts[i as usize]);
+        let b0 = 1.0 - b1 - b2;
+        // Perspective-correct weights.
+        let iw = [b0 / v[0].c[3], b1 / v[1].c[3], b2 / v[2].c[3]];
+        let sum = iw[0] + iw[1] + iw[2];
+        let wt = [iw[0] / sum, iw[1] / sum, iw[2] / sum];
+        let mix3 = |f: &dyn Fn(&Vert) -> DVec3| f(v[0]) * wt[0] + f(v[1]) * wt[1] + f(v[2]) * wt[2];
+        let pos = mix3(&|v| v.pos);
+        let normal = mix3(&|v| v.normal);
+        let st = [
+            v[0].tex[0] * wt[0] + v[1].tex[0] * wt[1] + v[2].tex[0] * wt[2],
+            v[0].tex[1] * wt[0] + v[1].tex[1] * wt[1] + v[2].tex[1] * wt[2],
+        ];
+        SurfacePoint {
+            object: t.object as usize,
+            pos,
+            normal,
+            st,
+            footprint: t.footprint,
+            ts: mix3(&|v| v.ts),
+            tt: mix3(&|v| v.tt),
+        }
+    }
 }
 
 /// Largest change of (s, t) per pixel at screen point p (perspective-correct derivative),
@@ -767,175 +552,25 @@ fn footprint(t: &Tri, v: [&Vert; 3], p: [f64; 2]) -> f64 {
     fx.max(fy)
 }
 
-pub(crate) fn eye_for(scene: &Scene, w: usize, h: usize, dx: f64) -> Eye {
-    let cam = &scene.camera;
-    let scale = cam.scale * h as f64 / 480.0;
-    let (view, k) = match cam.projection {
-        Projection::Perspective | Projection::Stereo => (cam.view(), Some(cam.distance)),
-        Projection::Orthographic => (cam.view(), None),
-        Projection::Axonometric { phi, theta } => (
-            Transform::translate(-cam.target.x, -cam.target.y, -cam.target.z)
-                .then(&Transform::axonometric(phi, theta)),
-            None,
-        ),
-    };
-    let world_from_view = view.inverse().unwrap_or(Transform::IDENTITY);
-    Eye {
-        view,
-        world_from_view,
-        dx,
-        k,
-        cx: w as f64 / 2.0,
-        cy: h as f64 / 2.0,
-        scale,
-        pos: cam.eye(),
-        ray_z: cam.distance,
-    }
-}
-
-impl Eye {
-    /// Let parallel rays start in front of every object's bounding sphere (perspective rays
-    /// start at the eye and need nothing).
-    pub(crate) fn place_ray_start(&mut self, scene: &Scene) {
-        if self.k.is_some() {
-            return;
-        }
-        let mut z = scene.camera.distance;
-        for o in &scene.objects {
-            if let Some((c, r)) = super::raycast::world_sphere(o) {
-                z = z.max(self.view.apply(c).z + r);
-            }
-        }
-        self.ray_z = z + 1.0;
-    }
-}
-
-pub(crate) fn to_image(buf: &[Vec3], w: usize, h: usize, ss: usize) -> RgbImage {
-    let (ow, oh) = (w / ss, h / ss);
-    let mut img = RgbImage::new(ow as u32, oh as u32);
-    let n = (ss * ss) as f32;
-    for y in 0..oh {
-        for x in 0..ow {
-            let mut c = Vec3::ZERO;
-            for dy in 0..ss {
-                for dx in 0..ss {
-                    c += buf[(y * ss + dy) * w + x * ss + dx];
-                }
-            }
-            let c = (c / n).clamp(Vec3::ZERO, Vec3::ONE) * 255.0 + Vec3::splat(0.5);
-            img.put_pixel(
-                x as u32,
-                y as u32,
-                image::Rgb([c.x as u8, c.y as u8, c.z as u8]),
-            );
-        }
-    }
-    img
-}
-
 /// Render the scene with the z-buffer (width×height; a stereo pair puts the left eye on the
-/// left half), without the size and memory check of [`try_render`]. None when cancelled.
+/// left half), without the size and memory check of [`super::try_render`]. None when
+/// cancelled.
 pub fn render_zbuffer(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
-    zbuffer(scene, cancel).ok()
-}
-
-/// Render the scene with its renderer (z-buffer or ray casting) after checking its size and
-/// memory ([`check`]). Cancelling returns [`RenderError::Cancelled`].
-pub fn try_render(scene: &Scene, cancel: Option<&AtomicBool>) -> Result<RgbImage, RenderError> {
-    check(scene, None)?;
-    match scene.renderer {
-        Renderer::ZBuffer => zbuffer(scene, cancel),
-        Renderer::RayCast => super::raycast::render(scene, cancel).ok_or(RenderError::Cancelled),
-    }
-}
-
-fn zbuffer(scene: &Scene, cancel: Option<&AtomicBool>) -> Result<RgbImage, RenderError> {
-    let ss = scene.supersample.clamp(1, 4) as usize;
-    let (w, h, eyes) = eyes(scene);
-    if let [(left_eye, half), (right_eye, _)] = eyes.as_slice() {
-        let half = *half;
-        let left = render_eye(scene, left_eye, half, h, cancel).ok_or(RenderError::Cancelled)?;
-        let right = render_eye(scene, right_eye, half, h, cancel).ok_or(RenderError::Cancelled)?;
-        let mut buf = vec![scene.background; w * h];
-        for y in 0..h {
-            buf[y * w..y * w + half].copy_from_slice(&left[y * half..(y + 1) * half]);
-            buf[y * w + half..y * w + 2 * half].copy_from_slice(&right[y * half..(y + 1) * half]);
-        }
-        return Ok(to_image(&buf, w, h, ss));
-    }
-    let (eye, _) = &eyes[0];
-    let buf = render_eye(scene, eye, w, h, cancel).ok_or(RenderError::Cancelled)?;
-    Ok(to_image(&buf, w, h, ss))
-}
-
-/// As [`try_render`], None for every failure (cancelled, too large, invalid size); kept for
-/// callers that only show a picture when there is one.
-pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
-    try_render(scene, cancel).ok()
-}
-
-/// The screen position (pixels) of a world point under the scene's camera (None behind the
-/// eye), e.g. for drawing light handles in the GUI.
-pub fn project(scene: &Scene, p: DVec3) -> Option<[f64; 2]> {
-    let (w, h) = (scene.width as usize, scene.height as usize);
-    let eye = eye_for(scene, w, h, 0.0);
-    let c = eye.clip(p);
-    (c[3] > 1e-3).then(|| {
-        let s = eye.screen(c);
-        [s[0], s[1]]
-    })
+    picture(scene, |eye, w, h| render_eye(scene, eye, w, h, cancel))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    #[test]
-    fn estimates_of_both_renderers_grow_with_the_picture_and_refuse_clearly() {
-        let jug_scene = |w: u32, h: u32, r: Renderer| {
-            let mut s = Scene {
-                width: w,
-                height: h,
-                renderer: r,
-                ..Scene::default()
-            };
-            s.objects.push(Object {
-                name: "jug".into(),
-                geometry: Geometry::Patches(crate::surface::mesh::jug()),
-                transform: Transform::IDENTITY,
-                material: crate::surface::scene::Material::default(),
-                texture: None,
-                bump_texture: None,
-            });
-            s
-        };
-        for r in [Renderer::ZBuffer, Renderer::RayCast] {
-            let small = estimate_memory(&jug_scene(320, 240, r)).total;
-            let big = estimate_memory(&jug_scene(1280, 960, r)).total;
-            // At least the colour buffers; 16× the pixels costs more than 4× the memory.
-            assert!(small >= 320 * 240 * 12, "{small}");
-            assert!(big > 4 * small && big < 40 * small, "{small} {big}");
-        }
-        // 16384² with 4× supersampling needs tens of GiB: refused with a message that says
-        // what to change.
-        let mut huge = jug_scene(16384, 16384, Renderer::RayCast);
-        huge.supersample = 4;
-        let e = check(&huge, Some(8 << 30)).unwrap_err();
-        assert!(matches!(e, RenderError::OutOfMemory(_)));
-        let msg = e.to_string();
-        assert!(msg.contains("image size"), "{msg}");
-        assert!(check(&jug_scene(320, 240, Renderer::RayCast), Some(8 << 30)).is_ok());
-    }
     use crate::surface::mesh::{SurfacePatch, TexMap};
     use crate::surface::patch::Patch;
-    use crate::surface::scene::{Light, Material, Object};
+    use crate::surface::scene::{Light, Material, Object, Projection};
+    use crate::surface::transform::Transform;
 
     #[test]
-    fn perspective_correct_and_bump_oracles() {
+    fn perspective_correct_oracle() {
         assert!((perspective_lerp(0.0, 1.0, 1.0, 3.0, 0.5) - 0.25).abs() < 1e-15);
-        // Q = (u, w, 0), P = 0.1u → n′ = (−0.1, 0, 1).
-        let n = bump_normal(DVec3::X, DVec3::Y, 0.1, 0.0);
-        assert!((n - DVec3::new(-0.1, 0.0, 1.0)).length() < 1e-15);
     }
 
     fn quad_scene(z: f64) -> Scene {

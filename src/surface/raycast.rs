@@ -17,12 +17,16 @@ use glam::{DMat3, DVec3, Vec3};
 use image::RgbImage;
 use rayon::prelude::*;
 
+use super::bounds::world_sphere;
 use super::bvh::{Bvh, TriGeom};
+use super::eye::Eye;
+use super::frame::picture;
+use super::implicit::Implicit;
 use super::mesh::{Mesh, SurfacePatch};
 use super::patch::Patch;
-use super::quaternion::{QuaternionJulia, ray_sphere};
-use super::raster::{Eye, SurfacePoint, eye_for, resolutions, shade, to_image};
-use super::scene::{Geometry, Object, Projection, Scene};
+use super::resolution::resolutions;
+use super::scene::{Geometry, Object, Scene};
+use super::shading::{SurfacePoint, shade};
 use super::transform::Transform;
 
 /// Closest approach of the line P(t) = P₁ + (P₂ − P₁)t to the point P₀: with
@@ -39,147 +43,6 @@ pub fn closest_approach(p1: DVec3, p2: DVec3, p0: DVec3) -> (f64, f64) {
 fn sphere_may_hit(c: DVec3, r: f64, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> bool {
     let (t, d2) = closest_approach(o, o + d, c);
     d2 <= r * r && t + r >= t_min && t - r <= t_max
-}
-
-/// A world-space bounding sphere of an object (centre, radius); None for an empty object.
-pub(crate) fn world_sphere(o: &Object) -> Option<(DVec3, f64)> {
-    let pts: Vec<DVec3> = match &o.geometry {
-        // The convex hull of the nets holds the surfaces.
-        Geometry::Patches(p) => p
-            .iter()
-            .flat_map(|sp| sp.patch.control_points())
-            .map(|q| o.transform.apply(q))
-            .collect(),
-        Geometry::Mesh(m) => m.positions.iter().map(|q| o.transform.apply(*q)).collect(),
-        Geometry::QuaternionJulia(j) => {
-            let r = j.escape_radius();
-            return Some((
-                o.transform.apply(DVec3::ZERO),
-                r * linear_stretch(&o.transform),
-            ));
-        }
-    };
-    if pts.is_empty() {
-        return None;
-    }
-    let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-    for p in &pts {
-        lo = lo.min(*p);
-        hi = hi.max(*p);
-    }
-    let c = (lo + hi) * 0.5;
-    let r = pts.iter().map(|p| (*p - c).length()).fold(0.0, f64::max);
-    Some((c, r))
-}
-
-/// An upper bound of how much the linear block stretches a vector (its Frobenius norm).
-fn linear_stretch(t: &Transform) -> f64 {
-    let m = &t.0;
-    (0..3)
-        .flat_map(|r| (0..3).map(move |c| m[r][c] * m[r][c]))
-        .sum::<f64>()
-        .sqrt()
-}
-
-/// A quaternion Julia object placed in the world.
-pub(crate) struct Implicit {
-    pub(crate) object: usize,
-    julia: QuaternionJulia,
-    /// object → world, world → object.
-    xf: Transform,
-    to_object: Transform,
-    radius: f64,
-}
-
-impl Implicit {
-    pub(crate) fn new(object: usize, o: &Object, j: &QuaternionJulia) -> Option<Implicit> {
-        Some(Implicit {
-            object,
-            julia: *j,
-            xf: o.transform,
-            to_object: o.transform.inverse()?,
-            radius: j.escape_radius(),
-        })
-    }
-
-    /// The ray in object space: origin, unit direction and object units per world unit.
-    fn local(&self, o: DVec3, d: DVec3) -> (DVec3, DVec3, f64) {
-        let lo = self.to_object.apply(o);
-        let ld = self.to_object.apply_dir(d);
-        let l = ld.length();
-        (lo, ld / l, l)
-    }
-
-    /// Surface threshold in object units at ray parameter t: half a pixel.
-    fn eps(&self, eye: &Eye, t: f64, l: f64) -> f64 {
-        (0.5 * eye.pixel_size(t) * l).max(1e-7 * self.radius)
-    }
-
-    /// The first hit in [t_min, t_max] of the world ray o + t·d (unit d).
-    pub(crate) fn hit(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, eye: &Eye) -> Option<f64> {
-        let (lo, ld, l) = self.local(o, d);
-        let (s0, s1) = ray_sphere(lo, ld, DVec3::ZERO, self.radius)?;
-        let (s0, s1) = (s0.max(t_min * l), s1.min(t_max * l));
-        if s0 > s1 {
-            return None;
-        }
-        let s = self
-            .julia
-            .march(lo, ld, s0, s1, |s| self.eps(eye, s / l, l))?;
-        Some(s / l)
-    }
-
-    /// Does anything of the set lie on the segment o + t·d, t in (0, t_max)? `eps` is the
-    /// surface threshold in world units.
-    fn occludes(&self, o: DVec3, d: DVec3, t_max: f64, eps: f64) -> bool {
-        let (lo, ld, l) = self.local(o, d);
-        let Some((s0, s1)) = ray_sphere(lo, ld, DVec3::ZERO, self.radius) else {
-            return false;
-        };
-        let (s0, s1) = (s0.max(0.0), s1.min(t_max * l));
-        s0 <= s1 && self.julia.march(lo, ld, s0, s1, |_| eps * l).is_some()
-    }
-
-    /// The shading data at ray parameter t, and the world-space surface threshold there.
-    pub(crate) fn surface_point(
-        &self,
-        o: DVec3,
-        d: DVec3,
-        t: f64,
-        eye: &Eye,
-    ) -> (SurfacePoint, f64) {
-        let (lo, ld, l) = self.local(o, d);
-        let eps = self.eps(eye, t, l);
-        let p = lo + ld * (t * l);
-        let n = self.julia.normal(p, 0.5 * eps);
-        let normal = self.xf.apply_normal(n).normalize_or(n);
-        let st = self.julia.tex_coords(p);
-        (
-            SurfacePoint {
-                object: self.object,
-                pos: o + d * t,
-                normal,
-                st,
-                footprint: 0.0,
-                ts: DVec3::ZERO,
-                tt: DVec3::ZERO,
-            },
-            eps / l,
-        )
-    }
-}
-
-/// The quaternion Julia objects of a scene.
-pub(crate) fn implicit_objects(scene: &Scene) -> Vec<Implicit> {
-    scene
-        .objects
-        .iter()
-        .enumerate()
-        .filter_map(|(k, o)| match &o.geometry {
-            Geometry::QuaternionJulia(j) => Implicit::new(k, o, j),
-            _ => None,
-        })
-        .collect()
 }
 
 /// Which patch cell a triangle came from: patch, grid cell (i, j) and which half.
@@ -469,83 +332,21 @@ impl World<'_> {
                 b2,
             } => {
                 let p = &self.objs[obj];
-                let o_ref = &scene.objects[p.object];
+                let h = TriHit {
+                    o,
+                    d,
+                    tri,
+                    t,
+                    b1,
+                    b2,
+                    next,
+                };
                 let (bvh, sp) = match &p.kind {
-                    Kind::Patches { bvh, tris, n } => {
-                        let pt = tris[tri as usize];
-                        let Geometry::Patches(patches) = &o_ref.geometry else {
-                            unreachable!()
-                        };
-                        let spatch = &patches[pt.patch as usize];
-                        let uw = pt.uw(*n);
-                        let b0 = 1.0 - b1 - b2;
-                        let mix = |k: usize| uw[0][k] * b0 + uw[1][k] * b1 + uw[2][k] * b2;
-                        let (u0, w0) = (mix(0), mix(1));
-                        let cell =
-                            bvh.tris[tri as usize].e1.length() + bvh.tris[tri as usize].e2.length();
-                        let xf = &o_ref.transform;
-                        let exact = if xf.is_affine() {
-                            refine(&spatch.patch, xf, o, d, (u0, w0, t), cell)
-                        } else {
-                            None
-                        };
-                        let (u, w) = exact.map_or((u0, w0), |(u, w, _)| (u, w));
-                        let (q, qu, qw) = spatch.patch.eval_with_derivs(u, w);
-                        let (pu, pw) = (xf.apply_dir(qu), xf.apply_dir(qw));
-                        let mut normal = pu.cross(pw);
-                        if normal.length_squared() <= 1e-24 {
-                            normal = xf.apply_normal(spatch.patch.normal(u, w));
-                        }
-                        // The exact patch point, or the tessellation's where Newton failed.
-                        let pos = if exact.is_some() {
-                            xf.apply(q)
-                        } else {
-                            o + d * t
-                        };
-                        let (tan_s, tan_t) = spatch.tex.tangents(pu, pw);
-                        let st_v = uw.map(|c| spatch.tex.at(c[0], c[1]));
-                        let footprint = footprint(&bvh.tris[tri as usize], st_v, next, (b1, b2));
-                        (
-                            bvh,
-                            SurfacePoint {
-                                object: p.object,
-                                pos,
-                                normal: normal.normalize_or(DVec3::Y),
-                                st: spatch.tex.at(u, w),
-                                footprint,
-                                ts: tan_s,
-                                tt: tan_t,
-                            },
-                        )
-                    }
-                    Kind::Mesh { bvh, mesh } => {
-                        let idx = mesh.triangles[tri as usize].map(|i| i as usize);
-                        let wt = [1.0 - b1 - b2, b1, b2];
-                        let mix3 = |f: &dyn Fn(usize) -> DVec3| {
-                            f(idx[0]) * wt[0] + f(idx[1]) * wt[1] + f(idx[2]) * wt[2]
-                        };
-                        let st_v = idx.map(|i| [mesh.tex[i][0] as f64, mesh.tex[i][1] as f64]);
-                        let st = [0, 1]
-                            .map(|c| st_v[0][c] * wt[0] + st_v[1][c] * wt[1] + st_v[2][c] * wt[2]);
-                        let (tan_s, tan_t) = if mesh.tangents.len() == mesh.positions.len() {
-                            (mix3(&|i| mesh.tangents[i].0), mix3(&|i| mesh.tangents[i].1))
-                        } else {
-                            (DVec3::X, DVec3::Y)
-                        };
-                        let footprint = footprint(&bvh.tris[tri as usize], st_v, next, (b1, b2));
-                        (
-                            bvh,
-                            SurfacePoint {
-                                object: p.object,
-                                pos: o + d * t,
-                                normal: mix3(&|i| mesh.normals[i]).normalize_or(DVec3::Y),
-                                st,
-                                footprint,
-                                ts: tan_s,
-                                tt: tan_t,
-                            },
-                        )
-                    }
+                    Kind::Patches { bvh, tris, n } => (
+                        bvh,
+                        self.patch_point(p.object, bvh, tris[tri as usize], *n, &h),
+                    ),
+                    Kind::Mesh { bvh, mesh } => (bvh, mesh_point(p.object, bvh, mesh, &h)),
                     Kind::Implicit(_) => unreachable!(),
                 };
                 // Shadow rays start on the tessellation (so neighbouring triangles of a
@@ -577,12 +378,106 @@ impl World<'_> {
         }
     }
 
+    /// The surface point of a hit on a patch's tessellation: refined by Newton's method onto
+    /// the exact patch (affine transforms), with the patch's normal, texture coordinates and
+    /// tangents there.
+    fn patch_point(
+        &self,
+        object: usize,
+        bvh: &Bvh,
+        pt: PatchTri,
+        n: usize,
+        h: &TriHit,
+    ) -> SurfacePoint {
+        let o_ref = &self.scene.objects[object];
+        let Geometry::Patches(patches) = &o_ref.geometry else {
+            unreachable!()
+        };
+        let (o, d, t, b1, b2) = (h.o, h.d, h.t, h.b1, h.b2);
+        let spatch = &patches[pt.patch as usize];
+        let uw = pt.uw(n);
+        let b0 = 1.0 - b1 - b2;
+        let mix = |k: usize| uw[0][k] * b0 + uw[1][k] * b1 + uw[2][k] * b2;
+        let (u0, w0) = (mix(0), mix(1));
+        let cell = bvh.tris[h.tri as usize].e1.length() + bvh.tris[h.tri as usize].e2.length();
+        let xf = &o_ref.transform;
+        let exact = if xf.is_affine() {
+            refine(&spatch.patch, xf, o, d, (u0, w0, t), cell)
+        } else {
+            None
+        };
+        let (u, w) = exact.map_or((u0, w0), |(u, w, _)| (u, w));
+        let (q, qu, qw) = spatch.patch.eval_with_derivs(u, w);
+        let (pu, pw) = (xf.apply_dir(qu), xf.apply_dir(qw));
+        let mut normal = pu.cross(pw);
+        if normal.length_squared() <= 1e-24 {
+            normal = xf.apply_normal(spatch.patch.normal(u, w));
+        }
+        // The exact patch point, or the tessellation's where Newton failed.
+        let pos = if exact.is_some() {
+            xf.apply(q)
+        } else {
+            o + d * t
+        };
+        let (tan_s, tan_t) = spatch.tex.tangents(pu, pw);
+        let st_v = uw.map(|c| spatch.tex.at(c[0], c[1]));
+        let footprint = footprint(&bvh.tris[h.tri as usize], st_v, h.next, (b1, b2));
+        SurfacePoint {
+            object,
+            pos,
+            normal: normal.normalize_or(DVec3::Y),
+            st: spatch.tex.at(u, w),
+            footprint,
+            ts: tan_s,
+            tt: tan_t,
+        }
+    }
+
     fn finish(&self, sp: &SurfacePoint, eye: &Eye, visible: &dyn Fn(usize) -> bool) -> Vec3 {
         if self.scene.shadows {
             shade(self.scene, eye.pos, sp, visible)
         } else {
             shade(self.scene, eye.pos, sp, &|_| true)
         }
+    }
+}
+
+/// A hit on a triangle: the ray, the triangle, the ray parameter and barycentrics, and the
+/// rays of the neighbouring pixels (right, below) for the texture footprint.
+struct TriHit {
+    o: DVec3,
+    d: DVec3,
+    tri: u32,
+    t: f64,
+    b1: f64,
+    b2: f64,
+    next: [(DVec3, DVec3); 2],
+}
+
+/// The surface point of a hit on a mesh triangle: normals, texture coordinates and tangents
+/// interpolated from its vertices.
+fn mesh_point(object: usize, bvh: &Bvh, mesh: &Mesh, h: &TriHit) -> SurfacePoint {
+    let (b1, b2) = (h.b1, h.b2);
+    let idx = mesh.triangles[h.tri as usize].map(|i| i as usize);
+    let wt = [1.0 - b1 - b2, b1, b2];
+    let mix3 =
+        |f: &dyn Fn(usize) -> DVec3| f(idx[0]) * wt[0] + f(idx[1]) * wt[1] + f(idx[2]) * wt[2];
+    let st_v = idx.map(|i| [mesh.tex[i][0] as f64, mesh.tex[i][1] as f64]);
+    let st = [0, 1].map(|c| st_v[0][c] * wt[0] + st_v[1][c] * wt[1] + st_v[2][c] * wt[2]);
+    let (tan_s, tan_t) = if mesh.tangents.len() == mesh.positions.len() {
+        (mix3(&|i| mesh.tangents[i].0), mix3(&|i| mesh.tangents[i].1))
+    } else {
+        (DVec3::X, DVec3::Y)
+    };
+    let footprint = footprint(&bvh.tris[h.tri as usize], st_v, h.next, (b1, b2));
+    SurfacePoint {
+        object,
+        pos: h.o + h.d * h.t,
+        normal: mix3(&|i| mesh.normals[i]).normalize_or(DVec3::Y),
+        st,
+        footprint,
+        ts: tan_s,
+        tt: tan_t,
     }
 }
 
@@ -641,28 +536,23 @@ fn render_eye(
 /// Ray-cast the scene (width×height; a stereo pair puts the left eye on the left half).
 /// Returns None when cancelled.
 pub fn render(scene: &Scene, cancel: Option<&AtomicBool>) -> Option<RgbImage> {
-    let ss = scene.supersample.clamp(1, 4) as usize;
-    let (w, h) = (scene.width as usize * ss, scene.height as usize * ss);
-    if let Projection::Stereo = scene.camera.projection {
-        let half = w / 2;
-        let k = scene.camera.distance;
-        let left = render_eye(scene, &eye_for(scene, half, h, k / 20.0), half, h, cancel)?;
-        let right = render_eye(scene, &eye_for(scene, half, h, -k / 20.0), half, h, cancel)?;
-        let mut buf = vec![scene.background; w * h];
-        for y in 0..h {
-            buf[y * w..y * w + half].copy_from_slice(&left[y * half..(y + 1) * half]);
-            buf[y * w + half..y * w + 2 * half].copy_from_slice(&right[y * half..(y + 1) * half]);
-        }
-        return Some(to_image(&buf, w, h, ss));
-    }
-    let buf = render_eye(scene, &eye_for(scene, w, h, 0.0), w, h, cancel)?;
-    Some(to_image(&buf, w, h, ss))
+    picture(scene, |eye, w, h| render_eye(scene, eye, w, h, cancel))
+}
+
+/// Bytes of the ray caster's geometry for a tessellation of `vertices` and `triangles`: the
+/// world meshes, a bounding volume hierarchy and one reference (16 bytes) per triangle.
+pub(crate) fn geometry_bytes(vertices: u64, triangles: u64) -> u64 {
+    vertices
+        .saturating_mul(104)
+        .saturating_add(super::bvh::bytes_for(triangles as usize) as u64)
+        .saturating_add(triangles.saturating_mul(16))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::surface::mesh::TexMap;
+    use crate::surface::quaternion::ray_sphere;
     use crate::surface::scene::{Light, Material, Renderer};
 
     #[test]
@@ -751,52 +641,6 @@ mod tests {
     }
 
     #[test]
-    fn every_projection_casts_the_rays_the_z_buffer_projects() {
-        // The untextured jug under each projection: the ray caster (no shadows) and the
-        // z-buffer agree pixel for pixel within 12/255 almost everywhere, so the rays go
-        // through the same points the z-buffer projects to.
-        let mut base = Scene {
-            width: 96,
-            height: 72,
-            shadows: false,
-            ..Scene::default()
-        };
-        base.objects.push(Object {
-            name: "jug".into(),
-            geometry: Geometry::Patches(crate::surface::mesh::jug()),
-            transform: Transform::rot_y(0.4),
-            material: Material::default(),
-            texture: None,
-            bump_texture: None,
-        });
-        let (phi, theta) = crate::surface::transform::isometric_angles();
-        for (name, p, w) in [
-            ("perspective", Projection::Perspective, 96),
-            ("orthographic", Projection::Orthographic, 96),
-            ("isometric", Projection::Axonometric { phi, theta }, 96),
-            ("stereo", Projection::Stereo, 192),
-        ] {
-            let mut s = base.clone();
-            s.camera.projection = p;
-            s.width = w;
-            let z = crate::surface::raster::render_zbuffer(&s, None).unwrap();
-            s.renderer = Renderer::RayCast;
-            let r = render(&s, None).unwrap();
-            let close = z
-                .pixels()
-                .zip(r.pixels())
-                .filter(|(a, b)| (0..3).all(|c| a.0[c].abs_diff(b.0[c]) <= 12))
-                .count() as f64
-                / (w * 72) as f64;
-            let drawn = r.pixels().filter(|p| p.0 != [0, 0, 0]).count();
-            assert!(
-                close >= 0.98 && drawn > 1000,
-                "{name}: {close} ({drawn} drawn)"
-            );
-        }
-    }
-
-    #[test]
     fn shadows_fall_where_the_light_is_blocked() {
         // A small square above a floor, light straight above: the floor under the square is
         // dark (ambient only), the floor beside it is lit; without shadows both are lit.
@@ -837,7 +681,7 @@ mod tests {
         no.shadows = false;
         let plain = render(&no, None).unwrap();
         let px = |img: &RgbImage, wx: f64, wz: f64| {
-            let q = crate::surface::raster::project(&s, DVec3::new(wx, 0.0, wz)).unwrap();
+            let q = crate::surface::eye::project(&s, DVec3::new(wx, 0.0, wz)).unwrap();
             img.get_pixel(q[0] as u32, q[1] as u32).0
         };
         let (shadow, lit) = (px(&img, -1.0, 0.0), px(&img, -2.5, 0.0));

@@ -271,6 +271,9 @@ pub fn mrf_probability(tt: f64) -> f64 {
     1.0 / (1.0 + (-tt).exp())
 }
 
+/// Largest side of a Markov random field texture (larger sizes are made at this side).
+pub const MAX_MRF_SIDE: usize = 1024;
+
 /// A binary MRF texture by Gibbs sampling on a torus (raster order), coloured a/b.
 pub fn mrf_texture(w: usize, h: usize, p: &MrfParams, a: Vec3, b: Vec3) -> Texture {
     let mut rng = FastRng::new(p.seed);

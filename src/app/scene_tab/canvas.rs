@@ -83,7 +83,7 @@ impl SceneTab {
         s.width = size[0];
         s.height = size[1];
         for (i, l) in self.scene.lights.iter().enumerate() {
-            if let Some(p) = crate::surface::raster::project(&s, l.position) {
+            if let Some(p) = crate::surface::project(&s, l.position) {
                 let q = rect.min + Vec2::new(p[0] as f32, p[1] as f32) / ppp;
                 if rect.contains(q) {
                     let col = if i == self.selected_light {

@@ -1,0 +1,222 @@
+//! A scene described before its textures and meshes are made: plain data, as a scene file gives
+//! it (which texture from which flame, escape-time view, picture or parameters, at which size;
+//! which mesh from which parameters), and the step that makes them into a [`Scene`] ready to
+//! render.
+
+use glam::Vec3;
+use image::RgbImage;
+
+use super::menger;
+use super::mesh;
+use super::scene::{Geometry, Material, Object, Scene};
+use super::texture::{self, MAX_MRF_SIDE, MrfParams, Texture};
+use super::transform::Transform;
+use crate::escape::EscapeDoc;
+use crate::flame::Flame;
+use crate::gradient::Gradient;
+use crate::noise::Fbm;
+
+/// A scene before its textures and meshes are made.
+#[derive(Clone, Debug)]
+pub struct SceneSpec {
+    /// Camera, lights, image and renderer settings. Its `textures` and `objects` are replaced
+    /// by the ones made from the lists below.
+    pub scene: Scene,
+    pub textures: Vec<TextureSpec>,
+    pub objects: Vec<ObjectSpec>,
+}
+
+/// A texture to make, `width`×`height` texels (a picture keeps its own size).
+#[derive(Clone, Debug)]
+pub struct TextureSpec {
+    pub width: usize,
+    pub height: usize,
+    pub kind: TextureKind,
+}
+
+/// Where a texture's texels come from.
+#[derive(Clone, Debug)]
+pub enum TextureKind {
+    /// A decoded picture.
+    Image(RgbImage),
+    /// A flame rendered at the texture's size (its framing kept), at `quality` when given.
+    Flame {
+        flame: Box<Flame>,
+        quality: Option<f64>,
+    },
+    /// An escape-time view rendered at the texture's size, its world width kept.
+    Escape(Box<EscapeDoc>),
+    /// Fractional Brownian motion between two colours.
+    Fbm {
+        fbm: Fbm,
+        colors: [Vec3; 2],
+    },
+    /// Value noise of `cells` cells across.
+    Value {
+        seed: u64,
+        cells: u32,
+        colors: [Vec3; 2],
+    },
+    /// A Markov random field (at most [`MAX_MRF_SIDE`] on a side).
+    Mrf {
+        params: MrfParams,
+        colors: [Vec3; 2],
+    },
+    /// A checkerboard of `cells` = [across, down] squares.
+    Checker {
+        cells: [usize; 2],
+        colors: [Vec3; 2],
+    },
+    /// Grid lines (first colour) on a background (second colour).
+    Grid {
+        cells: [usize; 2],
+        colors: [Vec3; 2],
+    },
+    Solid(Vec3),
+    /// A gradient along t (e.g. a mountain's height).
+    Gradient(Box<Gradient>),
+}
+
+/// An object before its mesh is made.
+#[derive(Clone, Debug)]
+pub struct ObjectSpec {
+    pub name: String,
+    pub geometry: GeometrySpec,
+    pub transform: Transform,
+    pub material: Material,
+    /// Index into [`SceneSpec::textures`].
+    pub texture: Option<usize>,
+    pub bump_texture: Option<usize>,
+}
+
+/// An object's geometry: given (patches, a quaternion Julia set), or a mesh to make.
+#[derive(Clone, Debug)]
+pub enum GeometrySpec {
+    Given(Geometry),
+    /// A midpoint-displacement mountain ([`mesh::mountain`]).
+    Mountain {
+        levels: u32,
+        size: f64,
+        sigma: f64,
+        h: f64,
+        seed: u64,
+    },
+    /// The Menger sponge at construction step `step` with edge `size` ([`menger::mesh`]).
+    Menger {
+        step: u32,
+        size: f64,
+    },
+}
+
+/// A texture that could not be made: its index in [`SceneSpec::textures`] and why.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TextureError {
+    pub index: usize,
+    pub message: String,
+}
+
+impl SceneSpec {
+    /// Make the textures (rendering flames and escape-time views) and the meshes: the scene
+    /// ready to render.
+    pub fn build(self) -> Result<Scene, TextureError> {
+        let mut scene = self.scene;
+        scene.textures = self
+            .textures
+            .iter()
+            .enumerate()
+            .map(|(index, t)| t.make().map_err(|message| TextureError { index, message }))
+            .collect::<Result<_, _>>()?;
+        scene.objects = self.objects.into_iter().map(ObjectSpec::make).collect();
+        Ok(scene)
+    }
+}
+
+impl TextureSpec {
+    /// Make the texture.
+    pub fn make(&self) -> Result<Texture, String> {
+        let (w, h) = (self.width, self.height);
+        Ok(match &self.kind {
+            TextureKind::Image(img) => Texture::from_image(img),
+            TextureKind::Flame { flame, quality } => {
+                let mut f = (**flame).clone();
+                f.resize_keep_framing(w as u32, h as u32);
+                if let Some(q) = quality {
+                    f.quality = *q;
+                }
+                // A fixed thread count keeps the texture (and the scene) identical on every
+                // machine.
+                let opts = crate::flame::RenderOptions {
+                    threads: 2,
+                    ..Default::default()
+                };
+                let img = crate::flame::render(&f, &opts).map_err(|e| e.to_string())?;
+                Texture::from_image(&img.to_rgb8())
+            }
+            TextureKind::Escape(d) => {
+                let mut view = d.view;
+                // Keep the view's world width at the texture's size.
+                view.half_height = d.world_width() / 2.0 * h as f64 / w as f64;
+                let (img, _) = crate::escape::render(&d.params, view, w as u32, h as u32)
+                    .map_err(|e| e.to_string())?;
+                Texture::from_image(&img)
+            }
+            TextureKind::Fbm {
+                fbm,
+                colors: [a, b],
+            } => texture::fbm_texture(w, h, *fbm, *a, *b),
+            TextureKind::Value {
+                seed,
+                cells,
+                colors: [a, b],
+            } => texture::value_noise_texture(w, h, *seed, *cells, *a, *b),
+            TextureKind::Mrf {
+                params,
+                colors: [a, b],
+            } => texture::mrf_texture(w.min(MAX_MRF_SIDE), h.min(MAX_MRF_SIDE), params, *a, *b),
+            TextureKind::Checker {
+                cells: [n, m],
+                colors: [a, b],
+            } => texture::checker(w, h, *n, *m, *a, *b),
+            TextureKind::Grid {
+                cells: [n, m],
+                colors: [a, b],
+            } => texture::grid(w, h, *n, *m, *a, *b),
+            TextureKind::Solid(c) => Texture::solid(*c),
+            TextureKind::Gradient(g) => {
+                // t runs along the gradient: 4 texels across, 256 down.
+                let rows: Vec<Vec3> = (0..256)
+                    .flat_map(|k| {
+                        let c = g.colors[k];
+                        std::iter::repeat_n(Vec3::new(c[0] as f32, c[1] as f32, c[2] as f32), 4)
+                    })
+                    .collect();
+                Texture::from_texels(4, 256, rows)
+            }
+        })
+    }
+}
+
+impl ObjectSpec {
+    /// Make the object (its mesh, when it has one to make).
+    pub fn make(self) -> Object {
+        let geometry = match self.geometry {
+            GeometrySpec::Given(g) => g,
+            GeometrySpec::Mountain {
+                levels,
+                size,
+                sigma,
+                h,
+                seed,
+            } => Geometry::Mesh(mesh::mountain(levels, size, sigma, h, seed)),
+            GeometrySpec::Menger { step, size } => Geometry::Mesh(menger::mesh(step, size)),
+        };
+        Object {
+            name: self.name,
+            geometry,
+            transform: self.transform,
+            material: self.material,
+            texture: self.texture,
+            bump_texture: self.bump_texture,
+        }
+    }
+}
