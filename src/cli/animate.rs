@@ -1,45 +1,82 @@
-//! `ugnis animate`: frames of the thesis rotation animation, or in-betweens of the flames of a
-//! file (flam3-style interpolation), as numbered PNGs.
+//! `ugnis animate`: the frames of an animation as PNGs, and a video of them. What moves is
+//! decided by the file (`--mode auto`): flames carrying `time` attributes are a flam3 sequence
+//! (frame t is time t, motion-blurred as flam3-animate renders it); a flame with keyframes
+//! plays them; otherwise the thesis rotation. `--mode loop` makes flam3-genome's loops and
+//! transitions through the file's flames; `--mode interpolate` plain in-betweens.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use clap::{Args, ValueEnum};
 
 use ugnis::flame::Flame;
-use ugnis::flame::animate::{RotationAnimation, interpolate};
-use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, Renderer, short_num};
-use ugnis::io;
+use ugnis::flame::loops::sequence;
+use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, short_num};
+use ugnis::io::animation::{AnimError, FrameSpec, Job, MAX_FRAMES, Source, frames_by_time};
+use ugnis::io::video::{VideoKind, VideoOptions};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Mode {
+    /// A sequence if the flames carry times, keyframes if the flame has them, else rotate
+    Auto,
+    /// flam3 sequence: frame t is the flames' blend at time t, with their motion blur
+    Sequence,
+    /// The flame's keyframes
+    Keys,
     /// Every triangle turns about its centre, 2° a frame, in 180° turns (the thesis animation)
     Rotate,
     /// In-betweens through the flames of the file in order (or --from → --to)
     Interpolate,
+    /// flam3-genome's sequence: each flame turns once (--turns) in --loop-frames frames, then
+    /// morphs into the next in as many; seamless
+    Loop,
 }
 
 #[derive(Args, Debug)]
 pub struct AnimateArgs {
     /// Flame file (.fla, .flame, .flam3, .ifs or a PNG with an embedded flame)
     pub input: PathBuf,
-    /// Frames to render: a count N (frames 1..N), or a range A..B (1-based, inclusive) of an
+    /// Frames to render. Sequences and keyframes: times A..B (whole numbers, inclusive; default
+    /// as flam3-animate: from the first flame's time to one before the last's, or the
+    /// keyframes' frames). Rotate and interpolate: a count N, or a range A..B (from 1) of an
     /// animation of --total frames, e.g. for one task of an array job
-    #[arg(long, default_value = "90", value_parser = parse_frames)]
-    pub frames: Frames,
-    /// Frames of the whole animation, with --frames A..B (file names and in-betweens depend
-    /// on it, never on the range)
+    #[arg(long, value_parser = parse_frames)]
+    pub frames: Option<Frames>,
+    /// Frames of the whole animation, with --frames A..B in rotate and interpolate modes
+    /// (file names and in-betweens depend on it, never on the range)
     #[arg(long)]
     pub total: Option<usize>,
-    /// Output directory for frame-0001.png, frame-0002.png, …
+    /// Time between frames of a sequence (flam3-animate's dtime)
+    #[arg(long, default_value_t = 1.0, value_parser = super::finite)]
+    pub step: f64,
+    /// Output: a folder of PNG frames, or a video (.mp4, .webm, .mkv, .mov through ffmpeg;
+    /// .gif, .apng built in) whose frames are kept in NAME.frames/
     #[arg(short, long)]
     pub output: PathBuf,
-    #[arg(long, value_enum, default_value_t = Mode::Rotate)]
+    #[arg(long, value_enum, default_value_t = Mode::Auto)]
     pub mode: Mode,
-    /// Rotate: the flame to animate (0-based index; default the first)
+    /// Prefix of the frame names of sequences and keyframes (flam3-animate's `prefix`)
+    #[arg(long, default_value = "")]
+    pub prefix: String,
+    /// Render every frame at its instant, without the flames' motion blur
+    #[arg(long)]
+    pub no_blur: bool,
+    /// Sub-frames of motion blur per frame (default: the flames' temporal_samples)
+    #[arg(long)]
+    pub temporal_samples: Option<u32>,
+    /// Loop: frames per loop and per transition
+    #[arg(long, default_value_t = 100)]
+    pub loop_frames: usize,
+    /// Loop: whole turns per loop
+    #[arg(long, default_value_t = 1.0, value_parser = super::finite)]
+    pub turns: f64,
+    /// Loop: transitions only, no loops
+    #[arg(long)]
+    pub no_loops: bool,
+    /// Rotate and keys: the flame to animate (0-based index; default the first)
     #[arg(long, conflicts_with = "name")]
     pub index: Option<usize>,
-    /// Rotate: the flame to animate, by name
+    /// Rotate and keys: the flame to animate, by name
     #[arg(long)]
     pub name: Option<String>,
     /// Interpolate: first flame (0-based index)
@@ -54,6 +91,15 @@ pub struct AnimateArgs {
     /// Samples per pixel (default: the flame's own quality; 0.01 to 1000000)
     #[arg(long, value_parser = super::finite)]
     pub quality: Option<f64>,
+    /// Video frames per second (default: the keyframes' fps, else 25)
+    #[arg(long, value_parser = super::finite)]
+    pub fps: Option<f64>,
+    /// A sound file to put in the video (ffmpeg outputs)
+    #[arg(long)]
+    pub audio: Option<PathBuf>,
+    /// Video quality: ffmpeg's constant rate factor (lower is better)
+    #[arg(long, default_value_t = 18)]
+    pub crf: u32,
     /// Seed of the rotation directions and of the renders
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
@@ -65,55 +111,130 @@ pub struct AnimateArgs {
     pub palettes: Option<PathBuf>,
 }
 
-/// `--frames`: a count or a 1-based inclusive range.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// `--frames`: a count or an inclusive range.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Frames {
-    Count(usize),
-    Range(usize, usize),
+    Count(u64),
+    Range(f64, f64),
 }
 
-/// Most frames of one animation.
-pub const MAX_FRAMES: usize = 1_000_000;
-
 fn parse_frames(s: &str) -> Result<Frames, String> {
-    let int = |t: &str| -> Result<usize, String> {
+    let num = |t: &str| -> Result<f64, String> {
         t.trim()
-            .parse()
-            .map_err(|_| format!("'{t}' is not a whole number"))
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("'{t}' is not a number"))
     };
     match s.split_once("..") {
         Some((a, b)) => {
-            let (a, b) = (int(a)?, int(b.strip_prefix('=').unwrap_or(b))?);
-            if a == 0 || b < a {
-                return Err(format!(
-                    "frame range {s} must be A..B with 1 ≤ A ≤ B (frames are numbered from 1)"
-                ));
+            let (a, b) = (num(a)?, num(b.strip_prefix('=').unwrap_or(b))?);
+            if b < a {
+                return Err(format!("frame range {s} must be A..B with A ≤ B"));
             }
             Ok(Frames::Range(a, b))
         }
-        None => Ok(Frames::Count(int(s)?)),
+        None => {
+            let n = num(s)?;
+            if n < 1.0 || n.fract() != 0.0 || n > MAX_FRAMES as f64 {
+                return Err(format!(
+                    "{s} frames: must be a whole number between 1 and {MAX_FRAMES}"
+                ));
+            }
+            Ok(Frames::Count(n as u64))
+        }
+    }
+}
+
+/// The mode `auto` stands for.
+fn resolve_mode(mode: Mode, flames: &[Flame], picked: &Flame) -> Mode {
+    match mode {
+        Mode::Auto if flames.len() > 1 && flames.iter().any(|f| f.anim.time != 0.0) => {
+            Mode::Sequence
+        }
+        Mode::Auto if !picked.keys.is_empty() => Mode::Keys,
+        Mode::Auto => Mode::Rotate,
+        m => m,
+    }
+}
+
+/// The frames of the rotate and interpolate modes: 1-based names `frame-NNNN.png` of a whole
+/// animation of `n` frames, `range` of them rendered.
+fn numbered_frames(a: &AnimateArgs) -> Result<(u64, Vec<FrameSpec>)> {
+    let (n, range) = match (a.frames, a.total) {
+        (None, None) => (90, 1..=90),
+        (Some(Frames::Count(n)), None) => (n, 1..=n),
+        (None | Some(Frames::Count(_)), Some(_)) => {
+            bail!("--total goes with a frame range: --frames A..B --total N")
+        }
+        (Some(Frames::Range(..)), None) => bail!(
+            "--frames A..B needs --total N, the frames of the whole animation (frame names and in-betweens depend on it)"
+        ),
+        (Some(Frames::Range(x, y)), Some(t)) => {
+            let t = t as u64;
+            if x < 1.0 || x.fract() != 0.0 || y.fract() != 0.0 {
+                bail!("--frames {x}..{y}: frames are whole numbers, numbered from 1");
+            }
+            if y as u64 > t {
+                bail!("--frames {x}..{y} goes past the last frame ({t}) of --total {t}");
+            }
+            (t, x as u64..=y as u64)
+        }
+    };
+    if n == 0 || n > MAX_FRAMES {
+        bail!("{n} frames: must be between 1 and {MAX_FRAMES}");
+    }
+    let digits = n.to_string().len().max(4);
+    Ok((
+        n,
+        range
+            .map(|k| FrameSpec {
+                time: (k - 1) as f64,
+                name: format!("frame-{k:0digits$}.png"),
+            })
+            .collect(),
+    ))
+}
+
+/// The frames of sequences and keyframes: times, named by the time.
+fn timed_frames(a: &AnimateArgs, source: &Source) -> Result<Vec<FrameSpec>> {
+    if a.total.is_some() {
+        bail!(
+            "--total is for rotate and interpolate; a sequence's frames are its times (--frames A..B)"
+        );
+    }
+    let (first, last) = match a.frames {
+        None => source.default_range(),
+        Some(Frames::Range(x, y)) => (x, y),
+        Some(Frames::Count(n)) => {
+            let (first, _) = source.default_range();
+            (first, first + (n - 1) as f64 * a.step)
+        }
+    };
+    Ok(frames_by_time(first, last, a.step, &a.prefix)?)
+}
+
+/// Where the frames go, and the video if the output names one.
+fn outputs(out: &Path) -> Result<(PathBuf, Option<PathBuf>)> {
+    match VideoKind::of(out) {
+        Some(_) => {
+            let mut dir = out.as_os_str().to_owned();
+            dir.push(".frames");
+            Ok((PathBuf::from(dir), Some(out.to_path_buf())))
+        }
+        None => {
+            if out.exists() && !out.is_dir() {
+                bail!(
+                    "output '{}' is neither a folder nor a video name (.mp4, .webm, .mkv, .mov, .gif, .apng)",
+                    out.display()
+                );
+            }
+            Ok((out.to_path_buf(), None))
+        }
     }
 }
 
 pub fn run(a: AnimateArgs) -> Result<()> {
-    let (n_frames, range) = match (a.frames, a.total) {
-        (Frames::Count(n), None) => (n, 0..n),
-        (Frames::Count(_), Some(_)) => {
-            bail!("--total goes with a frame range: --frames A..B --total N")
-        }
-        (Frames::Range(..), None) => bail!(
-            "--frames A..B needs --total N, the frames of the whole animation (frame names and in-betweens depend on it)"
-        ),
-        (Frames::Range(x, y), Some(t)) => {
-            if y > t {
-                bail!("--frames {x}..{y} goes past the last frame ({t}) of --total {t}");
-            }
-            (t, x - 1..y)
-        }
-    };
-    if n_frames == 0 || n_frames > MAX_FRAMES {
-        bail!("{n_frames} frames: must be between 1 and {MAX_FRAMES}");
-    }
     if let Some(q) = a.quality
         && !(MIN_QUALITY..=MAX_QUALITY).contains(&q)
     {
@@ -122,21 +243,57 @@ pub fn run(a: AnimateArgs) -> Result<()> {
             short_num(q)
         );
     }
-    if a.output.exists() && !a.output.is_dir() {
-        bail!("output '{}' is not a directory", a.output.display());
+    if a.loop_frames == 0 || a.loop_frames as u64 > MAX_FRAMES {
+        bail!(
+            "--loop-frames {} must be between 1 and {MAX_FRAMES}",
+            a.loop_frames
+        );
     }
-    let flames = super::render::load_flames(&a.input, a.palettes.as_ref(), false)?;
-    // Frames are made one at a time as they are rendered (a million frames held at once
-    // would need gigabytes).
-    let frames: Box<dyn Iterator<Item = Flame>> = match a.mode {
+    let mut flames = super::render::load_flames(&a.input, a.palettes.as_ref(), false)?;
+    if let Some(n) = a.temporal_samples {
+        if n == 0 {
+            bail!("--temporal-samples must be at least 1");
+        }
+        for f in &mut flames {
+            f.anim.temporal_samples = n;
+        }
+    }
+    let picked = super::render::select(flames.clone(), a.index, a.name.as_deref(), &a.input)?;
+    let mode = resolve_mode(a.mode, &flames, &picked);
+    let (source, frames) = match mode {
+        Mode::Sequence | Mode::Loop => {
+            let cps = if mode == Mode::Loop {
+                if flames.len() as u64 * 2 * a.loop_frames as u64 > MAX_FRAMES {
+                    bail!("the loop would have more than {MAX_FRAMES} frames");
+                }
+                sequence(&flames, a.loop_frames, !a.no_loops, a.turns)
+            } else {
+                flames
+            };
+            let source = Source::Sequence(cps);
+            source
+                .check()
+                .map_err(|e| anyhow::anyhow!("{}: {e}", a.input.display()))?;
+            let frames = timed_frames(&a, &source)?;
+            (source, frames)
+        }
+        Mode::Keys => {
+            if picked.keys.is_empty() {
+                bail!("{}: the flame has no keyframes", a.input.display());
+            }
+            let source = Source::Keys(picked.clone());
+            let frames = timed_frames(&a, &source)?;
+            (source, frames)
+        }
         Mode::Rotate => {
-            let mut f = super::render::select(flames, a.index, a.name.as_deref(), &a.input)?;
-            let mut anim = RotationAnimation::new(a.seed);
-            Box::new((0..n_frames).map(move |_| {
-                let frame = f.clone();
-                anim.step(&mut f);
-                frame
-            }))
+            let (_, frames) = numbered_frames(&a)?;
+            (
+                Source::Rotation {
+                    flame: picked,
+                    seed: a.seed,
+                },
+                frames,
+            )
         }
         Mode::Interpolate => {
             let keys = match (a.from, a.to) {
@@ -160,50 +317,66 @@ pub fn run(a: AnimateArgs) -> Result<()> {
                     a.input.display()
                 );
             }
-            let m = keys.len();
-            Box::new((0..n_frames).map(move |k| {
-                if n_frames == 1 {
-                    return keys[0].clone();
-                }
-                // As flame::animate::interpolation_frames: key i to i + 1 over equal spans.
-                let s = k as f64 * (m - 1) as f64 / (n_frames - 1) as f64;
-                let i = (s.floor() as usize).min(m - 2);
-                interpolate(&keys[i], &keys[i + 1], s - i as f64)
-            }))
+            let (n, frames) = numbered_frames(&a)?;
+            (
+                Source::Interpolation {
+                    flames: keys,
+                    frames: n,
+                },
+                frames,
+            )
         }
+        Mode::Auto => unreachable!("resolved above"),
     };
-    std::fs::create_dir_all(&a.output)
-        .with_context(|| format!("cannot create '{}'", a.output.display()))?;
-    let digits = n_frames.to_string().len().max(4);
-    let frame_path = |k: usize| a.output.join(format!("frame-{:0digits$}.png", k + 1));
-    super::check_output(&frame_path(range.start))?;
-    let opts = RenderOptions {
-        seed: a.seed,
-        threads: super::threads(a.threads),
-        ..RenderOptions::default()
-    };
-    let pb = super::progress_bar(range.len() as u64, "animating");
-    // Frames before the range are made (cheap: no render) so that the rotation steps are the
-    // same as in the whole animation.
-    for (k, mut f) in frames.enumerate().take(range.end).skip(range.start) {
-        if let Some((w, h)) = a.size {
-            f.resize_keep_framing(w, h);
-        }
-        if let Some(q) = a.quality {
-            f.quality = q;
-        }
-        // Every frame is checked (size, quality, memory) before its buffers are made.
-        let mut r =
-            Renderer::new(&f, &opts).with_context(|| format!("cannot render frame {}", k + 1))?;
-        if !r.run_all(10, super::interrupt_flag(), |_| {}) {
-            return Err(super::Interrupted.into());
-        }
-        let img = r.finish();
-        let path = frame_path(k);
-        io::png::save(&path, &img, &io::png::PngMeta::for_flame(&f))
-            .with_context(|| format!("cannot write '{}'", path.display()))?;
-        pb.inc(1);
+    let (dir, video) = outputs(&a.output)?;
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create '{}'", dir.display()))?;
+    if let Some(first) = frames.first() {
+        super::check_output(&dir.join(&first.name))?;
     }
+    if let Some(v) = &video {
+        super::check_output(v)?;
+    }
+    let fps = a.fps.unwrap_or(match &source {
+        Source::Keys(f) => f.keys.fps,
+        _ => 25.0,
+    });
+    let job = Job {
+        source,
+        frames,
+        dir,
+        video: video.map(|p| {
+            (
+                p,
+                VideoOptions {
+                    fps,
+                    audio: a.audio.clone(),
+                    crf: a.crf,
+                    ..VideoOptions::default()
+                },
+            )
+        }),
+        render: RenderOptions {
+            seed: a.seed,
+            threads: super::threads(a.threads),
+            ..RenderOptions::default()
+        },
+        size: a.size,
+        quality: a.quality,
+        blur: !a.no_blur,
+    };
+    let pb = super::progress_bar(job.frames.len() as u64, "animating");
+    let result = job.run(super::interrupt_flag(), |p| {
+        pb.set_position(p.done as u64);
+    });
     pb.finish_and_clear();
-    Ok(())
+    match result {
+        Ok(s) => {
+            if s.skipped > 0 {
+                eprintln!("{} frames were already on disk and kept", s.skipped);
+            }
+            Ok(())
+        }
+        Err(AnimError::Interrupted) => Err(super::Interrupted.into()),
+        Err(e) => Err(anyhow::anyhow!("{}: {e}", a.input.display())),
+    }
 }

@@ -398,6 +398,10 @@ fn blend(cpi: &[Cp], c: &[f64], stagger: f64) -> Cp {
             x.chaos = (0..n_std)
                 .map(|j| lerp_sum(c, cpi.iter().map(|k| k.slots[i].x.chaos_to(j))).max(0.0))
                 .collect();
+            // Missing entries are 1.
+            while x.chaos.last() == Some(&1.0) {
+                x.chaos.pop();
+            }
         }
         slots.push(Slot {
             x,
@@ -517,6 +521,9 @@ pub(crate) fn columns(m: &Affine) -> [[f64; 2]; 2] {
 /// window for xforms that turn on one side only); lengths blended as logarithms unless one is
 /// below e^−10; translation linearly.
 fn blend_polar(m: &[Affine], wind: &[[f64; 2]], c: &[f64]) -> Affine {
+    if let Some(k) = unit_weight(c) {
+        return m[k];
+    }
     let n = m.len();
     let mut ang = vec![[0.0f64; 2]; n];
     let mut mag = vec![[0.0f64; 2]; n];
@@ -577,8 +584,21 @@ fn blend_polar(m: &[Affine], wind: &[[f64; 2]], c: &[f64]) -> Affine {
     }
 }
 
+/// The control point whose weight is 1 when all others are 0: the blend is that control point
+/// itself, exactly (round trips through HSV or polar form would change the last bits).
+fn unit_weight(c: &[f64]) -> Option<usize> {
+    let k = c.iter().position(|&w| w == 1.0)?;
+    c.iter()
+        .enumerate()
+        .all(|(i, &w)| i == k || w == 0.0)
+        .then_some(k)
+}
+
 /// flam3's palette blend, entry by entry.
 fn blend_palettes(cpi: &[Cp], c: &[f64]) -> Gradient {
+    if let Some(k) = unit_weight(c) {
+        return cpi[k].flame.palette.clone();
+    }
     let mode = cpi[0].flame.anim.palette_interpolation;
     let entry = |k: usize, i: usize| -> [f64; 4] {
         cpi[k]
@@ -684,8 +704,33 @@ pub fn check_times(cps: &[Flame]) -> Result<(), usize> {
 /// `flam3_interpolate`). Outside the sequence the first or last segment is extrapolated, as
 /// flam3 does for the sub-frames of a motion-blurred first or last frame.
 pub fn interpolate_at(cps: &[Flame], time: f64) -> Flame {
-    let cps: Vec<Cp> = cps.iter().map(Cp::new).collect();
-    interpolate_cps(&cps, time, 0.0).into_flame()
+    assert!(!cps.is_empty(), "a sequence has at least one flame");
+    if cps.len() == 1 {
+        let mut one = cps[0].clone();
+        one.anim.time = time;
+        return one;
+    }
+    // Only the control points the blend reads are prepared.
+    let (i1, i2) = segment(cps.len(), |i| cps[i].anim.time, time);
+    let lo = i1.saturating_sub(1);
+    let hi = (i2 + 1).min(cps.len() - 1);
+    let window: Vec<Cp> = cps[lo..=hi].iter().map(Cp::new).collect();
+    interpolate_cps(&window, time, 0.0).into_flame()
+}
+
+/// The control points (i1, i2) around `time` (the first or last segment outside the sequence).
+fn segment(n: usize, t: impl Fn(usize) -> f64, time: f64) -> (usize, usize) {
+    if t(0) >= time {
+        (0, 1)
+    } else if t(n - 1) <= time {
+        (n - 2, n - 1)
+    } else {
+        let mut i = 0;
+        while t(i) < time {
+            i += 1;
+        }
+        (i - 1, i)
+    }
 }
 
 pub(crate) fn interpolate_cps(cps: &[Cp], time: f64, stagger: f64) -> Cp {
@@ -700,17 +745,7 @@ pub(crate) fn interpolate_cps(cps: &[Cp], time: f64, stagger: f64) -> Cp {
     }
     let n = cps.len();
     let t = |i: usize| cps[i].flame.anim.time;
-    let (i1, i2) = if t(0) >= time {
-        (0, 1)
-    } else if t(n - 1) <= time {
-        (n - 2, n - 1)
-    } else {
-        let mut i = 0;
-        while t(i) < time {
-            i += 1;
-        }
-        (i - 1, i)
-    };
+    let (i1, i2) = segment(n, t, time);
     let c0 = (t(i2) - time) / (t(i2) - t(i1));
     let c = [c0, 1.0 - c0];
     let smooth = cps[i1].flame.anim.interpolation == Interpolation::Smooth && i1 > 0 && i2 < n - 1;

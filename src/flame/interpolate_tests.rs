@@ -269,7 +269,7 @@ fn motion_elements_move_values_by_their_function() {
     x.motion.push(m);
     let f = flame_at(0.0, vec![x]);
     // sin(2π · 2 · 0.125) = 1.
-    let g = loop_frame(&f, 0.125);
+    let g = loop_frame(&f, 0.125, 1.0);
     assert!(close(g.xforms[0].weight, 1.5));
     assert!(close(g.xforms[0].coefs.e, 1.0));
     assert!(close(weight(&g.xforms[0], "swirl"), 0.25));
@@ -282,7 +282,7 @@ fn motion_elements_move_values_by_their_function() {
 fn sequences_hold_loops_and_transitions_named_by_their_time() {
     let a = flame_at(0.0, vec![xf(1.0, Affine::IDENTITY, &[("linear", 1.0)])]);
     let b = flame_at(0.0, vec![xf(1.0, Affine::IDENTITY, &[("swirl", 1.0)])]);
-    let s = sequence(&[a.clone(), b], 4, true);
+    let s = sequence(&[a.clone(), b], 4, true, 1.0);
     assert_eq!(s.len(), 4 + 4 + 4 + 1);
     for (k, f) in s.iter().enumerate() {
         assert_eq!(f.anim.time, k as f64);
@@ -290,7 +290,7 @@ fn sequences_hold_loops_and_transitions_named_by_their_time() {
     }
     // The transition's first frame is the first flame itself.
     assert_eq!(s[4].xforms, a.xforms);
-    assert_eq!(sequence(&[a.clone(), a], 3, false).len(), 3 + 1);
+    assert_eq!(sequence(&[a.clone(), a], 3, false, 1.0).len(), 3 + 1);
     assert!(close(smoother(0.5), 0.5) && close(stagger_coef(0.3, 0.0, 3, 1), smoother(0.3)));
 }
 

@@ -81,8 +81,8 @@ pub fn apply_motion(x: &Xform, to: &mut Xform, blend: f64) {
 }
 
 /// A frame of a flame's loop at `blend` ∈ [0, 1) (flam3-genome's `sheep_loop`): motion
-/// elements applied, then every xform turned by blend × 360°.
-pub fn loop_frame(cp: &Flame, blend: f64) -> Flame {
+/// elements applied, then every xform turned by blend × 360° × `turns` (flam3: one turn).
+pub fn loop_frame(cp: &Flame, blend: f64, turns: f64) -> Flame {
     let mut r = cp.clone();
     for (x, to) in cp.xforms.iter().zip(r.xforms.iter_mut()) {
         apply_motion(x, to, blend);
@@ -94,15 +94,21 @@ pub fn loop_frame(cp: &Flame, blend: f64) -> Flame {
     }
     let kind = r.anim.interpolation_type;
     let mut c = Cp::new(&r);
-    rotate_cp(&mut c, blend * 360.0, kind);
+    rotate_cp(&mut c, blend * 360.0 * turns, kind);
     c.into_flame()
 }
 
 /// A frame of the transition from `pair[0]` to `pair[1]` at `blend` ∈ [0, 1) (flam3-genome's
-/// `sheep_edge`): both flames get their motion at `blend` and are turned by blend × 360°, then
-/// blended with the smooth step of `blend` (`stagger` > 0 lets the xforms change one after
-/// another). `first_or_last`: at blend 0 the first flame is returned as it is.
-pub fn edge_frame(pair: [&Flame; 2], blend: f64, first_or_last: bool, stagger: f64) -> Flame {
+/// `sheep_edge`): both flames get their motion at `blend` and are turned by blend × 360° ×
+/// `turns`, then blended with the smooth step of `blend` (`stagger` > 0 lets the xforms change
+/// one after another). `first_or_last`: at blend 0 the first flame is returned as it is.
+pub fn edge_frame(
+    pair: [&Flame; 2],
+    blend: f64,
+    first_or_last: bool,
+    stagger: f64,
+    turns: f64,
+) -> Flame {
     let prealign: Vec<Cp> = pair
         .iter()
         .map(|f| {
@@ -125,7 +131,7 @@ pub fn edge_frame(pair: [&Flame; 2], blend: f64, first_or_last: bool, stagger: f
         reference_angles(&mut spun);
         let kind = spun[0].flame.anim.interpolation_type;
         for s in &mut spun {
-            rotate_cp(s, blend * 360.0, kind);
+            rotate_cp(s, blend * 360.0 * turns, kind);
         }
         interpolate_cps(&spun, smoother(blend), stagger).into_flame()
     };
@@ -174,8 +180,9 @@ fn reference_angles(cps: &mut [Cp]) {
 
 /// The flames of flam3-genome's `sequence=`: for each flame a loop of `frames` frames (when
 /// `loops`), and a transition of `frames` frames to the next flame; then the last flame once.
-/// Frame k has time k and is named by its time.
-pub fn sequence(cps: &[Flame], frames: usize, loops: bool) -> Vec<Flame> {
+/// Frame k has time k and is named by its time. `turns`: whole turns per loop (flam3: 1); the
+/// sequence is seamless for whole numbers.
+pub fn sequence(cps: &[Flame], frames: usize, loops: bool, turns: f64) -> Vec<Flame> {
     let mut out = Vec::new();
     let nf = frames.max(1);
     let mut push = |mut f: Flame, interp_defaults: bool| {
@@ -192,21 +199,21 @@ pub fn sequence(cps: &[Flame], frames: usize, loops: bool) -> Vec<Flame> {
     for (i, cp) in cps.iter().enumerate() {
         if loops {
             for frame in 0..nf {
-                push(loop_frame(cp, frame as f64 / nf as f64), true);
+                push(loop_frame(cp, frame as f64 / nf as f64, turns), true);
             }
         }
         if let Some(next) = cps.get(i + 1) {
             for frame in 0..nf {
                 let ends = frame == 0 || frame == nf - 1;
                 push(
-                    edge_frame([cp, next], frame as f64 / nf as f64, ends, 0.0),
+                    edge_frame([cp, next], frame as f64 / nf as f64, ends, 0.0, turns),
                     false,
                 );
             }
         }
     }
     if let Some(last) = cps.last() {
-        push(loop_frame(last, 0.0), true);
+        push(loop_frame(last, 0.0, turns), true);
     }
     out
 }

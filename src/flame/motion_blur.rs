@@ -7,6 +7,8 @@
 //! averaged over the sub-frames, density estimation of the first, highlight power of the frame
 //! and the spatial filter of the sequence's first flame.
 
+use rayon::prelude::*;
+
 use crate::flame::interpolate::interpolate_at;
 use crate::flame::model::Flame;
 use crate::flame::sequence::TemporalFilter;
@@ -65,7 +67,7 @@ pub fn frame_from(
     time: f64,
     limit: u32,
     first: &Flame,
-    flame_at: impl Fn(f64) -> Flame,
+    flame_at: impl Fn(f64) -> Flame + Sync,
 ) -> MotionFrame {
     let frame = flame_at(time);
     let mut anim = frame.anim;
@@ -74,27 +76,33 @@ pub fn frame_from(
     let n = filter.deltas.len();
     let (w, h) = (frame.width, frame.height);
     let px = w as f64 * h as f64;
-    let mut subframes = Vec::with_capacity(n);
-    for (delta, weight) in filter.deltas.iter().zip(&filter.weights) {
-        let mut f = if n == 1 {
-            frame.clone()
-        } else {
-            flame_at(time + delta)
-        };
-        // The bucket grid is the frame's; each sub-frame brings its own camera.
-        f.width = w;
-        f.height = h;
-        f.supersample = frame.supersample;
-        f.filter = first.filter;
-        f.filter_shape = first.filter_shape;
-        let density = f.quality.max(0.0) * 4f64.powf(f.zoom);
-        let samples = (density * px / n as f64).round() as u64;
-        subframes.push(SubFrame {
-            flame: f,
-            weight: *weight,
-            samples,
-        });
-    }
+    // Flames at the sub-frame times, made in parallel (a sequence's blend takes tens of
+    // microseconds, and a frame has up to thousands of sub-frames).
+    let subframes: Vec<SubFrame> = filter
+        .deltas
+        .par_iter()
+        .zip(filter.weights.par_iter())
+        .map(|(delta, weight)| {
+            let mut f = if n == 1 {
+                frame.clone()
+            } else {
+                flame_at(time + delta)
+            };
+            // The bucket grid is the frame's; each sub-frame brings its own camera.
+            f.width = w;
+            f.height = h;
+            f.supersample = frame.supersample;
+            f.filter = first.filter;
+            f.filter_shape = first.filter_shape;
+            let density = f.quality.max(0.0) * 4f64.powf(f.zoom);
+            let samples = (density * px / n as f64).round() as u64;
+            SubFrame {
+                flame: f,
+                weight: *weight,
+                samples,
+            }
+        })
+        .collect();
     let k = subframes.len() as f64;
     let mean = |get: fn(&Flame) -> f64| subframes.iter().map(|s| get(&s.flame)).sum::<f64>() / k;
     let mut develop = subframes[subframes.len() - 1].flame.clone();

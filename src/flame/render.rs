@@ -320,11 +320,12 @@ impl Renderer {
         let mut r = Self::build(&frame.develop, opts, plan, &mut Spare::default())?;
         let mut batches = Vec::new();
         for (i, s) in frame.subframes.iter().enumerate() {
-            let mut left = s.samples;
-            while left > 0 {
-                let n = left.min(SUB_BATCH);
+            // Sub-batches of equal size, so that threads taking every other one share the work
+            // evenly.
+            let k = s.samples.div_ceil(SUB_BATCH);
+            for j in 0..k {
+                let n = s.samples * (j + 1) / k - s.samples * j / k;
                 batches.push((i as u32, n as u32));
-                left -= n;
             }
         }
         let total: u64 = frame.total_samples().max(1);

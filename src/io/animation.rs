@@ -113,7 +113,7 @@ impl Source {
         &self,
         time: f64,
         blur: bool,
-        adjust: &dyn Fn(&mut Flame),
+        adjust: &(dyn Fn(&mut Flame) + Sync),
         cursor: &mut Cursor,
     ) -> MotionFrame {
         let limit = if blur { MAX_TEMPORAL_SAMPLES } else { 1 };
@@ -252,7 +252,7 @@ fn png_size(path: &Path) -> Option<(u32, u32)> {
 
 impl Job {
     /// The flame adjustments of the job (size and quality).
-    fn adjust(&self) -> impl Fn(&mut Flame) + '_ {
+    fn adjust(&self) -> impl Fn(&mut Flame) + Sync + '_ {
         move |f: &mut Flame| {
             if let Some((w, h)) = self.size {
                 f.resize_keep_framing(w, h);

@@ -1,12 +1,14 @@
-//! Reading a flame's children: xforms and the final xform, colours, symmetry; anything else
-//! (`<edit>` histories, other programs' elements) is kept verbatim.
+//! Reading a flame's children: xforms (with their `<motion>` elements) and the final xform,
+//! colours, symmetry, ugnis' keyframes; anything else (`<edit>` histories, other programs'
+//! elements) is kept verbatim.
 
 use quick_xml::events::Event;
 
 use super::MAX_XFORMS;
+use super::anim::{keys_curve, keys_key, keys_timeline, motion_from};
 use super::context::{Ctx, R};
 use super::palette::{PaletteData, read_color, read_colors, read_palette};
-use super::xform::read_xform;
+use super::xform::{read_motion_attrs, read_xform};
 use crate::flame::model::{Flame, Xform};
 use crate::flame::symmetry::add_symmetry;
 use crate::io::xml::{Attr, XmlCursor, scan_attrs};
@@ -54,6 +56,12 @@ pub(super) fn read_flame_children(
                         }
                     }
                     "palette" => read_palette(cx, cur, &attrs, start, is_empty, pal)?,
+                    "ugnis_keys" => {
+                        keys_timeline(cx, &attrs, &mut f.keys)?;
+                        if !is_empty {
+                            read_keys(cx, cur, f)?;
+                        }
+                    }
                     _ => {
                         // <edit> and anything else: kept verbatim.
                         let end = if is_empty {
@@ -83,22 +91,89 @@ fn new_xform(cx: &mut Ctx, f: &Flame, attrs: &[Attr], fin: bool, start: usize) -
     read_xform(cx, attrs, fin, parity as f64)
 }
 
-/// The children of an xform, kept verbatim up to its end tag.
-fn read_xform_children(cx: &Ctx, cur: &mut XmlCursor, text: &str, x: &mut Xform) -> R<()> {
+/// The children of an xform up to its end tag: `<motion>` elements read, others kept verbatim.
+fn read_xform_children(cx: &mut Ctx, cur: &mut XmlCursor, text: &str, x: &mut Xform) -> R<()> {
     loop {
         let c = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
-        match c.event {
+        match &c.event {
             Event::End(_) => return Ok(()),
-            Event::Start(_) => {
-                let end = cur
-                    .skip_element()
-                    .map_err(|(o, m)| cx.err(o, "XML001", m))?;
-                x.extra_children.push(text[c.start..end].to_string());
+            Event::Start(e) | Event::Empty(e) => {
+                let is_empty = matches!(c.event, Event::Empty(_));
+                let end = if is_empty {
+                    c.end
+                } else {
+                    cur.skip_element()
+                        .map_err(|(o, m)| cx.err(o, "XML001", m))?
+                };
+                if e.name().as_ref() == "motion" {
+                    if x.motion.len() >= MAX_MOTIONS {
+                        return Err(cx.err(
+                            c.start,
+                            "XML003",
+                            format!("more than {MAX_MOTIONS} <motion> elements in one xform"),
+                        ));
+                    }
+                    let attrs =
+                        scan_attrs(e, c.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                    let delta = read_motion_attrs(cx, &attrs)?;
+                    x.motion.push(motion_from(cx, &attrs, delta, c.start)?);
+                } else {
+                    x.extra_children.push(text[c.start..end].to_string());
+                }
             }
-            Event::Empty(_) => x.extra_children.push(text[c.start..c.end].to_string()),
             Event::Eof => {
                 return Err(cx.err(c.start, "XML001", "end of file inside <xform>"));
             }
+            _ => {}
+        }
+    }
+}
+
+/// Most `<motion>` elements of one xform.
+const MAX_MOTIONS: usize = 1000;
+
+/// The `<curve>` elements of `<ugnis_keys>`, with their `<key>` elements.
+fn read_keys(cx: &mut Ctx, cur: &mut XmlCursor, f: &mut Flame) -> R<()> {
+    // The curve being read (None inside a skipped curve), and the depth of elements.
+    let mut curve: Option<Option<crate::flame::keyframes::Curve>> = None;
+    loop {
+        let c = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
+        match &c.event {
+            Event::End(_) => match curve.take() {
+                Some(done) => f.keys.curves.extend(done),
+                None => return Ok(()),
+            },
+            Event::Start(e) | Event::Empty(e) => {
+                let is_empty = matches!(c.event, Event::Empty(_));
+                let attrs = scan_attrs(e, c.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                match (e.name().as_ref(), &mut curve) {
+                    ("curve", None) => {
+                        let made = keys_curve(cx, &attrs, c.start, &f.keys)?;
+                        if is_empty {
+                            f.keys.curves.extend(made);
+                        } else {
+                            curve = Some(made);
+                        }
+                    }
+                    ("key", Some(cv)) => {
+                        if let Some(cv) = cv {
+                            keys_key(cx, &attrs, c.start, cv)?;
+                        }
+                        if !is_empty {
+                            cur.skip_element()
+                                .map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        }
+                    }
+                    _ => {
+                        cx.ignore(e.name().as_ref());
+                        if !is_empty {
+                            cur.skip_element()
+                                .map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                        }
+                    }
+                }
+            }
+            Event::Eof => return Err(cx.err(c.start, "XML001", "end of file inside <ugnis_keys>")),
             _ => {}
         }
     }

@@ -4,6 +4,7 @@
 use quick_xml::events::BytesStart;
 
 use super::MAX_SIDE;
+use super::anim::anim_attr;
 use super::children::read_flame_children;
 use super::context::{Ctx, R};
 use super::palette::{PaletteData, resolve_palette};
@@ -67,7 +68,8 @@ pub(super) fn read_flame(
     for a in &attrs {
         let handled = camera_attr(cx, &mut f, &mut st, a)?
             || tone_attr(cx, &mut f, &mut st, a)?
-            || palette_attr(cx, &mut f, &mut st, a)?;
+            || palette_attr(cx, &mut f, &mut st, a)?
+            || anim_attr(cx, &mut f, a)?;
         if !handled {
             other_attr(cx, &mut f, a)?;
         }

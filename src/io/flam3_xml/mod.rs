@@ -5,8 +5,8 @@
 //! cannot render — is kept and written back, so a read/write round trip is lossless.
 //!
 //! The reader is [`read`] (the document in `read.rs`, a flame's attributes in `flame.rs`, its
-//! children in `children.rs`, colours in `palette.rs`, xforms in `xform.rs`); the writer is
-//! [`write`] (`write.rs`).
+//! children in `children.rs`, colours in `palette.rs`, xforms in `xform.rs`, animation settings,
+//! `<motion>` elements and keyframes in `anim.rs`); the writer is [`write`] (`write.rs`).
 
 use std::path::PathBuf;
 
@@ -14,6 +14,7 @@ use crate::flame::model::Flame;
 use crate::gradient::Gradient;
 use crate::io::palettes::PaletteLibrary;
 
+mod anim;
 mod children;
 mod context;
 mod flame;

@@ -3,6 +3,7 @@
 
 use std::fmt::Write as _;
 
+use super::anim::{write_anim_attrs, write_keys, write_motion};
 use super::{FLA_FORMAT, FlameFile};
 use crate::flame::model::{Flame, PaletteIndex, Xform};
 use crate::flame::variations;
@@ -134,6 +135,7 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
             let _ = write!(s, " blur_curve=\"{}\"", n(c.blur_curve));
         }
     }
+    write_anim_attrs(s, &f.anim);
     for (k, v) in &f.extra_attrs {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
@@ -146,6 +148,7 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         write_xform(s, fx, "finalxform", &inner);
     }
     write_palette(s, f.render_colors(), &inner);
+    write_keys(s, &f.keys, &inner);
     for c in &f.extra_children {
         let _ = writeln!(s, "{inner}{}", c.trim());
     }
@@ -163,6 +166,10 @@ fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
         let _ = write!(s, " symmetry=\"{}\"", n(1.0 - 2.0 * x.color_speed));
     }
     let _ = write!(s, " color_speed=\"{}\"", n(x.color_speed));
+    // After `symmetry`, which flam3 also reads as `animate`.
+    if x.animate != 1.0 || (x.color_speed != 0.5 && tag == "xform") {
+        let _ = write!(s, " animate=\"{}\"", n(x.animate));
+    }
     if x.opacity != 1.0 {
         let _ = write!(s, " opacity=\"{}\"", n(x.opacity));
     }
@@ -217,12 +224,16 @@ fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
     for (k, v) in &x.extra_attrs {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
-    if x.extra_children.is_empty() {
+    if x.extra_children.is_empty() && x.motion.is_empty() {
         s.push_str("/>\n");
     } else {
         s.push_str(">\n");
+        let inner = format!("{ind}   ");
+        for m in &x.motion {
+            write_motion(s, m, &inner);
+        }
         for c in &x.extra_children {
-            let _ = writeln!(s, "{ind}   {}", c.trim());
+            let _ = writeln!(s, "{inner}{}", c.trim());
         }
         let _ = writeln!(s, "{ind}</{tag}>");
     }

@@ -28,6 +28,9 @@ struct Pending {
     symmetry: Option<f64>,
     params: Vec<Param<f64>>,
     texts: Vec<Param<String>>,
+    animate: Option<f64>,
+    /// Reading a `<motion>` element: values are changes, so any sign is allowed.
+    motion: bool,
 }
 
 /// Set the weight of a variation form (replacing an earlier attribute for the same form; weight
@@ -41,6 +44,16 @@ fn set_var(x: &mut Xform, id: VarId, form: Form, w: f64) {
 
 /// Read the attributes of an `<xform>` (`fin`: a `<finalxform>`); `parity` is its default colour.
 pub(super) fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64) -> R<Xform> {
+    read_xform_as(cx, attrs, fin, parity, false)
+}
+
+/// Read the attributes of a `<motion>` element as an xform of changes (see
+/// `anim::motion_from`, which makes the values it does not name zero).
+pub(super) fn read_motion_attrs(cx: &mut Ctx, attrs: &[Attr]) -> R<Xform> {
+    read_xform_as(cx, attrs, false, 0.0, true)
+}
+
+fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: bool) -> R<Xform> {
     let mut x = Xform {
         weight: 0.0,
         color: parity,
@@ -52,6 +65,8 @@ pub(super) fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64) -
         symmetry: None,
         params: Vec::new(),
         texts: Vec::new(),
+        animate: None,
+        motion,
     };
     let marked_vars = marked_variations(attrs);
     for a in attrs {
@@ -63,6 +78,12 @@ pub(super) fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64) -
         (Some(s), _) => s,
         (None, Some(sig)) => (1.0 - sig) / 2.0,
         (None, None) => 0.5,
+    };
+    // flam3's older `symmetry` also keeps symmetry xforms still in loops.
+    x.animate = match (st.animate, st.symmetry) {
+        (Some(a), _) => a,
+        (None, Some(sig)) if sig > 0.0 => 0.0,
+        _ => 1.0,
     };
     apply_priorities(attrs, &mut x, &mut st);
     attach_params(&mut x, st);
@@ -102,7 +123,7 @@ fn core_attr(cx: &mut Ctx, x: &mut Xform, st: &mut Pending, a: &Attr, fin: bool)
                 code: "XML005",
                 ..d
             })?;
-            if w < 0.0 {
+            if w < 0.0 && !st.motion {
                 return Err(cx.err(
                     a.offset,
                     "XML005",
@@ -127,9 +148,10 @@ fn core_attr(cx: &mut Ctx, x: &mut Xform, st: &mut Pending, a: &Attr, fin: bool)
         }
         "color_speed" => st.color_speed = Some(cx.num(a)?),
         "symmetry" => st.symmetry = Some(cx.num(a)?),
+        "animate" => st.animate = Some(cx.num(a)?),
         "opacity" => {
             let o = cx.num(a)?;
-            if !(0.0..=1.0).contains(&o) {
+            if !(0.0..=1.0).contains(&o) && !st.motion {
                 return Err(cx.err(a.offset, "XML003", format!("opacity {o} must be in 0..1")));
             }
             x.opacity = o;
@@ -251,7 +273,7 @@ fn variation_attr(
             }
         } else if !matches!(
             name,
-            "animate" | "var_color" | "name" | "motion_frequency" | "motion_function"
+            "var_color" | "name" | "motion_frequency" | "motion_function"
         ) {
             cx.ignore(name);
         }
