@@ -229,16 +229,39 @@ pub struct Prepared {
 }
 
 impl Prepared {
-    /// The first `N` values of [`Prepared::p`] — the parameters in [`VarDef::params`] order,
-    /// then the values [`VarDef::prepare`] derived from them — to bind by name:
-    /// `let [power, dist, abs_power] = v.params();`. This is how every formula and `prepare`
-    /// function reads its parameters.
+    /// The first `N` parameters (normalised, in [`VarDef::params`] order), to bind by name:
+    /// `let [power, dist] = v.params();` (`_` for those not read). With [`Prepared::derived`],
+    /// the one way formulas and `prepare` functions read their values.
     #[inline(always)]
     pub fn params<const N: usize>(&self) -> [f64; N] {
+        debug_assert!(
+            N <= self.def.params.len(),
+            "{} has fewer parameters",
+            self.def.name
+        );
         match self.p.first_chunk() {
             Some(a) => *a,
             None => too_few_values(N, self.p.len()),
         }
+    }
+
+    /// The first `N` values [`VarDef::prepare`] derived from the parameters (appended to
+    /// [`Prepared::p`] after them), to bind by name: `let [abs_power, cn] = v.derived();`.
+    #[inline(always)]
+    pub fn derived<const N: usize>(&self) -> [f64; N] {
+        let values = &self.p[self.def.params.len()..];
+        match values.first_chunk() {
+            Some(a) => *a,
+            None => too_few_values(N, values.len()),
+        }
+    }
+
+    /// The derived values from index `from` on (0 being the first value after the parameters):
+    /// a table [`VarDef::prepare`] appended (cell sites, symmetry maps, drawing segments), read
+    /// by position.
+    #[inline(always)]
+    pub fn table(&self, from: usize) -> &[f64] {
+        &self.p[self.def.params.len() + from..]
     }
 
     /// The shared data ([`Prepared::data`]); empty for a variation without.

@@ -754,32 +754,28 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(batch::<98>),
 ];
 
-/// Derived values in slots 8–11 (parameters occupy slots 0–7).
+/// The derived values of the variations that have any, appended after the parameters.
 fn prepare(v: &mut Prepared) {
-    let id = v.id;
-    let w = v.w;
-    let compat = v.compat;
-    let p = &mut v.p;
-    p.resize(12, 0.0);
-    match id {
+    let (w, compat) = (v.w, v.compat);
+    let derived: &[f64] = match v.id {
         PERSPECTIVE => {
-            let ang = p[0] * PI / 2.0;
-            p[8] = ang.sin();
-            p[9] = p[1] * ang.cos();
+            let [angle, dist] = v.params();
+            let ang = angle * PI / 2.0;
+            &[ang.sin(), dist * ang.cos()]
         }
         JULIAN | JULIASCOPE => {
-            p[0] = zeps(p[0]);
-            p[8] = p[0].abs();
-            p[9] = p[1] / p[0] / 2.0;
+            let [power, dist] = v.params();
+            let power = zeps(power);
+            v.p[0] = power;
+            &[power.abs(), dist / power / 2.0]
         }
         RADIAL_BLUR => {
-            let ang = p[0] * PI / 2.0;
-            p[8] = ang.sin();
-            p[9] = ang.cos();
+            let [angle] = v.params();
+            let ang = angle * PI / 2.0;
+            &[ang.sin(), ang.cos()]
         }
         DISC2 => {
-            let (rot, twist) = (p[0], p[1]);
-            p[8] = rot * PI;
+            let [rot, twist] = v.params();
             let mut sinadd = twist.sin();
             let mut cosadd = twist.cos() - 1.0;
             if twist > 2.0 * PI {
@@ -792,66 +788,76 @@ fn prepare(v: &mut Prepared) {
                 cosadd *= k;
                 sinadd *= k;
             }
-            p[9] = sinadd;
-            p[10] = cosadd;
+            &[rot * PI, sinadd, cosadd]
         }
         SUPER_SHAPE => {
-            p[8] = p[1] / 4.0;
-            p[9] = -1.0 / p[2];
+            let [_, m, n1] = v.params();
+            &[m / 4.0, -1.0 / n1]
         }
         NGON => {
-            p[8] = -0.5 * p[1];
-            p[9] = 2.0 * PI / p[0];
-            p[10] = 1.0 / p[9];
+            let [sides, power] = v.params();
+            let sector = 2.0 * PI / sides;
+            &[-0.5 * power, sector, 1.0 / sector]
         }
         CPOW => {
-            p[8] = 2.0 * PI / p[2];
-            p[9] = p[0] / p[2];
-            p[10] = p[1] / p[2];
+            let [r, i, power] = v.params();
+            &[2.0 * PI / power, r / power, i / power]
         }
         CURVE => {
+            let [_, _, xlength, ylength] = v.params();
             if compat {
-                p[8] = 1.0 / (p[2] * p[2]).max(1e-20);
-                p[9] = 1.0 / (p[3] * p[3]).max(1e-20);
+                &[
+                    1.0 / (xlength * xlength).max(1e-20),
+                    1.0 / (ylength * ylength).max(1e-20),
+                ]
             } else {
-                p[8] = 1.0 / zeps(p[2]);
-                p[9] = 1.0 / zeps(p[3]);
+                &[1.0 / zeps(xlength), 1.0 / zeps(ylength)]
             }
         }
         ESCHER => {
-            p[8] = 0.5 * (1.0 + p[0].cos());
-            p[9] = 0.5 * p[0].sin();
+            let [beta] = v.params();
+            &[0.5 * (1.0 + beta.cos()), 0.5 * beta.sin()]
         }
         WEDGE_JULIA => {
-            // params: angle, count, power, dist
-            p[8] = 1.0 - p[0] * p[1] / (2.0 * PI);
-            p[9] = p[2].abs();
-            p[10] = p[3] / p[2] / 2.0;
+            let [angle, count, power, dist] = v.params();
+            &[
+                1.0 - angle * count / (2.0 * PI),
+                power.abs(),
+                dist / power / 2.0,
+            ]
         }
         FAN2 => {
-            p[8] = PI * zeps(p[0] * p[0]);
-            p[9] = 0.5 * p[8];
+            let [x] = v.params();
+            let dx = PI * zeps(x * x);
+            &[dx, 0.5 * dx]
         }
-        RINGS2 => p[8] = zeps(p[0] * p[0]),
+        RINGS2 => {
+            let [val] = v.params();
+            &[zeps(val * val)]
+        }
         BIPOLAR => {
-            p[8] = -FRAC_PI_2 * p[0];
-            p[9] = w * std::f64::consts::FRAC_2_PI;
-            p[10] = w * 0.25 * std::f64::consts::FRAC_2_PI;
+            let [shift] = v.params();
+            let k = std::f64::consts::FRAC_2_PI;
+            &[-FRAC_PI_2 * shift, w * k, w * 0.25 * k]
         }
-        LOONIE => p[8] = w * w,
-        SCRY => p[8] = 1.0 / zeps(w),
+        LOONIE => &[w * w],
+        SCRY => &[1.0 / zeps(w)],
         WEDGE_SPH => {
-            p[8] = 1.0 - p[0] * p[1] * (1.0 / PI) * 0.5;
+            let [angle, count] = v.params();
+            &[1.0 - angle * count * (1.0 / PI) * 0.5]
         }
         OSCILLOSCOPE => {
-            p[8] = 2.0 * PI * p[1];
+            let [_, frequency] = v.params();
+            &[2.0 * PI * frequency]
         }
+        // Natural logarithm of r for base e; another base scales it.
         LOG => {
-            // Natural logarithm of r for base e; another base scales it.
-            p[8] = w * 0.5 / p[0].ln();
+            let [base] = v.params();
+            &[w * 0.5 / base.ln()]
         }
-        _ => {}
-    }
+        _ => &[],
+    };
+    v.p.extend_from_slice(derived);
 }
 
 #[inline(always)]
@@ -879,7 +885,10 @@ fn z_out(id: u16, v: &Prepared, t: &VarIn) -> f64 {
         }
         BUBBLE => v.w * (2.0 / zeps((0.25 * t.sumsq + 1.0) - 1.0)),
         CYLINDER => v.w * t.x.cos(),
-        WAVES2 => v.w * (t.z + v.p[5] * (t.sqrt * v.p[4]).sin()),
+        WAVES2 => {
+            let [_, _, _, _, freqz, scalez] = v.params();
+            v.w * (t.z + scalez * (t.sqrt * freqz).sin())
+        }
         FLUX => t.z,
         BIPOLAR => {
             let g = t.sumsq + 1.0 - 2.0 * t.x;
@@ -1009,7 +1018,6 @@ fn batch_loop<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mu
 #[inline(always)]
 fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) -> (f64, f64) {
     let w = v.w;
-    let p = &v.p;
     let (x, y) = (t.x, t.y);
     match id {
         LINEAR => (w * x, w * y),
@@ -1139,22 +1147,24 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * c, r * s)
         }
         BLOB => {
-            let (low, high, waves) = (p[0], p[1], p[2]);
+            let [low, high, waves] = v.params();
             let r = t.sqrt * (low + (high - low) * (0.5 + 0.5 * fm::sin(waves * t.atan_xy)));
             (w * t.ux * r, w * t.uy * r)
         }
         PDJ => {
-            let nx1 = fm::cos(p[1] * x);
-            let nx2 = fm::sin(p[0] * y);
-            let ny1 = fm::sin(p[2] * x);
-            let ny2 = fm::cos(p[3] * y);
+            let [a, b, c, d] = v.params();
+            let nx1 = fm::cos(b * x);
+            let nx2 = fm::sin(a * y);
+            let ny1 = fm::sin(c * x);
+            let ny2 = fm::cos(d * y);
             (w * (nx2 - nx1), w * (ny1 - ny2))
         }
         FAN2 => {
-            let (dx, dx2) = (p[8], p[9]);
+            let [_, fan_y] = v.params();
+            let [dx, dx2] = v.derived();
             let mut a = t.atan_xy;
             let r = w * t.sqrt;
-            if fm::fmod(a + p[1], dx) > dx2 {
+            if fm::fmod(a + fan_y, dx) > dx2 {
                 a -= dx2;
             } else {
                 a += dx2;
@@ -1167,8 +1177,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             }
         }
         RINGS2 => {
+            let [dx] = v.derived();
             let mut r = t.sqrt;
-            let dx = p[8];
             r += -2.0 * dx * ((r + dx) / (2.0 * dx)).trunc() + r * (1.0 - dx);
             (w * t.ux * r, w * t.uy * r)
         }
@@ -1182,8 +1192,10 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         CYLINDER => (w * fm::sin(x), w * y),
         PERSPECTIVE => {
-            let d = w / zeps(p[1] - y * p[8]);
-            (d * p[1] * x, d * p[9] * y)
+            let [_, dist] = v.params();
+            let [vsin, vfcos] = v.derived();
+            let d = w / zeps(dist - y * vsin);
+            (d * dist * x, d * vfcos * y)
         }
         NOISE => {
             let a = rng.f01() * 2.0 * PI;
@@ -1192,32 +1204,36 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (x * r * c, y * r * s)
         }
         JULIAN => {
-            let r = w * fm::pow_nonneg(t.sumsq, p[9]);
+            let [power] = v.params();
+            let [abs_power, cn] = v.derived();
+            let r = w * fm::pow_nonneg(t.sumsq, cn);
             let a = if v.compat {
-                let k = rand_size(rng, p[8]);
-                (t.atan_yx + 2.0 * PI * k) / p[0]
+                let k = rand_size(rng, abs_power);
+                (t.atan_yx + 2.0 * PI * k) / power
             } else {
-                let root = (p[0] * rng.f01()).trunc();
-                (t.atan_yx + root * 2.0 * PI) / p[0]
+                let root = (power * rng.f01()).trunc();
+                (t.atan_yx + root * 2.0 * PI) / power
             };
             let (s, c) = sincos(a);
             (r * c, r * s)
         }
         JULIASCOPE => {
-            let r = w * fm::pow_nonneg(t.sumsq, p[9]);
+            let [power] = v.params();
+            let [abs_power, cn] = v.derived();
+            let r = w * fm::pow_nonneg(t.sumsq, cn);
             let a = if v.compat {
-                let k = (p[8] * rng.f01()).trunc();
+                let k = (abs_power * rng.f01()).trunc();
                 if (k as i64) & 1 == 0 {
-                    (2.0 * PI * k + t.atan_yx) / p[0]
+                    (2.0 * PI * k + t.atan_yx) / power
                 } else {
-                    (2.0 * PI * k - t.atan_yx) / p[0]
+                    (2.0 * PI * k - t.atan_yx) / power
                 }
             } else {
                 // Roots alternate between the angle and its mirror image.
-                let root = (p[0] * rng.f01()).floor();
+                let root = (power * rng.f01()).floor();
                 let odd = root - 2.0 * (root * 0.5).floor() == 1.0;
                 let sgn = if odd { -1.0 } else { 1.0 };
-                (t.atan_yx * sgn + root * 2.0 * PI) / zeps(p[0])
+                (t.atan_yx * sgn + root * 2.0 * PI) / zeps(power)
             };
             let (s, c) = sincos(a);
             (r * c, r * s)
@@ -1235,15 +1251,16 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * c, r * s)
         }
         RADIAL_BLUR => {
+            let [spin, zoom] = v.derived();
             let rnd_g = w * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
             let ra = t.sqrt;
-            let tmpa = t.atan_yx + p[8] * rnd_g;
+            let tmpa = t.atan_yx + spin * rnd_g;
             let (s, c) = sincos(tmpa);
-            let rz = p[9] * rnd_g - 1.0;
+            let rz = zoom * rnd_g - 1.0;
             (ra * c + rz * x, ra * s + rz * y)
         }
         PIE => {
-            let (slices, rotation, thickness) = (p[0], p[1], p[2]);
+            let [slices, rotation, thickness] = v.params();
             let sl = (rng.f01() * slices + 0.5).trunc();
             let a = rotation + 2.0 * PI * (sl + rng.f01() * thickness) / slices;
             let r = w * rng.f01();
@@ -1251,14 +1268,14 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * c, r * s)
         }
         NGON => {
-            let (circle, corners) = (p[2], p[3]);
+            let [_, _, circle, corners] = v.params();
+            let [half_neg_power, b, inv_sector] = v.derived();
             let r_factor = if x == 0.0 && y == 0.0 {
                 0.0
             } else {
-                t.sumsq.powf(p[8])
+                t.sumsq.powf(half_neg_power)
             };
-            let b = p[9];
-            let mut phi = t.atan_yx - b * (t.atan_yx * p[10]).floor();
+            let mut phi = t.atan_yx - b * (t.atan_yx * inv_sector).floor();
             if phi > 0.5 * b {
                 phi -= b;
             }
@@ -1266,14 +1283,14 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (amp * x, amp * y)
         }
         CURL => {
-            let (c1, c2) = (p[0], p[1]);
+            let [c1, c2] = v.params();
             let re = 1.0 + c1 * x + c2 * (x * x - y * y);
             let im = (c1 + 2.0 * c2 * x) * y;
             let r = w / zeps(re * re + im * im);
             ((x * re + y * im) * r, (y * re - x * im) * r)
         }
         RECTANGLES => {
-            let (rx, ry) = (p[0], p[1]);
+            let [rx, ry] = v.params();
             let nx = if rx == 0.0 {
                 x
             } else {
@@ -1329,48 +1346,53 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (x * r, y * r)
         }
         DISC2 => {
-            let tt = p[8] * (x + y);
+            let [time_pi, sinadd, cosadd] = v.derived();
+            let tt = time_pi * (x + y);
             let (s, c) = sincos(tt);
             let r = w * t.atan_xy / PI;
-            ((s + p[10]) * r, (c + p[9]) * r)
+            ((s + cosadd) * r, (c + sinadd) * r)
         }
         SUPER_SHAPE => {
-            let (rnd, n2, n3, holes) = (p[0], p[3], p[4], p[5]);
-            let theta = p[8] * t.atan_yx + FRAC_PI_4;
+            let [rnd, _, _, n2, n3, holes] = v.params();
+            let [m_4, neg_inv_n1] = v.derived();
+            let theta = m_4 * t.atan_yx + FRAC_PI_4;
             let (st, ct) = sincos(theta);
             let t1 = ct.abs().powf(n2);
             let t2 = st.abs().powf(n3);
-            let r = w * ((rnd * rng.f01() + (1.0 - rnd) * t.sqrt) - holes) * (t1 + t2).powf(p[9])
-                / t.sqrt;
+            let r =
+                w * ((rnd * rng.f01() + (1.0 - rnd) * t.sqrt) - holes) * (t1 + t2).powf(neg_inv_n1)
+                    / t.sqrt;
             (r * x, r * y)
         }
         FLOWER => {
-            let (petals, holes) = (p[0], p[1]);
+            let [petals, holes] = v.params();
             let r = w * (rng.f01() - holes) * fm::cos(petals * t.atan_yx) / t.sqrt;
             (r * x, r * y)
         }
         CONIC => {
-            let (ecc, holes) = (p[0], p[1]);
+            let [ecc, holes] = v.params();
             let z = zeps(t.sqrt);
             let ct = x / z;
             let r = w * (rng.f01() - holes) * ecc / (1.0 + ecc * ct) / z;
             (r * x, r * y)
         }
         PARABOLA => {
-            let (height, width) = (p[0], p[1]);
+            let [height, width] = v.params();
             let (sr, cr) = sincos(t.sqrt);
             (height * w * sr * sr * rng.f01(), width * w * cr * rng.f01())
         }
         BENT2 => {
-            let nx = if x < 0.0 { x * p[0] } else { x };
-            let ny = if y < 0.0 { y * p[1] } else { y };
+            let [scale_x, scale_y] = v.params();
+            let nx = if x < 0.0 { x * scale_x } else { x };
+            let ny = if y < 0.0 { y * scale_y } else { y };
             (w * nx, w * ny)
         }
         BIPOLAR => {
+            let [shift_angle, y_scale, x_scale] = v.derived();
             let x2y2 = t.sumsq;
             let tt = x2y2 + 1.0;
             let x2 = 2.0 * x;
-            let mut ny = 0.5 * (2.0 * y).atan2(x2y2 - 1.0) + p[8];
+            let mut ny = 0.5 * (2.0 * y).atan2(x2y2 - 1.0) + shift_angle;
             if ny > FRAC_PI_2 {
                 ny = -FRAC_PI_2 + fm::fmod(ny + FRAC_PI_2, PI);
             } else if ny < -FRAC_PI_2 {
@@ -1388,7 +1410,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
                     (x, y)
                 }
             } else {
-                (p[10] * fg.ln(), p[9] * ny)
+                (x_scale * fg.ln(), y_scale * ny)
             }
         }
         BOARDERS => {
@@ -1429,7 +1451,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * x, r * y2)
         }
         CELL => {
-            let size = p[0];
+            let [size] = v.params();
             let inv = 1.0 / size;
             let mut cx = (x * inv).floor();
             let mut cy = (y * inv).floor();
@@ -1453,18 +1475,23 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * (dx + cx * size), -w * (dy + cy * size))
         }
         CPOW => {
+            let [_, _, power] = v.params();
+            let [va, vc, vd] = v.derived();
             let a = t.atan_yx;
             let lnr = 0.5 * t.sumsq.ln();
-            let (va, vc, vd) = (p[8], p[9], p[10]);
-            let ang = vc * a + vd * lnr + va * (p[2] * rng.f01()).floor();
+            let ang = vc * a + vd * lnr + va * (power * rng.f01()).floor();
             let m = w * (vc * lnr - vd * a).exp();
             let (s, c) = sincos(ang);
             (m * c, m * s)
         }
-        CURVE => (
-            w * (x + p[0] * (-y * y * p[8]).exp()),
-            w * (y + p[1] * (-x * x * p[9]).exp()),
-        ),
+        CURVE => {
+            let [xamp, yamp] = v.params();
+            let [inv_xlen2, inv_ylen2] = v.derived();
+            (
+                w * (x + xamp * (-y * y * inv_xlen2).exp()),
+                w * (y + yamp * (-x * x * inv_ylen2).exp()),
+            )
+        }
         EDISC => {
             let tmp = t.sumsq + 1.0;
             let tmp2 = 2.0 * x;
@@ -1501,10 +1528,11 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             )
         }
         ESCHER => {
+            let [vc, vd] = v.derived();
             let a = if v.compat { t.atan_yx } else { t.atan_xy };
             let lnr = 0.5 * t.sumsq.ln();
-            let m = w * (p[8] * lnr - p[9] * a).exp();
-            let n = p[8] * a + p[9] * lnr;
+            let m = w * (vc * lnr - vd * a).exp();
+            let n = vc * a + vd * lnr;
             let (s, c) = sincos(n);
             (m * c, m * s)
         }
@@ -1516,7 +1544,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (tmp * (expx - expnx), tmp * sn)
         }
         LAZYSUSAN => {
-            let (spin, space, twist, lx, ly) = (p[0], p[1], p[2], p[3], p[4]);
+            let [spin, space, twist, lx, ly] = v.params();
             let xx = x - lx;
             let yy = y + ly;
             let r = (xx * xx + yy * yy).sqrt();
@@ -1530,8 +1558,8 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             }
         }
         LOONIE => {
+            let [w2] = v.derived();
             let r2 = t.sumsq;
-            let w2 = p[8];
             if r2 < w2 && r2 != 0.0 {
                 let r = w * (w2 / r2 - 1.0).sqrt();
                 (r * x, r * y)
@@ -1541,7 +1569,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
         }
         PRE_BLUR => (0.0, 0.0),
         MODULUS => {
-            let (mx, my) = (p[0], p[1]);
+            let [mx, my] = v.params();
             let (xr, yr) = (2.0 * mx, 2.0 * my);
             let nx = if x > mx {
                 -mx + fm::fmod(x + mx, xr)
@@ -1560,11 +1588,12 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * nx, w * ny)
         }
         OSCILLOSCOPE => {
-            let (sep, amp, damping) = (p[0], p[2], p[3]);
+            let [sep, _, amp, damping] = v.params();
+            let [tpf] = v.derived();
             let tt = if damping == 0.0 {
-                amp * fm::cos(p[8] * x) + sep
+                amp * fm::cos(tpf * x) + sep
             } else {
-                amp * (-x.abs() * damping).exp() * fm::cos(p[8] * x) + sep
+                amp * (-x.abs() * damping).exp() * fm::cos(tpf * x) + sep
             };
             if y.abs() <= tt {
                 (w * x, -w * y)
@@ -1576,16 +1605,20 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let p2v = w / PI;
             (p2v * t.atan_xy, p2v * 0.5 * t.sumsq.ln())
         }
-        POPCORN2 => (
-            w * (x + p[0] * fm::sin(fm::tan(y * p[2]))),
-            w * (y + p[1] * fm::sin(fm::tan(x * p[2]))),
-        ),
+        POPCORN2 => {
+            let [amp_x, amp_y, c] = v.params();
+            (
+                w * (x + amp_x * fm::sin(fm::tan(y * c))),
+                w * (y + amp_y * fm::sin(fm::tan(x * c))),
+            )
+        }
         SCRY => {
-            let r = 1.0 / zeps(t.sqrt * (t.sumsq + p[8]));
+            let [inv_w] = v.derived();
+            let r = 1.0 / zeps(t.sqrt * (t.sumsq + inv_w));
             (x * r, y * r)
         }
         SEPARATION => {
-            let (sx, sxi, sy, syi) = (p[0], p[1], p[2], p[3]);
+            let [sx, sxi, sy, syi] = v.params();
             let sx2 = sx * sx;
             let sy2 = sy * sy;
             let nx = if x > 0.0 {
@@ -1601,12 +1634,13 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (nx, ny)
         }
         SPLIT => {
-            let ny = if fm::cos(x * p[0] * PI) >= 0.0 {
+            let [xsize, ysize] = v.params();
+            let ny = if fm::cos(x * xsize * PI) >= 0.0 {
                 w * y
             } else {
                 -w * y
             };
-            let nx = if fm::cos(y * p[1] * PI) >= 0.0 {
+            let nx = if fm::cos(y * ysize * PI) >= 0.0 {
                 w * x
             } else {
                 -w * x
@@ -1614,26 +1648,19 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (nx, ny)
         }
         SPLITS => {
-            let nx = if x >= 0.0 {
-                w * (x + p[0])
-            } else {
-                w * (x - p[0])
-            };
-            let ny = if y >= 0.0 {
-                w * (y + p[1])
-            } else {
-                w * (y - p[1])
-            };
+            let [dx, dy] = v.params();
+            let nx = if x >= 0.0 { w * (x + dx) } else { w * (x - dx) };
+            let ny = if y >= 0.0 { w * (y + dy) } else { w * (y - dy) };
             (nx, ny)
         }
         STRIPES => {
-            let (space, warp) = (p[0], p[1]);
+            let [space, warp] = v.params();
             let rx = (x + 0.5).floor();
             let ox = x - rx;
             (w * (ox * (1.0 - space) + rx), w * (y + ox * ox * warp))
         }
         WEDGE => {
-            let (angle, hole, count, swirl) = (p[0], p[1], p[2], p[3]);
+            let [angle, hole, count, swirl] = v.params();
             let r = t.sqrt;
             let mut a = t.atan_yx + swirl * r;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
@@ -1644,28 +1671,30 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (r * co, r * s)
         }
         WEDGE_JULIA => {
-            let (angle, count, power) = (p[0], p[1], p[2]);
-            let r = w * fm::pow_nonneg(t.sumsq, p[10]);
-            let k = rand_size(rng, p[9]);
+            let [angle, count, power] = v.params();
+            let [cf, abs_power, cn] = v.derived();
+            let r = w * fm::pow_nonneg(t.sumsq, cn);
+            let k = rand_size(rng, abs_power);
             let mut a = (t.atan_yx + 2.0 * PI * k) / power;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
-            a = a * p[8] + c * angle;
+            a = a * cf + c * angle;
             let (s, co) = sincos(a);
             (r * co, r * s)
         }
         WEDGE_SPH => {
-            let (angle, count, hole, swirl) = (p[0], p[1], p[2], p[3]);
+            let [angle, count, hole, swirl] = v.params();
+            let [cf] = v.derived();
             let r = 1.0 / zeps(t.sqrt);
             let mut a = t.atan_yx + swirl * r;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
-            a = a * p[8] + c * angle;
+            a = a * cf + c * angle;
             let r = w * (r + hole);
             // The angle is huge near the origin: the exact reduction of the std library.
             let (s, co) = a.sin_cos();
             (r * co, r * s)
         }
         WHORL => {
-            let (inside, outside) = (p[0], p[1]);
+            let [inside, outside] = v.params();
             let r = t.sqrt;
             let a = if r < w {
                 t.atan_yx + inside / (w - r)
@@ -1676,7 +1705,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * r * c, w * r * s)
         }
         WAVES2 => {
-            let (freqx, scalex, freqy, scaley) = (p[0], p[1], p[2], p[3]);
+            let [freqx, scalex, freqy, scaley] = v.params();
             (
                 w * (x + scalex * fm::sin(y * freqx)),
                 w * (y + scaley * fm::sin(x * freqy)),
@@ -1687,7 +1716,10 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             let (s, c) = sincos(y);
             (w * e * c, w * e * s)
         }
-        LOG => (t.sumsq.ln() * p[8], w * t.atan_yx),
+        LOG => {
+            let [denom] = v.derived();
+            (t.sumsq.ln() * denom, w * t.atan_yx)
+        }
         SIN => {
             let (x, y) = if v.compat {
                 (x, y)
@@ -1815,7 +1847,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             }
         }
         AUGER => {
-            let (freq, aw, sym, scale) = (p[0], p[1], p[2], p[3]);
+            let [freq, aw, sym, scale] = v.params();
             let s = fm::sin(freq * x);
             let tt = fm::sin(freq * y);
             let dy = y + aw * (scale * s / 2.0 + y.abs() * s);
@@ -1823,7 +1855,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (w * (x + sym * (dx - x)), w * dy)
         }
         FLUX => {
-            let spread = p[0];
+            let [spread] = v.params();
             let xpw = x + w;
             let xmw = x - w;
             let avgr = w
@@ -1834,8 +1866,7 @@ fn formula(id: u16, v: &Prepared, t: &VarIn, aff: &Affine, rng: &mut FastRng) ->
             (avgr * c, avgr * s)
         }
         MOBIUS => {
-            let (rea, ima, reb, imb, rec, imc, red, imd) =
-                (p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+            let [rea, ima, reb, imb, rec, imc, red, imd] = v.params();
             let re_u = rea * x - ima * y + reb;
             let im_u = rea * y + ima * x + imb;
             let re_v = rec * x - imc * y + red;

@@ -361,14 +361,16 @@ fn arcsech_raw(t: &VarIn) -> Cplx {
 
 /// Inverse hyperbolic secant, scaled by w/π: the plane maps into the strip |y| ≤ w.
 fn arcsech(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let r = arcsech_raw(t).scale(v.p[0]);
+    let [k] = v.derived();
+    let r = arcsech_raw(t).scale(k);
     [r.re, r.im, 0.0]
 }
 
 /// Inverse hyperbolic secant scaled by 2w/π, with the two halves of the strip swapped and
 /// mirrored so that they tile around the real axis.
 fn arcsech2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let r = arcsech_raw(t).scale(v.p[0]);
+    let [k] = v.derived();
+    let r = arcsech_raw(t).scale(k);
     if r.im < 0.0 {
         [r.re, r.im + 1.0, 0.0]
     } else {
@@ -378,21 +380,24 @@ fn arcsech2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Inverse hyperbolic sine ln(z + √(z² + 1)), scaled by 2w/π: a strip again.
 fn arcsinh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [k] = v.derived();
     let z = Cplx::new(t.x, t.y);
-    let r = (z + (z * z).add_re(1.0).sqrt()).ln().scale(v.p[0]);
+    let r = (z + (z * z).add_re(1.0).sqrt()).ln().scale(k);
     [r.re, r.im, 0.0]
 }
 
 /// Twice the inverse hyperbolic tangent, ln((1 + z)/(1 − z)), scaled by w/π.
 fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [k] = v.derived();
     let z = Cplx::new(t.x, t.y);
-    let r = (z.add_re(1.0) / (-z).add_re(1.0)).ln().scale(v.p[0]);
+    let r = (z.add_re(1.0) / (-z).add_re(1.0)).ln().scale(k);
     [r.re, r.im, 0.0]
 }
 
 /// Derived values: sin πα, cos πα.
 fn prep_asteria(v: &mut Prepared) {
-    let (s, c) = (PI * v.p[0]).sin_cos();
+    let [alpha] = v.params();
+    let (s, c) = (PI * alpha).sin_cos();
     v.p.push(s);
     v.p.push(c);
 }
@@ -401,7 +406,7 @@ fn prep_asteria(v: &mut Prepared) {
 /// on (±1, ±1) stay (65 % of the time, the other points always move); the others are pushed
 /// along a rotated axis onto the star's arms.
 fn asteria(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (s, c) = (v.p[1], v.p[2]);
+    let [s, c] = v.derived();
     let (x0, y0) = (v.w * t.x, v.w * t.y);
     let inside_disc = x0 * x0 + y0 * y0 < 1.0;
     let near_corner = (sqr(y0.abs() - 1.0) + sqr(x0.abs() - 1.0)).sqrt() < 1.0;
@@ -426,7 +431,7 @@ fn asteria(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Barycentric coordinates (u, v) of the point in the basis (a, b), (c, d), each combined
 /// in quadrature with the matching input coordinate (keeping the sign of u or v); z is scaled.
 fn barycentroid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (a, b, c, d) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [a, b, c, d] = v.params();
     let g00 = a * a + b * b;
     let g01 = a * c + b * d;
     let g11 = c * c + d * d;
@@ -442,7 +447,8 @@ fn barycentroid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values: |border width|, |border width| / 5.
 fn prep_bcircle(v: &mut Prepared) {
-    let bw = v.p[1].abs();
+    let [_, borderwidth] = v.params();
+    let bw = borderwidth.abs();
     v.p.push(bw);
     v.p.push(0.2 * bw);
 }
@@ -450,21 +456,23 @@ fn prep_bcircle(v: &mut Prepared) {
 /// Keeps the scaled point inside the unit disc; outside it, the point goes to a random radius
 /// in a thin ring just beyond the circle (or to the origin when the ring has no width).
 fn bcircle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (x, y) = (t.x * v.p[0], t.y * v.p[0]);
+    let [scale] = v.params();
+    let [bw, bw_fifth] = v.derived();
+    let (x, y) = (t.x * scale, t.y * scale);
     if (x * x + y * y).sqrt() <= 1.0 {
         return [v.w * x, v.w * y, 0.0];
     }
-    if v.p[2] == 0.0 {
+    if bw == 0.0 {
         return [0.0, 0.0, 0.0];
     }
     let (s, c) = y.atan2(x).sin_cos();
-    let rad = v.w * (v.p[3] * rng.f01() + 1.0);
+    let rad = v.w * (bw_fifth * rng.f01() + 1.0);
     [rad * c, rad * s, 0.0]
 }
 
 /// Derived values: num/π, π/num, π·a/num.
 fn prep_bcollide(v: &mut Prepared) {
-    let (a, num) = (v.p[0], v.p[1]);
+    let [a, num] = v.params();
     let n = zeps(num);
     v.p.push(num * FRAC_1_PI);
     v.p.push(PI / n);
@@ -474,7 +482,7 @@ fn prep_bcollide(v: &mut Prepared) {
 /// Bipolar coordinates: the angle σ is cut into `num` sectors, alternately rotated by ±πa/num
 /// (modulo the sector), which makes the circles through the foci collide and interleave.
 fn bcollide(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (n_pi, pi_n, a_n) = (v.p[2], v.p[3], v.p[4]);
+    let [n_pi, pi_n, a_n] = v.derived();
     let (tau, sigma) = bipolar(t.x, t.y);
     let sector = trunc_i32(sigma * n_pi);
     let shift = if sector & 1 == 0 { a_n } else { -a_n };
@@ -499,7 +507,7 @@ fn blade3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Derived value: the compensation divisor 1 + compensation·|symmetry|.
 fn prep_blob2(v: &mut Prepared) {
-    let (sym, comp) = (v.p[5], v.p[6]);
+    let [_, _, _, _, _, sym, comp] = v.params();
     let flip = if sym < 0.0 { -1.0 } else { 1.0 };
     v.p.push(1.0 + comp * sym * flip);
 }
@@ -507,9 +515,8 @@ fn prep_blob2(v: &mut Prepared) {
 /// Blob with a hole: inside `radius` the point is kept; outside, its distance beyond the radius
 /// is modulated by a power of the angular wave sin(n·θ) + symmetry.
 fn blob2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [mode, n, radius, pre, post, sym, _comp, help] = v.p[..8] else {
-        unreachable!()
-    };
+    let [mode, n, radius, pre, post, sym, _comp] = v.params();
+    let [help] = v.derived();
     if t.sqrt < radius {
         // Fractorium leaves z unset on this branch; the point keeps its default z.
         return [v.w * t.x, v.w * t.y, v.default_z(t)];
@@ -525,9 +532,7 @@ fn blob2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// 3-D blob: the radius oscillates between `low` and `high` with the angle atan2(x, y), and the
 /// same wave lifts the point in z.
 fn blob3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [low, high, waves] = v.p[..3] else {
-        unreachable!()
-    };
+    let [low, high, waves] = v.params();
     let wave = (waves * t.atan_xy).sin();
     let r = t.sqrt * (low + (high - low) * (0.5 + 0.5 * wave));
     [v.w * t.ux * r, v.w * t.uy * r, v.w * wave * r]
@@ -557,9 +562,7 @@ fn block(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// `block` with independent x/y scales, divided by 1 + (cos x + cos y)/mp, which bulges the
 /// square into rounded blocks.
 fn blocky(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [sx, sy, mp] = v.p[..3] else {
-        unreachable!()
-    };
+    let [sx, sy, mp] = v.params();
     let r = v.w / zeps((t.x.cos() + t.y.cos()) / mp + 1.0);
     let k = v.w / FRAC_PI_2;
     [
@@ -593,7 +596,7 @@ fn blur_circle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A random point inside a heart-shaped outline |x|^p, ±√(1 − x²) (scaled by a and b).
 fn blur_heart(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [pw, a, b] = v.p[..3] else { unreachable!() };
+    let [pw, a, b] = v.params();
     let x = (rng.f01() - 0.5) * 2.0;
     let mut y = (rng.f01() - 0.5) * 2.0;
     let k = sign_nz(y);
@@ -611,20 +614,24 @@ fn blur_heart(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Derived values: sin and cos of the angle.
 fn prep_blur_linear(v: &mut Prepared) {
-    let (s, c) = v.p[1].sin_cos();
+    let [_, angle] = v.params();
+    let (s, c) = angle.sin_cos();
     v.p.push(s);
     v.p.push(c);
 }
 
 /// Motion blur: the point is pushed a random distance up to `length` along a fixed direction.
 fn blur_linear(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let d = v.p[0] * rng.f01();
-    [v.w * (t.x + d * v.p[3]), v.w * (t.y + d * v.p[2]), 0.0]
+    let [length] = v.params();
+    let [s, c] = v.derived();
+    let d = length * rng.f01();
+    [v.w * (t.x + d * c), v.w * (t.y + d * s), 0.0]
 }
 
 /// Derived values: w·size, 1/size.
 fn prep_blur_pixelize(v: &mut Prepared) {
-    let size = zeps(v.p[0]);
+    let [size] = v.params();
+    let size = zeps(size);
     v.p.push(v.w * size);
     v.p.push(1.0 / size);
 }
@@ -632,7 +639,8 @@ fn prep_blur_pixelize(v: &mut Prepared) {
 /// Pixelation: the point goes to a random spot of the grid cell (of side `size`) it falls in,
 /// the spot's spread set by `scale`.
 fn blur_pixelize(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (sc, k, inv) = (v.p[1], v.p[2], v.p[3]);
+    let [_, sc] = v.params();
+    let [k, inv] = v.derived();
     let cx = floor_i64(t.x * inv) as f64;
     let cy = floor_i64(t.y * inv) as f64;
     [
@@ -650,9 +658,7 @@ fn blur_square(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Zoom blur: a random enlargement (1 to 1 + length) about the centre (x₀, −y₀).
 fn blur_zoom(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [len, cx, cy] = v.p[..3] else {
-        unreachable!()
-    };
+    let [len, cx, cy] = v.params();
     let z = 1.0 + len * rng.f01();
     [
         v.w * ((t.x - cx) * z + cx),
@@ -667,7 +673,7 @@ fn blur_zoom(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Bipolar coordinates: inside the band |τ| < radius, τ is shifted by distance·radius and
 /// wrapped back into the band, sliding the circles around the foci.
 fn bmod(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (radius, dist) = (v.p[0], v.p[1]);
+    let [radius, dist] = v.params();
     let (mut tau, sigma) = bipolar(t.x, t.y);
     if tau < radius && -tau < radius {
         tau = (tau + radius + dist * radius) % (2.0 * radius) - radius;
@@ -678,9 +684,10 @@ fn bmod(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values: |c|, |c|·|left|, |c| + |c|·|right| (zeros replaced by ε).
 fn prep_boarders2(v: &mut Prepared) {
-    let c = zeps(v.p[0].abs());
-    let left = zeps(v.p[1].abs());
-    let right = zeps(v.p[2].abs());
+    let [c, left, right] = v.params();
+    let c = zeps(c.abs());
+    let left = zeps(left.abs());
+    let right = zeps(right.abs());
     v.p.push(c);
     v.p.push(c * left);
     v.p.push(c + c * right);
@@ -690,7 +697,7 @@ fn prep_boarders2(v: &mut Prepared) {
 /// `right`, a point is instead pushed out towards the tile's border (by `left`), along the
 /// axis of its larger offset, drawing the gaps between tiles.
 fn boarders2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (c, cl, cr) = (v.p[3], v.p[4], v.p[5]);
+    let [c, cl, cr] = v.derived();
     let rx = if t.x >= 0.0 {
         trunc_i32(t.x + 0.5)
     } else {
@@ -717,8 +724,9 @@ fn boarders2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Bipolar swirl: the angle σ turns by out·τ + in/τ, twisting near the foci and far away.
 fn bswirl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [in_, out] = v.params();
     let (tau, sigma) = bipolar(t.x, t.y);
-    let sigma = sigma + tau * v.p[1] + v.p[0] / zeps(tau);
+    let sigma = sigma + tau * out + in_ / zeps(tau);
     let (x, y) = from_bipolar(v.w, tau, sigma);
     [x, y, 0.0]
 }
@@ -726,9 +734,7 @@ fn bswirl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Bipolar transform: τ is divided by `power` and moved, σ rotated and divided by `power`
 /// (one of `power` random copies), and the two half-planes are split apart along τ.
 fn btransform(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [rotate, power, mv, split] = v.p[..4] else {
-        unreachable!()
-    };
+    let [rotate, power, mv, split] = v.params();
     let (tau, sigma) = bipolar(t.x, t.y);
     let mut tau = tau / power + mv;
     let copy = floor_i64(rng.f01() * power) as f64;
@@ -744,9 +750,7 @@ fn btransform(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// 3-D bubble with per-axis scales; z is pushed away from the plane by `z` as well.
 fn bubble2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [sx, sy, sz] = v.p[..3] else {
-        unreachable!()
-    };
+    let [sx, sy, sz] = v.params();
     let r = v.w / zeps(0.25 * (t.sumsq + t.z * t.z) + 1.0);
     let lift = if t.z >= 0.0 {
         v.w * (t.z + sz)
@@ -756,22 +760,8 @@ fn bubble2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [t.x * r * sx, t.y * r * sy, lift + t.z * r * sz]
 }
 
-// Derived values of bubbleT3D, after its six parameters.
-const BT_ABS_N: usize = 6;
-const BT_INV_STRIPES: usize = 7;
-const BT_STRIP1: usize = 8;
-const BT_STRIP2: usize = 9;
-const BT_SIN: usize = 10;
-const BT_COS: usize = 11;
-const BT_HOLE: usize = 12;
-const BT_INV_HOLE: usize = 13;
-const BT_HOLE_COMP: usize = 14;
-const BT_RATIO: usize = 15;
-
 fn prep_bubble_t3d(v: &mut Prepared) {
-    let [stripes, ratio, hole, _, sym, _] = v.p[..6] else {
-        unreachable!()
-    };
+    let [stripes, ratio, hole, _, sym, _] = v.params();
     let abs_n = stripes.abs();
     let inv_stripes = if stripes < 0.0 { 1.0 } else { 0.0 };
     let (mut strip1, mut strip2, mut s, mut c, mut ratio) = (0.0, 0.0, 0.0, 0.0, ratio);
@@ -823,13 +813,12 @@ fn rot(x: f64, y: f64, s: f64, c: f64) -> (f64, f64) {
 /// rotated onto their neighbours) and a hole of a given angle at the pole (or at both poles
 /// with z-symmetry), which blur mode squeezes the cap into instead of cutting.
 fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (exp_z, sym_z, blur) = (p[3], p[4], p[5]);
+    let [_, _, _, exp_z, sym_z, blur] = v.params();
+    let [abs_n, inv_stripes, strip1, strip2, sin_ratio, cos_ratio] = v.derived();
+    let [_, _, _, _, _, _, hole, inv_hole, comp, ratio] = v.derived();
     let (mut x, mut y) = (t.x, t.y);
     let rad = zeps(t.sumsq / 4.0 + 1.0);
-    let abs_n = p[BT_ABS_N];
     if abs_n != 0.0 {
-        let (strip1, strip2) = (p[BT_STRIP1], p[BT_STRIP2]);
         let mut ang = t.x.atan2(t.y);
         if ang < 0.0 {
             ang += TAU;
@@ -837,7 +826,7 @@ fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         while ang > strip2 {
             ang -= strip2;
         }
-        let outside = if p[BT_INV_STRIPES] == 0.0 {
+        let outside = if inv_stripes == 0.0 {
             ang > strip1
         } else {
             ang < strip1
@@ -847,14 +836,14 @@ fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
                 x = 0.0;
                 y = 0.0;
             } else {
-                let fixed = if p[BT_INV_STRIPES] == 0.0 {
-                    p[BT_RATIO] == 1.0
+                let fixed = if inv_stripes == 0.0 {
+                    ratio == 1.0
                 } else {
                     abs_n == 1.0
                 };
                 let (s, c) = if fixed {
-                    (p[BT_SIN], p[BT_COS])
-                } else if p[BT_INV_STRIPES] == 0.0 {
+                    (sin_ratio, cos_ratio)
+                } else if inv_stripes == 0.0 {
                     let f = (ang - strip1) / zeps(strip2 - strip1);
                     (ang - f * strip1).sin_cos()
                 } else {
@@ -878,10 +867,9 @@ fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     } else {
         (0.0, 0.0)
     };
-    let (hole, comp) = (p[BT_HOLE], p[BT_HOLE_COMP]);
     let squeeze = blur != 0.0 && exp_z == 1.0;
     let bent = if sym_z == 0.0 {
-        let inv = p[BT_INV_HOLE] != 0.0;
+        let inv = inv_hole != 0.0;
         let in_hole = if inv { ang_z < hole } else { ang_z > hole };
         if !in_hole {
             None
@@ -917,9 +905,7 @@ fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values: gain² + 10⁻⁶, bubble radius², radius / maximal bubble size.
 fn prep_bwraps(v: &mut Prepared) {
-    let [cell, space, gain, _, _] = v.p[..5] else {
-        unreachable!()
-    };
+    let [cell, space, gain, _, _] = v.params();
     let radius = 0.5 * (cell / (1.0 + space * space));
     let g2 = gain * gain + 1.0e-6;
     let mut max_bubble = g2 * radius;
@@ -936,9 +922,8 @@ fn prep_bwraps(v: &mut Prepared) {
 /// Bubble wrap: each grid cell holds a bubble; points inside it are magnified like `bubble`
 /// and twisted (inner twist at the centre, outer twist at the rim).
 fn bwraps(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [cell, _, _, inner, outer, g2, r2, rfactor] = v.p[..8] else {
-        unreachable!()
-    };
+    let [cell, _, _, inner, outer] = v.params();
+    let [g2, r2, rfactor] = v.derived();
     let z = v.w * t.z;
     if cell == 0.0 {
         return [v.w * t.x, v.w * t.y, z];
@@ -965,9 +950,7 @@ fn bwraps(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values: gain², 1/cell size, cell size / (2(1 + space²)).
 fn prep_bwraps_rand(v: &mut Prepared) {
-    let [cell, space, gain] = v.p[..3] else {
-        unreachable!()
-    };
+    let [cell, space, gain] = v.params();
     v.p.push(gain * gain);
     v.p.push(1.0 / zeps(cell));
     v.p.push(0.5 * (cell / (1.0 + space * space)));
@@ -976,9 +959,8 @@ fn prep_bwraps_rand(v: &mut Prepared) {
 /// `bwraps` with a bubble of random size in each cell (a hash of the cell's centre, or of its
 /// square for symmetric layouts).
 fn bwraps_rand(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [cell, _, _, inner, outer, symm, seed, g2, inv_cell, half] = v.p[..10] else {
-        unreachable!()
-    };
+    let [cell, _, _, inner, outer, symm, seed] = v.params();
+    let [g2, inv_cell, half] = v.derived();
     let w = v.w;
     if cell == 0.0 {
         return [t.x * w, t.y * w, 0.0];
@@ -1017,22 +999,23 @@ fn bwraps_rand(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Cardioid-like radial warp: r ← √(r² + sin(a·θ) + 1), angle kept.
 fn cardioid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let r = v.w * (t.sumsq + (t.atan_yx * v.p[0]).sin() + 1.0).sqrt();
+    let [a] = v.params();
+    let r = v.w * (t.sumsq + (t.atan_yx * a).sin() + 1.0).sqrt();
     [r * t.ux, r * t.uy, 0.0]
 }
 
 /// Derived value: 1/size.
 fn prep_checks(v: &mut Prepared) {
-    let inv = 1.0 / zeps(v.p[2]);
+    let [_, _, size] = v.params();
+    let inv = 1.0 / zeps(size);
     v.p.push(inv);
 }
 
 /// Checkerboard: points in light squares (of side `size`) shift by (x, y) plus a random jitter
 /// in y, points in dark squares by −(x, y) plus a jitter in x; z is scaled.
 fn checks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [ox, oy, _, rnd, inv] = v.p[..5] else {
-        unreachable!()
-    };
+    let [ox, oy, _, rnd] = v.params();
+    let [inv] = v.derived();
     let jx = rnd * rng.f01();
     let jy = rnd * rng.f01();
     let parity = trunc_i32(lrint(t.x * inv) + lrint(t.y * inv));
@@ -1049,9 +1032,7 @@ fn checks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// hashed radius around it is returned. Rejected draws give the origin (Fractorium leaves the
 /// output unset there).
 fn circle_rand_hash(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [nx, ny, size, power, dens, seed] = v.p[..6] else {
-        unreachable!()
-    };
+    let [nx, ny, size, power, dens, seed] = v.params();
     let (half_x, half_y) = (nx * 0.5, ny * 0.5);
     let a = rng.f01() * TAU;
     let r = rng.f01().sqrt();
@@ -1080,9 +1061,7 @@ fn circleblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Crops to the disc of `radius` about (x₀, y₀): points outside go to the origin (`zero` = 1)
 /// or onto a thin random ring just outside the rim.
 fn circlecrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [radius, cx, cy, scatter, zero] = v.p[..5] else {
-        unreachable!()
-    };
+    let [radius, cx, cy, scatter, zero] = v.params();
     let (xi, yi) = (t.x - cx, t.y - cy);
     // flam3-compatible regular use: z is weighted (and, as in Fractorium, the crop also clears
     // what earlier variations summed); otherwise z passes through.
@@ -1108,7 +1087,7 @@ fn circlecrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Derived values: inner and outer radii in order, outer radius · w.
 fn prep_circlecrop2(v: &mut Prepared) {
-    let (a, b) = (v.p[0], v.p[1]);
+    let [a, b] = v.params();
     let (lo, hi) = (a.min(b), a.max(b));
     v.p.push(lo);
     v.p.push(hi);
@@ -1119,9 +1098,8 @@ fn prep_circlecrop2(v: &mut Prepared) {
 /// (zero = 0) onto the outer circle, mirrored across the diagonal (sine of their angle in x,
 /// cosine in y).
 fn circlecrop2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [_, _, zero, lo, hi, hi_w] = v.p[..6] else {
-        unreachable!()
-    };
+    let [_, _, zero] = v.params();
+    let [lo, hi, hi_w] = v.derived();
     let r = t.sqrt;
     if r > hi || r < lo {
         if zero == 0.0 {
@@ -1139,9 +1117,7 @@ fn circlecrop2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// noisy radius: points inside are pulled towards the circle's centre, by a constant factor K
 /// or linearly in the distance (which of the two is chosen by `Dens2` and `Reverse`).
 fn circle_linear(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [sc, k, dens1, dens2, reverse, _, _, seed] = v.p[..8] else {
-        unreachable!()
-    };
+    let [sc, k, dens1, dens2, reverse, _, _, seed] = v.params();
     let m = floor_i64(0.5 * t.x / sc) as i32;
     let n = floor_i64(0.5 * t.y / sc) as i32;
     let mx = m.wrapping_mul(2).wrapping_add(1) as f64 * sc;
@@ -1179,9 +1155,7 @@ fn circle_cell_rejects(m: i64, n: i64, x: f64, y: f64, sc: f64, dens: f64, seed:
 /// A random point of one of the circles of the `CircleLinear` layout, within [−X, X]×[−Y, Y]
 /// (rejection sampling, at most 11 draws).
 fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [sc, dens, ax, ay, seed] = v.p[..5] else {
-        unreachable!()
-    };
+    let [sc, dens, ax, ay, seed] = v.params();
     let mut tries = 0;
     let (mut m, mut n, mut x, mut y);
     loop {
@@ -1206,7 +1180,7 @@ fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Splits the disc of `radius − split` from the rest of the plane, pushing outer points out by
 /// `split`.
 fn circlesplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (radius, split) = (v.p[0], v.p[1]);
+    let [radius, split] = v.params();
     if t.sqrt < radius - split {
         return [v.w * t.x, v.w * t.y, 0.0];
     }
@@ -1218,9 +1192,7 @@ fn circlesplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// The plane halved towards (X, Y); points that land inside a circle of the `CircleLinear`
 /// layout are replaced by a random point of a random circle of the layout.
 fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [sc, dens, ax, ay, seed] = v.p[..5] else {
-        unreachable!()
-    };
+    let [sc, dens, ax, ay, seed] = v.params();
     let sc = zeps(sc);
     let ux = (t.x - ax) * 0.5 + ax;
     let uy = (t.y - ay) * 0.5 + ay;
@@ -1260,23 +1232,25 @@ fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
 /// Squares to circles: the square of half-side s becomes the circle of radius (4w/π)·s + hole,
 /// the position along the square's perimeter becoming the angle.
 fn circlize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [hole] = v.params();
     let (side, per) = square_arc(t.x, t.y);
-    let r = v.w / FRAC_PI_4 * side + v.p[0];
+    let r = v.w / FRAC_PI_4 * side + hole;
     let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).sin_cos();
     [r * c, r * s, 0.0]
 }
 
 /// `circlize` with the hole inside the weight: radius w·(s + hole).
 fn circlize2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [hole] = v.params();
     let (side, per) = square_arc(t.x, t.y);
-    let r = v.w * (side + v.p[0]);
+    let r = v.w * (side + hole);
     let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).sin_cos();
     [r * c, r * s, 0.0]
 }
 
 /// Radial scaling by `scale` inside the unit circle and by 1/scale outside it.
 fn circus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let scale = v.p[0];
+    let [scale] = v.params();
     let r = if t.sqrt <= 1.0 {
         t.sqrt * scale
     } else {
@@ -1287,7 +1261,8 @@ fn circus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values: num/π, π/num, π·a/num (num replaced by ε when 0).
 fn prep_collideoscope(v: &mut Prepared) {
-    let (a, num) = (v.p[0], zeps(v.p[1]));
+    let [a, num] = v.params();
+    let num = zeps(num);
     v.p.push(num * FRAC_1_PI);
     v.p.push(PI / num);
     v.p.push(PI * a / num);
@@ -1296,7 +1271,7 @@ fn prep_collideoscope(v: &mut Prepared) {
 /// Kaleidoscope of `num` sectors per half-turn: alternate sectors are rotated by ±πa/num
 /// (modulo the sector), mirrored between the upper and lower half-planes.
 fn collideoscope(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (n_pi, pi_n, a_n) = (v.p[2], v.p[3], v.p[4]);
+    let [n_pi, pi_n, a_n] = v.derived();
     let a = t.atan_yx;
     let r = v.w * t.sqrt;
     let a = if a >= 0.0 {
@@ -1315,9 +1290,7 @@ fn collideoscope(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// (optionally blurred) and the depth −k/density (optionally blurred); in regular use it
 /// replaces what earlier variations summed.
 fn concentric(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [radius, density, r_blur, z_blur] = v.p[..4] else {
-        unreachable!()
-    };
+    let [radius, density, r_blur, z_blur] = v.params();
     let level = floor_i64(rng.f01() * density) as f64 / zeps(density);
     let angle = rng.f01() * TAU;
     let mut r = level * radius;
@@ -1359,9 +1332,7 @@ fn cosq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Derived values: π·phase_x, π·phase_y, |repeat|, 2w and the two blend amounts
 /// ½ − ½cos(amount + π·phase).
 fn prep_coswrap(v: &mut Prepared) {
-    let [repeat, ax, ay, phx, phy] = v.p[..5] else {
-        unreachable!()
-    };
+    let [repeat, ax, ay, phx, phy] = v.params();
     let (px, py) = (PI * phx, PI * phy);
     v.p.push(px);
     v.p.push(py);
@@ -1385,9 +1356,7 @@ fn coswrap_axis(c: f64, phase: f64, repeat: f64, blend: f64, w2: f64) -> f64 {
 /// Wraps the plane onto cosine waves: each coordinate is blended with a cosine of itself and of
 /// its repeated fractional part (phase and amount per axis), mapped back to [−1, −1 + 2w].
 fn coswrap(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [px, py, rep, w2, bx, by] = v.p[5..11] else {
-        unreachable!()
-    };
+    let [px, py, rep, w2, bx, by] = v.derived();
     [
         coswrap_axis(t.x, px, rep, bx, w2),
         coswrap_axis(t.y, py, rep, by, w2),
@@ -1398,7 +1367,7 @@ fn coswrap(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// A random point of the spiral curve (−sinh s, sin(a·s)) / (cos(a·s) − cosh s), s uniform in
 /// [−π, π): the hyperbolic cotangent of a line through the origin.
 fn coth_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let a = v.p[0];
+    let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
     let den = zeps((a * s).cos() - s.cosh());
     [v.w * (-s.sinh() / den), v.w * ((a * s).sin() / den), 0.0]
@@ -1431,20 +1400,8 @@ fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [x, -y, -z]
 }
 
-// Derived values of cpow2, after its four parameters.
-const CP2_C: usize = 4;
-const CP2_D: usize = 5;
-const CP2_HALF_C: usize = 6;
-const CP2_HALF_D: usize = 7;
-const CP2_ANG: usize = 8;
-const CP2_INV_SPREAD: usize = 9;
-const CP2_FULL_SPREAD: usize = 10;
-const CP2_BRANCHES: usize = 11;
-
 fn prep_cpow2(v: &mut Prepared) {
-    let [r, a, div, spread] = v.p[..4] else {
-        unreachable!()
-    };
+    let [r, a, div, spread] = v.params();
     let spread = zeps(spread);
     let c = r * (PI / 2.0 * a).cos() / div;
     let d = r * (PI / 2.0 * a).sin() / div;
@@ -1464,9 +1421,9 @@ fn prep_cpow2(v: &mut Prepared) {
 /// Complex power z^((r/divisor)·e^(iπa/2)) with a random choice among the branches of the
 /// logarithm (about `spread` of them, favouring the principal one) and of the divisor's roots.
 fn cpow2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [c, d, half_c, half_d, ang, inv_spread, full_spread, branches] = v.derived();
     let mut a = t.atan_yx;
-    let branches = p[CP2_BRANCHES] as u64;
+    let branches = branches as u64;
     let mut n = if branches == 0 {
         rng.u32() as i32
     } else {
@@ -1476,28 +1433,18 @@ fn cpow2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         n = n.wrapping_add(1);
     }
     a += TAU * n as f64;
-    if (a * p[CP2_INV_SPREAD]).cos() < rng.f11() {
-        a -= p[CP2_FULL_SPREAD];
+    if (a * inv_spread).cos() < rng.f11() {
+        a -= full_spread;
     }
     let lnr2 = t.sumsq.ln();
-    let r = v.w * (p[CP2_HALF_C] * lnr2 - p[CP2_D] * a).exp();
-    let th = p[CP2_C] * a + p[CP2_HALF_D] * lnr2 + p[CP2_ANG] * crand(rng);
+    let r = v.w * (half_c * lnr2 - d * a).exp();
+    let th = c * a + half_d * lnr2 + ang * crand(rng);
     let (s, c) = th.sin_cos();
     [r * c, r * s, 0.0]
 }
 
-// Derived values of cpow3, after its four parameters.
-const CP3_C: usize = 4;
-const CP3_D: usize = 5;
-const CP3_HALF_C: usize = 6;
-const CP3_HALF_D: usize = 7;
-const CP3_ANG: usize = 8;
-const CP3_COEFF: usize = 9;
-
 fn prep_cpow3(v: &mut Prepared) {
-    let [r, d, div, spread] = v.p[..4] else {
-        unreachable!()
-    };
+    let [r, d, div, spread] = v.params();
     let div = zeps(div);
     let ld = if d < 0.0 { -(-d).ln() } else { d.ln() };
     let a = (ld * r).atan2(TAU);
@@ -1512,7 +1459,7 @@ fn prep_cpow3(v: &mut Prepared) {
 /// the logarithm drawn from a geometric-like law whose width is `spread`, and random roots of
 /// the divisor.
 fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [c, d, half_c, half_d, ang, coeff] = v.derived();
     let mut a = t.atan_yx;
     if a < 0.0 {
         a += TAU;
@@ -1521,10 +1468,10 @@ fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         a -= TAU;
     }
     let turn = if rng.bit() { TAU } else { -TAU };
-    a += turn * (rng.f01().ln() * p[CP3_COEFF]).round();
+    a += turn * (rng.f01().ln() * coeff).round();
     let lnr2 = t.sumsq.ln();
-    let r = v.w * (p[CP3_HALF_C] * lnr2 - p[CP3_D] * a).exp();
-    let th = p[CP3_C] * a + p[CP3_HALF_D] * lnr2 + p[CP3_ANG] * crand(rng);
+    let r = v.w * (half_c * lnr2 - d * a).exp();
+    let th = c * a + half_d * lnr2 + ang * crand(rng);
     let (s, c) = th.sin_cos();
     [r * c, r * s, 0.0]
 }
@@ -1536,9 +1483,9 @@ fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 const CRACKLE_CACHE: i32 = 10;
 /// Sites per row of that cache.
 const CRACKLE_CACHE_W: usize = 2 * CRACKLE_CACHE as usize + 1;
-/// Index of the first cached site in a prepared `crackle`'s values (after 5 parameters and the
-/// half cell size).
-const CRACKLE_SITES: usize = 6;
+/// Index of the first cached site in a prepared `crackle`'s derived values (after the half cell
+/// size).
+const CRACKLE_SITES: usize = 1;
 
 /// The site of grid cell (i, j): the cell corner displaced by `distort` times two noise values
 /// taken at depth z, scaled by the half cell size `s`.
@@ -1551,9 +1498,7 @@ fn crackle_site(i: i32, j: i32, z: f64, s: f64, distort: f64) -> [f64; 2] {
 
 /// Derived values: half cell size, then the sites of the cells within the cache.
 fn prep_crackle(v: &mut Prepared) {
-    let [cell, _, distort, _, z] = v.p[..5] else {
-        unreachable!()
-    };
+    let [cell, _, distort, _, z] = v.params();
     let half = zeps(cell.abs() / 2.0);
     v.p.push(half);
     for i in -CRACKLE_CACHE..=CRACKLE_CACHE {
@@ -1569,11 +1514,13 @@ fn prep_crackle(v: &mut Prepared) {
 #[inline(always)]
 fn crackle_site_cached(v: &Prepared, i: i32, j: i32) -> [f64; 2] {
     if i.abs() <= CRACKLE_CACHE && j.abs() <= CRACKLE_CACHE {
-        let k = CRACKLE_SITES
-            + 2 * ((i + CRACKLE_CACHE) as usize * CRACKLE_CACHE_W + (j + CRACKLE_CACHE) as usize);
-        [v.p[k], v.p[k + 1]]
+        let k = 2 * ((i + CRACKLE_CACHE) as usize * CRACKLE_CACHE_W + (j + CRACKLE_CACHE) as usize);
+        let sites = v.table(CRACKLE_SITES);
+        [sites[k], sites[k + 1]]
     } else {
-        crackle_site(i, j, v.p[4], v.p[5], v.p[2])
+        let [_, _, distort, _, z] = v.params();
+        let [half] = v.derived();
+        crackle_site(i, j, z, half, distort)
     }
 }
 
@@ -1592,9 +1539,8 @@ fn crackle_block(v: &Prepared, ci: i32, cj: i32) -> [[f64; 2]; 9] {
 /// its distance to the cell's edge (in the Voronoi ratio) raised to `power` and scaled; the
 /// input point is not used.
 fn crackle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [_, power, _, scale, _, half] = v.p[..6] else {
-        unreachable!()
-    };
+    let [_, power, _, scale] = v.params();
+    let [half] = v.derived();
     let blur = (rng.f01() + rng.f01()) / 2.0 + (rng.f01() - 0.5) / 4.0;
     let theta = TAU * rng.f01();
     let u = [blur * theta.sin(), blur * theta.cos()];
@@ -1641,8 +1587,8 @@ fn crackle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A random point on a segment from the jittered site of the input's unit cell to the site of
 /// one of its four neighbours, scaled by the cell size (the weight is not applied).
 fn crackle2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [cell] = v.params();
     const SEED: f64 = 34554.0;
-    let cell = v.p[0];
     let inv = 1.0 / zeps(cell);
     let site = |x: f64, y: f64| {
         [

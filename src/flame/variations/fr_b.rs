@@ -455,42 +455,29 @@ fn log_map(x: f64) -> f64 {
 // ---------------------------------------------------------------------------------------------
 // crob, crop, cropn.
 
-// crob derived values (after the 7 parameters).
-const CROB_TOP: usize = 7;
-const CROB_BOTTOM: usize = 8;
-const CROB_LEFT: usize = 9;
-const CROB_RIGHT: usize = 10;
-const CROB_BLUR: usize = 11;
-const CROB_DIRECT: usize = 12;
-const CROB_XINT2: usize = 13;
-const CROB_YINT2: usize = 14;
-const CROB_MININT2: usize = 15;
-const CROB_X0C: usize = 16;
-const CROB_Y0C: usize = 17;
-const CROB_PROB: usize = 18;
-const CROB_BORDER: usize = 19; // top, bottom, left, right borders
-
+/// Derived values: the edges of the kept region (top, bottom, left, right), the sorted edges of
+/// the rectangle, blur (0 or 1), the direct-blur exponent, the half sizes, the smaller half size,
+/// the corner (x0c, y0c) the bands are cut from and the probability of the vertical bands.
 fn crob_prepare(v: &mut Prepared) {
-    let q = &v.p;
-    let (mut top, mut bottom) = if q[0] > q[1] {
-        (q[1], q[0])
+    let [top0, bottom0, left0, right0, blur0, ratio, direct0] = v.params();
+    let (mut top, mut bottom) = if top0 > bottom0 {
+        (bottom0, top0)
     } else {
-        (q[0], q[1])
+        (top0, bottom0)
     };
     if top == bottom {
         (top, bottom) = (-1.0, 1.0);
     }
-    let (mut left, mut right) = if q[2] > q[3] {
-        (q[3], q[2])
+    let (mut left, mut right) = if left0 > right0 {
+        (right0, left0)
     } else {
-        (q[2], q[3])
+        (left0, right0)
     };
     if left == right {
         (left, right) = (-1.0, 1.0);
     }
-    let direct = if q[6] < 0.0 { 0.0 } else { q[6] };
-    let blur = if q[4] != 0.0 { 1.0 } else { 0.0 };
-    let ratio = q[5];
+    let direct = if direct0 < 0.0 { 0.0 } else { direct0 };
+    let blur = if blur0 != 0.0 { 1.0 } else { 0.0 };
     let xint = right.abs() - left;
     let yint = bottom.abs() - top;
     let (xint2, yint2) = (xint / 2.0, yint / 2.0);
@@ -511,25 +498,38 @@ fn crob_prepare(v: &mut Prepared) {
         let m = minint2 * ratio;
         [top + m, bottom - m, left + m, right - m]
     };
+    v.p.extend_from_slice(&border);
     v.p.extend_from_slice(&[
         top, bottom, left, right, blur, direct, xint2, yint2, minint2, x0c, y0c, prob,
     ]);
-    v.p.extend_from_slice(&border);
 }
 
 /// Crops to a rectangle: points inside vanish (0), points outside are thrown back onto a band
 /// along the rectangle's inner edge (or to 0 without blur). Unweighted.
 fn crob(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let b = &q[CROB_BORDER..CROB_BORDER + 4];
-    let outside = t.x < b[2] || t.x > b[3] || t.y < b[0] || t.y > b[1];
-    if !outside || q[CROB_BLUR] == 0.0 {
+    let [_, _, _, _, _, ratio] = v.params();
+    let [
+        b_top,
+        b_bottom,
+        b_left,
+        b_right,
+        top,
+        bottom,
+        left,
+        right,
+        blur,
+        direct,
+        xint2,
+        yint2,
+        minint2,
+        x0c,
+        y0c,
+        prob,
+    ] = v.derived();
+    let outside = t.x < b_left || t.x > b_right || t.y < b_top || t.y > b_bottom;
+    if !outside || blur == 0.0 {
         return [0.0, 0.0, 0.0];
     }
-    let (top, bottom, left, right) = (q[CROB_TOP], q[CROB_BOTTOM], q[CROB_LEFT], q[CROB_RIGHT]);
-    let (ratio, direct, minint2) = (q[5], q[CROB_DIRECT], q[CROB_MININT2]);
-    let (x0c, y0c) = (q[CROB_X0C], q[CROB_Y0C]);
-    let prob = q[CROB_PROB];
     let sec = rng.f01();
     let (mut x, mut y);
     // The rejection loops accept well over half of their draws for any sensible rectangle; the
@@ -537,7 +537,7 @@ fn crob(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let mut tries = 0;
     if sec < prob {
         loop {
-            y = top + rng.f01() * q[CROB_YINT2];
+            y = top + rng.f01() * yint2;
             x = right - rng.f01().powf(direct) * ratio * minint2;
             tries += 1;
             if (y - y0c) / zeps(x - x0c) >= -1.0 || tries > 100_000 {
@@ -552,7 +552,7 @@ fn crob(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
         }
     } else {
         loop {
-            x = right - rng.f01() * q[CROB_XINT2];
+            x = right - rng.f01() * xint2;
             y = top + rng.f01().powf(direct) * ratio * minint2;
             let grad = (y - y0c) / zeps(x - x0c);
             tries += 1;
@@ -571,18 +571,17 @@ fn crob(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn crop_prepare(v: &mut Prepared) {
-    let q = &v.p;
-    let (x0, x1) = if q[0] < q[2] {
-        (q[0], q[2])
+    let [left, top, right, bottom, s] = v.params();
+    let (x0, x1) = if left < right {
+        (left, right)
     } else {
-        (q[2], q[0])
+        (right, left)
     };
-    let (y0, y1) = if q[1] < q[3] {
-        (q[1], q[3])
+    let (y0, y1) = if top < bottom {
+        (top, bottom)
     } else {
-        (q[3], q[1])
+        (bottom, top)
     };
-    let s = q[4];
     let w = (x1 - x0) * 0.5 * s;
     let h = (y1 - y0) * 0.5 * s;
     v.p.extend_from_slice(&[x0, y0, x1, y1, w, h]);
@@ -591,11 +590,11 @@ fn crop_prepare(v: &mut Prepared) {
 /// Crops to a rectangle: outside points are zeroed (`crop_zero`) or pulled back inside, scattered
 /// over a band of relative width `crop_scatter_area` along the violated edge.
 fn crop(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (x0, y0, x1, y1, w, h) = (q[6], q[7], q[8], q[9], q[10], q[11]);
+    let [_, _, _, _, _, zero] = v.params();
+    let [x0, y0, x1, y1, w, h] = v.derived();
     let (mut x, mut y) = (t.x, t.y);
     let outside = x < x0 || x > x1 || y < y0 || y > y1;
-    if outside && q[5] != 0.0 {
+    if outside && zero != 0.0 {
         x = 0.0;
         y = 0.0;
     } else {
@@ -614,7 +613,7 @@ fn crop(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn cropn_prepare(v: &mut Prepared) {
-    let power = v.p[0];
+    let [power] = v.params();
     let alpha = TAU / power.abs().max(2.0);
     v.p.extend_from_slice(&[alpha, alpha / 2.0]);
 }
@@ -622,8 +621,8 @@ fn cropn_prepare(v: &mut Prepared) {
 /// Crops to a regular polygon of `cropn_power` sides (outside it for a negative power): points
 /// beyond the edge go to the edge (optionally scattered outwards) or to 0.
 fn cropn(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (power, radius, scatter, zero) = (v.p[0], v.p[1], v.p[2], v.p[3]);
-    let (alpha, half) = (v.p[4], v.p[5]);
+    let [power, radius, scatter, zero] = v.params();
+    let [alpha, half] = v.derived();
     let w = v.w;
     if v.compat {
         let mut a = (t.atan_yx + PI) / alpha;
@@ -712,7 +711,7 @@ fn cubic_fill(xpand: f64) -> f64 {
 }
 
 fn cubic3d_prepare(v: &mut Prepared) {
-    let (xpand, style) = (v.p[0], v.p[1]);
+    let [xpand, style] = v.params();
     let fill = cubic_fill(xpand);
     let smooth = if v.w.abs() <= 0.5 { v.w * 2.0 } else { 1.0 };
     let smooth_style = if style.abs() <= 1.0 {
@@ -733,7 +732,7 @@ fn cubic3d_prepare(v: &mut Prepared) {
 /// Copies the point to a random corner of a cube lattice, blending between the running sum and
 /// the input (the blend is shaped by the point's direction with `cubic3D_style`).
 fn cubic3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (ss, sfill, s1mfill, half_w) = (v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [ss, sfill, s1mfill, half_w] = v.derived();
     let node = rng.u32() & 7;
     let ex = 1.0 - ss * (1.0 - t.x.atan2(t.z).cos());
     let wy = 1.0 - ss * (1.0 - t.y.atan2(t.z).sin());
@@ -751,16 +750,18 @@ fn cubic3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn cubic_lattice_3d_prepare(v: &mut Prepared) {
-    let fill = cubic_fill(v.p[0]);
+    let [xpand] = v.params();
+    let fill = cubic_fill(xpand);
     v.p.push(fill);
 }
 
 /// Copies the point (plus the running sum, scaled) to a random corner of a cube lattice of
 /// half-size `weight`; style 2 shapes the copy by the point's direction.
 fn cubic_lattice_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let fill = v.p[2];
+    let [_, style] = v.params();
+    let [fill] = v.derived();
     let node = rng.u32() & 7;
-    let (ex, wy, zn) = if v.p[1] == 2.0 {
+    let (ex, wy, zn) = if style == 2.0 {
         let ex = t.x.atan2(t.z).cos();
         let wy = t.y.atan2(t.z).sin();
         (ex, wy, (ex + wy) * 0.5)
@@ -779,14 +780,14 @@ fn cubic_lattice_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -
 // curl3D, curl_sp, curvature, cylinder2, d_spherical.
 
 fn curl3d_prepare(v: &mut Prepared) {
-    let (cx, cy, cz) = (v.p[0], v.p[1], v.p[2]);
+    let [cx, cy, cz] = v.params();
     v.p.extend_from_slice(&[cx * cx + cy * cy + cz * cz, 2.0 * cx, 2.0 * cy, 2.0 * cz]);
 }
 
 /// The 3-D Möbius-like curl: x ↦ (x + c·r²) / (1 + 2c·x + |c|² r²), with y's term reversed.
 fn curl3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (cx, cy, cz) = (v.p[0], v.p[1], v.p[2]);
-    let (c2, c2x, c2y, c2z) = (v.p[3], v.p[4], v.p[5], v.p[6]);
+    let [cx, cy, cz] = v.params();
+    let [c2, c2x, c2y, c2z] = v.derived();
     let r2 = t.sumsq + t.z * t.z;
     let r = v.w / zeps(r2 * c2 + c2x * t.x - c2y * t.y + c2z * t.z + 1.0);
     [
@@ -797,18 +798,17 @@ fn curl3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn curl_sp_prepare(v: &mut Prepared) {
-    let power = zeps(v.p[0]);
+    let [pow, _, c2, _, _, dc] = v.params();
+    let power = zeps(pow);
     v.p[0] = power;
-    let (c2, dc) = (v.p[2], v.p[5]);
     v.p.extend_from_slice(&[2.0 * c2, 0.1 * dc, 1.0 / power]);
 }
 
 /// curl with each coordinate first raised to a signed power and the denominator's terms
 /// spread by `sx`/`sy`; also shifts the colour by the denominator (`curl_sp_dc`).
 fn curl_sp(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (power, c1, c2, sx, sy) = (q[0], q[1], q[2], q[3], q[4]);
-    let (c2x2, dc_adjust, power_inv) = (q[6], q[7], q[8]);
+    let [power, c1, c2, sx, sy] = v.params();
+    let [c2x2, dc_adjust, power_inv] = v.derived();
     let x = signed_pow_or_id(t.x, power);
     let y = signed_pow_or_id(t.y, power);
     let z = signed_pow_or_id(t.z, power);
@@ -835,7 +835,8 @@ fn cylinder2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 
 /// Randomly either spherical inversion (with probability `d_spherical_weight`) or linear.
 fn d_spherical(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    if rng.f01() < v.p[0] {
+    let [weight] = v.params();
+    if rng.f01() < weight {
         let r = v.w / zeps(t.sumsq);
         [t.x * r, t.y * r, 0.0]
     } else {
@@ -853,14 +854,16 @@ fn dc_inv_scale(s: f64) -> f64 {
 }
 
 fn dc_bubble_prepare(v: &mut Prepared) {
-    let s = dc_inv_scale(v.p[2]);
+    let [_, _, scale] = v.params();
+    let s = dc_inv_scale(scale);
     v.p.push(s);
 }
 
 /// bubble (inverse stereographic projection onto a sphere), coloured by the squared distance of
 /// the new running sum from a centre.
 fn dc_bubble(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (cx, cy, bdcs) = (v.p[0], v.p[1], v.p[3]);
+    let [cx, cy] = v.params();
+    let [bdcs] = v.derived();
     let k = v.w / zeps(t.sumsq / 4.0 + 1.0);
     let o = [k * t.x, k * t.y, v.w * (2.0 / k - 1.0)];
     let (sx, sy, _) = sum_or_input(v, t, acc);
@@ -872,7 +875,8 @@ fn dc_bubble(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// Moves the point to one of four quadrant copies (±1, ±1) through the xform's own affine map,
 /// colouring the copies with a carpet pattern.
 fn dc_carpet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let h = 0.1 * v.p[0];
+    let [origin] = v.params();
+    let h = 0.1 * origin;
     let x0: i32 = if rng.bit() { -1 } else { 1 };
     let y0: i32 = if rng.bit() { -1 } else { 1 };
     let x = t.x + x0 as f64;
@@ -888,15 +892,16 @@ fn dc_carpet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn dc_cube_prepare(v: &mut Prepared) {
-    for i in 0..6 {
-        let c = v.p[i].clamp(0.0, 1.0);
-        v.p.push(c);
+    let colours: [f64; 6] = v.params();
+    for c in colours {
+        v.p.push(c.clamp(0.0, 1.0));
     }
 }
 
 /// A random point on the surface of the cube [−1, 1]³ (scaled per axis), each face with its
 /// own colour.
 fn dc_cube(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, _, _, _, _, _, scale_x, scale_y, scale_z] = v.params();
     let w = v.w;
     let p1 = 2.0 * rng.f01() - 1.0;
     let q1 = 2.0 * rng.f01() - 1.0;
@@ -908,22 +913,23 @@ fn dc_cube(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         1 => (w * p1, w * side, w * q1),
         _ => (w * p1, w * q1, w * side),
     };
-    acc.color = v.p[9 + 2 * face + usize::from(!neg)];
-    [x * v.p[6], y * v.p[7], z * v.p[8]]
+    // The clamped colours of the faces, two per axis (positive side first).
+    acc.color = v.table(0)[2 * face + usize::from(!neg)];
+    [x * scale_x, y * scale_y, z * scale_z]
 }
 
 fn dc_cylinder_prepare(v: &mut Prepared) {
-    let (s, c) = v.p[1].sin_cos();
-    let l = dc_inv_scale(v.p[2]);
+    let [_, angle, scale] = v.params();
+    let (s, c) = angle.sin_cos();
+    let l = dc_inv_scale(scale);
     v.p.extend_from_slice(&[s, c, l]);
 }
 
 /// A blurred cylinder: x wraps around a circle (sin/cos into x and z), y passes scaled, with a
 /// random radial blur; coloured by a linear gradient across the new running sum.
 fn dc_cylinder(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (offset, sx, sy, blur) = (q[0], q[3], q[4], q[5]);
-    let (sina, cosa, ldcs) = (q[6], q[7], q[8]);
+    let [offset, _, _, sx, sy, blur] = v.params();
+    let [sina, cosa, ldcs] = v.derived();
     let (sr, cr) = (rng.f01() * TAU).sin_cos();
     let r = blur * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
     let o = [
@@ -969,14 +975,16 @@ fn dc_gridout(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
 }
 
 fn dc_linear_prepare(v: &mut Prepared) {
-    let l = dc_inv_scale(v.p[2]);
-    let (s, c) = v.p[1].sin_cos();
+    let [_, angle, scale] = v.params();
+    let l = dc_inv_scale(scale);
+    let (s, c) = angle.sin_cos();
     v.p.extend_from_slice(&[l, s, c]);
 }
 
 /// linear (3-D), coloured by a linear gradient (angle, scale, offset) across the new running sum.
 fn dc_linear(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (offset, ldcs, sina, cosa) = (v.p[0], v.p[3], v.p[4], v.p[5]);
+    let [offset] = v.params();
+    let [ldcs, sina, cosa] = v.derived();
     let o = [v.w * t.x, v.w * t.y, v.w * t.z];
     let (px, py, _) = sum_or_input(v, t, acc);
     let (tx, ty) = (o[0] + px, o[1] + py);
@@ -985,7 +993,7 @@ fn dc_linear(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn dc_perlin_prepare(v: &mut Prepared) {
-    let (centre, range) = (v.p[2], v.p[3]);
+    let [_, _, centre, range] = v.params();
     let mut bottom = centre - range;
     if bottom > 0.75 {
         bottom = 0.75;
@@ -1000,12 +1008,23 @@ fn dc_perlin_prepare(v: &mut Prepared) {
 /// A blur (square, disc or radial) whose samples are kept when a 3-D simplex-noise field,
 /// read through one of six mappings of the sample, falls in a band; the noise sets the colour.
 fn dc_perlin(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (shape, map) = (q[0] as i32, q[1] as i32);
-    let (centre, range, edge, scale) = (q[4], q[5], q[6], q[7]);
-    let (octaves, amps, freqs, z) = (q[8] as i32, q[9], q[10], q[11]);
-    let bailout = q[12] as i32;
-    let (notch_bottom, notch_top) = (q[13], q[14]);
+    let [
+        shape,
+        map,
+        _select_centre,
+        _select_range,
+        centre,
+        range,
+        edge,
+        scale,
+        octaves,
+        amps,
+        freqs,
+        z,
+        bailout,
+    ] = v.params();
+    let [notch_bottom, notch_top] = v.derived();
+    let (shape, map, octaves, bailout) = (shape as i32, map as i32, octaves as i32, bailout as i32);
     let mut tries = 0;
     let (mut vx, mut vy, mut noise);
     loop {
@@ -1098,9 +1117,10 @@ fn onto_far_edge(u: f64, v: f64) -> (f64, f64) {
 /// coordinates clamped to the triangle, outside points optionally scattered inwards or zeroed);
 /// colour = u + v.
 fn dc_triangle(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [scatter, zero_edges] = v.params();
     let a = &v.aff;
-    let scatter = v.p[0].clamp(-1.0, 1.0);
-    let zero_edges = v.p[1] != 0.0;
+    let scatter = scatter.clamp(-1.0, 1.0);
+    let zero_edges = zero_edges != 0.0;
     // Fractorium's triangle: X = (A, B), Y = −(C, D), O = (E, F) in its affine letters.
     let (xx, xy) = (a.a, a.b);
     let (yx, yy) = (-a.e, -a.c);
@@ -1146,7 +1166,7 @@ fn dc_triangle(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn dc_ztransl_prepare(v: &mut Prepared) {
-    let (a, b) = (v.p[0], v.p[1]);
+    let [a, b] = v.params();
     let lo = if a < b { a } else { b };
     let hi = if a > b { a } else { b };
     v.p.extend_from_slice(&[lo, zeps(hi - lo)]);
@@ -1154,8 +1174,8 @@ fn dc_ztransl_prepare(v: &mut Prepared) {
 
 /// linear in x and y; z set from (or scaled by) the colour coordinate mapped from [x0, x1].
 fn dc_ztransl(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (factor, overwrite, clamp) = (v.p[2], v.p[3], v.p[4]);
-    let (lo, span) = (v.p[5], v.p[6]);
+    let [_, _, factor, overwrite, clamp] = v.params();
+    let [lo, span] = v.derived();
     let mut zf = factor * (acc.color - lo) / span;
     if clamp != 0.0 {
         zf = zf.clamp(0.0, 1.0);
@@ -1185,7 +1205,7 @@ fn deltaa(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// reads the affine-transformed point for the first term; it equals the input unless a `pre_`
 /// variation moved it.)
 fn depth(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let power = v.p[0];
+    let [power] = v.params();
     let mut k = t.z.abs();
     if k != 0.0 && power != 1.0 {
         k = (k.ln() * power).exp();
@@ -1206,7 +1226,7 @@ fn star_shape(power: f64, range: f64) -> (f64, f64) {
 }
 
 fn depth_blur_prepare(v: &mut Prepared) {
-    let (power, range, blur) = (v.p[0], v.p[1], v.p[2]);
+    let [power, range, blur] = v.params();
     let (length, alpha) = star_shape(power, range);
     let (s, c) = alpha.sin_cos();
     v.p.extend_from_slice(&[length, blur / 10.0, power * 2.0, TAU / zeps(power), s, c]);
@@ -1269,10 +1289,9 @@ fn depth_push(
 /// Blurs points beyond `radius` with a star-shaped kernel whose size grows linearly with the
 /// distance past the radius.
 fn depth_blur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let radius = q[3];
+    let [_, _, _, radius] = v.params();
+    let [length, blur10, power2, step, sa, ca] = v.derived();
     let rad = t.sqrt;
-    let (length, blur10, power2, step, sa, ca) = (q[4], q[5], q[6], q[7], q[8], q[9]);
     depth_push(
         v.w,
         t,
@@ -1285,8 +1304,7 @@ fn depth_blur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn depth_blur2_prepare(v: &mut Prepared) {
-    let (power, range, blur) = (v.p[0], v.p[1], v.p[2]);
-    let (mx, my) = (v.p[6], v.p[7]);
+    let [power, range, blur, _, _, _, mx, my] = v.params();
     let (length, alpha) = star_shape(power, range);
     let (s, c) = alpha.sin_cos();
     v.p.extend_from_slice(&[
@@ -1304,10 +1322,8 @@ fn depth_blur2_prepare(v: &mut Prepared) {
 /// depth_blur around (x0, y0) with an elliptic distance (mulx, muly) and a kernel growing as a
 /// power (`exp`) of the distance past the radius.
 fn depth_blur2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (radius, x0, y0, ex) = (q[3], q[4], q[5], q[8]);
-    let (length, blur10, power2, step, sa, ca, imx, imy) =
-        (q[9], q[10], q[11], q[12], q[13], q[14], q[15], q[16]);
+    let [_, _, _, radius, x0, y0, _, _, ex] = v.params();
+    let [length, blur10, power2, step, sa, ca, imx, imy] = v.derived();
     let rad = (sqr((t.x - x0) * imx) + sqr((t.y - y0) * imy)).sqrt();
     depth_push(
         v.w,
@@ -1330,7 +1346,7 @@ fn gaussian_offset(rng: &mut FastRng) -> (f64, f64) {
 
 /// Gaussian blur of the points beyond `radius`, its width growing with the distance past it.
 fn depth_gaussian(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (blur, radius) = (v.p[0], v.p[1]);
+    let [blur, radius] = v.params();
     let rad = t.sqrt;
     depth_push(v.w, t, rad, radius, rng, gaussian_offset, |d| {
         blur / 10.0 * d
@@ -1338,16 +1354,15 @@ fn depth_gaussian(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) ->
 }
 
 fn depth_gaussian2_prepare(v: &mut Prepared) {
-    let (blur, mx, my) = (v.p[0], v.p[4], v.p[5]);
+    let [blur, _, _, _, mx, my] = v.params();
     v.p.extend_from_slice(&[blur / 10.0, 1.0 / zeps(mx * mx), 1.0 / zeps(my * my)]);
 }
 
 /// depth_gaussian around (x0, y0) with an anisotropic distance and a width growing as a power
 /// (`exp`) of the distance past the radius.
 fn depth_gaussian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (radius, x0, y0, ex) = (q[1], q[2], q[3], q[6]);
-    let (blur10, kx, ky) = (q[7], q[8], q[9]);
+    let [_, radius, x0, y0, _, _, ex] = v.params();
+    let [blur10, kx, ky] = v.derived();
     let rad = (sqr((t.x - x0) / kx) + sqr((t.y - y0) / ky)).sqrt();
     depth_push(v.w, t, rad, radius, rng, gaussian_offset, |d| {
         blur10 * (d.ln() * ex).exp()
@@ -1369,17 +1384,16 @@ fn polygon_offset(rng: &mut FastRng, side: f64, half: f64) -> (f64, f64) {
 }
 
 fn depth_ngon_prepare(v: &mut Prepared) {
-    let side = TAU / zeps(v.p[0]);
-    let blur = v.p[1];
+    let [power, blur] = v.params();
+    let side = TAU / zeps(power);
     v.p.extend_from_slice(&[side, side / 2.0, blur / 10.0]);
 }
 
 /// Blurs the points beyond `radius` onto the outline of a regular polygon whose size grows with
 /// the distance past the radius.
 fn depth_ngon(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let radius = q[2];
-    let (side, half, blur10) = (q[3], q[4], q[5]);
+    let [_, _, radius] = v.params();
+    let [side, half, blur10] = v.derived();
     let rad = t.sqrt;
     depth_push(
         v.w,
@@ -1393,8 +1407,8 @@ fn depth_ngon(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn depth_ngon2_prepare(v: &mut Prepared) {
-    let side = TAU / zeps(v.p[0]);
-    let (blur, mx, my) = (v.p[1], v.p[5], v.p[6]);
+    let [power, blur, _, _, _, mx, my] = v.params();
+    let side = TAU / zeps(power);
     v.p.extend_from_slice(&[
         side,
         side / 2.0,
@@ -1407,9 +1421,8 @@ fn depth_ngon2_prepare(v: &mut Prepared) {
 /// depth_ngon around (x0, y0), anisotropic, with a size growing as a power (`exp`) of the
 /// distance past the radius (in flam3-compatibility mode: plain depth_ngon).
 fn depth_ngon2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (radius, x0, y0, ex) = (q[2], q[3], q[4], q[7]);
-    let (side, half, blur10, kx, ky) = (q[8], q[9], q[10], q[11], q[12]);
+    let [_, _, radius, x0, y0, _, _, ex] = v.params();
+    let [side, half, blur10, kx, ky] = v.derived();
     let polygon = |r: &mut FastRng| polygon_offset(r, side, half);
     if v.compat {
         depth_push(v.w, t, t.sqrt, radius, rng, polygon, |d| blur10 * d)
@@ -1437,7 +1450,7 @@ fn sine_offset(rng: &mut FastRng, power: f64) -> (f64, f64) {
 /// Blurs the points beyond `radius` with a disc kernel of sine-shaped radial profile, its size
 /// growing with the distance past the radius.
 fn depth_sine(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (power, blur, radius) = (v.p[0], v.p[1], v.p[2]);
+    let [power, blur, radius] = v.params();
     let rad = t.sqrt;
     depth_push(
         v.w,
@@ -1451,17 +1464,16 @@ fn depth_sine(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn depth_sine2_prepare(v: &mut Prepared) {
-    v.p[0] = v.p[0].max(0.0);
-    let (blur, mx, my) = (v.p[1], v.p[5], v.p[6]);
+    let [power, blur, _, _, _, mx, my] = v.params();
+    v.p[0] = power.max(0.0);
     v.p.extend_from_slice(&[blur / 10.0, 1.0 / zeps(mx * mx), 1.0 / zeps(my * my)]);
 }
 
 /// depth_sine around (x0, y0), anisotropic, with a size growing as a power (`exp`) of the
 /// distance past the radius.
 fn depth_sine2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (power, radius, x0, y0, mx, my, ex) = (q[0], q[2], q[3], q[4], q[5], q[6], q[7]);
-    let (blur10, kx, ky) = (q[8], q[9], q[10]);
+    let [power, _, radius, x0, y0, mx, my, ex] = v.params();
+    let [blur10, kx, ky] = v.derived();
     let rad = if v.compat {
         (sqr((t.x - x0) / zeps(mx)) + sqr((t.y - y0) / zeps(my))).sqrt()
     } else {
@@ -1483,7 +1495,7 @@ fn depth_sine2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
 
 /// disc with an adjustable "π" and a z from the radius and cos z.
 fn disc3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let pi = v.p[0];
+    let [pi] = v.params();
     let r = t.sqrt;
     let (sr, cr) = (r * pi).sin_cos();
     let k = v.w * t.atan_xy / zeps(pi);
@@ -1491,7 +1503,7 @@ fn disc3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn dragonfire_prepare(v: &mut Prepared) {
-    let (mode, pos, adj) = (v.p[4], v.p[5], v.p[7]);
+    let [_, _, _, _, mode, pos, _, adj] = v.params();
     let val = if mode < 2.0 {
         pos
     } else {
@@ -1513,9 +1525,8 @@ fn dragonfire_prepare(v: &mut Prepared) {
 /// With u = c1·eˣ and v = c2/u: (u − v, sin y)/(u + v − cos y), a coth-like map, with optional
 /// "fuzzy" perturbations driven by the logarithm of the result, blended in by a chosen curve.
 fn dragonfire(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (c1, c2, mode, radius, interp, scalar) = (q[0], q[1], q[2], q[3], q[4], q[6]);
-    let (val, one_m_val) = (q[8], q[9]);
+    let [c1, c2, mode, radius, interp, _, scalar] = v.params();
+    let [val, one_m_val] = v.derived();
     let ex = t.x.exp() * c1;
     let enx = c2 / zeps(ex);
     let (sy, cy) = t.y.sin_cos();
@@ -1551,7 +1562,8 @@ fn dragonfire(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3
 /// Scatters each unit cell of the plane to a pseudo-random point of a polar "dust" pattern
 /// (the cell's index modulo `density` picks the angle and radius).
 fn dust(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (dens, dist, power) = (zeps(v.p[0]), v.p[1], v.p[2]);
+    let [dens, dist, power] = v.params();
+    let dens = zeps(dens);
     let cx = (t.x.abs().floor() % dens) / dens;
     let cy = (t.y.abs().floor() % dens) / dens;
     let hx = sine_hash(cx, cy, 1.0);
@@ -1565,7 +1577,8 @@ fn dust(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// Inside the disc of radius `weight`, shifts each horizontal chord by `shift`·weight, mirroring
 /// points pushed past the chord's end; outside, linear.
 fn eclipse(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (w, shift) = (v.w, v.p[0]);
+    let [shift] = v.params();
+    let w = v.w;
     if t.y.abs() <= w {
         let c2 = (w * w - t.y * t.y).sqrt();
         let ox = if t.x.abs() <= c2 {
@@ -1584,7 +1597,7 @@ fn eclipse(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 // Elliptic-coordinate family (foci at ±1).
 
 fn e_collide_prepare(v: &mut Prepared) {
-    let (a, num) = (v.p[0], v.p[1]);
+    let [a, num] = v.params();
     let ca = PI * a;
     v.p.extend_from_slice(&[num * FRAC_1_PI, PI / num, ca / num]);
 }
@@ -1592,7 +1605,7 @@ fn e_collide_prepare(v: &mut Prepared) {
 /// Elliptic coordinates: the angle ν is cut into `num` sectors and shifted within each,
 /// alternately forwards and backwards, like balls colliding.
 fn e_collide(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (cn_pi, pi_cn, ca_cn) = (v.p[2], v.p[3], v.p[4]);
+    let [cn_pi, pi_cn, ca_cn] = v.derived();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
     let sector = (nu * cn_pi) as i32;
     nu = if sector & 1 == 0 {
@@ -1614,7 +1627,7 @@ fn e_collide(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 /// An elliptic-coordinate analogue of julian: μ divided by the power, ν divided and rotated to a
 /// random one of `power` branches (inverted first for negative powers).
 fn e_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let power = v.p[0];
+    let [power] = v.params();
     let mut r2 = t.sumsq;
     let x = if power >= 0.0 {
         t.x
@@ -1633,7 +1646,7 @@ fn e_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Elliptic coordinates with μ wrapped into [−radius, radius) after a shift of `distance`·radius.
 fn e_mod(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (radius, distance) = (v.p[0], v.p[1]);
+    let [radius, distance] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
     let mut mu = acosh(xmax);
     if t.y < 0.0 {
@@ -1652,7 +1665,7 @@ fn e_mod(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// Elliptic coordinates: μ moved by `move` (towards or away from the focal segment depending
 /// on the side), reflected through the segment when it crosses it, then ν rotated.
 fn e_motion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (mv, rot) = (v.p[0], v.p[1]);
+    let [mv, rot] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
     let mut mu = acosh(xmax);
     if t.y < 0.0 {
@@ -1672,7 +1685,7 @@ fn e_motion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Elliptic coordinates: μ scaled by `dist` and pushed by `push`, ν rotated.
 fn e_push(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (push, dist, rot) = (v.p[0], v.p[1], v.p[2]);
+    let [push, dist, rot] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
     let mu = acosh(xmax);
     if t.y < 0.0 {
@@ -1683,7 +1696,7 @@ fn e_push(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Elliptic coordinates: rotates ν (wrapped to [−π, π)), keeping the confocal ellipse.
 fn e_rotate(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let rot = v.p[0];
+    let [rot] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
     if t.y < 0.0 {
         nu = -nu;
@@ -1695,7 +1708,7 @@ fn e_rotate(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Elliptic coordinates: μ and ν scaled by `scale` (ν about the angle `angle`, wrapped).
 fn e_scale(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (scale, angle) = (v.p[0], v.p[1]);
+    let [scale, angle] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
     let mu = acosh(xmax) * scale;
     if t.y < 0.0 {
@@ -1713,7 +1726,7 @@ fn e_scale(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Elliptic coordinates: ν twisted by `out`·μ + `in`/μ (a swirl about the focal segment).
 fn e_swirl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (win, wout) = (v.p[0], v.p[1]);
+    let [win, wout] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, false);
     let mu = acosh(if xmax < -1.0 { -1.0 } else { xmax });
     if t.y < 0.0 {
@@ -1737,14 +1750,15 @@ fn ennepers(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn epispiral_prepare(v: &mut Prepared) {
-    let (thick, holes) = (v.p[1], v.p[2]);
+    let [_, thick, holes] = v.params();
     v.p.extend_from_slice(&[thick * v.w, holes * v.w]);
 }
 
 /// Maps the point's direction θ onto the epispiral r = 1/cos(nθ), shifted by `holes` and
 /// randomly thickened.
 fn epispiral(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (n, thick_w, holes_w) = (v.p[0], v.p[3], v.p[4]);
+    let [n] = v.params();
+    let [thick_w, holes_w] = v.derived();
     let theta = t.atan_yx;
     let num = if thick_w == 0.0 {
         v.w
@@ -1768,7 +1782,7 @@ fn erf_var(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// Squares the point as a complex number and scales by a function of 1/r (kept away from the
 /// pole by `eps`): identity, cos, exp, log or reciprocal by `radiusFunc`.
 fn excinis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (ls, func, eps) = (v.p[0], v.p[1], v.p[2]);
+    let [ls, func, eps] = v.params();
     let rp = t.sqrt * ls;
     let sign = if rp >= 0.0 { 1.0 } else { -1.0 };
     let reps = if rp.abs() > eps { 0.0 } else { sign * eps };
@@ -1795,7 +1809,7 @@ fn exp2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn expo_prepare(v: &mut Prepared) {
-    let (re, im) = (v.p[0], v.p[1]);
+    let [re, im] = v.params();
     let k = 0.5 * zeps(re * re + im * im).ln();
     let th = im.atan2(re);
     v.p.extend_from_slice(&[k, th]);
@@ -1803,7 +1817,7 @@ fn expo_prepare(v: &mut Prepared) {
 
 /// The complex power c^z for a fixed complex base c = real + i·imaginary.
 fn expo(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (k, th) = (v.p[2], v.p[3]);
+    let [k, th] = v.derived();
     let m = (t.x * k - t.y * th).exp();
     let (s, c) = (t.x * th + t.y * k).sin_cos();
     [v.w * m * c, v.w * m * s, 0.0]
@@ -1813,7 +1827,8 @@ fn expo(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// in [0, weight). As a regular variation it contributes nothing to x, y and overwrites the
 /// running z; as pre_/post_ it keeps x, y.
 fn extrude(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let z = if rng.f01() < v.p[0] {
+    let [root_face] = v.params();
+    let z = if rng.f01() < root_face {
         v.w.max(0.0)
     } else {
         v.w * rng.f01()
@@ -1838,9 +1853,19 @@ fn centred(rng: &mut FastRng) -> f64 {
 /// A 3-D blur whose strength grows with the distance from a centre beyond `mindist`: uniform
 /// box jitter, radial/angular jitter, or snapping towards a grid whose cell grows with distance.
 fn falloff(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (scatter, mindist, mx, my, mz) = (q[0], q[1], q[2], q[3], q[4]);
-    let (x0, y0, z0, invert, kind, boxpow) = (q[5], q[6], q[7], q[8], q[9], q[10]);
+    let [
+        scatter,
+        mindist,
+        mx,
+        my,
+        mz,
+        x0,
+        y0,
+        z0,
+        invert,
+        kind,
+        boxpow,
+    ] = v.params();
     let ax = centred(rng);
     let ay = centred(rng);
     let az = centred(rng);
@@ -1872,9 +1897,7 @@ fn falloff(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Distance-dependent blur after falloff, in three styles (box, radial, Gaussian-like), that
 /// can also jitter the colour (`mul_c`).
 fn falloff2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (scatter, mindist, mx, my, mz, mc) = (q[0], q[1], q[2], q[3], q[4], q[5]);
-    let (x0, y0, z0, invert, kind) = (q[6], q[7], q[8], q[9], q[10]);
+    let [scatter, mindist, mx, my, mz, mc, x0, y0, z0, invert, kind] = v.params();
     let rx = centred(rng);
     let ry = centred(rng);
     let rz = centred(rng);
@@ -1950,10 +1973,21 @@ fn gaussian_falloff(t: &VarIn, w: f64, dist: f64, r: [f64; 3], m: [f64; 3]) -> V
 
 /// falloff2 with a round or square distance and a logarithmic style (blend `alpha`).
 fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (kind, shape, strength, mindist, invert) = (q[0], q[1], q[2], q[3], q[4]);
-    let (mx, my, mz, mc) = (q[5], q[6], q[7], q[8]);
-    let (cx, cy, cz, alpha) = (q[9], q[10], q[11], q[12]);
+    let [
+        kind,
+        shape,
+        strength,
+        mindist,
+        invert,
+        mx,
+        my,
+        mz,
+        mc,
+        cx,
+        cy,
+        cz,
+        alpha,
+    ] = v.params();
     let rx = centred(rng);
     let ry = centred(rng);
     let rz = centred(rng);
@@ -2000,8 +2034,7 @@ fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A 3-D blur along a random direction whose size grows with the squared distance from an
 /// origin (per-axis scales).
 fn farblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (sx, sy, sz, x0, y0, z0) = (q[0], q[1], q[2], q[3], q[4], q[5]);
+    let [sx, sy, sz, x0, y0, z0] = v.params();
     let d2 = sqr(t.x - x0) + sqr(t.y - y0) + sqr(t.z - z0);
     let r = v.w * d2 * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
     let (su, cu) = (rng.f01() * TAU).sin_cos();

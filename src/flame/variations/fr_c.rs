@@ -382,12 +382,15 @@ const INV_SQRT5: f64 = 1.0 / 2.236_067_977_499_79;
 /// Binet's formula for the Fibonacci numbers extended to the complex plane:
 /// (φ^z − φ^(−z)·e^(iπz)) / √5 with z = x + iy.
 fn fibonacci(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    fib_common(v.w, 1.0, 1.0, v.p[0], t)
+    let [ln_phi] = v.derived();
+    fib_common(v.w, 1.0, 1.0, ln_phi, t)
 }
 
 /// [`fibonacci`] with both powers scaled by `sc` and their exponents by `sc2`.
 fn fibonacci2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    fib_common(v.w, v.p[0], v.p[1], v.p[2], t)
+    let [sc, sc2] = v.params();
+    let [ln_phi] = v.derived();
+    fib_common(v.w, sc, sc2, ln_phi, t)
 }
 
 #[inline(always)]
@@ -438,14 +441,16 @@ fn flipy(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn flowerdb_prepare(v: &mut Prepared) {
-    let split_petals = v.p[0] * v.p[1];
+    let [petals, petal_split] = v.params();
+    let split_petals = petals * petal_split;
     v.p.push(split_petals);
 }
 
 /// A rose: the radius is scaled by |(spread + sin(petals·θ))·cos(petals·split·θ)|, giving
 /// `petals` lobes, each split in two when `split` is non-zero.
 fn flowerdb(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (petals, spread, split_petals) = (v.p[0], v.p[2], v.p[3]);
+    let [petals, _, spread] = v.params();
+    let [split_petals] = v.derived();
     let th = t.atan_yx;
     let rad = v.w * t.sqrt;
     let r2 = rad * ((spread + (petals * th).sin()) * (split_petals * th).cos()).abs();
@@ -464,9 +469,10 @@ fn foci_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// foci with adjustable weights `c1`, `c2` on eˣ and e⁻ˣ.
 fn foci_p(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [c1, c2] = v.params();
     let ex = zeps(t.x.exp());
-    let a = ex * v.p[0];
-    let b = v.p[1] / ex;
+    let a = ex * c1;
+    let b = c2 / ex;
     let (sy, cy) = t.y.sin_cos();
     let k = v.w / zeps(a + b - cy);
     [(a - b) * k, sy * k, 0.0]
@@ -476,6 +482,7 @@ fn foci_p(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// a lazysusan-like swirl (centre (x, −y) params, `spin`, `twist`, `space`) where x < 0 < y,
 /// linear elsewhere.
 fn fourth(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [spin, space, twist, cx, cy] = v.params();
     let w = v.w;
     let (x, y) = (t.x, t.y);
     if x > 0.0 && y > 0.0 {
@@ -490,7 +497,6 @@ fn fourth(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
             [w * x, w * y, 0.0]
         }
     } else if x < 0.0 && y > 0.0 {
-        let (spin, space, twist, cx, cy) = (v.p[0], v.p[1], v.p[2], v.p[3], v.p[4]);
         let dx = x - cx;
         let dy = y + cy;
         let r = (dx * dx + dy * dy).sqrt();
@@ -510,7 +516,8 @@ fn fourth(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// tanh of each coordinate, scaled by sec(y) + effect·π: a funnel opening along the bands
 /// where cos y vanishes.
 fn funnel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let k = 1.0 / zeps(t.y.cos()) + v.p[0] * PI;
+    let [effect] = v.params();
+    let k = 1.0 / zeps(t.y.cos()) + effect * PI;
     [v.w * (t.x.tanh() * k), v.w * (t.y.tanh() * k), 0.0]
 }
 
@@ -532,9 +539,7 @@ fn gaussian(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn gdoffs_prepare(v: &mut Prepared) {
-    let q = &v.p;
-    let (delta_x, delta_y, area_x, area_y, centre_x, centre_y, gam) =
-        (q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
+    let [delta_x, delta_y, area_x, area_y, centre_x, centre_y, gam] = v.params();
     let dx = delta_x * 0.1;
     let dy = delta_y * 0.1;
     let ax = if area_x.abs() < 0.1 {
@@ -567,7 +572,8 @@ fn gd_osc(p: f64, a: f64) -> f64 {
 /// Gradient-domain offsets: each coordinate is blended with cosine oscillations of itself,
 /// giving a rippled, folded copy of the plane; z is scaled.
 fn gdoffs(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (square, dx, dy, cx, cy, b) = (v.p[7], v.p[8], v.p[9], v.p[10], v.p[11], v.p[12]);
+    let [_, _, _, _, _, _, _, square] = v.params();
+    let [dx, dy, cx, cy, b] = v.derived();
     let osc_x = gd_osc(dx, 1.0);
     let osc_y = if square != 0.0 {
         osc_x
@@ -626,7 +632,7 @@ fn glynnia_maps(w: f64, v2: f64, t: &VarIn, outer: bool, rng: &mut FastRng) -> V
 /// A random choice between two square-root–like maps of the plane (Glynn's "glynnia"), with
 /// different branches inside and outside the unit circle.
 fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let v2 = v.p[0];
+    let [v2] = v.derived();
     if v.compat {
         glynnia_maps(v.w, v2, t, t.sqrt > 1.0, rng)
     } else {
@@ -644,7 +650,8 @@ fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// glynnia with the branch chosen by the upper half-plane (y > 0) instead of the unit circle.
 fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    glynnia_maps(v.w, v.p[0], t, t.sqrt > 0.0 && t.y > 0.0, rng)
+    let [v2] = v.derived();
+    glynnia_maps(v.w, v2, t, t.sqrt > 0.0 && t.y > 0.0, rng)
 }
 
 /// The shared outside rule of the GlynnSim family: with probability contrast·α^pow
@@ -661,9 +668,9 @@ fn glynn_pull(t: &VarIn, radius: f64, contrast: f64, pow: f64, rng: &mut FastRng
 }
 
 fn glynnsim1_prepare(v: &mut Prepared) {
-    let (radius, phi1) = (v.p[0], v.p[2]);
+    let [radius, _, phi1, _, _, pow] = v.params();
     let ang = PI / 180.0 * phi1;
-    let pow = v.p[5].abs();
+    let pow = pow.abs();
     v.p.extend_from_slice(&[radius * ang.cos(), radius * ang.sin(), pow]);
 }
 
@@ -679,8 +686,8 @@ fn glynn1_ring(radius1: f64, thickness: f64, cx: f64, cy: f64, rng: &mut FastRng
 /// on that circle at angle `phi1`; outside points are randomly pulled inwards, and those that
 /// land in the small ring are replaced by ring points.
 fn glynnsim1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (radius, radius1, thickness, contrast) = (v.p[0], v.p[1], v.p[3], v.p[4]);
-    let (cx, cy, pow) = (v.p[6], v.p[7], v.p[8]);
+    let [radius, radius1, _, thickness, contrast] = v.params();
+    let [cx, cy, pow] = v.derived();
     let (x, y) = if t.sqrt < radius {
         glynn1_ring(radius1, thickness, cx, cy, rng)
     } else {
@@ -695,8 +702,8 @@ fn glynnsim1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn glynnsim2_prepare(v: &mut Prepared) {
-    let (radius, thickness, phi1, phi2) = (v.p[0], v.p[1], v.p[4], v.p[5]);
-    let pow = v.p[3].abs();
+    let [radius, thickness, _, pow, phi1, phi2] = v.params();
+    let pow = pow.abs();
     let phi10 = PI * phi1 / 180.0;
     let phi20 = PI * phi2 / 180.0;
     let gam = thickness * (2.0 * radius + thickness) / zeps(radius + thickness);
@@ -706,8 +713,8 @@ fn glynnsim2_prepare(v: &mut Prepared) {
 /// Glynn's "GlynnSim2": points inside the circle of radius `radius` become an arc (from `Phi1`
 /// to `Phi2` degrees) of a ring just outside it; outside points are randomly pulled inwards.
 fn glynnsim2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (radius, thickness, contrast) = (v.p[0], v.p[1], v.p[2]);
-    let (pow, phi10, gam, delta) = (v.p[6], v.p[7], v.p[8], v.p[9]);
+    let [radius, thickness, contrast] = v.params();
+    let [pow, phi10, gam, delta] = v.derived();
     if t.sqrt < radius {
         let r = radius + thickness - gam * rng.f01();
         let (s, c) = (phi10 + delta * rng.f01()).sin_cos();
@@ -730,7 +737,7 @@ fn glynn_scaled(w: f64, t: &VarIn, radius: f64, contrast: f64, pow: f64, rng: &m
 }
 
 fn glynnsim3_prepare(v: &mut Prepared) {
-    let (radius, thickness) = (v.p[0], v.p[1]);
+    let [radius, thickness] = v.params();
     let radius1 = radius + thickness;
     let radius2 = radius * radius / zeps(radius1);
     let gam = radius1 / zeps(radius1 + radius2);
@@ -740,8 +747,8 @@ fn glynnsim3_prepare(v: &mut Prepared) {
 /// Glynn's "GlynnSim3": points inside radius + thickness land on one of two circles (radii
 /// radius + thickness and radius²/(radius + thickness)); outside points are randomly pulled in.
 fn glynnsim3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (radius, contrast, pow) = (v.p[0], v.p[3], v.p[4]);
-    let (radius1, radius2, gam) = (v.p[5], v.p[6], v.p[7]);
+    let [radius, _, _, contrast, pow] = v.params();
+    let [radius1, radius2, gam] = v.derived();
     if t.sqrt < radius1 {
         // Fractorium draws a radius that the circle choice then overrides.
         let _ = rng.f01();
@@ -756,7 +763,7 @@ fn glynnsim3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Glynn's "GlynnSim4": points inside the circle collapse onto the point (X, Y); outside points
 /// are randomly pulled in.
 fn glynnsim4(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (radius, contrast, pow, px, py) = (v.p[0], v.p[1], v.p[2], v.p[3], v.p[4]);
+    let [radius, contrast, pow, px, py] = v.params();
     if t.sqrt < radius {
         [v.w * px, v.w * py, 0.0]
     } else {
@@ -767,7 +774,7 @@ fn glynnsim4(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Glynn's "GlynnSim5": points inside radius + thickness go to the origin; outside points are
 /// either kept or sent to the diagonal point (α², α²).
 fn glynnsim5(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (radius, thickness, contrast, pow) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [radius, thickness, contrast, pow] = v.params();
     if t.sqrt < radius + thickness {
         return [0.0, 0.0, 0.0];
     }
@@ -781,14 +788,16 @@ fn glynnsim5(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn gnarly_prepare(v: &mut Prepared) {
-    let half = 0.5 * v.p[0];
+    let [cellsize] = v.params();
+    let half = 0.5 * cellsize;
     v.p.push(zeps(half * half));
 }
 
 /// Cuts the plane into square cells and twists the disc inscribed in each cell by an angle
 /// growing with the logarithm of the distance to the cell centre.
 fn gnarly(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (cell, twist, rr) = (v.p[0], v.p[1], v.p[2]);
+    let [cell, twist] = v.params();
+    let [rr] = v.derived();
     let (mut x, mut y) = (t.x, t.y);
     if cell != 0.0 {
         let cx = (floor_f(x / cell) + 0.5) * cell;
@@ -832,20 +841,30 @@ fn gridout(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 // h
 
 fn heat_prepare(v: &mut Prepared) {
+    let [
+        theta_period,
+        theta_phase,
+        theta_amp,
+        phi_period,
+        phi_phase,
+        phi_amp,
+        r_period,
+        r_phase,
+        r_amp,
+    ] = v.params();
     let inv = |period: f64| if period == 0.0 { 0.0 } else { 1.0 / period };
-    let q = &v.p;
-    let (tx, px, rx) = (inv(q[0]), inv(q[3]), inv(q[6]));
+    let (tx, px, rx) = (inv(theta_period), inv(phi_period), inv(r_period));
     let w = v.w;
     let derived = [
-        w * q[2],
+        w * theta_amp,
         TAU * tx,
-        q[1] * tx,
-        w * q[5],
+        theta_phase * tx,
+        w * phi_amp,
         TAU * px,
-        q[4] * px,
-        w * q[8],
+        phi_phase * px,
+        w * r_amp,
         TAU * rx,
-        q[7] * rx,
+        r_phase * rx,
     ];
     v.p.extend_from_slice(&derived);
 }
@@ -853,9 +872,7 @@ fn heat_prepare(v: &mut Prepared) {
 /// Spherical coordinates made wavy: the radius, azimuth and inclination each get a sine
 /// ripple (period, phase, amplitude) driven by the radius.
 fn heat(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p[9..18];
-    let (at, bt, ct, ap, bp, cp, ar, br, cr) =
-        (q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], q[8]);
+    let [at, bt, ct, ap, bp, cp, ar, br, cr] = v.derived();
     let mut r = (t.sumsq + t.z).abs().sqrt();
     r += ar * br.mul_add(r, cr).sin();
     if r == 0.0 {
@@ -869,15 +886,16 @@ fn heat(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A helicoid: the polar angle is advanced by 2π·frequency·z, the radius kept, z scaled.
 fn helicoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let ang = t.z * (v.p[0] * TAU) + t.atan_yx;
+    let [frequency] = v.params();
+    let ang = t.z * (frequency * TAU) + t.atan_yx;
     let k = v.w * t.sqrt;
     [k * ang.cos(), k * ang.sin(), v.w * t.z]
 }
 
 /// A helix: the point is shifted by a circle of radius `width` whose angle turns with z.
 fn helix(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let ang = t.z * (v.p[0] * TAU);
-    let width = v.p[1];
+    let [frequency, width] = v.params();
+    let ang = t.z * (frequency * TAU);
     [
         v.w * (t.x + ang.cos() * width),
         v.w * (t.y + ang.sin() * width),
@@ -893,12 +911,13 @@ fn hemisphere(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// One step of the Hénon map: (1 − a·x² + y, b·x).
 fn henon(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (a, b) = (v.p[0], v.p[1]);
+    let [a, b] = v.params();
     [(1.0 - a * (t.x * t.x) + t.y) * v.w, b * t.x * v.w, 0.0]
 }
 
 fn hex_modulus_prepare(v: &mut Prepared) {
-    let hsize = HALF_SQRT3 / zeps(v.p[0]);
+    let [size] = v.params();
+    let hsize = HALF_SQRT3 / zeps(size);
     let wk = v.w / HALF_SQRT3;
     v.p.extend_from_slice(&[hsize, wk]);
 }
@@ -906,7 +925,7 @@ fn hex_modulus_prepare(v: &mut Prepared) {
 /// The plane modulo a hexagonal lattice: each point is replaced by its offset from the centre
 /// of its hexagon (cube-coordinate rounding).
 fn hex_modulus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (hsize, wk) = (v.p[1], v.p[2]);
+    let [hsize, wk] = v.derived();
     let px = t.x * hsize;
     let py = t.y * hsize;
     let third = py / 3.0;
@@ -931,7 +950,7 @@ fn hex_modulus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// `density` (by a hash of the cell), and a random point of its hexagon is drawn, shrunk by
 /// hash^power.
 fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (gx, gy, size, power, density, seed) = (v.p[0], v.p[1], v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [gx, gy, size, power, density, seed] = v.params();
     let k = rng.f01() * 6.0;
     let sector = floor_i64(k);
     let frac = k - sector as f64;
@@ -960,7 +979,7 @@ fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 const TRUNCATED_60_DEG: f64 = 1.0471;
 
 fn hex_truchet_prepare(v: &mut Prepared) {
-    let (size, side) = (v.p[0], v.p[1]);
+    let [size, side] = v.params();
     let shrink = (1.0 - size) * 0.85;
     let lo = sqr(0.15 + shrink * 0.5);
     let hi = sqr(1.0 - shrink * 0.5);
@@ -970,7 +989,8 @@ fn hex_truchet_prepare(v: &mut Prepared) {
 /// Hexagonal Truchet tiles: random points on the three arcs of a random hexagon of the grid,
 /// the tile rotated by 60° or not according to a hash of its cell.
 fn hex_truchet(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (side, seed, lo, span, cells) = (v.p[1], v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [_, side, seed] = v.params();
+    let [lo, span, cells] = v.derived();
     let ang = rng.f01() * TAU;
     let r = (rng.f01() * span + lo).sqrt();
     let (ox, oy) = if ang < 2.0943 {
@@ -1006,14 +1026,15 @@ const ST_SIX_STEP: usize = 1;
 const ST_THREE_STEP: usize = 2;
 
 fn hexaplay3d_prepare(v: &mut Prepared) {
-    let majp = v.p[0].abs();
+    let [majp, scale] = v.params();
+    let majp = majp.abs();
     let (plane, boost) = if majp <= 1.0 {
         (1.0, 0.0)
     } else {
         (2.0, (majp - 1.0) * 0.5)
     };
     let lift = (PI / 3.0).sin();
-    let half_scale = v.p[1] * 0.5;
+    let half_scale = scale * 0.5;
     v.p.extend_from_slice(&[plane, boost, lift, half_scale]);
     // Fractorium starts on the six-node walk two times in three (global random); start there.
     v.state.set(ST_SIXFOLD, 1.0);
@@ -1056,7 +1077,8 @@ fn hex_walk_advance(v: &Prepared, six: bool) {
 /// a hexagon (or of a triangle, 120° steps), vertices taken in order; with |majp| > 1 the copies
 /// are stacked above and below the plane.
 fn hexaplay3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (zlift, plane, boost, lift, half_scale) = (v.p[2], v.p[3], v.p[4], v.p[5], v.p[6]);
+    let [_, _, zlift] = v.params();
+    let [plane, boost, lift, half_scale] = v.derived();
     let (six, node) = hex_walk_step(v, rng);
     let (sx, sy) = take_sum_xy(v, t, acc);
     let updown = if rng.bit() { -1.0 } else { 1.0 };
@@ -1083,7 +1105,7 @@ fn hexaplay3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn hexcrop_prepare(v: &mut Prepared) {
-    let (sx, sy) = (v.p[0], v.p[1]);
+    let [sx, sy] = v.params();
     const H: f64 = 1.060_660_171_779_821_2;
     const S2: f64 = std::f64::consts::SQRT_2;
     let xs = [-0.5 * sx, 0.5 * sx, S2 * sx, 0.5 * sx, -0.5 * sx, -S2 * sx];
@@ -1096,9 +1118,8 @@ fn hexcrop_prepare(v: &mut Prepared) {
 /// kept, the others sent to the far `dropoff` point. As a regular variation the xform's running
 /// sum is carried along inside the hexagon and dropped outside.
 fn hexcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
-    let (cx, cy, drop) = (v.p[2], v.p[3], v.p[4]);
-    let xs = &v.p[5..11];
-    let ys = &v.p[11..17];
+    let [_, _, cx, cy, drop] = v.params();
+    let (xs, ys) = v.table(0).split_at(6);
     let ix = t.x + cx;
     let iy = t.y + cy;
     let mut inside = false;
@@ -1130,7 +1151,8 @@ fn hexcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn hexes_prepare(v: &mut Prepared) {
-    let (s, c) = (v.p[2] * TAU).sin_cos();
+    let [_, _, rotate] = v.params();
+    let (s, c) = (rotate * TAU).sin_cos();
     v.p.extend_from_slice(&[s, c]);
 }
 
@@ -1175,6 +1197,8 @@ fn cell_ratio(pts: &[(f64, f64)], centre: usize, u: (f64, f64)) -> f64 {
 /// Hexagonal cells: each point is rotated about the centre of its hexagon and its distance
 /// to the centre remapped by a power law, smoothly blended near the cell edges.
 fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [s, power, _, scale] = v.params();
+    let [rs, rc] = v.derived();
     const HX_X: f64 = 1.0 / 3.0;
     const HX_Y: f64 = SQRT3 / 3.0;
     const HY_X: f64 = -1.0 / 3.0;
@@ -1183,7 +1207,6 @@ fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     const OX_K: f64 = -1.5;
     const OY_H: f64 = SQRT3 / 2.0;
     const OY_K: f64 = SQRT3 / 2.0;
-    let (s, power, scale, rs, rc) = (v.p[0], v.p[1], v.p[3], v.p[4], v.p[5]);
     if s == 0.0 {
         return [0.0, 0.0, 0.0];
     }
@@ -1228,7 +1251,7 @@ fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn hexnix3d_prepare(v: &mut Prepared) {
-    let majp = v.p[0];
+    let [majp] = v.params();
     let amajp = majp.abs();
     let (plane, boost) = if amajp <= 1.0 {
         (0.0, 0.0)
@@ -1261,9 +1284,8 @@ fn hexnix3d_prepare(v: &mut Prepared) {
 /// point about a random vertex of a hexagon (or a triangle) and moves towards it; `majp` stacks
 /// copies above and below the plane, `zlift` scales z. Weights below 0.5 blend with the input.
 fn hexnix3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (majp, scale, zlift, side3) = (v.p[0], v.p[1], v.p[2], v.p[3]);
-    let (smooth, plane, boost, gentle, lift, c7, c11) =
-        (v.p[4], v.p[5], v.p[6], v.p[7], v.p[8], v.p[9], v.p[10]);
+    let [majp, scale, zlift, side3] = v.params();
+    let [smooth, plane, boost, gentle, lift, c7, c11] = v.derived();
     let (six, _) = hex_walk_step(v, rng);
     let regular = v.form == Form::Regular;
     let (sx, sy, sz) = if regular {
@@ -1324,7 +1346,7 @@ fn hexnix3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// "ho": x, y and z become powers of products of sines and cosines of the input plus small
 /// arctangent terms (a knotted 3-D surface).
 fn ho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (px, py, pz) = (v.p[0], v.p[1], v.p[2]);
+    let [px, py, pz] = v.params();
     let (xx, yy, zz) = (t.x * t.x, t.y * t.y, t.z * t.z);
     let om_x = yy.atan2(zz);
     let om_y = xx.atan2(zz);
@@ -1341,7 +1363,7 @@ fn ho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Opens a hole at the origin whose size varies with the polar angle (power `a`); with
 /// `inside` the plane is squeezed into the hole instead.
 fn hole(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (a, inside) = (v.p[0], v.p[1]);
+    let [a, inside] = v.params();
     let delta = (t.atan_yx / PI + 1.0).powf(a);
     let r = if inside != 0.0 {
         v.w * delta / (t.sqrt + delta)
@@ -1352,7 +1374,8 @@ fn hole(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn hypercrop_prepare(v: &mut Prepared) {
-    let (n, rad) = (zeps(v.p[0]), v.p[1]);
+    let [n, rad] = v.params();
+    let n = zeps(n);
     let coeff = zeps(n * 0.5 / PI);
     let a0 = PI / n;
     let len = 1.0 / zeps(a0.cos());
@@ -1363,7 +1386,8 @@ fn hypercrop_prepare(v: &mut Prepared) {
 /// Crops the discs of a hyperbolic n-gon tiling: points inside the disc around one of the n
 /// polygon vertices are pushed to its edge (or to the vertex, or to the origin, by `zero`).
 fn hypercrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (zero, coeff, a0, len, d) = (v.p[2], v.p[3], v.p[4], v.p[5], v.p[6]);
+    let [_, _, zero] = v.params();
+    let [coeff, a0, len, d] = v.derived();
     let ang = floor_f(t.atan_yx * coeff) / coeff + a0;
     let x0 = ang.cos() * len;
     let y0 = ang.sin() * len;
@@ -1388,12 +1412,13 @@ fn hypercrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// A hyperbolic translation of the Poincaré disc by `shift` along x (inversion, shift,
 /// inversion); as a regular variation (compat mode) it replaces the xform's running sum.
 fn hypershift_prepare(v: &mut Prepared) {
-    let shift = v.p[0];
+    let [shift] = v.params();
     v.p.push(1.0 - shift * shift);
 }
 
 fn hypershift(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
-    let (shift, scale) = (v.p[0], v.p[1]);
+    let [shift] = v.params();
+    let [scale] = v.derived();
     let inv = 1.0 / zeps(t.sumsq);
     let x = inv * t.x + shift;
     let y = inv * t.y;
@@ -1408,7 +1433,7 @@ fn hypershift(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn hypershift2_prepare(v: &mut Prepared) {
-    let (p_, q_) = (v.p[0], v.p[1]);
+    let [p_, q_] = v.params();
     let pq = PI / q_;
     let pp = PI / p_;
     let spq = pq.sin();
@@ -1423,7 +1448,8 @@ fn hypershift2_prepare(v: &mut Prepared) {
 /// A hyperbolic {p, q} tiling step: a hyperbolic shift of the scaled point, then a rotation by
 /// a random odd multiple of π/p; z is scaled like the point.
 fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (p_, shift, scale, scale2) = (v.p[0], v.p[2], v.p[3], v.p[4]);
+    let [p_] = v.params();
+    let [shift, scale, scale2] = v.derived();
     let fx = t.x * scale2;
     let fy = t.y * scale2;
     let inv = 1.0 / zeps(fx * fx + fy * fy);
@@ -1444,7 +1470,7 @@ fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn hypertile_prepare(v: &mut Prepared) {
-    let (p_, q_, n) = (v.p[0], v.p[1], v.p[2]);
+    let [p_, q_, n] = v.params();
     let pa = TAU / zeps(p_);
     let cs = pa.cos();
     let r2 = (1.0 - cs) / (cs + (TAU / zeps(q_)).cos()) + 1.0;
@@ -1456,7 +1482,7 @@ fn hypertile_prepare(v: &mut Prepared) {
 /// A Möbius map of the Poincaré disc carrying the origin to the n-th vertex of the {p, q}
 /// hyperbolic tiling's central polygon.
 fn hypertile(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (re, im) = (v.p[3], v.p[4]);
+    let [re, im] = v.derived();
     let a = t.x + re;
     let b = t.y - im;
     let c = re * t.x - im * t.y + 1.0;
@@ -1466,7 +1492,7 @@ fn hypertile(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn hypertile12_prepare(v: &mut Prepared) {
-    let (p_, q_) = (v.p[0], v.p[1]);
+    let [p_, q_] = v.params();
     let pa = TAU / zeps(p_);
     let cs = pa.cos();
     let r2 = 1.0 - (cs - 1.0) / (cs + (TAU / zeps(q_)).cos());
@@ -1477,7 +1503,7 @@ fn hypertile12_prepare(v: &mut Prepared) {
 
 /// The {p, q} tiling map of `hypertile` towards a random vertex of the central polygon.
 fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (pa, r, whole_p) = (v.p[2], v.p[3], v.p[4]);
+    let [pa, r, whole_p] = v.derived();
     let ang = if v.compat {
         crand(rng) * pa
     } else {
@@ -1497,7 +1523,7 @@ fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// The {p, q} tiling map towards the first vertex, followed by a rotation by a random multiple
 /// of 2π/p.
 fn hypertile2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (pa, r) = (v.p[2], v.p[3]);
+    let [pa, r] = v.derived();
     let a = t.x + r;
     let b = t.y;
     let c = r * t.x + 1.0;
@@ -1524,8 +1550,9 @@ fn tile3d_radius(p_: f64, q_: f64) -> (f64, f64) {
 }
 
 fn hypertile3d_prepare(v: &mut Prepared) {
-    let (r, pa) = tile3d_radius(v.p[0], v.p[1]);
-    let na = v.p[2] * pa;
+    let [p, q, n] = v.params();
+    let (r, pa) = tile3d_radius(p, q);
+    let na = n * pa;
     let cx = r * na.cos();
     let cy = r * na.sin();
     let (cx2, cy2) = (cx * cx, cy * cy);
@@ -1543,8 +1570,7 @@ fn hypertile3d_prepare(v: &mut Prepared) {
 
 /// The hyperbolic tiling map of `hypertile` extended to 3-D (a Möbius map of the ball).
 fn hypertile3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p[3..11];
-    let (cx, cy, c2, c2x, c2y, s2x, s2y, s2z) = (q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]);
+    let [cx, cy, c2, c2x, c2y, s2x, s2y, s2z] = v.derived();
     let r2 = t.sumsq + t.z;
     let x2cx = c2x * t.x;
     let y2cy = c2y * t.y;
@@ -1557,14 +1583,15 @@ fn hypertile3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn hypertile3d12_prepare(v: &mut Prepared) {
-    let (r, pa) = tile3d_radius(v.p[0], v.p[1]);
+    let [p, q] = v.params();
+    let (r, pa) = tile3d_radius(p, q);
     let c2 = r * r;
     v.p.extend_from_slice(&[pa, r, c2, 1.0 - c2, 2.0 * r, 1.0 + c2]);
 }
 
 /// The 3-D hyperbolic tiling map towards a random vertex of the central polygon.
 fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (pa, r, c2, s2z) = (v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [pa, r, c2, s2z] = v.derived();
     let (sa, ca) = (crand(rng) * pa).sin_cos();
     let cx = r * ca;
     let cy = r * sa;
@@ -1584,7 +1611,7 @@ fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// The 3-D hyperbolic tiling map towards the first vertex, then a random rotation by a
 /// multiple of 2π/p about the z axis.
 fn hypertile3d2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (pa, cx, c2, s2z, c2x, s2x) = (v.p[2], v.p[3], v.p[4], v.p[5], v.p[6], v.p[7]);
+    let [pa, cx, c2, s2z, c2x, s2x] = v.derived();
     let s2y = s2z;
     let r2 = t.sumsq + t.z * t.z;
     let x2cx = c2x * t.x;
@@ -1612,7 +1639,7 @@ fn idisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// A drop of ink at (x, y) with radius `r`: every point is pushed radially away from the drop
 /// centre so that the drop's area is inserted (√(d² + r²) − d).
 fn inkdrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (r, cx, cy) = (v.p[0], v.p[1], v.p[2]);
+    let [r, cx, cy] = v.params();
     let dx = t.x - cx;
     let dy = t.y - cy;
     let d2 = dx * dx + dy * dy;
@@ -1641,9 +1668,7 @@ fn wave(kind: f64, a: f64, b: f64, c: f64, p_: f64, x: f64) -> f64 {
 /// The sum of two periodic waves (sine, triangle or square, each with amplitude, frequency,
 /// phase and power) applied to each coordinate.
 fn interference2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (a1, b1, c1, p1, k1) = (q[0], q[1], q[2], q[3], q[4]);
-    let (a2, b2, c2, p2, k2) = (q[5], q[6], q[7], q[8], q[9]);
+    let [a1, b1, c1, p1, k1, a2, b2, c2, p2, k2] = v.params();
     let x = wave(k1, a1, b1, c1, p1, t.x) + wave(k2, a2, b2, c2, p2, t.x);
     let y = wave(k1, a1, b1, c1, p1, t.y) + wave(k2, a2, b2, c2, p2, t.y);
     [v.w * x, v.w * y, 0.0]
@@ -1661,14 +1686,15 @@ fn jac_parts(t: &VarIn, k: f64) -> ((f64, f64, f64), (f64, f64, f64), f64) {
 
 /// The Jacobi elliptic function cn of the complex number x + iy.
 fn jac_cn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, v.p[0]);
+    let [m] = v.params();
+    let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, m);
     let k = v.w / zeps(den);
     [k * (cnx * cny), k * (-dnx * snx * dny * sny), 0.0]
 }
 
 /// The Jacobi elliptic function dn of the complex number x + iy.
 fn jac_dn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let m = v.p[0];
+    let [m] = v.params();
     let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, m);
     let k = v.w / zeps(den);
     [k * (dnx * cny * dny), k * (-cnx * snx * sny * m), 0.0]
@@ -1676,7 +1702,8 @@ fn jac_dn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// The Jacobi elliptic function sn of the complex number x + iy.
 fn jac_sn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, v.p[0]);
+    let [m] = v.params();
+    let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, m);
     let k = v.w / zeps(den);
     [k * (snx * dny), k * (cnx * dnx * cny * sny), 0.0]
 }
@@ -1684,12 +1711,13 @@ fn jac_sn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// julia in 3-D: a random |power|-th root of the point in the plane, z divided by |power| and
 /// the whole point scaled by its 3-D length to the power (1/power − 1)/2.
 fn julia3d_prepare(v: &mut Prepared) {
-    let n = v.p[0];
+    let [n] = v.params();
     v.p.extend_from_slice(&[n.abs(), (1.0 / n - 1.0) / 2.0]);
 }
 
 fn julia3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (n, abs_n, expo) = (v.p[0], v.p[1], v.p[2]);
+    let [n] = v.params();
+    let [abs_n, expo] = v.derived();
     let z = t.z / abs_n;
     let r = v.w * (t.sumsq + z * z).powf(expo);
     let k = r * t.sqrt;
@@ -1699,7 +1727,7 @@ fn julia3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn julia3dq_prepare(v: &mut Prepared) {
-    let (power, divisor) = (v.p[0], v.p[1]);
+    let [power, divisor] = v.params();
     let inv = divisor / power;
     v.p.extend_from_slice(&[inv, inv.abs(), 0.5 * inv - 0.5, TAU / power]);
 }
@@ -1707,7 +1735,7 @@ fn julia3dq_prepare(v: &mut Prepared) {
 /// julia3D with a rational power divisor/power and Fractorium's wide random branch choice
 /// (any multiple of 2π/power).
 fn julia3dq(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (inv, abs_inv, half_inv, step) = (v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [inv, abs_inv, half_inv, step] = v.derived();
     let ang = t.atan_yx * inv + crand(rng) * step;
     let (sa, ca) = ang.sin_cos();
     let z = t.z * abs_inv;

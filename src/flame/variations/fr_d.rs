@@ -425,7 +425,7 @@ fn prep_weight_squared(v: &mut Prepared) {
 // julia family.
 
 fn prep_julia3dz(v: &mut Prepared) {
-    let n = v.p[0];
+    let [n] = v.params();
     v.p.push(n.abs());
     v.p.push(1.0 / n / 2.0);
 }
@@ -433,7 +433,8 @@ fn prep_julia3dz(v: &mut Prepared) {
 /// julia3Dz: the n-th root julia map in the plane (one of |n| branches at random); z is scaled by
 /// the same radial factor over the input radius, making a 3-D cone of julia sheets.
 fn julia3dz(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (n, abs_n, exponent) = (v.p[0], v.p[1], v.p[2]);
+    let [n] = v.params();
+    let [abs_n, exponent] = v.derived();
     let radius = v.w * t.sumsq.powf(exponent);
     let branch = TAU * rand_size(rng, abs_n as u32 as f64);
     let ang = (t.atan_yx + branch) / n;
@@ -445,7 +446,7 @@ fn julia3dz(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_juliac(v: &mut Prepared) {
-    let (re, im, dist) = (v.p[0], v.p[1], v.p[2]);
+    let [re, im, dist] = v.params();
     let re_inv = 1.0 / zeps(re);
     v.p.extend_from_slice(&[dist * 0.5, re_inv, 1.0 / re_inv, im * 0.01]);
 }
@@ -453,7 +454,7 @@ fn prep_juliac(v: &mut Prepared) {
 /// Juliac: a complex power z^(1/(re + i·im/100)) with a random integer winding; the imaginary
 /// part of the exponent spirals the branches.
 fn juliac(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (half_dist, re_inv, period, im_scaled) = (v.p[3], v.p[4], v.p[5], v.p[6]);
+    let [half_dist, re_inv, period, im_scaled] = v.derived();
     let turn = (rng.u32() as f64) % period;
     let arg = t.atan_yx + turn * TAU;
     let log_mod = half_dist * t.sumsq.ln();
@@ -467,23 +468,24 @@ fn juliac(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_julian2(v: &mut Prepared) {
-    let power = if v.p[6] == 0.0 { 2.0 } else { v.p[6] };
+    let [_, _, _, _, _, _, power, dist] = v.params();
+    let power = if power == 0.0 { 2.0 } else { power };
     let abs_n = if v.compat {
         power.abs().trunc()
     } else {
         power.abs()
     };
-    let exponent = v.p[7] / power / 2.0;
+    let exponent = dist / power / 2.0;
     v.p.extend_from_slice(&[power, abs_n, exponent]);
 }
 
 /// julian2: julian (the power-th root with a random branch) applied after its own affine map
 /// (a b c d e f) of the input point.
 fn julian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (power, abs_n, exponent) = (q[8], q[9], q[10]);
-    let x = q[0] * t.x + q[1] * t.y + q[4];
-    let y = q[2] * t.x + q[3] * t.y + q[5];
+    let [a, b, c, d, e, f] = v.params();
+    let [power, abs_n, exponent] = v.derived();
+    let x = a * t.x + b * t.y + e;
+    let y = c * t.x + d * t.y + f;
     let radius = v.w * (x * x + y * y).powf(exponent);
     let ang = if v.compat {
         (y.atan2(x) + TAU * rand_size(rng, abs_n)) / power
@@ -495,7 +497,7 @@ fn julian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_julian3dx(v: &mut Prepared) {
-    let (dist, power) = (v.p[0], v.p[1]);
+    let [dist, power] = v.params();
     v.p.push(power.abs());
     v.p.push((dist / power - 1.0) / 2.0);
 }
@@ -503,12 +505,12 @@ fn prep_julian3dx(v: &mut Prepared) {
 /// julian3Dx: a 3-D julian whose planar angle comes from an affine-transformed copy of the
 /// point; the radius combines the planar radius and z scaled by 1/|power|.
 fn julian3dx(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (power, abs_n, exponent) = (q[1], q[8], q[9]);
+    let [_, power, a, b, c, d, e, f] = v.params();
+    let [abs_n, exponent] = v.derived();
     let z = t.z / abs_n;
     let radius = v.w * (t.sumsq + z * z).powf(exponent);
-    let x = q[2] * t.x + q[3] * t.y + q[6];
-    let y = q[4] * t.x + q[5] * t.y + q[7];
+    let x = a * t.x + b * t.y + e;
+    let y = c * t.x + d * t.y + f;
     let branch = trunc_i32(rng.f01() * abs_n) as f64;
     let ang = (y.atan2(x) + TAU * branch) / power;
     let planar = radius * t.sqrt;
@@ -516,7 +518,7 @@ fn julian3dx(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_julianab(v: &mut Prepared) {
-    let n = v.p[0];
+    let [n] = v.params();
     let div = zeps(n.abs());
     v.p.push(n.abs());
     v.p.push(1.0 / div / 2.0);
@@ -525,8 +527,8 @@ fn prep_julianab(v: &mut Prepared) {
 /// juliaNab: a julia-like root whose angle is taken from (|x|^separ, y), with an exponent scaled
 /// by `a` and both outputs shifted by `b`; z passes through (and the running z is reset).
 fn julianab(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (n, a, b, separ, abs_n, exponent) = (q[0], q[1], q[2], q[3], q[4], q[5]);
+    let [n, a, b, separ] = v.params();
+    let [abs_n, exponent] = v.derived();
     let div = zeps(n.abs());
     let branch = (rng.f01() * abs_n).floor();
     let ang = (t.y.atan2(t.x.abs().powf(separ)) + TAU * branch) / div;
@@ -538,7 +540,7 @@ fn julianab(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_juliaq(v: &mut Prepared) {
-    let (power, divisor) = (v.p[0], v.p[1]);
+    let [power, divisor] = v.params();
     let pz = zeps(power);
     v.p.extend_from_slice(&[0.5 * (divisor / pz), divisor / pz, TAU / pz]);
 }
@@ -546,7 +548,7 @@ fn prep_juliaq(v: &mut Prepared) {
 /// juliaq: the rational power z^(divisor/power), with a random multiple of 2π/power added to
 /// the angle.
 fn juliaq(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (half_ratio, ratio, step) = (v.p[2], v.p[3], v.p[4]);
+    let [half_ratio, ratio, step] = v.derived();
     let ang = t.atan_yx * ratio + crand(rng) * step;
     let radius = v.w * t.sumsq.powf(half_ratio);
     [radius * ang.cos(), radius * ang.sin(), 0.0]
@@ -565,9 +567,8 @@ fn prep_kaleidoscope(v: &mut Prepared) {
 /// Kaleidoscope: rotates the plane by 45° (scaling by `rotate`) and splits it along y = 0, the
 /// two halves being pushed apart by `pull` and shifted by `line_up`; the weight is not used.
 fn kaleidoscope(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (pull, rotate, line_up, sx, sy) = (q[0], q[1], q[2], q[3], q[4]);
-    let (s45, c45) = (q[5], q[6]);
+    let [pull, rotate, line_up, sx, sy] = v.params();
+    let [s45, c45] = v.derived();
     let x = ((rotate * t.x) * c45 - t.y * s45 + line_up) + sx;
     let y = if t.y > 0.0 {
         ((rotate * t.y) * c45 + t.x * s45 + pull + line_up) + sy
@@ -578,7 +579,7 @@ fn kaleidoscope(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
 }
 
 fn prep_lazyjess(v: &mut Prepared) {
-    let (n, corner) = (v.p[0], v.p[3]);
+    let [n, _, _, corner] = v.params();
     let vertex = PI * (n - 2.0) / zeps(2.0 * n);
     let slice = TAU / zeps(n);
     v.p.extend_from_slice(&[
@@ -594,9 +595,8 @@ fn prep_lazyjess(v: &mut Prepared) {
 /// `spin`; spun corners that leave the polygon are mirrored back; outside points are pushed out
 /// by `space`.
 fn lazyjess(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (n, spin, space) = (q[0], q[1], q[2]);
-    let (vertex, sin_vertex, slice, half_slice, corner_turn) = (q[4], q[5], q[6], q[7], q[8]);
+    let [n, spin, space] = v.params();
+    let [vertex, sin_vertex, slice, half_slice, corner_turn] = v.derived();
     let w = v.w;
     let (x, y) = (t.x, t.y);
     let m = t.sqrt;
@@ -636,7 +636,7 @@ fn lazyjess(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_lazytravis(v: &mut Prepared) {
-    let (spin_in, spin_out) = (v.p[0], v.p[1]);
+    let [spin_in, spin_out] = v.params();
     v.p.push(4.0 * spin_in);
     v.p.push(4.0 * spin_out);
 }
@@ -645,7 +645,8 @@ fn prep_lazytravis(v: &mut Prepared) {
 /// and the point is slid along it (by `spin_in` inside the weight square, `spin_out` outside,
 /// where the rings are also spaced out by `space`).
 fn lazytravis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (space, turn_in, turn_out) = (v.p[2], v.p[3], v.p[4]);
+    let [_, _, space] = v.params();
+    let [turn_in, turn_out] = v.derived();
     let w = v.w;
     let (ax, ay) = (t.x.abs(), t.y.abs());
     let outside = ax > w || ay > w;
@@ -691,7 +692,8 @@ fn lens(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_line(v: &mut Prepared) {
-    let (delta, phi) = (v.p[0] * PI, v.p[1] * PI);
+    let [delta, phi] = v.params();
+    let (delta, phi) = (delta * PI, phi * PI);
     let ux = delta.cos() * phi.cos();
     let uy = delta.sin() * phi.cos();
     let uz = phi.sin();
@@ -702,8 +704,9 @@ fn prep_line(v: &mut Prepared) {
 /// line: a random point on a segment of length `weight` from the origin, in the 3-D direction
 /// given by the angles `delta` (azimuth) and `phi` (elevation), in half turns.
 fn line(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [ux, uy, uz] = v.derived();
     let r = rng.f01() * v.w;
-    [v.p[2] * r, v.p[3] * r, v.p[4] * r]
+    [ux * r, uy * r, uz * r]
 }
 
 /// linear3D: the identity in 3-D, scaled by the weight.
@@ -713,27 +716,28 @@ fn linear3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// linearT: each coordinate raised to its own power, keeping its sign.
 fn linear_t(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [pow_x, pow_y] = v.params();
     [
-        signed_pow(t.x, v.p[0]) * v.w,
-        signed_pow(t.y, v.p[1]) * v.w,
+        signed_pow(t.x, pow_x) * v.w,
+        signed_pow(t.y, pow_y) * v.w,
         0.0,
     ]
 }
 
 /// linearT3D: linearT in 3-D (z with its own power).
 fn linear_t3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [pow_x, pow_y, pow_z] = v.params();
     [
-        signed_pow(t.x, v.p[0]) * v.w,
-        signed_pow(t.y, v.p[1]) * v.w,
-        signed_pow(t.z, v.p[2]) * v.w,
+        signed_pow(t.x, pow_x) * v.w,
+        signed_pow(t.y, pow_y) * v.w,
+        signed_pow(t.z, pow_z) * v.w,
     ]
 }
 
 /// Lissajous: a random point of the Lissajous curve (sin(a·s + d), sin(b·s)) for s in
 /// [tmin, tmax], drifted along the diagonal by c·s and thickened by e.
 fn lissajous(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (tmin, tmax, a, b, c, d, e) = (q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
+    let [tmin, tmax, a, b, c, d, e] = v.params();
     let s = (tmax - tmin) * rng.f01() + tmin;
     let thick = rng.f01() - 0.5;
     let cx = (a * s + d).sin();
@@ -746,7 +750,7 @@ fn lissajous(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn prep_log_db(v: &mut Prepared) {
-    let (base, fix_period) = (v.p[0], v.p[1]);
+    let [base, fix_period] = v.params();
     let mut scale = 0.5;
     if base > f64::EPSILON {
         scale /= (E * base).ln();
@@ -763,7 +767,7 @@ fn prep_log_db(v: &mut Prepared) {
 /// log_db: the complex logarithm in base e·base, with the angle shifted by a random small
 /// multiple of π·fix_period (the sum of seven draws in −2..=2); z is scaled.
 fn log_db(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (scale, period) = (v.p[2], v.p[3]);
+    let [scale, period] = v.derived();
     let mut turns = 0i32;
     for _ in 0..7 {
         let d = rng.below(10) as i32 - 5;
@@ -776,7 +780,7 @@ fn log_db(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_loonie2(v: &mut Prepared) {
-    let (sides, star, circle, power) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [sides, star, circle, power] = v.params();
     let a = TAU / sides;
     let s = -FRAC_PI_2 * star;
     let c = FRAC_PI_2 * circle;
@@ -798,12 +802,20 @@ fn prep_loonie2(v: &mut Prepared) {
 /// shape of "radius" weight are pushed outwards. With the compatibility switch off: a
 /// polygonal inversion that maps the unit disc's inside out onto a `power`-gon.
 fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [sides] = v.params();
+    let [
+        w2,
+        sin_a,
+        cos_a,
+        sin_s,
+        cos_s,
+        sin_c,
+        cos_c,
+        alpha,
+        tan_half2,
+    ] = v.derived();
     let w = v.w;
     if v.compat {
-        let sides = q[0];
-        let (w2, sin_a, cos_a, sin_s, cos_s, sin_c, cos_c) =
-            (q[4], q[5], q[6], q[7], q[8], q[9], q[10]);
         let (mut xr, mut yr) = (t.x, t.y);
         let mut r2 = xr * cos_s + yr.abs() * sin_s;
         let mut turns = 0i32;
@@ -825,7 +837,6 @@ fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         };
         [k * t.x, k * t.y, 0.0]
     } else {
-        let (alpha, tan_half2) = (q[11], q[12]);
         let r2 = t.sumsq;
         let k = if r2 < 1.0 {
             (1.0 / zeps(r2) - 1.0).sqrt()
@@ -853,7 +864,7 @@ fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// loonie3: loonie with a hole bounded by the circle through the origin tangent to the y axis
 /// (|r²/x| < weight): points inside are pushed out, the others only scaled.
 fn loonie3(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let w2 = v.p[0];
+    let [w2] = v.derived();
     let r2 = if t.x > f64::EPSILON {
         sqr(t.sumsq / t.x)
     } else {
@@ -869,7 +880,7 @@ fn loonie3(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// loonie_3D: loonie in 3-D; a zero z is replaced by the point's angle, and z comes out halved.
 fn loonie_3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let w2 = v.p[0];
+    let [w2] = v.derived();
     let z = if t.z == 0.0 { t.atan_yx } else { t.z };
     let r2 = t.sumsq + z * z;
     let k = if r2 < w2 {
@@ -881,14 +892,14 @@ fn loonie_3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 }
 
 fn prep_loq(v: &mut Prepared) {
-    let base = v.p[0];
+    let [base] = v.params();
     v.p.push(0.5 / base.ln());
 }
 
 /// loq: the quaternion logarithm of (x, y, z) in base `base`: log of the norm on x, the unit
 /// imaginary part times the angle on (y, z).
 fn loq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let scale = v.p[1];
+    let [scale] = v.derived();
     let im = (t.y * t.y + t.z * t.z).sqrt();
     let k = v.w * im.atan2(t.x) / zeps(im);
     [(t.x * t.x + im * im).ln() * scale, k * t.y, k * t.z]
@@ -896,7 +907,7 @@ fn loq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// lozi: the Lozi map (1 − a·|x| + y, b·x).
 fn lozi(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (a, b) = (v.p[0], v.p[1]);
+    let [a, b] = v.params();
     [(1.0 - (a * t.x.abs()) + t.y) * v.w, b * t.x * v.w, 0.0]
 }
 
@@ -915,8 +926,7 @@ fn mask(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// mcarpet: a damped scaling x·r·(x, y)/(1 + r²/4) plus a Lozi/Hénon-like term
 /// (1 − twist·x² + y, tilt·x).
 fn mcarpet(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (sx, sy, twist, tilt) = (q[0], q[1], q[2], q[3]);
+    let [sx, sy, twist, tilt] = v.params();
     let k = v.w / (t.sumsq * 0.25 + 1.0);
     let x = t.x * k * sx + (1.0 - (twist * (t.x * t.x)) + t.y) * v.w;
     let y = t.y * k * sy + tilt * t.x * v.w;
@@ -943,11 +953,24 @@ fn mirror<const AXIS: usize>(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut F
 /// mobiq: a quaternion Möbius map (A·q + B)(C·q + D)⁻¹ of q = x + y·i + z·j, each coefficient a
 /// quaternion (t, x, y, z).
 fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (at, ax, ay, az) = (q[0], q[1], q[2], q[3]);
-    let (bt, bx, by, bz) = (q[4], q[5], q[6], q[7]);
-    let (ct, cx, cy, cz) = (q[8], q[9], q[10], q[11]);
-    let (dt, dx, dy, dz) = (q[12], q[13], q[14], q[15]);
+    let [
+        at,
+        ax,
+        ay,
+        az,
+        bt,
+        bx,
+        by,
+        bz,
+        ct,
+        cx,
+        cy,
+        cz,
+        dt,
+        dx,
+        dy,
+        dz,
+    ] = v.params();
     let (p0, p1, p2) = (t.x, t.y, t.z);
     let nt = at * p0 - ax * p1 - ay * p2 + bt;
     let nx = at * p1 + ax * p0 - az * p2 + bx;
@@ -966,16 +989,16 @@ fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_mobius_strip(v: &mut Prepared) {
-    let (rx, ry) = (v.p[4] * TAU, v.p[5] * TAU);
+    let [_, _, _, _, rotate_x, rotate_y] = v.params();
+    let (rx, ry) = (rotate_x * TAU, rotate_y * TAU);
     v.p.extend_from_slice(&[rx.sin(), rx.cos(), ry.sin(), ry.cos()]);
 }
 
 /// mobius_strip: wraps the rectangle [−rect_x, rect_x]×[−rect_y, rect_y] (tiled) onto a Möbius
 /// band of the given radius and width, rotates it about x then y and projects onto the plane.
 fn mobius_strip(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (radius, width, rect_x, rect_y) = (q[0], q[1], q[2], q[3]);
-    let (rx_sin, rx_cos, ry_sin, ry_cos) = (q[6], q[7], q[8], q[9]);
+    let [radius, width, rect_x, rect_y] = v.params();
+    let [rx_sin, rx_cos, ry_sin, ry_cos] = v.derived();
     let u = if rect_x == 0.0 {
         0.0
     } else {
@@ -999,7 +1022,8 @@ fn mobius_strip(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
 }
 
 fn prep_mobius_n(v: &mut Prepared) {
-    let power = if v.p[8].abs() < 1.0 { 1.0 } else { v.p[8] };
+    let [_, _, _, _, _, _, _, _, power] = v.params();
+    let power = if power.abs() < 1.0 { 1.0 } else { power };
     v.p.push(power);
     v.p.push(power.floor());
 }
@@ -1007,10 +1031,8 @@ fn prep_mobius_n(v: &mut Prepared) {
 /// MobiusN: conjugates a Möbius map (A·z + B)/(C·z + D) by z ↦ z^power: the input is raised to
 /// the power, mapped, then one of the power-th roots is taken at random.
 fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (re_a, im_a, re_b, im_b) = (q[0], q[1], q[2], q[3]);
-    let (re_c, im_c, re_d, im_d) = (q[4], q[5], q[6], q[7]);
-    let (dist, power, whole_power) = (q[9], q[10], q[11]);
+    let [re_a, im_a, re_b, im_b, re_c, im_c, re_d, im_d, _, dist] = v.params();
+    let [power, whole_power] = v.derived();
     let e = 4.0 * dist / power;
     let r = t.sqrt.powf(e);
     let ang = t.atan_yx * power;
@@ -1029,14 +1051,16 @@ fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_modulus(v: &mut Prepared) {
-    let period = 2.0 * v.p[0];
+    let [size] = v.params();
+    let period = 2.0 * size;
     v.p.push(period);
 }
 
 /// modulusx / modulusy: wraps one coordinate (shifted by `shift`) into [−size, size); the other
 /// coordinate is only scaled.
 fn modulus<const AXIS: usize>(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (size, shift, period) = (v.p[0], v.p[1], v.p[2]);
+    let [size, shift] = v.params();
+    let [period] = v.derived();
     let (u, other) = if AXIS == 0 { (t.x, t.y) } else { (t.y, t.x) };
     let f = (u + size + shift) % period;
     let wrapped = if f >= 0.0 {
@@ -1052,7 +1076,7 @@ fn modulus<const AXIS: usize>(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mu
 }
 
 fn prep_murl(v: &mut Prepared) {
-    let (c, power) = (v.p[0], v.p[1]);
+    let [c, power] = v.params();
     let cp = if power != 1.0 { c / (power - 1.0) } else { c };
     v.p.extend_from_slice(&[cp, power / 2.0, v.w * (cp + 1.0)]);
 }
@@ -1060,7 +1084,8 @@ fn prep_murl(v: &mut Prepared) {
 /// murl: divides the point by 1 + c'·z^power (c' = c/(power − 1)), normalised so that the
 /// map is the identity scaled by the weight at c = 0.
 fn murl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (power, cp, half_power, scale) = (v.p[1], v.p[2], v.p[3], v.p[4]);
+    let [_, power] = v.params();
+    let [cp, half_power, scale] = v.derived();
     let ang = t.atan_yx * power;
     let r = cp * t.sumsq.powf(half_power);
     let re = r * ang.cos() + 1.0;
@@ -1070,7 +1095,7 @@ fn murl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_murl2(v: &mut Prepared) {
-    let (c, power) = (v.p[0], v.p[1]);
+    let [c, power] = v.params();
     let scale = if c == -1.0 {
         0.0
     } else {
@@ -1081,8 +1106,8 @@ fn prep_murl2(v: &mut Prepared) {
 
 /// murl2: like murl but divides by the (2/power)-th power of 1 + c·z^power.
 fn murl2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (c, power, half_power, inv_p, two_inv_p, scale) = (q[0], q[1], q[2], q[3], q[4], q[5]);
+    let [c, power] = v.params();
+    let [half_power, inv_p, two_inv_p, scale] = v.derived();
     let ang = t.atan_yx * power;
     let r = c * t.sumsq.powf(half_power);
     let re = r * ang.cos() + 1.0;
@@ -1097,39 +1122,24 @@ fn murl2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 // ---------------------------------------------------------------------------------------------
 // nBlur.
 
-/// Indices of nBlur's derived values in `v.p` (after its 9 parameters).
-mod nb {
-    pub const EDGES: usize = 9;
-    pub const RATIO_HOLE: usize = 10;
-    pub const EXACT: usize = 11;
-    pub const MID: usize = 12;
-    pub const ANG_START: usize = 13;
-    pub const ANG_STRIPES: usize = 14;
-    pub const HAS_STRIPES: usize = 15;
-    pub const NEG_STRIPES: usize = 16;
-    pub const MAX_STRIPES: usize = 17;
-    pub const TAN90M2: usize = 18;
-    pub const ATAN1: usize = 19;
-    pub const ATAN2: usize = 20;
-    pub const RATIO_COMPLEMENT: usize = 21;
-    pub const SPEED1: usize = 22;
-    pub const SPEED2: usize = 23;
-    pub const SIN: usize = 24;
-    pub const COS: usize = 25;
-    pub const WEIGHT: usize = 26;
-    pub const CIRCUM: usize = 27;
-}
-
+/// Derived values: exact, circum, the sine and cosine of half a sector, the weight (adjusted to
+/// linear), edges (at least 3), the hole ratio, the sector angle, the stripes' start and width,
+/// has/negative stripes, the most stripes, tan(π/2 + sector/2), the two highlight arctangent
+/// factors, the complement of the stripe ratio and the two stripe speeds.
 fn prep_nblur(v: &mut Prepared) {
-    let q = v.p.clone();
-    let edges = if q[0] < 3.0 { 3.0 } else { q[0] };
-    let stripes = q[1];
-    let ratio_stripes = q[2];
-    let mut ratio_hole = q[3];
-    let circum = q[4];
-    let adjust = q[5];
-    let mut exact = q[7];
-    let mut highlight = q[8];
+    let [
+        edges,
+        stripes,
+        ratio_stripes,
+        ratio_hole,
+        circum,
+        adjust,
+        _,
+        exact,
+        highlight,
+    ] = v.params();
+    let edges = if edges < 3.0 { 3.0 } else { edges };
+    let (mut ratio_hole, mut exact, mut highlight) = (ratio_hole, exact, highlight);
     let has_stripes = stripes != 0.0;
     let neg_stripes = stripes < 0.0;
     let abs_stripes = stripes.abs();
@@ -1170,9 +1180,13 @@ fn prep_nblur(v: &mut Prepared) {
     let atan2 = 2.0 * (atan1 / -2.0).atan();
     let flag = |b: bool| if b { 1.0 } else { 0.0 };
     v.p.extend_from_slice(&[
+        exact,
+        circum,
+        sin_h,
+        cos_h,
+        weight,
         edges,
         ratio_hole,
-        exact,
         mid,
         ang_start,
         ang_stripes,
@@ -1185,10 +1199,6 @@ fn prep_nblur(v: &mut Prepared) {
         complement,
         speed1,
         speed2,
-        sin_h,
-        cos_h,
-        weight,
-        circum,
     ]);
 }
 
@@ -1203,21 +1213,36 @@ struct NbSample {
 }
 
 /// Draw one point in nBlur's polygon (possibly striped, with a hole).
-fn nblur_sample(q: &[f64], rng: &mut FastRng) -> NbSample {
-    let exact = q[nb::EXACT] == 1.0;
-    let circum = q[nb::CIRCUM] == 1.0;
-    let equal = q[6] == 1.0;
-    let mid = q[nb::MID];
-    let ang_start = q[nb::ANG_START];
-    let ang_stripes = q[nb::ANG_STRIPES];
-    let max_stripes = q[nb::MAX_STRIPES];
+fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
+    let [_, _, ratio_stripes, _, _, _, equal] = v.params();
+    let [
+        exact,
+        circum,
+        _sin_h,
+        _cos_h,
+        _weight,
+        edges,
+        ratio_hole,
+        mid,
+        ang_start,
+        ang_stripes,
+        has_stripes,
+        neg_stripes,
+        max_stripes,
+        tan90m2,
+        atan1,
+        atan2,
+        ratio_complement,
+        speed1,
+        speed2,
+    ] = v.derived();
+    let exact = exact == 1.0;
+    let circum = circum == 1.0;
+    let equal = equal == 1.0;
     let mut ang = if exact {
         rng.f01() * TAU
     } else {
-        ((q[nb::ATAN1] * (rng.f01() - 0.5)).atan() / q[nb::ATAN2]
-            + 0.5
-            + rand_size(rng, q[nb::EDGES]))
-            * mid
+        ((atan1 * (rng.f01() - 0.5)).atan() / atan2 + 0.5 + rand_size(rng, edges)) * mid
     };
     // Note: x takes the sine and y the cosine of the direction.
     let (mut x, mut y) = (ang.sin(), ang.cos());
@@ -1225,14 +1250,14 @@ fn nblur_sample(q: &[f64], rng: &mut FastRng) -> NbSample {
     while ang > mid {
         ang -= mid;
     }
-    if q[nb::HAS_STRIPES] == 1.0 {
-        let neg = q[nb::NEG_STRIPES] == 1.0;
+    if has_stripes == 1.0 {
+        let neg = neg_stripes == 1.0;
         // The negative-stripe mode swaps the roles of the stripe ratio and its complement, and
         // of which stripe parity gets shifted and which gets rescaled.
         let (ratio, speed) = if neg {
-            (q[nb::RATIO_COMPLEMENT], q[nb::SPEED1])
+            (ratio_complement, speed1)
         } else {
-            (q[2], q[nb::SPEED2])
+            (ratio_stripes, speed2)
         };
         let shifted = if neg { 0 } else { 1 };
         let mut count = 0i32;
@@ -1307,7 +1332,7 @@ fn nblur_sample(q: &[f64], rng: &mut FastRng) -> NbSample {
         }
     }
     let tan_ang = ang.tan();
-    let ex = q[nb::TAN90M2] / (q[nb::TAN90M2] - tan_ang);
+    let ex = tan90m2 / (tan90m2 - tan_ang);
     let ey = ex * tan_ang;
     let outer = (ex * ex + ey * ey).sqrt();
     let draw = |rng: &mut FastRng| {
@@ -1318,7 +1343,7 @@ fn nblur_sample(q: &[f64], rng: &mut FastRng) -> NbSample {
     } else {
         draw(rng) * outer
     };
-    let inner = q[nb::RATIO_HOLE] * outer;
+    let inner = ratio_hole * outer;
     if !exact && radius < inner {
         radius = if circum {
             inner + draw(rng) * (1.0 - inner + f64::EPSILON)
@@ -1340,24 +1365,23 @@ fn nblur_sample(q: &[f64], rng: &mut FastRng) -> NbSample {
 /// nBlur: a blur filling a regular polygon (optionally striped, with a central hole,
 /// highlighted edges, or its circumcircle), turned by half a sector.
 fn nblur(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let mut s = nblur_sample(q, rng);
-    if q[nb::EXACT] == 1.0 && q[nb::CIRCUM] == 0.0 {
+    let [exact, circum, sn, cs, weight] = v.derived();
+    let mut s = nblur_sample(v, rng);
+    if exact == 1.0 && circum == 0.0 {
         while s.len < s.inner || s.len > s.outer {
-            s = nblur_sample(q, rng);
+            s = nblur_sample(v, rng);
         }
     }
-    let (sn, cs) = (q[nb::SIN], q[nb::COS]);
     let x = cs * s.x - sn * s.y;
     let y = sn * s.x + cs * s.y;
-    [q[nb::WEIGHT] * x, q[nb::WEIGHT] * y, 0.0]
+    [weight * x, weight * y, 0.0]
 }
 
 // ---------------------------------------------------------------------------------------------
 // N, O.
 
 fn prep_npolar(v: &mut Prepared) {
-    let (parity, n) = (v.p[0], v.p[1]);
+    let [parity, n] = v.params();
     let nnz = if n == 0.0 { 1.0 } else { n };
     let vvar = v.w / PI;
     v.p.extend_from_slice(&[
@@ -1373,9 +1397,8 @@ fn prep_npolar(v: &mut Prepared) {
 /// npolar: with odd parity a julian-style n-th root; with even parity the same root taken of
 /// the point's log-polar image, the result mapped back through the log-polar map.
 fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let parity = q[0];
-    let (nnz, vvar, vvar2, abs_n, exponent, odd) = (q[2], q[3], q[4], q[5], q[6], q[7]);
+    let [parity] = v.params();
+    let [nnz, vvar, vvar2, abs_n, exponent, odd] = v.derived();
     let (x, y) = if odd != 0.0 {
         let ang = (t.atan_yx + TAU * rand_size(rng, abs_n)) / nnz;
         let mut r = v.w * t.sumsq.powf(exponent);
@@ -1405,7 +1428,7 @@ fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// octagon: a 3-D inversion in the "octagonal" norm x⁴ + y⁴ + 2z² where it is strong (factor
 /// below 2); elsewhere the point is scaled and pushed away from the axes by (x, y, z).
 fn octagon(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (ox, oy, oz) = (v.p[0], v.p[1], v.p[2]);
+    let [ox, oy, oz] = v.params();
     let (x2, y2, z2) = (t.x * t.x, t.y * t.y, t.z * t.z);
     let k = v.w / zeps(x2 * x2 + z2 + y2 * y2 + z2);
     if k < 2.0 {
@@ -1421,20 +1444,15 @@ fn octagon(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [away(t.x, ox), away(t.y, oy), away(t.z, oz)]
 }
 
-/// Indices of octapol's derived values.
-mod op {
-    pub const RAD: usize = 4;
-    pub const ST: usize = 5;
-    /// Corner points A..L as x, y pairs.
-    pub const PTS: usize = 6;
-}
-
 /// Fractorium's rounded 1/√2 for octapol's disc radius (kept rounded to reproduce it).
 #[allow(clippy::approx_constant)]
 const OCTAPOL_HALF_SQRT2: f64 = 0.707_106_781;
 
+/// Derived values: the disc radius, the half-size of the shape, then the corner points A..L as
+/// x, y pairs.
 fn prep_octapol(v: &mut Prepared) {
-    let (radius, s, t) = (v.p[1], v.p[2].abs(), v.p[3].abs());
+    let [_, radius, s, t] = v.params();
+    let (s, t) = (s.abs(), t.abs());
     let h = 0.5 * s;
     let rad = OCTAPOL_HALF_SQRT2 * s * radius.abs();
     v.p.extend_from_slice(&[
@@ -1474,12 +1492,11 @@ fn prep_octapol(v: &mut Prepared) {
 /// (sizes s and t), with a polar-warped disc in its centre; points elsewhere are removed from
 /// the running sum. The output adds a scaled copy of the (shrunken) input.
 fn octapol(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [pw] = v.params();
+    let [rad, st] = v.derived();
+    let corners = v.table(2);
     let w = v.w;
-    let pw = q[0];
-    let rad = q[op::RAD];
-    let st = q[op::ST];
-    let pt = |i: usize| (q[op::PTS + 2 * i], q[op::PTS + 2 * i + 1]);
+    let pt = |i: usize| (corners[2 * i], corners[2 * i + 1]);
     let (a, b, c, d, e, f) = (pt(0), pt(1), pt(2), pt(3), pt(4), pt(5));
     let (g, h, i, j, k, l) = (pt(6), pt(7), pt(8), pt(9), pt(10), pt(11));
     let x = t.x * 0.15;
@@ -1551,7 +1568,7 @@ fn ortho_step(x: f64, y: f64, xo: f64, turn: f64) -> (f64, f64) {
 /// ortho: moves points along circles orthogonal to the unit circle (by `in` inside the disc,
 /// by `out` for the inverted image of outside points).
 fn ortho(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (turn_in, turn_out) = (v.p[0], v.p[1]);
+    let [turn_in, turn_out] = v.params();
     let w = v.w;
     let r = t.sumsq;
     if r < 1.0 {
@@ -1588,7 +1605,7 @@ fn ortho(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_oscilloscope2(v: &mut Prepared) {
-    let (fx, fy) = (v.p[1], v.p[2]);
+    let [_, fx, fy] = v.params();
     v.p.push(TAU * fx);
     v.p.push(TAU * fy);
 }
@@ -1596,8 +1613,8 @@ fn prep_oscilloscope2(v: &mut Prepared) {
 /// oscilloscope2: points inside a (damped, y-perturbed) cosine band around the x axis are
 /// reflected through the origin, the others kept.
 fn oscilloscope2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (sep, amp, pert, damp, kx, ky) = (q[0], q[3], q[4], q[5], q[6], q[7]);
+    let [sep, _, _, amp, pert, damp] = v.params();
+    let [kx, ky] = v.derived();
     let wobble = pert * (ky * t.y).sin();
     let band = if damp == 0.0 {
         amp * (kx * t.x + wobble).cos() + sep
@@ -1613,14 +1630,16 @@ fn oscilloscope2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) ->
 
 /// ovoid: spherical inversion with separate x and y stretches.
 fn ovoid(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [scale_x, scale_y] = v.params();
     let k = v.w / zeps(t.sumsq);
-    [t.x * k * v.p[0], t.y * k * v.p[1], 0.0]
+    [t.x * k * scale_x, t.y * k * scale_y, 0.0]
 }
 
 /// ovoid3d: 3-D spherical inversion with separate x, y and z stretches.
 fn ovoid3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [scale_x, scale_y, scale_z] = v.params();
     let k = v.w / zeps(t.sumsq + t.z * t.z);
-    [t.x * k * v.p[0], t.y * k * v.p[1], t.z * k * v.p[2]]
+    [t.x * k * scale_x, t.y * k * scale_y, t.z * k * scale_z]
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1649,7 +1668,7 @@ fn petal(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_phoenix_julia(v: &mut Prepared) {
-    let (power, dist) = (v.p[0], v.p[1]);
+    let [power, dist] = v.params();
     let pz = zeps(power);
     let inv_n = dist / pz;
     v.p.extend_from_slice(&[inv_n, TAU / pz, inv_n / 2.0]);
@@ -1658,8 +1677,8 @@ fn prep_phoenix_julia(v: &mut Prepared) {
 /// phoenix_julia: a julia-style root whose angle is taken from the point stretched by
 /// (1 + x_distort, 1 + y_distort); z is scaled in compatible mode.
 fn phoenix_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (power, xd, yd, inv_n, step, exponent) = (q[0], q[2], q[3], q[4], q[5], q[6]);
+    let [power, _, xd, yd] = v.params();
+    let [inv_n, step, exponent] = v.derived();
     let px = t.x * (xd + 1.0);
     let py = t.y * (yd + 1.0);
     let r = v.w * t.sumsq.powf(exponent);
@@ -1676,7 +1695,7 @@ fn phoenix_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> 
 /// pie3D: a random point in one of `slices` pie wedges (rotated, of angular `thickness`), of
 /// radius r up to the weight, lifted to z = weight·sin r.
 fn pie3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (slices, rotation, thickness) = (v.p[0], v.p[1], v.p[2]);
+    let [slices, rotation, thickness] = v.params();
     let slice = trunc_i32(rng.f01() * slices + 0.5) as f64;
     let ang = rotation + TAU * (slice + rng.f01() * thickness) / slices;
     let r = v.w * rng.f01();
@@ -1684,7 +1703,8 @@ fn pie3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_pixel_flow(v: &mut Prepared) {
-    let rad = v.p[0] * (PI / 180.0);
+    let [angle] = v.params();
+    let rad = angle * (PI / 180.0);
     v.p.push(rad.cos());
     v.p.push(rad.sin());
 }
@@ -1693,8 +1713,8 @@ fn prep_pixel_flow(v: &mut Prepared) {
 /// from the pixel block (of size 1/width) the point falls in; optionally sets the colour to the
 /// random fade.
 fn pixel_flow(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (len, width, seed, dc, dir_x, dir_y) = (q[1], q[2], q[3], q[4], q[5], q[6]);
+    let [_, len, width, seed, dc] = v.params();
+    let [dir_x, dir_y] = v.derived();
     let block = |u: f64| -> i32 {
         let b = (u * width).floor() as i64 as i32;
         let jitter = 2.0 - 4.0 * wang_hash(trunc_i32(b as f64 * seed + 1.0));
@@ -1714,7 +1734,7 @@ fn pixel_flow(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prep_poincare(v: &mut Prepared) {
-    let (c1r, c1a, c2r, c2a) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [c1r, c1a, c2r, c2a] = v.params();
     let d1 = (1.0 + c1r * c1r).sqrt();
     let d2 = (1.0 + c2r * c2r).sqrt();
     let (a1, a2) = (c1a % PI, c2a % PI);
@@ -1724,8 +1744,8 @@ fn prep_poincare(v: &mut Prepared) {
 /// poincare: two successive inversions in circles of radii c1r, c2r orthogonal to the unit
 /// circle, centred in the directions c1a, c2a (weight not used).
 fn poincare(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (c1r, c2r, c1x, c1y, c2x, c2y) = (q[0], q[2], q[4], q[5], q[6], q[7]);
+    let [c1r, _, c2r] = v.params();
+    let [c1x, c1y, c2x, c2y] = v.derived();
     let invert = |x: f64, y: f64, cx: f64, cy: f64, rr: f64| {
         let (dx, dy) = (x - cx, y - cy);
         let den = zeps(dx * dx + dy * dy);
@@ -1737,7 +1757,7 @@ fn poincare(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 fn prep_poincare2(v: &mut Prepared) {
-    let (pp, qq) = (v.p[0], v.p[1]);
+    let [pp, qq] = v.params();
     let a0 = TAU / pp;
     let dist2 = 1.0 - (a0.cos() - 1.0) / (a0.cos() + (TAU / qq).cos());
     let dist = if dist2 > 0.0 { 1.0 / dist2.sqrt() } else { 1.0 };
@@ -1753,7 +1773,7 @@ fn prep_poincare2(v: &mut Prepared) {
 /// poincare2: the hyperbolic translation of the Poincaré disc (z − c)/(1 − c̄·z) that moves the
 /// centre c of a neighbouring tile of the {p, q} tiling to the origin.
 fn poincare2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (cx, cy) = (v.p[2], v.p[3]);
+    let [cx, cy] = v.derived();
     let a = t.x - cx;
     let b = t.y - cy;
     let c = 1.0 - cx * t.x - cy * t.y;
@@ -1763,7 +1783,7 @@ fn poincare2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 }
 
 fn prep_poincare3d(v: &mut Prepared) {
-    let (r, a, b) = (v.p[0], v.p[1], v.p[2]);
+    let [r, a, b] = v.params();
     let cx = -r * (a * FRAC_PI_2).cos() * (b * FRAC_PI_2).cos();
     let cy = r * (a * FRAC_PI_2).sin() * (b * FRAC_PI_2).cos();
     let cz = -r * (b * FRAC_PI_2).sin();
@@ -1785,9 +1805,7 @@ fn prep_poincare3d(v: &mut Prepared) {
 /// poincare3D: the 3-D Möbius translation of the unit ball moving the point c (of length r,
 /// direction given by the angles a and b) to the origin.
 fn poincare3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (cx, cy, cz, c2) = (q[3], q[4], q[5], q[6]);
-    let (c2x, c2y, c2z, s2x, s2y, s2z) = (q[7], q[8], q[9], q[10], q[11], q[12]);
+    let [cx, cy, cz, c2, c2x, c2y, c2z, s2x, s2y, s2z] = v.derived();
     let r2 = t.sumsq + t.z * t.z;
     let px = c2x * t.x;
     let py = c2y * t.y;
@@ -1801,14 +1819,15 @@ fn poincare3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3
 }
 
 fn prep_point_symmetry(v: &mut Prepared) {
-    let order = v.p[2];
+    let [_, _, order] = v.params();
     v.p.push(TAU / zeps(order));
 }
 
 /// point_symmetry: rotates the point (scaled by the weight about the centre) about the centre
 /// by a random multiple of 2π/order.
 fn point_symmetry(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (cx, cy, order, step) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [cx, cy, order] = v.params();
+    let [step] = v.derived();
     let ang = (rng.f01() * order).floor() * step;
     let dx = (t.x - cx) * v.w;
     let dy = (t.y - cy) * v.w;
@@ -1819,19 +1838,19 @@ fn point_symmetry(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) ->
 /// polynomial: per coordinate a signed power of |weight·u| plus a linear term lc·u and a
 /// constant sc; z is scaled by the weight.
 fn polynomial(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [powx, powy, lcx, lcy, scx, scy] = v.params();
     let aw = v.w.abs();
-    let xp = (aw * t.x.abs()).powf(q[0]);
-    let yp = (aw * t.y.abs()).powf(q[1]);
+    let xp = (aw * t.x.abs()).powf(powx);
+    let yp = (aw * t.y.abs()).powf(powy);
     [
-        xp * sign(t.x) + q[2] * t.x + q[4],
-        yp * sign(t.y) + q[3] * t.y + q[5],
+        xp * sign(t.x) + lcx * t.x + scx,
+        yp * sign(t.y) + lcy * t.y + scy,
         v.w * t.z,
     ]
 }
 
 fn prep_popcorn2_3d(v: &mut Prepared) {
-    let c = v.p[3];
+    let [_, _, _, c] = v.params();
     let w = v.w;
     let vv = if w.abs() <= 1.0 { w.abs() * w } else { w };
     v.p.extend_from_slice(&[c.tan().sin(), w * 0.5, vv]);
@@ -1840,8 +1859,8 @@ fn prep_popcorn2_3d(v: &mut Prepared) {
 /// popcorn2_3D: popcorn2 (x + px·sin tan(c·y), y + py·sin tan(c·x)), halved, with a z made
 /// from the input z (or the angle when z is 0) and, when the running z is still 0, the angle.
 fn popcorn2_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (px, py, pz, c, sin_tan_c, half_w, vv) = (q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
+    let [px, py, pz, c] = v.params();
+    let [sin_tan_c, half_w, vv] = v.derived();
     let from_angle = vv * sin_tan_c * t.atan_yx;
     let z_in = if t.z == 0.0 { from_angle } else { t.z };
     let other_z = if v.form == Form::Pre { t.z } else { acc.z };
@@ -1853,24 +1872,18 @@ fn popcorn2_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3
     ]
 }
 
-/// Indices of post_smartcrop's derived values and state slots.
+/// post_smartcrop's state slots: the last kept point (x, y, z) and its colour.
 mod sc {
-    pub const MODE: usize = 11;
-    pub const RADIAL: usize = 12;
-    pub const RADIUS: usize = 13;
-    pub const POWER: usize = 14;
-    pub const ALPHA: usize = 15;
-    pub const ROUND: usize = 16;
-    pub const ROTATION: usize = 17;
-    /// State slots: the last kept point (x, y, z) and its colour.
     pub const SX: usize = 0;
     pub const SY: usize = 1;
     pub const SZ: usize = 2;
     pub const SC: usize = 3;
 }
 
+/// Derived values: the crop mode (1 keeps the inside), radial (1 for a sector), |radius|, the
+/// working power, the polygon's angle, the rounding factor and the rotation.
 fn prep_post_smartcrop(v: &mut Prepared) {
-    let (power, radius, roundstr, rotation) = (v.p[0], v.p[1], v.p[2], v.p[8]);
+    let [power, radius, roundstr, _, _, _, _, _, rotation] = v.params();
     let mode = if (power > 0.0) == (radius > 0.0) {
         1.0
     } else {
@@ -1905,11 +1918,22 @@ fn prep_post_smartcrop(v: &mut Prepared) {
 /// ≤ 1 read the xform's pre-variation point, which this framework does not pass to post_
 /// variations: the summed point is used instead.
 fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [
+        _power,
+        _radius,
+        roundstr,
+        roundwidth,
+        distortion,
+        edge_p,
+        scatter,
+        offset,
+        _rotation,
+        cropmode,
+        stat,
+    ] = v.params();
+    let [mode, radial, radius, power, alpha, round, rotation] = v.derived();
     let w = v.w;
-    let (roundwidth, distortion, edge_p, scatter, offset) = (q[3], q[4], q[5], q[6], q[7]);
-    let (cropmode, stat) = (q[9], q[10]);
-    let mode = q[sc::MODE] as i32;
+    let mode = mode as i32;
     let absolute = stat > 1.0 || stat == -1.0;
     let (xi, yi, zi) = (t.x, t.y, t.z);
     let ang = yi.atan2(xi);
@@ -1932,8 +1956,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
             [t.x + o[0], t.y + o[1], t.z + o[2]]
         }
     };
-    if q[sc::RADIAL] != 0.0 {
-        let power = q[sc::POWER];
+    if radial != 0.0 {
         let edge = edge_p * (rng.f01() - 0.5);
         let mut xang = ang / TAU + 1.0 + edge;
         xang = (xang - xang.trunc()) * TAU;
@@ -1952,17 +1975,16 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
         let coeff = if distortion == 0.0 {
             1.0
         } else {
-            let alpha = q[sc::ALPHA];
             let mut xang = (ang + PI) / alpha;
             xang -= xang.trunc();
             xang = if xang < 0.5 { xang } else { 1.0 - xang };
             let mut k = 1.0 / (xang * alpha).cos();
-            if q[2] != 0.0 {
+            if roundstr != 0.0 {
                 let ww = if roundwidth != 1.0 {
                     ((xang * 2.0).ln() * roundwidth).exp()
                 } else {
                     xang * 2.0
-                } * q[sc::ROUND];
+                } * round;
                 k = ((1.0 - ww) * k + ww).abs();
             }
             if distortion != 1.0 {
@@ -1970,7 +1992,6 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
             }
             k
         };
-        let radius = q[sc::RADIUS];
         let xr = coeff
             * if edge_p != 0.0 {
                 radius + edge_p * (rng.f01() - 0.5)
@@ -1987,7 +2008,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
                 } else {
                     xr + coeff * (rng.f01() * scatter + offset)
                 };
-                return placed(rdc, ang + q[sc::ROTATION]);
+                return placed(rdc, ang + rotation);
             }
             // Removed: the origin in the absolute modes; otherwise the point is left as is.
             return if absolute {
@@ -2013,15 +2034,15 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
 }
 
 fn prep_pow_block(v: &mut Prepared) {
-    let (num, den, cn, cd) = (v.p[0], v.p[1], v.p[3], v.p[4]);
+    let [num, den, _, cn, cd] = v.params();
     v.p.push(num / zeps(den * cn * (1.0 / cd)));
 }
 
 /// pow_block: the power z^(numerator/denominator·corrections) with a random root branch
 /// (scaled by `root`), the angle taken as numerator·(θ + 2π·k·root)/denominator.
 fn pow_block(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (num, den, root, power) = (q[0], q[1], q[2], q[5]);
+    let [num, den, root] = v.params();
+    let [power] = v.derived();
     let r = t.sumsq.powf(power * 0.5) * v.w;
     let dz = zeps(den);
     let ang = (t.atan_yx / dz + (root * TAU * (rng.f01() * den).floor() / dz)) * num;

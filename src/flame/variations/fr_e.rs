@@ -52,7 +52,7 @@ fn degrees_sin_cos(deg: f64) -> (f64, f64) {
 /// Each coordinate is pushed along its own axis by a sine wave of that coordinate: bands of
 /// compression and rarefaction, like a sound wave.
 fn pressure_wave(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (kx, ky, ikx, iky) = (v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [kx, ky, ikx, iky] = v.derived();
     [
         v.w * (t.x + ikx * (kx * t.x).sin()),
         v.w * (t.y + iky * (ky * t.y).sin()),
@@ -61,43 +61,56 @@ fn pressure_wave(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn pressure_wave_prep(v: &mut Prepared) {
-    let (kx, ky) = (v.p[0] * TAU, v.p[1] * TAU);
+    let [x_freq, y_freq] = v.params();
+    let (kx, ky) = (x_freq * TAU, y_freq * TAU);
     v.p.extend([kx, ky, 1.0 / zeps(kx), 1.0 / zeps(ky)]);
 }
 
 /// A projective (homographic) map of the plane: two affine forms divided by a third.
 fn projective(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let s = v.w / zeps(q[0] * t.x + q[1] * t.y + q[2]);
+    let [a, b, c, a1, b1, c1, a2, b2, c2] = v.params();
+    let s = v.w / zeps(a * t.x + b * t.y + c);
     [
-        (q[3] * t.x + q[4] * t.y + q[5]) * s,
-        (q[6] * t.x + q[7] * t.y + q[8]) * s,
+        (a1 * t.x + b1 * t.y + c1) * s,
+        (a2 * t.x + b2 * t.y + c2) * s,
         0.0,
     ]
 }
-
-// pRose3D derived values, after its 16 parameters.
-const PR_CYCLE: usize = 16;
-const PR_PETALS: usize = 17;
-const PR_DIR: usize = 18;
-const PR_GHOST: usize = 19;
-const PR_FREQ: usize = 20;
-const PR_WIG: usize = 21;
-const PR_S12: usize = 22;
-const PR_S3: usize = 23;
-const PR_ANTI: usize = 24;
-const PR_ABSOPT: usize = 25;
 
 /// A polar rose r = l·cos(kθ + c) lifted into 3-D: the height is a blend of radial waves
 /// ("wag"), a spiral wiggle and an offset; with a negative option a random half of the points
 /// form a scaled, mirrored "ghost" copy below.
 fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (l, c, z1, z2, ref_sc) = (q[0], q[2], q[3], q[4], q[5]);
-    let (dist, wagsc, crvsc, offset) = (q[10], q[11], q[12], q[15]);
-    let (cycle, petals, dir, ghost) = (q[PR_CYCLE], q[PR_PETALS], q[PR_DIR], q[PR_GHOST]);
-    let (freq, wig_scale, s12, s3) = (q[PR_FREQ], q[PR_WIG], q[PR_S12], q[PR_S3]);
-    let (anti, abs_opt) = (q[PR_ANTI], q[PR_ABSOPT]);
+    let [
+        l,
+        _k,
+        c,
+        z1,
+        z2,
+        ref_sc,
+        _opt,
+        _opt_sc,
+        _opt3,
+        _transp,
+        dist,
+        wagsc,
+        crvsc,
+        _f,
+        _wigsc,
+        offset,
+    ] = v.params();
+    let [
+        cycle,
+        petals,
+        dir,
+        ghost,
+        freq,
+        wig_scale,
+        s12,
+        s3,
+        anti,
+        abs_opt,
+    ] = v.derived();
 
     let rad = t.sqrt;
     let c1 = rad / l;
@@ -160,8 +173,23 @@ fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn prose3d_prep(v: &mut Prepared) {
-    let (k, opt, opt_sc, opt3, transp, f, wigsc) =
-        (v.p[1], v.p[6], v.p[7], v.p[8], v.p[9], v.p[13], v.p[14]);
+    let [
+        _l,
+        k,
+        _c,
+        _z1,
+        _z2,
+        _ref_sc,
+        opt,
+        opt_sc,
+        opt3,
+        transp,
+        _dist,
+        _wagsc,
+        _crvsc,
+        f,
+        wigsc,
+    ] = v.params();
     let cycle = TAU / zeps(k);
     let mut petals = k;
     if petals.abs() < 0.0001 {
@@ -191,10 +219,11 @@ fn prose3d_prep(v: &mut Prepared) {
 /// Wraps the plane around a sphere: x and y become longitude and latitude (scaled by w·π),
 /// z the height scaled by `zscale`.
 fn psphere(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let k = v.p[1];
+    let [zscale] = v.params();
+    let [k] = v.derived();
     let (s0, c0) = (t.x * k).sin_cos();
     let (s1, c1) = (t.y * k).sin_cos();
-    [c0 * -s1, s0 * c1, c1 * v.p[0]]
+    [c0 * -s1, s0 * c1, c1 * zscale]
 }
 
 fn psphere_prep(v: &mut Prepared) {
@@ -204,10 +233,10 @@ fn psphere_prep(v: &mut Prepared) {
 
 /// Adds a sine of each coordinate to itself: a regular pulsing of the grid along both axes.
 fn pulse(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [freqx, freqy, scalex, scaley] = v.params();
     [
-        v.w * (t.x + q[2] * (t.x * q[0]).sin()),
-        v.w * (t.y + q[3] * (t.y * q[1]).sin()),
+        v.w * (t.x + scalex * (t.x * freqx).sin()),
+        v.w * (t.y + scaley * (t.y * freqy).sin()),
         0.0,
     ]
 }
@@ -215,12 +244,25 @@ fn pulse(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// One step of a quadratic planar ODE: each output coordinate is a general quadratic
 /// polynomial of x and y (the weight scales only the x term of x' and the y term of y').
 fn q_ode(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [
+        q_ode01,
+        q_ode02,
+        q_ode03,
+        q_ode04,
+        q_ode05,
+        q_ode06,
+        q_ode07,
+        q_ode08,
+        q_ode09,
+        q_ode10,
+        q_ode11,
+        q_ode12,
+    ] = v.params();
     let (x, y) = (t.x, t.y);
     let (xx, yy, xy) = (x * x, y * y, x * y);
     [
-        (q[0] + v.w * q[1] * x + q[2] * xx) + (q[3] * xy + q[4] * y + q[5] * yy),
-        (q[6] + q[7] * x + q[8] * xx) + (q[9] * xy + v.w * q[10] * y + q[11] * yy),
+        (q_ode01 + v.w * q_ode02 * x + q_ode03 * xx) + (q_ode04 * xy + q_ode05 * y + q_ode06 * yy),
+        (q_ode07 + q_ode08 * x + q_ode09 * xx) + (q_ode10 * xy + v.w * q_ode11 * y + q_ode12 * yy),
         0.0,
     ]
 }
@@ -233,8 +275,7 @@ fn q_ode(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// origin), each cell raised to a hashed height that also picks the colour. Replaces what the
 /// xform's earlier variations summed.
 fn rand_cubes(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (size, height, spread, seed, density) = (q[0], q[1], q[2], q[3], q[4]);
+    let [size, height, spread, seed, density] = v.params();
     let mut cell = || {
         let l = rng.f01().ln();
         floor_f(l * if rng.bit() { spread } else { -spread })
@@ -256,7 +297,7 @@ fn rand_cubes(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A rational function of z = x + iy: (t3 z³ + t2 z² + t1 z + tc) / (b3 z³ + b2 z² + b1 z + bc).
 fn rational3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [t3, t2, t1, tc, b3, b2, b1, bc] = v.params();
     let (x, y) = (t.x, t.y);
     let (xx, yy) = (x * x, y * y);
     let (x3, y3) = (x * x * x, y * y * y);
@@ -264,10 +305,10 @@ fn rational3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let re3 = x3 - 3.0 * x * yy;
     let im3 = 3.0 * xx * y - y3;
     let re2 = xx - yy;
-    let num_re = q[0] * re3 + q[1] * re2 + q[2] * x + q[3];
-    let num_im = q[0] * im3 + q[1] * 2.0 * x * y + q[2] * y;
-    let den_re = q[4] * re3 + q[5] * re2 + q[6] * x + q[7];
-    let den_im = q[4] * im3 + q[5] * 2.0 * x * y + q[6] * y;
+    let num_re = t3 * re3 + t2 * re2 + t1 * x + tc;
+    let num_im = t3 * im3 + t2 * 2.0 * x * y + t1 * y;
+    let den_re = b3 * re3 + b2 * re2 + b1 * x + bc;
+    let den_im = b3 * im3 + b2 * 2.0 * x * y + b1 * y;
     let inv = 1.0 / zeps(den_re * den_re + den_im * den_im);
     [
         v.w * (num_re * den_re + num_im * den_im) * inv,
@@ -322,32 +363,20 @@ fn rays3(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 /// A blur whose size grows with the distance from a centre (beyond an offset): sharp near the
 /// centre, smeared further out.
 fn rblur(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (dx, dy) = (t.x - q[2], t.y - q[3]);
-    let r = non_negative((dx * dx + dy * dy).sqrt() - q[1]) * (2.0 * q[0]);
+    let [strength, offset, center_x, center_y] = v.params();
+    let (dx, dy) = (t.x - center_x, t.y - center_y);
+    let r = non_negative((dx * dx + dy * dy).sqrt() - offset) * (2.0 * strength);
     let x = v.w * (t.x + (rng.f01() - 0.5) * r);
     let y = v.w * (t.y + (rng.f01() - 0.5) * r);
     [x, y, 0.0]
 }
 
-// ripple derived values, after its 7 parameters.
-const RP_F: usize = 7;
-
 /// Circular ripples around a centre: the distance is displaced by a cosine wave, the two wave
 /// offsets (phase and its complement) blended by the phase. (The "distance" is √(x²·y²), as in
 /// the original plugin.)
 fn ripple(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (cx, cy) = (q[3], q[4]);
-    let (f, ph, s, is, vxp, pxa, pixa) = (
-        q[RP_F],
-        q[RP_F + 1],
-        q[RP_F + 2],
-        q[RP_F + 3],
-        q[RP_F + 4],
-        q[RP_F + 5],
-        q[RP_F + 6],
-    );
+    let [_, _, _, cx, cy] = v.params();
+    let [f, ph, s, is, vxp, pxa, pixa] = v.derived();
     let x = t.x * s - cx;
     let y = t.y * s + cy;
     let dd = (x * x * (y * y)).sqrt();
@@ -362,7 +391,7 @@ fn ripple(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn ripple_prep(v: &mut Prepared) {
-    let (freq, vel, amp, phase, scale) = (v.p[0], v.p[1], v.p[2], v.p[5], v.p[6]);
+    let [freq, vel, amp, _, _, phase, scale] = v.params();
     let a = amp * 0.01;
     let ph = phase * TAU - PI;
     let s = zeps(scale);
@@ -382,13 +411,20 @@ fn rippled(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A rotation of the plane by `angle` degrees.
 fn rotate(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (s, c) = (v.p[1], v.p[2]);
+    let [s, c] = v.derived();
     [v.w * (t.x * c - t.y * s), v.w * (t.x * s + t.y * c), 0.0]
 }
 
-fn angle_prep(v: &mut Prepared) {
-    let (s, c) = degrees_sin_cos(v.p[v.def.params.len() - 1]);
-    v.p.extend([s, c]);
+/// sin and cos of rotate's angle (in degrees).
+fn rotate_prep(v: &mut Prepared) {
+    let [angle] = v.params();
+    v.p.extend(<[f64; 2]>::from(degrees_sin_cos(angle)));
+}
+
+/// sin and cos of shift's angle (in degrees).
+fn shift_prep(v: &mut Prepared) {
+    let [_, _, angle] = v.params();
+    v.p.extend(<[f64; 2]>::from(degrees_sin_cos(angle)));
 }
 
 /// sin and cos of a quarter turn times the weight (the rotate_x/y/z angle).
@@ -400,7 +436,7 @@ fn quarter_turns_prep(v: &mut Prepared) {
 /// A 3-D rotation about the x axis by w quarter turns (the weight is the angle). x passes
 /// through unweighted, replacing the x that earlier variations summed.
 fn rotate_x(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
-    let (s, c) = (v.p[0], v.p[1]);
+    let [s, c] = v.derived();
     if v.form == Form::Regular {
         acc.x = 0.0;
     }
@@ -410,7 +446,7 @@ fn rotate_x(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 /// A 3-D rotation about the y axis by w quarter turns (the weight is the angle). y passes
 /// through unweighted, replacing the y that earlier variations summed.
 fn rotate_y(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
-    let (s, c) = (v.p[0], v.p[1]);
+    let [s, c] = v.derived();
     let y = if v.form == Form::Regular {
         acc.y = t.y;
         0.0
@@ -423,7 +459,7 @@ fn rotate_y(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 /// A rotation about the z axis by w quarter turns (the weight is the angle). z passes through
 /// unweighted, replacing the z that earlier variations summed.
 fn rotate_z(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
-    let (s, c) = (v.p[0], v.p[1]);
+    let [s, c] = v.derived();
     if v.form == Form::Regular {
         acc.z = 0.0;
     }
@@ -479,7 +515,7 @@ fn polygon_sector(dang: f64) -> (f64, f64, f64) {
 /// scry's inversion followed by a map that turns circles into regular polygons with `power`
 /// sides.
 fn scry2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (alpha, half_tan2) = (v.p[1], v.p[2]);
+    let [alpha, half_tan2] = v.derived();
     let r2 = t.sumsq;
     let s = 1.0 / zeps(r2.sqrt() * (r2 + 1.0));
     let (nx, ny) = (t.x * s, t.y * s);
@@ -494,14 +530,16 @@ fn scry2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn scry2_prep(v: &mut Prepared) {
-    let alpha = TAU / zeps(v.p[0]);
+    let [power] = v.params();
+    let alpha = TAU / zeps(power);
     v.p.extend([alpha, (alpha * 0.5).tan() * 2.0]);
 }
 
 /// scry in 3-D: p / (|p|·(|p|² + 1/w)); a zero z is replaced by the polar angle.
 fn scry_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [inv_w] = v.derived();
     let d2 = t.sumsq + t.z * t.z;
-    let r = 1.0 / zeps(d2.sqrt() * (d2 + v.p[0]));
+    let r = 1.0 / zeps(d2.sqrt() * (d2 + inv_w));
     let z = if t.z == 0.0 { t.atan_yx } else { t.z };
     [t.x * r, t.y * r, z * r]
 }
@@ -539,7 +577,8 @@ fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A translation by (x, y) rotated by `angle` degrees (the y offset mirrored).
 fn shift(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (dx, dy, s, c) = (v.p[0], v.p[1], v.p[3], v.p[4]);
+    let [dx, dy] = v.params();
+    let [s, c] = v.derived();
     [
         v.w * (t.x + c * dx - s * dy),
         v.w * (t.y - c * dy - s * dx),
@@ -550,8 +589,8 @@ fn shift(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Shreds the plane into parallel strips: each cell of size `distance` along an axis is
 /// squeezed to `width` of itself, leaving gaps between the strips; z is scaled.
 fn shredlin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (xw, yw, gx, gy) = (q[4], q[5], q[6], q[7]);
+    let [xdistance, xwidth, ydistance, ywidth] = v.params();
+    let [xw, yw, gx, gy] = v.derived();
     let strip = |c: f64, dist: f64, width: f64, gap: f64| {
         let neg = if c < 0.0 { 1.0 } else { 0.0 };
         let u = c / dist;
@@ -559,21 +598,22 @@ fn shredlin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         (u - i) * width + i + (0.5 - neg) * gap
     };
     [
-        xw * strip(t.x, q[0], q[1], gx),
-        yw * strip(t.y, q[2], q[3], gy),
+        xw * strip(t.x, xdistance, xwidth, gx),
+        yw * strip(t.y, ydistance, ywidth, gy),
         v.w * t.z,
     ]
 }
 
 fn shredlin_prep(v: &mut Prepared) {
-    let (xd, xwid, yd, ywid) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [xd, xwid, yd, ywid] = v.params();
     v.p.extend([v.w * xd, v.w * yd, 1.0 - xwid, 1.0 - ywid]);
 }
 
 /// Shreds the plane into `n` angular wedges, each squeezed to `width` of its angle, leaving
 /// empty spokes between them; z is scaled.
 fn shredrad(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (width, alpha) = (v.p[1], v.p[2]);
+    let [_, width] = v.params();
+    let [alpha] = v.derived();
     let a = (t.atan_yx + 3.0 * PI + alpha / 2.0) / alpha;
     let i = trunc_i32(a) as f64;
     let ang = ((a - i) * width + i) * alpha - PI - alpha / 2.0 * width;
@@ -582,20 +622,22 @@ fn shredrad(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn shredrad_prep(v: &mut Prepared) {
-    let alpha = TAU / v.p[0];
+    let [n] = v.params();
+    let alpha = TAU / n;
     v.p.push(alpha);
 }
 
 /// A logistic squashing of each axis into (-|w|, |w|); |shift| < 1 uses the reciprocal
 /// steepness and flips by the shift's sign.
 fn sigmoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (sx, sy, ax, ay, vv) = (v.p[2], v.p[3], v.p[4], v.p[5], v.p[6]);
+    let [sx, sy, ax, ay, vv] = v.derived();
     let c0 = ax / zeps(1.0 + (sx * t.x).exp());
     let c1 = ay / zeps(1.0 + (sy * t.y).exp());
     [vv * (2.0 * (c0 - 0.5)), vv * (2.0 * (c1 - 0.5)), 0.0]
 }
 
 fn sigmoid_prep(v: &mut Prepared) {
+    let [shiftx, shifty] = v.params();
     let steep = |shift: f64| -> (f64, f64) {
         if shift < 1.0 && shift > -1.0 {
             if shift == 0.0 {
@@ -607,8 +649,8 @@ fn sigmoid_prep(v: &mut Prepared) {
             (shift, 1.0)
         }
     };
-    let (sx, ax) = steep(v.p[0]);
-    let (sy, ay) = steep(v.p[1]);
+    let (sx, ax) = steep(shiftx);
+    let (sy, ay) = steep(shifty);
     let vv = v.w.abs();
     v.p.extend([sx * -5.0, sy * -5.0, ax, ay, vv]);
 }
@@ -632,8 +674,9 @@ fn powered_unit(rng: &mut FastRng, pw: f64) -> f64 {
 /// A disc of radius w filled with a density that follows acos (denser at the rim); `power`
 /// reshapes the radial profile.
 fn sineblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [power] = v.params();
     let (s, c) = (rng.f01() * TAU).sin_cos();
-    let u = powered_unit(rng, v.p[0]);
+    let u = powered_unit(rng, power);
     let r = v.w * ((u * 2.0 - 1.0).acos() / PI);
     [r * c, r * s, 0.0]
 }
@@ -658,7 +701,7 @@ fn sinq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// sin of each coordinate times a quadratic "range" factor (its square plus w, minus w·r²).
 fn sintrange(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let k = v.p[0];
+    let [k] = v.params();
     let (xx, yy) = (t.x * t.x, t.y * t.y);
     let m = (xx + yy) * k;
     [
@@ -670,14 +713,16 @@ fn sintrange(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Blends each coordinate toward -cos(2π·freq·coordinate): a grid of sine-shaped cells.
 fn sinusgrid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (ax, ay, fx, fy) = (v.p[0], v.p[1], v.p[4], v.p[5]);
+    let [ax, ay] = v.params();
+    let [fx, fy] = v.derived();
     let sx = -(t.x * fx).cos();
     let sy = -(t.y * fy).cos();
     [v.w * mix(t.x, sx, ax), v.w * mix(t.y, sy, ay), 0.0]
 }
 
 fn sinusgrid_prep(v: &mut Prepared) {
-    let (fx, fy) = (zeps(v.p[2] * TAU), zeps(v.p[3] * TAU));
+    let [_, _, freqx, freqy] = v.params();
+    let (fx, fy) = (zeps(freqx * TAU), zeps(freqy * TAU));
     v.p.extend([fx, fy]);
 }
 
@@ -690,21 +735,12 @@ fn sinusoidal3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     ]
 }
 
-// smartshape derived values, after its 5 parameters.
-const SM_ALPHA: usize = 5;
-
 /// Turns circles around the origin into regular polygons with `power` sides; corners can be
 /// rounded (`roundstr`, `roundwidth`), the effect strengthened or inverted (`distortion`), and
 /// the angular spacing compensated.
 fn smartshape(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (roundstr, roundwidth, distortion) = (q[1], q[2], q[3]);
-    let (alpha, alpha_coeff, round_coeff, comp) = (
-        q[SM_ALPHA],
-        q[SM_ALPHA + 1],
-        q[SM_ALPHA + 2],
-        q[SM_ALPHA + 3],
-    );
+    let [_, roundstr, roundwidth, distortion] = v.params();
+    let [alpha, alpha_coeff, round_coeff, comp] = v.derived();
     let dang = (t.atan_yx + PI) / alpha;
     let (sector, sign, off) = polygon_sector(dang);
     let xang = if comp == 1.0 && distortion >= 1.0 {
@@ -738,12 +774,13 @@ fn smartshape(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 fn smartshape_prep(v: &mut Prepared) {
-    let power = v.p[0].max(2.0);
+    let [power, roundstr, _, _, compensation] = v.params();
+    let power = power.max(2.0);
     v.p[0] = power;
     let alpha = TAU / power;
     let alpha_coeff = (alpha * 0.5).tan() * 2.0;
-    let round_coeff = v.p[1] / (alpha * 0.5).sin() / power * 2.0;
-    let comp = if v.p[4] <= 0.0 { 0.0 } else { 1.0 };
+    let round_coeff = roundstr / (alpha * 0.5).sin() / power * 2.0;
+    let comp = if compensation <= 0.0 { 0.0 } else { 1.0 };
     v.p.extend([alpha, alpha_coeff, round_coeff, comp]);
 }
 
@@ -762,9 +799,10 @@ fn spher(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A solid ball of radius w in 3-D, random direction, with an acos radial profile shaped by
 /// `power`.
 fn sphereblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [power] = v.params();
     let ang = rng.f01() * TAU;
     let polar = (rng.f01() * 2.0 - 1.0).acos();
-    let u = powered_unit(rng, v.p[0]);
+    let u = powered_unit(rng, power);
     let r = v.w * (((u * 2.0 - 1.0).acos() / PI).ln() / 1.5).exp();
     let (s, c) = ang.sin_cos();
     let (sz, cz) = polar.sin_cos();
@@ -780,7 +818,8 @@ fn spherical3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// An inversion r → 1/r^dist copied into `power` random rotated sectors (x and y swapped with
 /// flam3 compatibility off).
 fn spherical_n(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (power, dist, step) = (v.p[0], v.p[1], v.p[2]);
+    let [power, dist] = v.params();
+    let [step] = v.derived();
     let r = zeps(t.sqrt.powf(dist));
     let n = floor_f(power * rng.f01());
     let alpha = t.atan_yx + n * TAU / step;
@@ -793,17 +832,19 @@ fn spherical_n(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn spherical_n_prep(v: &mut Prepared) {
-    let step = zeps(floor_f(v.p[0]));
+    let [power] = v.params();
+    let step = zeps(floor_f(power));
     v.p.push(step);
 }
 
 /// Pushes every point of 3-D space `radius` further from the origin (along its direction),
 /// hollowing out a spherical void.
 fn spherivoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [radius] = v.params();
     let zr = (t.z * t.z + t.sqrt * t.sqrt).sqrt();
     let phi = clamp_nan_low(t.z / zr, -1.0, 1.0).acos();
     let (ps, pc) = phi.sin_cos();
-    let grow = zr + v.p[0];
+    let grow = zr + radius;
     [
         v.w * t.ux * ps * grow,
         v.w * t.uy * ps * grow,
@@ -814,14 +855,18 @@ fn spherivoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// A 3-D spherical inversion with a separate power of |p|² per axis; z only when `zOn` is 1
 /// (otherwise 0).
 fn sphyp3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [stretch_x, stretch_y, stretch_z, z_on] = v.params();
     let d = zeps(t.sumsq + t.z * t.z);
-    let z = if q[3] == 1.0 {
-        t.z * (v.w / d.powf(q[2]))
+    let z = if z_on == 1.0 {
+        t.z * (v.w / d.powf(stretch_z))
     } else {
         0.0
     };
-    [t.x * (v.w / d.powf(q[0])), t.y * (v.w / d.powf(q[1])), z]
+    [
+        t.x * (v.w / d.powf(stretch_x)),
+        t.y * (v.w / d.powf(stretch_y)),
+        z,
+    ]
 }
 
 /// Wing-like spirals: (cos x², sin x²)·sin y² / r².
@@ -837,9 +882,7 @@ fn spiralwing(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Draws a spirograph (epitrochoid) curve independently of the input: a random curve
 /// parameter in [tmin, tmax) and a random offset in [ymin, ymax) added to both coordinates.
 fn spirograph(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (a, b, d, tmin, ymin, tmax, ymax, c1, c2) =
-        (q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], q[8]);
+    let [a, b, d, tmin, ymin, tmax, ymax, c1, c2] = v.params();
     let tt = (tmax - tmin) * rng.f01() + tmin;
     let off = (ymax - ymin) * rng.f01() + ymin;
     let ab = a + b;
@@ -853,8 +896,7 @@ fn spirograph(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A bubble-like contraction plus a grid of unit cells, each cell's content halved toward its
 /// centre and, three times in four, pushed out toward the nearest cell border.
 fn split_brdr(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (bx, by, px, py) = (q[0], q[1], q[2], q[3]);
+    let [bx, by, px, py] = v.params();
     let w = v.w;
     let b = w / (t.sumsq * 0.25 + 1.0);
     let (rx, ry) = (t.x.round_ties_even(), t.y.round_ties_even());
@@ -891,11 +933,12 @@ fn split_brdr(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// splits in 3-D: each octant is moved away from the coordinate planes by (x, y, z).
 fn splits3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [dx, dy, dz] = v.params();
     let away = |c: f64, d: f64| if c >= 0.0 { c + d } else { c - d };
     [
-        v.w * away(t.x, v.p[0]),
-        v.w * away(t.y, v.p[1]),
-        v.w * away(t.z, v.p[2]),
+        v.w * away(t.x, dx),
+        v.w * away(t.y, dy),
+        v.w * away(t.z, dz),
     ]
 }
 
@@ -910,8 +953,7 @@ fn square3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A grid of square cells; inside each cell, concentric square rings are rotated by quarter
 /// turns according to their level, with hashed per-cell limits and hashed cells left still.
 fn squares(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (cell, lo, hi, num, seed, zero, zero_seed) = (q[0], q[1], q[2], q[3], q[4], q[5], q[6]);
+    let [cell, lo, hi, num, seed, zero, zero_seed] = v.params();
     if cell == 0.0 {
         return [t.x * v.w, t.y * v.w, 0.0];
     }
@@ -952,7 +994,8 @@ fn squarize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// (cos u·tan x, sin u·tan y) with u = √(a x² + b y²).
 fn squirrel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let u = finite_non_negative(zeps(v.p[0]) * (t.x * t.x) + zeps(v.p[1]) * (t.y * t.y)).sqrt();
+    let [a, b] = v.params();
+    let u = finite_non_negative(zeps(a) * (t.x * t.x) + zeps(b) * (t.y * t.y)).sqrt();
     let (s, c) = u.sin_cos();
     [c * t.x.tan() * v.w, s * t.y.tan() * v.w, 0.0]
 }
@@ -961,7 +1004,8 @@ fn squirrel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// the arc length along the square boundary is divided by `power` and shifted by a random
 /// number of full turns.
 fn squish(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (power, inv) = (v.p[0], v.p[1]);
+    let [power] = v.params();
+    let [inv] = v.derived();
     let (ax, ay) = (t.x.abs(), t.y.abs());
     let (s, p) = if ax > ay {
         (ax, if t.x > 0.0 { t.y } else { 4.0 * ax - t.y })
@@ -980,15 +1024,16 @@ fn squish(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn squish_prep(v: &mut Prepared) {
-    let inv = 1.0 / v.p[0];
+    let [power] = v.params();
+    let inv = 1.0 / power;
     v.p.push(inv);
 }
 
 /// Checkerboard-shifted spherical sines: sin(p)/r² plus an offset that depends on the colour
 /// of the checkerboard square the point falls in, with optional random jitter.
 fn sschecks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (ox, oy, jitter, inv_size) = (q[0], q[1], q[3], q[4]);
+    let [ox, oy, _, jitter] = v.params();
+    let [inv_size] = v.derived();
     let r = v.w / zeps(t.sumsq);
     let parity = trunc_i32(lrint(t.x * inv_size) + lrint(t.y * inv_size));
     let (dx, dy) = if parity & 1 != 0 {
@@ -1000,14 +1045,16 @@ fn sschecks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn sschecks_prep(v: &mut Prepared) {
-    let inv = 1.0 / zeps(v.p[2]);
+    let [_, _, size] = v.params();
+    let inv = 1.0 / zeps(size);
     v.p.push(inv);
 }
 
 /// A filled star with `power` points (`range` sets how deep the notches are), drawn
 /// independently of the input.
 fn starblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (power, len, step, sin_a, cos_a) = (v.p[0], v.p[2], v.p[3], v.p[4], v.p[5]);
+    let [power] = v.params();
+    let [len, step, sin_a, cos_a] = v.derived();
     let f = rng.f01() * power * 2.0;
     let i = trunc_i32(f);
     let x = (f - i as f64) * len;
@@ -1025,31 +1072,18 @@ fn starblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn starblur_prep(v: &mut Prepared) {
-    let (power, range) = (v.p[0], v.p[1]);
+    let [power, range] = v.params();
     let half = PI / power;
     let len = (1.0 + range * range - 2.0 * range * half.cos()).sqrt();
     let alpha = (half.sin() * range / len).asin();
     v.p.extend([len, TAU / power, alpha.sin(), alpha.cos()]);
 }
 
-// starblur2 derived values, after its 5 parameters.
-const SB_LEN: usize = 5;
-
 /// starblur with a hole in the middle (`hole`) and each point's edge split into `stripes`
 /// stripes of relative `width`.
 fn starblur2(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let width = q[4];
-    let (len, hole2, fill2, step, power2, sin_a, cos_a2, stripes) = (
-        q[SB_LEN],
-        q[SB_LEN + 1],
-        q[SB_LEN + 2],
-        q[SB_LEN + 3],
-        q[SB_LEN + 4],
-        q[SB_LEN + 5],
-        q[SB_LEN + 6],
-        q[SB_LEN + 7],
-    );
+    let [_, _, _, _, width] = v.params();
+    let [len, hole2, fill2, step, power2, sin_a, cos_a2, stripes] = v.derived();
     let k = rng.f01() * power2;
     let whole = floor_f(k);
     let f = k - whole;
@@ -1077,7 +1111,7 @@ fn starblur2(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 fn starblur2_prep(v: &mut Prepared) {
-    let (power, range, hole, stripes) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [power, range, hole, stripes] = v.params();
     let pz = zeps(power);
     let half = PI / pz;
     let len = (1.0 + range * range - 2.0 * range * half.cos()).sqrt();
@@ -1098,35 +1132,39 @@ fn starblur2_prep(v: &mut Prepared) {
 /// Twin interference: w·p plus (x² − y²)/(x² + y²)·sin(2π·distort·(x + y)) of the scaled
 /// point, added to both coordinates.
 fn stwin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [distort] = v.params();
     let x = t.x * v.w * 0.05;
     let y = t.y * v.w * 0.05;
     let (xx, yy) = (x * x, y * y);
     let sum2 = xx + yy;
-    let mut e = (xx - yy) * (TAU * v.p[0] * (x + y)).sin();
+    let mut e = (xx - yy) * (TAU * distort * (x + y)).sin();
     e /= if sum2 != 0.0 { sum2 } else { 1.0 };
     [v.w * t.x + e, v.w * t.y + e, 0.0]
 }
-
-// SuperShape3D derived values, after its 16 parameters.
-const SS_AN2_1: usize = 16;
 
 /// A random point on a 3-D superformula surface (Gielis): two superformula radii for the
 /// latitude and longitude, spherical or toroidal, with an optional spiral; independent of the
 /// input.
 fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (n1_1, n1_2, n2_1, n2_2, n3_1, n3_2, spiral, toroid) =
-        (q[8], q[9], q[10], q[11], q[12], q[13], q[14], q[15]);
-    let (an2_1, an2_2, bn3_1, bn3_2, m4_1, m4_2, rho_k, phi_k) = (
-        q[SS_AN2_1],
-        q[SS_AN2_1 + 1],
-        q[SS_AN2_1 + 2],
-        q[SS_AN2_1 + 3],
-        q[SS_AN2_1 + 4],
-        q[SS_AN2_1 + 5],
-        q[SS_AN2_1 + 6],
-        q[SS_AN2_1 + 7],
-    );
+    let [
+        _,
+        _,
+        _,
+        _,
+        _,
+        _,
+        _,
+        _,
+        n1_1,
+        n1_2,
+        n2_1,
+        n2_2,
+        n3_1,
+        n3_2,
+        spiral,
+        toroid,
+    ] = v.params();
+    let [an2_1, an2_2, bn3_1, bn3_2, m4_1, m4_2, rho_k, phi_k] = v.derived();
     let rho = rng.f01() * rho_k;
     let mut phi = rng.f01() * phi_k;
     if rng.bit() {
@@ -1153,9 +1191,8 @@ fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 fn super_shape3d_prep(v: &mut Prepared) {
-    let q = v.p.clone();
-    let (rho, phi, m1, m2, a1, a2, b1, b2) = (q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]);
-    let (n2_1, n2_2, n3_1, n3_2) = (q[10], q[11], q[12], q[13]);
+    let [rho, phi, m1, m2, a1, a2, b1, b2] = v.params();
+    let [_, _, _, _, _, _, _, _, _, _, n2_1, n2_2, n3_1, n3_2] = v.params();
     v.p.extend([
         (1.0 / a1).abs().powf(n2_1),
         (1.0 / a2).abs().powf(n2_2),
@@ -1291,7 +1328,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("rippled", rippled).needs(S),
     VarDef::new("rotate", rotate)
         .params(&[p("rotate_angle", 0.0)])
-        .prepare(angle_prep),
+        .prepare(rotate_prep),
     VarDef::new("rotate_x", rotate_x)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(quarter_turns_prep),
@@ -1321,7 +1358,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("shift", shift)
         .params(&[p("shift_x", 0.0), p("shift_y", 0.0), p("shift_angle", 0.0)])
-        .prepare(angle_prep),
+        .prepare(shift_prep),
     VarDef::new("shredlin", shredlin)
         .batch(super::inline_batch!(shredlin))
         .params(&[

@@ -47,7 +47,7 @@ fn div_or_inverse(q: f64, r: f64) -> f64 {
 /// svf: the plane wrapped onto a sphere-like surface whose latitude bands are modulated by
 /// cos(n·y) (a 3-D output).
 fn svf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let n = v.p[0];
+    let [n] = v.params();
     let cn = (n * t.y).cos();
     let (sx, cx) = t.x.sin_cos();
     let (sy, cy) = t.y.sin_cos();
@@ -60,14 +60,15 @@ fn svf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// swirl3: a logarithmic spiral twist — each point turns by `shift`·ln r.
 fn swirl3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [shift] = v.params();
     let r = t.sqrt;
-    let ang = t.atan_yx + r.ln() * v.p[0];
+    let ang = t.atan_yx + r.ln() * shift;
     [v.w * r * ang.cos(), v.w * r * ang.sin(), 0.0]
 }
 
 /// Derived values of swirl3r: the ordered radius band and the twists at its two edges.
 fn swirl3r_prep(v: &mut Prepared) {
-    let (shift, a, b) = (v.p[0], v.p[1], v.p[2]);
+    let [shift, a, b] = v.params();
     let lo = a.min(b);
     let hi = a.max(b);
     let twist_lo = if lo > 0.0 { lo.ln() * shift } else { 0.0 };
@@ -78,40 +79,31 @@ fn swirl3r_prep(v: &mut Prepared) {
 /// swirl3r: swirl3's logarithmic twist restricted to a radius band; inside and outside the
 /// band the twist stays at its value on the nearer edge (rigid rotation).
 fn swirl3r(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [shift] = v.params();
+    let [lo, hi, twist_lo, twist_hi] = v.derived();
     let r = t.sqrt;
-    let ang = if r < p[3] {
-        t.atan_yx + p[5]
-    } else if r > p[4] {
-        t.atan_yx + p[6]
+    let ang = if r < lo {
+        t.atan_yx + twist_lo
+    } else if r > hi {
+        t.atan_yx + twist_hi
     } else {
-        t.atan_yx + r.ln() * p[0]
+        t.atan_yx + r.ln() * shift
     };
     [v.w * r * ang.cos(), v.w * r * ang.sin(), 0.0]
 }
 
-// synth: parameter layout.
-const SYN_A: usize = 0;
-const SYN_MODE: usize = 1;
-const SYN_POWER: usize = 2;
-const SYN_MIX: usize = 3;
-const SYN_SMOOTH: usize = 4;
-/// First of the five wave layers (b … f), six parameters each: amplitude, wave type, skew,
-/// frequency, phase, layer combination.
-const SYN_LAYERS: usize = 5;
-
 /// synth's shaping function of an angle (or coordinate): the constant `synth_a` combined
 /// with up to five periodic waves, then mixed with 1 by `synth_mix`.
-fn synth_value(p: &[f64], theta: f64) -> f64 {
-    let base = p[SYN_A];
+fn synth_value(v: &Prepared, theta: f64) -> f64 {
+    // The five wave layers (b … f) follow the first five parameters, six parameters each:
+    // amplitude, wave type, skew, frequency, phase, layer combination.
+    let [base, _mode, _power, mix, _smooth, layers @ ..] = v.params::<35>();
     let mut f = base;
-    for layer in 0..5 {
-        let q = &p[SYN_LAYERS + 6 * layer..SYN_LAYERS + 6 * layer + 6];
-        let amp = q[0];
+    for &[amp, kind, skew, frq, phs, comb] in layers.as_chunks::<6>().0 {
         if amp == 0.0 {
             continue;
         }
-        let (kind, skew, frq, phs, comb) = (q[1] as i32, q[2], q[3], q[4], q[5] as i32);
+        let (kind, comb) = (kind as i32, comb as i32);
         // Position within the period, in [0, 1).
         let mut u = (phs + theta * frq) / TAU;
         u -= u.floor();
@@ -169,7 +161,7 @@ fn synth_value(p: &[f64], theta: f64) -> f64 {
             }
         }
     }
-    f * p[SYN_MIX] + (1.0 - p[SYN_MIX])
+    f * mix + (1.0 - mix)
 }
 
 /// A quadratic Bézier reshaping of x by the factor m: it bends the line y = x so that it
@@ -228,18 +220,19 @@ fn synth_lerp(x: f64, m: f64, smooth: i32) -> f64 {
 
 /// sin and cos of theta, reshaped by the synth function: multiplied by it (smooth 0) or with
 /// its deviation from 1 added (otherwise).
-fn synth_sin_cos(p: &[f64], theta: f64, smooth: i32) -> (f64, f64) {
+fn synth_sin_cos(v: &Prepared, theta: f64, smooth: i32) -> (f64, f64) {
+    let [_, _, _, mix] = v.params();
     let (s, c) = theta.sin_cos();
     if smooth == 0 {
         (
-            s * synth_value(p, theta),
-            c * synth_value(p, theta + FRAC_PI_2),
+            s * synth_value(v, theta),
+            c * synth_value(v, theta + FRAC_PI_2),
         )
     } else {
-        let k = 1.0 - p[SYN_MIX];
+        let k = 1.0 - mix;
         (
-            k * s + (synth_value(p, theta) - 1.0),
-            k * c + (synth_value(p, theta + FRAC_PI_2) - 1.0),
+            k * s + (synth_value(v, theta) - 1.0),
+            k * c + (synth_value(v, theta + FRAC_PI_2) - 1.0),
         )
     }
 }
@@ -247,28 +240,27 @@ fn synth_sin_cos(p: &[f64], theta: f64, smooth: i32) -> (f64, f64) {
 /// synth: one of 27 classic shapes (spherical, bubble, blurs, shifts, swirl, julia, …) whose
 /// radius or angle is reshaped by a configurable sum of periodic waves.
 fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p[..];
+    let [_, mode, power, mix, smooth] = v.params();
+    let smooth = smooth as i32;
     let w = v.w;
-    let power = p[SYN_POWER];
-    let smooth = p[SYN_SMOOTH] as i32;
     let (x, y) = (t.x, t.y);
     let polar = |radius: f64, theta: f64| -> V3 {
         let (s, c) = theta.sin_cos();
         [w * radius * s, w * radius * c, 0.0]
     };
-    match p[SYN_MODE] as i32 {
+    match mode as i32 {
         0 => {
             // spherical
             let radius = zeps(t.sumsq).powf((power + 1.0) / 2.0);
             let theta = t.atan_xy;
-            let radius = synth_lerp(radius, synth_value(p, theta), smooth);
+            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         1 => {
             // bubble
             let radius = t.sqrt / (t.sumsq / 4.0 + 1.0);
             let theta = t.atan_xy;
-            let radius = synth_lerp(radius, synth_value(p, theta), smooth);
+            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         2 => {
@@ -278,7 +270,7 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             let vx = radius * theta.sin();
             let vy = radius * theta.cos();
             let radius = zeps(radius * radius).powf(power / 2.0);
-            let radius = w * synth_lerp(radius, synth_value(p, theta), smooth);
+            let radius = w * synth_lerp(radius, synth_value(v, theta), smooth);
             [vx * radius, vy * radius, 0.0]
         }
         3 => {
@@ -286,55 +278,55 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             let radius = 0.5 * (rng.f01() + rng.f01());
             let theta = TAU * rng.f01() - PI;
             let radius = zeps(sqr(radius)).powf(-power / 2.0);
-            let radius = synth_lerp(radius, synth_value(p, theta), smooth);
+            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         4 => {
             // zigzag blur along a segment
             let vy = 1.0 + 0.1 * (rng.f01() + rng.f01() - 1.0) * power;
             let theta = 2.0 * ((rng.f01() - 0.5) * 2.0).asin();
-            let vy = synth_lerp(vy, synth_value(p, theta), smooth);
+            let vy = synth_lerp(vy, synth_value(v, theta), smooth);
             [w * (theta / PI), w * (vy - 1.0), 0.0]
         }
         5 => {
             // raw circle
             let theta = t.atan_xy;
-            let radius = synth_lerp(t.sqrt, synth_value(p, theta), smooth);
+            let radius = synth_lerp(t.sqrt, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
-        6 => [w * synth_lerp(x, synth_value(p, y), smooth), w * y, 0.0],
-        7 => [w * x, w * synth_lerp(y, synth_value(p, x), smooth), 0.0],
+        6 => [w * synth_lerp(x, synth_value(v, y), smooth), w * y, 0.0],
+        7 => [w * x, w * synth_lerp(y, synth_value(v, x), smooth), 0.0],
         8 => [
-            w * synth_lerp(x, synth_value(p, y), smooth),
-            w * synth_lerp(y, synth_value(p, x), smooth),
+            w * synth_lerp(x, synth_value(v, y), smooth),
+            w * synth_lerp(y, synth_value(v, x), smooth),
             0.0,
         ],
-        9 => [w * (x + synth_value(p, y) - 1.0), w * y, 0.0],
-        10 => [w * x, w * (y + synth_value(p, x) - 1.0), 0.0],
+        9 => [w * (x + synth_value(v, y) - 1.0), w * y, 0.0],
+        10 => [w * x, w * (y + synth_value(v, x) - 1.0), 0.0],
         11 => [
-            w * (x + synth_value(p, y) - 1.0),
-            w * (y + synth_value(p, x) - 1.0),
+            w * (x + synth_value(v, y) - 1.0),
+            w * (y + synth_value(v, x) - 1.0),
             0.0,
         ],
         12 => {
             // sinusoidal
-            let k = 1.0 - p[SYN_MIX];
+            let k = 1.0 - mix;
             [
-                w * (synth_value(p, x) - 1.0 + k * x.sin()),
-                w * (synth_value(p, y) - 1.0 + k * y.sin()),
+                w * (synth_value(v, x) - 1.0 + k * x.sin()),
+                w * (synth_value(v, y) - 1.0 + k * y.sin()),
                 0.0,
             ]
         }
         13 => {
             // swirl
             let radius = zeps(t.sumsq).powf(power / 2.0);
-            let (s, c) = synth_sin_cos(p, radius, smooth);
+            let (s, c) = synth_sin_cos(v, radius, smooth);
             [w * (s * x - c * y), w * (c * x + s * y), 0.0]
         }
         14 => {
             // hyperbolic
             let radius = zeps(t.sumsq).powf(power / 2.0);
-            let (s, c) = synth_sin_cos(p, t.atan_xy, smooth);
+            let (s, c) = synth_sin_cos(v, t.atan_xy, smooth);
             [w * s / radius, w * c * radius, 0.0]
         }
         15 => {
@@ -344,14 +336,14 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             if rng.f01() < 0.5 {
                 theta += PI;
             }
-            let (s, c) = synth_sin_cos(p, theta, smooth);
+            let (s, c) = synth_sin_cos(v, theta, smooth);
             [w * radius * c, w * radius * s, 0.0]
         }
         16 => {
             // disc
             let theta = t.atan_xy / PI;
             let radius = PI * zeps(t.sumsq).powf(power / 2.0);
-            let (s, c) = synth_sin_cos(p, radius, smooth);
+            let (s, c) = synth_sin_cos(v, radius, smooth);
             [w * s * theta, w * c * theta, 0.0]
         }
         17 => {
@@ -361,55 +353,55 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             let mu = zeps(sqr(power));
             radius +=
                 -2.0 * mu * trunc_i32((radius + mu) / (2.0 * mu)) as f64 + radius * (1.0 - mu);
-            let (s, c) = synth_sin_cos(p, radius, smooth);
+            let (s, c) = synth_sin_cos(v, radius, smooth);
             [w * s * theta, w * c * theta, 0.0]
         }
         18 => {
             // cylinder
             let radius = zeps(t.sumsq).powf(power / 2.0);
-            let (s, _) = synth_sin_cos(p, x, smooth);
+            let (s, _) = synth_sin_cos(v, x, smooth);
             [w * radius * s, w * radius * y, 0.0]
         }
         19 => {
             // blurred ring
             let radius = 1.0 + 0.1 * (rng.f01() + rng.f01() - 1.0) * power;
             let theta = TAU * rng.f01() - PI;
-            let radius = synth_lerp(radius, synth_value(p, theta), smooth);
+            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         20 => {
             // thin ring
             let theta = TAU * rng.f01() - PI;
             let radius = zeps(rng.f01()).powf(power);
-            let radius = synth_value(p, theta) + 0.1 * radius;
+            let radius = synth_value(v, theta) + 0.1 * radius;
             polar(radius, theta)
         }
         21 | 22 => {
             // angle shifted by the synth value of the radius
             let radius = zeps(t.sumsq).powf(power / 2.0);
-            let theta = t.atan_xy - 1.0 + synth_value(p, radius);
+            let theta = t.atan_xy - 1.0 + synth_value(v, radius);
             polar(radius, theta)
         }
         23 => {
             // tangential shift
             let radius = zeps(t.sumsq).powf(power / 2.0);
             let (s, c) = t.atan_xy.sin_cos();
-            let mu = synth_value(p, radius) - 1.0;
+            let mu = synth_value(v, radius) - 1.0;
             [w * (x + mu * c), w * (y - mu * s), 0.0]
         }
         24 => {
-            let mu = synth_value(p, x) - 1.0;
+            let mu = synth_value(v, x) - 1.0;
             [w * x, w * (2.0 * mu - y), 0.0]
         }
         25 => {
-            let mu = synth_value(p, x) - 1.0;
-            let nu = synth_value(p, y) - 1.0;
+            let mu = synth_value(v, x) - 1.0;
+            let nu = synth_value(v, y) - 1.0;
             [w * (2.0 * nu - x), w * (2.0 * mu - y), 0.0]
         }
         _ => {
             // spherical, power applied after the shaping
             let theta = t.atan_xy;
-            let radius = synth_lerp(t.sqrt, synth_value(p, theta), smooth);
+            let radius = synth_lerp(t.sqrt, synth_value(v, theta), smooth);
             let radius = radius.powf(power);
             polar(radius, theta)
         }
@@ -430,7 +422,7 @@ fn tancos(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// tanh_spiral: a random point on the curve (sinh t, sin(a·t)) / (cos(a·t) + cosh t),
 /// t uniform in [−π, π] — a spiral-armed figure independent of the input.
 fn tanh_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let a = v.p[0];
+    let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
     let den = zeps((a * s).cos() + s.cosh());
     [v.w * (s.sinh() / den), v.w * ((a * s).sin() / den), 0.0]
@@ -466,79 +458,87 @@ fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived value of the target family: half the ring width.
 fn target_prep(v: &mut Prepared) {
-    let half = v.p[2] * 0.5;
+    let [_, _, size] = v.params();
+    let half = size * 0.5;
     v.p.push(half);
 }
 
 /// The angle of a target variation: alternate rings (of width `size`/2 in log r or in the
 /// given ring coordinate `t`) are rotated by `even` and `odd`.
 #[inline(always)]
-fn target_angle(a: f64, t: f64, p: &[f64], half: f64) -> f64 {
+fn target_angle(a: f64, t: f64, v: &Prepared) -> f64 {
+    let [even, odd, size] = v.params();
+    let [half] = v.derived();
     let mut s = t;
     if s < 0.0 {
         s -= half;
     }
-    s = s.abs() % p[2];
-    if s < half { a + p[0] } else { a + p[1] }
+    s = s.abs() % size;
+    if s < half { a + even } else { a + odd }
 }
 
 /// target: concentric rings of equal width in log r, alternately rotated by two angles
 /// (Fractorium's version ignores the weight).
 fn target(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let a = target_angle(t.atan_yx, t.sqrt.ln(), &v.p, v.p[3]);
+    let a = target_angle(t.atan_yx, t.sqrt.ln(), v);
     [t.sqrt * a.cos(), t.sqrt * a.sin(), 0.0]
 }
 
 /// target0: target, weighted.
 fn target0(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let a = target_angle(t.atan_yx, t.sqrt.ln(), &v.p, v.p[3]);
+    let a = target_angle(t.atan_yx, t.sqrt.ln(), v);
     [t.sqrt * a.cos() * v.w, t.sqrt * a.sin() * v.w, 0.0]
 }
 
 /// target2: target with spiral rings — the ring coordinate also grows with the angle, and
 /// `thightness` scales log r.
 fn target2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [_, _, _, tightness] = v.params();
     let a = t.atan_yx;
-    let ring = v.p[3] * t.sqrt.ln() + FRAC_1_PI * (a + PI);
-    let a = target_angle(a, ring, &v.p, v.p[4]);
+    let ring = tightness * t.sqrt.ln() + FRAC_1_PI * (a + PI);
+    let a = target_angle(a, ring, v);
     [t.sqrt * a.cos() * v.w, t.sqrt * a.sin() * v.w, 0.0]
 }
 
 /// Derived values of taurus: inv·r, 1 − inv, 1 − sor.
 fn taurus_prep(v: &mut Prepared) {
-    let (r, inv, sor) = (v.p[0], v.p[2], v.p[3]);
+    let [r, _, inv, sor] = v.params();
     v.p.extend_from_slice(&[inv * r, 1.0 - inv, 1.0 - sor]);
 }
 
 /// taurus: the plane wrapped onto a torus-like surface whose tube radius ripples n times
 /// around (`inv` blends toward a plain torus, `sor` toward a surface of revolution).
 fn taurus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [r, n, _, sor] = v.params();
+    let [inv_r, one_minus_inv, one_minus_sor] = v.derived();
     let (sx, cx) = t.x.sin_cos();
     let (sy, cy) = t.y.sin_cos();
-    let ir = p[4] + (p[5] * (p[0] * (p[1] * t.x).cos()));
+    let ir = inv_r + (one_minus_inv * (r * (n * t.x).cos()));
     [
         v.w * (cx * (ir + sy)),
         v.w * (sx * (ir + sy)),
-        v.w * (p[3] * cy) + (p[6] * t.y),
+        v.w * (sor * cy) + (one_minus_sor * t.y),
     ]
 }
 
 /// Derived value of tile_hlp: the weighted tile width.
 fn tile_hlp_prep(v: &mut Prepared) {
-    let vw = v.p[0] * v.w;
+    let [width] = v.params();
+    let vw = width * v.w;
     v.p.push(vw);
 }
 
 /// tile_hlp: copies the plane and randomly shifts points by one tile width along x, with a
 /// probability that fades smoothly across each tile (a soft half-plane tiling).
 fn tile_hlp(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let x = t.x / v.p[0];
+    let [width] = v.params();
+    let [width_w] = v.derived();
+    let x = t.x / width;
     let pos = x > 0.0;
     let k = trunc_i32(x) as f64;
     let frac = if pos { x - k } else { x + k };
     let shift = if (frac * PI).cos() < rng.f11() {
-        if pos { -v.p[1] } else { v.p[1] }
+        if pos { -width_w } else { width_w }
     } else {
         0.0
     };
@@ -548,7 +548,7 @@ fn tile_hlp(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// tile_log: copies the plane at integer x offsets drawn from a two-sided, geometrically
 /// decaying distribution (`spread` its scale).
 fn tile_log(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let spread = v.p[0];
+    let [spread] = v.params();
     let l = rng.f01().ln();
     let shift = round_half_out(l * if rng.bit() { spread } else { -spread });
     [v.w * (t.x + shift), v.w * t.y, 0.0]
@@ -556,15 +556,15 @@ fn tile_log(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Derived values of trade: the two disc centres' distances from the origin.
 fn trade_prep(v: &mut Prepared) {
-    let (r1, d1, r2, d2) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [r1, d1, r2, d2] = v.params();
     v.p.extend_from_slice(&[r1 + d1, r2 + d2]);
 }
 
 /// trade: swaps two discs — points inside the disc right of the y axis (radius r1) move,
 /// rescaled and mirrored, into the disc left of it (radius r2), and vice versa.
 fn trade(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (r1, r2, c1, c2) = (p[0], p[2], p[4], p[5]);
+    let [r1, _, r2] = v.params();
+    let [c1, c2] = v.derived();
     let w = v.w;
     if t.x > 0.0 {
         let dx = c1 - t.x;
@@ -611,14 +611,15 @@ fn cell_frac(x: f64, rounded: f64) -> f64 {
 
 /// Derived values of Truchet.
 fn truchet_prep(v: &mut Prepared) {
-    let exponent = v.p[1].clamp(f64::EPSILON, 2.0);
+    let [_, exponent, _, rotation, _, seed] = v.params();
+    let exponent = exponent.clamp(f64::EPSILON, 2.0);
     // Fractorium derives the arc width from the exponent (its arc-width parameter is unused).
     let arc = exponent.clamp(f64::EPSILON, 1.0);
     let inv_ex = 1.0 / exponent;
-    let abs_seed = v.p[5].abs();
+    let abs_seed = seed.abs();
     let seed2 = zeps(abs_seed * 1.5).sqrt() / zeps(abs_seed * 0.5) * 0.25;
     let inv_rmax = 1.0 / (0.5 * (2f64.powf(inv_ex) - 1.0) * arc);
-    let scale = (v.p[3].cos() + v.p[3].sin()) / v.w;
+    let scale = (rotation.cos() + rotation.sin()) / v.w;
     v.p.extend_from_slice(&[exponent, inv_ex, abs_seed, seed2, inv_rmax, scale]);
 }
 
@@ -626,10 +627,9 @@ fn truchet_prep(v: &mut Prepared) {
 /// (superellipse) bands per unit cell, with the tile orientation chosen per cell by a
 /// seeded hash (`extended` 0 or flam3-compatibility off: a slower iterated hash).
 fn truchet(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (size, exponent, inv_ex, abs_seed, seed2, inv_rmax, scale) =
-        (p[4], p[6], p[7], p[8], p[9], p[10], p[11]);
-    let extended = trunc_i32(p[0]) == 0 || !v.compat;
+    let [extended, _, _, _, size] = v.params();
+    let [exponent, inv_ex, abs_seed, seed2, inv_rmax, scale] = v.derived();
+    let extended = trunc_i32(extended) == 0 || !v.compat;
     let x0 = t.x * scale;
     let y0 = t.y * scale;
     let x = cell_frac(x0, trunc_i32(round_half_out(x0)) as f64);
@@ -679,10 +679,10 @@ fn truchet(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of Truchet_fill.
 fn truchet_fill_prep(v: &mut Prepared) {
-    let ex = v.p[0].clamp(0.001, 2.0);
+    let [exponent, arc_width, seed] = v.params();
+    let ex = exponent.clamp(0.001, 2.0);
     let inv_ex = 1.0 / ex;
-    let width = v.p[1].clamp(0.001, 1.0);
-    let seed = v.p[2];
+    let width = arc_width.clamp(0.001, 1.0);
     let seed2 = (seed * 1.5).sqrt() / zeps(seed * 0.5) * 0.25;
     let rmax = zeps(0.5 * (2f64.powf(inv_ex) - 1.0) * width);
     v.p.extend_from_slice(&[ex, inv_ex, seed2, rmax, 1.0 / v.w]);
@@ -692,8 +692,8 @@ fn truchet_fill_prep(v: &mut Prepared) {
 /// are sent to twice their cell position on each arc band they lie in, minus the input,
 /// filling the tile pattern.
 fn truchet_fill(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (seed, ex, inv_ex, seed2, rmax, scale) = (p[2], p[3], p[4], p[5], p[6], p[7]);
+    let [_, _, seed] = v.params();
+    let [ex, inv_ex, seed2, rmax, scale] = v.derived();
     let x0 = t.x * scale;
     let y0 = t.y * scale;
     let x = cell_frac(x0, round_half_out(x0));
@@ -727,14 +727,14 @@ fn truchet_fill(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of Truchet_glyph.
 fn truchet_glyph_prep(v: &mut Prepared) {
-    let p = &v.p;
-    let n = p[0].clamp(0.001, 2.0);
-    let width = p[1].clamp(0.001, 1.0);
+    let [exponent, arc_width, amp, max, angle] = v.params();
+    let n = exponent.clamp(0.001, 2.0);
+    let width = arc_width.clamp(0.001, 1.0);
     let inv_n = 1.0 / zeps(n);
     let rmax = zeps(0.5 * (2f64.powf(inv_n) - 1.0) * width);
-    let rads = p[4] * (PI / 180.0);
-    let half_amp_max = p[2] * 0.5 * p[3];
-    let amp = zeps(p[2]);
+    let rads = angle * (PI / 180.0);
+    let half_amp_max = amp * 0.5 * max;
+    let amp = zeps(amp);
     let scale = 1.0 / v.w;
     v.p.extend_from_slice(&[
         n,
@@ -751,10 +751,8 @@ fn truchet_glyph_prep(v: &mut Prepared) {
 /// Truchet_glyph: Truchet_fill (hash-chosen tiles) applied only inside rotated squares
 /// ("glyphs") centred on an `amp`-spaced grid; elsewhere the input passes unchanged.
 fn truchet_glyph(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let seed = p[5];
-    let (n, inv_n, rmax, scale, cost, sint, half_amp_max, amp) =
-        (p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13]);
+    let [_, _, _, _, _, seed] = v.params();
+    let [n, inv_n, rmax, scale, cost, sint, half_amp_max, amp] = v.derived();
     let x1 = t.x * scale;
     let y1 = t.y * scale;
     let x = cell_frac(x1, (x1 + 0.5).floor());
@@ -795,7 +793,7 @@ fn truchet_glyph(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of Truchet_hex_crop: the outer and inner radii of the arc band.
 fn truchet_hex_crop_prep(v: &mut Prepared) {
-    let wd = v.p[0];
+    let [wd] = v.params();
     v.p.extend_from_slice(&[0.5 + wd, 0.5 - wd]);
 }
 
@@ -827,8 +825,8 @@ fn hex_centre(x: f64, y: f64) -> (f64, f64, f64, f64) {
 /// (width 2·`wd`) are removed (collapsed to the origin, to the arc's corner, or pushed to the
 /// band's edges, by `mode`), or, with `inv`, the points off the bands are.
 fn truchet_hex_crop(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (mode, inv, seed, d1, d2) = (p[1], p[2], p[3], p[4], p[5]);
+    let [_, mode, inv, seed] = v.params();
+    let [d1, d2] = v.derived();
     let (hx, hy, rx, rz) = hex_centre(t.x, t.y);
     let mut fx = t.x - hx;
     let mut fy = t.y - hy;
@@ -870,7 +868,8 @@ fn truchet_hex_crop(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
 
 /// Derived values of Truchet_hex_fill: 3n and 1/(3n).
 fn truchet_hex_fill_prep(v: &mut Prepared) {
-    let n3 = 3.0 * v.p[0];
+    let [n] = v.params();
+    let n3 = 3.0 * n;
     v.p.extend_from_slice(&[n3, 1.0 / zeps(n3)]);
 }
 
@@ -878,8 +877,8 @@ fn truchet_hex_fill_prep(v: &mut Prepared) {
 /// three-arc Truchet tiles — the input, wrapped around a ring in one of 3n sectors, is
 /// split into the three arcs of a hexagon.
 fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (flipx, flipy, sx, sy, seed, n3, inv_n3) = (p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    let [_, flipx, flipy, sx, sy, seed] = v.params();
+    let [n3, inv_n3] = v.derived();
     let l = rng.f01().ln();
     let rx = (l * if rng.f01() < 0.5 { sx } else { -sx }).floor();
     let l = rng.f01().ln();
@@ -921,23 +920,21 @@ fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
 
 /// Derived values of Truchet_inv.
 fn truchet_inv_prep(v: &mut Prepared) {
-    let p = &v.p;
-    let n = p[0].clamp(0.001, 2.0);
-    let width = p[1].clamp(0.001, 1.0);
-    let seed = p[4];
+    let [exponent, arc_width, rotation, _, seed] = v.params();
+    let n = exponent.clamp(0.001, 2.0);
+    let width = arc_width.clamp(0.001, 1.0);
     let seed2 = (seed * 1.5).sqrt() / zeps(seed * 0.5) * 0.25;
     let inv_n = 1.0 / zeps(n);
     let rmax = zeps(0.5 * (2f64.powf(inv_n) - 1.0) * width);
-    let scale = (p[2].cos() + p[2].sin()) / v.w;
+    let scale = (rotation.cos() + rotation.sin()) / v.w;
     v.p.extend_from_slice(&[n, inv_n, rmax, seed2, seed2 * 0.5, scale]);
 }
 
 /// Truchet_inv: the negative of Truchet — the (1/weight-scaled) plane kept only off both arc
 /// bands of each tile.
 fn truchet_inv(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (size, seed) = (p[3], p[4]);
-    let (n, inv_n, rmax, seed2, seed2_half, scale) = (p[5], p[6], p[7], p[8], p[9], p[10]);
+    let [_, _, _, size, seed] = v.params();
+    let [n, inv_n, rmax, seed2, seed2_half, scale] = v.derived();
     let x1 = t.x * scale;
     let y1 = t.y * scale;
     let x = cell_frac(x1, (x1 + 0.5).floor());
@@ -992,15 +989,15 @@ fn twoface(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of unicorngaloshen: the sine frequencies times π.
 fn unicorngaloshen_prep(v: &mut Prepared) {
-    let (fx, fy) = (v.p[4], v.p[6]);
+    let [_, _, _, _, fx, _, fy] = v.params();
     v.p.extend_from_slice(&[PI * fx, PI * fy]);
 }
 
 /// unicorngaloshen: a quadratic map (x − y)(x + m_y·y), x·y divided by an elliptic radius,
 /// with optional sine modulation of its two factors (by x, y, e⁻ˣ, 1/x, log|x| or angles).
 fn unicorngaloshen(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (mx, my, sine, ax, ay, mode) = (p[0], p[1], p[2], p[3], p[5], p[7]);
+    let [mx, my, sine, ax, _, ay, _, mode] = v.params();
+    let [pi_fx, pi_fy] = v.derived();
     let (x, y) = (t.x, t.y);
     let r = v.w / zeps(((sqr(y) * my) + (mx * sqr(x))).sqrt());
     let (fx, fy) = if sine <= 0.0 {
@@ -1017,7 +1014,7 @@ fn unicorngaloshen(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 
         } else {
             (x.atan2(y), y.atan2(x))
         };
-        (1.0 + ax * (u * p[8]).sin(), 2.0 + ay * (w * p[9]).sin())
+        (1.0 + ax * (u * pi_fx).sin(), 2.0 + ay * (w * pi_fy).sin())
     };
     [fx * (x - y) * (x + my * y) * r, fy * x * y * r, 0.0]
 }
@@ -1030,7 +1027,7 @@ fn unpolar_prep(v: &mut Prepared) {
 
 /// unpolar: the inverse of polar — x read as an angle and y as log-radius.
 fn unpolar(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let k = v.p[0];
+    let [k] = v.derived();
     let r = t.y.exp();
     let (s, c) = t.x.sin_cos();
     [k * r * s, k * r * c, 0.0]
@@ -1039,9 +1036,8 @@ fn unpolar(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Derived values of vibration: for each of the two waves, cos/sin of its direction and of
 /// direction + displacement angle, the angular frequency and the phase shift.
 fn vibration_prep(v: &mut Prepared) {
-    let p = v.p.clone();
-    for k in [0, 5] {
-        let (dir, angle, freq, phase) = (p[k], p[k + 1], p[k + 2], p[k + 4]);
+    let [dir, angle, freq, _, phase, dir2, angle2, freq2, _, phase2] = v.params();
+    for (dir, angle, freq, phase) in [(dir, angle, freq, phase), (dir2, angle2, freq2, phase2)] {
         let tot = angle + dir;
         v.p.extend_from_slice(&[
             dir.cos(),
@@ -1057,9 +1053,10 @@ fn vibration_prep(v: &mut Prepared) {
 /// vibration: two superposed plane waves, each displacing points by amp·sin(phase along its
 /// direction) along its own displacement angle.
 fn vibration(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [_, _, _, amp, _, _, _, _, amp2] = v.params();
+    let waves = v.table(0);
     let (mut x, mut y) = (t.x, t.y);
-    for (amp, d) in [(p[3], &p[10..16]), (p[8], &p[16..22])] {
+    for (amp, d) in [(amp, &waves[..6]), (amp2, &waves[6..12])] {
         let along = t.x * d[0] + t.y * d[1];
         let a = amp * ((along * d[4]) + d[5]).sin();
         x += a * d[2];
@@ -1071,9 +1068,8 @@ fn vibration(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Derived values of vibration2: for each wave, cos/sin of its direction, its angular
 /// frequency and phase shift.
 fn vibration2_prep(v: &mut Prepared) {
-    let p = v.p.clone();
-    for k in [0, 5] {
-        let (dir, freq, phase) = (p[k], p[k + 2], p[k + 4]);
+    let [dir, _, freq, _, phase, dir2, _, freq2, _, phase2] = v.params();
+    for (dir, freq, phase) in [(dir, freq, phase), (dir2, freq2, phase2)] {
         v.p.extend_from_slice(&[dir.cos(), dir.sin(), freq * TAU, TAU * phase / zeps(freq)]);
     }
 }
@@ -1087,20 +1083,68 @@ fn modulate(amp: f64, freq: f64, x: f64) -> f64 {
 /// vibration2: vibration whose direction, displacement angle, frequency and amplitude are
 /// themselves modulated along each wave.
 fn vibration2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [
+        dir,
+        angle,
+        freq,
+        amp,
+        _phase,
+        dir2,
+        angle2,
+        freq2,
+        amp2,
+        _phase2,
+        dm,
+        dmfreq,
+        tm,
+        tmfreq,
+        fm,
+        fmfreq,
+        am,
+        amfreq,
+        dm2,
+        dmfreq2,
+        tm2,
+        tmfreq2,
+        fm2,
+        fmfreq2,
+        am2,
+        amfreq2,
+    ] = v.params();
+    let [
+        cos_dir,
+        sin_dir,
+        omega,
+        shift,
+        cos_dir2,
+        sin_dir2,
+        omega2,
+        shift2,
+    ] = v.derived();
     let (mut x, mut y) = (t.x, t.y);
-    // Per wave: base parameters, modulation parameters, derived values.
-    for (b, m, d) in [(0, 10, 26), (5, 18, 30)] {
-        let (dir, angle, freq, amp) = (p[b], p[b + 1], p[b + 2], p[b + 3]);
-        let along = t.x * p[d] + t.y * p[d + 1];
-        let dir_m = dir + modulate(p[m], p[m + 1], along);
-        let tilt_m = angle + modulate(p[m + 2], p[m + 3], along);
-        let phase_m = modulate(p[m + 4], p[m + 5], along) / zeps(freq);
-        let amp_m = amp + amp * modulate(p[m + 6], p[m + 7], along);
+    // Per wave: base parameters, modulation parameters (amount and frequency of the direction,
+    // tilt, frequency and amplitude modulations), derived values.
+    for ([dir, angle, freq, amp], m, d) in [
+        (
+            [dir, angle, freq, amp],
+            [dm, dmfreq, tm, tmfreq, fm, fmfreq, am, amfreq],
+            [cos_dir, sin_dir, omega, shift],
+        ),
+        (
+            [dir2, angle2, freq2, amp2],
+            [dm2, dmfreq2, tm2, tmfreq2, fm2, fmfreq2, am2, amfreq2],
+            [cos_dir2, sin_dir2, omega2, shift2],
+        ),
+    ] {
+        let along = t.x * d[0] + t.y * d[1];
+        let dir_m = dir + modulate(m[0], m[1], along);
+        let tilt_m = angle + modulate(m[2], m[3], along);
+        let phase_m = modulate(m[4], m[5], along) / zeps(freq);
+        let amp_m = amp + amp * modulate(m[6], m[7], along);
         let tilt_dir = tilt_m + dir_m;
         let (sd, cd) = dir_m.sin_cos();
         let along = t.x * cd + t.y * sd;
-        let a = amp_m * ((along * p[d + 2]) + phase_m + p[d + 3]).sin();
+        let a = amp_m * ((along * d[2]) + phase_m + d[3]).sin();
         x += a * tilt_dir.cos();
         y += a * tilt_dir.sin();
     }
@@ -1109,7 +1153,7 @@ fn vibration2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of vignette: |inner radius|, |fade radius|, 1/|power|.
 fn vignette_prep(v: &mut Prepared) {
-    let (inner, fade, power) = (v.p[2], v.p[3], v.p[4]);
+    let [_, _, inner, fade, power] = v.params();
     v.p.extend_from_slice(&[inner.abs(), fade.abs(), 1.0 / power.abs()]);
 }
 
@@ -1117,9 +1161,8 @@ fn vignette_prep(v: &mut Prepared) {
 /// beyond it over the fade distance (a negative fade radius inverts the fade; a negative
 /// inner radius empties the disc).
 fn vignette(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (posx, posy, inner, fade_r, blur) = (p[0], p[1], p[2], p[3], p[5]);
-    let (inner_abs, fade_abs, pow_inv) = (p[6], p[7], p[8]);
+    let [posx, posy, inner, fade_r, _, blur] = v.params();
+    let [inner_abs, fade_abs, pow_inv] = v.derived();
     let (mut px, mut py) = (t.x, t.y);
     let dist = ((px - posx) * (px - posx) + (py - posy) * (py - posy)).sqrt();
     if dist < inner_abs {
@@ -1150,8 +1193,7 @@ fn vignette(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Voron: Voronoi cells of hashed seed points (1 … `Num` per grid square of side `Step`);
 /// each point is pulled toward its cell's seed, keeping the fraction K of its offset.
 fn voron(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (k, step, num, xseed, yseed) = (p[0], p[1], p[2], p[3], p[4]);
+    let [k, step, num, xseed, yseed] = v.params();
     let m = trunc_i32((t.x / step).floor());
     let n = trunc_i32((t.y / step).floor());
     let mut nearest = 20.0;
@@ -1190,58 +1232,95 @@ fn voron(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 // The shape family w, x, y, z: a radius profile summed from a hypergon, a star, a lituus
 // spiral and a superformula curve, each weighted by its amount.
 
-/// Derived values of a shape profile whose 13 parameters start at `base`: hypergon D, −a of
-/// the lituus, tan of the star slope, m/4 and −1/n1 of the superformula.
-fn shape_prep_at(v: &mut Prepared, base: usize) {
-    let q = &v.p[base..base + 13];
-    let hyper_d = (1.0 + sqr(q[2])).sqrt();
-    let lituus_exp = -q[7];
-    let slope = q[5];
+/// The 13 parameters of a shape profile: for the hypergon, the star, the lituus and the
+/// superformula curve, each curve's amount and settings.
+type ShapeParams = [f64; 13];
+
+/// The values derived from a shape profile's parameters: hypergon D, −a of the lituus, tan of
+/// the star slope, m/4 and −1/n1 of the superformula.
+fn shape_derived(shape: &ShapeParams) -> [f64; 5] {
+    let [
+        _,
+        _,
+        hypergon_r,
+        _,
+        _,
+        slope,
+        _,
+        lituus_a,
+        _,
+        super_m,
+        super_n1,
+        _,
+        _,
+    ] = *shape;
+    let hyper_d = (1.0 + sqr(hypergon_r)).sqrt();
+    let lituus_exp = -lituus_a;
     // tan(π/2) is infinite: an almost-vertical slope backs off by 0.05 rad.
     let tan_slope = if (slope - FRAC_PI_2).abs() < 1e-6 {
         (slope - 0.05).tan()
     } else {
         slope.tan()
     };
-    let super_m4 = q[9] / 4.0;
-    let super_exp = -1.0 / zeps(q[10]);
-    v.p.extend_from_slice(&[hyper_d, lituus_exp, tan_slope, super_m4, super_exp]);
+    let super_m4 = super_m / 4.0;
+    let super_exp = -1.0 / zeps(super_n1);
+    [hyper_d, lituus_exp, tan_slope, super_m4, super_exp]
 }
 
+/// Derived values of x, y and z (see [`shape_derived`]).
 fn shape_prep(v: &mut Prepared) {
-    shape_prep_at(v, 0);
+    let shape = v.params();
+    v.p.extend(shape_derived(&shape));
 }
 
+/// Derived values of w, whose shape parameters follow its angle (see [`shape_derived`]).
 fn shape_prep_w(v: &mut Prepared) {
-    shape_prep_at(v, 1);
+    let [_angle, shape @ ..] = v.params::<14>();
+    v.p.extend(shape_derived(&shape));
 }
 
-/// The radius profile at angle `a`: `q` the 13 shape parameters, `d` their derived values.
-fn shape_total(q: &[f64], d: &[f64], a: f64) -> f64 {
+/// The radius profile at angle `a` of the shape with parameters `shape` and derived values
+/// `derived`.
+fn shape_total(shape: &ShapeParams, derived: [f64; 5], a: f64) -> f64 {
+    let [
+        hypergon,
+        hypergon_n,
+        _,
+        star,
+        star_n,
+        _,
+        lituus,
+        _,
+        super_,
+        _,
+        _,
+        super_n2,
+        super_n3,
+    ] = *shape;
+    let [hyper_d, lituus_exp, tan_slope, super_m4, super_exp] = derived;
     let mut sum = 0.0;
-    let (hyper_d, lituus_exp, tan_slope, super_m4, super_exp) = (d[0], d[1], d[2], d[3], d[4]);
-    if q[0] != 0.0 {
-        let n = q[1];
+    if hypergon != 0.0 {
+        let n = hypergon_n;
         let s = (a.abs() % (TAU / n)) - PI / n;
         let sec2 = sqr(s.tan()) + 1.0;
         let d2 = sqr(hyper_d);
         if sec2 >= d2 {
-            sum += q[0];
+            sum += hypergon;
         } else {
-            sum += q[0] * (hyper_d - (d2 - sec2).sqrt()) / sec2.sqrt();
+            sum += hypergon * (hyper_d - (d2 - sec2).sqrt()) / sec2.sqrt();
         }
     }
-    if q[3] != 0.0 {
-        let n = q[4];
+    if star != 0.0 {
+        let n = star_n;
         let tn = ((a.abs() % (TAU / n)) - PI / n).abs().tan();
-        sum += q[3] * (sqr(tan_slope) * (1.0 + sqr(tn)) / sqr(tn + tan_slope)).sqrt();
+        sum += star * (sqr(tan_slope) * (1.0 + sqr(tn)) / sqr(tn + tan_slope)).sqrt();
     }
-    if q[6] != 0.0 {
-        sum += q[6] * (a / PI + 1.0).abs().powf(lituus_exp);
+    if lituus != 0.0 {
+        sum += lituus * (a / PI + 1.0).abs().powf(lituus_exp);
     }
-    if q[8] != 0.0 {
+    if super_ != 0.0 {
         let (s, c) = (a * super_m4).sin_cos();
-        sum += q[8] * (c.abs().powf(q[11]) + s.abs().powf(q[12])).powf(super_exp);
+        sum += super_ * (c.abs().powf(super_n2) + s.abs().powf(super_n3)).powf(super_exp);
     }
     sum
 }
@@ -1249,20 +1328,20 @@ fn shape_total(q: &[f64], d: &[f64], a: f64) -> f64 {
 /// w: points inside the shape profile (the profile at their own angle) are rotated by
 /// `w_angle` and rescaled to the profile at the new angle; points outside pass through.
 fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (q, d) = (&p[1..14], &p[14..19]);
+    let [angle, shape @ ..] = v.params::<14>();
+    let d = v.derived();
     let a = t.atan_yx;
     let r = t.sqrt;
-    let mut turned = a + p[0];
+    let mut turned = a + angle;
     if turned < -PI {
         turned += TAU;
     }
     if turned > PI {
         turned -= TAU;
     }
-    let reach = shape_total(q, d, a);
+    let reach = shape_total(&shape, d, a);
     if r <= reach {
-        let reach2 = shape_total(q, d, turned);
+        let reach2 = shape_total(&shape, d, turned);
         let r = v.w * reach2 * r / reach;
         let (s, c) = turned.sin_cos();
         [r * c, r * s, 0.0]
@@ -1274,7 +1353,7 @@ fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// x: the radius pushed out to √(r² + profile²) along each ray.
 fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
-    let reach = shape_total(&v.p[0..13], &v.p[13..18], a);
+    let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * (t.sumsq + sqr(reach)).sqrt();
     let (s, c) = a.sin_cos();
     [r * c, r * s, 0.0]
@@ -1283,7 +1362,7 @@ fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// y: inversion in the shape profile — radius profile²/r along each ray.
 fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
-    let reach = shape_total(&v.p[0..13], &v.p[13..18], a);
+    let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * sqr(reach) / t.sqrt;
     let (s, c) = a.sin_cos();
     [r * c, r * s, 0.0]
@@ -1292,7 +1371,7 @@ fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// z: the radius increased by the shape profile along each ray.
 fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
-    let reach = shape_total(&v.p[0..13], &v.p[13..18], a);
+    let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * (t.sqrt + reach);
     let (s, c) = a.sin_cos();
     [r * c, r * s, 0.0]
@@ -1303,7 +1382,8 @@ fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of waffle: weight·sin and weight·cos of the rotation.
 fn waffle_prep(v: &mut Prepared) {
-    let (s, c) = v.p[3].sin_cos();
+    let [_, _, _, rotation] = v.params();
+    let (s, c) = rotation.sin_cos();
     let w = v.w;
     v.p.extend_from_slice(&[w * s, w * c]);
 }
@@ -1311,8 +1391,8 @@ fn waffle_prep(v: &mut Prepared) {
 /// waffle: random points on a rotated grid of `slices`×`slices` bars in the unit square
 /// (bar thickness `xthickness`, `ythickness`), independent of the input.
 fn waffle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (slices, xt, yt, sinr, cosr) = (p[0], p[1], p[2], p[4], p[5]);
+    let [slices, xt, yt] = v.params();
+    let [sinr, cosr] = v.derived();
     let (a, r) = match rng.below(5) {
         0 => {
             let a = (rand_size(rng, slices) + rng.f01() * xt) / slices;
@@ -1345,10 +1425,9 @@ fn waffle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// waves22: each coordinate displaced by a power of a sine wave of the other (or of a
 /// raised sine, by mode).
 fn waves22(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (scx, scy, fx, fy, modex, modey) = (p[0], p[1], p[2], p[3], p[4], p[5]);
-    let px = trunc_i32(p[6]) as f64;
-    let py = trunc_i32(p[7]) as f64;
+    let [scx, scy, fx, fy, modex, modey, powerx, powery] = v.params();
+    let px = trunc_i32(powerx) as f64;
+    let py = trunc_i32(powery) as f64;
     let sx = if modex < 0.5 {
         (t.y * fx).sin()
     } else {
@@ -1368,26 +1447,27 @@ fn waves22(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of waves23: the frequencies divided by 2π.
 fn waves23_prep(v: &mut Prepared) {
-    let (fx, fy) = (v.p[2], v.p[3]);
+    let [_, _, fx, fy] = v.params();
     v.p.extend_from_slice(&[fx * INV_TAU, fy * INV_TAU]);
 }
 
 /// waves23: each coordinate displaced by a sawtooth-like wave of the other.
 fn waves23(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
+    let [scalex, scaley] = v.params();
+    let [freqx, freqy] = v.derived();
     let saw = |u: f64| {
         let f = fract(u);
         if f > 0.5 { 0.5 - f } else { f }
     };
-    let fx = saw(t.y * p[4]);
-    let fy = saw(t.x * p[5]);
-    [v.w * (t.x + fx * p[0]), v.w * (t.y + fy * p[1]), 0.0]
+    let fx = saw(t.y * freqx);
+    let fy = saw(t.x * freqy);
+    [v.w * (t.x + fx * scalex), v.w * (t.y + fy * scaley), 0.0]
 }
 
 /// waves2_3D: waves2 in 3-D — x and y displaced by sines of each other, z by a sine of
 /// their mean.
 fn waves2_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (freq, scale) = (v.p[0], v.p[1]);
+    let [freq, scale] = v.params();
     let avg = (t.x + t.y) * 0.5;
     [
         v.w * (t.x + scale * (t.y * freq).sin()),
@@ -1399,8 +1479,7 @@ fn waves2_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// waves2_radial: waves2 whose amplitude grows linearly with r from 0 at `null` to full at
 /// `distance`.
 fn waves2_radial(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (fx, sx, fy, sy, null, dist) = (p[0], p[1], p[2], p[3], p[4], p[5]);
+    let [fx, sx, fy, sy, null, dist] = v.params();
     let r = t.sqrt;
     let mut k = if r < dist {
         (r - null) / zeps(dist - null)
@@ -1419,7 +1498,7 @@ fn waves2_radial(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of waves2b: scale − scaleinf for x and y.
 fn waves2b_prep(v: &mut Prepared) {
-    let (sx, sinfx, sy, sinfy) = (v.p[4], v.p[5], v.p[6], v.p[7]);
+    let [_, _, _, _, sx, sinfx, sy, sinfy] = v.params();
     v.p.extend_from_slice(&[sx - sinfx, sy - sinfy]);
 }
 
@@ -1427,9 +1506,8 @@ fn waves2b_prep(v: &mut Prepared) {
 /// axis to `scaleinf` far away) and a power-warped wave argument; an exponent near 0 uses
 /// a Jacobi sn wave (≥ 0) or the Bessel function J1 (< 0) instead of the sine.
 fn waves2b(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (freqx, freqy, pwx, pwy, sinfx, sinfy, unity, jacok, six, siy) =
-        (p[0], p[1], p[2], p[3], p[5], p[7], p[8], p[9], p[10], p[11]);
+    let [freqx, freqy, pwx, pwy, _, sinfx, _, sinfy, unity, jacok] = v.params();
+    let [six, siy] = v.derived();
     let csx = div_or_inverse(unity, unity + sqr(t.x)) * six + sinfx;
     let csy = div_or_inverse(unity, unity + sqr(t.y)) * siy + sinfy;
     let wave = |u: f64, pw: f64, freq: f64| -> f64 {
@@ -1450,26 +1528,28 @@ fn waves2b(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Derived values of waves3: half scales.
 fn waves3_prep(v: &mut Prepared) {
-    let (sx, sy) = (v.p[0], v.p[1]);
+    let [sx, sy] = v.params();
     v.p.extend_from_slice(&[sx * 0.5, sy * 0.5]);
 }
 
 /// waves3: waves2 whose amplitudes are themselves sine-modulated (frequencies `sx_freq`,
 /// `sy_freq`).
 fn waves3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let scx = p[6] * (1.0 + (t.y * p[4]).sin());
-    let scy = p[7] * (1.0 + (t.x * p[5]).sin());
+    let [_, _, freqx, freqy, sx_freq, sy_freq] = v.params();
+    let [half_sx, half_sy] = v.derived();
+    let scx = half_sx * (1.0 + (t.y * sx_freq).sin());
+    let scy = half_sy * (1.0 + (t.x * sy_freq).sin());
     [
-        v.w * (t.x + (t.y * p[2]).sin() * scx),
-        v.w * (t.y + (t.x * p[3]).sin() * scy),
+        v.w * (t.x + (t.y * freqx).sin() * scx),
+        v.w * (t.y + (t.x * freqy).sin() * scy),
         0.0,
     ]
 }
 
 /// Derived value of waves4 and waves42: yfact/1000.
 fn waves4_prep(v: &mut Prepared) {
-    let k = v.p[5] * 0.001;
+    let [_, _, _, _, _, yfact] = v.params();
+    let k = yfact * 0.001;
     v.p.push(k);
 }
 
@@ -1488,24 +1568,26 @@ fn band_amp(band: f64, y: f64, yfact: f64, cont: f64) -> f64 {
 
 /// waves4: waves2 whose x amplitude is random per wave period (horizontal bands).
 fn waves4(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let band = (t.y * p[2] / TAU).floor();
-    let ax = band_amp(band, t.y, p[6], p[4]);
+    let [scalex, scaley, freqx, freqy, cont] = v.params();
+    let [yfact] = v.derived();
+    let band = (t.y * freqx / TAU).floor();
+    let ax = band_amp(band, t.y, yfact, cont);
     [
-        v.w * (t.x + (t.y * p[2]).sin() * ax * ax * p[0]),
-        v.w * (t.y + (t.x * p[3]).sin() * p[1]),
+        v.w * (t.x + (t.y * freqx).sin() * ax * ax * scalex),
+        v.w * (t.y + (t.x * freqy).sin() * scaley),
         0.0,
     ]
 }
 
 /// waves42: waves4 with the band width set independently (`freqx2`).
 fn waves42(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let band = (t.y * p[6]).floor();
-    let ax = band_amp(band, t.y, p[7], p[4]);
+    let [scalex, scaley, freqx, freqy, cont, _, freqx2] = v.params();
+    let [yfact] = v.derived();
+    let band = (t.y * freqx2).floor();
+    let ax = band_amp(band, t.y, yfact, cont);
     [
-        v.w * (t.x + (t.y * p[2]).sin() * ax * ax * p[0]),
-        v.w * (t.y + (t.x * p[3]).sin() * p[1]),
+        v.w * (t.x + (t.y * freqx).sin() * ax * ax * scalex),
+        v.w * (t.y + (t.x * freqy).sin() * scaley),
         0.0,
     ]
 }
@@ -1513,7 +1595,7 @@ fn waves42(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Derived values of wavesn: the power actually used (0 becomes 2), the number of roots and
 /// the radius exponent.
 fn wavesn_prep(v: &mut Prepared) {
-    let mut power = v.p[6];
+    let [_, _, _, _, _, _, mut power] = v.params();
     if power == 0.0 {
         power = 2.0;
     }
@@ -1524,17 +1606,17 @@ fn wavesn_prep(v: &mut Prepared) {
 /// wavesn: a random n-th root (julian-like, n = `power`) followed by waves whose amplitude
 /// can grow with distance (`incx`, `incy`).
 fn wavesn(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (power, roots, cn) = (p[7], p[8], p[9]);
+    let [freqx, freqy, scalex, scaley, incx, incy] = v.params();
+    let [power, roots, cn] = v.derived();
     let angle = (t.atan_yx + TAU * rand_size(rng, roots)) / power;
     let r = v.w * t.sumsq.powf(cn);
     let (sa, ca) = angle.sin_cos();
     let ux = r * ca;
     let uy = r * sa;
-    let sy = (p[0] * uy).sin();
-    let sx = (p[1] * ux).sin();
-    let dx = ux + 0.5 * (p[2] * sy + ux.abs() * p[4] * sy);
-    let dy = uy + 0.5 * (p[3] * sx + uy.abs() * p[5] * sx);
+    let sy = (freqx * uy).sin();
+    let sx = (freqy * ux).sin();
+    let dx = ux + 0.5 * (scalex * sy + ux.abs() * incx * sy);
+    let dy = uy + 0.5 * (scaley * sx + uy.abs() * incy * sx);
     [v.w * dx, v.w * dy, 0.0]
 }
 
@@ -1560,17 +1642,17 @@ fn xerf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Derived values of xheart: cos and sin of the rotation π/4 + angle·π/8, and the stretch
 /// 6 + 2·ratio.
 fn xheart_prep(v: &mut Prepared) {
-    let ang = FRAC_PI_4 + (0.5 * FRAC_PI_4 * v.p[0]);
+    let [angle, ratio] = v.params();
+    let ang = FRAC_PI_4 + (0.5 * FRAC_PI_4 * angle);
     let (s, c) = ang.sin_cos();
-    let rat = 6.0 + 2.0 * v.p[1];
+    let rat = 6.0 + 2.0 * ratio;
     v.p.extend_from_slice(&[c, s, rat]);
 }
 
 /// xheart: a heart shape — the point is shrunk by 1/(r² + 4), stretched, rotated by 45°
 /// (adjustable), and its left half mirrored in x.
 fn xheart(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let (c, s, rat) = (p[2], p[3], p[4]);
+    let [c, s, rat] = v.derived();
     let mut den = t.sumsq + 4.0;
     if den == 0.0 {
         den = 1.0;
@@ -1586,37 +1668,11 @@ fn xheart(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     }
 }
 
-// xtrb: derived values follow the six parameters.
-const XT_SINC: usize = 6;
-const XT_COSC: usize = 7;
-const XT_HA: usize = 8;
-const XT_HB: usize = 9;
-const XT_HC: usize = 10;
-const XT_AB: usize = 11;
-const XT_AC: usize = 12;
-const XT_BA: usize = 13;
-const XT_BC: usize = 14;
-const XT_CA: usize = 15;
-const XT_CB: usize = 16;
-const XT_S2A: usize = 17;
-const XT_S2B: usize = 18;
-const XT_S2C: usize = 19;
-const XT_S2AB: usize = 20;
-const XT_S2AC: usize = 21;
-const XT_S2BC: usize = 22;
-const XT_W1: usize = 23;
-const XT_W2: usize = 24;
-const XT_W3: usize = 25;
-const XT_POWER: usize = 26;
-const XT_ROOTS: usize = 27;
-const XT_CN: usize = 28;
-
 /// Derived values of xtrb: the triangle (angles 0.047 + a, 0.047 + b and the rest, inradius
 /// `radius`) — its side lengths, heights and their ratios, the band widths, and the root
 /// count and radius exponent of the final power map.
 fn xtrb_prep(v: &mut Prepared) {
-    let p = v.p.clone();
-    let (power, radius, width, dist, a, b) = (p[0], p[1], p[2], p[3], p[4], p[5]);
+    let [power, radius, width, dist, a, b] = v.params();
     let br = 0.047 + a;
     let cr = 0.047 + b;
     let ar = PI - br - cr;
@@ -1662,8 +1718,25 @@ fn xtrb_prep(v: &mut Prepared) {
 /// xtrb's per-triangle map in trilinear coordinates (al, be, ga): points are pulled into a
 /// hexagonal band pattern inside the triangle, randomly (with probability 1 − width²) or
 /// scaled by `width` toward the nearest vertex.
-fn xtrb_hex(p: &[f64], al: f64, be: f64, ga: f64, rng: &mut FastRng) -> (f64, f64) {
-    let (width, w1, w2, w3) = (p[2], p[XT_W1], p[XT_W2], p[XT_W3]);
+fn xtrb_hex(hex: &[f64; 16], al: f64, be: f64, ga: f64, rng: &mut FastRng) -> (f64, f64) {
+    let [
+        width,
+        ha,
+        hb,
+        hc,
+        ab,
+        ba,
+        ca,
+        cb,
+        s2a,
+        s2b,
+        s2ab,
+        s2ac,
+        s2bc,
+        w1,
+        w2,
+        w3,
+    ] = *hex;
     let r = rng.f01();
     if be < al {
         if ga < be {
@@ -1671,27 +1744,27 @@ fn xtrb_hex(p: &[f64], al: f64, be: f64, ga: f64, rng: &mut FastRng) -> (f64, f6
                 (width * be, width * ga)
             } else {
                 (
-                    w1 * be + w2 * p[XT_S2AB] * (3.0 - ga / be),
-                    w1 * ga + w2 * p[XT_HC] * ga / be,
+                    w1 * be + w2 * s2ab * (3.0 - ga / be),
+                    w1 * ga + w2 * hc * ga / be,
                 )
             };
-            (p[XT_S2A] - p[XT_BA] * side - p[XT_CA] * gam, side)
+            (s2a - ba * side - ca * gam, side)
         } else if ga < al {
             let (side, gam) = if r >= w3 {
                 (width * be, width * ga)
             } else {
                 (
-                    w1 * be + w2 * p[XT_HB] * be / ga,
-                    w1 * ga + w2 * p[XT_S2AC] * (3.0 - be / ga),
+                    w1 * be + w2 * hb * be / ga,
+                    w1 * ga + w2 * s2ac * (3.0 - be / ga),
                 )
             };
-            (p[XT_S2A] - p[XT_BA] * side - p[XT_CA] * gam, side)
+            (s2a - ba * side - ca * gam, side)
         } else if r >= w3 {
             (width * al, width * be)
         } else {
             (
-                w1 * al + w2 * p[XT_S2AC] * (3.0 - be / al),
-                w1 * be + w2 * p[XT_HB] * be / al,
+                w1 * al + w2 * s2ac * (3.0 - be / al),
+                w1 * be + w2 * hb * be / al,
             )
         }
     } else if ga < al {
@@ -1699,27 +1772,27 @@ fn xtrb_hex(p: &[f64], al: f64, be: f64, ga: f64, rng: &mut FastRng) -> (f64, f6
             (width * al, width * ga)
         } else {
             (
-                w1 * al + w2 * p[XT_S2AB] * (3.0 - ga / al),
-                w1 * ga + w2 * p[XT_HC] * ga / al,
+                w1 * al + w2 * s2ab * (3.0 - ga / al),
+                w1 * ga + w2 * hc * ga / al,
             )
         };
-        (side, p[XT_S2B] - p[XT_AB] * side - p[XT_CB] * gam)
+        (side, s2b - ab * side - cb * gam)
     } else if ga < be {
         let (side, gam) = if r >= w3 {
             (width * al, width * ga)
         } else {
             (
-                w1 * al + w2 * p[XT_HA] * al / ga,
-                w1 * ga + w2 * p[XT_S2BC] * (3.0 - al / ga),
+                w1 * al + w2 * ha * al / ga,
+                w1 * ga + w2 * s2bc * (3.0 - al / ga),
             )
         };
-        (side, p[XT_S2B] - p[XT_AB] * side - p[XT_CB] * gam)
+        (side, s2b - ab * side - cb * gam)
     } else if r >= w3 {
         (width * al, width * be)
     } else {
         (
-            w1 * al + w2 * p[XT_HA] * al / be,
-            w1 * be + w2 * p[XT_S2BC] * (3.0 - al / be),
+            w1 * al + w2 * ha * al / be,
+            w1 * be + w2 * s2bc * (3.0 - al / be),
         )
     }
 }
@@ -1727,10 +1800,35 @@ fn xtrb_hex(p: &[f64], al: f64, be: f64, ga: f64, rng: &mut FastRng) -> (f64, f6
 /// xtrb: a triangular tiling (in trilinear coordinates) with hexagonal bands in each
 /// triangle, followed by a random root of a power map (as julian, n = `power`).
 fn xtrb(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let p = &v.p;
-    let radius = p[1];
-    let (sinc, cosc) = (p[XT_SINC], p[XT_COSC]);
-    let (s2a, s2b, s2c) = (p[XT_S2A], p[XT_S2B], p[XT_S2C]);
+    let [_, radius, width] = v.params();
+    let [
+        sinc,
+        cosc,
+        ha,
+        hb,
+        hc,
+        ab,
+        ac,
+        ba,
+        bc,
+        ca,
+        cb,
+        s2a,
+        s2b,
+        s2c,
+        s2ab,
+        s2ac,
+        s2bc,
+        w1,
+        w2,
+        w3,
+        power,
+        roots,
+        cn,
+    ] = v.derived();
+    let hex = [
+        width, ha, hb, hc, ab, ba, ca, cb, s2a, s2b, s2ab, s2ac, s2bc, w1, w2, w3,
+    ];
     // To trilinear coordinates (distances from two sides of the triangle).
     let al = t.y + radius;
     let be = t.x * sinc - t.y * cosc + radius;
@@ -1738,14 +1836,14 @@ fn xtrb(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let n = (be / s2b).floor();
     let mut oa = al - m * s2a;
     let mut ob = be - n * s2b;
-    let og = s2c - p[XT_AC] * oa - p[XT_BC] * ob;
+    let og = s2c - ac * oa - bc * ob;
     let (mut al, mut be);
     if og > 0.0 {
-        (al, be) = xtrb_hex(p, oa, ob, og, rng);
+        (al, be) = xtrb_hex(&hex, oa, ob, og, rng);
     } else {
         oa = s2a - oa;
         ob = s2b - ob;
-        (al, be) = xtrb_hex(p, oa, ob, -og, rng);
+        (al, be) = xtrb_hex(&hex, oa, ob, -og, rng);
         al = s2a - al;
         be = s2b - be;
     }
@@ -1754,8 +1852,8 @@ fn xtrb(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     // Back to the plane, then the power map.
     let ix = (be - radius + (al - radius) * cosc) / sinc;
     let iy = al - radius;
-    let angle = (iy.atan2(ix) + TAU * rand_size(rng, p[XT_ROOTS])) / p[XT_POWER];
-    let r = v.w * (sqr(ix) + sqr(iy)).powf(p[XT_CN]);
+    let angle = (iy.atan2(ix) + TAU * rand_size(rng, roots)) / power;
+    let r = v.w * (sqr(ix) + sqr(iy)).powf(cn);
     let (s, c) = angle.sin_cos();
     [v.w * (r * c), v.w * (r * s), 0.0]
 }

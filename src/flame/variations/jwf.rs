@@ -11,7 +11,9 @@
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_4, PI, TAU};
 
 use super::util::{Mwc, atan2_approx, signum_java, sqr, wang_hash};
-use super::{Acc, Prepared, V3, VarDef, VarIn, flag, need, p, p_int, p_int_nonzero, p_range};
+use super::{
+    Acc, Prepared, V3, VarDef, VarIn, flag, need, p, p_int, p_int_nonzero, p_range, params_of,
+};
 use crate::flame::rng::FastRng;
 
 /// Parameters of `complex` in JWildfire's order: for each function its weight ("pow") then the
@@ -321,7 +323,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// rose_wf: the rose curve r = amp·cos(waves·θ) drawn along the input's direction (θ measured
 /// from the y axis, JWildfire's atan2(x, y)); `filled` = 1 scatters points inside the petals.
 fn rose_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (amp, waves, filled) = (v.p[0], v.p[1], v.p[2]);
+    let [amp, waves, filled] = v.params();
     let a = t.atan_xy;
     let mut r = amp * (waves * a).cos();
     if filled == 1.0 {
@@ -334,8 +336,9 @@ fn rose_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// epispiral_wf: the epispiral r = 0.5 / cos(waves·θ) along the input's direction (θ from the
 /// y axis).
 fn epispiral_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [waves] = v.params();
     let a = t.atan_xy;
-    let r = 0.5 / (v.p[0] * a).cos();
+    let r = 0.5 / (waves * a).cos();
     let (s, c) = a.sin_cos();
     [v.w * s * r, v.w * c * r, 0.0]
 }
@@ -365,110 +368,175 @@ fn chrysanthemum(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) ->
 /// tanh, sin and sinh of the input, each with factors that detune its real and imaginary
 /// parts. A vanishing denominator drops the whole output (the point contributes nothing).
 fn complex(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [
+        cospow,
+        cosx1,
+        cosx2,
+        cosy1,
+        cosy2,
+        coshpow,
+        coshx1,
+        coshx2,
+        coshy1,
+        coshy2,
+        cotpow,
+        cotx1,
+        cotx2,
+        coty1,
+        coty2,
+        cothpow,
+        cothx1,
+        cothx2,
+        cothy1,
+        cothy2,
+        cscpow,
+        cscx1,
+        cscx2,
+        cscy1,
+        cscy2,
+        cschpow,
+        cschx1,
+        cschx2,
+        cschy1,
+        cschy2,
+        exppow,
+        expx1,
+        expy1,
+        expy2,
+        secpow,
+        secx1,
+        secx2,
+        secy1,
+        secy2,
+        sechpow,
+        sechx1,
+        sechx2,
+        sechy1,
+        sechy2,
+        sinpow,
+        sinx1,
+        sinx2,
+        siny1,
+        siny2,
+        sinhpow,
+        sinhx1,
+        sinhx2,
+        sinhy1,
+        sinhy2,
+        tanpow,
+        tanx1,
+        tanx2,
+        tany1,
+        tany2,
+        tanhpow,
+        tanhx1,
+        tanhx2,
+        tanhy1,
+        tanhy2,
+    ] = v.params();
     let (x, y) = (t.x, t.y);
     let (mut ox, mut oy) = (0.0, 0.0);
     // cos
-    if q[0] != 0.0 {
-        ox += q[0] * (x * q[2]).cos() * (y * q[4]).cosh();
-        oy -= q[0] * (x * q[1]).sin() * (y * q[3]).sinh();
+    if cospow != 0.0 {
+        ox += cospow * (x * cosx2).cos() * (y * cosy2).cosh();
+        oy -= cospow * (x * cosx1).sin() * (y * cosy1).sinh();
     }
     // cosh
-    if q[5] != 0.0 {
-        ox += q[5] * (x * q[7]).cosh() * (y * q[9]).cos();
-        oy += q[5] * (x * q[6]).sinh() * (y * q[8]).sin();
+    if coshpow != 0.0 {
+        ox += coshpow * (x * coshx2).cosh() * (y * coshy2).cos();
+        oy += coshpow * (x * coshx1).sinh() * (y * coshy1).sin();
     }
     // cot
-    if q[10] != 0.0 {
-        let k = 1.0 / ((q[14] * y).cosh() - (q[12] * x).cos());
-        ox += q[10] * k * (q[11] * x).sin();
-        oy -= q[10] * k * (q[13] * y).sinh();
+    if cotpow != 0.0 {
+        let k = 1.0 / ((coty2 * y).cosh() - (cotx2 * x).cos());
+        ox += cotpow * k * (cotx1 * x).sin();
+        oy -= cotpow * k * (coty1 * y).sinh();
     }
     // coth
-    if q[15] != 0.0 {
-        let d = (q[17] * x).cosh() - (q[19] * y).cos();
+    if cothpow != 0.0 {
+        let d = (cothx2 * x).cosh() - (cothy2 * y).cos();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 1.0 / d;
-        ox += q[15] * k * (q[16] * x).sinh();
-        oy += q[15] * k * (q[18] * y).sin();
+        ox += cothpow * k * (cothx1 * x).sinh();
+        oy += cothpow * k * (cothy1 * y).sin();
     }
     // csc
-    if q[20] != 0.0 {
+    if cscpow != 0.0 {
         let d = (2.0 * y).cosh() - (2.0 * x).cos();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += q[20] * k * (x * q[21]).sin() * (y * q[24]).cosh();
-        oy -= q[20] * k * (x * q[22]).cos() * (y * q[23]).sinh();
+        ox += cscpow * k * (x * cscx1).sin() * (y * cscy2).cosh();
+        oy -= cscpow * k * (x * cscx2).cos() * (y * cscy1).sinh();
     }
     // csch
-    if q[25] != 0.0 {
+    if cschpow != 0.0 {
         let d = (2.0 * x).cosh() - (2.0 * y).cos();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += q[25] * k * (x * q[26]).sinh() * (y * q[29]).cos();
-        oy -= q[25] * k * (x * q[27]).cosh() * (y * q[28]).sin();
+        ox += cschpow * k * (x * cschx1).sinh() * (y * cschy2).cos();
+        oy -= cschpow * k * (x * cschx2).cosh() * (y * cschy1).sin();
     }
     // exp
-    if q[30] != 0.0 {
-        let e = (x * q[31]).exp();
-        ox += q[30] * e * (y * q[33]).cos();
-        oy += q[30] * e * (y * q[32]).sin();
+    if exppow != 0.0 {
+        let e = (x * expx1).exp();
+        ox += exppow * e * (y * expy2).cos();
+        oy += exppow * e * (y * expy1).sin();
     }
     // sec
-    if q[34] != 0.0 {
+    if secpow != 0.0 {
         let d = (2.0 * x).cos() + (2.0 * y).cosh();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += q[34] * k * (x * q[36]).cos() * (y * q[38]).cosh();
-        oy += q[34] * k * (x * q[35]).sin() * (y * q[37]).sinh();
+        ox += secpow * k * (x * secx2).cos() * (y * secy2).cosh();
+        oy += secpow * k * (x * secx1).sin() * (y * secy1).sinh();
     }
     // sech
-    if q[39] != 0.0 {
+    if sechpow != 0.0 {
         let d = (2.0 * y).cos() + (2.0 * x).cosh();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += q[39] * k * (x * q[41]).cosh() * (y * q[43]).cos();
-        oy -= q[39] * k * (x * q[40]).sinh() * (y * q[42]).sin();
+        ox += sechpow * k * (x * sechx2).cosh() * (y * sechy2).cos();
+        oy -= sechpow * k * (x * sechx1).sinh() * (y * sechy1).sin();
     }
     // tan
-    if q[54] != 0.0 {
-        let d = (q[56] * x).cos() + (q[58] * y).cosh();
+    if tanpow != 0.0 {
+        let d = (tanx2 * x).cos() + (tany2 * y).cosh();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 1.0 / d;
-        ox += q[54] * k * (q[55] * x).sin();
-        oy += q[54] * k * (q[57] * y).sinh();
+        ox += tanpow * k * (tanx1 * x).sin();
+        oy += tanpow * k * (tany1 * y).sinh();
     }
     // tanh
-    if q[59] != 0.0 {
-        let d = (y * q[63]).cos() + (x * q[61]).cosh();
+    if tanhpow != 0.0 {
+        let d = (y * tanhy2).cos() + (x * tanhx2).cosh();
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 1.0 / d;
-        ox += q[59] * k * (x * q[60]).sinh();
-        oy += q[59] * k * (y * q[62]).sin();
+        ox += tanhpow * k * (x * tanhx1).sinh();
+        oy += tanhpow * k * (y * tanhy1).sin();
     }
     // sin
-    if q[44] != 0.0 {
-        ox += q[44] * (x * q[45]).sin() * (y * q[48]).cosh();
-        oy += q[44] * (x * q[46]).cos() * (y * q[47]).sinh();
+    if sinpow != 0.0 {
+        ox += sinpow * (x * sinx1).sin() * (y * siny2).cosh();
+        oy += sinpow * (x * sinx2).cos() * (y * siny1).sinh();
     }
     // sinh
-    if q[49] != 0.0 {
-        ox += q[49] * (x * q[50]).sinh() * (y * q[53]).cos();
-        oy += q[49] * (x * q[51]).cosh() * (y * q[52]).sin();
+    if sinhpow != 0.0 {
+        ox += sinhpow * (x * sinhx1).sinh() * (y * sinhy2).cos();
+        oy += sinhpow * (x * sinhx2).cosh() * (y * sinhy1).sin();
     }
     [v.w * ox, v.w * oy, 0.0]
 }
@@ -489,10 +557,10 @@ fn exblur_prepare(v: &mut Prepared) {
 /// origin) scaled by |p - o|^(2·dist) times a smooth random factor (the sum of the last four
 /// uniform draws, minus 2), plus a random sphere of relative radius r.
 fn exblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let ox = t.x - q[2];
-    let oy = t.y + q[3];
-    let oz = t.z - q[4];
+    let [dist, r, x_origin, y_origin, z_origin] = v.params();
+    let ox = t.x - x_origin;
+    let oy = t.y + y_origin;
+    let oz = t.z - z_origin;
     let n = ox * ox + oy * oy + oz * oz;
     let (s0, s1, s2, s3) = (
         v.state.get(0),
@@ -500,7 +568,7 @@ fn exblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
         v.state.get(2),
         v.state.get(3),
     );
-    let rr = v.w * n.powf(q[0]) * (s0 + s1 + s2 + s3 - 2.0);
+    let rr = v.w * n.powf(dist) * (s0 + s1 + s2 + s3 - 2.0);
     let theta = oy.atan2(ox);
     let phi = (oz / n.sqrt()).acos();
     let (su, cu) = theta.sin_cos();
@@ -512,11 +580,11 @@ fn exblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     v.state.set(1, s2);
     v.state.set(2, s3);
     v.state.set(3, rng.f01());
-    let rsrv = q[1] * srv;
+    let rsrv = r * srv;
     [
         rr * (sv * cu + rsrv * cru),
         rr * (sv * su + rsrv * sru),
-        rr * (cv + q[1] * crv),
+        rr * (cv + r * crv),
     ]
 }
 
@@ -524,7 +592,8 @@ fn exblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 // glitchy1
 
 fn glitchy1_prepare(v: &mut Prepared) {
-    let a = v.p[11].to_radians();
+    let [_, _, _, _, _, _, _, _, _, _, _, angle] = v.params();
+    let a = angle.to_radians();
     v.p.push(a.sin());
     v.p.push(a.cos());
 }
@@ -546,15 +615,31 @@ fn glitch_fold(c: f64, scale: f64, shift: f64, n: f64) -> f64 {
 /// glitchy1: folds x, y, z in periodic bands and scales the point by a hash of the rotated
 /// block it falls in, giving blocky, glitch-like stretches.
 fn glitchy1(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let x = glitch_fold(t.x, q[0], q[1], q[2]);
-    let y = glitch_fold(t.y, q[3], q[4], q[5]);
-    let z = glitch_fold(t.z, q[6], q[7], q[8]);
-    let (width, seed) = (q[9], q[10] as i32);
-    let (h, k) = (q[15], q[16]);
-    let uu = q[12] * t.x;
-    let vv = q[13] * (k * uu + h * t.y);
-    let ww = q[14] * (k * uu - h * t.y);
+    let [
+        scale_x,
+        shift_x,
+        n_x,
+        scale_y,
+        shift_y,
+        n_y,
+        scale_z,
+        shift_z,
+        n_z,
+        width,
+        seed,
+        _angle,
+        u,
+        v_scale,
+        w_scale,
+    ] = v.params();
+    let [h, k] = v.derived();
+    let x = glitch_fold(t.x, scale_x, shift_x, n_x);
+    let y = glitch_fold(t.y, scale_y, shift_y, n_y);
+    let z = glitch_fold(t.z, scale_z, shift_z, n_z);
+    let seed = seed as i32;
+    let uu = u * t.x;
+    let vv = v_scale * (k * uu + h * t.y);
+    let ww = w_scale * (k * uu - h * t.y);
     let block = |c: f64| -> i32 {
         let b = (c * width).floor() as i32;
         (b as f64 + (2.0 - 4.0 * wang_hash(b.wrapping_mul(seed).wrapping_add(1)))) as i32
@@ -584,7 +669,8 @@ fn pyramid(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 // rosoni
 
 fn rosoni_prepare(v: &mut Prepared) {
-    let phi = TAU / v.p[0];
+    let [maxiter] = v.params();
+    let phi = TAU / maxiter;
     v.p.push(phi.sin());
     v.p.push(phi.cos());
 }
@@ -593,10 +679,9 @@ fn rosoni_prepare(v: &mut Prepared) {
 /// the origin and counts how often it falls into a shape placed at (dx, dy) (a circle, square,
 /// lemniscate or wedge); an odd count replaces the point by its rotation at step `sweetiter`.
 fn rosoni(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (maxiter, sweetiter, alt) = (q[0] as i32, q[1] as i32, q[2]);
-    let (cutoff, radius, dx, dy) = (q[3], q[4], q[5], q[6]);
-    let (sina, cosa) = (q[7], q[8]);
+    let [maxiter, sweetiter, alt, cutoff, radius, dx, dy] = v.params();
+    let [sina, cosa] = v.derived();
+    let (maxiter, sweetiter) = (maxiter as i32, sweetiter as i32);
     let (x, y) = (t.x, t.y);
     let outside = if cutoff < 0.0 {
         x.abs().max(y.abs()) + cutoff
@@ -649,16 +734,17 @@ fn rosoni(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 // xheart_blur_wf
 
 fn xheart_blur_prepare(v: &mut Prepared) {
-    let ang = FRAC_PI_4 + 0.5 * FRAC_PI_4 * v.p[0];
+    let [angle, ratio] = v.params();
+    let ang = FRAC_PI_4 + 0.5 * FRAC_PI_4 * angle;
     let (s, c) = ang.sin_cos();
-    let rat = 6.0 + 2.0 * v.p[1];
+    let rat = 6.0 + 2.0 * ratio;
     v.p.extend_from_slice(&[s, c, rat]);
 }
 
 /// xheart_blur_wf: xheart applied to a uniformly random point of the square [-2, 2]², a heart
 /// shape filled with points (the input point is ignored).
 fn xheart_blur_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (sina, cosa, rat) = (v.p[2], v.p[3], v.p[4]);
+    let [sina, cosa, rat] = v.derived();
     let dx = 2.0 - rng.f01() * 4.0;
     let dy = 2.0 - rng.f01() * 4.0;
     let mut r2_4 = dx * dx + dy * dy + 4.0;
@@ -680,22 +766,34 @@ fn xheart_blur_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -
 /// enabled axis (x: about x = -xshift/2, y: about y = -yshift/2, z: about z = -zshift/2), scaling
 /// and shifting the colour on each mirror. The weight is not used.
 fn post_mirror_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
+    let [
+        xaxis,
+        yaxis,
+        zaxis,
+        xshift,
+        yshift,
+        zshift,
+        xscale,
+        yscale,
+        xcolorshift,
+        ycolorshift,
+        zcolorshift,
+    ] = v.params();
     let (mut x, mut y, mut z) = (t.x, t.y, t.z);
     let mut c = acc.color;
-    if q[0] > 0.0 && rng.f01() < 0.5 {
-        x = q[6] * (-x - q[3]);
-        y *= q[7];
-        c = (c + q[8]) % 1.0;
+    if xaxis > 0.0 && rng.f01() < 0.5 {
+        x = xscale * (-x - xshift);
+        y *= yscale;
+        c = (c + xcolorshift) % 1.0;
     }
-    if q[1] > 0.0 && rng.f01() < 0.5 {
-        x *= q[6];
-        y = q[7] * (-y - q[4]);
-        c = (c + q[9]) % 1.0;
+    if yaxis > 0.0 && rng.f01() < 0.5 {
+        x *= xscale;
+        y = yscale * (-y - yshift);
+        c = (c + ycolorshift) % 1.0;
     }
-    if q[2] > 0.0 && rng.f01() < 0.5 {
-        z = -z - q[5];
-        c = (c + q[10]) % 1.0;
+    if zaxis > 0.0 && rng.f01() < 0.5 {
+        z = -z - zshift;
+        c = (c + zcolorshift) % 1.0;
     }
     acc.color = c;
     [x, y, z]
@@ -707,7 +805,7 @@ fn post_mirror_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
 // JWildfire rounds π to 6 decimals here; kept so that the star's edges agree.
 #[allow(clippy::approx_constant)]
 fn crop_stars_prepare(v: &mut Prepared) {
-    let (radius, n, r2) = (v.p[0], v.p[1], v.p[2]);
+    let [radius, n, r2] = v.params();
     // Inner angle of a sector and the star's external angle; JWildfire uses 6-digit π here.
     let an = 3.141593 / n;
     let m = 4.0 + r2 * r2 * (n * 2.0 - 4.0);
@@ -721,9 +819,8 @@ fn crop_stars_prepare(v: &mut Prepared) {
 /// by r2) and sends the others to the origin (`invert` swaps inside and outside). It replaces
 /// the xform's sum so far, as JWildfire's crop variations do.
 fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (radius, invert) = (q[0], q[3]);
-    let (an, acos, asin, ecos, esin, kmax) = (q[4], q[5], q[6], q[7], q[8], q[9]);
+    let [radius, _, _, invert] = v.params();
+    let [an, acos, asin, ecos, esin, kmax] = v.derived();
     // Signed distance to the star, computed in its first sector.
     let a = atan2_approx(t.x, t.y);
     let period = 2.0 * an;
@@ -760,8 +857,7 @@ fn crop_stars(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
 /// `position` along the remaining axis; the colour can follow the square's u, v or u·v
 /// coordinate. (JWildfire's colour-map and displacement-map images are not supported.)
 fn plane_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (position, size, axis) = (q[0], q[1], q[2]);
+    let [position, size, axis, direct_color, color_mode] = v.params();
     let a = 0.5 - rng.f01();
     let b = 0.5 - rng.f01();
     // (u, v) of the colour modes and the output.
@@ -770,8 +866,8 @@ fn plane_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         1 => (a, b, [position, a * size, b * size]),
         _ => (b, a, [a * size, position, b * size]),
     };
-    if q[3] > 0.0 {
-        let c = match q[4] as i32 {
+    if direct_color > 0.0 {
+        let c = match color_mode as i32 {
             0 => acc.color,
             2 => w + 0.5,
             3 => (w + 0.5) * (u + 0.5),
@@ -789,10 +885,9 @@ fn plane_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// |z|^(dist/power)) of an affine image of the point; the colour is set from a blend of the
 /// output radius and the branch angle (`col` = 0: angle, 1: radius).
 fn julian2dc(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (power, dist, col) = (q[0], q[1], q[2]);
-    let x = q[3] * t.x + q[4] * t.y + q[7];
-    let y = q[5] * t.x + q[6] * t.y + q[8];
+    let [power, dist, col, a, b, c, d, e, f] = v.params();
+    let x = a * t.x + b * t.y + e;
+    let y = c * t.x + d * t.y + f;
     let branches = power.abs();
     let k = (rng.f01() * branches).floor().min(branches - 1.0);
     let angle = (y.atan2(x) + TAU * k) / power;
@@ -826,8 +921,8 @@ fn push_polygon(p: &mut Vec<f64>, sides: f64) {
 /// A random point of the regular polygon described at `g` (see [`push_polygon`]) with unit
 /// circumradius, uniform in area between the hole (relative size `hole`) and the edge. Draws
 /// four numbers, as JWildfire does (one of them unused).
-fn polygon_point(g: &[f64], hole: f64, rng: &mut FastRng) -> (f64, f64) {
-    let (n, mid, tan90, spread, norm, s, c) = (g[0], g[1], g[2], g[3], g[4], g[5], g[6]);
+fn polygon_point(g: [f64; 7], hole: f64, rng: &mut FastRng) -> (f64, f64) {
+    let [n, mid, tan90, spread, norm, s, c] = g;
     let jitter = rng.f01() - 0.5;
     let corner = ((rng.f01() * 32767.0) as i32).min(32766) as f64 % n;
     let mut ang = ((spread * jitter).atan() / norm + 0.5 + corner) * mid;
@@ -869,8 +964,7 @@ fn bourke_pattern(kind: f64, i: i32, j: i32) -> f64 {
 /// whole scaled by 0.1), coloured by one of Paul Bourke's integer patterns; the point lands in
 /// a random cell (the input point is ignored).
 fn szubieta(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (width, height, kind, scale) = (q[0], q[1], q[2], q[3]);
+    let [width, height, kind, scale] = v.params();
     let cells = width as usize * height as usize;
     let idx = ((rng.f01() * cells as f64) as usize).min(cells - 1);
     let (i, j) = (
@@ -878,16 +972,15 @@ fn szubieta(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         (idx % height as usize) as i32,
     );
     let (px, py) = (i as f64 - width / 2.0, j as f64 - height / 2.0);
-    let (ox, oy) = polygon_point(&q[4..], 0.0, rng);
+    let (ox, oy) = polygon_point(v.derived(), 0.0, rng);
     acc.color = bourke_pattern(kind, i, j);
     let k = v.w * 0.1;
     [k * (ox * scale + px), k * (oy * scale + py), 0.0]
 }
 
-/// Offsets in `v.p` of nsudoku's derived values.
-const SUDOKU_POLY: usize = 5;
-const SUDOKU_ROT: usize = SUDOKU_POLY + 7;
-const SUDOKU_LAYERS: usize = SUDOKU_ROT + 2;
+/// Where nsudoku's layers start in its derived values: after the polygon (7 values, see
+/// [`push_polygon`]), the rotation's cosine and sine, and the layer count.
+const SUDOKU_LAYERS: usize = 10;
 /// Per layer: polygon radius, hole size, then the 81 digits (cell i·9 + j).
 const SUDOKU_LAYER_LEN: usize = 83;
 
@@ -958,9 +1051,8 @@ fn sudoku_row_permutations() -> Vec<[u8; 9]> {
 }
 
 fn nsudoku_prepare(v: &mut Prepared) {
-    let level = v.p[0];
-    let hole = 1.0 - v.p[1];
-    let (size, angle, sides) = (v.p[2], v.p[3], v.p[4]);
+    let [level, thickness, size, angle, sides] = v.params();
+    let hole = 1.0 - thickness;
     push_polygon(&mut v.p, sides);
     let (s, c) = (angle * PI / 180.0).sin_cos();
     v.p.extend_from_slice(&[c, s]);
@@ -1000,16 +1092,15 @@ fn nsudoku_prepare(v: &mut Prepared) {
 /// (each layer's rows permuted, polygons shrinking layer by layer, hollow by `thickness`); the
 /// colour is the cell's digit / 9 (the input point is ignored).
 fn nsudoku(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let layers = q[SUDOKU_LAYERS] as usize;
+    let [_, _, _, _, _, _, _, c, s, layers] = v.derived();
+    let layers = layers as usize;
     let total = layers * 81;
     let idx = ((rng.f01() * total as f64) as usize).min(total - 1);
     let (layer, cell) = (idx / 81, idx % 81);
-    let l = &q[SUDOKU_LAYERS + 1 + layer * SUDOKU_LAYER_LEN..];
+    let l = &v.table(SUDOKU_LAYERS)[layer * SUDOKU_LAYER_LEN..];
     let (radius, hole) = (l[0], l[1]);
     let (px, py) = ((cell / 9) as f64 / 9.0 - 0.5, (cell % 9) as f64 / 9.0 - 0.5);
-    let (ox, oy) = polygon_point(&q[SUDOKU_POLY..], hole, rng);
-    let (c, s) = (q[SUDOKU_ROT], q[SUDOKU_ROT + 1]);
+    let (ox, oy) = polygon_point(v.derived(), hole, rng);
     acc.color = l[2 + cell] / 9.0;
     [
         v.w * (ox * radius * c + oy * radius * s + px),
@@ -1027,9 +1118,19 @@ const SNOW_STRETCH: f64 = 1.5 / 1.7321;
 /// Clifford Reiter's local cellular model of snow crystal growth on a hexagonal grid of
 /// `width` columns; returns the canvas of frozen values above the threshold (0 elsewhere).
 fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
-    let w = q[0].max(1.0) as usize;
-    let iters = q[1].max(0.0) as usize;
-    let (bg, freeze, diffusion, asym, noise, threshold) = (q[2], q[3], q[4], q[5], q[6], q[7]);
+    let [
+        size,
+        max_iter,
+        bg,
+        freeze,
+        diffusion,
+        asym,
+        noise,
+        threshold,
+        seed,
+    ] = params_of(q);
+    let w = size.max(1.0) as usize;
+    let iters = max_iter.max(0.0) as usize;
     let h = 2 * w - 1;
     let cells = w * h + (w - 1) * (h - 1);
     let (wi, ci) = (w as i64, cells as i64);
@@ -1038,7 +1139,7 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
         let m = n as i64 + offsets[k];
         (m >= 0 && m < ci).then_some(m as usize)
     };
-    let mut rnd = Mwc::new(q[8] as i64);
+    let mut rnd = Mwc::new(seed as i64);
     let mut field: Vec<f64> = (0..cells)
         .map(|_| bg + (noise - 2.0 * noise * rnd.next_f64()))
         .collect();
@@ -1107,8 +1208,9 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
 /// parameters 0–10: the crystal's growth, its seed, scale and jitter).
 fn snowflake_points(q: &[f64], _: &[String]) -> Vec<f64> {
     let canvas = snow_crystal(q);
-    let (scale, jitter) = (q[9], q[10].clamp(0.0, 1.0));
-    let mut rnd = Mwc::new(q[8] as i64);
+    let [_, _, _, _, _, _, _, _, seed, scale, jitter] = params_of(q);
+    let jitter = jitter.clamp(0.0, 1.0);
+    let mut rnd = Mwc::new(seed as i64);
     let mut out = vec![0.0];
     let rows = canvas.len() as f64;
     let mut count = 0;
@@ -1137,7 +1239,23 @@ fn snowflake_points(q: &[f64], _: &[String]) -> Vec<f64> {
 /// snowflake_wf: a random cell of a simulated snow crystal (Reiter's cellular growth model);
 /// with `dc_color` the colour follows the cell's frozen amount (the input point is ignored).
 fn snowflake_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (q, pts) = (&v.p, v.data());
+    let [
+        _buffer_size,
+        _max_iter,
+        _bg_freeze_level,
+        _fg_freeze_speed,
+        _diffusion_speed,
+        _diffusion_asymmetry,
+        _rnd_bg_noise,
+        _threshold,
+        _seed,
+        _scale,
+        _jitter,
+        dc_color,
+        dc_color_scale,
+        dc_color_offset,
+    ] = v.params();
+    let pts = v.data();
     let count = pts[0] as usize;
     // With fewer than two cells JWildfire falls back to the origin with intensity 0.
     let pt = if count < 2 {
@@ -1147,8 +1265,8 @@ fn snowflake_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
         let k = (rng.f01() * (count - 1) as f64 + 0.5) as usize;
         &pts[1 + 3 * k..]
     };
-    if q[11] > 0.0 {
-        acc.color = pt[2] * q[12] + q[13];
+    if dc_color > 0.0 {
+        acc.color = pt[2] * dc_color_scale + dc_color_offset;
     }
     [v.w * pt[0], v.w * pt[1], 0.0]
 }
@@ -1158,9 +1276,10 @@ fn snowflake_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
 
 fn polarplot_prepare(v: &mut Prepared) {
     let sorted = |a: f64, b: f64| if a > b { (b, a - b) } else { (a, b - a) };
-    let (tmin, dt) = sorted(v.p[1], v.p[2]);
-    let (umin, du) = sorted(v.p[3], v.p[4]);
-    let (rmin, dr) = sorted(v.p[5], v.p[6]);
+    let [_, t0, t1, u0, u1, r0, r1] = v.params();
+    let (tmin, dt) = sorted(t0, t1);
+    let (umin, du) = sorted(u0, u1);
+    let (rmin, dr) = sorted(r0, r1);
     v.p.extend_from_slice(&[tmin, dt, umin, du, rmin, dr]);
 }
 
@@ -1184,24 +1303,41 @@ fn polar_preset(preset: f64, t: f64, u: f64, a: f64, b: f64, c: f64) -> Option<f
 /// angle) or cylindrical ones (r·cos t, r·sin t, u), sampled at uniformly random (t, u); the
 /// colour can follow t, u, r or t·u. Only JWildfire's stock formulas (by preset id) are known.
 fn polarplot3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let q = &v.p;
-    let (tmin, dt, umin, du, rmin, dr) = (q[19], q[20], q[21], q[22], q[23], q[24]);
+    let [
+        preset_id,
+        _tmin,
+        _tmax,
+        _umin,
+        _umax,
+        _rmin,
+        _rmax,
+        cylindrical,
+        direct_color,
+        color_mode,
+        _blend_colormap,
+        _displ_amount,
+        _blend_displ_map,
+        param_a,
+        param_b,
+        param_c,
+    ] = v.params();
+    let [tmin, dt, umin, du, rmin, dr] = v.derived();
     let rt = rng.f01();
     let ru = rng.f01();
     let t = tmin + rt * dt;
     let u = umin + ru * du;
-    let Some(r) = polar_preset(q[0], t, u, q[13], q[14], q[15]) else {
+    let Some(r) = polar_preset(preset_id, t, u, param_a, param_b, param_c) else {
         return [0.0; 3];
     };
     let (st, ct) = t.sin_cos();
-    let out = if q[7] == 0.0 {
+    let out = if cylindrical == 0.0 {
         let (su, cu) = u.sin_cos();
         [r * su * ct, r * su * st, r * cu]
     } else {
         [r * ct, r * st, u]
     };
-    if q[8] > 0.0 {
-        let c = match q[9] as i32 {
+    if direct_color > 0.0 {
+        let c = match color_mode as i32 {
             1 => (t - tmin) / dt,
             2 => (u - umin) / du,
             3 => (r - rmin) / dr,
@@ -1614,16 +1750,27 @@ fn knot_tube(curve: &KnotCurve, k: &[f64], steps: usize, radius: f64, facets: us
 /// knots3D's shared data: the count of triangles, then 9 coordinates per triangle (from
 /// parameters 0–17: the curve, the tube and its placement).
 fn knots3d_faces(q: &[f64], _: &[String]) -> Vec<f64> {
+    let [
+        preset,
+        steps,
+        radius,
+        facets,
+        curve_params @ ..,
+        scale_x,
+        scale_y,
+        scale_z,
+        offset_x,
+        offset_y,
+        offset_z,
+    ] = params_of::<18>(q);
     let mut out = vec![0.0];
-    let preset = q[0];
     if !(0.0..24.0).contains(&preset) {
         return out;
     }
     let curve = &KNOT_CURVES[preset as usize];
-    let (steps, radius, facets) = (q[1] as usize, q[2], q[3] as usize);
-    let k: [f64; 8] = q[4..12].try_into().unwrap_or([0.0; 8]);
-    let mesh = knot_tube(curve, &k, steps, radius, facets);
-    let (scale, offset) = ([q[12], q[13], q[14]], [q[15], q[16], q[17]]);
+    let (steps, facets) = (steps as usize, facets as usize);
+    let mesh = knot_tube(curve, &curve_params, steps, radius, facets);
+    let (scale, offset) = ([scale_x, scale_y, scale_z], [offset_x, offset_y, offset_z]);
     let placed: Vec<[f64; 3]> = mesh
         .vertices
         .iter()
@@ -2116,10 +2263,11 @@ mod tests {
             &[("nsudoku_Level", 4.0), ("nsudoku_angle", 30.0)],
             1.0,
         );
-        let layers = v.p[super::SUDOKU_LAYERS] as usize;
+        let [_, _, _, _, _, _, _, _, _, layers] = v.derived();
+        let layers = layers as usize;
         assert_eq!(layers, 4);
         for l in 0..layers {
-            let d = &v.p[super::SUDOKU_LAYERS + 1 + l * super::SUDOKU_LAYER_LEN + 2..][..81];
+            let d = &v.table(super::SUDOKU_LAYERS)[l * super::SUDOKU_LAYER_LEN + 2..][..81];
             let digit = |i: usize, j: usize| d[i * 9 + j] as usize;
             for a in 0..9 {
                 let (mut row, mut col, mut bx) = (0u32, 0u32, 0u32);
@@ -2149,10 +2297,11 @@ mod tests {
         // A square (4 sides, circumradius 1) without hole: points inside, quadrants balanced.
         let mut g = Vec::new();
         super::push_polygon(&mut g, 4.0);
+        let g: [f64; 7] = g.try_into().unwrap();
         let mut rng = FastRng::new(SEED);
         let mut quad = [0usize; 4];
         for _ in 0..20000 {
-            let (x, y) = super::polygon_point(&g, 0.0, &mut rng);
+            let (x, y) = super::polygon_point(g, 0.0, &mut rng);
             // Vertices at 45°, 135°, …: the square |x|, |y| ≤ 1/√2.
             assert!(x.abs() <= 0.5f64.sqrt() + 1e-12 && y.abs() <= 0.5f64.sqrt() + 1e-12);
             quad[(x < 0.0) as usize * 2 + (y < 0.0) as usize] += 1;

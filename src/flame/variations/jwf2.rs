@@ -43,12 +43,6 @@ impl Draw for FastRng {
     }
 }
 
-/// Number of declared parameters: derived values start at this index of `v.p`.
-#[inline(always)]
-fn n_params(v: &Prepared) -> usize {
-    v.def.params.len()
-}
-
 /// Java's `(int) value` on a parameter already clamped to a small range.
 #[inline(always)]
 fn trunc_i(x: f64) -> i64 {
@@ -85,7 +79,7 @@ fn sym_store(v: &mut Prepared, shift: f64, maps: &[(Lin, f64, f64)]) {
 
 /// Applies one map of the group, picked uniformly, to the shifted input.
 fn sym_eval(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let tab = &v.p[n_params(v)..];
+    let tab = v.table(0);
     let count = (tab.len() - 1) / 6;
     let m = &tab[1 + 6 * rng.index(count)..];
     let x = t.x + tab[0];
@@ -100,7 +94,7 @@ fn sym_eval(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// The same linear parts twice, the first copy moved by (−sx/2, −sy/2), the second by
 /// (+sx/2, +sy/2): the lattice-step layout of sym_ng13 … sym_ng17.
 fn sym_two_cells(v: &mut Prepared, lins: &[Lin]) {
-    let (r, stepx, stepy) = (v.p[0], v.p[1], v.p[2]);
+    let [r, stepx, stepy] = v.params();
     let shift = (r * r / 2.0).sqrt();
     let (hx, hy) = (stepx / 2.0, stepy / 2.0);
     let mut maps: Vec<(Lin, f64, f64)> = lins.iter().map(|&l| (l, -hx, -hy)).collect();
@@ -110,7 +104,7 @@ fn sym_two_cells(v: &mut Prepared, lins: &[Lin]) {
 
 /// sym_ng1: two translated copies, ±step/2 apart (a lattice translation).
 fn prep_ng1(v: &mut Prepared) {
-    let (sx, sy) = (v.p[0], v.p[1]);
+    let [sx, sy] = v.params();
     sym_store(
         v,
         0.0,
@@ -120,7 +114,7 @@ fn prep_ng1(v: &mut Prepared) {
 
 /// sym_ng2: the point and its mirror in the x axis, ±step/2 apart (a glide reflection).
 fn prep_ng2(v: &mut Prepared) {
-    let (sx, sy) = (v.p[0], v.p[1]);
+    let [sx, sy] = v.params();
     sym_store(
         v,
         0.0,
@@ -130,7 +124,7 @@ fn prep_ng2(v: &mut Prepared) {
 
 /// sym_ng3: the point and its half-turn, ±(separation + step/2) apart.
 fn prep_ng3(v: &mut Prepared) {
-    let (sepx, sepy, step) = (v.p[0], v.p[1], v.p[2]);
+    let [sepx, sepy, step] = v.params();
     sym_store(
         v,
         0.0,
@@ -143,7 +137,8 @@ fn prep_ng3(v: &mut Prepared) {
 
 /// sym_ng4: identity, half-turn and the two axis mirrors, at fixed cell offsets moved by separation and skew.
 fn prep_ng4(v: &mut Prepared) {
-    let (sx, sy, kx, ky) = (v.p[0] / 2.0, v.p[1] / 2.0, v.p[2] / 2.0, v.p[3] / 2.0);
+    let [sep_x, sep_y, skew_x, skew_y] = v.params();
+    let (sx, sy, kx, ky) = (sep_x / 2.0, sep_y / 2.0, skew_x / 2.0, skew_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -158,7 +153,7 @@ fn prep_ng4(v: &mut Prepared) {
 
 /// sym_ng5: identity, half-turn and the two axis mirrors laid out in a row.
 fn prep_ng5(v: &mut Prepared) {
-    let (sepx, sepy, k) = (v.p[0], v.p[1], v.p[2]);
+    let [sepx, sepy, k] = v.params();
     sym_store(
         v,
         0.0,
@@ -173,7 +168,7 @@ fn prep_ng5(v: &mut Prepared) {
 
 /// sym_ng6: two copies and two x-axis mirrors on a skewed lattice (glide reflections).
 fn prep_ng6(v: &mut Prepared) {
-    let (sepy, kx, ky) = (v.p[0], v.p[1], v.p[2]);
+    let [sepy, kx, ky] = v.params();
     sym_store(
         v,
         0.0,
@@ -188,7 +183,7 @@ fn prep_ng6(v: &mut Prepared) {
 
 /// sym_ng7: the point and its x-axis mirror, offset in opposite directions.
 fn prep_ng7(v: &mut Prepared) {
-    let (sx, sy) = (v.p[0], v.p[1]);
+    let [sx, sy] = v.params();
     sym_store(
         v,
         0.0,
@@ -198,7 +193,8 @@ fn prep_ng7(v: &mut Prepared) {
 
 /// sym_ng8: identity, half-turn and the two mirrors in two cells set apart by the skew.
 fn prep_ng8(v: &mut Prepared) {
-    let (sx, sy, kx, ky) = (v.p[0] / 2.0, v.p[1] / 2.0, v.p[2] / 2.0, v.p[3] / 2.0);
+    let [sepx, sepy, skew_x, skew_y] = v.params();
+    let (sx, sy, kx, ky) = (sepx / 2.0, sepy / 2.0, skew_x / 2.0, skew_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -217,7 +213,8 @@ fn prep_ng8(v: &mut Prepared) {
 
 /// sym_ng9: identity, half-turn and the two axis mirrors (the Klein four-group), ±separation/2 apart.
 fn prep_ng9(v: &mut Prepared) {
-    let (sx, sy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [sepx, sepy] = v.params();
+    let (sx, sy) = (sepx / 2.0, sepy / 2.0);
     sym_store(
         v,
         0.0,
@@ -232,7 +229,8 @@ fn prep_ng9(v: &mut Prepared) {
 
 /// sym_ng10: the four rotations by quarter turns, after a diagonal shift of the input.
 fn prep_ng10(v: &mut Prepared) {
-    let (space, px, py) = (v.p[0], v.p[1] / 2.0, v.p[2] / 2.0);
+    let [space, px, py] = v.params();
+    let (px, py) = (px / 2.0, py / 2.0);
     sym_store(
         v,
         space,
@@ -247,8 +245,8 @@ fn prep_ng10(v: &mut Prepared) {
 
 /// sym_ng11: the eight symmetries of the square, translated by step and spacing.
 fn prep_ng11(v: &mut Prepared) {
-    let (space, px, py) = (v.p[0], v.p[1], v.p[2]);
-    let (hx, hy) = (v.p[3] / 2.0, v.p[4] / 2.0);
+    let [space, px, py, step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(
         v,
         space,
@@ -267,7 +265,7 @@ fn prep_ng11(v: &mut Prepared) {
 
 /// sym_ng12: the eight symmetries of the square, moved by ±spacing.
 fn prep_ng12(v: &mut Prepared) {
-    let (space, px, py) = (v.p[0], v.p[1], v.p[2]);
+    let [space, px, py] = v.params();
     sym_store(
         v,
         space,
@@ -360,19 +358,22 @@ fn prep_ng17(v: &mut Prepared) {
 
 /// sym_bg1: a band of translated copies (frieze group p1).
 fn prep_bg1(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(v, 0.0, &[(ID, -hx - 1.0, -hy), (ID, hx, hy)]);
 }
 
 /// sym_bg2: a copy and a raised x-axis mirror (a glide-like frieze).
 fn prep_bg2(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(v, 0.0, &[(ID, -hx - 1.0, -hy), (MIRROR_Y, hx, hy + 1.0)]);
 }
 
 /// sym_bg3: a copy and its half-turn (frieze with two-fold centres).
 fn prep_bg3(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -382,7 +383,8 @@ fn prep_bg3(v: &mut Prepared) {
 
 /// sym_bg4: a copy and its mirror in a vertical line.
 fn prep_bg4(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -392,7 +394,8 @@ fn prep_bg4(v: &mut Prepared) {
 
 /// sym_bg5: a copy and its mirror in a horizontal line (glide reflection along the band).
 fn prep_bg5(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -402,7 +405,8 @@ fn prep_bg5(v: &mut Prepared) {
 
 /// sym_bg6: a copy, both axis mirrors and the half-turn (frieze with both mirrors).
 fn prep_bg6(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -417,7 +421,8 @@ fn prep_bg6(v: &mut Prepared) {
 
 /// sym_bg7: the same four maps arranged as a glide-and-mirror frieze.
 fn prep_bg7(v: &mut Prepared) {
-    let (hx, hy) = (v.p[0] / 2.0, v.p[1] / 2.0);
+    let [step_x, step_y] = v.params();
+    let (hx, hy) = (step_x / 2.0, step_y / 2.0);
     sym_store(
         v,
         0.0,
@@ -527,11 +532,12 @@ fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64) {
 /// One point of segment `seg` of `segs`: somewhere along it (jittered by the line thickness),
 /// or near its start (within the point thickness), or the origin when neither is shown; `d`
 /// holds the derived values ([`LA_HEAD`]).
-fn la_sample<R: Draw>(d: &[f64], segs: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
+fn la_sample<R: Draw>(d: [f64; LA_HEAD], segs: &[f64], seg: usize, r: &mut R) -> (f64, f64) {
+    let [line_part, point_part, line_thick, point_thick] = d;
     let s = &segs[4 * seg..4 * seg + 4];
     let (x1, y1, x2, y2) = (s[0], s[1], s[2], s[3]);
     let pick = r.unit();
-    if pick < d[0] {
+    if pick < line_part {
         let dx = x2 - x1;
         let dy = y2 - y1;
         // A vertical segment gets a steep finite slope, as in JWildfire.
@@ -546,16 +552,14 @@ fn la_sample<R: Draw>(d: &[f64], segs: &[f64], seg: usize, r: &mut R) -> (f64, f
         if y2 < y1 {
             oy = -oy;
         }
-        let thick = d[2];
-        if thick != 0.0 {
-            ox += (r.unit() - 0.5) * thick;
-            oy += (r.unit() - 0.5) * thick;
+        if line_thick != 0.0 {
+            ox += (r.unit() - 0.5) * line_thick;
+            oy += (r.unit() - 0.5) * line_thick;
         }
         (x1 + ox, y1 + oy)
-    } else if pick <= d[1] {
-        let thick = d[3];
-        if thick != 0.0 {
-            let rad = r.unit() * thick;
+    } else if pick <= point_part {
+        if point_thick != 0.0 {
+            let rad = r.unit() * point_thick;
             let ang = r.unit() * (2.0 * PI);
             (x1 + rad * ang.cos(), y1 + rad * ang.sin())
         } else {
@@ -576,7 +580,7 @@ fn la_eval(v: &Prepared, rng: &mut FastRng) -> (f64, f64) {
         return (0.0, 0.0);
     }
     let seg = rng.index(count);
-    la_sample(&v.p[n_params(v)..][..LA_HEAD], segs, seg, rng)
+    la_sample(v.derived(), segs, seg, rng)
 }
 
 /// Turtle that records each forward move as a segment; angles in degrees.
@@ -642,13 +646,14 @@ fn hilbert_segments(q: &[f64], _: &[String]) -> Vec<f64> {
         heading: 0.0,
         segs: Vec::new(),
     };
-    t.hilbert(q[0] as i64);
+    let [level] = params_of(q);
+    t.hilbert(level as i64);
     t.segs
 }
 
 /// Derived values of hilbert_js and rsquares_js (same parameter layout).
 fn prep_la5(v: &mut Prepared) {
-    let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[3], v.p[4]);
+    let [_, lines, lt, points, pt] = v.params();
     la_store(v, lines, lt, points, pt);
 }
 
@@ -673,7 +678,8 @@ fn rsquares(segs: &mut Vec<f64>, n: i64, x: f64, y: f64, size: f64) {
 /// rsquares_js's segments (from the level, parameter 0).
 fn rsquares_segments(q: &[f64], _: &[String]) -> Vec<f64> {
     let mut segs = Vec::new();
-    rsquares(&mut segs, q[0] as i64, 0.5, 0.5, 1.0);
+    let [level] = params_of(q);
+    rsquares(&mut segs, level as i64, 0.5, 0.5, 1.0);
     segs
 }
 
@@ -701,18 +707,19 @@ fn tree(segs: &mut Vec<f64>, s: &TreeShape, n: i64, x: f64, y: f64, a: f64, len:
 
 /// tree_js's segments (from the level and the bend, branch and ratio parameters 0, 3–5).
 fn tree_segments(q: &[f64], _: &[String]) -> Vec<f64> {
+    let [level, _, _, bend, branch, ratio] = params_of(q);
     let shape = TreeShape {
-        bend: q[3].to_radians(),
-        branch: q[4].to_radians(),
-        ratio: q[5],
+        bend: bend.to_radians(),
+        branch: branch.to_radians(),
+        ratio,
     };
     let mut segs = Vec::new();
-    tree(&mut segs, &shape, q[0] as i64, 0.0, 0.0, PI / 2.0, 2.0);
+    tree(&mut segs, &shape, level as i64, 0.0, 0.0, PI / 2.0, 2.0);
     segs
 }
 
 fn prep_tree(v: &mut Prepared) {
-    let (lines, lt, points, pt) = (v.p[1], v.p[2], v.p[6], v.p[7]);
+    let [_, lines, lt, _, _, _, points, pt] = v.params();
     la_store(v, lines, lt, points, pt);
 }
 
@@ -769,7 +776,7 @@ const P_TREE: &[Param] = &[
 /// (d·sin(a·x) − sin(b·y), c·cos(a·x) + cos(b·y)). Like JWildfire it replaces (rather than
 /// adds to) the x and y its xform's earlier variations summed.
 fn svensson_js(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (a, b, c, d) = (v.p[0], v.p[1], v.p[2], v.p[3]);
+    let [a, b, c, d] = v.params();
     let x = d * (a * t.x).sin() - (b * t.y).sin();
     let y = c * (a * t.x).cos() + (b * t.y).cos();
     if v.form == Form::Regular {
@@ -1003,10 +1010,11 @@ fn dla_grow(max_nodes: usize, seed: i64, glue: f64, force: [f64; 3]) -> Vec<DlaN
 /// dla3d_wf's shared data: [`DLA_STRIDE`] values per node (from the node count, seed, glue
 /// radius and force, parameters 0, 1 and 6–9).
 fn dla_nodes(q: &[f64], _: &[String]) -> Vec<f64> {
-    let max_nodes = q[0].max(0.0) as usize;
-    let seed = q[1] as i64;
-    let glue = q[6].max(0.1);
-    let force = [q[7], q[8], q[9]];
+    let [max_iter, seed, _, _, _, _, glue, force_x, force_y, force_z] = params_of(q);
+    let max_nodes = max_iter.max(0.0) as usize;
+    let seed = seed as i64;
+    let glue = glue.max(0.1);
+    let force = [force_x, force_y, force_z];
     let nodes = dla_grow(max_nodes, seed, glue, force);
     // Relative depth: a node's depth over the deepest depth below it (itself included).
     let mut deepest: Vec<u32> = nodes.iter().map(|n| n.depth).collect();
@@ -1049,7 +1057,21 @@ fn dla_sphere<R: Draw>(r: &mut R, c: &[f64], radius: f64) -> [f64; 3] {
 }
 
 /// One sample of the aggregate: position and colour, or None where JWildfire hides the point.
-fn dla_sample<R: Draw>(prm: &[f64], nodes: &[f64], r: &mut R) -> Option<([f64; 3], f64)> {
+fn dla_sample<R: Draw>(v: &Prepared, nodes: &[f64], r: &mut R) -> Option<([f64; 3], f64)> {
+    let [
+        _,
+        _,
+        inner_r,
+        outer_r,
+        jscale,
+        _,
+        _,
+        _,
+        _,
+        _,
+        nodes_on,
+        junctions_on,
+    ] = v.params();
     let count = nodes.len() / DLA_STRIDE;
     if count == 0 {
         return None;
@@ -1057,9 +1079,8 @@ fn dla_sample<R: Draw>(prm: &[f64], nodes: &[f64], r: &mut R) -> Option<([f64; 3
     let n = &nodes[DLA_STRIDE * r.index(count)..];
     let n = &n[..DLA_STRIDE];
     let rnd = r.unit();
-    let (inner_r, outer_r, jscale) = (prm[2], prm[3], prm[4]);
-    let show_nodes = prm[10] > 0.0;
-    let show_junctions = prm[11] > 0.0;
+    let show_nodes = nodes_on > 0.0;
+    let show_junctions = junctions_on > 0.0;
     let blur = outer_r > 1.0e-8;
     let rel = n[3];
     if n[4] == 0.0 {
@@ -1128,9 +1149,10 @@ fn dla_sample<R: Draw>(prm: &[f64], nodes: &[f64], r: &mut R) -> Option<([f64; 3
 /// blur radius is 0), coloured by relative depth when dc_color is on. Where nothing is drawn
 /// the point is hidden (the sample counts, nothing is added).
 fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    match dla_sample(&v.p, v.data(), rng) {
+    let [_, _, _, _, _, dc_color] = v.params();
+    match dla_sample(v, v.data(), rng) {
         Some((pos, color)) => {
-            if v.p[5] > 0.0 {
+            if dc_color > 0.0 {
                 acc.color = color.clamp(0.0, 1.0);
             }
             [v.w * pos[0], v.w * pos[1], v.w * pos[2]]
@@ -1204,18 +1226,19 @@ fn dc_luma(c: [i64; 3]) -> f64 {
 /// The part all dc_ variations share. The point is the input (ColorOnly = 1) or uniform in a
 /// square of half-side `half` (1 or 0.5); its pattern colour sets the palette index, and the
 /// colour's luminance, scaled and offset, gives z (which replaces the running z when reset_z
-/// is 1). The five shared parameters come last.
+/// is 1). `tail` holds the five shared parameters, which come last (see `dc_tail!`).
 #[inline(always)]
 fn dc_common(
     v: &Prepared,
+    tail: [f64; 5],
     t: &VarIn,
     acc: &mut Acc,
     rng: &mut FastRng,
     half: f64,
     pattern: impl FnOnce(f64, f64) -> [f64; 3],
 ) -> V3 {
-    let b = n_params(v) - 5;
-    let (x, y) = if trunc_i(v.p[b]) == 1 {
+    let [color_only, _gradient, scale_z, offset_z, reset_z] = tail;
+    let (x, y) = if trunc_i(color_only) == 1 {
         (t.x, t.y)
     } else if half == 1.0 {
         let x = 2.0 * rng.f01() - 1.0;
@@ -1226,8 +1249,8 @@ fn dc_common(
     };
     let luma = dc_luma(dc_bytes(pattern(x, y)));
     acc.color = luma;
-    let dz = luma * v.p[b + 2] + v.p[b + 3];
-    let z = if trunc_i(v.p[b + 4]) == 1 {
+    let dz = luma * scale_z + offset_z;
+    let z = if trunc_i(reset_z) == 1 {
         if v.form == Form::Regular {
             acc.z = 0.0;
         }
@@ -1262,8 +1285,8 @@ const MANDALA_INV_PI: f64 = 0.318309886183791;
 
 /// dc_mandala's colour: a doubly folded kaleidoscope, an optional modular tiling, then an
 /// absolute-value inversion map iterated up to 73 times on a 3-vector that becomes RGB.
-fn mandala_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
-    let (mx, my, scale, sides, multiply, loops) = (q[0], q[1], q[2], q[3], q[4], q[5]);
+fn mandala_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
+    let [mx, my, scale, sides, multiply, loops, inv_r, inv_g, inv_b] = v.params();
     let zoom = 5.5 - scale;
     let k = PI / sides.floor();
     let s = kaleido(zoom * x, zoom * y, k);
@@ -1289,7 +1312,7 @@ fn mandala_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
         let w: [f64; 3] = std::array::from_fn(|i| gain[i] * (p[i].abs() / d - shift[i]).abs());
         p = [w[0], w[2], w[1]];
     }
-    let flips = [q[6], q[7], q[8]];
+    let flips = [inv_r, inv_g, inv_b];
     for i in 0..3 {
         if trunc_i(flips[i]) == 1 {
             p[i] = 1.0 - p[i];
@@ -1301,7 +1324,8 @@ fn mandala_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
 /// dc_mandala: a kaleidoscopic fractal stamp over [−1, 1]² (after a GLSL shader of the same
 /// name).
 fn dc_mandala(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    dc_common(v, t, acc, rng, 1.0, |x, y| mandala_rgb(&v.p, x, y))
+    let [_, _, _, _, _, _, _, _, _, tail @ ..] = v.params::<14>();
+    dc_common(v, tail, t, acc, rng, 1.0, |x, y| mandala_rgb(v, x, y))
 }
 
 const P_DC_MANDALA: &[Param] = &{
@@ -1326,10 +1350,9 @@ const P_DC_MANDALA: &[Param] = &{
 
 /// dc_inversion's colour: the point folded (|x|), scaled, shifted and inverted in a circle,
 /// repeatedly; brightness from the last and the smallest size reached.
-fn inversion_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
-    let time = q[1];
-    let iters = trunc_i(q[2]);
-    let (sx, sy) = (q[3], q[4]);
+fn inversion_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
+    let [_, time, iterations, sx, sy] = v.params();
+    let iters = trunc_i(iterations);
     let (ox, oy) = ((time * 0.123).sin(), (time * 0.0567).atan());
     let (mut vx, mut vy) = (x, y);
     let mut l = 0.0;
@@ -1365,7 +1388,8 @@ fn inversion_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
 
 /// dc_inversion: an iterated circle-inversion fractal stamp over [−1, 1]².
 fn dc_inversion(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    dc_common(v, t, acc, rng, 1.0, |x, y| inversion_rgb(&v.p, x, y))
+    let [_, _, _, _, _, tail @ ..] = v.params::<10>();
+    dc_common(v, tail, t, acc, rng, 1.0, |x, y| inversion_rgb(v, x, y))
 }
 
 const P_DC_INVERSION: &[Param] = &{
@@ -1387,8 +1411,9 @@ const P_DC_INVERSION: &[Param] = &{
 /// Derived values of dc_poincaredisc (after its parameters): the centre and radius of the
 /// third folding circle and the normal of the second fold line.
 fn prep_poincare(v: &mut Prepared) {
-    let n = trunc_i(v.p[2]) as f64;
-    let m = trunc_i(v.p[3]) as f64;
+    let [_, _, n, p] = v.params();
+    let n = trunc_i(n) as f64;
+    let m = trunc_i(p) as f64;
     let a = PI / n;
     let mut b = PI / m;
     if a + b >= 0.5 * PI {
@@ -1405,18 +1430,18 @@ fn prep_poincare(v: &mut Prepared) {
 /// dc_poincaredisc's colour: a hyperbolic (n, p) tiling of the unit disc by repeated folds
 /// (a mirror, a line and a circle), shaded by the distance to the circle and checkered by the
 /// parity of the line and circle folds.
-fn poincare_rgb(q: &[f64], d: &[f64], x: f64, y: f64) -> [f64; 3] {
-    let zoom = q[0];
+fn poincare_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
+    let [zoom, max_iter, _, _, _, checkers1, checkers2] = v.params();
+    let [cx, cr, nx, ny] = v.derived();
     let (mut zx, mut zy) = (x * zoom, y * zoom);
     if zx * zx + zy * zy > 1.0 {
         return [0.0; 3];
     }
-    let (cx, cr, nx, ny) = (d[0], d[1], d[2], d[3]);
     // JWildfire's mirror-fold counter never counts (it compares a point with itself), so
     // only the line and circle folds are counted.
     let mut line_folds = 0.0;
     let mut circle_folds = 0.0;
-    for _ in 0..trunc_i(q[1]) {
+    for _ in 0..trunc_i(max_iter) {
         zy = zy.abs();
         let t = 2.0 * cpp_min(0.0, zx * nx + zy * ny);
         if t < 0.0 {
@@ -1435,18 +1460,16 @@ fn poincare_rgb(q: &[f64], d: &[f64], x: f64, y: f64) -> [f64; 3] {
     }
     let dx = zx - cx;
     let r = ((dx * dx + zy * zy).sqrt() - cr).abs().powf(0.25);
-    let c1 = if trunc_i(q[5]) == 1 { 1.0 } else { 0.0 };
-    let c2 = if trunc_i(q[6]) == 1 { 1.0 } else { 0.0 };
+    let c1 = if trunc_i(checkers1) == 1 { 1.0 } else { 0.0 };
+    let c2 = if trunc_i(checkers2) == 1 { 1.0 } else { 0.0 };
     let k = gmod(c1 * line_folds + c2 * circle_folds, 2.0);
     [r * (0.5 * k + 0.5); 3]
 }
 
 /// dc_poincaredisc: a hyperbolic tiling of the Poincaré disc over [−0.5, 0.5]².
 fn dc_poincaredisc(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let np = n_params(v);
-    dc_common(v, t, acc, rng, 0.5, |x, y| {
-        poincare_rgb(&v.p, &v.p[np..], x, y)
-    })
+    let [_, _, _, _, _, _, _, tail @ ..] = v.params::<12>();
+    dc_common(v, tail, t, acc, rng, 0.5, |x, y| poincare_rgb(v, x, y))
 }
 
 const P_DC_POINCARE: &[Param] = &{
@@ -1472,8 +1495,8 @@ const P_DC_POINCARE: &[Param] = &{
 const CIRCUITS_GLOW0: f64 = (101.0 + 2.0) * 0.9;
 
 /// One orbit of dc_circuits' fold map: colour, and the glow it adds.
-fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
-    let (intensity, pulse, loops, zoom) = (q[3], q[5], q[7], q[8]);
+fn circuits_orbit(v: &Prepared, zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
+    let [_, _, _, intensity, _, pulse, _, loops, zoom] = v.params();
     let (mut zx, mut zy) = (zx0, zy0);
     let mut m = 0.0;
     let mut ot = 1000.0;
@@ -1508,8 +1531,8 @@ fn circuits_orbit(q: &[f64], zx0: f64, zy0: f64, t: f64) -> ([f64; 3], f64) {
 
 /// dc_circuits' colour at (x, y), given the running glow; returns the colour and the new
 /// glow.
-fn circuits_rgb(q: &[f64], x: f64, y: f64, glow0: f64) -> ([f64; 3], f64) {
-    let (time, rate, zoom, focus, loops) = (q[1], q[2], q[8], q[4], q[7]);
+fn circuits_rgb(v: &Prepared, x: f64, y: f64, glow0: f64) -> ([f64; 3], f64) {
+    let [_, time, rate, _, focus, _, _, loops, zoom] = v.params();
     let mut n = time * 0.01 * rate;
     let mut tt = 2.0 * rate;
     if n > 6.0 * rate {
@@ -1540,7 +1563,7 @@ fn circuits_rgb(q: &[f64], x: f64, y: f64, glow0: f64) -> ([f64; 3], f64) {
     for aa in 0..24 {
         let ax = (aa as f64 / 6.0).floor();
         let ay = gmod(aa as f64, 6.0).floor();
-        let (c, g) = circuits_orbit(q, ux + ax * pix * dof, uy + ay * pix * dof, tt);
+        let (c, g) = circuits_orbit(v, ux + ax * pix * dof, uy + ay * pix * dof, tt);
         col = c;
         glow += g;
         if left <= 0.0 {
@@ -1560,13 +1583,14 @@ fn circuits_rgb(q: &[f64], x: f64, y: f64, glow0: f64) -> ([f64; 3], f64) {
 /// glow level carries over from one point to the next, as in JWildfire (its state is shared
 /// by the render threads).
 fn dc_circuits(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    dc_common(v, t, acc, rng, 1.0, |x, y| {
+    let [_, _, _, _, _, _, _, _, _, tail @ ..] = v.params::<14>();
+    dc_common(v, tail, t, acc, rng, 1.0, |x, y| {
         let glow0 = if v.state.get(1) == 1.0 {
             v.state.get(0)
         } else {
             CIRCUITS_GLOW0
         };
-        let (rgb, glow) = circuits_rgb(&v.p, x, y, glow0);
+        let (rgb, glow) = circuits_rgb(v, x, y, glow0);
         v.state.set(0, glow);
         v.state.set(1, 1.0);
         rgb
@@ -1595,8 +1619,9 @@ const P_DC_CIRCUITS: &[Param] = &{
 
 /// dc_turbulence's grey level: a few rounds of a sin/cos displacement of the zoomed point
 /// (shifted by −20), accumulating inverse distances ("water caustics").
-fn turbulence_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
-    let (time, zoom, level) = (q[1], q[2], trunc_i(q[3]));
+fn turbulence_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
+    let [_, time, zoom, level] = v.params();
+    let level = trunc_i(level);
     let (px, py) = (x * zoom - 20.0, y * zoom - 20.0);
     let (mut ix, mut iy) = (px, py);
     let mut c = 1.0;
@@ -1618,7 +1643,8 @@ fn turbulence_rgb(q: &[f64], x: f64, y: f64) -> [f64; 3] {
 
 /// dc_turbulence: a grey caustic pattern over [−0.5, 0.5]².
 fn dc_turbulence(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    dc_common(v, t, acc, rng, 0.5, |x, y| turbulence_rgb(&v.p, x, y))
+    let [_, _, _, _, tail @ ..] = v.params::<9>();
+    dc_common(v, tail, t, acc, rng, 0.5, |x, y| turbulence_rgb(v, x, y))
 }
 
 const P_DC_TURBULENCE: &[Param] = &{
@@ -1642,7 +1668,7 @@ const GABOR_N: usize = 100;
 /// Derived values of dc_gabornoise: its 100 pseudo-random centres (a hash of the index,
 /// turned by a time-dependent shear), as (x, y) pairs.
 fn prep_gabor(v: &mut Prepared) {
-    let time = v.p[1];
+    let [_, time] = v.params();
     let hash = |p: f64, k: f64| (fract((k * p).sin() * 43141.59265) * 2.0 - 1.0) * 30.0;
     for i in 0..GABOR_N {
         let i = i as f64;
@@ -1655,8 +1681,9 @@ fn prep_gabor(v: &mut Prepared) {
 
 /// dc_gabornoise's colour: the summed (approximate) angles from the mirrored, zoomed point to
 /// the centres, through a cosine palette.
-fn gabor_rgb(q: &[f64], centres: &[f64], x: f64, y: f64) -> [f64; 3] {
-    let zoom = q[2];
+fn gabor_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
+    let [_, _, zoom] = v.params();
+    let centres = v.table(0);
     let ux = (x * zoom).abs() * 45.0;
     let uy = (y * zoom) * 45.0;
     let mut a = 0.0;
@@ -1672,10 +1699,8 @@ fn gabor_rgb(q: &[f64], centres: &[f64], x: f64, y: f64) -> [f64; 3] {
 
 /// dc_gabornoise: a fingerprint-like angular pattern over [−0.5, 0.5]².
 fn dc_gabornoise(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let np = n_params(v);
-    dc_common(v, t, acc, rng, 0.5, |x, y| {
-        gabor_rgb(&v.p, &v.p[np..], x, y)
-    })
+    let [_, _, _, tail @ ..] = v.params::<8>();
+    dc_common(v, tail, t, acc, rng, 0.5, |x, y| gabor_rgb(v, x, y))
 }
 
 const P_DC_GABOR: &[Param] = &{
@@ -1904,7 +1929,7 @@ mod tests {
     fn sym_tables_match_jwildfire() {
         for (name, params, want) in SYM_CASES {
             let v = prep(name, params);
-            assert_all_close(name, &v.p[v.def.params.len()..], want);
+            assert_all_close(name, v.table(0), want);
         }
     }
 
@@ -1954,14 +1979,14 @@ mod tests {
     fn line_drawings_match_jwildfire() {
         for (name, params, segs, samples) in LINE_CASES {
             let v = prep(name, params);
-            let d = &v.p[v.def.params.len()..];
+            let d = v.table(0);
             assert_eq!(d.len(), LA_HEAD);
             assert_all_close(name, v.data(), segs);
             let count = segs.len() / 4;
             let mut mwc = Mwc::new(777);
             let mut got = Vec::new();
             for k in 0..samples.len() / 2 {
-                let (x, y) = la_sample(d, v.data(), k % count, &mut mwc);
+                let (x, y) = la_sample(v.derived(), v.data(), k % count, &mut mwc);
                 got.push(x);
                 got.push(y);
             }
@@ -2044,7 +2069,7 @@ mod tests {
             let v = prep("dla3d_wf", &params);
             let mut mwc = Mwc::new(case[1] as i64);
             for w in want.chunks(4) {
-                match dla_sample(&v.p, v.data(), &mut mwc) {
+                match dla_sample(&v, v.data(), &mut mwc) {
                     Some((pos, c)) => assert_all_close("sample", &[pos[0], pos[1], pos[2], c], w),
                     None => assert!(w[0].is_nan(), "hidden where JWildfire draws"),
                 }
@@ -2071,15 +2096,14 @@ mod tests {
     }
 
     fn dc_rgb_of(name: &str, v: &Prepared, x: f64, y: f64, glow: &mut f64) -> [f64; 3] {
-        let np = v.def.params.len();
         match name {
-            "dc_mandala" => mandala_rgb(&v.p, x, y),
-            "dc_inversion" => inversion_rgb(&v.p, x, y),
-            "dc_poincaredisc" => poincare_rgb(&v.p, &v.p[np..], x, y),
-            "dc_turbulence" => turbulence_rgb(&v.p, x, y),
-            "dc_gabornoise" => gabor_rgb(&v.p, &v.p[np..], x, y),
+            "dc_mandala" => mandala_rgb(v, x, y),
+            "dc_inversion" => inversion_rgb(v, x, y),
+            "dc_poincaredisc" => poincare_rgb(v, x, y),
+            "dc_turbulence" => turbulence_rgb(v, x, y),
+            "dc_gabornoise" => gabor_rgb(v, x, y),
             "dc_circuits" => {
-                let (c, g) = circuits_rgb(&v.p, x, y, *glow);
+                let (c, g) = circuits_rgb(v, x, y, *glow);
                 *glow = g;
                 c
             }
@@ -2202,8 +2226,8 @@ mod tests {
         let mut glow = CIRCUITS_GLOW0;
         for [x, y] in DC_POINTS {
             let a = eval_prepared(&v, [x, y, 0.0], Acc::default(), true, &mut rng);
-            let want = dc_luma(dc_bytes(circuits_rgb(&v.p, x, y, glow).0));
-            glow = circuits_rgb(&v.p, x, y, glow).1;
+            let want = dc_luma(dc_bytes(circuits_rgb(&v, x, y, glow).0));
+            glow = circuits_rgb(&v, x, y, glow).1;
             assert!(close(a.color, want));
             assert!(close(v.state.get(0), glow));
         }

@@ -64,7 +64,7 @@ pub use names::{
     parse_name, text_attr_name, text_of,
 };
 pub use params::{
-    Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,
+    Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range, params_of,
 };
 pub use point::{Acc, SoaAcc, SoaIn, VarIn, need};
 pub use prepare::{eval_point, eval_prepared};

@@ -155,3 +155,14 @@ pub const fn p_int_nonzero(name: &'static str, default: f64, min: f64, max: f64)
         max,
     }
 }
+
+/// The first `N` parameter values of `values`, to bind by name: `let [size, seed] =
+/// params_of(q);`. [`Prepared::params`](super::Prepared::params) for the functions that are
+/// given the parameters as a slice (the builders of shared data).
+#[inline(always)]
+pub fn params_of<const N: usize>(values: &[f64]) -> [f64; N] {
+    match values.first_chunk() {
+        Some(a) => *a,
+        None => panic!("{N} parameters read from {} values", values.len()),
+    }
+}
