@@ -342,6 +342,17 @@ impl Prepared {
     }
 }
 
+/// The point (x, y, z) of a `pre_` form, else the xform's running sum: what the variations that
+/// look at "the sum so far" read.
+#[inline(always)]
+pub(super) fn sum_or_input(v: &Prepared, t: &VarIn, acc: &Acc) -> (f64, f64, f64) {
+    if v.form == Form::Pre {
+        (t.x, t.y, t.z)
+    } else {
+        (acc.x, acc.y, acc.z)
+    }
+}
+
 /// The panic of [`Prepared::params`] asked for more values than the variation has.
 #[cold]
 #[inline(never)]

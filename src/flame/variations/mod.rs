@@ -26,10 +26,49 @@
 //! `noise` (simplex noise); data that takes long to build (grown aggregates, crystals, meshes,
 //! recursive drawings) is built once per parameter values and shared through [`shared`].
 //!
+//! A formula reads its parameters by name, `let [power, dist] = v.params();`, and the values its
+//! `prepare` function derived from them, `let [abs_power, cn] = v.derived();` (see
+//! [`Prepared::params`]).
+//!
 //! The framework, by file: `def` (a registry entry and a prepared variation), `params`
 //! (parameter kinds and constructors), `point` (what a formula reads and writes), `prepare`
 //! (preparing a variation, and evaluating one at one point), `batch` (batches of points),
 //! `registry` (the table of every variation, by id) and `names` (attribute names and aliases).
+//!
+//! The formulas, by origin (`flam3`, `fr_` for Fractorium's catalogue, `jwf_` for JWildfire)
+//! and kind:
+//!
+//! | file | holds |
+//! |------|-------|
+//! | `flam3` | flam3's 99 classic variations, in flam3's order |
+//! | `fr_3d` | 3-D surfaces and 3-D versions of classic shapes (`blob3D`, `bubbleT3D`, `helix`, `taurus`, `cubic3D`, …) |
+//! | `fr_bipolar_elliptic` | maps in bipolar (`bCollide`, `bMod`, …) and elliptic (`eJulia`, `eMod`, …) coordinates, `block`, `foci_p` |
+//! | `fr_blurs` | blurs filling a shape (`blur3D`, `blur_circle`, `gaussian`, `starblur`, `nBlur`, …) |
+//! | `fr_complex` | functions of the complex plane (`arcsech`, `cpow2`, `exp2`, `gamma`, `jac_sn`, `murl`, …) |
+//! | `fr_crops` | crops (`crob`, `crop`, `cropn`, `circlecrop`, `hexcrop`, `post_smartcrop`, `vignette`, …) |
+//! | `fr_curves` | curves and figures drawn regardless of the input (`Lissajous`, `Spirograph`, `SuperShape3D`, …) |
+//! | `fr_direct_colour` | Fractorium's `dc_*` variations and `pixel_flow` |
+//! | `fr_distance_blurs` | blurs growing with the distance (`depth_*`, `falloff*`, `farblur`, `rblur`, `blur_zoom`) |
+//! | `fr_grids` | square-grid patterns (`checks`, `Voron`, `crackle`, `bwraps`, `squares`, `CircleLinear`, …) |
+//! | `fr_hexagons` | hexagonal and triangular tilings (`hexes`, `hex_modulus`, `hexaplay3D`, `xtrb`, …) |
+//! | `fr_hyperbolic` | Poincaré-disc tilings and maps (`hypertile*`, `hypershift*`, `poincare*`, `ortho`) |
+//! | `fr_inversions` | inversions (`spher`, `roundspher`, `loonie2`, `ovoid`, `GlynnSim*`, `glynnia`, …) |
+//! | `fr_julias` | julia-likes: roots with a random branch (`julia3D`, `Juliac`, `julian2`, `juliaq`, `npolar`, …) |
+//! | `fr_moves` | linear variants, rotations, shifts, mirrors and flips, the z helpers (`zscale`, `flatten`, …) |
+//! | `fr_polynomial_maps` | polynomial and rational maps (`henon`, `lozi`, `q_ode`, `polynomial`, `projective`, …) |
+//! | `fr_quaternions` | quaternion functions (`sinq` … `cothq`, `estiq`, `loq`, `mobiq`) |
+//! | `fr_radial` | polar warps (`swirl3`, `target`, `circlize`, `smartshape`, the shape family `w`/`x`/`y`/`z`, …) |
+//! | `fr_synth` | `synth` |
+//! | `fr_trig` | trigonometric formulas of x and y (`bisplit`, `crescents`, `petal`, `rays1`, `tancos`, …) |
+//! | `fr_truchet` | Truchet tilings (`Truchet*`, `truchet_knot`, `hex_truchet`) |
+//! | `fr_waves` | wave displacements (`waves22` … `waves42`, `ripple`, `vibration`, `interference2`, …) |
+//! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
+//! | `jwf_direct_colour` | JWildfire's `dc_*` stamps and `julian2dc` |
+//! | `jwf_drawings` | drawings, curves and filled figures (`hilbert_js`, `tree_js`, `rose_wf`, `nsudoku`, …) |
+//! | `jwf_knots` | `knots3D` |
+//! | `jwf_maps` | `complex`, `rosoni`, `svensson_js`, `crop_stars`, `post_mirror_wf` |
+//! | `jwf_symmetry` | the symmetry groups `sym_ng*` and `sym_bg*` |
+//! | `jwf_text` | `text_wf` |
 
 pub use crate::flame::affine::Affine;
 
@@ -42,17 +81,38 @@ mod prepare;
 mod registry;
 
 mod flam3;
-mod fr_a;
-mod fr_b;
-mod fr_c;
-mod fr_d;
-mod fr_e;
-mod fr_f;
-mod jwf;
-mod jwf2;
+mod fr_3d;
+mod fr_bipolar_elliptic;
+mod fr_blurs;
+mod fr_complex;
+mod fr_crops;
+mod fr_curves;
+mod fr_direct_colour;
+mod fr_distance_blurs;
+mod fr_grids;
+mod fr_hexagons;
+mod fr_hyperbolic;
+mod fr_inversions;
+mod fr_julias;
+mod fr_moves;
+mod fr_polynomial_maps;
+mod fr_quaternions;
+mod fr_radial;
+mod fr_synth;
+mod fr_trig;
+mod fr_truchet;
+mod fr_waves;
+mod jwf_3d;
+mod jwf_direct_colour;
+mod jwf_drawings;
+mod jwf_knots;
+mod jwf_maps;
+mod jwf_symmetry;
+#[cfg(test)]
+mod jwf_testing;
+mod jwf_text;
 mod noise;
 pub mod shared;
-mod text;
 pub mod util;
 
 pub(crate) use batch::inline_batch;
@@ -64,14 +124,17 @@ pub use names::{
     parse_name, text_attr_name, text_of,
 };
 pub use params::{
-    Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range, params_of,
+    Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,
 };
 pub use point::{Acc, SoaAcc, SoaIn, VarIn, need};
 pub use prepare::{eval_point, eval_prepared};
 pub use registry::{all, count, info};
 pub use shared::{BuildFn, SharedDef};
 
+// For the formulas' files, which import everything above with `use super::*`.
 use crate::flame::rng::FastRng;
+use def::sum_or_input;
+use params::{INF, NEG_INF, params_of};
 
 /// flam3's `EPS`, the guard its formulas add to denominators.
 pub const EPS: f64 = 1e-10;

@@ -90,6 +90,11 @@ impl Param {
     }
 }
 
+/// The bound of a parameter range that is open upwards.
+pub(super) const INF: f64 = f64::INFINITY;
+/// The bound of a parameter range that is open downwards.
+pub(super) const NEG_INF: f64 = f64::NEG_INFINITY;
+
 /// A real parameter without bounds.
 pub const fn p(name: &'static str, default: f64) -> Param {
     Param {

@@ -40,6 +40,17 @@ pub fn round(x: f64) -> f64 {
     x.round()
 }
 
+/// Fractorium's rounding: half away from zero, computed as floor(x + ½) for positive values
+/// and ceil(x − ½) otherwise (differs from `f64::round` just below the halves).
+#[inline(always)]
+pub fn round_half_out(x: f64) -> f64 {
+    if x > 0.0 {
+        (x + 0.5).floor()
+    } else {
+        (x - 0.5).ceil()
+    }
+}
+
 /// (sin a, cos a).
 #[inline(always)]
 pub fn sincos(a: f64) -> (f64, f64) {

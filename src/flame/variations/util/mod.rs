@@ -22,5 +22,6 @@ pub use arith::*;
 pub use c_ints::*;
 pub use complex::*;
 pub use coords::*;
+pub(in crate::flame::variations) use random::Draw;
 pub use random::*;
 pub use special::*;

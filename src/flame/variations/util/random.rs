@@ -96,3 +96,33 @@ pub fn lattice_noise(n: i32) -> f64 {
 pub fn lattice_noise_2d(x: i32, y: i32) -> f64 {
     lattice_noise(x.wrapping_add(y.wrapping_mul(57)))
 }
+
+/// Uniform numbers as JWildfire draws them (an index as ⌊u·n⌋), from the chaos game's
+/// generator, JWildfire's [`Mwc`] generator, or a scripted sequence in tests.
+pub(in crate::flame::variations) trait Draw {
+    /// Uniform in [0, 1).
+    fn unit(&mut self) -> f64;
+    /// Uniform index in 0..n (n > 0).
+    fn index(&mut self, n: usize) -> usize;
+}
+
+impl Draw for FastRng {
+    #[inline(always)]
+    fn unit(&mut self) -> f64 {
+        self.f01()
+    }
+    #[inline(always)]
+    fn index(&mut self, n: usize) -> usize {
+        self.below(n as u64) as usize
+    }
+}
+
+impl Draw for Mwc {
+    fn unit(&mut self) -> f64 {
+        self.next_f64()
+    }
+    fn index(&mut self, n: usize) -> usize {
+        let i = (self.next_f64() * n as f64) as usize;
+        i.min(n - 1)
+    }
+}

@@ -40,7 +40,7 @@ const TEXTS: &[TextParam] = &[
     },
 ];
 
-pub(super) const TEXT_WF: VarDef = VarDef::new("text_wf", text_wf)
+pub(super) static DEFS: &[VarDef] = &[VarDef::new("text_wf", text_wf)
     .params(&[
         p_int("text_wf_font_size", 320.0, 1.0, 4000.0),
         p("text_wf_antialias", 0.5),
@@ -53,7 +53,7 @@ pub(super) const TEXT_WF: VarDef = VarDef::new("text_wf", text_wf)
     .texts(TEXTS)
     .flags(flag::JWILDFIRE | flag::RANDOM)
     .sum()
-    .shared(&[0, 6], text_points);
+    .shared(&[0, 6], text_points)];
 
 /// text_wf: a random point of the drawn text.
 fn text_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
@@ -251,7 +251,7 @@ mod tests {
     use super::*;
 
     fn points(text: &str, size: f64) -> Vec<f64> {
-        let mut p = TEXT_WF.defaults();
+        let mut p = DEFS[0].defaults();
         p[0] = size;
         text_points(&p, &[text.to_string(), "Arial".to_string()])
     }
@@ -317,7 +317,7 @@ mod tests {
 
     #[test]
     fn text_wf_draws_the_text_scaled_and_ignores_the_weight() {
-        let mut p = TEXT_WF.defaults();
+        let mut p = DEFS[0].defaults();
         p[1] = 0.0; // no jitter
         p[2] = 0.5;
         p[4] = 0.1;
