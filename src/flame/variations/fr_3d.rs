@@ -1,6 +1,7 @@
 //! 3-D variations from Fractorium's catalogue: surfaces the plane is wrapped onto (helicoid,
 //! helix, hemisphere, sphere, torus, Enneper's and Möbius' surfaces), 3-D versions of classic
-//! shapes (blade, blob, bubble, disc, curl, sinusoidal, splits, waves) and the cube lattices.
+//! shapes (blade, blob, bubble, disc, popcorn, polar rose, sinusoidal, splits), the cube
+//! lattices and a few other 3-D maps (`barycentroid`, `depth`, `heat`, `ho`, `octagon`).
 //!
 //! Each formula follows the mathematics of Fractorium's version (constants, branch conditions,
 //! pole guards and integer conversions included) so that a flame renders the same; the code is
