@@ -216,6 +216,9 @@ pub struct Prepared {
     pub w: f64,
     /// Parameters in [`VarDef::params`] order, then values derived by [`VarDef::prepare`].
     pub p: Vec<f64>,
+    /// Where the derived values start in `p`: the number of parameters (kept here so that a
+    /// formula reaches its derived values without going through [`Prepared::def`]).
+    pub(super) derived_at: usize,
     /// The xform's pre-affine map.
     pub aff: Affine,
     /// Fractorium's flam3-compatibility switch (on by default).
@@ -249,7 +252,7 @@ impl Prepared {
     /// [`Prepared::p`] after them), to bind by name: `let [abs_power, cn] = v.derived();`.
     #[inline(always)]
     pub fn derived<const N: usize>(&self) -> [f64; N] {
-        let values = &self.p[self.def.params.len()..];
+        let values = &self.p[self.derived_at..];
         match values.first_chunk() {
             Some(a) => *a,
             None => too_few_values(N, values.len()),
@@ -261,7 +264,7 @@ impl Prepared {
     /// by position.
     #[inline(always)]
     pub fn table(&self, from: usize) -> &[f64] {
-        &self.p[self.def.params.len() + from..]
+        &self.p[self.derived_at + from..]
     }
 
     /// The shared data ([`Prepared::data`]); empty for a variation without.

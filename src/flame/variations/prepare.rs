@@ -50,6 +50,7 @@ impl Prepared {
             form,
             w,
             p,
+            derived_at: def.params.len(),
             aff,
             compat,
             state: VarState::default(),
