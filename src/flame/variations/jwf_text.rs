@@ -40,7 +40,7 @@ const TEXTS: &[TextParam] = &[
     },
 ];
 
-pub(super) const TEXT_WF: VarDef = VarDef::new("text_wf", text_wf)
+pub(super) static DEFS: &[VarDef] = &[VarDef::new("text_wf", text_wf)
     .params(&[
         p_int("text_wf_font_size", 320.0, 1.0, 4000.0),
         p("text_wf_antialias", 0.5),
@@ -53,10 +53,11 @@ pub(super) const TEXT_WF: VarDef = VarDef::new("text_wf", text_wf)
     .texts(TEXTS)
     .flags(flag::JWILDFIRE | flag::RANDOM)
     .sum()
-    .shared(&[0, 6], text_points);
+    .shared(&[0, 6], text_points)];
 
 /// text_wf: a random point of the drawn text.
 fn text_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, aa, scale_x, scale_y, offset_x, offset_y] = v.params();
     const SCALE: f64 = 3.0;
     let pts = v.data();
     let n = pts.len() / 2;
@@ -66,7 +67,6 @@ fn text_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     }
     let k = rng.below(n as u64) as usize;
     let (mut x, mut y) = (pts[2 * k], pts[2 * k + 1]);
-    let aa = v.p[1];
     if aa > 0.01 {
         let dr = ((aa * (-rng.f01().max(f64::MIN_POSITIVE).ln()).sqrt()).exp() - 1.0) * 0.001;
         let da = rng.f01() * 2.0 * PI;
@@ -74,8 +74,8 @@ fn text_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
         y += dr * da.sin();
     }
     [
-        (x * v.p[2] + v.p[4]) * SCALE,
-        (y * v.p[3] + v.p[5]) * SCALE,
+        (x * scale_x + offset_x) * SCALE,
+        (y * scale_y + offset_y) * SCALE,
         0.0,
     ]
 }
@@ -84,8 +84,8 @@ fn text_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// text, font size and baseline ([`super::shared`]).
 fn text_points(p: &[f64], texts: &[String]) -> Vec<f64> {
     let text = texts.first().map_or("", |t| t.as_str());
-    let font_size = p[0].max(1.0);
-    let baseline = p[6];
+    let [font_size, _, _, _, _, _, baseline] = params_of(p);
+    let font_size = font_size.max(1.0);
     let Ok(font) = FontRef::new(epaint_default_fonts::UBUNTU_LIGHT) else {
         return Vec::new();
     };
@@ -251,7 +251,7 @@ mod tests {
     use super::*;
 
     fn points(text: &str, size: f64) -> Vec<f64> {
-        let mut p = TEXT_WF.defaults();
+        let mut p = DEFS[0].defaults();
         p[0] = size;
         text_points(&p, &[text.to_string(), "Arial".to_string()])
     }
@@ -317,7 +317,7 @@ mod tests {
 
     #[test]
     fn text_wf_draws_the_text_scaled_and_ignores_the_weight() {
-        let mut p = TEXT_WF.defaults();
+        let mut p = DEFS[0].defaults();
         p[1] = 0.0; // no jitter
         p[2] = 0.5;
         p[4] = 0.1;

@@ -1,0 +1,364 @@
+//! A registry entry ([`VarDef`]: name, parameters, properties, formula) and a variation prepared
+//! for evaluation ([`Prepared`]: weight, normalised parameters and derived values), with how a
+//! prepared variation is evaluated at one point in each of its three forms.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use super::params::{Param, TextParam};
+use super::point::{Acc, SoaAcc, SoaIn, VarIn};
+use super::shared::{BuildFn, SharedDef};
+use super::{V3, VarId};
+use crate::flame::affine::Affine;
+use crate::flame::rng::FastRng;
+
+/// Properties of a variation (bits of [`VarDef::flags`]).
+pub mod flag {
+    /// The formula computes its own z. Without this flag the framework sets the output z
+    /// (0 for a regular variation, the input z for a `Set` pre_/post_ form).
+    pub const WRITES_Z: u32 = 1;
+    /// The formula reads the input z (a 3-D variation).
+    pub const USES_Z: u32 = 2;
+    /// The output depends on random numbers.
+    pub const RANDOM: u32 = 4;
+    /// Writes the colour coordinate ("direct colour" variations).
+    pub const SETS_COLOR: u32 = 8;
+    /// Reads the colour coordinate.
+    pub const USES_COLOR: u32 = 16;
+    /// Reads the running sum of the xform's earlier variations.
+    pub const READS_ACC: u32 = 32;
+    /// Rewrites the running sum of the xform's earlier variations.
+    pub const WRITES_ACC: u32 = 64;
+    /// Carries state from one call to the next.
+    pub const STATEFUL: u32 = 128;
+    /// One of flam3's classic variations: flam3's semantics (no parameter clamping).
+    pub const FLAM3: u32 = 256;
+    /// Not offered by name (a placeholder keeping flam3's numbering).
+    pub const HIDDEN: u32 = 512;
+    /// Exists only as `post_NAME`.
+    pub const POST_ONLY: u32 = 1024;
+    /// Behaves differently with Fractorium's flam3-compatibility switch off.
+    pub const COMPAT: u32 = 2048;
+    /// From JWildfire (not in Fractorium).
+    pub const JWILDFIRE: u32 = 4096;
+    /// Reads the xform's affine coefficients.
+    pub const USES_AFFINE: u32 = 8192;
+    /// May hide the point: the orbit goes on, the sample is not drawn (JWildfire's crops).
+    pub const HIDES: u32 = 16384;
+}
+
+/// Regular, `pre_` or `post_` use of a variation.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Form {
+    #[default]
+    Regular,
+    Pre,
+    Post,
+}
+
+impl Form {
+    /// The attribute prefix: "", "pre_" or "post_".
+    pub fn prefix(self) -> &'static str {
+        match self {
+            Form::Regular => "",
+            Form::Pre => "pre_",
+            Form::Post => "post_",
+        }
+    }
+}
+
+/// How a `pre_`/`post_` form combines its output with the point it was given.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Assign {
+    /// The output replaces the point.
+    Set,
+    /// The output is added to the point (blurs).
+    Sum,
+}
+
+/// A variation's formula: weighted output for input `t`; may read or change `acc` (only the
+/// variations flagged `READS_ACC`, `WRITES_ACC` or `SETS_COLOR` do).
+pub type EvalFn = fn(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3;
+
+/// Fills a prepared variation's derived values (appended to `v.p` after the parameters).
+pub type PrepareFn = fn(v: &mut Prepared);
+
+/// A regular variation applied to a batch: adds its outputs to `acc`.
+pub type BatchFn = fn(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng);
+
+/// One registry entry.
+#[derive(Clone, Copy)]
+pub struct VarDef {
+    /// Canonical name (flam3's for flam3's variations, else Fractorium's or JWildfire's).
+    pub name: &'static str,
+    pub params: &'static [Param],
+    /// Text parameters (few variations have any).
+    pub texts: &'static [TextParam],
+    /// [`need`](super::need) bits.
+    pub needs: u8,
+    /// [`flag`] bits.
+    pub flags: u32,
+    /// How the `pre_`/`post_` forms combine their output.
+    pub assign: Assign,
+    pub eval: EvalFn,
+    pub prepare: Option<PrepareFn>,
+    /// Expensive data built from some parameters, shared between prepared copies
+    /// ([`Prepared::data`]).
+    pub shared: Option<SharedDef>,
+    /// A specialised batch version of a regular use (optional; the generic loop is used
+    /// otherwise).
+    pub batch: Option<BatchFn>,
+}
+
+impl std::fmt::Debug for VarDef {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("VarDef").field("name", &self.name).finish()
+    }
+}
+
+impl VarDef {
+    /// A variation without parameters that reads only x and y, with `Set` pre/post forms.
+    pub const fn new(name: &'static str, eval: EvalFn) -> VarDef {
+        VarDef {
+            name,
+            params: &[],
+            texts: &[],
+            needs: 0,
+            flags: 0,
+            assign: Assign::Set,
+            eval,
+            prepare: None,
+            shared: None,
+            batch: None,
+        }
+    }
+    pub const fn params(mut self, params: &'static [Param]) -> VarDef {
+        self.params = params;
+        self
+    }
+    pub const fn texts(mut self, texts: &'static [TextParam]) -> VarDef {
+        self.texts = texts;
+        self
+    }
+    pub const fn needs(mut self, needs: u8) -> VarDef {
+        self.needs = needs;
+        self
+    }
+    pub const fn flags(mut self, flags: u32) -> VarDef {
+        self.flags = flags;
+        self
+    }
+    /// Pre/post forms add their output to the point.
+    pub const fn sum(mut self) -> VarDef {
+        self.assign = Assign::Sum;
+        self
+    }
+    pub const fn prepare(mut self, f: PrepareFn) -> VarDef {
+        self.prepare = Some(f);
+        self
+    }
+    /// Data built by `build` from the parameters at the indices `key`, kept in
+    /// [`Prepared::data`] and shared between the prepared copies with the same key values.
+    pub const fn shared(mut self, key: &'static [usize], build: BuildFn) -> VarDef {
+        self.shared = Some(SharedDef { key, build });
+        self
+    }
+    pub const fn batch(mut self, f: BatchFn) -> VarDef {
+        self.batch = Some(f);
+        self
+    }
+
+    pub fn defaults(&self) -> Vec<f64> {
+        self.params.iter().map(|p| p.default).collect()
+    }
+
+    pub fn has(&self, f: u32) -> bool {
+        self.flags & f != 0
+    }
+
+    /// Is a 3-D variation (its output depends on z).
+    pub fn is_3d(&self) -> bool {
+        self.has(flag::USES_Z)
+    }
+}
+
+/// State carried between calls by the few stateful variations (shared by the threads of a
+/// render; relaxed atomics, as the state only decorrelates successive calls).
+#[derive(Debug, Default)]
+pub struct VarState([AtomicU64; 4]);
+
+impl VarState {
+    pub fn get(&self, i: usize) -> f64 {
+        f64::from_bits(self.0[i].load(Ordering::Relaxed))
+    }
+    pub fn set(&self, i: usize, v: f64) {
+        self.0[i].store(v.to_bits(), Ordering::Relaxed);
+    }
+}
+
+impl Clone for VarState {
+    fn clone(&self) -> Self {
+        let s = VarState::default();
+        for i in 0..4 {
+            s.set(i, self.get(i));
+        }
+        s
+    }
+}
+
+/// A variation ready to evaluate: its weight, normalised parameters followed by derived values,
+/// and the xform's affine map.
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    pub id: VarId,
+    pub def: &'static VarDef,
+    pub form: Form,
+    pub w: f64,
+    /// Parameters in [`VarDef::params`] order, then values derived by [`VarDef::prepare`].
+    pub p: Vec<f64>,
+    /// Where the derived values start in `p`: the number of parameters (kept here so that a
+    /// formula reaches its derived values without going through [`Prepared::def`]).
+    pub(super) derived_at: usize,
+    /// The xform's pre-affine map.
+    pub aff: Affine,
+    /// Fractorium's flam3-compatibility switch (on by default).
+    pub compat: bool,
+    pub state: VarState,
+    /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
+    /// shared through a process-wide cache); `None` for the variations without.
+    pub data: Option<Arc<[f64]>>,
+    /// Text parameters in [`VarDef::texts`] order.
+    pub texts: Vec<String>,
+}
+
+impl Prepared {
+    /// The first `N` parameters (normalised, in [`VarDef::params`] order), to bind by name:
+    /// `let [power, dist] = v.params();` (`_` for those not read). With [`Prepared::derived`],
+    /// the one way formulas and `prepare` functions read their values.
+    #[inline(always)]
+    pub fn params<const N: usize>(&self) -> [f64; N] {
+        debug_assert!(
+            N <= self.def.params.len(),
+            "{} has fewer parameters",
+            self.def.name
+        );
+        match self.p.first_chunk() {
+            Some(a) => *a,
+            None => too_few_values(N, self.p.len()),
+        }
+    }
+
+    /// The first `N` values [`VarDef::prepare`] derived from the parameters (appended to
+    /// [`Prepared::p`] after them), to bind by name: `let [abs_power, cn] = v.derived();`.
+    #[inline(always)]
+    pub fn derived<const N: usize>(&self) -> [f64; N] {
+        let values = &self.p[self.derived_at..];
+        match values.first_chunk() {
+            Some(a) => *a,
+            None => too_few_values(N, values.len()),
+        }
+    }
+
+    /// The derived values from index `from` on (0 being the first value after the parameters):
+    /// a table [`VarDef::prepare`] appended (cell sites, symmetry maps, drawing segments), read
+    /// by position.
+    #[inline(always)]
+    pub fn table(&self, from: usize) -> &[f64] {
+        &self.p[self.derived_at + from..]
+    }
+
+    /// The shared data ([`Prepared::data`]); empty for a variation without.
+    #[inline(always)]
+    pub fn data(&self) -> &[f64] {
+        self.data.as_deref().unwrap_or(&[])
+    }
+
+    /// The output z of a formula that does not compute one: 0 for a regular variation, the
+    /// input z for a `pre_`/`post_` form that replaces the point, 0 for one that adds to it.
+    #[inline(always)]
+    pub fn default_z(&self, t: &VarIn) -> f64 {
+        if self.form != Form::Regular && self.def.assign == Assign::Set {
+            t.z
+        } else {
+            0.0
+        }
+    }
+
+    /// Evaluate the formula: the weighted output for input `t`.
+    #[inline(always)]
+    pub fn eval(&self, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+        self.eval_with(self.def.eval, t, acc, rng)
+    }
+
+    /// [`Prepared::eval`] with the formula `f` (the variation's own: a function item inlines).
+    #[inline(always)]
+    pub(super) fn eval_with(
+        &self,
+        f: impl Fn(&Prepared, &VarIn, &mut Acc, &mut FastRng) -> V3,
+        t: &VarIn,
+        acc: &mut Acc,
+        rng: &mut FastRng,
+    ) -> V3 {
+        let mut o = f(self, t, acc, rng);
+        if self.def.flags & flag::WRITES_Z == 0 {
+            o[2] = self.default_z(t);
+        }
+        o
+    }
+
+    /// Apply as a `pre_` form to the transformed point `tr` (colour `color`).
+    #[inline]
+    pub fn apply_pre(&self, tr: &mut V3, acc: &mut Acc, color: f64, rng: &mut FastRng) {
+        let t = VarIn::new(tr[0], tr[1], tr[2], color, self.def.needs, false);
+        let o = self.eval(&t, acc, rng);
+        self.assign(tr, o);
+    }
+
+    /// Apply as a `post_` form to the xform's summed output `acc`.
+    #[inline]
+    pub fn apply_post(&self, acc: &mut Acc, color: f64, rng: &mut FastRng) {
+        let t = VarIn::new(acc.x, acc.y, acc.z, color, self.def.needs, false);
+        let o = self.eval(&t, acc, rng);
+        self.assign_acc(acc, o);
+    }
+
+    /// Combines the output `o` of a `pre_`/`post_` form with the point `p` it transformed:
+    /// replaces it or adds to it, as [`VarDef::assign`] says.
+    #[inline(always)]
+    pub(super) fn assign(&self, p: &mut V3, o: V3) {
+        match self.def.assign {
+            Assign::Set => *p = o,
+            Assign::Sum => {
+                p[0] += o[0];
+                p[1] += o[1];
+                p[2] += o[2];
+            }
+        }
+    }
+
+    /// [`Prepared::assign`] to the point held in `acc`.
+    #[inline(always)]
+    pub(super) fn assign_acc(&self, acc: &mut Acc, o: V3) {
+        let mut p = [acc.x, acc.y, acc.z];
+        self.assign(&mut p, o);
+        [acc.x, acc.y, acc.z] = p;
+    }
+}
+
+/// The point (x, y, z) of a `pre_` form, else the xform's running sum: what the variations that
+/// look at "the sum so far" read.
+#[inline(always)]
+pub(super) fn sum_or_input(v: &Prepared, t: &VarIn, acc: &Acc) -> (f64, f64, f64) {
+    if v.form == Form::Pre {
+        (t.x, t.y, t.z)
+    } else {
+        (acc.x, acc.y, acc.z)
+    }
+}
+
+/// The panic of [`Prepared::params`] asked for more values than the variation has.
+#[cold]
+#[inline(never)]
+fn too_few_values(wanted: usize, have: usize) -> ! {
+    panic!("a formula read {wanted} values of a variation that has {have}")
+}

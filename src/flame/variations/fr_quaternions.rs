@@ -1,0 +1,258 @@
+//! The quaternion functions of Fractorium's catalogue: the trigonometric and hyperbolic
+//! functions (`sinq` … `cothq`), the exponential (`estiq`), the logarithm (`loq`) and a Möbius map
+//! (`mobiq`) of the point taken as the quaternion x + y·i + z·j.
+//!
+//! Each formula follows the mathematics of Fractorium's version (constants, branch conditions,
+//! pole guards and integer conversions included) so that a flame renders the same; the code is
+//! ugnis's own.
+
+use std::f64::consts::E;
+
+use super::util::{quat_mul_conj, sqr, zeps};
+use super::*;
+
+pub(super) static DEFS: &[VarDef] = &[
+    VarDef::new("coshq", coshq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("cosq", cosq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("cothq", cothq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("cotq", cotq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("cschq", cschq)
+        .needs(need::SUMSQ)
+        .flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("cscq", cscq)
+        .needs(need::SUMSQ)
+        .flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("estiq", estiq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("loq", loq)
+        .params(&[p_range("loq_base", E, f64::EPSILON, INF)])
+        .flags(flag::USES_Z | flag::WRITES_Z)
+        .prepare(prep_loq),
+    VarDef::new("mobiq", mobiq)
+        .params(&[
+            p("mobiq_at", 1.0),
+            p("mobiq_ax", 0.0),
+            p("mobiq_ay", 0.0),
+            p("mobiq_az", 0.0),
+            p("mobiq_bt", 0.0),
+            p("mobiq_bx", 0.0),
+            p("mobiq_by", 0.0),
+            p("mobiq_bz", 0.0),
+            p("mobiq_ct", 0.0),
+            p("mobiq_cx", 0.0),
+            p("mobiq_cy", 0.0),
+            p("mobiq_cz", 0.0),
+            p("mobiq_dt", 1.0),
+            p("mobiq_dx", 0.0),
+            p("mobiq_dy", 0.0),
+            p("mobiq_dz", 0.0),
+        ])
+        .flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("sechq", sechq)
+        .needs(need::SUMSQ)
+        .flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("secq", secq)
+        .needs(need::SUMSQ)
+        .flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("sinhq", sinhq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("sinq", sinq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("tanhq", tanhq).flags(flag::USES_Z | flag::WRITES_Z),
+    VarDef::new("tanq", tanq).flags(flag::USES_Z | flag::WRITES_Z),
+];
+
+/// Quaternion hyperbolic cosine of (x, y, z) taken as x + y·i + z·j.
+fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let m = (t.y * t.y + t.z * t.z).sqrt();
+    let (s, c) = m.sin_cos();
+    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let d = v.w * sh * s / zeps(m);
+    [v.w * c * ch, d * t.y, d * t.z]
+}
+
+/// Quaternion cosine of (x, y, z) taken as x + y·i + z·j.
+fn cosq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let m = (t.y * t.y + t.z * t.z).sqrt();
+    let (s, c) = t.x.sin_cos();
+    let (sh, ch) = (m.sinh(), m.cosh());
+    let d = -v.w * s * sh / zeps(m);
+    [v.w * c * ch, d * t.y, d * t.z]
+}
+
+/// Quaternion hyperbolic cotangent of (x, y, z) taken as x + y·i + z·j (Fractorium's form, whose
+/// normalisation divides by |q|⁴).
+fn cothq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let yz2 = t.y * t.y + t.z * t.z;
+    let m = yz2.sqrt();
+    let k = v.w / zeps(sqr(t.x * t.x + yz2));
+    let (s, c) = m.sin_cos();
+    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let d = ch * s / zeps(m);
+    let b = sh * s / zeps(m);
+    quat_mul_conj(sh * c, d, ch * c, b, t.y, t.z, k)
+}
+
+/// Quaternion cotangent of (x, y, z) taken as x + y·i + z·j (Fractorium's form, normalised by
+/// |q|²).
+fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let yz2 = t.y * t.y + t.z * t.z;
+    let m = yz2.sqrt();
+    let k = v.w / zeps(t.x * t.x + yz2);
+    let (s, c) = t.x.sin_cos();
+    let (sh, ch) = (m.sinh(), m.cosh());
+    let d = c * sh / zeps(m);
+    let b = -s * sh / zeps(m);
+    let [x, y, z] = quat_mul_conj(s * ch, d, c * ch, b, t.y, t.z, k);
+    [x, -y, -z]
+}
+
+/// Hyperbolic cosecant of the quaternion x + (y, z): 1/sinh(q).
+fn cschq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let av = (t.y * t.y + t.z * t.z).sqrt();
+    let ni = v.w / zeps(t.sumsq + t.z * t.z);
+    let (s, c) = av.sin_cos();
+    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let d = ni * ch * s / zeps(av);
+    [sh * c * ni, -(d * t.y), -(d * t.z)]
+}
+
+/// Cosecant of the quaternion x + (y, z): 1/sin(q).
+fn cscq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let av = (t.y * t.y + t.z * t.z).sqrt();
+    let ni = v.w / zeps(t.sumsq + t.z * t.z);
+    let (s, c) = t.x.sin_cos();
+    let (sh, ch) = (av.sinh(), av.cosh());
+    let d = ni * c * sh / zeps(av);
+    [s * ch * ni, -(d * t.y), -(d * t.z)]
+}
+
+/// Exponential of the quaternion x + (y, z).
+fn estiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let av = (t.y * t.y + t.z * t.z).sqrt();
+    let e = t.x.exp();
+    let (s, c) = av.sin_cos();
+    let a = e * s / zeps(av);
+    [v.w * e * c, v.w * a * t.y, v.w * a * t.z]
+}
+
+fn prep_loq(v: &mut Prepared) {
+    let [base] = v.params();
+    v.p.push(0.5 / base.ln());
+}
+
+/// loq: the quaternion logarithm of (x, y, z) in base `base`: log of the norm on x, the unit
+/// imaginary part times the angle on (y, z).
+fn loq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [scale] = v.derived();
+    let im = (t.y * t.y + t.z * t.z).sqrt();
+    let k = v.w * im.atan2(t.x) / zeps(im);
+    [(t.x * t.x + im * im).ln() * scale, k * t.y, k * t.z]
+}
+
+/// mobiq: a quaternion Möbius map (A·q + B)(C·q + D)⁻¹ of q = x + y·i + z·j, each coefficient a
+/// quaternion (t, x, y, z).
+fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let [
+        at,
+        ax,
+        ay,
+        az,
+        bt,
+        bx,
+        by,
+        bz,
+        ct,
+        cx,
+        cy,
+        cz,
+        dt,
+        dx,
+        dy,
+        dz,
+    ] = v.params();
+    let (p0, p1, p2) = (t.x, t.y, t.z);
+    let nt = at * p0 - ax * p1 - ay * p2 + bt;
+    let nx = at * p1 + ax * p0 - az * p2 + bx;
+    let ny = at * p2 + ay * p0 + az * p1 + by;
+    let nz = az * p0 + ax * p2 - ay * p1 + bz;
+    let et = ct * p0 - cx * p1 - cy * p2 + dt;
+    let ex = ct * p1 + cx * p0 - cz * p2 + dx;
+    let ey = ct * p2 + cy * p0 + cz * p1 + dy;
+    let ez = cz * p0 + cx * p2 - cy * p1 + dz;
+    let inv = v.w / (et * et + ex * ex + ey * ey + ez * ez);
+    [
+        (nt * et + nx * ex + ny * ey + nz * ez) * inv,
+        (nx * et - nt * ex - ny * ez + nz * ey) * inv,
+        (ny * et - nt * ey - nz * ex + nx * ez) * inv,
+    ]
+}
+
+/// |(y, z)|, the length of the "imaginary" part of the quaternion (x, y, z).
+#[inline(always)]
+fn imag_len(t: &VarIn) -> f64 {
+    (t.y * t.y + t.z * t.z).sqrt()
+}
+
+/// Quaternion hyperbolic secant of (x, y, z, 0): 1/cosh q.
+fn sechq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let a = imag_len(t);
+    let ni = v.w / zeps(t.sumsq + t.z * t.z);
+    let (s, c) = a.sin_cos();
+    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let d = ni * sh * s / zeps(a);
+    [ch * c * ni, -(d * t.y), -(d * t.z)]
+}
+
+/// Quaternion secant of (x, y, z, 0): 1/cos q.
+fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let a = imag_len(t);
+    let ni = v.w / zeps(t.sumsq + t.z * t.z);
+    let (s, c) = (-t.x).sin_cos();
+    let (sh, ch) = (a.sinh(), a.cosh());
+    let d = ni * s * sh / zeps(a);
+    [c * ch * ni, -(d * t.y), -(d * t.z)]
+}
+
+/// Quaternion hyperbolic sine of (x, y, z, 0).
+fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let a = imag_len(t);
+    let (s, c) = a.sin_cos();
+    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let d = v.w * ch * s / zeps(a);
+    [v.w * sh * c, d * t.y, d * t.z]
+}
+
+/// Quaternion sine of (x, y, z, 0).
+fn sinq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let a = imag_len(t);
+    let (s, c) = t.x.sin_cos();
+    let (sh, ch) = (a.sinh(), a.cosh());
+    let d = v.w * c * sh / zeps(a);
+    [v.w * s * ch, d * t.y, d * t.z]
+}
+
+/// tanhq: the hyperbolic tangent of the quaternion (x, y, z, 0).
+fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let (x, y, z) = (t.x, t.y, t.z);
+    let yz_sq = sqr(y) + sqr(z);
+    let yz_len = yz_sq.sqrt();
+    let k = v.w / zeps(sqr(x) + yz_sq);
+    let (s, c) = yz_len.sin_cos();
+    let sh = x.sinh();
+    let ch = x.cosh();
+    let d = ch * s / zeps(yz_len);
+    let b = sh * s / zeps(yz_len);
+    quat_mul_conj(sh * c, d, c * ch, b, y, z, k)
+}
+
+/// tanq: the tangent of the quaternion (x, y, z, 0).
+fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let (x, y, z) = (t.x, t.y, t.z);
+    let yz_sq = sqr(y) + sqr(z);
+    let yz_len = yz_sq.sqrt();
+    let k = v.w / zeps(sqr(x) + yz_sq);
+    let (s, c) = x.sin_cos();
+    let sh = yz_len.sinh();
+    let ch = yz_len.cosh();
+    let d = c * sh / zeps(yz_len);
+    let b = -s * sh / zeps(yz_len);
+    quat_mul_conj(s * ch, d, c * ch, b, y, z, k)
+}

@@ -1,0 +1,273 @@
+//! Attribute names ↔ variations: the names a variation, its `pre_`/`post_` forms and its
+//! parameters take in files, the aliases other programs write, the variations of other programs
+//! ugnis does not render, and flam3's numeric indices.
+
+use super::VarId;
+use super::def::{Form, flag};
+use super::flam3::GAUSSIAN_BLUR;
+use super::registry::{REGISTRY, info};
+
+/// A regular variation by name (case-insensitive).
+pub fn by_name(name: &str) -> Option<VarId> {
+    let key = name.to_ascii_lowercase();
+    let id = *REGISTRY.names.get(&key)?;
+    (!info(id).has(flag::POST_ONLY)).then_some(id)
+}
+
+/// The variation and form an attribute name denotes: `NAME`, `pre_NAME` or `post_NAME`
+/// (case-insensitive). flam3's `pre_blur` is the `pre_` form of `gaussian_blur`.
+pub fn parse_name(attr: &str) -> Option<(VarId, Form)> {
+    let key = unalias(&attr.to_ascii_lowercase());
+    if key == "pre_blur" {
+        return Some((GAUSSIAN_BLUR, Form::Pre));
+    }
+    if let Some(&id) = REGISTRY.names.get(&key) {
+        // Post-only variations are registered under their `post_` name.
+        let form = if info(id).has(flag::POST_ONLY) {
+            Form::Post
+        } else {
+            Form::Regular
+        };
+        return Some((id, form));
+    }
+    for (prefix, form) in [("pre_", Form::Pre), ("post_", Form::Post)] {
+        if let Some(rest) = key.strip_prefix(prefix)
+            && let Some(&id) = REGISTRY.names.get(rest)
+        {
+            return Some((id, form));
+        }
+    }
+    None
+}
+
+/// The attribute name of a variation used in `form`.
+pub fn attr_name(id: VarId, form: Form) -> String {
+    let d = info(id);
+    if form == Form::Pre && id == GAUSSIAN_BLUR {
+        return "pre_blur".to_string();
+    }
+    if d.has(flag::POST_ONLY) {
+        return d.name.to_string();
+    }
+    format!("{}{}", form.prefix(), d.name)
+}
+
+/// The attribute name of parameter `k` of a variation used in `form`.
+pub fn param_attr_name(id: VarId, form: Form, k: usize) -> String {
+    let d = info(id);
+    if d.has(flag::POST_ONLY) {
+        return d.params[k].name.to_string();
+    }
+    format!("{}{}", form.prefix(), d.params[k].name)
+}
+
+/// The attribute name of text parameter `k` of a variation used in `form`.
+pub fn text_attr_name(id: VarId, form: Form, k: usize) -> String {
+    format!("{}{}", form.prefix(), info(id).texts[k].name)
+}
+
+/// If `attr` names a text parameter — `TEXT`, `pre_TEXT` or `post_TEXT` — the variation, form
+/// and text index (case-insensitive).
+pub fn text_of(attr: &str) -> Option<(VarId, Form, usize)> {
+    let key = attr.to_ascii_lowercase();
+    if let Some(&(id, k)) = REGISTRY.texts.get(&key) {
+        return Some((id, Form::Regular, k));
+    }
+    [("pre_", Form::Pre), ("post_", Form::Post)]
+        .into_iter()
+        .find_map(|(prefix, form)| {
+            let &(id, k) = REGISTRY.texts.get(key.strip_prefix(prefix)?)?;
+            Some((id, form, k))
+        })
+}
+
+/// Parameter names other programs write for a variation's parameters.
+const PARAM_ALIASES: &[(&str, &str)] = &[
+    // Apophysis 7X writes mobius's parameters without the variation prefix.
+    ("re_a", "mobius_re_a"),
+    ("im_a", "mobius_im_a"),
+    ("re_b", "mobius_re_b"),
+    ("im_b", "mobius_im_b"),
+    ("re_c", "mobius_re_c"),
+    ("im_c", "mobius_im_c"),
+    ("re_d", "mobius_re_d"),
+    ("im_d", "mobius_im_d"),
+    // JWildfire writes waves2_radial's parameters with a "w2r" infix.
+    ("waves2_radial_w2r_freqx", "waves2_radial_freqx"),
+    ("waves2_radial_w2r_scalex", "waves2_radial_scalex"),
+    ("waves2_radial_w2r_freqy", "waves2_radial_freqy"),
+    ("waves2_radial_w2r_scaley", "waves2_radial_scaley"),
+    ("waves2_radial_w2r_null", "waves2_radial_null"),
+    ("waves2_radial_w2r_distance", "waves2_radial_distance"),
+    // JWildfire 7 wrote the direct-colour variations' z settings the other way round.
+    ("dc_mandala_z_scale", "dc_mandala_scale_z"),
+    ("dc_mandala_z_offset", "dc_mandala_offset_z"),
+    ("dc_inversion_z_scale", "dc_inversion_scale_z"),
+    ("dc_inversion_z_offset", "dc_inversion_offset_z"),
+    ("dc_poincaredisc_z_scale", "dc_poincaredisc_scale_z"),
+    ("dc_poincaredisc_z_offset", "dc_poincaredisc_offset_z"),
+    ("dc_circuits_z_scale", "dc_circuits_scale_z"),
+    ("dc_circuits_z_offset", "dc_circuits_offset_z"),
+    ("dc_turbulence_z_scale", "dc_turbulence_scale_z"),
+    ("dc_turbulence_z_offset", "dc_turbulence_offset_z"),
+    ("dc_gabornoise_z_scale", "dc_gabornoise_scale_z"),
+    ("dc_gabornoise_z_offset", "dc_gabornoise_offset_z"),
+];
+
+/// Variation names other programs use for a variation of the registry (lower case), also as
+/// the prefix of its parameters.
+const NAME_ALIASES: &[(&str, &str)] = &[("flower_db", "flowerdb")];
+
+/// `key` (lower case) with an alias prefix replaced by the registry's name.
+fn unalias(key: &str) -> String {
+    for (alias, name) in NAME_ALIASES {
+        for prefix in ["", "pre_", "post_"] {
+            if let Some(rest) = key.strip_prefix(prefix).and_then(|k| k.strip_prefix(alias))
+                && (rest.is_empty() || rest.starts_with('_'))
+            {
+                return format!("{prefix}{name}{rest}");
+            }
+        }
+    }
+    key.to_string()
+}
+
+/// If `attr` names a parameter — `PARAM`, `pre_PARAM` or `post_PARAM` — the variation, form
+/// and parameter index (case-insensitive; known aliases accepted).
+pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
+    let key = unalias(&attr.to_ascii_lowercase());
+    let lookup = |k: &str| -> Option<(VarId, usize)> {
+        if let Some(&r) = REGISTRY.params.get(k) {
+            return Some(r);
+        }
+        let alias = PARAM_ALIASES.iter().find(|a| a.0 == k)?.1;
+        REGISTRY.params.get(alias).copied()
+    };
+    if let Some((id, k)) = lookup(&key) {
+        let form = if info(id).has(flag::POST_ONLY) {
+            Form::Post
+        } else {
+            Form::Regular
+        };
+        return Some((id, form, k));
+    }
+    for (prefix, form) in [("pre_", Form::Pre), ("post_", Form::Post)] {
+        if let Some(rest) = key.strip_prefix(prefix)
+            && let Some((id, k)) = lookup(rest)
+        {
+            if form == Form::Pre && id == GAUSSIAN_BLUR {
+                continue;
+            }
+            return Some((id, form, k));
+        }
+    }
+    None
+}
+
+/// Names of variations of other programs (JWildfire, Apophysis plugins) that ugnis does not
+/// render: an attribute with one of these names is an unsupported variation rather than some
+/// other program's setting.
+const FOREIGN_VARIATIONS: &[&str] = &[
+    "bwraps7",
+    "cross2",
+    "mandelbrot",
+    "oscope",
+    "pdj3d",
+    "perspective2",
+    "wedge_julia_3D",
+    "whorl3D",
+];
+
+/// True for names (optionally `pre_`/`post_`) of variations of other programs that ugnis does not
+/// know: attributes that describe a variation weight rather than a setting.
+pub fn is_foreign_variation_name(name: &str) -> bool {
+    if parse_name(name).is_some() {
+        return false;
+    }
+    let key = name.to_ascii_lowercase();
+    let base = key
+        .strip_prefix("pre_")
+        .or_else(|| key.strip_prefix("post_"))
+        .unwrap_or(&key);
+    FOREIGN_VARIATIONS
+        .iter()
+        .any(|f| f.eq_ignore_ascii_case(&key) || f.eq_ignore_ascii_case(base))
+}
+
+/// The flam3 index (0–98) of a variation form, for flam3's numeric `var` lists.
+pub fn from_flam3_index(i: usize) -> Option<(VarId, Form)> {
+    match i {
+        67 => Some((GAUSSIAN_BLUR, Form::Pre)),
+        0..=98 => Some((i as VarId, Form::Regular)),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Assign, GAUSSIAN_BLUR};
+    use super::*;
+
+    /// The `pre_`/`post_` forms that add their output to the point in Fractorium (the blurs
+    /// and the random shapes); every other form replaces it. flam3's `pre_blur` adds too.
+    #[test]
+    fn blur_forms_add_to_the_point() {
+        let sum = [
+            "arch",
+            "blur",
+            "blur3D",
+            "blur_circle",
+            "blur_heart",
+            "blur_square",
+            "circleblur",
+            "CircleRand",
+            "concentric",
+            "dc_cube",
+            "gaussian_blur",
+            "line",
+            "Lissajous",
+            "pie",
+            "pie3D",
+            "randCubes",
+            "sineblur",
+            "sphereblur",
+            "Spirograph",
+            "square",
+            "square3D",
+            "starblur",
+            "SuperShape3D",
+            "waffle",
+            "zblur",
+            "ztranslate",
+        ];
+        for name in sum {
+            let (id, form) = parse_name(&format!("pre_{name}")).expect(name);
+            assert_eq!(form, Form::Pre);
+            assert_eq!(info(id).assign, Assign::Sum, "{name}");
+        }
+        for name in ["linear", "spherical", "julia", "stripes", "hexes"] {
+            let (id, _) = parse_name(&format!("pre_{name}")).expect(name);
+            assert_eq!(info(id).assign, Assign::Set, "{name}");
+        }
+        let (id, form) = parse_name("pre_blur").unwrap();
+        assert_eq!(
+            (id, form, info(id).assign),
+            (GAUSSIAN_BLUR, Form::Pre, Assign::Sum)
+        );
+    }
+
+    /// The list of foreign names holds only names the registry does not know (an implemented
+    /// variation is recognised by the registry, so its entry would be dead).
+    #[test]
+    fn foreign_names_are_unknown_to_the_registry() {
+        for name in FOREIGN_VARIATIONS {
+            assert!(parse_name(name).is_none(), "{name} is implemented");
+            assert!(is_foreign_variation_name(name));
+            assert!(is_foreign_variation_name(&format!("pre_{name}")));
+        }
+        for known in ["linear3D", "post_mirror_wf", "rose_wf", "julia3Dz"] {
+            assert!(!is_foreign_variation_name(known), "{known}");
+        }
+        assert!(!is_foreign_variation_name("weight"));
+    }
+}

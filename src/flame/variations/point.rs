@@ -1,0 +1,118 @@
+//! What a formula reads and writes at one point: the input point with the quantities computed
+//! once for the xform ([`VarIn`], which ones a formula needs being the bits of [`need`]), the
+//! xform's running output ([`Acc`]), and the same for a batch of points as parallel arrays
+//! ([`SoaIn`], [`SoaAcc`]).
+
+/// Which per-point quantities a formula reads (bits of [`VarDef::needs`]).
+pub mod need {
+    /// `sumsq` = x² + y².
+    pub const SUMSQ: u8 = 1;
+    /// `sqrt` = r.
+    pub const SQRT: u8 = 2;
+    /// `ux` = x/r and `uy` = y/r.
+    pub const ANGLES: u8 = 4;
+    /// `atan_xy` = atan2(x, y).
+    pub const ATAN_XY: u8 = 8;
+    /// `atan_yx` = atan2(y, x).
+    pub const ATAN_YX: u8 = 16;
+    pub const ALL: u8 = 31;
+}
+
+/// What a variation reads about its input point.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct VarIn {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    /// x² + y².
+    pub sumsq: f64,
+    /// r = √(x² + y²).
+    pub sqrt: f64,
+    /// x / r (r replaced by `f64::EPSILON` when 0).
+    pub ux: f64,
+    /// y / r (r replaced by `f64::EPSILON` when 0).
+    pub uy: f64,
+    /// atan2(x, y).
+    pub atan_xy: f64,
+    /// atan2(y, x).
+    pub atan_yx: f64,
+    /// The palette coordinate after the xform's colour blend.
+    pub color: f64,
+}
+
+impl VarIn {
+    /// The input point with the quantities of `needs` computed. With `poison`, quantities not
+    /// asked for are NaN (tests use it to catch formulas that read what they did not declare);
+    /// otherwise they are 0.
+    #[inline(always)]
+    pub fn new(x: f64, y: f64, z: f64, color: f64, needs: u8, poison: bool) -> VarIn {
+        let fill = if poison { f64::NAN } else { 0.0 };
+        let mut t = VarIn {
+            x,
+            y,
+            z,
+            sumsq: fill,
+            sqrt: fill,
+            ux: fill,
+            uy: fill,
+            atan_xy: fill,
+            atan_yx: fill,
+            color,
+        };
+        if needs & (need::SUMSQ | need::SQRT | need::ANGLES) != 0 {
+            t.sumsq = x * x + y * y;
+        }
+        if needs & (need::SQRT | need::ANGLES) != 0 {
+            t.sqrt = (x * x + y * y).sqrt();
+        }
+        if needs & need::ANGLES != 0 {
+            let r = (x * x + y * y).sqrt();
+            let r = if r == 0.0 { f64::EPSILON } else { r };
+            t.ux = x / r;
+            t.uy = y / r;
+        }
+        if needs & need::ATAN_XY != 0 {
+            t.atan_xy = x.atan2(y);
+        }
+        if needs & need::ATAN_YX != 0 {
+            t.atan_yx = y.atan2(x);
+        }
+        t
+    }
+}
+
+/// The xform's running output: the sum of its regular variations so far (or, for `pre_` and
+/// `post_` forms, the point being transformed) and the colour coordinate.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Acc {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub color: f64,
+    /// The sample is not drawn (set by the [`flag::HIDES`] variations).
+    pub hide: bool,
+}
+
+/// Per-point quantities of a batch of points, as parallel arrays of one length.
+pub struct SoaIn<'a> {
+    pub x: &'a [f64],
+    pub y: &'a [f64],
+    pub z: &'a [f64],
+    pub sumsq: &'a [f64],
+    pub sqrt: &'a [f64],
+    pub ux: &'a [f64],
+    pub uy: &'a [f64],
+    pub atan_xy: &'a [f64],
+    pub atan_yx: &'a [f64],
+    pub color: &'a [f64],
+}
+
+/// Running outputs of a batch of points.
+pub struct SoaAcc<'a> {
+    pub x: &'a mut [f64],
+    pub y: &'a mut [f64],
+    pub z: &'a mut [f64],
+    pub color: &'a mut [f64],
+    /// Set where a variation hides the point (only formulas called point by point hide).
+    pub hide: &'a mut [bool],
+}

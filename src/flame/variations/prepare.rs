@@ -1,0 +1,125 @@
+//! Preparing a variation for evaluation — its stored parameters normalised, its shared data
+//! fetched, its derived values computed — and evaluating one variation at one point, as an
+//! xform with only that variation would.
+
+use super::def::{Form, Prepared, VarState, flag};
+use super::point::{Acc, VarIn};
+use super::registry::info;
+use super::{V3, VarId, shared};
+use crate::flame::affine::Affine;
+use crate::flame::rng::FastRng;
+
+impl Prepared {
+    /// Prepare variation `id` used in `form` with weight `w` and stored parameters `params`
+    /// (missing ones take their defaults).
+    pub fn new(id: VarId, form: Form, w: f64, params: &[f64], aff: Affine, compat: bool) -> Self {
+        Self::with_texts(id, form, w, params, &[], aff, compat)
+    }
+
+    /// [`Prepared::new`] with stored text parameters `texts` (missing ones take their
+    /// defaults).
+    pub fn with_texts(
+        id: VarId,
+        form: Form,
+        w: f64,
+        params: &[f64],
+        texts: &[String],
+        aff: Affine,
+        compat: bool,
+    ) -> Self {
+        let def = info(id);
+        let texts = def
+            .texts
+            .iter()
+            .enumerate()
+            .map(|(i, d)| d.normalise(texts.get(i).map_or(d.default, |t| t.as_str())))
+            .collect();
+        let flam3 = def.has(flag::FLAM3);
+        let p = def
+            .params
+            .iter()
+            .enumerate()
+            .map(|(i, d)| {
+                let v = params.get(i).copied().unwrap_or(d.default);
+                if flam3 { v } else { d.normalise(v) }
+            })
+            .collect();
+        let mut v = Prepared {
+            id,
+            def,
+            form,
+            w,
+            p,
+            derived_at: def.params.len(),
+            aff,
+            compat,
+            state: VarState::default(),
+            data: None,
+            texts,
+        };
+        if let Some(sd) = &def.shared {
+            v.data = Some(shared::data(id, sd, &v.p, &v.texts));
+        }
+        if let Some(f) = def.prepare {
+            f(&mut v);
+        }
+        v
+    }
+}
+
+/// Evaluate one variation at one point, as an xform would with only this variation: the running
+/// output starts at `acc` (zero for a fresh xform). Returns the running output after the
+/// variation (for `pre_` forms, the new transformed point in x, y, z and the colour).
+#[allow(clippy::too_many_arguments)]
+pub fn eval_point(
+    id: VarId,
+    form: Form,
+    weight: f64,
+    params: &[f64],
+    aff: Affine,
+    compat: bool,
+    t: V3,
+    acc: Acc,
+    rng: &mut FastRng,
+) -> Acc {
+    let v = Prepared::new(id, form, weight, params, aff, compat);
+    eval_prepared(&v, t, acc, false, rng)
+}
+
+/// [`eval_point`] with a prepared variation (stateful variations keep their state between
+/// calls). With `poison`, quantities the variation did not declare are NaN.
+pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut FastRng) -> Acc {
+    let color = acc.color;
+    match v.form {
+        Form::Regular => {
+            let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
+            let o = v.eval(&tin, &mut acc, rng);
+            acc.x += o[0];
+            acc.y += o[1];
+            acc.z += o[2];
+            acc
+        }
+        Form::Pre => {
+            let mut tr = t;
+            let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
+            let o = v.eval(&tin, &mut acc, rng);
+            v.assign(&mut tr, o);
+            Acc {
+                x: tr[0],
+                y: tr[1],
+                z: tr[2],
+                color: acc.color,
+                hide: acc.hide,
+            }
+        }
+        Form::Post => {
+            acc.x = t[0];
+            acc.y = t[1];
+            acc.z = t[2];
+            let tin = VarIn::new(t[0], t[1], t[2], color, v.def.needs, poison);
+            let o = v.eval(&tin, &mut acc, rng);
+            v.assign_acc(&mut acc, o);
+            acc
+        }
+    }
+}
