@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Side-by-side speed of ugnis's escape-time renderer and fractalnow (issue #6).
+"""Side-by-side speed of ugnis's escape-time renderer and fractalnow.
 
 Renders the same Mandelbrot view (centre -0.7+0i, width 3, 1920x1080, max-iter 1000, 2 threads)
 with fractalnow in exact mode (-i 1: every pixel computed), with fractalnow's default

@@ -1,4 +1,4 @@
-//! Explore speed (issue #14), with criterion:
+//! Explore speed, with criterion:
 //! - the Koch curve of order 10 (1,048,576 segments): the derivation walked without building
 //!   the string, and drawn into a 1024×1024 picture (target < 1 s);
 //! - box counting of 10⁷ chaos-game points on 2 threads (target ≤ 1 s): the Sierpinski

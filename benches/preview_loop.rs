@@ -1,4 +1,4 @@
-//! The editor's preview loop, measured the way the GUI drives it (issue #4):
+//! The editor's preview loop, measured the way the GUI drives it:
 //!
 //! * **edit → first preview**: a changed flame is submitted to the [`PreviewWorker`] while it is
 //!   busy refining the previous one; the time until the first frame of the new flame arrives
@@ -142,7 +142,7 @@ fn main() {
          worst drag rate {worst_fps:.1} fps (target ≥ 20): {}",
         if ok { "OK" } else { "MISSED" }
     );
-    // Issue #16's tighter goals, reported (not enforced: this machine's timing noise is ±10 %).
+    // The tighter goals (30 ms, 30 fps), reported, not enforced (timing noise here is ±10 %).
     println!(
         "speed goals ≤ 30 ms / ≥ 30 fps: edit→first {}, drag {}",
         if worst_first <= 30.0 {

@@ -1,4 +1,4 @@
-//! Random batch speed (issue #5): `ugnis random --count 100` with 128×128 thumbnails on 2
+//! Random batch speed: `ugnis random --count 100` with 128×128 thumbnails on 2
 //! threads, as the user runs it (the release binary). Target: ≤ 20 s per batch.
 //!
 //! Run: `cargo bench --bench random_batch` (exits 1 if the target is missed).

@@ -1,4 +1,4 @@
-//! Scene speed (issue #7): the textured (flame), bump-mapped, Phong-lit reference jug at
+//! Scene speed: the textured (flame), bump-mapped, Phong-lit reference jug at
 //! 1024×768 on 2 threads. Textures are made when the scene loads; this times the render
 //! (tessellation, rasterising, shading). Target ≤ 200 ms.
 //!

@@ -1,4 +1,4 @@
-//! Ray-casting speed (issue #14): the ray-cast jug scene (jug, floor, fBm texture with bumps,
+//! Ray-casting speed: the ray-cast jug scene (jug, floor, fBm texture with bumps,
 //! one shadow ray per lit pixel) at 1024×768 on 2 threads, target ≤ 2 s; for comparison the
 //! same scene through the z-buffer, the quaternion Julia example and the step-3 Menger sponge
 //! at 640×480. Textures are made when the scene loads; the timings are the renders.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Two threads against one (issue #16's target: ≥ 1.85×), measured so that a noisy machine
+# Two threads against one (target: ≥ 1.85×), measured so that a noisy machine
 # can be told apart from a serial part of the program:
 #   - wall ratio: best one-thread wall time / best two-thread wall time, over N runs that
 #     alternate (best of N filters out the runs the machine slowed down);

@@ -79,7 +79,7 @@ const fn item(
     }
 }
 
-/// The menus, in order (the thesis program's, with Apophysis conventions where it is silent).
+/// The menus, in order (Fraktalai's, with Apophysis conventions where it is silent).
 pub const MENUS: [&str; 5] = ["File", "Edit", "View", "Tools", "Help"];
 
 /// The menu entries.
@@ -190,7 +190,7 @@ pub const MENU: &[MenuItem] = &[
 pub const EXTRA_SHORTCUTS: &[(KeyboardShortcut, Action)] =
     &[(KeyboardShortcut::new(CMD_SHIFT, Key::Z), Action::Redo)];
 
-/// The Variations submenu: "Random" and the seven thesis variations.
+/// The Variations submenu: "Random" and the seven variations of Fraktalai.
 pub const VARIATION_MENU: [(&str, Option<VarId>); 8] = [
     ("Random", None),
     ("Linear", Some(variations::LINEAR)),

@@ -1,7 +1,8 @@
 //! The Options dialog's settings, persisted as TOML in the platform config directory
-//! (`$XDG_CONFIG_HOME/ugnis/options.toml`, `~/.config/ugnis/…`). The defaults are the thesis
-//! program's Options dialog (main density 15, gamma 2, brightness 4, contrast 1; preview
-//! density 5; animation density 1; 2–6 transforms; each of the seven variations 1/7).
+//! (`$XDG_CONFIG_HOME/ugnis/options.toml`, `~/.config/ugnis/…`). The defaults are those of
+//! the Options dialog of Fraktalai (Urbonavičius 2006): main density 15, gamma 2, brightness 4,
+//! contrast 1; preview density 5; animation density 1; 2–6 transforms; each of the seven
+//! variations 1/7.
 
 use std::path::PathBuf;
 
@@ -150,7 +151,7 @@ impl Options {
     }
 
     /// How random flames choose variations at start: the filter when it is in use, otherwise
-    /// one of the seven thesis variations per transform.
+    /// one of the seven variations of Fraktalai per transform.
     pub fn variation_mode(&self) -> VariationMode {
         if self.use_variation_filter {
             VariationMode::FromList(self.filter_list())

@@ -1,7 +1,7 @@
 //! `ugnis animate`: the frames of an animation as PNGs, and a video of them. What moves is
 //! decided by the file (`--mode auto`): flames carrying `time` attributes are a flam3 sequence
 //! (frame t is time t, motion-blurred as flam3-animate renders it); a flame with keyframes
-//! plays them; otherwise the thesis rotation. `--mode loop` makes flam3-genome's loops and
+//! plays them; otherwise Fraktalai's rotation. `--mode loop` makes flam3-genome's loops and
 //! transitions through the file's flames; `--mode interpolate` plain in-betweens.
 
 use std::path::{Path, PathBuf};
@@ -23,7 +23,7 @@ pub enum Mode {
     Sequence,
     /// The flame's keyframes
     Keys,
-    /// Every triangle turns about its centre, 2° a frame, in 180° turns (the thesis animation)
+    /// Every triangle turns about its centre, 2° a frame, in 180° turns (Fraktalai's animation)
     Rotate,
     /// In-betweens through the flames of the file in order (or --from → --to)
     Interpolate,

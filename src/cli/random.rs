@@ -29,7 +29,7 @@ pub struct RandomArgs {
     /// Most transforms per flame
     #[arg(long, default_value_t = 6)]
     pub max_xforms: usize,
-    /// A variation name for every transform, "random" (one of the seven thesis variations per
+    /// A variation name for every transform, "random" (one of the seven variations of Fraktalai per
     /// transform) or "mix" (2–3 of all variations per transform)
     #[arg(long, default_value = "random")]
     pub variation: String,

@@ -1,5 +1,5 @@
-//! Warped Julia textures (Borowicz): texture coordinates, the Möbius
-//! (all-pass) warp g(p) = (p − ᾱ)/(1 − αp) and fBm turbulence.
+//! Warped Julia textures (after Borowicz's paper on warped Julia sets for sky textures): texture
+//! coordinates, the Möbius (all-pass) warp g(p) = (p − ᾱ)/(1 − αp) and fBm turbulence.
 
 use super::complex::C;
 use crate::noise::{Fbm, FbmNoise};
@@ -132,7 +132,7 @@ impl Warp {
         }
     }
 
-    /// ẑ₀ = g(p) + λ·W(p) (eq. 13).
+    /// ẑ₀ = g(p) + λ·W(p) (Borowicz, eq. 13).
     pub fn start(&self, p: C) -> C {
         let g = self.g(p);
         match &self.noise {

@@ -1,6 +1,6 @@
 //! Affine maps of the plane, as flame xforms use them.
 
-/// An affine map in the Fractint/thesis letters: x' = a·x + b·y + e, y' = c·x + d·y + f.
+/// An affine map in the Fractint/Fraktalai letters: x' = a·x + b·y + e, y' = c·x + d·y + f.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Affine {
     pub a: f64,

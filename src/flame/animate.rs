@@ -1,4 +1,4 @@
-//! Animation in the editor: the thesis program's rotating triangles, and in-betweens of two or
+//! Animation in the editor: Fraktalai's rotating triangles, and in-betweens of two or
 //! more flames (flam3's interpolation).
 
 use crate::flame::interpolate::interpolate_at;
@@ -25,7 +25,7 @@ pub fn rotate_about_centroid(m: &Affine, angle: f64) -> Affine {
     Affine::from_triangle(r)
 }
 
-/// The thesis animation: every standard xform turns about its centroid, 2° a frame, in
+/// Fraktalai's animation: every standard xform turns about its centroid, 2° a frame, in
 /// 180° turns whose direction each xform draws at random at the start of every turn.
 #[derive(Clone, Debug)]
 pub struct RotationAnimation {

@@ -1,4 +1,4 @@
-//! Automatic framing: trimmed bounds of a short orbit (the thesis `GetBounds`
+//! Automatic framing: trimmed bounds of a short orbit (Fraktalai's `GetBounds`
 //! with its defects corrected).
 
 use crate::flame::chaos::{Chaos, FUSE};
@@ -18,7 +18,7 @@ pub struct Framing {
     pub y_bounds: [f64; 2],
 }
 
-/// Percentile bounds of one axis by the thesis bisection (11 halvings).
+/// Percentile bounds of one axis by Fraktalai's bisection (11 halvings).
 pub fn trimmed_bounds(values: &[f64]) -> [f64; 2] {
     let n = values.len();
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);

@@ -748,7 +748,7 @@ mod tests {
 
     #[test]
     fn determinant_rule_oracles() {
-        // Thesis example (a).
+        // Example (a) of Urbonavičius (2006).
         let a = [
             Affine::new(0.48, 0.01, -0.01, 0.47, 0.80, -0.34),
             Affine::new(0.47, 0.01, -0.01, 0.47, -1.01, -0.28),

@@ -1,4 +1,4 @@
-//! Random flames: the thesis program's RandomIFS with flam3-genome's quality
+//! Random flames: Fraktalai's RandomIFS with flam3-genome's quality
 //! check, reproducible from a seed.
 
 use crate::flame::chaos::{BAD_LIMIT, Chaos, FUSE};
@@ -15,7 +15,7 @@ use crate::gradient::Gradient;
 pub enum VariationMode {
     /// One variation, weight 1, for every xform (the Variations menu choice).
     Single(VarId),
-    /// One of the seven thesis variations per xform, drawn with these probabilities.
+    /// One of the seven variations of Fraktalai per xform, drawn with these probabilities.
     Random([f64; 7]),
     /// A random mix of 2–3 variations per xform from the 99 (weights normalised to 1).
     Mix,

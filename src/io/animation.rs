@@ -1,6 +1,6 @@
 //! Rendering an animation to files, for the command line and the editor alike: the frames of a
 //! flam3 sequence (frame t is time t, motion-blurred as flam3-animate does), of a flame's
-//! keyframes, of the thesis rotation or of in-betweens through a file's flames — written as
+//! keyframes, of Fraktalai's rotation or of in-betweens through a file's flames — written as
 //! numbered PNGs, each saved atomically, and optionally encoded into a video as they come.
 //!
 //! A run that stops (cancelled, a full disk, a crash) leaves only whole frames; the next run
@@ -29,7 +29,7 @@ pub enum Source {
     Sequence(Vec<Flame>),
     /// One flame with keyframes; frame k applies its curves at k.
     Keys(Flame),
-    /// The thesis rotation: every triangle turns about its centre, 2° a frame.
+    /// Fraktalai's rotation: every triangle turns about its centre, 2° a frame.
     Rotation { flame: Flame, seed: u64 },
     /// In-betweens through the flames in order over `frames` frames (flam3's blend).
     Interpolation { flames: Vec<Flame>, frames: u64 },

@@ -1,4 +1,4 @@
-//! 24-bit BMP export, the thesis program's image format.
+//! 24-bit BMP export, Fraktalai's image format.
 
 use std::path::Path;
 

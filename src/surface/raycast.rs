@@ -1,4 +1,4 @@
-//! The ray-casting renderer (the optional second hidden-surface method of the Köse thesis,
+//! The ray-casting renderer (the optional second hidden-surface method of Köse's 1990 thesis,
 //! after Whitted 1980 and Kajiya 1982): one ray per pixel from the eye (or parallel rays for
 //! parallel projections), the nearest hit along the ray is the visible one — the same as the
 //! z-buffer's "largest z" — and a shadow ray towards every light.

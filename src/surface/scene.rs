@@ -90,7 +90,7 @@ pub enum Projection {
         phi: f64,
         theta: f64,
     },
-    /// A left/right perspective pair side by side (thesis matrices A and B).
+    /// A left/right perspective pair side by side (Köse's 1990 matrices A and B).
     Stereo,
 }
 

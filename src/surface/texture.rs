@@ -326,7 +326,7 @@ pub fn grid(w: usize, h: usize, n: usize, m: usize, line: Vec3, back: Vec3) -> T
     Texture::from_texels(w, h, tex)
 }
 
-/// The pyramidal filters of thesis table 6.1: 3×3 and 7×7 weights (sum 16 and 256).
+/// The pyramidal filters of Köse's (1990) table 6.1: 3×3 and 7×7 weights (sum 16 and 256).
 pub fn pyramid_filter(size: usize) -> Vec<Vec<u32>> {
     let row: Vec<u32> = match size {
         3 => vec![1, 2, 1],

@@ -1,9 +1,9 @@
-//! 4×4 homogeneous transforms in the thesis's row-vector convention:
+//! 4×4 homogeneous transforms in Köse's (1990) row-vector convention:
 //! [X Y Z H] = [x y z 1]·T; "first T₁, then T₂" is T₁·T₂.
 
 use glam::{DVec3, DVec4};
 
-/// A 4×4 matrix, rows as in the thesis tables.
+/// A 4×4 matrix, rows as in Köse's (1990) tables.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transform(pub [[f64; 4]; 4]);
 
@@ -174,7 +174,7 @@ impl Transform {
         ])
     }
 
-    /// Rotation by θ about the axis n through the origin (thesis 3.11; n is normalised).
+    /// Rotation by θ about the axis n through the origin (Köse 1990, eq. 3.11; n is normalised).
     pub fn rot_axis(n: DVec3, th: f64) -> Transform {
         let n = n.normalize();
         let (s, c) = th.sin_cos();
@@ -210,7 +210,7 @@ impl Transform {
             .then(&Transform::translate(p.x, p.y, p.z))
     }
 
-    /// Single-point perspective onto z = 0 (thesis 3.16): x* = x/(rz + 1).
+    /// Single-point perspective onto z = 0 (Köse 1990, eq. 3.16): x* = x/(rz + 1).
     pub fn perspective(r: f64) -> Transform {
         Transform([
             [1.0, 0.0, 0.0, 0.0],
@@ -231,7 +231,7 @@ impl Transform {
         ])
     }
 
-    /// Orthographic projection onto z = n (thesis 3.17).
+    /// Orthographic projection onto z = n (Köse 1990, eq. 3.17).
     pub fn orthographic(n: f64) -> Transform {
         Transform([
             [1.0, 0.0, 0.0, 0.0],
@@ -247,7 +247,7 @@ impl Transform {
         Transform::rot_y(phi).then(&Transform::rot_x(theta))
     }
 
-    /// Stereo pair (thesis, corrected): `left` is matrix A (eye at x = −k/20).
+    /// Stereo pair (Köse 1990, corrected): `left` is matrix A (eye at x = −k/20).
     pub fn stereo(k: f64, left: bool) -> Transform {
         let dx = if left { k / 20.0 } else { -k / 20.0 };
         Transform([

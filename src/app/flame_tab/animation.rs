@@ -1,4 +1,4 @@
-//! Moving pictures in the preview: the thesis program's animation (every triangle turns about
+//! Moving pictures in the preview: Fraktalai's animation (every triangle turns about
 //! its centroid, one undo step for the whole run) and morphs (flam3-style in-betweens from the
 //! current flame to the next one of the file, played forth and back without editing).
 

@@ -20,7 +20,7 @@ pub enum EditorAction {
 }
 
 /// Delete the selected xform, refused below 2 (a flame needs two maps to be more than a single
-/// curve; the thesis program's rule). Returns an explanation when refused.
+/// curve; Fraktalai's rule). Returns an explanation when refused.
 pub fn delete_selected(doc: &mut Document, st: &mut EditorState) -> Result<(), String> {
     match st.selected {
         Selected::Final => {

@@ -83,7 +83,7 @@ pub(super) fn formula(
             ((x - y) * (x + y) * r, 2.0 * x * y * r)
         }
         POLAR => {
-            // Guard of the thesis program kept by ugnis: θ = 0 at the origin.
+            // Guard of Fraktalai kept by ugnis: θ = 0 at the origin.
             let a = if x.abs() <= EPS && y.abs() <= EPS {
                 0.0
             } else {

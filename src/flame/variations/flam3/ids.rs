@@ -101,7 +101,7 @@ pub const AUGER: u16 = 96;
 pub const FLUX: u16 = 97;
 pub const MOBIUS: u16 = 98;
 
-/// The seven variations of the thesis program's menu, in menu order.
+/// The seven variations of Fraktalai's menu, in menu order.
 pub const THESIS_SEVEN: [u16; 7] = [LINEAR, SINUSOIDAL, SPHERICAL, SWIRL, HORSESHOE, POLAR, BENT];
 
 /// Number of variations in flam3's list.
