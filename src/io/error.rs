@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use crate::explore::ExploreError;
-use crate::io::ifs::NAME_LEN;
+use crate::io::ifs::IfsWriteError;
 
 /// Why a file could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -59,29 +59,6 @@ pub enum WriteError {
         #[source]
         source: std::io::Error,
     },
-}
-
-/// Why flames or entries cannot be written as a Fractint `.ifs` file.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum IfsWriteError {
-    /// Names are one word without Fractint's reserved characters.
-    #[error("'{0}' cannot be an .ifs entry name (no spaces or ( ) {{ }} ;)")]
-    EntryName(String),
-    /// Fractint compares names by their first [`NAME_LEN`] characters, ignoring case.
-    #[error(
-        "entry names '{first}' and '{second}' are the same for Fractint (first {NAME_LEN} characters, ignoring case)"
-    )]
-    SameName { first: String, second: String },
-    #[error("the flame's weights sum to 0")]
-    ZeroWeights,
-    /// An xform (numbered from 1) with a variation other than linear.
-    #[error("xform {xform} uses variation '{variation}'; only linear flames can be saved as .ifs")]
-    NotLinear { xform: usize, variation: String },
-    /// An xform (numbered from 1) with xaos.
-    #[error("xform {0} uses xaos; .ifs files have no xaos")]
-    Xaos(usize),
-    #[error("the flame has a final xform; .ifs files have none")]
-    FinalXform,
 }
 
 /// Why L-systems cannot be written as a Fractint `.l` file.

@@ -7,7 +7,6 @@ use crate::explore::ifs::linear_flame;
 use crate::flame::model::{Affine, Flame, Ifs3d, NewFlame, Xform};
 use crate::flame::variations;
 use crate::io::diag::fmt_num;
-use crate::io::error::IfsWriteError;
 use crate::io::fractint_text;
 
 mod read;
@@ -22,6 +21,29 @@ pub const MAX_ROWS: usize = 1000;
 pub const MAX_ENTRIES: usize = 10_000;
 /// Fractint compares only this many characters of a name.
 pub const NAME_LEN: usize = 18;
+
+/// Why flames or entries cannot be written as a Fractint `.ifs` file.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum IfsWriteError {
+    /// Names are one word without Fractint's reserved characters.
+    #[error("'{0}' cannot be an .ifs entry name (no spaces or ( ) {{ }} ;)")]
+    EntryName(String),
+    /// Fractint compares names by their first [`NAME_LEN`] characters, ignoring case.
+    #[error(
+        "entry names '{first}' and '{second}' are the same for Fractint (first {NAME_LEN} characters, ignoring case)"
+    )]
+    SameName { first: String, second: String },
+    #[error("the flame's weights sum to 0")]
+    ZeroWeights,
+    /// An xform (numbered from 1) with a variation other than linear.
+    #[error("xform {xform} uses variation '{variation}'; only linear flames can be saved as .ifs")]
+    NotLinear { xform: usize, variation: String },
+    /// An xform (numbered from 1) with xaos.
+    #[error("xform {0} uses xaos; .ifs files have no xaos")]
+    Xaos(usize),
+    #[error("the flame has a final xform; .ifs files have none")]
+    FinalXform,
+}
 
 /// One entry of an `.ifs` file.
 #[derive(Clone, Debug, PartialEq)]
