@@ -46,22 +46,7 @@ impl Geometry {
         }
         let bw = os * w + 2 * gutter;
         let bh = os * h + 2 * gutter;
-        let ppu = flame.ppu();
-        let k = os as f64 * ppu;
-        let th = flame.rotate.to_radians();
-        let (s, c) = th.sin_cos();
-        let [cx, cy] = flame.center;
-        // bx = k·(cos θ·(x − cx) − sin θ·(y − cy)) + os·W/2 + g, by likewise.
-        let ox = (os * w) as f64 / 2.0 + gutter as f64;
-        let oy = (os * h) as f64 / 2.0 + gutter as f64;
-        let bucket_from_world = Affine {
-            a: k * c,
-            b: -k * s,
-            c: k * s,
-            d: k * c,
-            e: ox - k * (c * cx - s * cy),
-            f: oy - k * (s * cx + c * cy),
-        };
+        let bucket_from_world = bucket_from_world(flame, os, w, h, gutter);
         Geometry {
             width: w,
             height: h,
@@ -75,6 +60,22 @@ impl Geometry {
             bucket_from_world,
             filter,
             de,
+        }
+    }
+
+    /// The same bucket grid (size, supersampling, gutter, filters, rows held) seen through
+    /// `flame`'s camera (centre, scale, zoom, rotation): how each sub-frame of a motion-blurred
+    /// frame draws into the frame's one histogram.
+    pub fn with_camera_of(&self, flame: &Flame) -> Geometry {
+        Geometry {
+            bucket_from_world: bucket_from_world(
+                flame,
+                self.os,
+                self.width,
+                self.height,
+                self.gutter,
+            ),
+            ..self.clone()
         }
     }
 
@@ -169,6 +170,28 @@ impl BucketMap {
                 .wrapping_add(ix as u32),
             inside,
         )
+    }
+}
+
+/// The map from world coordinates to the whole bucket grid of `os`·`w` by `os`·`h` buckets plus a
+/// `gutter` on every side, through `flame`'s camera: bx = k·(cos θ·(x − cx) − sin θ·(y − cy)) +
+/// os·W/2 + g (by likewise), k = os·ppu.
+fn bucket_from_world(flame: &Flame, os: usize, w: usize, h: usize, gutter: usize) -> Affine {
+    let ppu = flame.ppu();
+    let k = os as f64 * ppu;
+    let th = flame.rotate.to_radians();
+    let (s, c) = th.sin_cos();
+    let [cx, cy] = flame.center;
+    // bx = k·(cos θ·(x − cx) − sin θ·(y − cy)) + os·W/2 + g, by likewise.
+    let ox = (os * w) as f64 / 2.0 + gutter as f64;
+    let oy = (os * h) as f64 / 2.0 + gutter as f64;
+    Affine {
+        a: k * c,
+        b: -k * s,
+        c: k * s,
+        d: k * c,
+        e: ox - k * (c * cx - s * cy),
+        f: oy - k * (s * cx + c * cy),
     }
 }
 

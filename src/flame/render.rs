@@ -103,8 +103,6 @@ pub struct Renderer {
     geom: Geometry,
     /// Output rows this render develops (all, or the strip's).
     out_rows: std::ops::Range<usize>,
-    /// The histogram rows of a render in strips (`None`: all).
-    window: Option<std::ops::Range<usize>>,
     palette: PlotPalette,
     hists: Vec<Histogram>,
     /// Each worker's orbits, kept between passes.
@@ -149,14 +147,13 @@ struct SubFrameTools {
 }
 
 impl SubFrameTools {
-    fn new(m: &Motion, index: u32, window: Option<std::ops::Range<usize>>) -> SubFrameTools {
+    /// `frame` is the frame's own bucket grid: the sub-frame draws into it through its own
+    /// camera, as flam3 does (the grid, gutter and filters are the frame's).
+    fn new(m: &Motion, index: u32, frame: &Geometry) -> SubFrameTools {
         let (flame, weight) = &m.subframes[index as usize];
         // Checked when the render was prepared.
         let chaos = Chaos::new(flame).expect("sub-frame flames were validated");
-        let mut geom = Geometry::new(flame, None);
-        if let Some(rows) = window {
-            geom = geom.window(rows);
-        }
+        let geom = frame.with_camera_of(flame);
         let mut palette = PlotPalette::new(flame);
         let w = *weight as f32;
         for c in &mut palette.colors {
@@ -269,7 +266,6 @@ impl Renderer {
             ifs3d,
             geom,
             out_rows,
-            window: plan.strip.as_ref().map(|s| s.hist_rows.clone()),
             hists,
             lanes,
             logs,
@@ -492,7 +488,6 @@ impl Renderer {
         let threads = self.hists.len() as u64;
         let (chaos, geom, pal) = (&self.chaos, &self.geom, &self.palette);
         let motion = self.motion.as_deref();
-        let window = self.window.clone();
         let ifs3d = self.ifs3d.as_ref();
         let (seed, total, part) = (self.seed, self.total, self.part);
         let mut logs: Vec<Option<&mut Vec<Pending>>> = match &mut self.logs {
@@ -538,7 +533,7 @@ impl Renderer {
                         let (s, k) = m.batches[g as usize];
                         n = k as u64;
                         if tools.as_ref().is_none_or(|t| t.index != s) {
-                            let t = SubFrameTools::new(m, s, window.clone());
+                            let t = SubFrameTools::new(m, s, geom);
                             if tools.as_ref().is_none_or(|o| o.n_xforms != t.n_xforms) {
                                 lanes.forget_last_xforms();
                             }
