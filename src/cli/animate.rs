@@ -12,7 +12,9 @@ use clap::{Args, ValueEnum};
 use ugnis::flame::Flame;
 use ugnis::flame::loops::sequence;
 use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, short_num};
-use ugnis::io::animation::{AnimError, FrameSpec, Job, MAX_FRAMES, Source, frames_by_time};
+use ugnis::io::animation::{
+    AnimError, FrameSpec, Job, MAX_FRAMES, Source, adjuster, frames_by_time,
+};
 use ugnis::io::video::{VideoKind, VideoOptions};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -50,7 +52,8 @@ pub struct AnimateArgs {
     #[arg(long, default_value_t = 1.0, value_parser = super::finite)]
     pub step: f64,
     /// Output: a folder of PNG frames, or a video (.mp4, .webm, .mkv, .mov through ffmpeg;
-    /// .gif, .apng built in) whose frames are kept in NAME.frames/
+    /// .gif, .apng built in) whose frames are kept in NAME.frames/, or a flame file (.flam3,
+    /// .flame, .fla): the animation as a flam3 sequence, one flame per frame, not rendered
     #[arg(short, long)]
     pub output: PathBuf,
     #[arg(long, value_enum, default_value_t = Mode::Auto)]
@@ -109,6 +112,25 @@ pub struct AnimateArgs {
     /// flam3-palettes.xml for flames that use palette="N"
     #[arg(long)]
     pub palettes: Option<PathBuf>,
+}
+
+/// `-o seq.flam3`: the animation written as a flam3 sequence (one flame per frame) instead of
+/// rendered.
+fn export_sequence(a: &AnimateArgs, source: &Source, frames: &[FrameSpec]) -> Result<()> {
+    super::check_output(&a.output)?;
+    let flames = source.sequence_of(frames, &adjuster(a.size, a.quality));
+    let name = a
+        .output
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    ugnis::io::write_flames(&a.output, &name, &flames)
+        .with_context(|| format!("cannot write '{}'", a.output.display()))?;
+    eprintln!(
+        "{} flames written to '{}' (render them with flam3-animate, Fractorium or ugnis animate)",
+        flames.len(),
+        a.output.display()
+    );
+    Ok(())
 }
 
 /// `--frames`: a count or an inclusive range.
@@ -328,6 +350,12 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         }
         Mode::Auto => unreachable!("resolved above"),
     };
+    if matches!(
+        ugnis::io::kind_of(&a.output),
+        ugnis::io::FileKind::FlameXml | ugnis::io::FileKind::Fla
+    ) {
+        return export_sequence(&a, &source, &frames);
+    }
     let (dir, video) = outputs(&a.output)?;
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create '{}'", dir.display()))?;
     if let Some(first) = frames.first() {

@@ -158,6 +158,31 @@ impl Source {
     }
 }
 
+impl Source {
+    /// The animation as a flam3 sequence: one flame per frame, its `time` the frame's (or
+    /// the frame's index for rotations and in-betweens), carrying the temporal samples and
+    /// filter it is blurred with, without ugnis's keyframes — what flam3-animate, Fractorium and
+    /// older programs render as the same animation. `adjust` changes every flame (size,
+    /// quality).
+    pub fn sequence_of(
+        &self,
+        frames: &[FrameSpec],
+        adjust: &(dyn Fn(&mut Flame) + Sync),
+    ) -> Vec<Flame> {
+        let mut cursor = Cursor::default();
+        frames
+            .iter()
+            .map(|spec| {
+                let mut f = self.frame(spec.time, false, adjust, &mut cursor).develop;
+                f.anim.time = spec.time;
+                f.keys = Default::default();
+                f.name = spec.name.trim_end_matches(".png").to_string();
+                f
+            })
+            .collect()
+    }
+}
+
 /// What [`Source::frame`] keeps between frames.
 #[derive(Default)]
 pub struct Cursor {
@@ -250,17 +275,22 @@ fn png_size(path: &Path) -> Option<(u32, u32)> {
     Some((r.info().width, r.info().height))
 }
 
+/// The change a job makes to every flame: another size (keeping the framing) and quality.
+pub fn adjuster(size: Option<(u32, u32)>, quality: Option<f64>) -> impl Fn(&mut Flame) + Sync {
+    move |f: &mut Flame| {
+        if let Some((w, h)) = size {
+            f.resize_keep_framing(w, h);
+        }
+        if let Some(q) = quality {
+            f.quality = q;
+        }
+    }
+}
+
 impl Job {
     /// The flame adjustments of the job (size and quality).
-    fn adjust(&self) -> impl Fn(&mut Flame) + Sync + '_ {
-        move |f: &mut Flame| {
-            if let Some((w, h)) = self.size {
-                f.resize_keep_framing(w, h);
-            }
-            if let Some(q) = self.quality {
-                f.quality = q;
-            }
-        }
+    fn adjust(&self) -> impl Fn(&mut Flame) + Sync {
+        adjuster(self.size, self.quality)
     }
 
     /// Render every frame not yet on disk, then (or meanwhile) the video. `progress` is called
