@@ -118,7 +118,7 @@ fn keyed_flame(dir: &Path) -> std::path::PathBuf {
 }
 
 fn zoom_curve(f: &mut Flame, zoom: &Target) {
-    let c = f.keys.curve_mut(zoom.clone());
+    let c = f.keys.curve_mut(*zoom);
     c.insert(Key::new(0.0, 0.0)).unwrap();
     c.insert(Key::new(4.0, 1.0)).unwrap();
 }
