@@ -237,3 +237,42 @@ fn a_full_disk_mid_sequence_keeps_whole_frames_and_a_rerun_finishes() {
     assert_eq!(names(&out).len(), 6);
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// `--mode loop` through two flames: a loop of each and the transitions there and back, so the
+/// frame after the last is the first.
+#[test]
+fn a_loop_through_two_flames_comes_back_to_the_first() {
+    let dir = common::temp_dir("cli-anim-loop");
+    let out = dir.join("loop.flam3");
+    let pair = common::fixture("animation/pair.flam3");
+    let (code, err) = ugnis(&[
+        "animate",
+        pair.to_str().unwrap(),
+        "--mode",
+        "loop",
+        "--loop-frames",
+        "3",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let frames = read(&out);
+    let keys = read(&pair);
+    // Loop A (0–2), A → B (3–5), loop B (6–8), B → A (9–11); frame 12 would be frame 0.
+    assert_eq!(frames.len(), 12);
+    let coefs =
+        |f: &Flame| -> Vec<[f64; 6]> { f.xforms.iter().map(|x| x.coefs.to_coefs()).collect() };
+    let close = |a: &Flame, b: &Flame| {
+        coefs(a)
+            .iter()
+            .zip(coefs(b))
+            .all(|(p, q)| p.iter().zip(q).all(|(x, y)| (x - y).abs() < 1e-6))
+    };
+    assert!(close(&frames[0], &keys[0]));
+    assert!(close(&frames[6], &keys[1]));
+    assert!(
+        !close(&frames[11], &keys[0]),
+        "the last frame is one step before the first"
+    );
+    let _ = std::fs::remove_dir_all(dir);
+}

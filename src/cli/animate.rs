@@ -30,7 +30,7 @@ pub enum Mode {
     /// In-betweens through the flames of the file in order (or --from → --to)
     Interpolate,
     /// flam3-genome's sequence: each flame turns once (--turns) in --loop-frames frames, then
-    /// morphs into the next in as many; seamless
+    /// morphs into the next in as many, the last back into the first: a seamless loop
     Loop,
 }
 
@@ -288,7 +288,19 @@ pub fn run(a: AnimateArgs) -> Result<()> {
                 if flames.len() as u64 * 2 * a.loop_frames as u64 > MAX_FRAMES {
                     bail!("the loop would have more than {MAX_FRAMES} frames");
                 }
-                sequence(&flames, a.loop_frames, !a.no_loops, a.turns)
+                // Back to the first flame at the end, so that the frame after the last (not
+                // rendered: a sequence stops one time before its end) is the first.
+                let mut ring = flames.clone();
+                let n = ring.len();
+                if n > 1 {
+                    ring.push(ring[0].clone());
+                }
+                let mut cps = sequence(&ring, a.loop_frames, !a.no_loops, a.turns);
+                if n > 1 && !a.no_loops {
+                    // Not the first flame's loop again: its first frame ends the ring.
+                    cps.truncate(2 * n * a.loop_frames + 1);
+                }
+                cps
             } else {
                 flames
             };
