@@ -45,7 +45,11 @@ fn value(f: &Flame, base: &Flame, scope: &str, name: &str, jwf: f64) -> Option<f
                 let mut turned = base.palette.colors.clone();
                 let n = turned.len();
                 turned.rotate_right(jwf as usize % n);
-                return Some(if turned == f.palette.colors { jwf } else { f64::NAN });
+                return Some(if turned == f.palette.colors {
+                    jwf
+                } else {
+                    f64::NAN
+                });
             }
             _ => panic!("unknown flame setting {name}"),
         });

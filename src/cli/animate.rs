@@ -15,6 +15,8 @@ use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, RenderOptions, short_num};
 use ugnis::io::animation::{AnimError, FrameSpec, Job, MAX_FRAMES, Source, frames_by_time};
 use ugnis::io::video::{VideoKind, VideoOptions};
 
+use super::animate_sound::{self, SoundArgs};
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Mode {
     /// A sequence if the flames carry times, keyframes if the flame has them, else rotate
@@ -109,6 +111,8 @@ pub struct AnimateArgs {
     /// flam3-palettes.xml for flames that use palette="N"
     #[arg(long)]
     pub palettes: Option<PathBuf>,
+    #[command(flatten)]
+    pub sound: SoundArgs,
 }
 
 /// `--frames`: a count or an inclusive range.
@@ -258,8 +262,17 @@ pub fn run(a: AnimateArgs) -> Result<()> {
             f.anim.temporal_samples = n;
         }
     }
-    let picked = super::render::select(flames.clone(), a.index, a.name.as_deref(), &a.input)?;
-    let mode = resolve_mode(a.mode, &flames, &picked);
+    let mut picked = super::render::select(flames.clone(), a.index, a.name.as_deref(), &a.input)?;
+    if a.sound.sound.is_some() {
+        if !matches!(a.mode, Mode::Auto | Mode::Keys) {
+            bail!("--sound makes keyframes: use it with --mode keys (or auto)");
+        }
+        animate_sound::drive(&a.sound, &mut picked, a.fps, &a.input)?;
+    }
+    let mode = match a.sound.sound {
+        Some(_) => Mode::Keys,
+        None => resolve_mode(a.mode, &flames, &picked),
+    };
     let (source, frames) = match mode {
         Mode::Sequence | Mode::Loop => {
             let cps = if mode == Mode::Loop {
@@ -340,6 +353,7 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         Source::Keys(f) => f.keys.fps,
         _ => 25.0,
     });
+    let first_time = frames.first().map_or(0.0, |f| f.time);
     let job = Job {
         source,
         frames,
@@ -349,7 +363,12 @@ pub fn run(a: AnimateArgs) -> Result<()> {
                 p,
                 VideoOptions {
                     fps,
-                    audio: a.audio.clone(),
+                    audio: animate_sound::audio(&a.sound, &a.audio),
+                    // A sound-driven animation from its middle: the sound from there too.
+                    audio_start: match (&a.audio, &a.sound.sound, first_time) {
+                        (None, Some(_), t) if t > 0.0 => t / fps,
+                        _ => 0.0,
+                    },
                     crf: a.crf,
                     ..VideoOptions::default()
                 },

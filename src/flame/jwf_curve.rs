@@ -64,7 +64,10 @@ fn round_half_away(v: f64) -> f64 {
 
 /// Samples per span for points at frames `x`: 1.6 × the widest gap, rounded, at least 3.
 fn subdivisions(x: &[f64]) -> usize {
-    let widest = x.windows(2).map(|w| w[1] - w[0]).fold(x[1] - x[0], f64::max);
+    let widest = x
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(x[1] - x[0], f64::max);
     let n = (1.6 * widest + 0.5).trunc();
     if n < 3.0 { 3 } else { n as usize }
 }

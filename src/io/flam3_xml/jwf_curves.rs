@@ -205,7 +205,8 @@ fn get<'a>(attrs: &'a HashMap<&str, &str>, prefix: &str, field: &str) -> Option<
 
 /// The group `prefix` among `attrs`, or why it cannot be read.
 fn read_group(attrs: &HashMap<&str, &str>, prefix: &str) -> Result<Group, String> {
-    let enabled = get(attrs, prefix, "enabled").is_some_and(|v| v.trim().eq_ignore_ascii_case("true"));
+    let enabled =
+        get(attrs, prefix, "enabled").is_some_and(|v| v.trim().eq_ignore_ascii_case("true"));
     let raw_interp = get(attrs, prefix, "interpolation").map(str::trim);
     let interp = match raw_interp {
         None => Some(JwfInterp::Spline),
@@ -332,7 +333,8 @@ fn curve_of(target: Target, g: &Group, x: Option<&Xform>) -> Result<Option<Curve
 /// but its attributes stay.
 pub(super) fn read(cx: &mut Ctx, f: &mut Flame, start: usize) {
     let had_keys = !f.keys.curves.is_empty();
-    let mut scopes: Vec<(Scope, &Attrs, Option<&Xform>)> = vec![(Scope::Flame, &f.extra_attrs, None)];
+    let mut scopes: Vec<(Scope, &Attrs, Option<&Xform>)> =
+        vec![(Scope::Flame, &f.extra_attrs, None)];
     for (i, x) in f.xforms.iter().enumerate() {
         scopes.push((Scope::Xform(XformRef::Index(i)), &x.extra_attrs, Some(x)));
     }
@@ -345,7 +347,10 @@ pub(super) fn read(cx: &mut Ctx, f: &mut Flame, start: usize) {
     let mut curves = Vec::new();
     let mut interpreted: Vec<String> = Vec::new();
     for (scope, attrs, x) in scopes {
-        let map: HashMap<&str, &str> = attrs.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
+        let map: HashMap<&str, &str> = attrs
+            .iter()
+            .map(|(k, v)| (k.as_str(), v.as_str()))
+            .collect();
         for prefix in group_prefixes(attrs) {
             let Some(target) = target_of(scope, prefix, x) else {
                 if get(&map, prefix, "enabled").is_some_and(|v| v.trim() == "true") {
@@ -376,7 +381,9 @@ pub(super) fn read(cx: &mut Ctx, f: &mut Flame, start: usize) {
                     interpreted.extend(group_names(attrs, prefix).iter().map(|s| s.to_string()));
                     curves.push(c);
                 }
-                Ok(None) => interpreted.extend(group_names(attrs, prefix).iter().map(|s| s.to_string())),
+                Ok(None) => {
+                    interpreted.extend(group_names(attrs, prefix).iter().map(|s| s.to_string()))
+                }
                 Err(e) => cx.warn(
                     start,
                     "XML021",
@@ -435,7 +442,9 @@ pub(super) fn for_writing(f: &Flame) -> Option<Written> {
     let any = f.keys.curves.iter().any(jwf_style)
         || has_groups(&f.extra_attrs)
         || f.xforms.iter().any(|x| has_groups(&x.extra_attrs))
-        || f.final_xform.as_ref().is_some_and(|x| has_groups(&x.extra_attrs));
+        || f.final_xform
+            .as_ref()
+            .is_some_and(|x| has_groups(&x.extra_attrs));
     if !any {
         return None;
     }
@@ -454,7 +463,8 @@ pub(super) fn for_writing(f: &Flame) -> Option<Written> {
             jwf_curves.push((i, scope, prefix));
         }
     }
-    let mut scopes: Vec<(Scope, &mut Attrs, Option<&Xform>)> = vec![(Scope::Flame, &mut w.flame, None)];
+    let mut scopes: Vec<(Scope, &mut Attrs, Option<&Xform>)> =
+        vec![(Scope::Flame, &mut w.flame, None)];
     for (i, (a, x)) in w.xforms.iter_mut().zip(&f.xforms).enumerate() {
         scopes.push((Scope::Xform(XformRef::Index(i)), a, Some(x)));
     }
@@ -462,7 +472,10 @@ pub(super) fn for_writing(f: &Flame) -> Option<Written> {
         scopes.push((Scope::Xform(XformRef::Final), a, Some(x)));
     }
     for (scope, attrs, x) in scopes {
-        let prefixes: Vec<String> = group_prefixes(attrs).iter().map(|s| s.to_string()).collect();
+        let prefixes: Vec<String> = group_prefixes(attrs)
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
         for prefix in prefixes {
             let Some(target) = target_of(scope, &prefix, x) else {
                 continue;
@@ -479,8 +492,10 @@ pub(super) fn for_writing(f: &Flame) -> Option<Written> {
                     jwf_curves.retain(|(j, ..)| *j != i);
                 }
                 None => {
-                    let map: HashMap<&str, &str> =
-                        attrs.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
+                    let map: HashMap<&str, &str> = attrs
+                        .iter()
+                        .map(|(k, v)| (k.as_str(), v.as_str()))
+                        .collect();
                     // A curve ugnis played and no longer has: JWildfire must not play it.
                     let played = read_group(&map, &prefix)
                         .ok()
@@ -545,15 +560,19 @@ fn put_group(attrs: &mut Attrs, prefix: &str, c: &Curve) {
         .iter()
         .map(|k| ((k.frame + 1.0).round() as i64, conv.to_jwf(k.value)))
         .collect();
-    let map: HashMap<&str, &str> = attrs.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
+    let map: HashMap<&str, &str> = attrs
+        .iter()
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect();
     if let Ok(g) = read_group(&map, prefix) {
         let same = g.enabled
             && g.interp == Some(interp)
             && !g.parent
             && g.points.len() == points.len()
-            && g.points.iter().zip(&points).all(|(a, b)| {
-                a.0 == b.0 && (a.1 - b.1).abs() <= 1e-12 * a.1.abs().max(1.0)
-            });
+            && g.points
+                .iter()
+                .zip(&points)
+                .all(|(a, b)| a.0 == b.0 && (a.1 - b.1).abs() <= 1e-12 * a.1.abs().max(1.0));
         if same {
             return;
         }

@@ -41,7 +41,10 @@ fn curves_become_keyframes_with_ugnis_frames_and_values() {
     );
     let (f, warnings) = parse(&text);
     // The curves' attributes count as read, not as kept and ignored.
-    assert!(warnings.iter().all(|w| !w.contains("Curve")), "{warnings:?}");
+    assert!(
+        warnings.iter().all(|w| !w.contains("Curve")),
+        "{warnings:?}"
+    );
     assert_eq!((f.keys.frames, f.keys.fps), (60, 30.0));
     let cx = f.keys.curve(&Target::Flame(FlameParam::CenterX)).unwrap();
     assert_eq!(cx.style(), CurveStyle::JWildfire(JwfInterp::Bezier));
@@ -51,7 +54,10 @@ fn curves_become_keyframes_with_ugnis_frames_and_values() {
     assert_eq!(rot.keys()[1].value, -90.0);
     // A straight line over 60 frames: JWildfire's frame 31 is a quarter turn's half.
     assert!((rot.eval(30.0, None).unwrap() + 45.0).abs() < 1e-9);
-    let speed = f.keys.curve(&Target::Xform(x, XformParam::ColorSpeed)).unwrap();
+    let speed = f
+        .keys
+        .curve(&Target::Xform(x, XformParam::ColorSpeed))
+        .unwrap();
     assert_eq!((speed.keys()[0].value, speed.keys()[1].value), (0.0, 1.0));
     let julian = variations::parse_name("julian").unwrap().0;
     let dist = Target::Var {
@@ -62,7 +68,11 @@ fn curves_become_keyframes_with_ugnis_frames_and_values() {
     };
     assert_eq!(f.keys.curve(&dist).unwrap().keys()[0].frame, 4.0);
     let played = f.keys.apply(&f, 100.0);
-    let v = played.xforms[0].vars.iter().find(|v| v.id == julian).unwrap();
+    let v = played.xforms[0]
+        .vars
+        .iter()
+        .find(|v| v.id == julian)
+        .unwrap();
     assert_eq!((v.weight, v.params[dist_index()]), (0.25, 3.0));
     assert_eq!(played.center[0], 0.0);
 }
@@ -74,7 +84,10 @@ fn dist_index() -> usize {
 #[test]
 fn curves_not_played_say_why_and_stay() {
     let mut off = group("gammaCurve", "SPLINE", &[(1, 2.0), (9, 3.0)]);
-    off = off.replace("gammaCurve_enabled=\"true\"", "gammaCurve_enabled=\"false\"");
+    off = off.replace(
+        "gammaCurve_enabled=\"true\"",
+        "gammaCurve_enabled=\"false\"",
+    );
     let text = flame(
         &(off
             + " "
@@ -97,7 +110,11 @@ fn curves_not_played_say_why_and_stay() {
     }
     // Written back as they were.
     let again = flame_element(&f);
-    for a in ["gammaCurve_enabled=\"false\"", "whiteLevelCurve_x1=\"9\"", "opacityCurve_y1=\"0.3\""] {
+    for a in [
+        "gammaCurve_enabled=\"false\"",
+        "whiteLevelCurve_x1=\"9\"",
+        "opacityCurve_y1=\"0.3\"",
+    ] {
         assert!(again.contains(a), "{a}\n{again}");
     }
 }
@@ -116,8 +133,11 @@ fn edited_curves_are_written_anew_and_deleted_ones_disabled() {
     // Move a key, delete a curve, add a JWildfire curve, another timeline.
     let cx = f.keys.curve_mut(Target::Flame(FlameParam::CenterX));
     cx.move_key(1, 19.0, 0.75).unwrap();
-    cx.set_style(CurveStyle::JWildfire(JwfInterp::Linear)).unwrap();
-    f.keys.curves.retain(|c| c.target != Target::Flame(FlameParam::Gamma));
+    cx.set_style(CurveStyle::JWildfire(JwfInterp::Linear))
+        .unwrap();
+    f.keys
+        .curves
+        .retain(|c| c.target != Target::Flame(FlameParam::Gamma));
     let mut w = Curve::with_style(
         Target::Xform(XformRef::Index(0), XformParam::Weight),
         CurveStyle::JWildfire(JwfInterp::Spline),
@@ -164,6 +184,9 @@ fn a_jwildfire_curve_without_a_jwildfire_name_stays_in_ugnis_keys() {
     }
     f.keys.curves.push(c.clone());
     let s = flame_element(&f);
-    assert!(s.contains("<curve target=\"palette hue\" style=\"jwildfire_bezier\">"), "{s}");
+    assert!(
+        s.contains("<curve target=\"palette hue\" style=\"jwildfire_bezier\">"),
+        "{s}"
+    );
     assert_eq!(parse(&s).0.keys.curve(&Target::PaletteHue), Some(&c));
 }

@@ -149,7 +149,13 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     }
     if let Some(fx) = &f.final_xform {
         let extra = jwf.as_ref().and_then(|w| w.final_xform.as_ref());
-        write_xform(s, fx, extra.unwrap_or(&fx.extra_attrs), "finalxform", &inner);
+        write_xform(
+            s,
+            fx,
+            extra.unwrap_or(&fx.extra_attrs),
+            "finalxform",
+            &inner,
+        );
     }
     write_palette(s, f.render_colors(), &inner);
     let written = jwf.as_ref().map_or(&[][..], |w| &w.curves[..]);
