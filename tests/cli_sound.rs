@@ -30,6 +30,27 @@ fn swelling_bass(path: &std::path::Path) {
     std::fs::write(path, ugnis::io::audio::wav_bytes(&s, rate as u32)).unwrap();
 }
 
+/// `ugnis animate` of the Sierpiński example at 10 fps, 32×24, driven by `wav`, into `out`.
+fn animate_to_sound(wav: &std::path::Path, out: &std::path::Path, extra: &[&str]) -> (i32, String) {
+    let ex = common::example("sierpinski.flame");
+    let mut args = vec![
+        "animate",
+        ex.to_str().unwrap(),
+        "--sound",
+        wav.to_str().unwrap(),
+        "--fps",
+        "10",
+        "--size",
+        "32x24",
+        "--quality",
+        "2",
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    ugnis(&args)
+}
+
 fn turn_of(a: &ugnis::flame::model::Affine) -> f64 {
     a.c.atan2(a.a).to_degrees()
 }
@@ -39,30 +60,21 @@ fn a_sound_turns_an_xform_and_its_curve_is_saved() {
     let dir = common::temp_dir("cli-sound");
     let wav = dir.join("bass.wav");
     swelling_bass(&wav);
-    let ex = common::example("sierpinski.flame");
     let (frames, keys) = (dir.join("frames"), dir.join("keys.flame"));
-    let (code, err) = ugnis(&[
-        "animate",
-        ex.to_str().unwrap(),
-        "--sound",
-        wav.to_str().unwrap(),
-        "--sound-target",
-        "xform 0 rotate",
-        "--sound-range",
-        "0..90",
-        "--sound-smooth",
-        "1,1",
-        "--fps",
-        "10",
-        "--size",
-        "32x24",
-        "--quality",
-        "2",
-        "-o",
-        frames.to_str().unwrap(),
-        "--save-keys",
-        keys.to_str().unwrap(),
-    ]);
+    let (code, err) = animate_to_sound(
+        &wav,
+        &frames,
+        &[
+            "--sound-target",
+            "xform 0 rotate",
+            "--sound-range",
+            "0..90",
+            "--sound-smooth",
+            "1,1",
+            "--save-keys",
+            keys.to_str().unwrap(),
+        ],
+    );
     assert_eq!(code, 0, "{err}");
     // 0.3 s at 10 fps: three frames, a key each, louder and louder, the last the loudest.
     let mut names: Vec<String> = std::fs::read_dir(&frames)
@@ -100,25 +112,11 @@ fn the_sound_goes_into_the_video() {
     let wav = dir.join("bass.wav");
     swelling_bass(&wav);
     let mp4 = dir.join("movie.mp4");
-    let ex = common::example("sierpinski.flame");
-    let (code, err) = ugnis(&[
-        "animate",
-        ex.to_str().unwrap(),
-        "--sound",
-        wav.to_str().unwrap(),
-        "--sound-target",
-        "brightness",
-        "--sound-range",
-        "2..6",
-        "--fps",
-        "10",
-        "--size",
-        "32x24",
-        "--quality",
-        "2",
-        "-o",
-        mp4.to_str().unwrap(),
-    ]);
+    let (code, err) = animate_to_sound(
+        &wav,
+        &mp4,
+        &["--sound-target", "brightness", "--sound-range", "2..6"],
+    );
     assert_eq!(code, 0, "{err}");
     let probe = Command::new("ffprobe")
         .args([

@@ -266,6 +266,21 @@ fn has_groups(attrs: &[(String, String)]) -> bool {
     attrs.iter().any(|(k, _)| k.ends_with("_point_count"))
 }
 
+/// Attributes by name.
+fn attr_map(attrs: &[(String, String)]) -> HashMap<&str, &str> {
+    attrs
+        .iter()
+        .map(|(k, v)| (k.as_str(), v.as_str()))
+        .collect()
+}
+
+/// Whether `rest` (an attribute name past its group's prefix and `_`) names a point: `x3`, `y3`.
+fn is_point(rest: &str) -> bool {
+    rest.len() > 1
+        && (rest.starts_with('x') || rest.starts_with('y'))
+        && rest[1..].bytes().all(|b| b.is_ascii_digit())
+}
+
 /// The names of a group's attributes (to count them as interpreted).
 fn group_names<'a>(attrs: &'a [(String, String)], prefix: &str) -> Vec<&'a str> {
     attrs
@@ -286,9 +301,7 @@ fn group_names<'a>(attrs: &'a [(String, String)], prefix: &str) -> Vec<&'a str> 
                             | "view_ymax"
                             | "selected_idx"
                             | "locked"
-                    ) || (r.len() > 1
-                        && (r.starts_with('x') || r.starts_with('y'))
-                        && r[1..].bytes().all(|b| b.is_ascii_digit()))
+                    ) || is_point(r)
                 })
         })
         .collect()
@@ -347,10 +360,7 @@ pub(super) fn read(cx: &mut Ctx, f: &mut Flame, start: usize) {
     let mut curves = Vec::new();
     let mut interpreted: Vec<String> = Vec::new();
     for (scope, attrs, x) in scopes {
-        let map: HashMap<&str, &str> = attrs
-            .iter()
-            .map(|(k, v)| (k.as_str(), v.as_str()))
-            .collect();
+        let map = attr_map(attrs);
         for prefix in group_prefixes(attrs) {
             let Some(target) = target_of(scope, prefix, x) else {
                 if get(&map, prefix, "enabled").is_some_and(|v| v.trim() == "true") {
@@ -492,10 +502,7 @@ pub(super) fn for_writing(f: &Flame) -> Option<Written> {
                     jwf_curves.retain(|(j, ..)| *j != i);
                 }
                 None => {
-                    let map: HashMap<&str, &str> = attrs
-                        .iter()
-                        .map(|(k, v)| (k.as_str(), v.as_str()))
-                        .collect();
+                    let map = attr_map(attrs);
                     // A curve ugnis played and no longer has: JWildfire must not play it.
                     let played = read_group(&map, &prefix)
                         .ok()
@@ -560,10 +567,7 @@ fn put_group(attrs: &mut Attrs, prefix: &str, c: &Curve) {
         .iter()
         .map(|k| ((k.frame + 1.0).round() as i64, conv.to_jwf(k.value)))
         .collect();
-    let map: HashMap<&str, &str> = attrs
-        .iter()
-        .map(|(k, v)| (k.as_str(), v.as_str()))
-        .collect();
+    let map = attr_map(attrs);
     if let Ok(g) = read_group(&map, prefix) {
         let same = g.enabled
             && g.interp == Some(interp)
@@ -581,11 +585,7 @@ fn put_group(attrs: &mut Attrs, prefix: &str, c: &Curve) {
     let is_point = |k: &str| {
         k.strip_prefix(prefix)
             .and_then(|r| r.strip_prefix('_'))
-            .is_some_and(|r| {
-                r.len() > 1
-                    && (r.starts_with('x') || r.starts_with('y'))
-                    && r[1..].bytes().all(|b| b.is_ascii_digit())
-            })
+            .is_some_and(is_point)
     };
     attrs.retain(|(k, _)| !is_point(k));
     set(attrs, &format!("{prefix}_enabled"), "true".into());
