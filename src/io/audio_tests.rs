@@ -1,3 +1,5 @@
+//! Tests of the sound file reader: levels, channels, FLAC and MP3, damaged files.
+
 use super::*;
 use crate::sound::{Band, band_levels};
 

@@ -1,3 +1,5 @@
+//! Tests of JWildfire's curve attributes: reading, what is not played and why, writing back.
+
 use super::*;
 use crate::io::flam3_xml::{ReadOptions, flame_element, read as read_xml};
 
