@@ -5,7 +5,7 @@
 //! transformed (FFT), the power of the band's bins summed, and the energies scaled to [0, 1],
 //! optionally with a fast attack and slower release so the motion does not flicker.
 
-use crate::flame::keyframes::{Curve, Interp, Key, Target};
+use crate::flame::keyframes::{Curve, Interp, Key, MAX_KEYS, Target};
 
 /// Samples per analysis window (about 46 ms at 44.1 kHz).
 pub const WINDOW: usize = 2048;
@@ -165,10 +165,16 @@ pub fn band_energy(
     energy
 }
 
-/// A curve for `target` with a key at every frame: `low` at silence, `high` at the loudest.
+/// A curve for `target` with a key at every frame (`low` at silence, `high` at the loudest),
+/// linear between them; past [`MAX_KEYS`] frames, a key every few frames and at the last.
 pub fn curve_from_energy(energy: &[f64], target: Target, low: f64, high: f64) -> Curve {
     let mut c = Curve::new(target);
+    let step = energy.len().div_ceil(MAX_KEYS - 1).max(1);
+    let last = energy.len().saturating_sub(1);
     for (f, e) in energy.iter().enumerate() {
+        if f % step != 0 && f != last {
+            continue;
+        }
         let v = low + (high - low) * e;
         let key = Key {
             interp: Interp::Linear,

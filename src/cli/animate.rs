@@ -17,6 +17,8 @@ use ugnis::io::animation::{
 };
 use ugnis::io::video::{VideoKind, VideoOptions};
 
+use super::animate_sound::{self, SoundArgs};
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Mode {
     /// A sequence if the flames carry times, keyframes if the flame has them, else rotate
@@ -112,6 +114,8 @@ pub struct AnimateArgs {
     /// flam3-palettes.xml for flames that use palette="N"
     #[arg(long)]
     pub palettes: Option<PathBuf>,
+    #[command(flatten)]
+    pub sound: SoundArgs,
 }
 
 /// `-o seq.flam3`: the animation written as a flam3 sequence (one flame per frame) instead of
@@ -280,8 +284,17 @@ pub fn run(a: AnimateArgs) -> Result<()> {
             f.anim.temporal_samples = n;
         }
     }
-    let picked = super::render::select(flames.clone(), a.index, a.name.as_deref(), &a.input)?;
-    let mode = resolve_mode(a.mode, &flames, &picked);
+    let mut picked = super::render::select(flames.clone(), a.index, a.name.as_deref(), &a.input)?;
+    if a.sound.sound.is_some() {
+        if !matches!(a.mode, Mode::Auto | Mode::Keys) {
+            bail!("--sound makes keyframes: use it with --mode keys (or auto)");
+        }
+        animate_sound::drive(&a.sound, &mut picked, a.fps, &a.input)?;
+    }
+    let mode = match a.sound.sound {
+        Some(_) => Mode::Keys,
+        None => resolve_mode(a.mode, &flames, &picked),
+    };
     let (source, frames) = match mode {
         Mode::Sequence | Mode::Loop => {
             let cps = if mode == Mode::Loop {
@@ -380,6 +393,7 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         Source::Keys(f) => f.keys.fps,
         _ => 25.0,
     });
+    let first_time = frames.first().map_or(0.0, |f| f.time);
     let job = Job {
         source,
         frames,
@@ -389,7 +403,12 @@ pub fn run(a: AnimateArgs) -> Result<()> {
                 p,
                 VideoOptions {
                     fps,
-                    audio: a.audio.clone(),
+                    audio: animate_sound::audio(&a.sound, &a.audio),
+                    // A sound-driven animation from its middle: the sound from there too.
+                    audio_start: match (&a.audio, &a.sound.sound, first_time) {
+                        (None, Some(_), t) if t > 0.0 => t / fps,
+                        _ => 0.0,
+                    },
                     crf: a.crf,
                     ..VideoOptions::default()
                 },

@@ -5,6 +5,7 @@
 //! otherwise), Ctrl+C handling, thread counts, output checks and argument parsers.
 
 pub mod animate;
+mod animate_sound;
 pub mod convert;
 pub mod dimension;
 pub mod escape;

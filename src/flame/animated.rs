@@ -52,6 +52,14 @@ macro_rules! xform_field {
             XformParam::MoveY => Some(& $($m)* $x.coefs.f),
             XformParam::PostMoveX => Some(& $($m)* $x.post.e),
             XformParam::PostMoveY => Some(& $($m)* $x.post.f),
+            XformParam::Coef00 => Some(& $($m)* $x.coefs.a),
+            XformParam::Coef01 => Some(& $($m)* $x.coefs.c),
+            XformParam::Coef10 => Some(& $($m)* $x.coefs.b),
+            XformParam::Coef11 => Some(& $($m)* $x.coefs.d),
+            XformParam::PostCoef00 => Some(& $($m)* $x.post.a),
+            XformParam::PostCoef01 => Some(& $($m)* $x.post.c),
+            XformParam::PostCoef10 => Some(& $($m)* $x.post.b),
+            XformParam::PostCoef11 => Some(& $($m)* $x.post.d),
             _ => None,
         }
     };
@@ -225,10 +233,12 @@ impl Keyframes {
     pub fn apply(&self, base: &Flame, frame: f64) -> Flame {
         let mut f = base.clone();
         let wrap = self.wrap.then_some(self.frames as f64);
-        // Position and scale first, then turns, so a turned and scaled map is the same
-        // whatever order the curves are stored in.
+        // Values set as they stand first (position, coefficients), then scales, then turns,
+        // so a turned and scaled map is the same whatever order the curves are stored in (and
+        // as JWildfire applies its curves).
         let order = |c: &&Curve| match c.target {
-            Target::Xform(_, XformParam::Rotate | XformParam::PostRotate) => 1,
+            Target::Xform(_, XformParam::Scale | XformParam::PostScale) => 1,
+            Target::Xform(_, XformParam::Rotate | XformParam::PostRotate) => 2,
             _ => 0,
         };
         let mut curves: Vec<&Curve> = self.curves.iter().collect();

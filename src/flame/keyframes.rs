@@ -11,6 +11,7 @@
 
 use std::fmt;
 
+use crate::flame::jwf_curve::{self, JwfInterp};
 use crate::flame::variations::{self, Form, VarId};
 
 /// How the curve runs from a key to the next.
@@ -180,9 +181,20 @@ pub enum XformParam {
     PostMoveY,
     PostRotate,
     PostScale,
+    /// The map's coefficients in flam3's `coefs` order: x → x′, x → y′, y → x′, y → y′
+    /// (set as they stand, as JWildfire's curves set them).
+    Coef00,
+    Coef01,
+    Coef10,
+    Coef11,
+    /// The post map's coefficients, in the same order.
+    PostCoef00,
+    PostCoef01,
+    PostCoef10,
+    PostCoef11,
 }
 
-pub(crate) const XFORM_PARAMS: [(XformParam, &str); 12] = [
+pub(crate) const XFORM_PARAMS: [(XformParam, &str); 20] = [
     (XformParam::Weight, "weight"),
     (XformParam::Color, "color"),
     (XformParam::ColorSpeed, "color_speed"),
@@ -195,6 +207,14 @@ pub(crate) const XFORM_PARAMS: [(XformParam, &str); 12] = [
     (XformParam::PostMoveY, "post_move_y"),
     (XformParam::PostRotate, "post_rotate"),
     (XformParam::PostScale, "post_scale"),
+    (XformParam::Coef00, "coef_00"),
+    (XformParam::Coef01, "coef_01"),
+    (XformParam::Coef10, "coef_10"),
+    (XformParam::Coef11, "coef_11"),
+    (XformParam::PostCoef00, "post_coef_00"),
+    (XformParam::PostCoef01, "post_coef_01"),
+    (XformParam::PostCoef10, "post_coef_10"),
+    (XformParam::PostCoef11, "post_coef_11"),
 ];
 
 /// Which xform: a standard one by index, or the final one.
@@ -338,11 +358,25 @@ pub const MAX_CURVES: usize = 10_000;
 /// Most frames of a timeline.
 pub const MAX_FRAMES: u32 = 10_000_000;
 
+/// How a curve runs through its keys.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum CurveStyle {
+    /// Each key says how the curve leaves it (its [`Interp`] and [`Ease`]).
+    #[default]
+    Keys,
+    /// A JWildfire motion curve: the whole curve is one spline, Bézier or polyline through the
+    /// keys, evaluated as JWildfire evaluates it (the keys' own interpolation and easing are
+    /// not used, values are not taken as logarithms). JWildfire numbers frames from 1: a key at
+    /// frame k is JWildfire's frame k + 1.
+    JWildfire(JwfInterp),
+}
+
 /// A curve of keys driving one target. Keys are kept sorted by frame, one per frame.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Curve {
     pub target: Target,
     keys: Vec<Key>,
+    style: CurveStyle,
 }
 
 impl Curve {
@@ -350,11 +384,41 @@ impl Curve {
         Curve {
             target,
             keys: Vec::new(),
+            style: CurveStyle::Keys,
+        }
+    }
+
+    /// An empty curve of the given style.
+    pub fn with_style(target: Target, style: CurveStyle) -> Curve {
+        Curve {
+            style,
+            ..Curve::new(target)
         }
     }
 
     pub fn keys(&self) -> &[Key] {
         &self.keys
+    }
+
+    /// How the curve runs through its keys.
+    pub fn style(&self) -> CurveStyle {
+        self.style
+    }
+
+    /// Change how the curve runs through its keys (the keys stay). A scale factor's keys
+    /// must be positive to be interpolated as logarithms ([`CurveStyle::Keys`]).
+    pub fn set_style(&mut self, style: CurveStyle) -> Result<(), String> {
+        if style == CurveStyle::Keys
+            && self.target.is_logarithmic()
+            && let Some(k) = self.keys.iter().find(|k| k.value <= 0.0)
+        {
+            return Err(format!(
+                "'{}' is a scale factor: its keys must be positive, not {}",
+                self.target, k.value
+            ));
+        }
+        self.style = style;
+        Ok(())
     }
 
     /// Add a key (replacing one at the same frame). Keys at frames that are not finite, or
@@ -366,7 +430,7 @@ impl Curve {
                 key.frame, key.value
             ));
         }
-        if self.target.is_logarithmic() && key.value <= 0.0 {
+        if self.target.is_logarithmic() && self.style == CurveStyle::Keys && key.value <= 0.0 {
             return Err(format!(
                 "'{}' is a scale factor: its keys must be positive, not {}",
                 self.target, key.value
@@ -412,6 +476,15 @@ impl Curve {
     /// keys repeat every n frames, so the curve after the last key runs into the first.
     /// Before the first key and after the last the value holds. None without keys.
     pub fn eval(&self, frame: f64, wrap: Option<f64>) -> Option<f64> {
+        if let CurveStyle::JWildfire(interp) = self.style {
+            let t = match wrap {
+                Some(len) if len > 0.0 => frame.rem_euclid(len),
+                _ => frame,
+            };
+            let x: Vec<f64> = self.keys.iter().map(|k| k.frame + 1.0).collect();
+            let y: Vec<f64> = self.keys.iter().map(|k| k.value).collect();
+            return jwf_curve::eval(&x, &y, interp, t + 1.0);
+        }
         let log = self.target.is_logarithmic();
         let to = |v: f64| if log { v.ln() } else { v };
         let from = |v: f64| if log { v.exp() } else { v };

@@ -16,6 +16,7 @@ pub mod geometry;
 pub mod histogram;
 pub mod ifs3d;
 pub mod interpolate;
+pub mod jwf_curve;
 pub mod keyframes;
 pub mod loops;
 pub mod model;

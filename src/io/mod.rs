@@ -3,6 +3,7 @@
 
 pub mod animation;
 pub mod atomic;
+pub mod audio;
 pub mod bmp;
 pub mod diag;
 pub mod error;

@@ -79,6 +79,9 @@ pub struct VideoOptions {
     pub fps: f64,
     /// A sound file to mux in (ffmpeg outputs only); the video ends with the shorter of the two.
     pub audio: Option<PathBuf>,
+    /// Where in the sound the video starts (seconds), for a video of frames from the middle of
+    /// an animation.
+    pub audio_start: f64,
     /// ffmpeg's constant-quality factor (lower is better; 18 is visually lossless for H.264).
     pub crf: u32,
     /// The ffmpeg program (default: `ffmpeg` on PATH).
@@ -90,6 +93,7 @@ impl Default for VideoOptions {
         VideoOptions {
             fps: 25.0,
             audio: None,
+            audio_start: 0.0,
             crf: 18,
             ffmpeg: PathBuf::from("ffmpeg"),
         }
@@ -377,6 +381,9 @@ fn ffmpeg_command(
         .args(["-framerate", &format!("{}", opts.fps)])
         .args(["-i", "-"]);
     if let Some(a) = &opts.audio {
+        if opts.audio_start > 0.0 {
+            c.args(["-ss", &format!("{}", opts.audio_start)]);
+        }
         c.arg("-i").arg(a);
         c.args(["-map", "0:v", "-map", "1:a", "-shortest"]);
         let codec = if format == "webm" { "libopus" } else { "aac" };

@@ -5,7 +5,10 @@
 use std::fmt::Write as _;
 
 use super::context::{Ctx, R};
-use crate::flame::keyframes::{Curve, Ease, Interp, Key, Keyframes, MAX_CURVES, MAX_FRAMES};
+use crate::flame::jwf_curve::JwfInterp;
+use crate::flame::keyframes::{
+    Curve, CurveStyle, Ease, Interp, Key, Keyframes, MAX_CURVES, MAX_FRAMES,
+};
 use crate::flame::model::{Affine, Flame, Motion, Xform};
 use crate::flame::sequence::{
     Animation, Interpolation, InterpolationType, MAX_TEMPORAL_SAMPLES, MotionFunction,
@@ -369,13 +372,36 @@ pub(super) fn keys_curve(
     let Some(t) = attrs.iter().find(|a| a.name == "target") else {
         return Err(cx.err(start, "XML003", "<curve> needs a 'target' attribute"));
     };
+    let mut style = CurveStyle::Keys;
+    if let Some(a) = attrs.iter().find(|a| a.name == "style") {
+        let v = a.value.trim();
+        style = match v.strip_prefix("jwildfire_") {
+            None if v == "keys" => CurveStyle::Keys,
+            Some(i) => match JwfInterp::from_name(&i.to_ascii_uppercase()) {
+                Some(i) => CurveStyle::JWildfire(i),
+                None => return Err(bad_style(cx, a)),
+            },
+            None => return Err(bad_style(cx, a)),
+        };
+    }
     match t.value.parse() {
-        Ok(target) => Ok(Some(Curve::new(target))),
+        Ok(target) => Ok(Some(Curve::with_style(target, style))),
         Err(e) => {
             cx.warn(t.offset, "XML021", format!("{e}; the curve is skipped"));
             Ok(None)
         }
     }
+}
+
+fn bad_style(cx: &Ctx, a: &Attr) -> crate::io::diag::Diagnostic {
+    cx.err(
+        a.offset,
+        "XML003",
+        format!(
+            "curve style '{}' must be keys, jwildfire_spline, jwildfire_bezier or jwildfire_linear",
+            a.value.trim()
+        ),
+    )
 }
 
 /// A `<key>` of a curve.
@@ -417,9 +443,11 @@ pub(super) fn keys_key(cx: &mut Ctx, attrs: &[Attr], start: usize, c: &mut Curve
         .map_err(|e| cx.err(start, "XML003", format!("<key>: {e}")))
 }
 
-/// The `<ugnis_keys>` element of a flame's keyframes (nothing when it has none).
-pub(super) fn write_keys(s: &mut String, k: &Keyframes, ind: &str) {
-    if k.is_empty() {
+/// The `<ugnis_keys>` element of a flame's keyframes (nothing when it has none), less the
+/// curves at the indices `skip` (written as JWildfire's attributes).
+pub(super) fn write_keys(s: &mut String, k: &Keyframes, skip: &[usize], ind: &str) {
+    let shown = |(i, c): &(usize, &Curve)| !c.keys().is_empty() && !skip.contains(i);
+    if !k.curves.iter().enumerate().any(|ic| shown(&ic)) {
         return;
     }
     let n = fmt_num;
@@ -430,12 +458,16 @@ pub(super) fn write_keys(s: &mut String, k: &Keyframes, ind: &str) {
         n(k.fps),
         k.wrap as u8
     );
-    for c in k.curves.iter().filter(|c| !c.keys().is_empty()) {
-        let _ = writeln!(
+    for (_, c) in k.curves.iter().enumerate().filter(shown) {
+        let _ = write!(
             s,
-            "{ind}   <curve target=\"{}\">",
+            "{ind}   <curve target=\"{}\"",
             escape_attr(&c.target.to_string())
         );
+        if let CurveStyle::JWildfire(i) = c.style() {
+            let _ = write!(s, " style=\"jwildfire_{}\"", i.name().to_ascii_lowercase());
+        }
+        s.push_str(">\n");
         for key in c.keys() {
             let _ = write!(
                 s,

@@ -104,6 +104,14 @@ impl Ctx<'_, '_> {
         }
     }
 
+    /// Takes `name` back out of the attributes kept but not interpreted (it was interpreted
+    /// after all, e.g. as part of a JWildfire curve).
+    pub(super) fn interpreted(&mut self, name: &str) {
+        if self.ignored_set.remove(&name_hash(name)) {
+            self.ignored_attrs.retain(|n| n != name);
+        }
+    }
+
     pub(super) fn err(&self, off: usize, code: &'static str, msg: impl Into<String>) -> Diagnostic {
         Diagnostic::error(self.file, self.map.pos(off), code, msg)
     }

@@ -81,6 +81,7 @@ pub(super) fn read_flame(
         read_flame_children(cx, cur, text, &mut f, &mut pal)?;
     }
     cut_xaos_rows(cx, &mut f, start);
+    super::jwf_curves::read(cx, &mut f, start);
     resolve_palette(
         cx,
         &mut f,

@@ -6,7 +6,7 @@
 //!
 //! The reader is [`read`] (the document in `read.rs`, a flame's attributes in `flame.rs`, its
 //! children in `children.rs`, colours in `palette.rs`, xforms in `xform.rs`, animation settings,
-//! `<motion>` elements and keyframes in `anim.rs`); the writer is [`write`] (`write.rs`).
+//! `<motion>` elements and keyframes in `anim.rs`, JWildfire's motion curves in `jwf_curves.rs`); the writer is [`write`] (`write.rs`).
 
 use std::path::PathBuf;
 
@@ -18,6 +18,7 @@ mod anim;
 mod children;
 mod context;
 mod flame;
+mod jwf_curves;
 mod palette;
 mod read;
 mod write;

@@ -4,6 +4,7 @@
 use std::fmt::Write as _;
 
 use super::anim::{write_anim_attrs, write_keys, write_motion};
+use super::jwf_curves;
 use super::{FLA_FORMAT, FlameFile};
 use crate::flame::model::{Flame, PaletteIndex, Xform};
 use crate::flame::variations;
@@ -136,26 +137,38 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         }
     }
     write_anim_attrs(s, &f.anim);
-    for (k, v) in &f.extra_attrs {
+    let jwf = jwf_curves::for_writing(f);
+    for (k, v) in jwf.as_ref().map_or(&f.extra_attrs, |w| &w.flame) {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
     s.push_str(">\n");
     let inner = format!("{ind}   ");
-    for x in &f.xforms {
-        write_xform(s, x, "xform", &inner);
+    for (i, x) in f.xforms.iter().enumerate() {
+        let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
+        write_xform(s, x, extra.unwrap_or(&x.extra_attrs), "xform", &inner);
     }
     if let Some(fx) = &f.final_xform {
-        write_xform(s, fx, "finalxform", &inner);
+        let extra = jwf.as_ref().and_then(|w| w.final_xform.as_ref());
+        write_xform(
+            s,
+            fx,
+            extra.unwrap_or(&fx.extra_attrs),
+            "finalxform",
+            &inner,
+        );
     }
     write_palette(s, f.render_colors(), &inner);
-    write_keys(s, &f.keys, &inner);
+    let written = jwf.as_ref().map_or(&[][..], |w| &w.curves[..]);
+    write_keys(s, &f.keys, written, &inner);
     for c in &f.extra_children {
         let _ = writeln!(s, "{inner}{}", c.trim());
     }
     let _ = writeln!(s, "{ind}</flame>");
 }
 
-fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
+/// An xform element; `extra` are the kept attributes to write (the xform's own, or with its
+/// JWildfire curves brought up to date).
+fn write_xform(s: &mut String, x: &Xform, extra: &[(String, String)], tag: &str, ind: &str) {
     let n = fmt_num;
     let _ = write!(s, "{ind}<{tag}");
     if tag == "xform" {
@@ -221,7 +234,7 @@ fn write_xform(s: &mut String, x: &Xform, tag: &str, ind: &str) {
         let v: Vec<String> = chaos.iter().map(|c| n(*c)).collect();
         let _ = write!(s, " chaos=\"{}\"", v.join(" "));
     }
-    for (k, v) in &x.extra_attrs {
+    for (k, v) in extra {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
     if x.extra_children.is_empty() && x.motion.is_empty() {
