@@ -313,7 +313,7 @@ pub fn ray_sphere(o: DVec3, d: DVec3, centre: DVec3, r: f64) -> Option<(f64, f64
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::escape::complex::C;
+    use crate::escape::C;
     use crate::escape::family::{IterSettings, iterate_quadratic_scalar};
 
     fn julia(c: [f64; 4]) -> QuaternionJulia {
