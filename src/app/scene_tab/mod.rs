@@ -20,8 +20,7 @@ use crate::app::worker::{JobContext, Repaint, TaskWorker, Worker, repaint_of, ta
 use crate::escape::EscapeDoc;
 use crate::flame::Flame;
 use crate::io;
-use crate::surface::texture::Texture;
-use crate::surface::{Object, Scene};
+use crate::surface::{Object, Scene, Texture};
 
 /// A scene to render.
 pub struct SceneJob {
