@@ -90,7 +90,7 @@ impl Framing {
         ]
     }
 
-    #[inline]
+    #[cfg(test)]
     pub fn world_from_pixel(&self, q: P2) -> P2 {
         [
             (q[0] + 0.5 - 0.5 * self.width as f64) / self.scale + self.center[0],
