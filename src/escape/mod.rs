@@ -25,6 +25,7 @@ pub use complex::C;
 pub use doc::EscapeDoc;
 pub use family::{Family, Sample};
 pub use render::{
-    EscapeError, EscapeParams, EscapeRenderer, Fill, View, check_memory, estimate_memory, render,
+    EscapeError, EscapeParams, EscapeRenderer, Fill, View, check_memory, check_view_for,
+    estimate_memory, render,
 };
 pub use warp::{Preset, Sampling, Warp};

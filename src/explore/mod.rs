@@ -12,12 +12,12 @@
 
 pub mod classic;
 pub mod dimension;
-pub(crate) mod fif;
+pub mod fif;
 pub mod ifs;
-pub(crate) mod julia;
+pub mod julia;
 pub mod lorenz;
 pub mod lsystem;
-pub(crate) mod raster;
+pub mod raster;
 
 /// Why an Explore computation was refused.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -20,7 +20,7 @@ pub mod keyframes;
 pub mod loops;
 pub(crate) mod model;
 pub mod motion_blur;
-pub(crate) mod mutate;
+pub mod mutate;
 mod plot;
 pub mod random;
 pub mod render;
