@@ -5,7 +5,7 @@ pub mod animation;
 pub mod atomic;
 pub mod bmp;
 pub mod diag;
-pub mod error;
+pub(crate) mod error;
 pub mod escape_view;
 pub mod flam3_xml;
 mod fractint_text;
@@ -22,13 +22,13 @@ pub mod strip_png;
 pub mod svg;
 pub mod ugr;
 pub mod video;
-pub mod xml;
+pub(crate) mod xml;
 
 use std::path::Path;
 
 use crate::flame::model::Flame;
 use crate::io::diag::{Diagnostic, Parsed, Pos};
-pub use crate::io::error::WriteError;
+pub use crate::io::error::{LSystemWriteError, WriteError};
 
 /// Largest file ugnis reads (text formats, images).
 pub const MAX_FILE_SIZE: u64 = 64 << 20;
@@ -149,14 +149,21 @@ pub enum FileKind {
     FlameXml,
     /// ugnis native .fla (validated more strictly)
     Fla,
+    /// PNG image (may carry a flame in its text chunks)
     Png,
+    /// Fractint IFS (.ifs)
     Ifs,
+    /// ugnis gradient list (.ugr)
     Ugr,
+    /// Fractint palette (.map)
     Map,
     /// GIMP gradient (.ggr)
     Ggr,
+    /// BMP image
     Bmp,
+    /// JPEG image
     Jpeg,
+    /// GIF image
     Gif,
     /// ugnis escape-time view (.esc)
     EscapeView,
@@ -166,6 +173,7 @@ pub enum FileKind {
     Scene,
     /// A saved flame render to continue or merge (.ugnis-state)
     RenderState,
+    /// An extension ugnis does not know
     Unknown,
 }
 
@@ -192,6 +200,7 @@ impl FileKind {
     }
 }
 
+/// The kind of a file, by its extension (any case).
 pub fn kind_of(path: &Path) -> FileKind {
     let ext = path
         .extension()

@@ -26,13 +26,16 @@ pub const NAME_LEN: usize = 18;
 /// One entry of an `.ifs` file.
 #[derive(Clone, Debug, PartialEq)]
 pub struct IfsEntry {
+    /// The entry's name.
     pub name: String,
+    /// A `(3D)` entry: rows of 13 numbers instead of 7.
     pub three_d: bool,
     /// Rows of 7 numbers (a b c d e f p) or 13 (a b c d e f g h i j k l p).
     pub rows: Vec<Vec<f64>>,
 }
 
 impl IfsEntry {
+    /// Numbers in a row: 13 for a 3-D entry, 7 otherwise.
     pub fn row_len(&self) -> usize {
         if self.three_d { 13 } else { 7 }
     }
@@ -54,6 +57,7 @@ impl IfsEntry {
 /// The entries of an `.ifs` file.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct IfsFile {
+    /// The entries, in file order.
     pub entries: Vec<IfsEntry>,
 }
 
