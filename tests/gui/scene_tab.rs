@@ -73,7 +73,7 @@ fn scene_tab_orbits_moves_lights_and_changes_textures() {
     let esc = h.state().escape.doc.clone();
     h.state_mut()
         .scene
-        .set_source(ugnis::app::scene_tab::TextureSource::Checker, &flame, &esc);
+        .set_source(ugnis::app::TextureSource::Checker, &flame, &esc);
     let t = std::time::Instant::now();
     while h
         .state()
@@ -153,7 +153,7 @@ fn a_scene_saves_and_reads_back() {
     let esc = h.state().escape.doc.clone();
     h.state_mut()
         .scene
-        .set_source(ugnis::app::scene_tab::TextureSource::Checker, &flame, &esc);
+        .set_source(ugnis::app::TextureSource::Checker, &flame, &esc);
     let t = std::time::Instant::now();
     while !h
         .state()

@@ -62,11 +62,17 @@ pub enum SceneRequest {
 pub enum TextureSource {
     /// One of the scene file's textures.
     Scene(usize),
+    /// The flame tab's current flame, rendered.
     CurrentFlame,
+    /// The escape-time tab's view, rendered.
     CurrentEscape,
+    /// fBm noise with the default settings.
     Fbm,
+    /// A Markov random field with the default settings.
     Mrf,
+    /// A checkerboard.
     Checker,
+    /// No texture: the material colour.
     None,
 }
 
