@@ -6,13 +6,13 @@
 //! interpolation, Julia sets by inverse iteration, the Lorenz attractor and fractal dimension.
 //! Everything is computed by the engine in `crate::explore`; this folder only shows it.
 
-pub mod chaos;
-pub mod classic;
-pub mod dimension;
-pub mod fif;
-pub mod julia;
-pub mod lorenz;
-pub mod lsys;
+pub(crate) mod chaos;
+pub(crate) mod classic;
+pub(crate) mod dimension;
+pub(crate) mod fif;
+pub(crate) mod julia;
+pub(crate) mod lorenz;
+pub(crate) mod lsys;
 
 use std::hash::{Hash, Hasher};
 

@@ -3,10 +3,10 @@
 //! (the scene's own, the current flame, the current escape-time view, procedural, an image);
 //! materials, lights, projection; open scene files and export.
 
-pub mod canvas;
-pub mod controls;
-pub mod save;
-pub mod textures;
+pub(crate) mod canvas;
+pub(crate) mod controls;
+pub(crate) mod save;
+pub(crate) mod textures;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
