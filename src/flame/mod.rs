@@ -2,6 +2,8 @@
 //! tone mapping, automatic framing and the progressive renderer.
 
 pub(crate) mod affine;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod animate;
 pub mod animated;
 mod budget;
@@ -16,14 +18,22 @@ pub(crate) mod geometry;
 pub(crate) mod histogram;
 pub(crate) mod ifs3d;
 pub mod interpolate;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod keyframes;
 pub mod loops;
 pub(crate) mod model;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod motion_blur;
 pub mod mutate;
 mod plot;
 pub mod random;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod render;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod sequence;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;

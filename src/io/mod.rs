@@ -1,12 +1,16 @@
 //! Readers and writers of every file format ugnis opens or saves. Parsers report errors with
 //! file, line and column and never panic.
 
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod animation;
 pub mod atomic;
 pub mod bmp;
 pub mod diag;
 pub(crate) mod error;
 pub mod escape_view;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod flam3_xml;
 mod fractint_text;
 pub mod ggr;
@@ -21,6 +25,8 @@ pub mod scene;
 pub mod strip_png;
 pub mod svg;
 pub mod ugr;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod video;
 pub(crate) mod xml;
 
