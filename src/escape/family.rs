@@ -42,7 +42,8 @@ pub enum Family {
 }
 
 impl Family {
-    /// The family's name as written in view files: "mandelbrot" (power 2), "multibrot", "julia", "newton", "logistic", "cubic" or "warped-julia".
+    /// The family's name as written in view files: "mandelbrot" (power 2), "multibrot", "julia",
+    /// "newton", "logistic", "cubic" or "warped-julia".
     pub fn name(&self) -> &'static str {
         match self {
             Family::Mandelbrot { power: 2 } => "mandelbrot",

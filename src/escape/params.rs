@@ -35,7 +35,8 @@ pub struct EscapeParams {
     pub coloring: Coloring,
     /// Escape radius; None: the family's default for the colouring.
     pub bailout: Option<f64>,
-    /// Stop orbits found to be cycling (within a thousandth of a pixel) early, as inside; not used for Newton, warped textures, distance colouring or deep zoom.
+    /// Stop orbits found to be cycling (within a thousandth of a pixel) early, as inside; not used
+    /// for Newton, warped textures, distance colouring or deep zoom.
     pub periodicity: bool,
     /// Every pixel computed, or Mariani–Silver block filling.
     pub fill: Fill,
@@ -44,7 +45,8 @@ pub struct EscapeParams {
 }
 
 impl EscapeParams {
-    /// The family's defaults: 256 iterations, basins for Newton, bands for warped textures, smooth colouring otherwise (four gradient entries per iteration), periodicity checking on.
+    /// The family's defaults: 256 iterations, basins for Newton, bands for warped textures, smooth
+    /// colouring otherwise (four gradient entries per iteration), periodicity checking on.
     pub fn new(family: Family) -> EscapeParams {
         let coloring = if matches!(family, Family::Newton { .. }) {
             Coloring::Basins

@@ -30,7 +30,8 @@ pub struct EscapeRenderer {
 }
 
 impl EscapeRenderer {
-    /// Check the view, the settings and the memory and prepare a render of `w`×`h` pixels (nothing computed yet).
+    /// Check the view, the settings and the memory and prepare a render of `w`×`h` pixels (nothing
+    /// computed yet).
     pub fn new(params: &EscapeParams, view: View, w: u32, h: u32) -> Result<Self, EscapeError> {
         let job = Job::new(params, view, w, h)?;
         Ok(EscapeRenderer {

@@ -70,7 +70,8 @@ pub enum Preset {
 }
 
 impl Warp {
-    /// A warped-Julia texture; fails when |α| is within 1e-9 of 1 or the sampling radius or scale is not positive and finite.
+    /// A warped-Julia texture; fails when |α| is within 1e-9 of 1 or the sampling radius or scale
+    /// is not positive and finite.
     pub fn new(
         c: C,
         alpha: C,

@@ -73,7 +73,8 @@ pub struct Xform {
     /// How far a step moves the colour coordinate towards `color`: c′ = speed·color +
     /// (1 − speed)·c.
     pub color_speed: f64,
-    /// Share of the xform's points that are plotted (0–1); the orbit goes on either way.
+    /// How visible the xform's points are (0: not plotted, 1: fully); the orbit goes on
+    /// either way.
     pub opacity: f64,
     /// The affine map applied before the variations.
     pub coefs: Affine,

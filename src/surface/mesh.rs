@@ -77,7 +77,8 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    /// The mesh mapped through `t`: positions and tangents transformed, normals recomputed so that non-uniform scaling keeps them perpendicular.
+    /// The mesh mapped through `t`: positions and tangents transformed, normals recomputed so that
+    /// non-uniform scaling keeps them perpendicular.
     pub fn transformed(&self, t: &Transform) -> Mesh {
         let normal_of = |n: DVec3, p: DVec3| {
             // Transform the normal through two tangent directions (handles non-uniform scale).

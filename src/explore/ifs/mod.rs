@@ -218,7 +218,8 @@ pub struct ChaosGame {
 }
 
 impl ChaosGame {
-    /// A chaos game on `ifs` from `start`, its first `skip` points taken but not returned, with random map choices from `seed`.
+    /// A chaos game on `ifs` from `start`, its first `skip` points taken but not returned, with
+    /// random map choices from `seed`.
     pub fn new(ifs: &Ifs, start: P2, skip: u64, seed: u64) -> ChaosGame {
         let mut acc = 0.0;
         let cumulative = ifs

@@ -22,11 +22,11 @@ pub mod need {
 /// What a variation reads about its input point.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct VarIn {
-    /// x after the xform's affine map (and its `pre_` variations).
+    /// x of the input point.
     pub x: f64,
-    /// y after the xform's affine map (and its `pre_` variations).
+    /// y of the input point.
     pub y: f64,
-    /// z (unchanged by the 2-D affine map).
+    /// z of the input point.
     pub z: f64,
     /// x² + y².
     pub sumsq: f64,
