@@ -22,7 +22,7 @@ pub mod interpolate;
 #[allow(missing_docs)]
 pub mod keyframes;
 pub mod loops;
-pub(crate) mod model;
+pub mod model;
 // Its items are not documented yet.
 #[allow(missing_docs)]
 pub mod motion_blur;

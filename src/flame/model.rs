@@ -127,7 +127,9 @@ impl Default for Xform {
 pub struct Motion {
     /// Whole periods per loop (`motion_frequency`).
     pub frequency: i32,
+    /// The periodic function (`motion_function`).
     pub function: MotionFunction,
+    /// The change at full swing of the function: an xform of amounts (zero where nothing moves).
     pub delta: Xform,
 }
 
