@@ -6,6 +6,8 @@
 //! `threads` for the limits every renderer checks) has no GUI dependency; `io` reads and writes
 //! files on top of it; the egui application lives in `app` behind the `gui` feature.
 
+#![warn(missing_docs)]
+
 pub mod escape;
 pub mod explore;
 pub mod flame;
@@ -15,6 +17,8 @@ pub mod memory;
 pub mod noise;
 pub mod palette;
 pub mod rng;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod sound;
 pub mod surface;
 pub mod threads;

@@ -57,15 +57,20 @@ impl fmt::Display for Source {
 /// The bytes a render may allocate and where that number comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Budget {
+    /// Bytes allowed.
     pub bytes: u64,
+    /// Which limit set them.
     pub source: Source,
 }
 
 /// What the system reports, each part on its own (None: unknown or unlimited).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Limits {
+    /// Memory the system reports as available, in bytes.
     pub available: Option<u64>,
+    /// The address-space limit (`ulimit -v`), in bytes.
     pub address_space: Option<u64>,
+    /// The cgroup (container) memory limit, in bytes.
     pub cgroup: Option<u64>,
 }
 
@@ -118,7 +123,9 @@ pub fn budget_or(configured: Option<u64>) -> Budget {
 pub struct MemoryError {
     /// What was to be made, e.g. "a 30000×30000 escape-time render".
     pub what: String,
+    /// Bytes it would need.
     pub need: u64,
+    /// Bytes allowed, and by which limit.
     pub budget: Budget,
     /// What to change, e.g. "reduce the size or the supersample".
     pub hint: String,

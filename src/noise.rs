@@ -40,6 +40,7 @@ fn fade(t: f64) -> f64 {
 }
 
 impl Perlin {
+    /// Perlin noise whose permutation table is shuffled from `seed`.
     pub fn new(seed: u64) -> Perlin {
         let mut rng = FastRng::new(seed ^ 0x6e6f_6973_6521);
         let mut p: [u8; 256] = std::array::from_fn(|i| i as u8);
@@ -80,11 +81,15 @@ impl Perlin {
 /// Fractional Brownian motion settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fbm {
+    /// Octaves summed (at least 1 is used).
     pub octaves: u32,
+    /// Frequency factor ℓ from one octave to the next.
     pub lacunarity: f64,
+    /// Amplitude factor γ from one octave to the next.
     pub gain: f64,
     /// Base frequency f.
     pub frequency: f64,
+    /// Seed of the noise.
     pub seed: u64,
 }
 
@@ -103,11 +108,13 @@ impl Default for Fbm {
 /// fBm sampler: F(p) = Σ γ^o N(ℓ^o f p) / Σ γ^o, in [−1, 1].
 #[derive(Clone, Debug)]
 pub struct FbmNoise {
+    /// The settings.
     pub params: Fbm,
     perlin: Perlin,
 }
 
 impl FbmNoise {
+    /// A sampler for these settings.
     pub fn new(params: Fbm) -> FbmNoise {
         FbmNoise {
             perlin: Perlin::new(params.seed),
@@ -115,6 +122,7 @@ impl FbmNoise {
         }
     }
 
+    /// F at (x, y), in [−1, 1].
     pub fn sample(&self, x: f64, y: f64) -> f64 {
         let p = &self.params;
         let (mut amp, mut freq, mut sum, mut norm) = (1.0, p.frequency, 0.0, 0.0);

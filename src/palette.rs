@@ -35,8 +35,9 @@ impl Default for Adjust {
     }
 }
 
-/// Largest frequency and blur radius the editor offers.
+/// Largest frequency the editor offers.
 pub const MAX_FREQUENCY: u32 = 16;
+/// Largest blur radius the editor offers, in entries.
 pub const MAX_BLUR: u32 = 64;
 
 fn set_rgb(c: &mut [f64; 4], rgb: [f64; 3]) {
@@ -160,10 +161,12 @@ impl Curve {
         Curve { points: out }
     }
 
+    /// The control points (x, y), x increasing.
     pub fn points(&self) -> &[[f64; 2]] {
         &self.points
     }
 
+    /// Whether the curve maps every value to itself.
     pub fn is_identity(&self) -> bool {
         self.points.iter().all(|p| (p[0] - p[1]).abs() < 1e-12)
     }
@@ -244,13 +247,18 @@ impl Curve {
 /// The four curves of the editor: one for all channels, then one per channel.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Curves {
+    /// Applied to each channel first.
     pub all: Curve,
+    /// Applied to the red channel after `all`.
     pub red: Curve,
+    /// Applied to the green channel after `all`.
     pub green: Curve,
+    /// Applied to the blue channel after `all`.
     pub blue: Curve,
 }
 
 impl Curves {
+    /// Whether all four curves are the identity.
     pub fn is_identity(&self) -> bool {
         [&self.all, &self.red, &self.green, &self.blue]
             .iter()

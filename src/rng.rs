@@ -9,6 +9,7 @@ use rand::{Rng, SeedableRng};
 pub struct FastRng(Xoshiro256PlusPlus);
 
 impl FastRng {
+    /// The generator seeded from `seed`.
     pub fn new(seed: u64) -> Self {
         Self(Xoshiro256PlusPlus::seed_from_u64(seed))
     }
@@ -21,11 +22,13 @@ impl FastRng {
         Self::new(z ^ (z >> 31))
     }
 
+    /// 64 random bits.
     #[inline(always)]
     pub fn u64(&mut self) -> u64 {
         self.0.next_u64()
     }
 
+    /// 32 random bits.
     #[inline(always)]
     pub fn u32(&mut self) -> u32 {
         (self.0.next_u64() >> 32) as u32
@@ -43,6 +46,7 @@ impl FastRng {
         self.f01() * 2.0 - 1.0
     }
 
+    /// A fair coin.
     #[inline(always)]
     pub fn bit(&mut self) -> bool {
         (self.0.next_u64() >> 63) != 0

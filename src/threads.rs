@@ -49,6 +49,7 @@ impl Threads {
         }
     }
 
+    /// Whether more threads were asked for than are used.
     pub fn clamped(&self) -> bool {
         self.requested > self.count
     }

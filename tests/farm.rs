@@ -8,10 +8,10 @@ use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
 use ugnis::flame::Flame;
-use ugnis::flame::histogram::Histogram;
+use ugnis::flame::Histogram;
 use ugnis::flame::render::{Plan, RenderOptions, Renderer, develop, geometry_of};
-use ugnis::flame::state::{Part, RenderState};
 use ugnis::flame::strips;
+use ugnis::flame::{Part, RenderState};
 use ugnis::io::render_state::{self, StateReader};
 
 fn ugnis(args: &[&str]) -> (i32, String, String) {

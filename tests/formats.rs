@@ -72,7 +72,7 @@ fn ifs_library_converts_like_the_committed_fla() {
     let two_d: Vec<_> = from_ifs.into_iter().filter(|f| f.ifs3d.is_none()).collect();
     assert_eq!(two_d.len(), fla.len());
     for (mut a, b) in two_d.into_iter().zip(fla) {
-        ugnis::flame::framing::apply_auto_frame(&mut a);
+        ugnis::flame::apply_auto_frame(&mut a);
         assert_eq!(a.name, b.name);
         assert_eq!(a.center, b.center);
         assert_eq!(a.scale, b.scale);

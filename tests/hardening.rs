@@ -115,17 +115,16 @@ fn huge_escape_views_are_refused_by_the_estimate() {
     // The estimate itself: 24-byte samples plus the image, per pixel.
     let p = ugnis::escape::EscapeParams::new(ugnis::escape::Family::Mandelbrot { power: 2 });
     let view = ugnis::escape::View::new([-0.5, 0.0], 1.5);
-    let need = ugnis::escape::render::estimate_memory(&p, &view, 30000, 30000);
+    let need = ugnis::escape::estimate_memory(&p, &view, 30000, 30000);
     assert!(need > 20_000_000_000, "{need}");
-    let e =
-        ugnis::escape::render::check_memory(&p, &view, 30000, 30000, Some(1 << 30)).unwrap_err();
+    let e = ugnis::escape::check_memory(&p, &view, 30000, 30000, Some(1 << 30)).unwrap_err();
     assert!(e.to_string().contains("configured"), "{e}");
-    assert!(ugnis::escape::render::check_memory(&p, &view, 640, 480, Some(1 << 30)).is_ok());
+    assert!(ugnis::escape::check_memory(&p, &view, 640, 480, Some(1 << 30)).is_ok());
     // Histogram colouring and deep zooms add per-iteration tables.
     let mut h = p.clone();
     h.coloring = ugnis::escape::Coloring::Histogram;
     h.max_iter = 100_000_000;
-    assert!(ugnis::escape::render::estimate_memory(&h, &view, 64, 48) > 1_000_000_000);
+    assert!(ugnis::escape::estimate_memory(&h, &view, 64, 48) > 1_000_000_000);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -2,7 +2,7 @@
 //! 1000 seeds, batches are reproducible, transform counts stay in range.
 
 use rayon::prelude::*;
-use ugnis::flame::chaos::Chaos;
+use ugnis::flame::Chaos;
 use ugnis::flame::random::{self, RandomOptions, SymmetryMode, VariationMode};
 use ugnis::flame::rng::FastRng;
 use ugnis::flame::{Flame, NewFlame, variations};

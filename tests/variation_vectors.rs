@@ -11,7 +11,7 @@
 use std::collections::HashMap;
 use std::io::Read;
 
-use ugnis::flame::affine::Affine;
+use ugnis::flame::Affine;
 use ugnis::flame::rng::FastRng;
 use ugnis::flame::variations::{self, Acc, Form, Prepared, VarId};
 

@@ -7,54 +7,91 @@ use crate::flame::variations::{self, VarId};
 /// Every command of the menus, toolbar and shortcuts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Action {
+    /// File ▸ New: a new flame.
     New,
+    /// File ▸ Open…
     Open,
+    /// File ▸ Save.
     Save,
+    /// File ▸ Save As…
     SaveAs,
+    /// File ▸ Load gradient…
     LoadGradient,
+    /// File ▸ Create gradient from image…
     GradientFromImage,
+    /// File ▸ Export image…
     Export,
     /// Continue a saved render state in the export window.
     ResumeState,
+    /// File ▸ Random batch: a file of random flames.
     RandomBatch,
+    /// File ▸ Exit.
     Exit,
+    /// Edit ▸ Undo.
     Undo,
+    /// Edit ▸ Redo.
     Redo,
+    /// Edit ▸ Copy flame (XML).
     CopyFlame,
+    /// Edit ▸ Paste flame (XML).
     PasteFlame,
+    /// View ▸ Toolbar: show or hide it.
     ToggleToolbar,
+    /// View ▸ Status bar: show or hide it.
     ToggleStatusBar,
+    /// View ▸ File contents: show or hide the list of the file's flames.
     ToggleFilePanel,
+    /// Tools ▸ Editor: show or hide the triangle editor.
     ToggleEditor,
+    /// View ▸ Fit preview.
     FitPreview,
+    /// View ▸ Zoom in.
     ZoomIn,
+    /// View ▸ Zoom out.
     ZoomOut,
     /// None: "Random" (one of the seven per transform).
     SetVariation(Option<VarId>),
+    /// Tools ▸ Gradient.
     ShowGradient,
+    /// Tools ▸ Mutations…
     ShowMutations,
+    /// Tools ▸ Random flame.
     RandomFlame,
+    /// Tools ▸ Animate: start or stop the animation.
     ToggleAnimate,
     /// Play flam3-style in-betweens from the current flame to the next one of the file.
     ToggleMorph,
+    /// Tools ▸ Random weights.
     RandomWeights,
+    /// Tools ▸ Equal weights.
     EqualWeights,
+    /// Tools ▸ Weights from triangle areas.
     AreaWeights,
+    /// Tools ▸ Options…
     ShowOptions,
+    /// Tools ▸ Palette editor…
     ShowPaletteEditor,
+    /// Tools ▸ Variations filter…
     ShowVariationFilter,
     /// Random flames draw their variations from the variations filter.
     UseVariationFilter,
+    /// Help ▸ Keyboard shortcuts.
     ShowShortcuts,
+    /// Help ▸ What the panels do.
     ShowPanelHelp,
+    /// Help ▸ About ugnis.
     ShowAbout,
 }
 
 /// A menu entry: menu, label, action, shortcut.
 pub struct MenuItem {
+    /// The menu it is in ("File", "Edit", …).
     pub menu: &'static str,
+    /// Its label.
     pub label: &'static str,
+    /// What it does.
     pub action: Action,
+    /// Its keyboard shortcut, if any.
     pub shortcut: Option<KeyboardShortcut>,
 }
 

@@ -8,8 +8,11 @@ use super::actions::{EXTRA_SHORTCUTS, MENU, MENUS};
 /// Which help window is open.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum HelpPage {
+    /// Keyboard shortcuts.
     Shortcuts,
+    /// What the panels do.
     Panels,
+    /// About ugnis.
     About,
 }
 

@@ -18,33 +18,48 @@ use crate::gradient::{self, Gradient};
 #[serde(default)]
 pub struct Options {
     // Display
+    /// Quality (samples per pixel) of new flames.
     pub main_quality: f64,
+    /// Gamma of new flames.
     pub main_gamma: f64,
+    /// Brightness of new flames.
     pub main_brightness: f64,
+    /// Contrast of new flames.
     pub main_contrast: f64,
+    /// Quality of the preview's first pass, and of the whole preview while dragging.
     pub preview_quality: f64,
+    /// Gamma of the preview, as set in the Options dialog.
     pub preview_gamma: f64,
+    /// Quality of the preview while an animation or morph runs.
     pub animation_quality: f64,
     // Random
+    /// Fewest xforms of a random flame.
     pub min_xforms: usize,
+    /// Most xforms of a random flame.
     pub max_xforms: usize,
+    /// Random flames get a random gradient.
     pub random_gradient: bool,
+    /// Probabilities of Fraktalai's seven variations in random flames.
     pub probabilities: [f64; 7],
     /// Symmetry of random flames: none, flam3's random order, or a fixed order.
     #[serde(with = "symmetry_text")]
     pub symmetry: SymmetryMode,
     /// Chance of a random post transform per transform, and of a final transform.
     pub post_probability: f64,
+    /// Chance of a final transform in a random flame.
     pub final_probability: f64,
     // General
+    /// Name of the built-in gradient of new flames.
     pub default_gradient: String,
     /// Largest side of the live preview, pixels.
     pub preview_size: u32,
     /// Render threads, 0 = all cores.
     pub threads: usize,
+    /// Set xform weights by the determinant rule after triangle edits.
     pub auto_weights: bool,
-    /// Size of new flames.
+    /// Width of new flames, pixels.
     pub width: u32,
+    /// Height of new flames, pixels.
     pub height: u32,
     /// The variations filter: the names (NAME, pre_NAME, post_NAME) random flames may use.
     pub variation_filter: Vec<String>,
@@ -172,6 +187,7 @@ impl Options {
         self.recent_files.truncate(RECENT_FILES);
     }
 
+    /// The gradient of new flames (the default gradient if the name is unknown).
     pub fn gradient(&self) -> Gradient {
         gradient::builtin_named(&self.default_gradient).unwrap_or_else(gradient::default_gradient)
     }
@@ -189,6 +205,7 @@ impl Options {
         }
     }
 
+    /// The options of random flames, with these variations.
     pub fn random_options(&self, variations: VariationMode) -> RandomOptions {
         RandomOptions {
             min_xforms: self.min_xforms,
@@ -258,6 +275,7 @@ impl Options {
         }
     }
 
+    /// Write the options to the configuration file.
     pub fn save(&self) -> Result<(), String> {
         let p = Self::path().ok_or("no configuration directory (HOME is not set)")?;
         if let Some(d) = p.parent() {

@@ -26,16 +26,22 @@ use crate::io::{self, View};
 pub enum Start {
     /// A random flame from this seed.
     Random(u64),
+    /// This file, in the view its kind opens in.
     File(PathBuf),
+    /// These flames, as a new unsaved document.
     Flames(Vec<crate::flame::Flame>),
 }
 
 /// Which view of the main window is shown.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tab {
+    /// Flames and IFS.
     Flame,
+    /// Escape-time fractals.
     Escape,
+    /// Textured Bézier scenes.
     Scene,
+    /// The teaching topics.
     Explore,
 }
 
@@ -54,13 +60,21 @@ pub(super) enum Pending {
 
 /// The application.
 pub struct UgnisApp {
+    /// The persisted options.
     pub options: Options,
+    /// The view shown.
     pub tab: Tab,
+    /// The flame tab.
     pub flame: FlameTab,
+    /// The escape-time tab.
     pub escape: EscapeTab,
+    /// The scene tab.
     pub scene: SceneTab,
+    /// The Explore tab.
     pub explore: ExploreTab,
+    /// The toolbar is shown.
     pub show_toolbar: bool,
+    /// The status bar is shown.
     pub show_status: bool,
     pub(super) browser: Option<FileBrowser>,
     pub(super) pending: Option<Pending>,

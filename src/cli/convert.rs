@@ -43,7 +43,7 @@ pub fn run(a: ConvertArgs) -> Result<()> {
             }
             // IFS entries have no camera: frame them now, so other programs get one.
             if from_ifs && f.ifs3d.is_none() {
-                ugnis::flame::framing::apply_auto_frame(&mut f);
+                ugnis::flame::apply_auto_frame(&mut f);
             }
             flames.push(f);
         }

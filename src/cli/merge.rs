@@ -7,8 +7,8 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 
 use ugnis::flame::OutputFormat;
+use ugnis::flame::RenderState;
 use ugnis::flame::render::{RenderOptions, develop_rows, geometry_of};
-use ugnis::flame::state::RenderState;
 use ugnis::flame::strips;
 use ugnis::io::render_state::StateReader;
 use ugnis::io::strip_png::StripFiles;

@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
+use ugnis::flame::Part;
 use ugnis::flame::render::{MAX_QUALITY, MIN_QUALITY, Plan, RenderOptions, Renderer, short_num};
-use ugnis::flame::state::Part;
 use ugnis::flame::strips::{self, Strip};
 use ugnis::flame::{Flame, OutputFormat};
 use ugnis::io::flam3_xml::{LibrarySource, ReadOptions};
@@ -160,7 +160,7 @@ impl Source {
             Source::Fresh(f, _) => {
                 let mut f = (**f).clone();
                 if !f.has_camera {
-                    ugnis::flame::framing::apply_auto_frame(&mut f);
+                    ugnis::flame::apply_auto_frame(&mut f);
                 }
                 f
             }

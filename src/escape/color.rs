@@ -21,6 +21,7 @@ pub enum Coloring {
 }
 
 impl Coloring {
+    /// The colouring's name as written in view files and on the command line.
     pub fn name(self) -> &'static str {
         match self {
             Coloring::Bands => "bands",
@@ -31,6 +32,7 @@ impl Coloring {
         }
     }
 
+    /// The colouring a name or one of its aliases stands for (any case); None for an unknown name.
     pub fn from_name(s: &str) -> Option<Coloring> {
         Some(match s.trim().to_ascii_lowercase().as_str() {
             "bands" | "iter" | "iterations" => Coloring::Bands,
@@ -42,6 +44,7 @@ impl Coloring {
         })
     }
 
+    /// Every colouring, in menu order.
     pub const ALL: [Coloring; 5] = [
         Coloring::Bands,
         Coloring::Smooth,
@@ -62,11 +65,13 @@ impl Coloring {
 /// Palette settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Palette {
+    /// The gradient the colours are taken from.
     pub gradient: Gradient,
     /// Fraction of the gradient added to every index (0–1).
     pub offset: f64,
     /// Gradient entries per iteration (density).
     pub repeat: f64,
+    /// RGB colour of the points that never escape (or, for Newton, never converge).
     pub inside: [u8; 3],
 }
 

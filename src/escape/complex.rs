@@ -2,33 +2,44 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// A complex number `re + i·im` in f64.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct C {
+    /// Real part.
     pub re: f64,
+    /// Imaginary part.
     pub im: f64,
 }
 
 impl C {
+    /// Zero.
     pub const ZERO: C = C { re: 0.0, im: 0.0 };
+    /// One.
     pub const ONE: C = C { re: 1.0, im: 0.0 };
+    /// The imaginary unit i.
     pub const I: C = C { re: 0.0, im: 1.0 };
 
+    /// `re + i·im`.
     pub const fn new(re: f64, im: f64) -> C {
         C { re, im }
     }
 
+    /// |z|², the squared modulus.
     pub fn norm2(self) -> f64 {
         self.re * self.re + self.im * self.im
     }
 
+    /// |z|, the modulus.
     pub fn abs(self) -> f64 {
         self.re.hypot(self.im)
     }
 
+    /// The complex conjugate `re − i·im`.
     pub fn conj(self) -> C {
         C::new(self.re, -self.im)
     }
 
+    /// Whether both parts are finite (neither NaN nor infinite).
     pub fn is_finite(self) -> bool {
         self.re.is_finite() && self.im.is_finite()
     }
@@ -42,6 +53,7 @@ impl C {
         r
     }
 
+    /// r·e^(iθ): the number with modulus `r` and argument `theta` (radians).
     pub fn from_polar(r: f64, theta: f64) -> C {
         let (s, c) = theta.sin_cos();
         C::new(r * c, r * s)

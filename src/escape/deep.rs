@@ -138,6 +138,7 @@ impl Series {
 }
 
 /// One pixel at offset `dc` from the reference point, without the series approximation.
+#[cfg(test)]
 pub fn iterate_perturbed(r: &Reference, dc: C, s: &IterSettings) -> Sample {
     iterate_perturbed_from(r, &Series::NONE, dc, s)
 }

@@ -7,9 +7,13 @@ use crate::gradient;
 /// A saved escape-time view.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EscapeDoc {
+    /// The fractal: family, iteration limit, colouring and palette.
     pub params: EscapeParams,
+    /// The part of the plane shown.
     pub view: View,
+    /// Picture width in pixels.
     pub width: u32,
+    /// Picture height in pixels.
     pub height: u32,
     /// How the gradient was named in the file (a built-in name or a file path), for writing
     /// it back.

@@ -9,20 +9,41 @@ use super::warp::Warp;
 #[allow(clippy::large_enum_variant)]
 pub enum Family {
     /// z₀ = 0, z ← z^m + c, c = pixel (m = 2: the Mandelbrot set).
-    Mandelbrot { power: u32 },
+    Mandelbrot {
+        /// The exponent m.
+        power: u32,
+    },
     /// z₀ = pixel, z ← z^m + c.
-    Julia { power: u32, c: C },
+    Julia {
+        /// The exponent m.
+        power: u32,
+        /// The constant c.
+        c: C,
+    },
     /// Newton's method for a polynomial given by its coefficients, highest degree first.
-    Newton { coeffs: Vec<C> },
+    Newton {
+        /// The polynomial's coefficients, highest degree first.
+        coeffs: Vec<C>,
+    },
     /// Parameter plane of λz(1 − z) (or Köse's λz(z − 1)), λ = pixel, from z₀.
-    Logistic { z0: C, kose: bool },
+    Logistic {
+        /// The starting value z₀.
+        z0: C,
+        /// Iterate Köse's λz(z − 1) instead of λz(1 − z).
+        kose: bool,
+    },
     /// Julia set of z³ + z + p.
-    Cubic { p: C },
+    Cubic {
+        /// The parameter p.
+        p: C,
+    },
     /// Warped quadratic Julia texture (Borowicz).
     WarpedJulia(Warp),
 }
 
 impl Family {
+    /// The family's name as written in view files: "mandelbrot" (power 2), "multibrot", "julia",
+    /// "newton", "logistic", "cubic" or "warped-julia".
     pub fn name(&self) -> &'static str {
         match self {
             Family::Mandelbrot { power: 2 } => "mandelbrot",
@@ -107,6 +128,7 @@ pub struct Sample {
 }
 
 impl Sample {
+    /// A point that did not escape within `max_iter` iterations.
     pub fn inside(max_iter: u32) -> Sample {
         Sample {
             n: max_iter,
@@ -117,6 +139,7 @@ impl Sample {
         }
     }
 
+    /// A point that escaped before the first iteration.
     pub fn escaped_at_zero() -> Sample {
         Sample {
             n: 0,
@@ -188,7 +211,6 @@ impl IterSettings {
 #[derive(Clone, Debug)]
 pub struct NewtonSystem {
     pub coeffs: Vec<C>,
-    pub deriv: Vec<C>,
     pub roots: Vec<C>,
 }
 
@@ -261,18 +283,8 @@ impl NewtonSystem {
             .position(|c| c.norm2() > 0.0)
             .unwrap_or(coeffs.len());
         let coeffs = coeffs[first..].to_vec();
-        let deg = coeffs.len().saturating_sub(1);
-        let deriv = coeffs[..deg]
-            .iter()
-            .enumerate()
-            .map(|(k, a)| *a * (deg - k) as f64)
-            .collect();
         let roots = polynomial_roots(&coeffs);
-        NewtonSystem {
-            coeffs,
-            deriv,
-            roots,
-        }
+        NewtonSystem { coeffs, roots }
     }
 
     /// One Newton step N(z) = z − g/g′ (None where g′ = 0 or a value is not finite).

@@ -6,23 +6,26 @@
 // count as escaped, which `r2 > bailout²` would not do.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-pub mod color;
-pub mod complex;
-pub mod dd;
-pub mod deep;
-pub mod doc;
-pub mod family;
+mod color;
+mod complex;
+pub(crate) mod dd;
+mod deep;
+mod doc;
+pub(crate) mod family;
 mod guess;
 mod job;
-pub mod lanes;
+mod lanes;
 mod params;
-pub mod render;
+pub(crate) mod render;
 mod view;
-pub mod warp;
+mod warp;
 
 pub use color::{Coloring, Palette};
 pub use complex::C;
 pub use doc::EscapeDoc;
 pub use family::{Family, Sample};
-pub use render::{EscapeError, EscapeParams, EscapeRenderer, Fill, View, render};
+pub use render::{
+    EscapeError, EscapeParams, EscapeRenderer, Fill, View, check_memory, check_view_for,
+    estimate_memory, render,
+};
 pub use warp::{Preset, Sampling, Warp};

@@ -27,17 +27,26 @@ pub enum Fill {
 /// Everything that defines an escape-time picture except its size and view.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EscapeParams {
+    /// What is iterated.
     pub family: Family,
+    /// Iteration limit: a point still bounded after this many iterations counts as inside.
     pub max_iter: u32,
+    /// How the samples become colours.
     pub coloring: Coloring,
     /// Escape radius; None: the family's default for the colouring.
     pub bailout: Option<f64>,
+    /// Stop orbits found to be cycling (within a thousandth of a pixel) early, as inside; not used
+    /// for Newton, warped textures, distance colouring or deep zoom.
     pub periodicity: bool,
+    /// Every pixel computed, or Mariani–Silver block filling.
     pub fill: Fill,
+    /// Gradient, offset, repeat and inside colour.
     pub palette: Palette,
 }
 
 impl EscapeParams {
+    /// The family's defaults: 256 iterations, basins for Newton, bands for warped textures, smooth
+    /// colouring otherwise (four gradient entries per iteration), periodicity checking on.
     pub fn new(family: Family) -> EscapeParams {
         let coloring = if matches!(family, Family::Newton { .. }) {
             Coloring::Basins
@@ -67,6 +76,7 @@ impl EscapeParams {
         }
     }
 
+    /// The escape radius used: the one set, or the family's default for the colouring.
     pub fn bailout(&self) -> f64 {
         self.bailout
             .unwrap_or_else(|| self.family.default_bailout(self.coloring.smooth()))
@@ -76,20 +86,35 @@ impl EscapeParams {
 /// Why a view cannot be rendered.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum EscapeError {
+    /// The pixel is too small for f64 arithmetic at this centre.
     #[error(
         "zoomed in to the limit of 64-bit floating point (pixel {pixel:.3e} at |centre| {scale:.3e}); \
          zoom out (deep zoom is available for z² + c: the Mandelbrot set and its Julia sets)"
     )]
-    PrecisionLimit { pixel: f64, scale: f64 },
+    PrecisionLimit {
+        /// Pixel size in world units.
+        pixel: f64,
+        /// Scale of the centre the pixel is compared with: the largest of 1, |x| and |y|.
+        scale: f64,
+    },
+    /// The pixel is too small even for perturbation around a double-double centre.
     #[error(
         "zoomed in to the deep-zoom limit (pixel {pixel:.3e} at |centre| {scale:.3e}, \
          double-double precision); zoom out"
     )]
-    DeepLimit { pixel: f64, scale: f64 },
+    DeepLimit {
+        /// Pixel size in world units.
+        pixel: f64,
+        /// Scale of the centre the pixel is compared with: the largest of 1, |x| and |y|.
+        scale: f64,
+    },
+    /// The picture size (width, height) is outside 1–30000 pixels a side.
     #[error("image size {0}x{1} must be between 1x1 and 30000x30000")]
     BadSize(u32, u32),
+    /// A setting is out of range (the message says which).
     #[error("{0}")]
     Settings(String),
+    /// The render would not fit in the memory allowed.
     #[error(transparent)]
     OutOfMemory(#[from] crate::memory::MemoryError),
 }

@@ -13,8 +13,7 @@ use super::guess::mariani_silver;
 use super::job::Job;
 
 pub use super::params::{
-    DD_LIMIT, DEEP_BELOW, EscapeError, EscapeParams, F64_LIMIT, Fill, check_memory, check_view,
-    check_view_for, estimate_memory, is_deep, supports_deep_zoom,
+    EscapeError, EscapeParams, Fill, check_memory, check_view_for, estimate_memory, is_deep,
 };
 pub use super::view::View;
 
@@ -31,6 +30,8 @@ pub struct EscapeRenderer {
 }
 
 impl EscapeRenderer {
+    /// Check the view, the settings and the memory and prepare a render of `w`×`h` pixels (nothing
+    /// computed yet).
     pub fn new(params: &EscapeParams, view: View, w: u32, h: u32) -> Result<Self, EscapeError> {
         let job = Job::new(params, view, w, h)?;
         Ok(EscapeRenderer {
@@ -41,6 +42,7 @@ impl EscapeRenderer {
         })
     }
 
+    /// Number of passes the render takes (4 coarse-to-fine passes, 1 with block filling).
     pub fn passes(&self) -> usize {
         if self.job.params.fill == Fill::Guess {
             1
@@ -49,18 +51,22 @@ impl EscapeRenderer {
         }
     }
 
+    /// Whether every pass has run, or the render was cancelled.
     pub fn is_done(&self) -> bool {
         self.pass >= self.passes() || self.cancelled
     }
 
+    /// Fraction of the passes done (0–1).
     pub fn fraction(&self) -> f64 {
         self.pass as f64 / self.passes() as f64
     }
 
+    /// The samples computed so far, row by row from the top.
     pub fn samples(&self) -> &[Sample] {
         &self.samples
     }
 
+    /// Picture size (width, height) in pixels.
     pub fn size(&self) -> (u32, u32) {
         (self.job.w, self.job.h)
     }

@@ -9,12 +9,16 @@ use super::dd::Dd;
 /// deep zoom needs them).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct View {
+    /// High part of the centre (x, y) in the complex plane.
     pub center: [f64; 2],
+    /// Low part of the centre (zero unless a deep zoom needs it).
     pub center_lo: [f64; 2],
+    /// Half the visible height in world units.
     pub half_height: f64,
 }
 
 impl View {
+    /// A view centred on `center` showing `half_height` above and below it.
     pub fn new(center: [f64; 2], half_height: f64) -> View {
         View {
             center,

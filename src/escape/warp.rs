@@ -8,19 +8,29 @@ use crate::noise::{Fbm, FbmNoise};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Sampling {
     /// p = s(u − ½) + i·s(v − ½).
-    Rect { scale: f64 },
+    Rect {
+        /// Side s of the square sampled, in world units.
+        scale: f64,
+    },
     /// p = r·v·e^{i2πu}: periodic in u, seamless around a cylinder or dome.
-    Polar { radius: f64 },
+    Polar {
+        /// Radius r of the disc sampled, in world units.
+        radius: f64,
+    },
 }
 
 /// A warped-Julia texture.
 #[derive(Clone, Debug)]
 pub struct Warp {
+    /// The Julia constant c of z ← z² + c.
     pub c: C,
+    /// The Möbius warp's α (|α| ≠ 1; 0 leaves p unwarped).
     pub alpha: C,
     /// Turbulence amount λ.
     pub lambda: f64,
+    /// The fBm turbulence W added to the warped start point.
     pub fbm: Fbm,
+    /// How texels sample the start point p.
     pub sampling: Sampling,
     /// Use W − (½ + ½i) so that turbulence does not shift the set.
     pub zero_mean: bool,
@@ -51,12 +61,17 @@ pub enum WarpError {
 /// galaxy.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Preset {
+    /// A polar-sampled Julia set, no warp.
     PolarJulia,
+    /// A polar-sampled Julia set warped by α = −0.3.
     WarpedJulia,
+    /// The warped Julia set with turbulence λ = 0.2 (the galaxy).
     Galaxy,
 }
 
 impl Warp {
+    /// A warped-Julia texture; fails when |α| is within 1e-9 of 1 or the sampling radius or scale
+    /// is not positive and finite.
     pub fn new(
         c: C,
         alpha: C,
@@ -96,6 +111,7 @@ impl Warp {
         })
     }
 
+    /// The texture of a preset (c = −0.8 + 0.156i, polar sampling of radius 1).
     pub fn preset(p: Preset) -> Warp {
         let c = C::new(-0.8, 0.156);
         let polar = Sampling::Polar { radius: 1.0 };
@@ -125,6 +141,7 @@ impl Warp {
         self.point_uv(u, v)
     }
 
+    /// The start point p at texture coordinates (u, v), both 0–1, v counted from the bottom.
     pub fn point_uv(&self, u: f64, v: f64) -> C {
         match self.sampling {
             Sampling::Rect { scale } => C::new(scale * (u - 0.5), scale * (v - 0.5)),

@@ -10,16 +10,22 @@ pub const MAX_STATS_STEP: u32 = 40;
 /// A classic construction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Construction {
+    /// The middle-thirds Cantor set.
     Cantor,
+    /// The Koch curve on a unit segment.
     KochCurve,
+    /// Three Koch curves on the sides of an equilateral triangle.
     KochSnowflake,
+    /// The Sierpinski triangle (gasket).
     SierpinskiTriangle,
+    /// The Sierpinski carpet.
     SierpinskiCarpet,
 }
 
 /// The numbers of one step of a construction.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stats {
+    /// The step these numbers are for (0: the starting figure).
     pub step: u32,
     /// Segments, triangles or squares.
     pub pieces: u128,
@@ -60,6 +66,7 @@ impl Geometry {
         }
     }
 
+    /// Whether there are no pieces.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -68,6 +75,7 @@ impl Geometry {
 const SQRT3: f64 = 1.732_050_807_568_877_2;
 
 impl Construction {
+    /// Every construction, in menu order.
     pub const ALL: [Construction; 5] = [
         Construction::Cantor,
         Construction::KochCurve,
@@ -76,6 +84,7 @@ impl Construction {
         Construction::SierpinskiCarpet,
     ];
 
+    /// The construction's name, as shown.
     pub fn name(self) -> &'static str {
         match self {
             Construction::Cantor => "Cantor set",

@@ -14,14 +14,20 @@ pub const MAX_CURVE_POINTS: usize = 4_000_000;
 /// One map w_i(x, y) = (a x + e, c x + d y + f).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FifMap {
+    /// Coefficient of x in x′.
     pub a: f64,
+    /// Translation of x.
     pub e: f64,
+    /// Coefficient of x in y′.
     pub c: f64,
+    /// Coefficient of y in y′: the vertical scaling d_i.
     pub d: f64,
+    /// Translation of y.
     pub f: f64,
 }
 
 impl FifMap {
+    /// The image w_i(p).
     #[inline]
     pub fn apply(&self, p: P2) -> P2 {
         [
@@ -30,6 +36,7 @@ impl FifMap {
         ]
     }
 
+    /// The same map as a general affine map.
     pub fn affine(&self) -> Affine {
         Affine::new(self.a, 0.0, self.c, self.d, self.e, self.f)
     }
@@ -120,14 +127,17 @@ impl Fif {
         Ok(())
     }
 
+    /// The data points (x_i, F_i), x increasing.
     pub fn points(&self) -> &[P2] {
         &self.points
     }
 
+    /// The vertical scalings d_1..d_N, one per interval.
     pub fn scalings(&self) -> &[f64] {
         &self.scalings
     }
 
+    /// The maps w_1..w_N, one per interval.
     pub fn maps(&self) -> &[FifMap] {
         &self.maps
     }

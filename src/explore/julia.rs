@@ -58,10 +58,6 @@ impl InverseJulia {
         })
     }
 
-    pub fn c(&self) -> C {
-        self.c
-    }
-
     /// One inverse step (not skipped): the new point.
     #[inline]
     pub fn step(&mut self) -> C {
@@ -83,11 +79,6 @@ impl InverseJulia {
         }
         let z = self.step();
         [z.re, z.im]
-    }
-
-    /// Steps taken so far.
-    pub fn steps(&self) -> u64 {
-        self.steps
     }
 }
 

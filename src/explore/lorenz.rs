@@ -4,6 +4,7 @@
 
 use super::{ExploreError, P2, check_range};
 
+/// A point of space (x, y, z).
 pub type P3 = [f64; 3];
 
 /// Default step (0.005 for high-quality plots).
@@ -18,8 +19,11 @@ pub const MAX_STEPS: u64 = 100_000_000;
 /// The parameters σ, r, b.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lorenz {
+    /// σ, the Prandtl number.
     pub sigma: f64,
+    /// r, the relative Rayleigh number.
     pub r: f64,
+    /// b, the geometric factor.
     pub b: f64,
 }
 
@@ -117,14 +121,17 @@ pub struct Orbit {
 }
 
 impl Orbit {
+    /// The current point.
     pub fn point(&self) -> P3 {
         self.p
     }
 
+    /// Time integrated so far (steps × step size).
     pub fn time(&self) -> f64 {
         self.steps as f64 * self.h
     }
 
+    /// Integration steps taken so far.
     pub fn steps(&self) -> u64 {
         self.steps
     }
@@ -152,7 +159,9 @@ impl Iterator for Orbit {
 /// Two orbits integrated together.
 #[derive(Clone, Debug)]
 pub struct Twin {
+    /// The orbit from the first start.
     pub a: Orbit,
+    /// The orbit from the second start.
     pub b: Orbit,
 }
 
@@ -177,6 +186,7 @@ impl Twin {
         ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
     }
 
+    /// Time integrated so far.
     pub fn time(&self) -> f64 {
         self.a.time()
     }
@@ -192,10 +202,16 @@ pub enum View {
     /// Along x: (y, z).
     Yz,
     /// Turned by `yaw` about z, then tilted by `pitch` about x (radians), seen along the new y.
-    Turned { yaw: f64, pitch: f64 },
+    Turned {
+        /// Turn about z, radians.
+        yaw: f64,
+        /// Tilt about x, radians.
+        pitch: f64,
+    },
 }
 
 impl View {
+    /// The plane point showing `p`.
     pub fn project(self, p: P3) -> P2 {
         match self {
             View::Xy => [p[0], p[1]],
@@ -217,16 +233,23 @@ impl View {
 /// What [`Lorenz::render`] draws.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderOptions {
+    /// The start of the orbit.
     pub start: P3,
+    /// Integration step size.
     pub h: f64,
     /// Time integrated before drawing starts.
     pub transient: f64,
     /// Time drawn after the transient.
     pub time: f64,
+    /// How the orbit is projected onto the picture.
     pub view: View,
+    /// Picture width in pixels.
     pub width: u32,
+    /// Picture height in pixels.
     pub height: u32,
+    /// Colour of the orbit (RGB).
     pub color: [u8; 3],
+    /// Colour of the background (RGB).
     pub background: [u8; 3],
 }
 

@@ -6,7 +6,7 @@
 //!
 //! Everything here is engine code: no GUI and no file formats (Fractint `.l` files and SVG
 //! output live in `io`). Live views are served by incremental sources a window can pull a few
-//! thousand items from per frame: [`ifs::ChaosGame`] and [`julia::InverseJulia`] yield points,
+//! thousand items from per frame: [`ifs::ChaosGame`] and `julia::InverseJulia` yield points,
 //! [`lsystem::Segments`] yields turtle segments, [`lorenz::Orbit`] yields integration steps,
 //! and every construction reports the numbers of its current step.
 
@@ -25,17 +25,25 @@ pub enum ExploreError {
     /// A number outside its allowed range.
     #[error("{what} is {value}; it must be between {min} and {max}")]
     OutOfRange {
+        /// What the number is.
         what: &'static str,
+        /// The number given.
         value: f64,
+        /// Smallest allowed value.
         min: f64,
+        /// Largest allowed value.
         max: f64,
     },
     /// A computation that would produce more than its limit allows.
     #[error("{what}: {} would be produced; the limit is {limit:.0}{hint}", big(*count))]
     TooLarge {
+        /// What would be produced.
         what: String,
+        /// How many would be produced.
         count: f64,
+        /// How many are allowed.
         limit: f64,
+        /// Advice appended to the message (may be empty).
         hint: String,
     },
     /// Any other invalid input, with a message saying what was expected.
@@ -69,10 +77,12 @@ pub fn check_range(what: &'static str, value: f64, min: f64, max: f64) -> Result
 /// A point of the plane.
 pub type P2 = [f64; 2];
 
-/// Axis-aligned bounds of a point set: `[xmin, ymin, xmax, ymax]`.
+/// Axis-aligned bounds of a point set.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bounds {
+    /// The lower-left corner (xmin, ymin).
     pub min: P2,
+    /// The upper-right corner (xmax, ymax).
     pub max: P2,
 }
 
@@ -83,6 +93,7 @@ impl Bounds {
         max: [f64::NEG_INFINITY, f64::NEG_INFINITY],
     };
 
+    /// Extend the bounds to hold `p` (non-finite points are ignored).
     pub fn add(&mut self, p: P2) {
         if p[0].is_finite() && p[1].is_finite() {
             self.min[0] = self.min[0].min(p[0]);
@@ -92,6 +103,7 @@ impl Bounds {
         }
     }
 
+    /// The bounds of the finite points among `points`.
     pub fn of(points: impl IntoIterator<Item = P2>) -> Bounds {
         let mut b = Bounds::EMPTY;
         for p in points {
@@ -100,14 +112,17 @@ impl Bounds {
         b
     }
 
+    /// Whether no point was added.
     pub fn is_empty(&self) -> bool {
         !(self.min[0] <= self.max[0] && self.min[1] <= self.max[1])
     }
 
+    /// xmax − xmin.
     pub fn width(&self) -> f64 {
         self.max[0] - self.min[0]
     }
 
+    /// ymax − ymin.
     pub fn height(&self) -> f64 {
         self.max[1] - self.min[1]
     }

@@ -42,10 +42,13 @@ pub fn check_size(width: u32, height: u32) -> Result<(), ExploreError> {
 /// centres at integers) that fits given bounds into the image with a margin.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Framing {
+    /// Pixels per world unit.
     pub scale: f64,
     /// World point shown at the image centre.
     pub center: P2,
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
 }
 
@@ -82,6 +85,7 @@ impl Framing {
         }
     }
 
+    /// The pixel coordinates (pixel centres at integers, y down) of world point `p`.
     #[inline]
     pub fn pixel_from_world(&self, p: P2) -> P2 {
         [
@@ -90,6 +94,8 @@ impl Framing {
         ]
     }
 
+    /// The world point at pixel coordinates `q` (the inverse of
+    /// [`Framing::pixel_from_world`]).
     #[inline]
     pub fn world_from_pixel(&self, q: P2) -> P2 {
         [
@@ -127,10 +133,13 @@ pub fn palette_color(index: i64) -> [u8; 3] {
 /// An 8-bit RGB image to draw anti-aliased lines on.
 #[derive(Clone, Debug)]
 pub struct Canvas {
+    /// The picture drawn so far.
     pub image: RgbImage,
 }
 
 impl Canvas {
+    /// A `width`×`height` canvas filled with `background`; fails for a size the memory or
+    /// the pixel limit does not allow.
     pub fn new(width: u32, height: u32, background: [u8; 3]) -> Result<Canvas, ExploreError> {
         check_size(width, height)?;
         Ok(Canvas {
@@ -235,12 +244,17 @@ impl FractPos for f64 {
 /// Hit counts per pixel, shown with a logarithmic scale.
 #[derive(Clone, Debug)]
 pub struct Density {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// Hits per pixel, row by row from the top.
     pub counts: Vec<u32>,
 }
 
 impl Density {
+    /// A `width`×`height` grid of zero counts; fails for a size the memory or the pixel limit
+    /// does not allow.
     pub fn new(width: u32, height: u32) -> Result<Density, ExploreError> {
         check_size(width, height)?;
         Ok(Density {

@@ -3,11 +3,17 @@
 /// An affine map in the Fractint/Fraktalai letters: x' = a·x + b·y + e, y' = c·x + d·y + f.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Affine {
+    /// Coefficient of x in x'.
     pub a: f64,
+    /// Coefficient of y in x'.
     pub b: f64,
+    /// Coefficient of x in y'.
     pub c: f64,
+    /// Coefficient of y in y'.
     pub d: f64,
+    /// Translation in x.
     pub e: f64,
+    /// Translation in y.
     pub f: f64,
 }
 
@@ -18,6 +24,7 @@ impl Default for Affine {
 }
 
 impl Affine {
+    /// The map that changes nothing.
     pub const IDENTITY: Affine = Affine {
         a: 1.0,
         b: 0.0,
@@ -27,10 +34,12 @@ impl Affine {
         f: 0.0,
     };
 
+    /// The map with these letters, in the order a b c d e f.
     pub const fn new(a: f64, b: f64, c: f64, d: f64, e: f64, f: f64) -> Self {
         Self { a, b, c, d, e, f }
     }
 
+    /// The image (x', y') of (x, y).
     #[inline(always)]
     pub fn apply(&self, x: f64, y: f64) -> (f64, f64) {
         (
@@ -39,6 +48,7 @@ impl Affine {
         )
     }
 
+    /// Whether this is exactly the identity.
     pub fn is_identity(&self) -> bool {
         *self == Self::IDENTITY
     }
@@ -53,6 +63,7 @@ impl Affine {
         [self.a, self.c, self.b, self.d, self.e, self.f]
     }
 
+    /// From flam3's `coefs` order a c b d e f (the inverse of [`Affine::to_coefs`]).
     pub fn from_coefs(v: [f64; 6]) -> Self {
         Self::new(v[0], v[2], v[1], v[3], v[4], v[5])
     }

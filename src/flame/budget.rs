@@ -23,6 +23,7 @@ pub struct MemoryEstimate {
     pub image: u64,
     /// Kept samples for recolouring (0 unless asked for).
     pub kept_samples: u64,
+    /// Bytes in all.
     pub total: u64,
 }
 

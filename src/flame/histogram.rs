@@ -110,12 +110,16 @@ impl PlotPalette {
 /// A bucket grid of accumulators.
 #[derive(Clone, Debug)]
 pub struct Histogram {
+    /// Width in buckets.
     pub bw: usize,
+    /// Height in buckets.
     pub bh: usize,
+    /// The buckets, row by row, `bw` to a row.
     pub data: Vec<Bucket>,
 }
 
 impl Histogram {
+    /// An empty (all zero) histogram of `bw`×`bh` buckets.
     pub fn new(bw: usize, bh: usize) -> Histogram {
         Histogram {
             bw,
@@ -140,6 +144,7 @@ impl Histogram {
             });
     }
 
+    /// Set every bucket to zero.
     pub fn clear(&mut self) {
         self.data.fill([0.0; 4]);
     }

@@ -1,43 +1,57 @@
 //! Fractal flames and IFS: model, variations, chaos game, histogram, density estimation,
 //! tone mapping, automatic framing and the progressive renderer.
 
-pub mod affine;
+pub(crate) mod affine;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod animate;
 pub mod animated;
 mod budget;
-pub mod chaos;
-pub mod curves;
-pub mod density;
+pub(crate) mod chaos;
+pub(crate) mod curves;
+pub(crate) mod density;
 mod develop;
-pub mod fastmath;
-pub mod filter;
-pub mod framing;
-pub mod geometry;
-pub mod histogram;
-pub mod ifs3d;
+pub(crate) mod fastmath;
+pub(crate) mod filter;
+pub(crate) mod framing;
+pub(crate) mod geometry;
+pub(crate) mod histogram;
+pub(crate) mod ifs3d;
 pub mod interpolate;
 pub mod jwf_curve;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod keyframes;
 pub mod loops;
 pub mod model;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod motion_blur;
 pub mod mutate;
 mod plot;
 pub mod random;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod render;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod sequence;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
 mod settings;
-pub mod state;
+pub(crate) mod state;
 pub mod strips;
-pub mod symmetry;
-pub mod tonemap;
+pub(crate) mod symmetry;
+pub(crate) mod tonemap;
 pub mod variations;
 
+pub use chaos::Chaos;
+pub use framing::apply_auto_frame;
+pub use histogram::Histogram;
 pub use model::{
     Affine, Camera3d, FilterShape, Flame, FlameKind, Ifs3d, NewFlame, PaletteIndex, PaletteMode,
     Var, Xform,
 };
 pub use render::{RenderError, RenderOptions, Renderer, render};
+pub use state::{Part, RenderState};
 pub use tonemap::OutputFormat;

@@ -10,9 +10,13 @@ use crate::gradient::Gradient;
 /// its weight and its parameters (in the order of [`variations::VarDef::params`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Var {
+    /// The variation's registry id.
     pub id: VarId,
+    /// Regular, `pre_` or `post_`.
     pub form: Form,
+    /// The weight its output is multiplied by.
     pub weight: f64,
+    /// Parameter values, in [`variations::VarDef::params`] order.
     pub params: Vec<f64>,
     /// Text parameters in [`variations::VarDef::texts`] order (empty for most variations).
     pub texts: Vec<String>,
@@ -62,11 +66,19 @@ impl Var {
 /// One transform of the IFS.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Xform {
+    /// Relative probability of choosing this xform (≥ 0).
     pub weight: f64,
+    /// The colour coordinate the xform moves points towards (0–1).
     pub color: f64,
+    /// How far a step moves the colour coordinate towards `color`: c′ = speed·color +
+    /// (1 − speed)·c.
     pub color_speed: f64,
+    /// How visible the xform's points are (0: not plotted, 1: fully); the orbit goes on
+    /// either way.
     pub opacity: f64,
+    /// The affine map applied before the variations.
     pub coefs: Affine,
+    /// The affine map applied after the variations (identity: none).
     pub post: Affine,
     /// How much of a colour set by a "direct colour" variation is kept (Fractorium's
     /// `direct_color`; 1 = all of it).
@@ -115,7 +127,9 @@ impl Default for Xform {
 pub struct Motion {
     /// Whole periods per loop (`motion_frequency`).
     pub frequency: i32,
+    /// The periodic function (`motion_function`).
     pub function: MotionFunction,
+    /// The change at full swing of the function: an xform of amounts (zero where nothing moves).
     pub delta: Xform,
 }
 
@@ -159,6 +173,7 @@ impl Xform {
             .find(|v| v.id == id && v.form == Form::Regular)
     }
 
+    /// The weight of the regular use of variation `id` (0 if absent).
     pub fn var_weight(&self, id: VarId) -> f64 {
         self.var(id).map_or(0.0, |v| v.weight)
     }
@@ -195,24 +210,39 @@ impl Xform {
 /// Spatial filter kernels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FilterShape {
+    /// The Gaussian (the default).
     #[default]
     Gaussian,
+    /// Hermite.
     Hermite,
+    /// Box.
     Box,
+    /// Triangle (tent).
     Triangle,
+    /// Bell.
     Bell,
+    /// B-spline.
     Bspline,
+    /// Mitchell–Netravali.
     Mitchell,
+    /// Blackman.
     Blackman,
+    /// Catmull–Rom.
     Catrom,
+    /// Hanning.
     Hanning,
+    /// Hamming.
     Hamming,
+    /// Lanczos, three lobes.
     Lanczos3,
+    /// Lanczos, two lobes.
     Lanczos2,
+    /// Quadratic.
     Quadratic,
 }
 
 impl FilterShape {
+    /// Every kernel, in menu order.
     pub const ALL: [FilterShape; 14] = [
         FilterShape::Gaussian,
         FilterShape::Hermite,
@@ -230,6 +260,7 @@ impl FilterShape {
         FilterShape::Quadratic,
     ];
 
+    /// The kernel's name in flame files (`filter_shape`).
     pub fn name(self) -> &'static str {
         match self {
             FilterShape::Gaussian => "gaussian",
@@ -249,6 +280,7 @@ impl FilterShape {
         }
     }
 
+    /// The kernel a name stands for; None if unknown.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|f| f.name() == s)
     }
@@ -257,18 +289,22 @@ impl FilterShape {
 /// How a colour coordinate indexes the palette.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum PaletteMode {
+    /// The colour of one entry (the default).
     #[default]
     Step,
+    /// Interpolated between neighbouring entries.
     Linear,
 }
 
 impl PaletteMode {
+    /// The mode's name in flame files (`palette_mode`).
     pub fn name(self) -> &'static str {
         match self {
             PaletteMode::Step => "step",
             PaletteMode::Linear => "linear",
         }
     }
+    /// The mode a name stands for; None if unknown.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "step" => Some(PaletteMode::Step),
@@ -299,12 +335,14 @@ pub enum PaletteIndex {
 }
 
 impl PaletteIndex {
+    /// Every rule, in menu order.
     pub const ALL: [PaletteIndex; 4] = [
         PaletteIndex::Flam3,
         PaletteIndex::Apophysis,
         PaletteIndex::Fractorium,
         PaletteIndex::JWildfire,
     ];
+    /// The rule's name as ugnis writes it (`ugnis_palette_index`).
     pub fn name(self) -> &'static str {
         match self {
             PaletteIndex::Flam3 => "flam3",
@@ -313,6 +351,7 @@ impl PaletteIndex {
             PaletteIndex::JWildfire => "jwildfire",
         }
     }
+    /// The rule a name stands for; None if unknown.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|m| m.name() == s)
     }
@@ -369,6 +408,7 @@ impl PaletteIndex {
 /// z′ = g x + h y + i z + l.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ifs3d {
+    /// The maps, one row `a b c d e f g h i j k l p` each (p: the probability).
     pub rows: Vec<[f64; 13]>,
     /// Rotations about the x, y and z axes, degrees (applied in that order), then an
     /// orthographic projection onto the screen plane.
@@ -383,12 +423,19 @@ impl Ifs3d {
 /// Settings for new, random and imported flames (the Options dialog's "main" values).
 #[derive(Clone, Debug, PartialEq)]
 pub struct NewFlame {
+    /// Picture width in pixels.
     pub width: u32,
+    /// Picture height in pixels.
     pub height: u32,
+    /// Samples per pixel.
     pub quality: f64,
+    /// Gamma of the tone map.
     pub gamma: f64,
+    /// Brightness of the tone map.
     pub brightness: f64,
+    /// Contrast of the tone map.
     pub contrast: f64,
+    /// The gradient of new flames.
     pub gradient: Gradient,
 }
 
@@ -426,6 +473,7 @@ impl NewFlame {
 /// What a flame was made from (`ugnis_kind`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum FlameKind {
+    /// An ordinary flame (the default).
     #[default]
     Flame,
     /// Created from (and exportable to) a Fractint `.ifs` entry.
@@ -433,6 +481,7 @@ pub enum FlameKind {
 }
 
 impl FlameKind {
+    /// The kind's name in flame files (`ugnis_kind`).
     pub fn name(self) -> &'static str {
         match self {
             FlameKind::Flame => "flame",
@@ -474,12 +523,17 @@ impl Camera3d {
 /// A fractal flame: camera, render settings, palette and transforms.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Flame {
+    /// The flame's name.
     pub name: String,
+    /// Picture width in pixels.
     pub width: u32,
+    /// Picture height in pixels.
     pub height: u32,
+    /// The point of the plane at the picture's centre.
     pub center: [f64; 2],
     /// Pixels per world unit at zoom 0.
     pub scale: f64,
+    /// Magnification as a power of two: the scale is multiplied by 2^zoom.
     pub zoom: f64,
     /// JWildfire's `cam_zoom`: a further factor on the scale (1 = none).
     pub cam_zoom: f64,
@@ -487,23 +541,40 @@ pub struct Flame {
     pub cam: Camera3d,
     /// Degrees; positive turns the picture clockwise on screen.
     pub rotate: f64,
+    /// Samples per pixel.
     pub quality: f64,
+    /// Oversampling per axis (1: none).
     pub supersample: u32,
+    /// Radius of the spatial filter, in pixels.
     pub filter: f64,
+    /// Kernel of the spatial filter.
     pub filter_shape: FilterShape,
+    /// Largest radius of the density-estimation filter (0: no density estimation).
     pub estimator_radius: f64,
+    /// Smallest radius of the density-estimation filter.
     pub estimator_minimum: f64,
+    /// How fast the density-estimation radius shrinks as the density grows.
     pub estimator_curve: f64,
+    /// Brightness of the tone map.
     pub brightness: f64,
+    /// Contrast of the tone map (positive; 1: none).
     pub contrast: f64,
+    /// Gamma of the tone map.
     pub gamma: f64,
+    /// Density below which gamma is applied linearly (keeps sparse areas from noise).
     pub gamma_threshold: f64,
+    /// Mix of the two gamma rules (0–1): 1 scales the colour by the gamma-corrected density,
+    /// 0 applies gamma to each colour channel.
     pub vibrancy: f64,
+    /// How bright areas move towards white (negative: off, the default).
     pub highlight_power: f64,
+    /// Background colour (RGB, 0–1).
     pub background: [f64; 3],
+    /// How the colour coordinate indexes the palette.
     pub palette_mode: PaletteMode,
     /// Whose rule indexes the palette (the program that wrote the file).
     pub palette_index: PaletteIndex,
+    /// The gradient (256 entries).
     pub palette: Gradient,
     /// The file's palette when it has more than 256 entries (Fractorium writes such palettes):
     /// `palette` then holds it resampled to 256 for the editor. It renders and is saved only as
@@ -515,7 +586,10 @@ pub struct Flame {
     pub anim: Animation,
     /// ugnis' own keyframe animation of this flame's settings.
     pub keys: Keyframes,
+    /// The transforms.
     pub xforms: Vec<Xform>,
+    /// The final xform, applied to every point before it is plotted (the orbit goes on from
+    /// the point before it).
     pub final_xform: Option<Xform>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
     pub solo_xform: Option<usize>,
@@ -524,6 +598,7 @@ pub struct Flame {
     pub has_camera: bool,
     /// Generator seed (`ugnis_seed`).
     pub seed: Option<u64>,
+    /// What the flame was made from.
     pub kind: FlameKind,
     /// A 3-D IFS iterated instead of the xforms (from a Fractint `(3D)` entry).
     pub ifs3d: Option<Ifs3d>,

@@ -35,6 +35,7 @@ impl Default for VariationMode {
 /// Symmetry requested for random flames.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum SymmetryMode {
+    /// No symmetry.
     #[default]
     None,
     /// flam3's random order.
@@ -46,9 +47,13 @@ pub enum SymmetryMode {
 /// The Random options and generator switches.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RandomOptions {
+    /// Fewest xforms of a flame (at least 1).
     pub min_xforms: usize,
+    /// Most xforms of a flame (raised to `min_xforms` if below it).
     pub max_xforms: usize,
+    /// Which variations the xforms get.
     pub variations: VariationMode,
+    /// Symmetry added to the flame.
     pub symmetry: SymmetryMode,
     /// Probability of a random post transform per xform.
     pub post_probability: f64,
@@ -56,6 +61,7 @@ pub struct RandomOptions {
     pub final_probability: f64,
     /// Gradients to draw from when `random_gradient` is on (the library); empty: built-ins.
     pub gradients: Vec<Gradient>,
+    /// Give the flame a random gradient (turned by a random amount); off: keep the default.
     pub random_gradient: bool,
     /// Candidates tried before keeping the last one (flam3-genome uses 10).
     pub max_attempts: usize,
@@ -80,6 +86,7 @@ impl Default for RandomOptions {
 /// The outcome of generating a flame.
 #[derive(Clone, Debug)]
 pub struct Generated {
+    /// The flame kept, framed for its size.
     pub flame: Flame,
     /// Candidates tried (1 = the first passed).
     pub attempts: usize,

@@ -12,6 +12,7 @@ use crate::memory::MemoryError;
 /// Options of one render.
 #[derive(Clone, Debug)]
 pub struct RenderOptions {
+    /// Seed of the random numbers: the same seed and thread count give the same picture.
     pub seed: u64,
     /// Worker threads; 0 means all cores. Requests above [`crate::threads::max_threads`] are
     /// clamped (see [`crate::threads::Threads`]).
@@ -19,6 +20,7 @@ pub struct RenderOptions {
     /// Refuse renders whose buffers would exceed this many bytes; `None`: the budget of
     /// [`crate::memory::budget`] (available memory, `ulimit -v`, cgroup limit).
     pub memory_limit: Option<u64>,
+    /// Bits per channel and transparency of the image.
     pub format: OutputFormat,
     /// Keep every plotted sample (12 bytes each) so that `Renderer::recolor` can change the
     /// palette without iterating again. Ignored above [`MAX_KEPT_SAMPLES`].
@@ -53,12 +55,16 @@ impl Default for RenderOptions {
 /// Why a render cannot run.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RenderError {
+    /// The flame cannot be iterated.
     #[error(transparent)]
     Chaos(#[from] ChaosError),
+    /// The density-estimation settings are invalid.
     #[error(transparent)]
     De(#[from] DeError),
+    /// A render setting is out of range (the message says which).
     #[error("invalid render settings: {0}")]
     Settings(String),
+    /// The render would not fit in the memory allowed.
     #[error(transparent)]
     OutOfMemory(#[from] MemoryError),
     /// The saved histogram of a resumed render could not be read.

@@ -19,7 +19,9 @@ pub const MAX_PARTS: u32 = 100_000;
 /// The i-th of n shares of a render's samples.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Part {
+    /// Which share, 0-based (below `count`).
     pub index: u32,
+    /// Number of shares.
     pub count: u32,
 }
 
@@ -36,7 +38,7 @@ impl std::fmt::Display for Part {
 }
 
 impl Part {
-    /// Check the numbers: 1 ≤ count ≤ [`MAX_PARTS`], index < count.
+    /// Check the numbers: 1 ≤ count ≤ `MAX_PARTS` (100 000), index < count.
     pub fn validate(&self) -> Result<(), String> {
         if self.count == 0 || self.count > MAX_PARTS {
             return Err(format!(
@@ -89,13 +91,17 @@ impl Part {
 pub struct RenderState {
     /// The flame as rendered: framed (`has_camera` set), quality of the whole render.
     pub flame: Flame,
+    /// The render's seed.
     pub seed: u64,
-    /// Parts the render was split into, and which of them this state holds (sorted).
+    /// Number of parts the render was split into.
     pub part_count: u32,
+    /// Indices of the parts this state holds, sorted.
     pub parts: Vec<u32>,
     /// Sub-batches of its part done, for a state of one part; 0 for a merge of several.
     pub batches_done: u64,
+    /// Samples plotted so far.
     pub samples_done: u64,
+    /// Bad values (orbits that left the plane and were restarted) met so far.
     pub bad_values: u64,
     /// Each worker's orbits (empty after a merge): a resume with as many threads continues
     /// the same orbits, so that it gives the picture of one longer render.

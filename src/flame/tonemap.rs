@@ -131,13 +131,13 @@ impl ToneMap {
 
     /// Map filtered accumulators (flam3 units, channel/255 = density) to output values in
     /// 0..=255 (not yet truncated) and the alpha in [0, 1].
-    #[inline(always)]
+    #[cfg(test)]
     pub fn pixel(&self, acc: [f64; 4]) -> ([f64; 3], f64) {
         self.pixel_with_alpha(acc, self.alpha(acc[3]))
     }
 
-    /// [`ToneMap::pixel`] given `alpha` = [`ToneMap::alpha`]`(acc[3])` (computed for a whole
-    /// row at once).
+    /// The output values and alpha of filtered accumulators (flam3 units, channel/255 =
+    /// density), given `alpha` = [`ToneMap::alpha`]`(acc[3])` (computed for a whole row at once).
     #[inline(always)]
     pub fn pixel_with_alpha(&self, acc: [f64; 4], alpha: f64) -> ([f64; 3], f64) {
         let a_raw = acc[3];

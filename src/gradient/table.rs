@@ -6,13 +6,16 @@ use super::color::{hsv_to_rgb, rgb_to_hsv};
 /// One key colour of a gradient: position in `[0, 1]` and RGB in `[0, 1]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stop {
+    /// Position along the gradient, 0–1.
     pub pos: f64,
+    /// The colour, RGB 0–1.
     pub rgb: [f64; 3],
 }
 
 /// A 256-entry colour table.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Gradient {
+    /// The gradient's name.
     pub name: String,
     /// Exactly 256 entries, RGBA in `[0, 1]`.
     pub colors: Vec<[f64; 4]>,

@@ -134,6 +134,7 @@ pub struct AtomicFile {
 }
 
 impl AtomicFile {
+    /// A temporary file beside `path`, to become `path` when committed (fails for a directory).
     pub fn create(path: &Path) -> std::io::Result<AtomicFile> {
         if path.is_dir() {
             return Err(std::io::Error::new(

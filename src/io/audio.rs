@@ -25,7 +25,9 @@ const MAX_BAD_PACKETS: usize = 100;
 #[derive(Debug, thiserror::Error)]
 #[error("'{}': {message}", path.display())]
 pub struct AudioError {
+    /// The sound file.
     pub path: PathBuf,
+    /// What is wrong with it.
     pub message: String,
 }
 

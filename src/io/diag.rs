@@ -17,14 +17,20 @@ pub enum Pos {
 /// An error or warning of a parser.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
+    /// The file's name as shown in messages.
     pub file: String,
+    /// Where in the file.
     pub pos: Pos,
+    /// A stable code naming the kind of problem (e.g. `IO001`).
     pub code: &'static str,
+    /// What is wrong, for a person.
     pub message: String,
+    /// A warning (the value was still read) rather than an error.
     pub warning: bool,
 }
 
 impl Diagnostic {
+    /// An error of `file` at `pos`.
     pub fn error(file: &str, pos: Pos, code: &'static str, message: impl Into<String>) -> Self {
         Diagnostic {
             file: file.to_string(),
@@ -35,6 +41,7 @@ impl Diagnostic {
         }
     }
 
+    /// A warning of `file` at `pos`.
     pub fn warning(file: &str, pos: Pos, code: &'static str, message: impl Into<String>) -> Self {
         Diagnostic {
             warning: true,
@@ -42,6 +49,7 @@ impl Diagnostic {
         }
     }
 
+    /// The line (from 1) for a text position; None otherwise.
     pub fn line(&self) -> Option<usize> {
         match self.pos {
             Pos::LineCol(l, _) => Some(l),
@@ -67,7 +75,9 @@ impl std::error::Error for Diagnostic {}
 /// A parsed value and the warnings met on the way.
 #[derive(Clone, Debug)]
 pub struct Parsed<T> {
+    /// The value read.
     pub value: T,
+    /// Warnings about it (unknown names, values replaced, …).
     pub warnings: Vec<Diagnostic>,
 }
 
@@ -151,6 +161,7 @@ pub enum NumberError {
 }
 
 impl NumberError {
+    /// The message for token `tok` failing this way.
     pub fn describe(&self, tok: &str) -> String {
         match self {
             NumberError::Comma => format!(

@@ -25,31 +25,47 @@ pub const MAX_SEGMENTS: usize = 100_000;
 /// How a segment's colour moves from its left to its right colour.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Blend {
+    /// Piecewise linear, half way at the middle point.
     Linear,
+    /// A power curve putting half way at the middle point.
     Curved,
+    /// A sine ease in and out.
     Sine,
+    /// A quarter circle rising fast at first.
     SphereIncreasing,
+    /// A quarter circle rising slowly at first.
     SphereDecreasing,
+    /// The left colour up to the middle point, then the right one.
     Step,
 }
 
 /// In which colour space the segment interpolates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Coloring {
+    /// In RGB.
     Rgb,
+    /// In HSV, the hue turning counter-clockwise.
     HsvCcw,
+    /// In HSV, the hue turning clockwise.
     HsvCw,
 }
 
 /// One segment of a GIMP gradient.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Segment {
+    /// Left end, 0–1.
     pub left: f64,
+    /// The middle point, between `left` and `right`.
     pub middle: f64,
+    /// Right end, 0–1.
     pub right: f64,
+    /// RGBA at the left end, 0–1.
     pub left_color: [f64; 4],
+    /// RGBA at the right end, 0–1.
     pub right_color: [f64; 4],
+    /// How the colour moves from left to right.
     pub blend: Blend,
+    /// In which colour space.
     pub coloring: Coloring,
 }
 
@@ -147,7 +163,9 @@ impl Segment {
 /// A parsed GIMP gradient: its name and segments.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GimpGradient {
+    /// The gradient's name.
     pub name: String,
+    /// The segments, left to right.
     pub segments: Vec<Segment>,
 }
 

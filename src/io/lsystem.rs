@@ -26,6 +26,7 @@ pub const LINE_LIMIT: usize = 160;
 /// The entries of an `.l` file, in file order.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct LFile {
+    /// The systems, in file order.
     pub entries: Vec<LSystem>,
 }
 

@@ -1,13 +1,17 @@
 //! Readers and writers of every file format ugnis opens or saves. Parsers report errors with
 //! file, line and column and never panic.
 
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod animation;
 pub mod atomic;
 pub mod audio;
 pub mod bmp;
 pub mod diag;
-pub mod error;
+pub(crate) mod error;
 pub mod escape_view;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod flam3_xml;
 mod fractint_text;
 pub mod ggr;
@@ -22,14 +26,16 @@ pub mod scene;
 pub mod strip_png;
 pub mod svg;
 pub mod ugr;
+// Its items are not documented yet.
+#[allow(missing_docs)]
 pub mod video;
-pub mod xml;
+pub(crate) mod xml;
 
 use std::path::Path;
 
 use crate::flame::model::Flame;
 use crate::io::diag::{Diagnostic, Parsed, Pos};
-pub use crate::io::error::WriteError;
+pub use crate::io::error::{LSystemWriteError, WriteError};
 
 /// Largest file ugnis reads (text formats, images).
 pub const MAX_FILE_SIZE: u64 = 64 << 20;
@@ -150,14 +156,21 @@ pub enum FileKind {
     FlameXml,
     /// ugnis native .fla (validated more strictly)
     Fla,
+    /// PNG image (may carry a flame in its text chunks)
     Png,
+    /// Fractint IFS (.ifs)
     Ifs,
+    /// ugnis gradient list (.ugr)
     Ugr,
+    /// Fractint palette (.map)
     Map,
     /// GIMP gradient (.ggr)
     Ggr,
+    /// BMP image
     Bmp,
+    /// JPEG image
     Jpeg,
+    /// GIF image
     Gif,
     /// ugnis escape-time view (.esc)
     EscapeView,
@@ -167,6 +180,7 @@ pub enum FileKind {
     Scene,
     /// A saved flame render to continue or merge (.ugnis-state)
     RenderState,
+    /// An extension ugnis does not know
     Unknown,
 }
 
@@ -193,6 +207,7 @@ impl FileKind {
     }
 }
 
+/// The kind of a file, by its extension (any case).
 pub fn kind_of(path: &Path) -> FileKind {
     let ext = path
         .extension()

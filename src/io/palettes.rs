@@ -15,22 +15,27 @@ use crate::io::xml::{XmlCursor, scan_attrs};
 pub struct PaletteLibrary {
     /// Index = palette number; `None` for numbers the file does not define.
     pub palettes: Vec<Option<Gradient>>,
+    /// The file the library was read from.
     pub path: PathBuf,
 }
 
 impl PaletteLibrary {
+    /// Palette number `n`, if the file defines it.
     pub fn get(&self, n: usize) -> Option<&Gradient> {
         self.palettes.get(n).and_then(|p| p.as_ref())
     }
 
+    /// Number of palettes defined.
     pub fn len(&self) -> usize {
         self.palettes.iter().filter(|p| p.is_some()).count()
     }
 
+    /// Whether no palette is defined.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
 
+    /// The palettes defined, with their numbers, in order.
     pub fn iter(&self) -> impl Iterator<Item = (usize, &Gradient)> {
         self.palettes
             .iter()

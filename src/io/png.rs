@@ -17,13 +17,16 @@ pub const GENOME_KEYWORD: &str = "flam3_genome";
 pub struct PngMeta {
     /// The flame, embedded as a `flam3_genome` zTXt chunk.
     pub flame_xml: Option<String>,
+    /// Samples rendered, as a `flam3_samples` text chunk.
     pub samples: Option<u64>,
+    /// The share of bad values of the render, as a `flam3_error_rate` text chunk.
     pub error_rate: Option<f64>,
     /// Further text chunks (keyword, ASCII text), e.g. an escape-time view.
     pub text: Vec<(String, String)>,
 }
 
 impl PngMeta {
+    /// The metadata of a flame render: the flame embedded, nothing else.
     pub fn for_flame(f: &Flame) -> Self {
         PngMeta {
             flame_xml: Some(crate::io::flam3_xml::flame_element(f)),

@@ -25,7 +25,9 @@ use crate::io::render_state::StateWriter;
 pub enum StripError {
     /// A file could not be written (nothing of it is left behind).
     Write {
+        /// The file.
         path: PathBuf,
+        /// The operating system's error.
         source: std::io::Error,
     },
     /// A strip's renderer could not be made (the message says why).
@@ -182,6 +184,7 @@ fn state_writer(
 pub struct StripProgress {
     /// The strip being rendered (from 0).
     pub strip: usize,
+    /// Number of strips.
     pub strips: usize,
     /// How much of this strip is done (0 to 1).
     pub strip_fraction: f64,

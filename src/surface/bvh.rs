@@ -254,6 +254,7 @@ impl Bvh {
         bvh
     }
 
+    #[cfg(test)]
     pub fn bounds(&self) -> Aabb {
         self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
     }

@@ -19,6 +19,7 @@ pub const MAX_STEP: u32 = 4;
 /// The numbers of the sponge after `step` steps, for a unit cube.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MengerNumbers {
+    /// Number n of construction steps.
     pub step: u32,
     /// 20ⁿ.
     pub cubes: u64,
@@ -33,6 +34,7 @@ pub struct MengerNumbers {
     pub dimension: f64,
 }
 
+/// The numbers of the sponge after `step` steps.
 pub fn numbers(step: u32) -> MengerNumbers {
     let n = step as i32;
     MengerNumbers {

@@ -11,8 +11,11 @@ use crate::flame::rng::FastRng;
 /// The affine texture map of a patch: (s, t) = origin + u·du + w·dw.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TexMap {
+    /// (s, t) at u = w = 0.
     pub origin: [f64; 2],
+    /// Change of (s, t) as u goes from 0 to 1.
     pub du: [f64; 2],
+    /// Change of (s, t) as w goes from 0 to 1.
     pub dw: [f64; 2],
 }
 
@@ -28,6 +31,7 @@ impl Default for TexMap {
 }
 
 impl TexMap {
+    /// The texture coordinates (s, t) of patch parameters (u, w).
     pub fn at(&self, u: f64, w: f64) -> [f64; 2] {
         [
             self.origin[0] + u * self.du[0] + w * self.dw[0],
@@ -51,22 +55,30 @@ impl TexMap {
 /// A patch and how the texture lies on it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfacePatch {
+    /// The Bézier patch.
     pub patch: Patch,
+    /// Its texture coordinates as a function of the patch parameters.
     pub tex: TexMap,
 }
 
 /// A triangle mesh with per-vertex normal, texture coordinate and texture tangents.
 #[derive(Clone, Debug, Default)]
 pub struct Mesh {
+    /// Vertex positions.
     pub positions: Vec<DVec3>,
+    /// Unit vertex normals, one per position.
     pub normals: Vec<DVec3>,
+    /// Texture coordinates (s, t), one per position.
     pub tex: Vec<[f32; 2]>,
     /// ∂P/∂s and ∂P/∂t (for bump mapping).
     pub tangents: Vec<(DVec3, DVec3)>,
+    /// Triangles, each as three indices into the vertex lists.
     pub triangles: Vec<[u32; 3]>,
 }
 
 impl Mesh {
+    /// The mesh mapped through `t`: positions and tangents transformed, normals recomputed so that
+    /// non-uniform scaling keeps them perpendicular.
     pub fn transformed(&self, t: &Transform) -> Mesh {
         let normal_of = |n: DVec3, p: DVec3| {
             // Transform the normal through two tangent directions (handles non-uniform scale).
@@ -99,6 +111,7 @@ impl Mesh {
         }
     }
 
+    /// Add the vertices and triangles of `other` (its indices shifted past this mesh's vertices).
     pub fn append(&mut self, other: &Mesh) {
         let base = self.positions.len() as u32;
         self.positions.extend(&other.positions);

@@ -4,23 +4,23 @@
 //! mountains, the Menger sponge and ray-marched quaternion Julia sets.
 
 mod bounds;
-pub mod bvh;
+mod bvh;
 mod eye;
 mod frame;
 mod implicit;
 pub mod menger;
-pub mod mesh;
-pub mod patch;
-pub mod quaternion;
-pub mod raster;
-pub mod raycast;
+pub(crate) mod mesh;
+mod patch;
+mod quaternion;
+mod raster;
+mod raycast;
 mod renderer;
 mod resolution;
-pub mod scene;
+mod scene;
 mod shading;
 mod spec;
-pub mod texture;
-pub mod transform;
+pub(crate) mod texture;
+pub(crate) mod transform;
 
 pub use eye::project;
 pub use mesh::{Mesh, SurfacePatch, TexMap};

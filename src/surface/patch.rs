@@ -73,6 +73,7 @@ impl Curve {
 }
 
 /// de Casteljau split of a cubic row at t = ½.
+#[cfg(test)]
 pub fn split_cubic(p: [DVec3; 4]) -> ([DVec3; 4], [DVec3; 4]) {
     let m = (p[0] + p[1] * 3.0 + p[2] * 3.0 + p[3]) / 8.0;
     (
@@ -113,23 +114,47 @@ pub enum PatchError {
 #[allow(clippy::large_enum_variant)]
 pub enum Patch {
     /// (n + 1)×(m + 1) control net, row i along u: `net[i·(m + 1) + j]`.
-    Bezier { n: usize, m: usize, net: Vec<DVec3> },
+    Bezier {
+        /// Degree in u.
+        n: usize,
+        /// Degree in w.
+        m: usize,
+        /// The control points, (n + 1)·(m + 1) of them.
+        net: Vec<DVec3>,
+    },
     /// The 4×4 Hermite geometry matrix P: corners, tangents and twists.
-    Hermite { g: [[DVec3; 4]; 4] },
+    Hermite {
+        /// The geometry matrix, row by row.
+        g: [[DVec3; 4]; 4],
+    },
     /// Corners p₀₀, p₀₁, p₁₀, p₁₁.
-    Bilinear { p: [DVec3; 4] },
+    Bilinear {
+        /// The four corners, in that order.
+        p: [DVec3; 4],
+    },
     /// Q(u, w) = c₀(u)(1 − w) + c₁(u)w.
-    Ruled { c0: Curve, c1: Curve },
+    Ruled {
+        /// The curve at w = 0.
+        c0: Curve,
+        /// The curve at w = 1.
+        c1: Curve,
+    },
     /// Linear Coons patch from p(u, 0), p(u, 1), p(0, w), p(1, w).
     Coons {
+        /// The boundary p(u, 0).
         u0: Curve,
+        /// The boundary p(u, 1).
         u1: Curve,
+        /// The boundary p(0, w).
         w0: Curve,
+        /// The boundary p(1, w).
         w1: Curve,
     },
 }
 
 impl Patch {
+    /// A Bézier patch of degrees n×m; fails unless the net holds (n + 1)·(m + 1) points and
+    /// both degrees are at least 1.
     pub fn bezier(n: usize, m: usize, net: Vec<DVec3>) -> Result<Patch, PatchError> {
         let need = (n + 1) * (m + 1);
         if net.len() != need || n == 0 || m == 0 {
@@ -143,6 +168,8 @@ impl Patch {
         Ok(Patch::Bezier { n, m, net })
     }
 
+    /// A Coons patch; fails when a curve has fewer than 2 points or the boundaries do not meet
+    /// at the corners (within 1e-9).
     pub fn coons(u0: Curve, u1: Curve, w0: Curve, w1: Curve) -> Result<Patch, PatchError> {
         for c in [&u0, &u1, &w0, &w1] {
             if c.points.len() < 2 {
@@ -163,6 +190,7 @@ impl Patch {
         Ok(Patch::Coons { u0, u1, w0, w1 })
     }
 
+    /// The point Q(u, w).
     pub fn eval(&self, u: f64, w: f64) -> DVec3 {
         match self {
             Patch::Bezier { n, m, net } => {

@@ -81,14 +81,19 @@ impl Mul for Quaternion {
 /// 1, i, j, k, become x, y and z.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum SliceAxis {
+    /// The real part 1.
     Real,
+    /// The i part.
     I,
+    /// The j part.
     J,
+    /// The k part (the default).
     #[default]
     K,
 }
 
 impl SliceAxis {
+    /// Index of the fixed component in (1, i, j, k): 0–3.
     pub fn index(self) -> usize {
         match self {
             SliceAxis::Real => 0,
@@ -98,10 +103,12 @@ impl SliceAxis {
         }
     }
 
+    /// The name in scene files: "1", "i", "j" or "k".
     pub fn name(self) -> &'static str {
         ["1", "i", "j", "k"][self.index()]
     }
 
+    /// The axis a name stands for ("real" and "r" also name the real part); None if unknown.
     pub fn from_name(s: &str) -> Option<SliceAxis> {
         Some(match s {
             "1" | "real" | "r" => SliceAxis::Real,
@@ -128,6 +135,7 @@ const DE_BAILOUT2: f64 = 1e6;
 pub struct QuaternionJulia {
     /// c = c₀ + c₁i + c₂j + c₃k.
     pub c: [f64; 4],
+    /// Which component the slice holds fixed.
     pub slice: SliceAxis,
     /// The value of the fixed component.
     pub slice_value: f64,
@@ -313,7 +321,7 @@ pub fn ray_sphere(o: DVec3, d: DVec3, centre: DVec3, r: f64) -> Option<(f64, f64
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::escape::complex::C;
+    use crate::escape::C;
     use crate::escape::family::{IterSettings, iterate_quadratic_scalar};
 
     fn julia(c: [f64; 4]) -> QuaternionJulia {

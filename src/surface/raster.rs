@@ -18,6 +18,7 @@ use super::scene::{Geometry, Scene};
 use super::shading::{SurfacePoint, shade};
 
 /// Attribute interpolated perspective-correctly: a/w and 1/w are affine in screen space.
+#[cfg(test)]
 pub fn perspective_lerp(a0: f64, a1: f64, w0: f64, w1: f64, t: f64) -> f64 {
     let num = (1.0 - t) * a0 / w0 + t * a1 / w1;
     let den = (1.0 - t) / w0 + t / w1;

@@ -16,11 +16,13 @@ use super::{raster, raycast};
 pub struct MemoryEstimate {
     /// Vertices and triangles after tessellation (all eyes).
     pub vertices: u64,
+    /// Triangles after tessellation (the larger eye's, for a stereo pair).
     pub triangles: u64,
     /// Meshes, clipped vertices, screen triangles and their bins.
     pub geometry: u64,
     /// Colour buffers at the supersampled size and the output image.
     pub pixels: u64,
+    /// Bytes in all: geometry plus pixels.
     pub total: u64,
 }
 
@@ -75,10 +77,13 @@ pub const MAX_SIDE: u32 = 16_384;
 /// Why a scene cannot be rendered.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum RenderError {
+    /// The image size or a setting is out of range (the message says which).
     #[error("{0}")]
     Settings(String),
+    /// The render would not fit in the memory allowed.
     #[error(transparent)]
     OutOfMemory(#[from] crate::memory::MemoryError),
+    /// The cancel flag was raised while rendering.
     #[error("rendering was cancelled")]
     Cancelled,
 }

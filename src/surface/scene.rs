@@ -11,13 +11,17 @@ use super::transform::Transform;
 /// Material of the Phong illumination model (see `illuminate`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
+    /// Ambient reflection coefficient K_a.
     pub ka: f64,
+    /// Diffuse reflection coefficient K_d.
     pub kd: f64,
+    /// Specular reflection coefficient k_s.
     pub ks: f64,
     /// Specular exponent n.
     pub shininess: f64,
     /// Multiplies the texture colour.
     pub color: Vec3,
+    /// Light both sides: a normal facing away from the eye is flipped before shading.
     pub two_sided: bool,
     /// Blinn bump mapping amplitude (0: off) from the texture's heights.
     pub bump: f64,
@@ -41,7 +45,9 @@ impl Default for Material {
 /// Geometry of an object.
 #[derive(Clone, Debug)]
 pub enum Geometry {
+    /// Parametric patches, tessellated by the renderer at a resolution fitting the view.
     Patches(Vec<SurfacePatch>),
+    /// A ready triangle mesh.
     Mesh(Mesh),
     /// A 3-D slice of a quaternion Julia set, ray-marched by both renderers (the z-buffer
     /// renderer marches it per pixel and compares depths).
@@ -61,9 +67,13 @@ pub enum Renderer {
 /// One object.
 #[derive(Clone, Debug)]
 pub struct Object {
+    /// The object's name in the scene file.
     pub name: String,
+    /// Its shape, in object space.
     pub geometry: Geometry,
+    /// Object space to world space.
     pub transform: Transform,
+    /// How it reflects light.
     pub material: Material,
     /// Index into `Scene::textures` (None: untextured, the material colour).
     pub texture: Option<usize>,
@@ -74,6 +84,7 @@ pub struct Object {
 /// A point light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
+    /// Position in world space.
     pub position: DVec3,
     /// I_l per channel.
     pub intensity: Vec3,
@@ -84,10 +95,13 @@ pub struct Light {
 pub enum Projection {
     /// Centre of projection at the eye (k = ρ).
     Perspective,
+    /// Parallel projection along the viewing direction.
     Orthographic,
     /// Axonometric: rotate about y by φ, about x by θ, project along z.
     Axonometric {
+        /// φ in radians.
         phi: f64,
+        /// θ in radians.
         theta: f64,
     },
     /// A left/right perspective pair side by side (Köse's 1990 matrices A and B).
@@ -98,10 +112,15 @@ pub enum Projection {
 /// angle φ (from +y).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
+    /// The point looked at, T.
     pub target: DVec3,
+    /// Distance ρ of the eye from the target.
     pub distance: f64,
+    /// Azimuth θ in degrees, from +z towards +x.
     pub azimuth_deg: f64,
+    /// Polar angle φ in degrees, from +y.
     pub polar_deg: f64,
+    /// How the view is projected.
     pub projection: Projection,
     /// Pixels per world unit at the target plane, for a 480-pixel-high image (scaled with
     /// the image height).
@@ -148,21 +167,29 @@ impl Camera {
 /// A complete scene.
 #[derive(Clone, Debug)]
 pub struct Scene {
+    /// The objects drawn.
     pub objects: Vec<Object>,
+    /// The textures the objects refer to by index.
     pub textures: Vec<Texture>,
+    /// The point lights.
     pub lights: Vec<Light>,
     /// I_a.
     pub ambient: f64,
     /// The attenuation constant K in I_l/(d + K).
     pub attenuation_k: f64,
+    /// Where the scene is seen from and how it is projected.
     pub camera: Camera,
+    /// Colour of pixels no object covers (RGB, 0–1).
     pub background: Vec3,
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
     /// Supersampling factor per axis (1 = none).
     pub supersample: u32,
     /// Blinn–Phong (n·H) instead of Phong (R·S) highlights.
     pub blinn: bool,
+    /// The hidden-surface method.
     pub renderer: Renderer,
     /// Cast shadow rays towards each light (ray casting only).
     pub shadows: bool,
@@ -194,6 +221,7 @@ impl Default for Scene {
 /// The Phong illumination model for one surface point (all vectors in one space):
 /// I = I_a·K_a·c + Σ I_l/(d + K)·(K_d·c·(n̂·L̂) + k_s·(R̂·Ŝ)ⁿ), clamped to [0, 1].
 #[allow(clippy::too_many_arguments)]
+#[cfg(test)]
 pub fn illuminate(
     m: &Material,
     tex: Vec3,

@@ -22,15 +22,20 @@ pub struct SceneSpec {
     /// Camera, lights, image and renderer settings. Its `textures` and `objects` are replaced
     /// by the ones made from the lists below.
     pub scene: Scene,
+    /// The textures to make, in the order objects refer to them.
     pub textures: Vec<TextureSpec>,
+    /// The objects, their meshes still to make.
     pub objects: Vec<ObjectSpec>,
 }
 
 /// A texture to make, `width`×`height` texels (a picture keeps its own size).
 #[derive(Clone, Debug)]
 pub struct TextureSpec {
+    /// Width in texels.
     pub width: usize,
+    /// Height in texels.
     pub height: usize,
+    /// Where the texels come from.
     pub kind: TextureKind,
 }
 
@@ -41,37 +46,51 @@ pub enum TextureKind {
     Image(RgbImage),
     /// A flame rendered at the texture's size (its framing kept), at `quality` when given.
     Flame {
+        /// The flame to render.
         flame: Box<Flame>,
+        /// Samples per pixel instead of the flame's own quality.
         quality: Option<f64>,
     },
     /// An escape-time view rendered at the texture's size, its world width kept.
     Escape(Box<EscapeDoc>),
     /// Fractional Brownian motion between two colours.
     Fbm {
+        /// The noise: octaves, frequencies, gain and seed.
         fbm: Fbm,
+        /// The two colours it blends between (RGB, 0–1).
         colors: [Vec3; 2],
     },
     /// Value noise of `cells` cells across.
     Value {
+        /// Seed of the random lattice values.
         seed: u64,
+        /// Lattice cells across the texture.
         cells: u32,
+        /// The two colours it blends between (RGB, 0–1).
         colors: [Vec3; 2],
     },
-    /// A Markov random field (at most [`MAX_MRF_SIDE`] on a side).
+    /// A Markov random field (at most `MAX_MRF_SIDE` = 1024 texels on a side).
     Mrf {
+        /// The field's interaction weights, sweeps and seed.
         params: MrfParams,
+        /// The colours of the two states (RGB, 0–1).
         colors: [Vec3; 2],
     },
     /// A checkerboard of `cells` = [across, down] squares.
     Checker {
+        /// Squares [across, down].
         cells: [usize; 2],
+        /// The colours of the two kinds of square (RGB, 0–1).
         colors: [Vec3; 2],
     },
     /// Grid lines (first colour) on a background (second colour).
     Grid {
+        /// Cells [across, down].
         cells: [usize; 2],
+        /// Line colour and background colour (RGB, 0–1).
         colors: [Vec3; 2],
     },
+    /// One colour (RGB, 0–1).
     Solid(Vec3),
     /// A gradient along t (e.g. a mountain's height).
     Gradient(Box<Gradient>),
@@ -80,30 +99,43 @@ pub enum TextureKind {
 /// An object before its mesh is made.
 #[derive(Clone, Debug)]
 pub struct ObjectSpec {
+    /// The object's name in the scene file.
     pub name: String,
+    /// Its shape, or how to make it.
     pub geometry: GeometrySpec,
+    /// Object space to world space.
     pub transform: Transform,
+    /// How it reflects light.
     pub material: Material,
     /// Index into [`SceneSpec::textures`].
     pub texture: Option<usize>,
+    /// Index into [`SceneSpec::textures`] of a height texture for bump mapping.
     pub bump_texture: Option<usize>,
 }
 
 /// An object's geometry: given (patches, a quaternion Julia set), or a mesh to make.
 #[derive(Clone, Debug)]
 pub enum GeometrySpec {
+    /// Geometry given as it is.
     Given(Geometry),
-    /// A midpoint-displacement mountain ([`mesh::mountain`]).
+    /// A midpoint-displacement mountain (`mesh::mountain`).
     Mountain {
+        /// Subdivision levels K (2·4^K triangles).
         levels: u32,
+        /// Side of the square base in world units.
         size: f64,
+        /// Standard deviation σ₀ of the first displacement.
         sigma: f64,
+        /// The roughness exponent H: σ_k = σ₀·2^(−kH).
         h: f64,
+        /// Seed of the displacements.
         seed: u64,
     },
     /// The Menger sponge at construction step `step` with edge `size` ([`menger::mesh`]).
     Menger {
+        /// Construction step (at most [`menger::MAX_STEP`]).
         step: u32,
+        /// Edge of the whole cube in world units.
         size: f64,
     },
 }
@@ -111,7 +143,9 @@ pub enum GeometrySpec {
 /// A texture that could not be made: its index in [`SceneSpec::textures`] and why.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TextureError {
+    /// Index of the texture in [`SceneSpec::textures`].
     pub index: usize,
+    /// Why it could not be made.
     pub message: String,
 }
 

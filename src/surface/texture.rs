@@ -76,6 +76,7 @@ impl Texture {
         Texture { levels }
     }
 
+    /// From an 8-bit RGB picture, rows from the top.
     pub fn from_image(img: &image::RgbImage) -> Texture {
         let texels = img
             .pixels()
@@ -89,6 +90,7 @@ impl Texture {
         Texture::from_texels(1, 1, vec![c])
     }
 
+    /// Width and height in texels of the finest level.
     pub fn size(&self) -> (usize, usize) {
         (self.levels[0].w, self.levels[0].h)
     }
@@ -327,6 +329,7 @@ pub fn grid(w: usize, h: usize, n: usize, m: usize, line: Vec3, back: Vec3) -> T
 }
 
 /// The pyramidal filters of Köse's (1990) table 6.1: 3×3 and 7×7 weights (sum 16 and 256).
+#[cfg(test)]
 pub fn pyramid_filter(size: usize) -> Vec<Vec<u32>> {
     let row: Vec<u32> = match size {
         3 => vec![1, 2, 1],

@@ -14,6 +14,7 @@ impl Default for Transform {
 }
 
 impl Transform {
+    /// The transform that changes nothing.
     pub const IDENTITY: Transform = Transform([
         [1.0, 0.0, 0.0, 0.0],
         [0.0, 1.0, 0.0, 0.0],
@@ -137,6 +138,7 @@ impl Transform {
         Transform::scale(1.0, -1.0, 1.0)
     }
 
+    /// Translation by (l, m, n).
     pub fn translate(l: f64, m: f64, n: f64) -> Transform {
         let mut t = Transform::IDENTITY;
         t.0[3] = [l, m, n, 1.0];
@@ -154,6 +156,7 @@ impl Transform {
         ])
     }
 
+    /// Rotation about y by θ radians.
     pub fn rot_y(th: f64) -> Transform {
         let (s, c) = th.sin_cos();
         Transform([
@@ -164,6 +167,7 @@ impl Transform {
         ])
     }
 
+    /// Rotation about z by θ radians.
     pub fn rot_z(th: f64) -> Transform {
         let (s, c) = th.sin_cos();
         Transform([
@@ -272,6 +276,7 @@ pub fn dimetric_angles(fz: f64) -> (f64, f64) {
 }
 
 /// Foreshortening factors (f_x, f_y, f_z) of an axonometric projection.
+#[cfg(test)]
 pub fn foreshortening(phi: f64, theta: f64) -> (f64, f64, f64) {
     let t = Transform::axonometric(phi, theta);
     let f = |d: DVec3| {
@@ -282,6 +287,7 @@ pub fn foreshortening(phi: f64, theta: f64) -> (f64, f64, f64) {
 }
 
 /// Newell's polygon normal (a, b, c) and d.
+#[cfg(test)]
 pub fn newell(points: &[DVec3]) -> (DVec3, f64) {
     let mut n = DVec3::ZERO;
     for i in 0..points.len() {

@@ -7,7 +7,7 @@ use egui::accesskit::Role;
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ugnis::app::options::Options;
+use ugnis::app::Options;
 use ugnis::app::{Start, UgnisApp};
 
 use crate::{drag, example, harness, open, wait_until};
@@ -29,7 +29,7 @@ fn explore_topic(h: &mut Harness<'_, UgnisApp>, name: &str) {
 
 #[test]
 fn explore_every_topic_shows_its_numbers() {
-    use ugnis::app::explore_tab::Topic;
+    use ugnis::app::Topic;
     let mut h = explore_tab();
     // The default topic: the Koch curve at step 3.
     assert_eq!(h.state().explore.topic, Topic::Classic);
@@ -353,7 +353,7 @@ fn explore_fif_points_are_dragged_and_added_with_the_mouse() {
 
 #[test]
 fn explore_box_counting_of_the_current_flame() {
-    use ugnis::app::explore_tab::dimension::BoxSource;
+    use ugnis::app::BoxSource;
     // The flame tab holds the Sierpinski triangle as a flame (no symmetry transforms).
     let ifs = ugnis::explore::ifs::presets::kovacs_sierpinski();
     let flame = ifs.to_flame(&Options::default().new_flame());
@@ -419,7 +419,7 @@ fn explore_box_counting_of_an_image_file() {
 
 #[test]
 fn explore_box_counting_of_the_escape_time_boundary() {
-    use ugnis::app::explore_tab::dimension::BoxSource;
+    use ugnis::app::BoxSource;
     use ugnis::escape::{C, EscapeDoc, Family};
     let mut h = explore_tab();
     // The Julia set of z² + 0 is the unit circle: its boundary has dimension 1.

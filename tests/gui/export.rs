@@ -46,7 +46,7 @@ fn export_dialog_for(h: &mut Harness<'_, UgnisApp>, out: &Path, quality: f64) {
     h.run_steps(2);
 }
 
-fn state_of(path: &Path) -> ugnis::flame::state::RenderState {
+fn state_of(path: &Path) -> ugnis::flame::RenderState {
     ugnis::io::render_state::StateReader::open(path)
         .unwrap_or_else(|e| panic!("{e}"))
         .state

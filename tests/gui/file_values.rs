@@ -76,10 +76,10 @@ fn looking_at_escape_and_scene_controls_does_not_clamp_the_file_values() {
         "the Julia set's controls are shown"
     );
     let o = &h.state().scene.scene.objects[0];
-    let ugnis::surface::scene::Geometry::QuaternionJulia(q) = o.geometry else {
+    let ugnis::surface::Geometry::QuaternionJulia(q) = o.geometry else {
         panic!("the first object is the Julia set");
     };
-    let ugnis::surface::scene::Geometry::QuaternionJulia(q0) = want.objects[0].geometry else {
+    let ugnis::surface::Geometry::QuaternionJulia(q0) = want.objects[0].geometry else {
         panic!("read back");
     };
     assert_eq!((q.c[0], q.slice_value), (-2.5, 3.0));

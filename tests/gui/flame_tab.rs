@@ -6,7 +6,7 @@ use eframe::egui;
 use egui::accesskit::Role;
 use egui::{Key, Modifiers, Vec2};
 use egui_kittest::kittest::Queryable;
-use ugnis::app::options::Options;
+use ugnis::app::Options;
 use ugnis::app::{Start, UgnisApp};
 
 use crate::{drag, example, harness, harness_sized, open, section, set_number};
@@ -280,7 +280,7 @@ fn the_camera_moves_with_the_mouse_on_the_preview() {
 
 #[test]
 fn the_first_start_shows_a_colourful_flame() {
-    use ugnis::app::flame_tab::first_flame::{colour_share, colourfulness};
+    use ugnis::app::{colour_share, colourfulness};
     for seed in 1..=3u64 {
         let app = UgnisApp::new(Options::default(), Start::Random(seed), None);
         let f = app.flame.doc().flame();

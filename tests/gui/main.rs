@@ -20,7 +20,7 @@ use egui::accesskit::Role;
 use egui::{Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ugnis::app::options::Options;
+use ugnis::app::Options;
 use ugnis::app::{Start, UgnisApp};
 
 /// A private copy of an example (a test that saves must never touch the repository).

@@ -12,7 +12,7 @@ use egui::accesskit::Role;
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ugnis::app::explore_tab::Topic;
+use ugnis::app::Topic;
 use ugnis::app::{Start, Tab, UgnisApp};
 use ugnis::flame::render::{RenderOptions, Renderer};
 use ugnis::io::{self, View};

@@ -73,7 +73,7 @@ fn scene_tab_orbits_moves_lights_and_changes_textures() {
     let esc = h.state().escape.doc.clone();
     h.state_mut()
         .scene
-        .set_source(ugnis::app::scene_tab::TextureSource::Checker, &flame, &esc);
+        .set_source(ugnis::app::TextureSource::Checker, &flame, &esc);
     let t = std::time::Instant::now();
     while h
         .state()
@@ -98,7 +98,7 @@ fn scene_tab_switches_to_ray_casting_and_edits_a_quaternion_julia_set() {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/quaternion-julia.toml");
     assert!(h.state_mut().scene.open(&file));
     h.run_steps(3);
-    use ugnis::surface::scene::{Geometry, Renderer};
+    use ugnis::surface::{Geometry, Renderer};
     let renderer0 = h.state().scene.scene.renderer;
     // The renderer switch.
     h.get_by_role_and_label(Role::ComboBox, "Renderer").click();
@@ -153,7 +153,7 @@ fn a_scene_saves_and_reads_back() {
     let esc = h.state().escape.doc.clone();
     h.state_mut()
         .scene
-        .set_source(ugnis::app::scene_tab::TextureSource::Checker, &flame, &esc);
+        .set_source(ugnis::app::TextureSource::Checker, &flame, &esc);
     let t = std::time::Instant::now();
     while !h
         .state()

@@ -14,7 +14,7 @@ use crate::{example, harness_sized, open};
 #[test]
 fn every_menu_item_exists_with_its_shortcut() {
     let mut h = open("sierpinski.flame");
-    for menu in ugnis::app::actions::MENUS {
+    for menu in ugnis::app::MENUS {
         h.get_by_role_and_label(Role::Button, menu).click();
         h.run_steps(2);
         for item in MENU.iter().filter(|m| m.menu == menu) {
@@ -166,7 +166,7 @@ fn new_recent_help_and_the_per_tab_toolbar() {
     h.run_steps(4);
     assert_eq!(
         h.state().help,
-        Some(ugnis::app::help::HelpPage::Shortcuts),
+        Some(ugnis::app::HelpPage::Shortcuts),
         "F1 opens the shortcuts"
     );
     assert!(h.query_by_label("Keyboard shortcuts").is_some());

@@ -7,7 +7,7 @@ use egui::accesskit::Role;
 use egui::{Key, Modifiers, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use ugnis::app::flame_tab::editor_state::Selected;
+use ugnis::app::Selected;
 use ugnis::app::{Start, UgnisApp};
 use ugnis::flame::{Affine, Flame};
 

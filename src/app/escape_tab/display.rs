@@ -23,7 +23,6 @@ pub struct EscapeFrame {
     pub image: egui::ColorImage,
     pub fraction: f64,
     pub elapsed_ms: f64,
-    pub done: bool,
     pub error: Option<String>,
 }
 
@@ -42,7 +41,6 @@ fn render(job: Job, cx: &JobContext<EscapeFrame>) {
                 image: egui::ColorImage::new([1, 1], vec![Color32::BLACK]),
                 fraction: 0.0,
                 elapsed_ms: 0.0,
-                done: true,
                 error: Some(e.to_string()),
             });
             return;
@@ -57,7 +55,6 @@ fn render(job: Job, cx: &JobContext<EscapeFrame>) {
             image: color_image(&r.image()),
             fraction: r.fraction(),
             elapsed_ms: t.elapsed().as_secs_f64() * 1000.0,
-            done: r.is_done(),
             error: None,
         });
     }

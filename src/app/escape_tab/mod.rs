@@ -3,9 +3,9 @@
 //! family and colouring choosers, a live Julia preview for the c under the cursor on the
 //! Mandelbrot set (click opens it), export and view files.
 
-pub mod canvas;
-pub mod controls;
-pub mod display;
+pub(crate) mod canvas;
+pub(crate) mod controls;
+pub(crate) mod display;
 
 use std::path::{Path, PathBuf};
 

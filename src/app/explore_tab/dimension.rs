@@ -27,6 +27,7 @@ pub enum BoxSource {
     Flame,
     /// An IFS preset by index.
     Preset(usize),
+    /// A picture file, thresholded.
     Image(PathBuf),
     /// The boundary of the escape-time tab's set (its inside pixels next to an outside one).
     Escape,

@@ -6,13 +6,13 @@
 //! interpolation, Julia sets by inverse iteration, the Lorenz attractor and fractal dimension.
 //! Everything is computed by the engine in `crate::explore`; this folder only shows it.
 
-pub mod chaos;
-pub mod classic;
-pub mod dimension;
-pub mod fif;
-pub mod julia;
-pub mod lorenz;
-pub mod lsys;
+pub(crate) mod chaos;
+pub(crate) mod classic;
+pub(crate) mod dimension;
+pub(crate) mod fif;
+pub(crate) mod julia;
+pub(crate) mod lorenz;
+pub(crate) mod lsys;
 
 use std::hash::{Hash, Hasher};
 
@@ -34,16 +34,24 @@ pub const INK: [u8; 3] = [240, 196, 110];
 /// A topic of the tab.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Topic {
+    /// Classic constructions: Cantor, Koch, Sierpinski.
     Classic,
+    /// The chaos game and textbook IFS.
     ChaosGame,
+    /// L-systems and Fractint `.l` files.
     LSystems,
+    /// Fractal interpolation functions.
     Interpolation,
+    /// Julia sets by inverse iteration.
     Julia,
+    /// The Lorenz attractor.
     Lorenz,
+    /// Fractal dimension.
     Dimension,
 }
 
 impl Topic {
+    /// Every topic, in the order of the list.
     pub const ALL: [Topic; 7] = [
         Topic::Classic,
         Topic::ChaosGame,
@@ -54,6 +62,7 @@ impl Topic {
         Topic::Dimension,
     ];
 
+    /// The topic's title.
     pub fn name(self) -> &'static str {
         match self {
             Topic::Classic => "Classic constructions",

@@ -31,6 +31,7 @@ pub struct Morph {
 pub const MORPH_FRAMES: usize = 60;
 
 impl FlameTab {
+    /// Start or stop the morph to the next flame of the file.
     pub fn toggle_morph(&mut self) {
         if self.morph.take().is_some() {
             self.notices.status("Morph stopped");
@@ -101,6 +102,7 @@ impl FlameTab {
         }
     }
 
+    /// Start or stop the rotation animation (stops a morph).
     pub fn toggle_animation(&mut self) {
         self.morph = None;
         if let Some(a) = self.animation.take() {

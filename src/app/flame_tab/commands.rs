@@ -50,6 +50,7 @@ impl FlameTab {
         self.notices.status(format!("Variation: {label}"));
     }
 
+    /// Replace the current flame by a random one (undoable).
     pub fn random_flame(&mut self, options: &Options) {
         let seed = self.rng.u64();
         let opts = options.random_options(self.variation_mode.clone());
@@ -65,10 +66,12 @@ impl FlameTab {
         self.notices.status(format!("Random flame (seed {seed})"));
     }
 
+    /// Whether a random batch is being generated.
     pub fn batch_running(&self) -> bool {
         self.batch_job.as_ref().is_some_and(|w| w.is_busy())
     }
 
+    /// Generate a batch of 100 random flames in the background (nothing if one is running).
     pub fn start_batch(&mut self, options: &Options) {
         if self.batch_running() {
             return;
@@ -84,6 +87,7 @@ impl FlameTab {
         self.notices.status("Generating a random batch…");
     }
 
+    /// Give the xforms random weights summing to 1 (automatic weights off).
     pub fn random_weights(&mut self) {
         let mut rng = FastRng::new(self.rng.u64());
         self.doc_mut().edit(|f| {
@@ -101,6 +105,7 @@ impl FlameTab {
         });
     }
 
+    /// Give the xforms equal weights (automatic weights off).
     pub fn equal_weights(&mut self) {
         self.doc_mut().edit(|f| {
             f.set_equal_weights();
@@ -108,16 +113,19 @@ impl FlameTab {
         });
     }
 
+    /// Weight the xforms by the determinant rule (the areas of their triangles).
     pub fn area_weights(&mut self) {
         self.doc_mut().edit(|f| f.set_determinant_weights());
     }
 
+    /// Undo the last edit of the document shown.
     pub fn undo(&mut self) {
         if !self.doc_mut().undo() {
             self.notices.status("Nothing to undo");
         }
     }
 
+    /// Redo the last edit undone.
     pub fn redo(&mut self) {
         if !self.doc_mut().redo() {
             self.notices.status("Nothing to redo");
@@ -208,6 +216,7 @@ impl FlameTab {
         }
     }
 
+    /// Give the current flame gradient `g` (undoable).
     pub fn apply_gradient(&mut self, g: Gradient) {
         self.doc_mut().edit(|f| f.palette = g);
     }

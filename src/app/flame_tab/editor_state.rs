@@ -35,7 +35,9 @@ pub enum Pivot {
 /// Which xform is selected.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Selected {
+    /// The xform of this index.
     Xform(usize),
+    /// The final xform.
     Final,
 }
 

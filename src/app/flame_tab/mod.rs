@@ -14,28 +14,28 @@
 //! | `gradients.rs`, `palette_editor.rs`, `mutations.rs`, `export.rs`, `variation_filter.rs` | windows |
 //! | `first_flame.rs` | the striking random flame of the first start |
 
-pub mod animation;
-pub mod commands;
-pub mod document;
-pub mod editor_panel;
-pub mod editor_state;
-pub mod editor_tools;
-pub mod export;
-pub mod file_panel;
-pub mod first_flame;
-pub mod gradients;
-pub mod mutations;
-pub mod palette_editor;
+pub(crate) mod animation;
+pub(crate) mod commands;
+pub(crate) mod document;
+pub(crate) mod editor_panel;
+pub(crate) mod editor_state;
+pub(crate) mod editor_tools;
+pub(crate) mod export;
+pub(crate) mod file_panel;
+pub(crate) mod first_flame;
+pub(crate) mod gradients;
+pub(crate) mod mutations;
+pub(crate) mod palette_editor;
 pub mod preview;
-pub mod preview_panel;
-pub mod settings;
-pub mod thumbnails;
-pub mod transform_list;
-pub mod triangles;
-pub mod variation_filter;
-pub mod variations_panel;
-pub mod xaos;
-pub mod xform_panel;
+pub(crate) mod preview_panel;
+pub(crate) mod settings;
+pub(crate) mod thumbnails;
+pub(crate) mod transform_list;
+pub(crate) mod triangles;
+pub(crate) mod variation_filter;
+pub(crate) mod variations_panel;
+pub(crate) mod xaos;
+pub(crate) mod xform_panel;
 
 use std::path::{Path, PathBuf};
 
@@ -64,15 +64,20 @@ pub use animation::MORPH_FRAMES;
 /// Which document the editor shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Showing {
+    /// The open file.
     File,
+    /// The last random batch.
     Batch,
 }
 
 /// What the flame tab asks the shell for (file choosers live in the shell).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FlameRequest {
+    /// Choose a gradient file to load.
     LoadGradient,
+    /// Choose a picture to make a gradient from.
     GradientFromImage,
+    /// Choose the file an export writes.
     ChooseExportFile,
 }
 
@@ -82,21 +87,35 @@ pub struct FlameTab {
     pub file: Document,
     /// The last random batch, if any.
     pub batch: Option<Document>,
+    /// Which of the two the editor shows.
     pub showing: Showing,
+    /// The triangle editor's selection, mode and view.
     pub editor: EditorState,
+    /// The file-contents panel is shown.
     pub show_files: bool,
+    /// The triangle editor is shown.
     pub show_editor: bool,
     /// Preview zoom (1 = fit).
     pub preview_zoom: f32,
+    /// Which variations new random flames get.
     pub variation_mode: VariationMode,
+    /// Status lines and message boxes of the tab.
     pub notices: Notices,
+    /// The gradient window.
     pub gradients: GradientWindow,
+    /// The palette editor window.
     pub palette_editor: PaletteEditor,
+    /// The mutations window.
     pub mutations: MutationWindow,
+    /// The variations filter window.
     pub variation_filter: VariationFilter,
+    /// The export dialog's settings, while it is open.
     pub export_dialog: Option<ExportSettings>,
+    /// The running export, if any.
     pub export_job: Option<ExportJob>,
+    /// The running rotation animation, if any.
     pub animation: Option<Animation>,
+    /// The running morph to the next flame, if any.
     pub morph: Option<Morph>,
     /// Where the last random batch is kept (the platform data directory; none in tests
     /// unless they set one).
@@ -177,6 +196,7 @@ impl FlameTab {
         }
     }
 
+    /// The document the editor shows, to change it.
     pub fn doc_mut(&mut self) -> &mut Document {
         pick(self.showing, &mut self.batch, &mut self.file)
     }

@@ -18,33 +18,48 @@ const MIN_FIRST_QUALITY: f64 = 1.0;
 /// A preview to render.
 #[derive(Clone, Debug)]
 pub struct PreviewJob {
+    /// The flame to render.
     pub flame: Flame,
+    /// Picture width in pixels.
     pub width: u32,
+    /// Picture height in pixels.
     pub height: u32,
     /// Quality of the first pass (fast feedback).
     pub first_quality: f64,
     /// Quality at which refinement stops.
     pub final_quality: f64,
+    /// Worker threads (0: all cores).
     pub threads: usize,
+    /// Number of the job: a frame carries it, so that frames of older jobs can be told apart.
     pub generation: u64,
 }
 
 /// One rendered preview frame.
 #[derive(Clone)]
 pub struct PreviewFrame {
+    /// The job's number.
     pub generation: u64,
+    /// The picture.
     pub image: egui::ColorImage,
     /// Fraction of the final quality done.
     pub fraction: f64,
     /// Milliseconds since the job was submitted.
     pub elapsed_ms: f64,
+    /// The final quality is reached.
     pub done: bool,
 }
 
 /// Worker output.
 pub enum PreviewEvent {
+    /// A picture, better than the last one of its job.
     Frame(PreviewFrame),
-    Error { generation: u64, message: String },
+    /// The job could not be rendered.
+    Error {
+        /// The job's number.
+        generation: u64,
+        /// Why.
+        message: String,
+    },
 }
 
 /// What the preview worker is asked to do.
@@ -80,7 +95,7 @@ fn on_pool<R: Send>(pool: &Option<(usize, rayon::ThreadPool)>, f: impl FnOnce() 
     }
 }
 
-/// The live preview renderer: a [`Worker`] whose newest job wins.
+/// The live preview renderer: a background worker whose newest job wins.
 pub struct PreviewWorker {
     worker: Worker<PreviewMsg, PreviewEvent>,
 }

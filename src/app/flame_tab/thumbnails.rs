@@ -135,11 +135,6 @@ impl Thumbnails {
             w.queue(list);
         }
     }
-
-    /// True while pictures are being rendered.
-    pub fn is_busy(&self) -> bool {
-        self.worker.as_ref().is_some_and(|w| w.is_busy())
-    }
 }
 
 #[cfg(test)]

@@ -8,9 +8,7 @@ use super::{SceneRequest, SceneTab, TextureSource};
 use crate::app::a11y::named;
 use crate::escape::EscapeDoc;
 use crate::flame::Flame;
-use crate::surface::quaternion::{QuaternionJulia, SliceAxis};
-use crate::surface::scene::{Geometry, Material, Renderer};
-use crate::surface::{Light, Projection};
+use crate::surface::{Geometry, Light, Material, Projection, QuaternionJulia, Renderer, SliceAxis};
 
 impl SceneTab {
     pub(super) fn controls(

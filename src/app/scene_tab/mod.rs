@@ -3,10 +3,10 @@
 //! (the scene's own, the current flame, the current escape-time view, procedural, an image);
 //! materials, lights, projection; open scene files and export.
 
-pub mod canvas;
-pub mod controls;
-pub mod save;
-pub mod textures;
+pub(crate) mod canvas;
+pub(crate) mod controls;
+pub(crate) mod save;
+pub(crate) mod textures;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -20,8 +20,7 @@ use crate::app::worker::{JobContext, Repaint, TaskWorker, Worker, repaint_of, ta
 use crate::escape::EscapeDoc;
 use crate::flame::Flame;
 use crate::io;
-use crate::surface::texture::Texture;
-use crate::surface::{Object, Scene};
+use crate::surface::{Object, Scene, Texture};
 
 /// A scene to render.
 pub struct SceneJob {
@@ -63,11 +62,17 @@ pub enum SceneRequest {
 pub enum TextureSource {
     /// One of the scene file's textures.
     Scene(usize),
+    /// The flame tab's current flame, rendered.
     CurrentFlame,
+    /// The escape-time tab's view, rendered.
     CurrentEscape,
+    /// fBm noise with the default settings.
     Fbm,
+    /// A Markov random field with the default settings.
     Mrf,
+    /// A checkerboard.
     Checker,
+    /// No texture: the material colour.
     None,
 }
 

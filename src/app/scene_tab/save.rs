@@ -11,8 +11,7 @@ use super::SceneTab;
 use crate::escape::EscapeDoc;
 use crate::flame::Flame;
 use crate::io;
-use crate::surface::Projection;
-use crate::surface::scene::{Geometry, Renderer};
+use crate::surface::{Geometry, Projection, Renderer};
 
 /// The default scene: the jug wearing an fBm texture (no files needed).
 pub const DEFAULT_SCENE: &str = r#"# ugnis scene

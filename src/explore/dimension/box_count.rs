@@ -27,7 +27,9 @@ pub const MAX_SAMPLES: u64 = 50_000_000;
 /// The count at one level: cells of side 2^−k of the bounding square.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BoxLevel {
+    /// The level k.
     pub k: u32,
+    /// Cells of side 2^−k that hold at least one sample.
     pub count: u64,
 }
 
@@ -50,6 +52,7 @@ pub struct BoxCount {
     pub samples: u64,
     /// Lower-left corner and side of the bounding square.
     pub origin: P2,
+    /// Side of the bounding square.
     pub side: f64,
     /// Levels k = 1, 2, …: up to 13, or up to 30 when the fit reaches past level 13.
     pub levels: Vec<BoxLevel>,
@@ -488,7 +491,9 @@ pub fn check_samples(points: u64) -> Result<(), ExploreError> {
 /// A binary image: which pixels belong to the set.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Mask {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
     /// Row-major, row 0 at the top.
     pub bits: Vec<bool>,

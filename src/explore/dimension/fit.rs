@@ -4,7 +4,9 @@
 /// A least-squares line y = slope·x + intercept.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LineFit {
+    /// Slope of the line.
     pub slope: f64,
+    /// Value of the line at x = 0.
     pub intercept: f64,
     /// Coefficient of determination (1 for points exactly on the line).
     pub r2: f64,

@@ -16,6 +16,7 @@ pub const VOSS_MAX_POINTS: usize = 2_000_000;
 /// and measurement", 1986).
 #[derive(Clone, Debug, PartialEq)]
 pub struct VossLevel {
+    /// Box side Γ in world units.
     pub gamma: f64,
     /// Boxes counted (centred on points whose box lies inside the bounding square).
     pub centres: usize,

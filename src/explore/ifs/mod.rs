@@ -15,7 +15,9 @@ pub const DEFAULT_POINTS: u64 = 100_000;
 /// `a b c d e f p`, y up) with their probabilities.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ifs {
+    /// The table's name.
     pub name: String,
+    /// The affine maps.
     pub maps: Vec<Affine>,
     /// As given (they need not sum to 1; the chaos game normalises them).
     pub probs: Vec<f64>,
@@ -216,6 +218,8 @@ pub struct ChaosGame {
 }
 
 impl ChaosGame {
+    /// A chaos game on `ifs` from `start`, its first `skip` points taken but not returned, with
+    /// random map choices from `seed`.
     pub fn new(ifs: &Ifs, start: P2, skip: u64, seed: u64) -> ChaosGame {
         let mut acc = 0.0;
         let cumulative = ifs

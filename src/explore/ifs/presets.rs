@@ -108,6 +108,7 @@ pub fn t1_sierpinski_pixels() -> Ifs {
     )
 }
 
+/// T3: a fern leaflet, four maps.
 pub fn t3_fern_leaflet() -> Ifs {
     ifs(
         "T3 fern leaflet",
@@ -120,6 +121,7 @@ pub fn t3_fern_leaflet() -> Ifs {
     )
 }
 
+/// T4: a tree crown, four maps.
 pub fn t4_tree_crown() -> Ifs {
     ifs(
         "T4 tree crown",
@@ -132,6 +134,7 @@ pub fn t4_tree_crown() -> Ifs {
     )
 }
 
+/// T5: a hexagonal maple leaf, four maps.
 pub fn t5_maple_hexagonal() -> Ifs {
     ifs(
         "T5 hexagonal maple leaf",
@@ -144,6 +147,7 @@ pub fn t5_maple_hexagonal() -> Ifs {
     )
 }
 
+/// T6: a maple-type leaf, four maps of ratio 0.6 and 0.5.
 pub fn t6_maple() -> Ifs {
     ifs(
         "T6 maple-type leaf",
@@ -156,6 +160,7 @@ pub fn t6_maple() -> Ifs {
     )
 }
 
+/// T7: a fractal tree, six maps.
 pub fn t7_tree() -> Ifs {
     ifs(
         "T7 fractal tree",
@@ -170,6 +175,7 @@ pub fn t7_tree() -> Ifs {
     )
 }
 
+/// T8: five maps.
 pub fn t8_five_maps() -> Ifs {
     ifs(
         "T8 five maps",
@@ -183,6 +189,7 @@ pub fn t8_five_maps() -> Ifs {
     )
 }
 
+/// T9: Dürer's pentagon, five maps of ratio 0.382 (1/φ²).
 pub fn t9_durer_pentagon() -> Ifs {
     let ef = [
         (0.3072, 0.619),

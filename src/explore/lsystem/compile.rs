@@ -55,6 +55,7 @@ pub(super) struct Str {
 /// An L-system ready to draw.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Compiled {
+    /// The L-system compiled.
     pub system: LSystem,
     pub(super) axiom: Str,
     /// Productions by index; symbols without one are not rewritten.
@@ -72,6 +73,7 @@ pub struct Compiled {
 /// How big the derivation gets at one order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Counts {
+    /// The order (number of rewriting steps) counted.
     pub order: u32,
     /// Length of the derived string (a command with its number counts once).
     pub symbols: f64,

@@ -6,7 +6,9 @@ pub const RESERVED: &str = "+-<>[]|!@/\\c";
 /// A syntax error in an axiom or production: byte offset and what was expected.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LexError {
+    /// Byte offset of the error in the string.
     pub offset: usize,
+    /// What was expected there.
     pub message: String,
 }
 
@@ -15,16 +17,23 @@ pub struct LexError {
 pub enum Lexeme {
     /// A symbol that may be rewritten (lower-cased).
     Symbol(char),
+    /// `+`: turn by +δ.
     Plus,
+    /// `-`: turn by −δ.
     Minus,
+    /// `|`: turn half way round.
     Reverse,
+    /// `!`: swap the meanings of `+` and `-`.
     Swap,
+    /// `[`: save the turtle's state.
     Push,
+    /// `]`: restore the last state saved.
     Pop,
     /// `\nn`: +nn° on the degree heading.
     DegreesLeft(f64),
     /// `/nn`: −nn° on the degree heading.
     DegreesRight(f64),
+    /// `cnn`: colour index nn.
     SetColor(i64),
     /// `<nn`
     ColorUp(i64),

@@ -6,8 +6,11 @@ use super::system::{Angle, LSystem};
 /// A ready-made system with the order it is shown at and a note on its source.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Preset {
+    /// The L-system.
     pub system: LSystem,
+    /// The order (number of rewriting steps) it is shown at.
     pub order: u32,
+    /// Where it comes from and what it shows (may be empty).
     pub note: &'static str,
 }
 
@@ -15,6 +18,7 @@ fn sys(name: &str, axiom: &str, rules: &[(char, &str)], angle: Angle) -> LSystem
     LSystem::new(name, axiom, rules, angle)
 }
 
+/// The Koch curve: `F` → `F+F--F+F` with δ = 60°, order 4.
 pub fn koch_curve() -> Preset {
     Preset {
         system: sys("Koch curve", "F", &[('F', "F+F--F+F")], Angle::Divisions(6)),
@@ -23,6 +27,7 @@ pub fn koch_curve() -> Preset {
     }
 }
 
+/// Kovács' Koch variant `S` → `S+S-S-S+S`, order 3.
 pub fn koch_kovacs() -> Preset {
     let mut s = sys(
         "Koch (Kovács)",
@@ -39,6 +44,7 @@ pub fn koch_kovacs() -> Preset {
     }
 }
 
+/// Kovács' fractal plant, order 5.
 pub fn plant_kovacs() -> Preset {
     let mut s = sys(
         "Fractal plant (Kovács)",
@@ -56,6 +62,7 @@ pub fn plant_kovacs() -> Preset {
     }
 }
 
+/// A graftal of 0s and 1s with branches, order 5.
 pub fn graftal() -> Preset {
     let mut s = sys(
         "Graftal (Kovács)",
@@ -74,6 +81,7 @@ pub fn graftal() -> Preset {
     }
 }
 
+/// The Fibonacci strings b, a, ab, aba, … (draws nothing), order 7.
 pub fn fibonacci() -> Preset {
     Preset {
         system: sys(
@@ -88,6 +96,7 @@ pub fn fibonacci() -> Preset {
     }
 }
 
+/// The Koch snowflake: axiom `F++F++F`, `F` → `F-F++F-F`, δ = 60°, order 3.
 pub fn koch_snowflake() -> Preset {
     Preset {
         system: sys(
@@ -101,6 +110,7 @@ pub fn koch_snowflake() -> Preset {
     }
 }
 
+/// The quadratic Koch island: axiom `F-F-F-F`, `F` → `F+F-F-FF+F+F-F`, δ = 90°, order 2.
 pub fn quadratic_koch_island() -> Preset {
     Preset {
         system: sys(
@@ -114,6 +124,7 @@ pub fn quadratic_koch_island() -> Preset {
     }
 }
 
+/// The square inner tree: axiom `F+F+F+F`, `F` → `FF+F++F+F`, δ = 90°, order 3.
 pub fn square_inner_tree() -> Preset {
     Preset {
         system: sys(
@@ -137,6 +148,7 @@ fn plant(name: &str, rule: &str, deg: f64, order: u32, note: &'static str) -> Pr
     }
 }
 
+/// Plant (a): `F` → `F[+F]F[-F]F`, δ = 30°, order 5.
 pub fn plant_a() -> Preset {
     plant(
         "Plant (a)",
@@ -147,10 +159,12 @@ pub fn plant_a() -> Preset {
     )
 }
 
+/// Plant (b): `F` → `F[+F]F[-F][F]`, δ = 20°, order 5.
 pub fn plant_b() -> Preset {
     plant("Plant (b)", "F[+F]F[-F][F]", 20.0, 5, "")
 }
 
+/// Plant (c): `F` → `FF-[-F+F+F]+[+F-F-F]`, δ = 20.5°, order 4.
 pub fn plant_c() -> Preset {
     plant(
         "Plant (c)",
@@ -161,6 +175,7 @@ pub fn plant_c() -> Preset {
     )
 }
 
+/// Arborvitae: `F` → `F[+F]F[-F][F]`, δ = 90° as printed, order 4.
 pub fn arborvitae() -> Preset {
     plant(
         "Arborvitae",
@@ -171,6 +186,7 @@ pub fn arborvitae() -> Preset {
     )
 }
 
+/// Fractint's dragon curve: axiom `FX`, δ = 45°, order 10.
 pub fn dragon() -> Preset {
     Preset {
         system: sys(
@@ -184,6 +200,7 @@ pub fn dragon() -> Preset {
     }
 }
 
+/// Every preset, in menu order.
 pub fn all() -> Vec<Preset> {
     vec![
         koch_curve(),

@@ -27,6 +27,7 @@ pub enum Angle {
 }
 
 impl Angle {
+    /// δ in degrees.
     pub fn degrees(self) -> f64 {
         match self {
             Angle::Divisions(n) => 360.0 / n as f64,
@@ -38,11 +39,14 @@ impl Angle {
 /// An L-system as written: axiom, productions, angle and interpretation flags.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LSystem {
+    /// The system's name (the entry name in a `.l` file).
     pub name: String,
+    /// The starting string.
     pub axiom: String,
     /// Productions in file order: symbol (as written) and replacement. Repeated symbols are
     /// concatenated when compiled; an empty replacement deletes the symbol.
     pub rules: Vec<(char, String)>,
+    /// The turning angle δ.
     pub angle: Angle,
     /// Start with `+` and `-` (and `\` and `/`) swapped.
     pub swap_signs: bool,

@@ -46,7 +46,7 @@ impl Compiled {
     }
 
     /// Draw the system at `order` into a width×height image on `background`, framed to fit
-    /// with a small margin, each segment in its turtle colour ([`raster::palette_color`]).
+    /// with a small margin, each segment in its turtle colour (`raster::palette_color`).
     pub fn render(
         &self,
         order: u32,
@@ -77,8 +77,11 @@ impl Compiled {
 /// One drawn segment with its colour index.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Segment {
+    /// Start point.
     pub a: P2,
+    /// End point.
     pub b: P2,
+    /// Colour index (set by `c`, `<` and `>`).
     pub color: i64,
 }
 

@@ -36,7 +36,7 @@ impl Chaos {
     /// (an orbit still in its fuse or retrying a bad value, or beyond the `n` asked for) and
     /// must be skipped. Returns the number of bad values.
     #[inline(always)]
-    pub fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
+    pub(crate) fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
         &self,
         n: u64,
         rng: &mut FastRng,

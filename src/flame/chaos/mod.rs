@@ -21,7 +21,7 @@ mod xform;
 
 pub use lanes::{LaneState, Lanes};
 pub use projection::Projection;
-pub use xform::{BAD_LIMIT_WIDE, CompiledXform, adjust_opacity};
+pub use xform::{BAD_LIMIT_WIDE, CompiledXform};
 
 use crate::flame::model::Flame;
 use crate::flame::rng::FastRng;
@@ -63,7 +63,9 @@ pub struct Pt {
 /// A flame compiled for the chaos game.
 #[derive(Clone, Debug)]
 pub struct Chaos {
+    /// The flame's xforms, compiled, in the flame's order.
     pub xforms: Vec<CompiledXform>,
+    /// The final xform, compiled, if the flame has one.
     pub final_xform: Option<CompiledXform>,
     /// The 3-D camera, if the flame has one.
     pub projection: Option<Projection>,
@@ -120,6 +122,8 @@ pub fn selection_table(w: &[f64]) -> Box<[u16]> {
 }
 
 impl Chaos {
+    /// Compile `flame`; fails when it has no xforms, no positive weight, a weight or xaos
+    /// value that is negative or not finite, or an xaos row that reaches no xform.
     pub fn new(flame: &Flame) -> Result<Self, ChaosError> {
         let n = flame.xforms.len();
         if n == 0 {

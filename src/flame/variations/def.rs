@@ -50,9 +50,13 @@ pub mod flag {
 /// Regular, `pre_` or `post_` use of a variation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Form {
+    /// Applied to the affine-transformed point; the outputs of an xform's regular variations
+    /// are summed.
     #[default]
     Regular,
+    /// `pre_NAME`: applied to the affine-transformed point before the regular variations.
     Pre,
+    /// `post_NAME`: applied to the summed result.
     Post,
 }
 
@@ -91,6 +95,7 @@ pub type BatchFn = fn(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastR
 pub struct VarDef {
     /// Canonical name (flam3's for flam3's variations, else Fractorium's or JWildfire's).
     pub name: &'static str,
+    /// Numeric parameters, with their defaults and ranges.
     pub params: &'static [Param],
     /// Text parameters (few variations have any).
     pub texts: &'static [TextParam],
@@ -100,7 +105,9 @@ pub struct VarDef {
     pub flags: u32,
     /// How the `pre_`/`post_` forms combine their output.
     pub assign: Assign,
+    /// The formula.
     pub eval: EvalFn,
+    /// Computes the derived values from the parameters (optional).
     pub prepare: Option<PrepareFn>,
     /// Expensive data built from some parameters, shared between prepared copies
     /// ([`Prepared::data`]).
@@ -132,18 +139,22 @@ impl VarDef {
             batch: None,
         }
     }
+    /// Set the numeric parameters.
     pub const fn params(mut self, params: &'static [Param]) -> VarDef {
         self.params = params;
         self
     }
+    /// Set the text parameters.
     pub const fn texts(mut self, texts: &'static [TextParam]) -> VarDef {
         self.texts = texts;
         self
     }
+    /// Set the [`need`](super::need) bits: which per-point quantities the formula reads.
     pub const fn needs(mut self, needs: u8) -> VarDef {
         self.needs = needs;
         self
     }
+    /// Set the [`flag`] bits.
     pub const fn flags(mut self, flags: u32) -> VarDef {
         self.flags = flags;
         self
@@ -153,6 +164,7 @@ impl VarDef {
         self.assign = Assign::Sum;
         self
     }
+    /// Set the function computing the derived values.
     pub const fn prepare(mut self, f: PrepareFn) -> VarDef {
         self.prepare = Some(f);
         self
@@ -163,15 +175,18 @@ impl VarDef {
         self.shared = Some(SharedDef { key, build });
         self
     }
+    /// Set a specialised batch loop for the regular form.
     pub const fn batch(mut self, f: BatchFn) -> VarDef {
         self.batch = Some(f);
         self
     }
 
+    /// The parameters' default values, in [`VarDef::params`] order.
     pub fn defaults(&self) -> Vec<f64> {
         self.params.iter().map(|p| p.default).collect()
     }
 
+    /// Whether the flags include the [`flag`] bit(s) `f`.
     pub fn has(&self, f: u32) -> bool {
         self.flags & f != 0
     }
@@ -188,9 +203,11 @@ impl VarDef {
 pub struct VarState([AtomicU64; 4]);
 
 impl VarState {
+    /// The value in slot `i` (0–3).
     pub fn get(&self, i: usize) -> f64 {
         f64::from_bits(self.0[i].load(Ordering::Relaxed))
     }
+    /// Store `v` in slot `i` (0–3).
     pub fn set(&self, i: usize, v: f64) {
         self.0[i].store(v.to_bits(), Ordering::Relaxed);
     }
@@ -210,9 +227,13 @@ impl Clone for VarState {
 /// and the xform's affine map.
 #[derive(Clone, Debug)]
 pub struct Prepared {
+    /// The variation's registry id.
     pub id: VarId,
+    /// Its registry entry.
     pub def: &'static VarDef,
+    /// Regular, `pre_` or `post_`.
     pub form: Form,
+    /// The weight.
     pub w: f64,
     /// Parameters in [`VarDef::params`] order, then values derived by [`VarDef::prepare`].
     pub p: Vec<f64>,
@@ -223,6 +244,7 @@ pub struct Prepared {
     pub aff: Affine,
     /// Fractorium's flam3-compatibility switch (on by default).
     pub compat: bool,
+    /// State carried from one call to the next (used by the stateful variations only).
     pub state: VarState,
     /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
     /// shared through a process-wide cache); `None` for the variations without.

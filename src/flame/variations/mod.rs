@@ -21,10 +21,10 @@
 //! Fractorium's affine letters A B C D E F are [`Affine`]'s a b e c d f
 //! (x' = A·x + B·y + C, y' = D·x + E·y + F).
 //!
-//! Helpers the formulas share live in [`util`] (the C/x86 and Java behaviours the source
+//! Helpers the formulas share live in `util` (the C/x86 and Java behaviours the source
 //! programs rely on, hashes, coordinate systems, complex numbers, special functions) and in
 //! `noise` (simplex noise); data that takes long to build (grown aggregates, crystals, meshes,
-//! recursive drawings) is built once per parameter values and shared through [`shared`].
+//! recursive drawings) is built once per parameter values and shared through `shared`.
 //!
 //! A formula reads its parameters by name, `let [power, dist] = v.params();`, and the values its
 //! `prepare` function derived from them, `let [abs_power, cn] = v.derived();` (see
@@ -112,11 +112,11 @@ mod jwf_symmetry;
 mod jwf_testing;
 mod jwf_text;
 mod noise;
-pub mod shared;
-pub mod util;
+mod shared;
+pub(crate) mod util;
 
 pub(crate) use batch::inline_batch;
-pub use batch::{batch_with, generic_batch};
+pub(crate) use batch::{batch_with, generic_batch};
 pub use def::{Assign, BatchFn, EvalFn, Form, PrepareFn, Prepared, VarDef, VarState, flag};
 pub use flam3::*;
 pub use names::{
@@ -126,7 +126,8 @@ pub use names::{
 pub use params::{
     Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,
 };
-pub use point::{Acc, SoaAcc, SoaIn, VarIn, need};
+pub use point::{Acc, VarIn, need};
+pub(crate) use point::{SoaAcc, SoaIn};
 pub use prepare::{eval_point, eval_prepared};
 pub use registry::{all, count, info};
 pub use shared::{BuildFn, SharedDef};

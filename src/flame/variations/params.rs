@@ -21,7 +21,9 @@ pub enum ParamKind {
 /// its UTF-8 bytes).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TextParam {
+    /// Full attribute name.
     pub name: &'static str,
+    /// Value of a new variation.
     pub default: &'static str,
     /// Most bytes a value may have (longer ones are cut at a character boundary).
     pub max_len: usize,
@@ -41,10 +43,15 @@ impl TextParam {
 /// One parameter of a variation: full attribute name (e.g. `julian_power`), default and range.
 #[derive(Clone, Copy, Debug)]
 pub struct Param {
+    /// Full attribute name, as written in files.
     pub name: &'static str,
+    /// Value of a new variation.
     pub default: f64,
+    /// How a stored value is normalised.
     pub kind: ParamKind,
+    /// Lower end of the range (may be `-inf`).
     pub min: f64,
+    /// Upper end of the range (may be `inf`).
     pub max: f64,
 }
 

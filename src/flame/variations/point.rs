@@ -3,7 +3,7 @@
 //! xform's running output ([`Acc`]), and the same for a batch of points as parallel arrays
 //! ([`SoaIn`], [`SoaAcc`]).
 
-/// Which per-point quantities a formula reads (bits of [`VarDef::needs`]).
+/// Which per-point quantities a formula reads (bits of [`VarDef::needs`](super::VarDef::needs)).
 pub mod need {
     /// `sumsq` = x² + y².
     pub const SUMSQ: u8 = 1;
@@ -15,14 +15,18 @@ pub mod need {
     pub const ATAN_XY: u8 = 8;
     /// `atan_yx` = atan2(y, x).
     pub const ATAN_YX: u8 = 16;
+    /// Every quantity.
     pub const ALL: u8 = 31;
 }
 
 /// What a variation reads about its input point.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct VarIn {
+    /// x of the input point.
     pub x: f64,
+    /// y of the input point.
     pub y: f64,
+    /// z of the input point.
     pub z: f64,
     /// x² + y².
     pub sumsq: f64,
@@ -85,11 +89,15 @@ impl VarIn {
 /// `post_` forms, the point being transformed) and the colour coordinate.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Acc {
+    /// x so far.
     pub x: f64,
+    /// y so far.
     pub y: f64,
+    /// z so far.
     pub z: f64,
+    /// The colour coordinate (written by the direct-colour variations).
     pub color: f64,
-    /// The sample is not drawn (set by the [`flag::HIDES`] variations).
+    /// The sample is not drawn (set by the [`super::flag::HIDES`] variations).
     pub hide: bool,
 }
 

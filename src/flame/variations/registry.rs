@@ -27,6 +27,7 @@ pub fn count() -> usize {
     REGISTRY.defs.len()
 }
 
+/// The registry entry of variation `id` (panics for an id not below [`count`]).
 pub fn info(id: VarId) -> &'static VarDef {
     REGISTRY.defs[id as usize]
 }

@@ -26,6 +26,7 @@ pub type BuildFn = fn(p: &[f64], texts: &[String]) -> Vec<f64>;
 pub struct SharedDef {
     /// Indices of the parameters the data depends on.
     pub key: &'static [usize],
+    /// Builds the data from the normalised parameters and the text parameters.
     pub build: BuildFn,
 }
 
@@ -104,6 +105,7 @@ impl Cache {
         }
     }
 
+    #[cfg(test)]
     fn len(&self) -> usize {
         self.entries.len()
     }
@@ -150,6 +152,7 @@ fn data_in(
 }
 
 /// Number of entries in the process-wide cache.
+#[cfg(test)]
 pub fn cached_entries() -> usize {
     with_cache(&CACHE, |c| c.len())
 }

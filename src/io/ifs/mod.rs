@@ -32,15 +32,27 @@ pub enum IfsWriteError {
     #[error(
         "entry names '{first}' and '{second}' are the same for Fractint (first {NAME_LEN} characters, ignoring case)"
     )]
-    SameName { first: String, second: String },
+    SameName {
+        /// The first entry's name.
+        first: String,
+        /// The name that Fractint takes for the first.
+        second: String,
+    },
+    /// The weights give no probabilities.
     #[error("the flame's weights sum to 0")]
     ZeroWeights,
     /// An xform (numbered from 1) with a variation other than linear.
     #[error("xform {xform} uses variation '{variation}'; only linear flames can be saved as .ifs")]
-    NotLinear { xform: usize, variation: String },
+    NotLinear {
+        /// The xform, from 1.
+        xform: usize,
+        /// The variation's name.
+        variation: String,
+    },
     /// An xform (numbered from 1) with xaos.
     #[error("xform {0} uses xaos; .ifs files have no xaos")]
     Xaos(usize),
+    /// A final xform.
     #[error("the flame has a final xform; .ifs files have none")]
     FinalXform,
 }
@@ -48,13 +60,16 @@ pub enum IfsWriteError {
 /// One entry of an `.ifs` file.
 #[derive(Clone, Debug, PartialEq)]
 pub struct IfsEntry {
+    /// The entry's name.
     pub name: String,
+    /// A `(3D)` entry: rows of 13 numbers instead of 7.
     pub three_d: bool,
     /// Rows of 7 numbers (a b c d e f p) or 13 (a b c d e f g h i j k l p).
     pub rows: Vec<Vec<f64>>,
 }
 
 impl IfsEntry {
+    /// Numbers in a row: 13 for a 3-D entry, 7 otherwise.
     pub fn row_len(&self) -> usize {
         if self.three_d { 13 } else { 7 }
     }
@@ -76,6 +91,7 @@ impl IfsEntry {
 /// The entries of an `.ifs` file.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct IfsFile {
+    /// The entries, in file order.
     pub entries: Vec<IfsEntry>,
 }
 

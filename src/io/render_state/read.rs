@@ -28,9 +28,11 @@ struct Chunk {
 pub struct StateReader {
     file_name: String,
     file: BufReader<File>,
+    /// The render's state, without its histogram.
     pub state: RenderState,
-    /// Bucket grid: width and height.
+    /// Width of the bucket grid.
     pub bw: usize,
+    /// Height of the bucket grid (rows of the histogram).
     pub bh: usize,
     chunks: Vec<Chunk>,
 }
@@ -200,6 +202,7 @@ impl StateReader {
         })
     }
 
+    /// The file's name as shown in messages.
     pub fn file_name(&self) -> &str {
         &self.file_name
     }

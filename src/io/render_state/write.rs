@@ -38,6 +38,8 @@ pub struct StateWriter<W: Write> {
 }
 
 impl<W: Write> StateWriter<W> {
+    /// Start a state file on `out`: check that the state can be saved and write its header and
+    /// orbits (the histogram rows follow).
     pub fn new(mut out: W, st: &RenderState) -> std::io::Result<StateWriter<W>> {
         check_saveable(st).map_err(std::io::Error::other)?;
         let (bw, bh) = st.grid().map_err(std::io::Error::other)?;

@@ -62,7 +62,9 @@ pub const MAX_TEXTURE_SIDE: u32 = 8192;
 
 /// A loaded scene with the names of its textures (by index).
 pub struct LoadedScene {
+    /// The scene, ready to render.
     pub scene: Scene,
+    /// The name of each texture (by index), for messages.
     pub texture_names: Vec<String>,
     /// One line per generated object worth describing (e.g. a Menger sponge's numbers).
     pub notes: Vec<String>,
@@ -73,7 +75,9 @@ pub struct LoadedScene {
 /// A parsed scene file: what the engine is to make, with the names and places of its
 /// textures for messages. Nothing is rendered yet.
 pub struct ParsedScene {
+    /// The scene before its textures and meshes are made.
     pub spec: SceneSpec,
+    /// The name of each texture (by index), for messages.
     pub texture_names: Vec<String>,
     /// One line per generated object worth describing (e.g. a Menger sponge's numbers).
     pub notes: Vec<String>,

@@ -9,9 +9,9 @@ use super::format::{MaterialSpec, ObjectSpec, ScaleSpec, Step};
 use super::textures::c3;
 use crate::surface::menger;
 use crate::surface::mesh::{self, SurfacePatch, TexMap};
-use crate::surface::patch::Patch;
-use crate::surface::transform::Transform;
-use crate::surface::{Geometry, GeometrySpec, Material, QuaternionJulia, SliceAxis};
+use crate::surface::{
+    Geometry, GeometrySpec, Material, Patch, QuaternionJulia, SliceAxis, Transform,
+};
 
 fn v3(a: [f64; 3]) -> DVec3 {
     DVec3::from_array(a)

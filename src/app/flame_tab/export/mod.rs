@@ -16,7 +16,7 @@ mod resume;
 mod settings;
 mod window;
 
-pub use job::{ExportJob, Finished, JobAction, JobStatus};
+pub use job::{ExportJob, JobAction};
 pub use resume::{ResumeInfo, quality_text};
-pub use settings::{ExportSettings, STATE_EXTENSION, state_path};
+pub use settings::ExportSettings;
 pub use window::{dialog, job_window};

@@ -28,18 +28,6 @@ pub fn sign(x: f64) -> f64 {
     }
 }
 
-/// C's `fmod` (the remainder has the sign of `a`): Rust's `%` on f64.
-#[inline(always)]
-pub fn fmod(a: f64, b: f64) -> f64 {
-    a % b
-}
-
-/// Round half away from zero (C's `round`).
-#[inline(always)]
-pub fn round(x: f64) -> f64 {
-    x.round()
-}
-
 /// Fractorium's rounding: half away from zero, computed as floor(x + ½) for positive values
 /// and ceil(x − ½) otherwise (differs from `f64::round` just below the halves).
 #[inline(always)]
@@ -49,12 +37,6 @@ pub fn round_half_out(x: f64) -> f64 {
     } else {
         (x - 0.5).ceil()
     }
-}
-
-/// (sin a, cos a).
-#[inline(always)]
-pub fn sincos(a: f64) -> (f64, f64) {
-    a.sin_cos()
 }
 
 /// x².
