@@ -260,6 +260,99 @@ fn outputs(out: &Path) -> Result<(PathBuf, Option<PathBuf>)> {
     }
 }
 
+/// What moves and the frames to make, by mode.
+fn source_of(
+    a: &AnimateArgs,
+    mode: Mode,
+    flames: Vec<Flame>,
+    picked: Flame,
+) -> Result<(Source, Vec<FrameSpec>)> {
+    Ok(match mode {
+        Mode::Sequence | Mode::Loop => {
+            let cps = if mode == Mode::Loop {
+                loop_cps(a, &flames)?
+            } else {
+                flames
+            };
+            let source = Source::Sequence(cps);
+            source
+                .check()
+                .map_err(|e| anyhow::anyhow!("{}: {e}", a.input.display()))?;
+            let frames = timed_frames(a, &source)?;
+            (source, frames)
+        }
+        Mode::Keys => {
+            if picked.keys.is_empty() {
+                bail!("{}: the flame has no keyframes", a.input.display());
+            }
+            let source = Source::Keys(picked.clone());
+            let frames = timed_frames(a, &source)?;
+            (source, frames)
+        }
+        Mode::Rotate => {
+            let (_, frames) = numbered_frames(a)?;
+            (
+                Source::Rotation {
+                    flame: picked,
+                    seed: a.seed,
+                },
+                frames,
+            )
+        }
+        Mode::Interpolate => {
+            let keys = match (a.from, a.to) {
+                (Some(i), Some(j)) => {
+                    let n = flames.len();
+                    let get = |k: usize| {
+                        flames.get(k).cloned().with_context(|| {
+                            format!(
+                                "{}: flame index {k} is out of range (the file holds {n})",
+                                a.input.display()
+                            )
+                        })
+                    };
+                    vec![get(i)?, get(j)?]
+                }
+                _ => flames,
+            };
+            if keys.len() < 2 {
+                bail!(
+                    "{}: interpolation needs at least two flames in the file",
+                    a.input.display()
+                );
+            }
+            let (n, frames) = numbered_frames(a)?;
+            (
+                Source::Interpolation {
+                    flames: keys,
+                    frames: n,
+                },
+                frames,
+            )
+        }
+        Mode::Auto => unreachable!("resolved above"),
+    })
+}
+
+/// `--mode loop`: flam3-genome's sequence through the flames and back to the first, so that the
+/// frame after the last (not rendered: a sequence stops one time before its end) is the first.
+fn loop_cps(a: &AnimateArgs, flames: &[Flame]) -> Result<Vec<Flame>> {
+    if flames.len() as u64 * 2 * a.loop_frames as u64 > MAX_FRAMES {
+        bail!("the loop would have more than {MAX_FRAMES} frames");
+    }
+    let mut ring = flames.to_vec();
+    let n = ring.len();
+    if n > 1 {
+        ring.push(ring[0].clone());
+    }
+    let mut cps = sequence(&ring, a.loop_frames, !a.no_loops, a.turns);
+    if n > 1 && !a.no_loops {
+        // Not the first flame's loop again: its first frame ends the ring.
+        cps.truncate(2 * n * a.loop_frames + 1);
+    }
+    Ok(cps)
+}
+
 pub fn run(a: AnimateArgs) -> Result<()> {
     if let Some(q) = a.quality
         && !(MIN_QUALITY..=MAX_QUALITY).contains(&q)
@@ -295,86 +388,7 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         Some(_) => Mode::Keys,
         None => resolve_mode(a.mode, &flames, &picked),
     };
-    let (source, frames) = match mode {
-        Mode::Sequence | Mode::Loop => {
-            let cps = if mode == Mode::Loop {
-                if flames.len() as u64 * 2 * a.loop_frames as u64 > MAX_FRAMES {
-                    bail!("the loop would have more than {MAX_FRAMES} frames");
-                }
-                // Back to the first flame at the end, so that the frame after the last (not
-                // rendered: a sequence stops one time before its end) is the first.
-                let mut ring = flames.clone();
-                let n = ring.len();
-                if n > 1 {
-                    ring.push(ring[0].clone());
-                }
-                let mut cps = sequence(&ring, a.loop_frames, !a.no_loops, a.turns);
-                if n > 1 && !a.no_loops {
-                    // Not the first flame's loop again: its first frame ends the ring.
-                    cps.truncate(2 * n * a.loop_frames + 1);
-                }
-                cps
-            } else {
-                flames
-            };
-            let source = Source::Sequence(cps);
-            source
-                .check()
-                .map_err(|e| anyhow::anyhow!("{}: {e}", a.input.display()))?;
-            let frames = timed_frames(&a, &source)?;
-            (source, frames)
-        }
-        Mode::Keys => {
-            if picked.keys.is_empty() {
-                bail!("{}: the flame has no keyframes", a.input.display());
-            }
-            let source = Source::Keys(picked.clone());
-            let frames = timed_frames(&a, &source)?;
-            (source, frames)
-        }
-        Mode::Rotate => {
-            let (_, frames) = numbered_frames(&a)?;
-            (
-                Source::Rotation {
-                    flame: picked,
-                    seed: a.seed,
-                },
-                frames,
-            )
-        }
-        Mode::Interpolate => {
-            let keys = match (a.from, a.to) {
-                (Some(i), Some(j)) => {
-                    let n = flames.len();
-                    let get = |k: usize| {
-                        flames.get(k).cloned().with_context(|| {
-                            format!(
-                                "{}: flame index {k} is out of range (the file holds {n})",
-                                a.input.display()
-                            )
-                        })
-                    };
-                    vec![get(i)?, get(j)?]
-                }
-                _ => flames,
-            };
-            if keys.len() < 2 {
-                bail!(
-                    "{}: interpolation needs at least two flames in the file",
-                    a.input.display()
-                );
-            }
-            let (n, frames) = numbered_frames(&a)?;
-            (
-                Source::Interpolation {
-                    flames: keys,
-                    frames: n,
-                },
-                frames,
-            )
-        }
-        Mode::Auto => unreachable!("resolved above"),
-    };
+    let (source, frames) = source_of(&a, mode, flames, picked)?;
     if matches!(
         ugnis::io::kind_of(&a.output),
         ugnis::io::FileKind::FlameXml | ugnis::io::FileKind::Fla

@@ -17,8 +17,10 @@ use crate::flame::rng::FastRng;
 use formulas::{formula, z_out};
 
 mod formulas;
+mod fresh;
 mod ids;
 
+pub use fresh::absent_params;
 pub use ids::*;
 
 /// Per-point quantities shared by many of the entries below: r² and r, plus an angle.
