@@ -353,6 +353,10 @@ impl FlameTab {
                 GradientAction::Edit => self.palette_editor.open = true,
             }
         }
+        self.loop_window(ctx);
+        if let Some(r) = self.anim_windows(ctx, options) {
+            req = Some(r);
+        }
         let dragging = ctx.input(|i| i.pointer.any_down());
         let doc = pick(self.showing, &mut self.batch, &mut self.file);
         self.palette_editor.show(ctx, doc, dragging);

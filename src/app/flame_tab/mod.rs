@@ -11,9 +11,12 @@
 //! | `editor_state.rs`, `triangles.rs`, `editor_tools.rs` | the triangle editor |
 //! | `transform_list.rs`, `xform_panel.rs`, `variations_panel.rs`, `xaos.rs`, `settings.rs` | the sections |
 //! | `animation.rs` | rotating triangles and morphs between flames |
+//! | `timeline/` | the timeline under the preview: keys, curves, playback, loop tools |
+//! | `anim_export/` | the Animation export window: frames and videos in the background |
 //! | `gradients.rs`, `palette_editor.rs`, `mutations.rs`, `export.rs`, `variation_filter.rs` | windows |
 //! | `first_flame.rs` | the striking random flame of the first start |
 
+pub mod anim_export;
 pub mod animation;
 pub mod commands;
 pub mod document;
@@ -30,6 +33,7 @@ pub mod preview;
 pub mod preview_panel;
 pub mod settings;
 pub mod thumbnails;
+pub mod timeline;
 pub mod transform_list;
 pub mod triangles;
 pub mod variation_filter;
@@ -57,6 +61,7 @@ use mutations::MutationWindow;
 use palette_editor::PaletteEditor;
 use preview_panel::Preview;
 use thumbnails::Thumbnails;
+use timeline::Timeline;
 use variation_filter::VariationFilter;
 
 pub use animation::MORPH_FRAMES;
@@ -74,6 +79,7 @@ pub enum FlameRequest {
     LoadGradient,
     GradientFromImage,
     ChooseExportFile,
+    ChooseAnimationFile,
 }
 
 /// State of the flame tab.
@@ -98,6 +104,12 @@ pub struct FlameTab {
     pub export_job: Option<ExportJob>,
     pub animation: Option<Animation>,
     pub morph: Option<Morph>,
+    /// The timeline under the preview.
+    pub timeline: Timeline,
+    /// The Animation export window, when open.
+    pub anim_export: Option<anim_export::AnimDialog>,
+    /// The running animation export.
+    pub anim_job: Option<anim_export::AnimJob>,
     /// Where the last random batch is kept (the platform data directory; none in tests
     /// unless they set one).
     pub data_dir: Option<PathBuf>,
@@ -152,6 +164,9 @@ impl FlameTab {
             export_job: None,
             animation: None,
             morph: None,
+            timeline: Timeline::default(),
+            anim_export: None,
+            anim_job: None,
             data_dir,
             preview: ctx.map(Preview::new),
             preview_rect: None,
@@ -279,9 +294,23 @@ impl FlameTab {
                     dragging = self.editor_panel(ui, options);
                 });
         }
+        if self.timeline.open {
+            let h = ui.available_height();
+            egui::Panel::bottom("timeline")
+                .resizable(true)
+                .default_size(if self.timeline.show_curve {
+                    300.0
+                } else {
+                    120.0
+                })
+                .min_size(90.0)
+                .max_size((h * 0.6).max(90.0))
+                .show(ui, |ui| self.timeline_panel(ui));
+        }
         egui::CentralPanel::default().show(ui, |ui| self.preview_panel(ui, options, dragging));
         self.thumbs.end_frame(ui.ctx());
         self.step_animations(ui.ctx());
+        self.timeline_frame(ui.ctx());
     }
 
     /// The tab's part of the status bar.
