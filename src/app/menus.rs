@@ -244,6 +244,11 @@ impl UgnisApp {
                     "Turn the triangles (Ctrl+M)",
                     Action::ToggleAnimate,
                 ),
+                (
+                    "Timeline",
+                    "Keyframes, playback and curves under the preview (Ctrl+T)",
+                    Action::ToggleTimeline,
+                ),
             ],
             Tab::Escape => &[
                 (

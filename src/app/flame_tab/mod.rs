@@ -262,7 +262,7 @@ impl FlameTab {
         self.edit_started();
     }
 
-    /// The tab's panels: file contents, editor, preview.
+    /// The tab's panels: timeline (when shown), file contents, editor, preview.
     pub fn ui(&mut self, ui: &mut egui::Ui, options: &Options) {
         // A drag of a number, slider or the camera has ended: it becomes one undo step.
         let idle = ui.input(|i| !i.pointer.any_down() && i.smooth_scroll_delta == Vec2::ZERO);
@@ -271,6 +271,22 @@ impl FlameTab {
             if let Some(b) = &mut self.batch {
                 b.commit_live();
             }
+        }
+        if self.timeline.open {
+            let h = ui.available_height();
+            // The whole width, as in animation programs (the ruler wants room); each layout
+            // keeps its own height: the curve editor needs more.
+            let (id, size) = if self.timeline.show_curve {
+                ("timeline-with-curve", 330.0)
+            } else {
+                ("timeline", 130.0)
+            };
+            egui::Panel::bottom(id)
+                .resizable(true)
+                .default_size(size)
+                .min_size(90.0)
+                .max_size((h * 0.6).max(90.0))
+                .show(ui, |ui| self.timeline_panel(ui));
         }
         // Side panels never take the picture's room: at most a quarter and a half of the
         // width, so that a small window still shows the preview.
@@ -293,19 +309,6 @@ impl FlameTab {
                 .show(ui, |ui| {
                     dragging = self.editor_panel(ui, options);
                 });
-        }
-        if self.timeline.open {
-            let h = ui.available_height();
-            egui::Panel::bottom("timeline")
-                .resizable(true)
-                .default_size(if self.timeline.show_curve {
-                    300.0
-                } else {
-                    120.0
-                })
-                .min_size(90.0)
-                .max_size((h * 0.6).max(90.0))
-                .show(ui, |ui| self.timeline_panel(ui));
         }
         egui::CentralPanel::default().show(ui, |ui| self.preview_panel(ui, options, dragging));
         self.thumbs.end_frame(ui.ctx());

@@ -266,6 +266,21 @@ pub fn show(
     (g, events)
 }
 
+/// A value on the axis, in at most five significant digits.
+fn axis_number(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && !(1e-3..1e5).contains(&a) {
+        return format!("{v:.3e}");
+    }
+    let digits = (4 - a.log10().floor().max(0.0) as i32).max(0) as usize;
+    let s = format!("{v:.digits$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
 /// The editor's picture: grid, the curve, keys and handles, the current frame.
 fn paint(ui: &egui::Ui, g: &Geometry, input: &Input, u: &Units) {
     let p = ui.painter_at(g.rect);
@@ -281,7 +296,7 @@ fn paint(ui: &egui::Ui, g: &Geometry, input: &Input, u: &Units) {
         p.text(
             Pos2::new(g.rect.left() + 3.0, y),
             egui::Align2::LEFT_TOP,
-            format!("{}", crate::flame::render::short_num(val)),
+            axis_number(val),
             egui::FontId::proportional(10.0),
             weak,
         );
@@ -351,6 +366,11 @@ mod tests {
             handles_of(c.keys(), 0),
             [[-1.0 / 3.0, 0.0], [20.0 / 3.0, 0.0]]
         );
+        assert_eq!(axis_number(0.5614442857142857), "0.5614");
+        assert_eq!(axis_number(-0.0758871428571428), "-0.0759");
+        assert_eq!(axis_number(360.0), "360");
+        assert_eq!(axis_number(12345.678), "12346");
+        assert_eq!(axis_number(2.5e-6), "2.500e-6");
         // A flat curve still gets a range.
         let mut flat = Curve::new(Target::Flame(FlameParam::Zoom));
         flat.insert(Key::new(0.0, 2.0)).unwrap();

@@ -208,6 +208,8 @@ impl FlameTab {
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
+            .pivot(egui::Align2::CENTER_CENTER)
+            .default_pos(ctx.content_rect().center())
             .show(ctx, |ui| ask = loop_dialog(ui, d, sequence_file));
         let d = d.clone();
         if !open {

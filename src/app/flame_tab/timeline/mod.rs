@@ -186,6 +186,15 @@ impl Timeline {
         }
     }
 
+    /// The selected key of the chosen parameter: the one clicked, or else the one at the
+    /// current frame.
+    pub fn selection(&self, f: &Flame) -> Option<f64> {
+        let t = self.target?;
+        self.selected_key
+            .filter(|k| keys::index_at(f, &t, *k).is_some())
+            .or_else(|| keys::index_at(f, &t, self.frame).map(|_| self.frame))
+    }
+
     /// The flame the preview shows at the current frame, or None for the flame itself (the
     /// timeline hidden, or no keys).
     pub fn flame_at(&self, base: &Flame) -> Option<Flame> {
@@ -294,7 +303,10 @@ impl Timeline {
     /// automatic key joins the undo step of the edit that made it.
     fn sync(&mut self, doc: &mut Document, showing: Showing) {
         let base = doc.flame();
-        if !self.open || !matches!(self.mode, Mode::Keys) || base.keys.is_empty() {
+        // Not while the frames run by (playing, scrubbing): the flame would change every
+        // frame, and with it the thumbnails; the frame it stops at is held.
+        let moving = self.playing() || self.scrubbing;
+        if !self.open || !matches!(self.mode, Mode::Keys) || base.keys.is_empty() || moving {
             self.seen = None;
             return;
         }

@@ -31,7 +31,7 @@ impl FlameTab {
         if let Mode::Sequence(s) = &self.timeline.mode {
             let label = s.label.clone();
             ui.horizontal(|ui| {
-                ui.label(format!("Playing {label}"));
+                ui.label(format!("Sequence: {label}"));
                 if ui
                     .button("Back to the keys")
                     .on_hover_text("the timeline plays this flame's keyframes again")
@@ -57,61 +57,12 @@ impl FlameTab {
     /// First, back, play, on, last, the frame, and the timeline's settings.
     fn transport_row(&mut self, ui: &mut egui::Ui) {
         let f = self.doc().flame().clone();
-        let frames = self.timeline.frames(&f);
         let keys_mode = matches!(self.timeline.mode, Mode::Keys);
         let mut timeline = (f.keys.frames, f.keys.fps, f.keys.wrap);
+        // Groups that wrap as a whole on a narrow panel.
         ui.horizontal_wrapped(|ui| {
             let t = &mut self.timeline;
-            if icons::button(ui, Icon::First, "First frame")
-                .on_hover_text("first frame (Home)")
-                .clicked()
-            {
-                t.go_to(0.0, &f);
-            }
-            if icons::button(ui, Icon::Previous, "Previous frame")
-                .on_hover_text("one frame back (Left)")
-                .clicked()
-            {
-                t.step(-1.0, &f);
-            }
-            let (icon, name) = if t.playing() {
-                (Icon::Pause, "Pause")
-            } else {
-                (Icon::Play, "Play")
-            };
-            if icons::button(ui, icon, name)
-                .on_hover_text("play or pause at preview quality (Space)")
-                .clicked()
-            {
-                t.toggle_play(&f);
-            }
-            if icons::button(ui, Icon::Next, "Next frame")
-                .on_hover_text("one frame on (Right)")
-                .clicked()
-            {
-                t.step(1.0, &f);
-            }
-            if icons::button(ui, Icon::Last, "Last frame")
-                .on_hover_text("last frame (End)")
-                .clicked()
-            {
-                t.go_to(frames as f64, &f);
-            }
-            let mut frame = t.frame;
-            let r = named(
-                ui.add(
-                    egui::DragValue::new(&mut frame)
-                        .range(0.0..=(frames - 1) as f64)
-                        .speed(0.25)
-                        .max_decimals(0),
-                ),
-                "Frame",
-            )
-            .on_hover_text("the current frame");
-            if r.changed() {
-                t.go_to(frame, &f);
-            }
-            ui.label(format!("of {frames}"));
+            ui.horizontal(|ui| transport(ui, t, &f));
             ui.separator();
             if keys_mode {
                 timeline_settings(ui, &mut timeline, &mut t.repeat, &mut t.auto_key);
@@ -146,67 +97,74 @@ impl FlameTab {
             Selected::Final => XformRef::Final,
         };
         let t = &mut self.timeline;
+        let mut sel = None;
         ui.horizontal_wrapped(|ui| {
-            let shown = t.target.as_ref().map_or("choose…".to_string(), keys::label);
-            let l = ui.label("Parameter");
             let before = t.target;
-            egui::ComboBox::from_id_salt("timeline-parameter")
-                .selected_text(shown)
-                .width(200.0)
-                .height(420.0)
-                .show_ui(ui, |ui| {
-                    for g in keys::groups(&f, xform) {
-                        ui.label(egui::RichText::new(g.title).strong());
-                        for target in g.targets {
-                            let n = keys::curve(&f, &target).map_or(0, |c| c.keys().len());
-                            let mut text = keys::label(&target);
-                            if n > 0 {
-                                text.push_str(&format!("  ({n} keys)"));
+            ui.horizontal(|ui| {
+                let shown = t.target.as_ref().map_or("choose…".to_string(), keys::label);
+                let l = ui.label("Parameter");
+                egui::ComboBox::from_id_salt("timeline-parameter")
+                    .selected_text(shown)
+                    .width(200.0)
+                    .height(420.0)
+                    .show_ui(ui, |ui| {
+                        for g in keys::groups(&f, xform) {
+                            ui.label(egui::RichText::new(g.title).strong());
+                            for target in g.targets {
+                                let n = keys::curve(&f, &target).map_or(0, |c| c.keys().len());
+                                let mut text = keys::label(&target);
+                                if n > 0 {
+                                    text.push_str(&format!("  ({n} keys)"));
+                                }
+                                ui.selectable_value(&mut t.target, Some(target), text);
                             }
-                            ui.selectable_value(&mut t.target, Some(target), text);
                         }
-                    }
-                })
-                .response
-                .labelled_by(l.id)
-                .on_hover_text(
-                    "the parameter whose keys the ruler shows: the flame's, the selected \
-                     transform's and its variations', the palette's",
-                );
+                    })
+                    .response
+                    .labelled_by(l.id)
+                    .on_hover_text(
+                        "the parameter whose keys the ruler shows: the flame's, the selected \
+                         transform's and its variations', the palette's",
+                    );
+            });
             if t.target != before {
                 t.selected_key = None;
             }
-            let Some(target) = t.target else {
+            if t.target.is_none() {
                 return;
-            };
-            if ui
-                .button("Key")
-                .on_hover_text("key the parameter at the current frame (K)")
-                .clicked()
-            {
-                edits.push(Edit::Add);
             }
-            let at_frame = keys::index_at(&f, &target, t.frame).map(|_| t.frame);
-            let sel = t
-                .selected_key
-                .filter(|k| keys::index_at(&f, &target, *k).is_some())
-                .or(at_frame);
-            if ui
-                .add_enabled(sel.is_some(), egui::Button::new("Delete key"))
-                .on_hover_text("delete the selected key (Delete)")
-                .clicked()
-                && let Some(k) = sel
-            {
-                edits.push(Edit::Delete(k));
-            }
-            ui.toggle_value(&mut t.show_curve, "Curve")
-                .on_hover_text("show the parameter's curve: drag keys and Bézier handles");
-            if let Some(k) = sel.and_then(|k| {
-                let c = keys::curve(&f, &target)?;
-                c.keys().iter().find(|q| q.frame == k).copied()
-            }) {
-                ui.separator();
-                key_inspector(ui, &k, keys::unit(&target), edits);
+            sel = t.selection(&f);
+            ui.horizontal(|ui| {
+                if ui
+                    .button("Key")
+                    .on_hover_text("key the parameter at the current frame (K)")
+                    .clicked()
+                {
+                    edits.push(Edit::Add);
+                }
+                if ui
+                    .add_enabled(sel.is_some(), egui::Button::new("Delete key"))
+                    .on_hover_text("delete the selected key (Delete)")
+                    .clicked()
+                    && let Some(k) = sel
+                {
+                    edits.push(Edit::Delete(k));
+                }
+                ui.toggle_value(&mut t.show_curve, "Curve")
+                    .on_hover_text("show the parameter's curve: drag keys and Bézier handles");
+            });
+        });
+        // The selected key on a line of its own (always there, so the panel keeps its
+        // layout).
+        let target = t.target;
+        let key = target.zip(sel).and_then(|(tg, k)| {
+            let c = keys::curve(&f, &tg)?;
+            c.keys().iter().find(|q| q.frame == k).copied()
+        });
+        ui.horizontal_wrapped(|ui| match (key, target) {
+            (Some(k), Some(tg)) => key_inspector(ui, &k, keys::unit(&tg), edits),
+            _ => {
+                ui.weak("No key selected: press Key (K), or click a key on the ruler");
             }
         });
     }
@@ -230,7 +188,7 @@ impl FlameTab {
             frames: t.frames(&f),
             frame: t.frame,
             keys: &keys,
-            selected: t.selected_key,
+            selected: t.selection(&f),
             others: &others,
             wrap: f.keys.wrap,
         };
@@ -290,7 +248,7 @@ impl FlameTab {
             curve: c,
             frames: t.frames(&f),
             frame: t.frame,
-            selected: t.selected_key,
+            selected: t.selection(&f),
             wrap: f.keys.wrap,
             keep: t.curve.map(|g| (g.lo, g.hi)),
         };
@@ -383,17 +341,53 @@ impl FlameTab {
 
     /// Delete the selected key, or the one at the current frame (Delete).
     pub fn delete_key_here(&mut self) {
-        let Some(target) = self.timeline.target else {
-            return;
-        };
-        let f = self.doc().flame();
-        let k = self
-            .timeline
-            .selected_key
-            .filter(|k| keys::index_at(f, &target, *k).is_some())
-            .unwrap_or(self.timeline.frame);
-        self.apply_edits(vec![Edit::Delete(k)]);
+        if let Some(k) = self.timeline.selection(self.doc().flame()) {
+            self.apply_edits(vec![Edit::Delete(k)]);
+        }
     }
+}
+
+/// First, back, play or pause, on, last, and the current frame.
+fn transport(ui: &mut egui::Ui, t: &mut super::Timeline, f: &crate::flame::Flame) {
+    let frames = t.frames(f);
+    let (play, play_name) = if t.playing() {
+        (Icon::Pause, "Pause")
+    } else {
+        (Icon::Play, "Play")
+    };
+    let buttons = [
+        (Icon::First, "First frame", "first frame (Home)"),
+        (Icon::Previous, "Previous frame", "one frame back (Left)"),
+        (play, play_name, "play or pause at preview quality (Space)"),
+        (Icon::Next, "Next frame", "one frame on (Right)"),
+        (Icon::Last, "Last frame", "last frame (End)"),
+    ];
+    for (icon, name, tip) in buttons {
+        if icons::button(ui, icon, name).on_hover_text(tip).clicked() {
+            match icon {
+                Icon::First => t.go_to(0.0, f),
+                Icon::Previous => t.step(-1.0, f),
+                Icon::Play | Icon::Pause => t.toggle_play(f),
+                Icon::Next => t.step(1.0, f),
+                Icon::Last => t.go_to(frames as f64, f),
+            }
+        }
+    }
+    let mut frame = t.frame;
+    let r = named(
+        ui.add(
+            egui::DragValue::new(&mut frame)
+                .range(0.0..=(frames - 1) as f64)
+                .speed(0.25)
+                .max_decimals(0),
+        ),
+        "Frame",
+    )
+    .on_hover_text("the current frame");
+    if r.changed() {
+        t.go_to(frame, f);
+    }
+    ui.label(format!("of {frames}"));
 }
 
 /// The timeline's length, rate, wrap, and the playback's repeat and auto-key.
@@ -403,26 +397,30 @@ fn timeline_settings(
     repeat: &mut bool,
     auto_key: &mut bool,
 ) {
-    let l = ui.label("Frames");
-    ui.add(egui::DragValue::new(frames).range(1..=keys::MAX_TIMELINE_FRAMES))
+    ui.horizontal(|ui| {
+        let l = ui.label("Frames");
+        ui.add(egui::DragValue::new(frames).range(1..=keys::MAX_TIMELINE_FRAMES))
+            .labelled_by(l.id)
+            .on_hover_text("frames of the animation");
+        let l = ui.label("fps");
+        ui.add(
+            egui::DragValue::new(fps)
+                .range(crate::io::video::MIN_FPS..=crate::io::video::MAX_FPS)
+                .speed(0.5)
+                .max_decimals(2),
+        )
         .labelled_by(l.id)
-        .on_hover_text("frames of the animation");
-    let l = ui.label("fps");
-    ui.add(
-        egui::DragValue::new(fps)
-            .range(crate::io::video::MIN_FPS..=crate::io::video::MAX_FPS)
-            .speed(0.5)
-            .max_decimals(2),
-    )
-    .labelled_by(l.id)
-    .on_hover_text("frames per second of playback and of the video");
-    ui.checkbox(wrap, "Seamless").on_hover_text(
-        "the frame after the last equals the first: curves run on into their first key",
-    );
-    ui.checkbox(repeat, "Repeat")
-        .on_hover_text("playback starts again after the last frame");
-    ui.checkbox(auto_key, "Auto-key")
-        .on_hover_text("changing an animated value in the editor keys it at the current frame");
+        .on_hover_text("frames per second of playback and of the video");
+    });
+    ui.horizontal(|ui| {
+        ui.checkbox(wrap, "Seamless").on_hover_text(
+            "the frame after the last equals the first: curves run on into their first key",
+        );
+        ui.checkbox(repeat, "Repeat")
+            .on_hover_text("playback starts again after the last frame");
+        ui.checkbox(auto_key, "Auto-key")
+            .on_hover_text("changing an animated value in the editor keys it at the current frame");
+    });
 }
 
 fn interp_edit(frame: f64, i: Interp) -> Edit {
@@ -445,12 +443,18 @@ fn ease_edit(frame: f64, e: Ease) -> Edit {
 fn key_inspector(ui: &mut egui::Ui, k: &Key, unit: &str, edits: &mut Vec<Edit>) {
     let held = ui.input(|i| i.pointer.any_down());
     let (mut frame, mut value) = (k.frame, k.value);
-    let l = ui.label("Key at");
-    if ui
-        .add(egui::DragValue::new(&mut frame).speed(0.25).max_decimals(0))
-        .labelled_by(l.id)
-        .on_hover_text("the key's frame")
-        .changed()
+    ui.label("Key");
+    if named(
+        ui.add(
+            egui::DragValue::new(&mut frame)
+                .speed(0.25)
+                .max_decimals(0)
+                .prefix("frame "),
+        ),
+        "Key frame",
+    )
+    .on_hover_text("the key's frame")
+    .changed()
     {
         let to = frame.round();
         edits.push(Edit::Change {
@@ -459,17 +463,18 @@ fn key_inspector(ui: &mut egui::Ui, k: &Key, unit: &str, edits: &mut Vec<Edit>) 
             change: Box::new(move |k| k.frame = to),
         });
     }
-    let l = ui.label("value");
-    if ui
-        .add(
+    if named(
+        ui.add(
             egui::DragValue::new(&mut value)
                 .speed(0.01)
                 .max_decimals(6)
+                .prefix("value ")
                 .suffix(unit),
-        )
-        .labelled_by(l.id)
-        .on_hover_text("the key's value")
-        .changed()
+        ),
+        "Key value",
+    )
+    .on_hover_text("the key's value")
+    .changed()
     {
         edits.push(Edit::Change {
             frame: k.frame,

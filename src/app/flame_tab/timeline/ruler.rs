@@ -227,6 +227,8 @@ fn paint(ui: &egui::Ui, g: &Geometry, input: &Input) {
     } else {
         step
     };
+    let font = egui::FontId::proportional(11.0);
+    let mut labels: Vec<(f32, f32, String)> = Vec::new();
     let mut k = 0u32;
     while k <= input.frames {
         let x = g.x_of(k as f64);
@@ -241,13 +243,18 @@ fn paint(ui: &egui::Ui, g: &Geometry, input: &Input) {
             } else {
                 k.to_string()
             };
-            p.text(
-                Pos2::new(x + 2.0, rect.top() + 1.0),
-                egui::Align2::LEFT_TOP,
-                label,
-                egui::FontId::proportional(11.0),
-                text,
-            );
+            let width = ui
+                .ctx()
+                .fonts_mut(|f| f.layout_no_wrap(label.clone(), font.clone(), text))
+                .size()
+                .x;
+            // Right of the tick, or left of it at the end of the ruler.
+            let left = if x + 2.0 + width > rect.right() {
+                x - 2.0 - width
+            } else {
+                x + 2.0
+            };
+            labels.push((left, width, label));
         } else {
             p.vline(
                 x,
@@ -258,6 +265,20 @@ fn paint(ui: &egui::Ui, g: &Geometry, input: &Input) {
         match k.checked_add(inc) {
             Some(n) => k = n,
             None => break,
+        }
+    }
+    // The last label always shows; one that would overlap the label after it does not.
+    let mut next_left = f32::INFINITY;
+    for (left, width, label) in labels.into_iter().rev() {
+        if left + width + 4.0 <= next_left {
+            p.text(
+                Pos2::new(left, rect.top() + 1.0),
+                egui::Align2::LEFT_TOP,
+                label,
+                font.clone(),
+                text,
+            );
+            next_left = left;
         }
     }
     for &f in input.others {
