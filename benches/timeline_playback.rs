@@ -87,7 +87,7 @@ fn main() {
     let in_order: Vec<u32> = (0..FRAMES).collect();
     // A drag back and forth over the ruler, in uneven steps.
     let scrub: Vec<u32> = (0..FRAMES)
-        .map(|k| ((k * 37 + (k * k) % 11) % FRAMES))
+        .map(|k| (k * 37 + (k * k) % 11) % FRAMES)
         .collect();
     for name in [
         "orchid",

@@ -357,3 +357,86 @@ fn a_gif_is_made_and_a_video_without_ffmpeg_keeps_its_frames() {
     assert_eq!(std::fs::read_dir(&frames).unwrap().count(), 3);
     assert!(!mp4.exists());
 }
+
+#[test]
+fn a_cancelled_export_keeps_its_frames_and_the_next_one_renders_the_rest() {
+    let mut h = open("sierpinski.flame");
+    h.state_mut().flame.make_rotation_loop(1.0, 40);
+    h.run_steps(2);
+    let dir = example("sierpinski.flame").with_file_name("anim-cancelled");
+    let _ = std::fs::remove_dir_all(&dir);
+    export_window(&mut h, &dir);
+    {
+        let s = &mut h.state_mut().flame.anim_export.as_mut().unwrap().settings;
+        s.last = 39.0;
+        s.width = 96;
+        s.height = 72;
+        s.quality = 200.0;
+    }
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Render").click();
+    h.run_steps(2);
+    wait_until(&mut h, |a| {
+        a.flame
+            .anim_job
+            .as_ref()
+            .is_none_or(|j| j.progress().done >= 2)
+    });
+    assert!(h.state().flame.anim_job.is_some(), "40 frames take longer");
+    h.get_by_role_and_label(Role::Button, "Cancel").click();
+    h.run_steps(2);
+    wait_until(&mut h, |a| a.flame.anim_job.is_none());
+    h.run_steps(1);
+    let status = h.state().status().to_string();
+    assert!(status.contains("cancelled"), "{status}");
+    let kept = std::fs::read_dir(&dir).unwrap().count();
+    assert!((2..40).contains(&kept), "{kept} frames kept");
+    // Only whole frames: every file on disk is a complete picture.
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        assert_eq!(image::image_dimensions(&p).unwrap(), (96, 72), "{p:?}");
+    }
+    // The next export says what it keeps and renders only the rest (here: the first ten).
+    export_window(&mut h, &dir);
+    {
+        let s = &mut h.state_mut().flame.anim_export.as_mut().unwrap().settings;
+        s.width = 96;
+        s.height = 72;
+        s.last = (kept as f64 - 1.0).max(9.0);
+    }
+    h.run_steps(2);
+    let status = run_export(&mut h, "Resume");
+    let total = kept.max(10);
+    assert!(
+        status.contains(&format!(
+            "{} frames rendered, {kept} on disk kept",
+            total - kept
+        )),
+        "{status}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_mp4_is_made_through_ffmpeg_when_it_is_there() {
+    if !ugnis::io::video::ffmpeg_available(std::path::Path::new("ffmpeg")) {
+        eprintln!("ffmpeg is not on PATH: the .mp4 export is not tried");
+        return;
+    }
+    let mut h = open("sierpinski.flame");
+    h.state_mut().flame.make_rotation_loop(1.0, 40);
+    h.run_steps(2);
+    let mp4 = example("sierpinski.flame").with_file_name("loop-ffmpeg.mp4");
+    let _ = std::fs::remove_file(&mp4);
+    export_window(&mut h, &mp4);
+    let status = run_export(&mut h, "Render");
+    assert!(status.contains("video"), "{status}");
+    let bytes = std::fs::read(&mp4).unwrap();
+    assert!(bytes.len() > 100 && &bytes[4..8] == b"ftyp", "an MP4 file");
+    assert_eq!(
+        std::fs::read_dir(mp4.with_file_name("loop-ffmpeg.mp4.frames"))
+            .unwrap()
+            .count(),
+        3
+    );
+}

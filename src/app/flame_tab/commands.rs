@@ -124,13 +124,9 @@ impl FlameTab {
         }
     }
 
-    /// Open the export dialog for the current flame.
-    pub fn open_export_dialog(&mut self, options: &Options) {
-        if self.export_job.is_some() {
-            self.notices
-                .status("An export is running: stop it before starting another");
-            return;
-        }
+    /// Where exports of the current flame go first, and the name they start from: the folder
+    /// of the last export or of the file, and the flame's name as a file name.
+    pub(super) fn export_place(&self) -> (std::path::PathBuf, String) {
         let f = self.doc().flame();
         let dir = self.last_export_dir.clone().or_else(|| {
             self.doc()
@@ -143,6 +139,18 @@ impl FlameTab {
         } else {
             io::ifs::entry_name(&f.name)
         };
+        (dir.unwrap_or_default(), name)
+    }
+
+    /// Open the export dialog for the current flame.
+    pub fn open_export_dialog(&mut self, options: &Options) {
+        if self.export_job.is_some() {
+            self.notices
+                .status("An export is running: stop it before starting another");
+            return;
+        }
+        let f = self.doc().flame();
+        let (dir, name) = self.export_place();
         self.export_dialog = Some(ExportSettings {
             width: f.width,
             height: f.height,
@@ -150,7 +158,7 @@ impl FlameTab {
             supersample: f.supersample,
             bits16: false,
             transparent: false,
-            path: dir.unwrap_or_default().join(format!("{name}.png")),
+            path: dir.join(format!("{name}.png")),
             lock_aspect: true,
             refine: false,
             save_state: false,

@@ -109,17 +109,7 @@ impl FlameTab {
         } else {
             SourceKind::Rotation
         };
-        let dir = self.last_export_dir.clone().or_else(|| {
-            self.doc()
-                .path
-                .as_ref()
-                .and_then(|p| p.parent().map(Path::to_path_buf))
-        });
-        let name = if f.name.is_empty() {
-            "flame".to_string()
-        } else {
-            io::ifs::entry_name(&f.name)
-        };
+        let (dir, name) = self.export_place();
         AnimExportSettings {
             source,
             first: 0.0,
@@ -133,7 +123,7 @@ impl FlameTab {
                 options.main_quality.max(f.quality),
             ),
             blur: true,
-            output: dir.unwrap_or_default().join(format!("{name}-animation")),
+            output: dir.join(format!("{name}-animation")),
             fps: f.keys.fps,
             ffmpeg: "ffmpeg".into(),
             seed: 1,

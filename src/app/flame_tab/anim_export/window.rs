@@ -9,6 +9,7 @@ use eframe::egui;
 use super::job::AnimJob;
 use super::settings::{AnimExportSettings, SourceKind};
 use crate::app::a11y::named;
+use crate::app::flame_tab::export::size_fields;
 use crate::flame::render::{MAX_QUALITY, MIN_QUALITY};
 use crate::flame::sequence::Animation;
 use crate::io::animation::MAX_FRAMES;
@@ -232,24 +233,11 @@ fn frames_row(ui: &mut egui::Ui, s: &mut AnimExportSettings, offer: &Offer) {
 fn size_row(ui: &mut egui::Ui, s: &mut AnimExportSettings) {
     ui.label("Size");
     ui.horizontal(|ui| {
-        let aspect = s.width as f64 / s.height.max(1) as f64;
-        let w = named(
-            ui.add(egui::DragValue::new(&mut s.width).range(1..=30000)),
-            "Animation width",
-        );
-        ui.label("×");
-        let h = named(
-            ui.add(egui::DragValue::new(&mut s.height).range(1..=30000)),
-            "Animation height",
-        );
-        ui.checkbox(&mut s.lock_aspect, "keep proportions");
-        if s.lock_aspect {
-            if w.changed() {
-                s.height = ((s.width as f64 / aspect).round() as u32).clamp(1, 30000);
-            } else if h.changed() {
-                s.width = ((s.height as f64 * aspect).round() as u32).clamp(1, 30000);
-            }
-        }
+        size_fields(
+            ui,
+            (&mut s.width, &mut s.height, &mut s.lock_aspect),
+            ["Animation width", "Animation height"],
+        )
     });
     ui.end_row();
 }

@@ -19,4 +19,5 @@ mod window;
 pub use job::{ExportJob, Finished, JobAction, JobStatus};
 pub use resume::{ResumeInfo, quality_text};
 pub use settings::{ExportSettings, STATE_EXTENSION, state_path};
+pub(super) use window::size_fields;
 pub use window::{dialog, job_window};

@@ -5,6 +5,7 @@
 use eframe::egui::{self, Color32, Pos2, Rect, Sense, Stroke, Vec2};
 
 use super::KeyDrag;
+use super::ruler::{self, PAD};
 use crate::app::a11y::named;
 use crate::flame::keyframes::{Curve, Interp, Key};
 
@@ -18,18 +19,17 @@ pub struct Geometry {
     pub hi: f64,
 }
 
-const PAD: f32 = 12.0;
+/// How near (points) the pointer must be to grab a key or a handle.
 const GRAB: f32 = 7.0;
 
 impl Geometry {
+    /// Frames run as on the ruler above.
     pub fn x_of(&self, frame: f64) -> f32 {
-        let w = (self.rect.width() - 2.0 * PAD).max(1.0);
-        self.rect.left() + PAD + (frame / self.frames.max(1) as f64) as f32 * w
+        ruler::x_of_frame(self.rect, self.frames, frame)
     }
 
     pub fn frame_of(&self, x: f32) -> f64 {
-        let w = (self.rect.width() - 2.0 * PAD).max(1.0);
-        ((x - self.rect.left() - PAD) / w) as f64 * self.frames.max(1) as f64
+        ruler::frame_at_x(self.rect, self.frames, x)
     }
 
     pub fn y_of(&self, v: f64) -> f32 {

@@ -17,24 +17,36 @@ pub struct Geometry {
 }
 
 /// Room left and right of the ruler's ends, so that keys there can be grabbed.
-const PAD: f32 = 12.0;
+pub(super) const PAD: f32 = 12.0;
 /// Height of the numbers band; the keys sit below it.
 const NUMBERS: f32 = 16.0;
 pub const HEIGHT: f32 = 44.0;
 /// How near (points) the pointer must be to grab a key.
 const GRAB: f32 = 7.0;
 
+/// Where `frame` is across `rect`, which spans frames 0 to `frames` inside its margins (the
+/// ruler's and the curve editor's frame axis).
+pub(super) fn x_of_frame(rect: Rect, frames: u32, frame: f64) -> f32 {
+    let w = (rect.width() - 2.0 * PAD).max(1.0);
+    rect.left() + PAD + (frame / frames.max(1) as f64) as f32 * w
+}
+
+/// The frame (not rounded) at `x` across `rect` (see [`x_of_frame`]).
+pub(super) fn frame_at_x(rect: Rect, frames: u32, x: f32) -> f64 {
+    let w = (rect.width() - 2.0 * PAD).max(1.0);
+    ((x - rect.left() - PAD) / w) as f64 * frames.max(1) as f64
+}
+
 impl Geometry {
     pub fn x_of(&self, frame: f64) -> f32 {
-        let w = (self.rect.width() - 2.0 * PAD).max(1.0);
-        self.rect.left() + PAD + (frame / self.frames.max(1) as f64) as f32 * w
+        x_of_frame(self.rect, self.frames, frame)
     }
 
     /// The whole frame nearest to `x`, within the ruler.
     pub fn frame_of(&self, x: f32) -> f64 {
-        let w = (self.rect.width() - 2.0 * PAD).max(1.0);
-        let t = ((x - self.rect.left() - PAD) / w) as f64 * self.frames as f64;
-        t.round().clamp(0.0, self.frames as f64)
+        frame_at_x(self.rect, self.frames, x)
+            .round()
+            .clamp(0.0, self.frames as f64)
     }
 
     /// Where the key at `frame` is drawn.
