@@ -353,6 +353,7 @@ impl FlameTab {
         self.timeline.open = !self.timeline.open;
         if !self.timeline.open {
             self.timeline.stop();
+            self.timeline.scrubbing = false;
         } else if self.timeline.target.is_none() {
             // The first animated parameter, if any.
             self.timeline.target = self.doc().flame().keys.curves.first().map(|c| c.target);

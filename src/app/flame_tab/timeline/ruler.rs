@@ -244,7 +244,7 @@ fn paint(ui: &egui::Ui, g: &Geometry, input: &Input) {
     let mut k = 0u32;
     while k <= input.frames {
         let x = g.x_of(k as f64);
-        if k % step == 0 {
+        if k.is_multiple_of(step) {
             p.vline(
                 x,
                 rect.top() + NUMBERS - 4.0..=rect.bottom(),
