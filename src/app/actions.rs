@@ -61,6 +61,26 @@ pub enum Action {
     ToggleAnimate,
     /// Play flam3-style in-betweens from the current flame to the next one of the file.
     ToggleMorph,
+    /// Show or hide the timeline under the preview.
+    ToggleTimeline,
+    /// Play or pause the timeline.
+    PlayPause,
+    /// One frame back on the timeline.
+    PreviousFrame,
+    /// One frame on, on the timeline.
+    NextFrame,
+    /// The timeline's first frame.
+    FirstFrame,
+    /// The timeline's last frame.
+    LastFrame,
+    /// Key the timeline's parameter at the current frame.
+    AddKey,
+    /// Delete the timeline's selected key.
+    DeleteKey,
+    /// Animation ▸ Loop tools…
+    ShowLoopTools,
+    /// Animation ▸ Export animation…
+    ExportAnimation,
     /// Tools ▸ Random weights.
     RandomWeights,
     /// Tools ▸ Equal weights.
@@ -117,7 +137,7 @@ const fn item(
 }
 
 /// The menus, in order (Fraktalai's, with Apophysis conventions where it is silent).
-pub const MENUS: [&str; 5] = ["File", "Edit", "View", "Tools", "Help"];
+pub const MENUS: [&str; 6] = ["File", "Edit", "View", "Tools", "Animation", "Help"];
 
 /// The menu entries.
 pub const MENU: &[MenuItem] = &[
@@ -214,6 +234,61 @@ pub const MENU: &[MenuItem] = &[
         sc(CMD, Key::Comma),
     ),
     item(
+        "Animation",
+        "Timeline",
+        Action::ToggleTimeline,
+        sc(CMD, Key::T),
+    ),
+    item(
+        "Animation",
+        "Play / pause",
+        Action::PlayPause,
+        sc(Modifiers::NONE, Key::Space),
+    ),
+    item(
+        "Animation",
+        "Previous frame",
+        Action::PreviousFrame,
+        sc(Modifiers::NONE, Key::ArrowLeft),
+    ),
+    item(
+        "Animation",
+        "Next frame",
+        Action::NextFrame,
+        sc(Modifiers::NONE, Key::ArrowRight),
+    ),
+    item(
+        "Animation",
+        "First frame",
+        Action::FirstFrame,
+        sc(Modifiers::NONE, Key::Home),
+    ),
+    item(
+        "Animation",
+        "Last frame",
+        Action::LastFrame,
+        sc(Modifiers::NONE, Key::End),
+    ),
+    item(
+        "Animation",
+        "Key the parameter",
+        Action::AddKey,
+        sc(Modifiers::NONE, Key::K),
+    ),
+    item(
+        "Animation",
+        "Delete key",
+        Action::DeleteKey,
+        sc(Modifiers::NONE, Key::Delete),
+    ),
+    item("Animation", "Loop tools…", Action::ShowLoopTools, None),
+    item(
+        "Animation",
+        "Export animation…",
+        Action::ExportAnimation,
+        sc(CMD_SHIFT, Key::E),
+    ),
+    item(
         "Help",
         "Keyboard shortcuts",
         Action::ShowShortcuts,
@@ -238,6 +313,21 @@ pub const VARIATION_MENU: [(&str, Option<VarId>); 8] = [
     ("Polar", Some(variations::POLAR)),
     ("Bent", Some(variations::BENT)),
 ];
+
+/// Commands of the timeline whose shortcuts are plain keys: they act only while the timeline
+/// is shown and no text field has the keyboard.
+pub fn is_timeline_key(a: Action) -> bool {
+    matches!(
+        a,
+        Action::PlayPause
+            | Action::PreviousFrame
+            | Action::NextFrame
+            | Action::FirstFrame
+            | Action::LastFrame
+            | Action::AddKey
+            | Action::DeleteKey
+    )
+}
 
 /// Every shortcut with its action, the ones with more modifiers first: egui matches shortcuts
 /// ignoring extra Shift, so Ctrl+Shift+S must be tried before Ctrl+S.

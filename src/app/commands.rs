@@ -128,6 +128,18 @@ impl UgnisApp {
             Action::RandomFlame => self.flame.random_flame(o),
             Action::ToggleAnimate => self.flame.toggle_animation(),
             Action::ToggleMorph => self.flame.toggle_morph(),
+            Action::ToggleTimeline => self.flame.toggle_timeline(),
+            Action::PlayPause => self.flame.toggle_play(),
+            Action::PreviousFrame => self.flame.timeline_step(-1.0),
+            Action::NextFrame => self.flame.timeline_step(1.0),
+            Action::FirstFrame => self.flame.timeline_go(0.0),
+            Action::LastFrame => self.flame.timeline_go(f64::INFINITY),
+            Action::AddKey => self.flame.key_here(),
+            Action::DeleteKey => self.flame.delete_key_here(),
+            Action::ShowLoopTools => {
+                self.flame.timeline.loop_dialog = Some(Default::default());
+            }
+            Action::ExportAnimation => self.flame.open_anim_export(o),
             Action::RandomWeights => self.flame.random_weights(),
             Action::EqualWeights => self.flame.equal_weights(),
             Action::AreaWeights => self.flame.area_weights(),

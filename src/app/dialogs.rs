@@ -26,6 +26,8 @@ pub enum Purpose {
     ExportLSystem,
     BoxCountImage,
     ResumeState,
+    /// The video file of an animation export.
+    ExportAnimation,
 }
 
 impl Purpose {
@@ -47,6 +49,7 @@ impl Purpose {
             Purpose::ExportLSystem => "Export L-system picture",
             Purpose::BoxCountImage => "Image to box-count",
             Purpose::ResumeState => "Resume render state",
+            Purpose::ExportAnimation => "Export animation",
         }
     }
 
@@ -64,6 +67,7 @@ impl Purpose {
             Purpose::ExportLSystem => &["svg", "png"],
             Purpose::BoxCountImage => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::ResumeState => &["ugnis-state"],
+            Purpose::ExportAnimation => &["mp4", "webm", "mkv", "mov", "gif", "apng"],
         }
     }
 
@@ -77,6 +81,7 @@ impl Purpose {
                 | Purpose::ExportEscape
                 | Purpose::ExportScene
                 | Purpose::ExportLSystem
+                | Purpose::ExportAnimation
         )
     }
 }

@@ -110,6 +110,13 @@ impl UgnisApp {
                 .and_then(|s| s.path.file_name())
                 .map(|n| n.to_string_lossy().into_owned())
                 .unwrap_or_default(),
+            Purpose::ExportAnimation => self
+                .flame
+                .anim_export
+                .as_ref()
+                .and_then(|d| d.settings.output.file_stem())
+                .map(|n| format!("{}.mp4", n.to_string_lossy()))
+                .unwrap_or_default(),
             _ => String::new(),
         };
         let start = match purpose {
@@ -121,6 +128,11 @@ impl UgnisApp {
             | Purpose::ExportScene
             | Purpose::SceneTexture => self.scene.path.clone(),
             Purpose::Export => self.flame.export_dialog.as_ref().map(|s| s.path.clone()),
+            Purpose::ExportAnimation => self
+                .flame
+                .anim_export
+                .as_ref()
+                .map(|d| d.settings.output.clone()),
             Purpose::OpenLSystem | Purpose::ExportLSystem => self.explore.lsystem.file.clone(),
             Purpose::BoxCountImage => None,
             Purpose::ResumeState => self.flame.last_export_dir.clone(),
@@ -308,6 +320,11 @@ impl UgnisApp {
             Purpose::Export => {
                 if let Some(s) = &mut self.flame.export_dialog {
                     s.path = path;
+                }
+            }
+            Purpose::ExportAnimation => {
+                if let Some(d) = &mut self.flame.anim_export {
+                    d.settings.output = path;
                 }
             }
             Purpose::OpenView => self.open_in(View::Escape, &path),

@@ -53,6 +53,18 @@ pub const PANELS: &[(&str, &str)] = &[
          they may use. Mutations (Ctrl+U) shows eight variants of the current flame.",
     ),
     (
+        "Timeline and animation",
+        "Animation › Timeline (Ctrl+T) shows the frames under the preview; the preview and \
+         the editor's numbers are those of the current frame. Choose a parameter (the \
+         flame's, the selected transform's and its variations', the palette's), press Key (K) \
+         to key it at the current frame; with Auto-key, changing an animated value keys it. \
+         Drag keys on the ruler, right-click them for interpolation and easing; Curve shows \
+         the value against the frame with Bézier handles. Space plays, Left and Right step, \
+         Home and End jump. Loop tools make a rotation loop as keys and play flam3-genome's \
+         morphs and loops; Export animation (Ctrl+Shift+E) writes PNG frames or a video, and \
+         resumes where a cancelled export stopped. Motion blur is set in Settings.",
+    ),
+    (
         "Escape-time tab",
         "Mandelbrot, Julia and relatives. Wheel zooms at the pointer, drag pans, right-drag \
          zooms to a rectangle, a click on the Mandelbrot set opens the Julia set of that \

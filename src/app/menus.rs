@@ -13,12 +13,17 @@ impl UgnisApp {
     /// Shortcuts, pasted flames and dropped files.
     pub(super) fn handle_input(&mut self, ctx: &egui::Context) {
         let typing = ctx.memory(|m| m.focused().is_some());
+        let timeline_keys = self.tab == Tab::Flame && self.flame.timeline.open && !typing;
         let mut fired = Vec::new();
         let all = actions::shortcuts();
         ctx.input_mut(|i| {
             for (s, a) in &all {
                 // Let text fields keep their own Ctrl+Z etc.
                 if typing && matches!(a, Action::Undo | Action::Redo) {
+                    continue;
+                }
+                // Plain keys drive the timeline only while it is shown and nothing types.
+                if actions::is_timeline_key(*a) && !timeline_keys {
                     continue;
                 }
                 if i.consume_shortcut(s) {
@@ -70,6 +75,8 @@ impl UgnisApp {
             Action::ToggleEditor => Some(f.show_editor),
             Action::ToggleAnimate => Some(f.animation.is_some()),
             Action::ToggleMorph => Some(f.morph.is_some()),
+            Action::ToggleTimeline => Some(f.timeline.open),
+            Action::PlayPause => Some(f.timeline.playing()),
             _ => None,
         };
         let enabled = match (a, self.tab) {
@@ -79,6 +86,9 @@ impl UgnisApp {
             (Action::Redo, Tab::Escape) => self.escape.can_go_forward(),
             (Action::Undo | Action::Redo, Tab::Scene | Tab::Explore) => false,
             (Action::RandomBatch, _) => !f.batch_running(),
+            (Action::AddKey | Action::DeleteKey, _) => {
+                f.timeline.target.is_some() && !f.timeline.plays_sequence()
+            }
             _ => true,
         };
         (checked, enabled)
@@ -233,6 +243,11 @@ impl UgnisApp {
                     "Animate",
                     "Turn the triangles (Ctrl+M)",
                     Action::ToggleAnimate,
+                ),
+                (
+                    "Timeline",
+                    "Keyframes, playback and curves under the preview (Ctrl+T)",
+                    Action::ToggleTimeline,
                 ),
             ],
             Tab::Escape => &[

@@ -405,6 +405,7 @@ impl UgnisApp {
             Some(FlameRequest::LoadGradient) => self.browse(Purpose::LoadGradient),
             Some(FlameRequest::GradientFromImage) => self.browse(Purpose::GradientFromImage),
             Some(FlameRequest::ChooseExportFile) => self.browse(Purpose::Export),
+            Some(FlameRequest::ChooseAnimationFile) => self.browse(Purpose::ExportAnimation),
             None => {}
         }
         self.dialogs(&ctx);

@@ -218,7 +218,57 @@ fn from_model_units(t: &Target, v: f64) -> f64 {
     }
 }
 
+impl Target {
+    /// True for targets whose values move the base flame rather than replace one of its
+    /// values: an xform's turn and scale, the palette's rotation and hue. Their curves are
+    /// offsets from the base; every other curve sets its value outright.
+    pub fn is_offset(&self) -> bool {
+        matches!(
+            self,
+            Target::Xform(
+                _,
+                XformParam::Rotate
+                    | XformParam::Scale
+                    | XformParam::PostRotate
+                    | XformParam::PostScale
+            ) | Target::PaletteRotate
+                | Target::PaletteHue
+        )
+    }
+}
+
 impl Keyframes {
+    /// Set in `base` the values its curves have at `frame`, for every target that is not an
+    /// offset ([`Target::is_offset`]): what an editor shows as the flame's values at that
+    /// frame. Offsets stay with [`Keyframes::apply`], so `apply(base, frame)` is the same
+    /// before and after. A variation whose weight curve passes 0 keeps its parameters.
+    pub fn hold_at(&self, base: &mut Flame, frame: f64) {
+        let wrap = self.wrap.then_some(self.frames as f64);
+        for c in self.curves.iter().filter(|c| !c.target.is_offset()) {
+            let Some(v) = c.eval(frame, wrap) else {
+                continue;
+            };
+            let v = to_model_units(&c.target, v);
+            if let Target::Var {
+                xform: r,
+                var,
+                form,
+                param: VarParam::Weight,
+            } = c.target
+                && v == 0.0
+            {
+                // Target::set drops a variation of weight 0, and its parameters with it.
+                if let Some(x) = xform_mut(base, r)
+                    && let Some(w) = x.vars.iter_mut().find(|w| w.id == var && w.form == form)
+                {
+                    w.weight = 0.0;
+                }
+                continue;
+            }
+            c.target.set(base, v);
+        }
+    }
+
     /// Key the target's current value in `flame` at `frame` (as in most editors' "set key").
     pub fn key_current(&mut self, flame: &Flame, t: Target, frame: f64) -> Result<(), String> {
         let v = t

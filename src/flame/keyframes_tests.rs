@@ -199,3 +199,53 @@ fn targets_round_trip_through_their_names_and_set_the_flame() {
         std::f64::consts::FRAC_PI_2
     ));
 }
+
+#[test]
+fn holding_a_frame_sets_values_and_leaves_offsets_to_apply() {
+    use crate::flame::model::{Affine, Flame, Var, Xform};
+    let julia = variations::parse_name("julian").unwrap();
+    let mut x = Xform::linear(Affine::new(0.5, 0.1, -0.2, 0.7, 0.3, 0.0), 1.0, 0.0);
+    let mut v = Var::with_form(julia.0, julia.1, 0.5);
+    v.params[0] = 5.0;
+    x.vars.push(v);
+    let base = Flame {
+        xforms: vec![x],
+        ..Flame::default()
+    };
+    let mut k = Keyframes::default();
+    let zoom = Target::Flame(FlameParam::Zoom);
+    let turn = Target::Xform(XformRef::Index(0), XformParam::Rotate);
+    let weight = Target::Var {
+        xform: XformRef::Index(0),
+        var: julia.0,
+        form: julia.1,
+        param: VarParam::Weight,
+    };
+    for (t, a, b) in [(zoom, 0.0, 2.0), (turn, 0.0, 90.0), (weight, 0.5, 0.0)] {
+        let c = k.curve_mut(t);
+        c.insert(Key {
+            interp: Interp::Linear,
+            ..Key::new(0.0, a)
+        })
+        .unwrap();
+        c.insert(Key::new(10.0, b)).unwrap();
+    }
+    let mut held = base.clone();
+    k.hold_at(&mut held, 5.0);
+    assert!(close(held.zoom, 1.0));
+    assert_eq!(
+        held.xforms[0].coefs, base.xforms[0].coefs,
+        "turns stay offsets"
+    );
+    assert!(turn.is_offset() && !zoom.is_offset() && !weight.is_offset());
+    for f in [0.0, 5.0, 10.0] {
+        assert_eq!(k.apply(&held, f), k.apply(&base, f), "frame {f}");
+    }
+    // At weight 0 the variation stays in the base with its parameters.
+    k.hold_at(&mut held, 10.0);
+    let w = &held.xforms[0].vars[1];
+    assert_eq!((w.weight, w.params[0]), (0.0, 5.0));
+    k.hold_at(&mut held, 0.0);
+    assert_eq!(held.xforms[0].vars[1].params[0], 5.0);
+    assert_eq!(k.apply(&held, 3.0), k.apply(&base, 3.0));
+}

@@ -17,7 +17,7 @@ use crate::flame::model::Flame;
 use crate::flame::motion_blur::{MotionFrame, frame_from};
 use crate::flame::render::{RenderError, RenderOptions, Renderer};
 use crate::flame::sequence::MAX_TEMPORAL_SAMPLES;
-use crate::io::video::{Video, VideoError, VideoOptions};
+use crate::io::video::{Video, VideoError, VideoKind, VideoOptions};
 
 /// Most frames one animation may have.
 pub const MAX_FRAMES: u64 = 10_000_000;
@@ -229,6 +229,48 @@ pub fn frames_by_time(
             FrameSpec { time: t, name }
         })
         .collect())
+}
+
+/// The frames `first` to `last` (1-based, inclusive) of a numbered animation of `total`
+/// frames (rotations, in-betweens): `frame-0001.png` … with at least four digits, frame k at
+/// time k − 1. Names depend on `total` only, so parts of one animation rendered apart (an
+/// array job, a resumed run) fit together.
+pub fn numbered_frames(total: u64, first: u64, last: u64) -> Result<Vec<FrameSpec>, AnimError> {
+    if total == 0 || total > MAX_FRAMES {
+        return Err(AnimError::Settings(format!(
+            "{total} frames: must be between 1 and {MAX_FRAMES}"
+        )));
+    }
+    if first < 1 || first > last || last > total {
+        return Err(AnimError::Settings(format!(
+            "frames {first} to {last}: expected 1 ≤ first ≤ last ≤ {total}"
+        )));
+    }
+    let digits = total.to_string().len().max(4);
+    Ok((first..=last)
+        .map(|k| FrameSpec {
+            time: (k - 1) as f64,
+            name: format!("frame-{k:0digits$}.png"),
+        })
+        .collect())
+}
+
+/// Where an animation written to `out` goes: a video name (.mp4, .webm, .mkv, .mov, .gif,
+/// .apng) keeps its frames in the folder `NAME.frames` beside it; anything else is the folder
+/// of the frames. Err when `out` is a file that is not a video.
+pub fn output_paths(out: &Path) -> Result<(PathBuf, Option<PathBuf>), AnimError> {
+    if VideoKind::of(out).is_some() {
+        let mut dir = out.as_os_str().to_owned();
+        dir.push(".frames");
+        return Ok((PathBuf::from(dir), Some(out.to_path_buf())));
+    }
+    if out.exists() && !out.is_dir() {
+        return Err(AnimError::Settings(format!(
+            "output '{}' is neither a folder nor a video name (.mp4, .webm, .mkv, .mov, .gif, .apng)",
+            out.display()
+        )));
+    }
+    Ok((out.to_path_buf(), None))
 }
 
 /// An animation to write.

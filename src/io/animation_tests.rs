@@ -155,3 +155,35 @@ fn rotation_frames_step_from_the_start_whatever_the_order() {
         in_order[1].xforms
     );
 }
+
+#[test]
+fn numbered_frames_and_output_paths_follow_the_command_lines_rules() {
+    let f = numbered_frames(90, 3, 4).unwrap();
+    assert_eq!(
+        f,
+        vec![
+            FrameSpec {
+                time: 2.0,
+                name: "frame-0003.png".into()
+            },
+            FrameSpec {
+                time: 3.0,
+                name: "frame-0004.png".into()
+            }
+        ]
+    );
+    assert_eq!(
+        numbered_frames(123_456, 1, 1).unwrap()[0].name,
+        "frame-000001.png"
+    );
+    for (total, a, b) in [(0, 1, 1), (10, 0, 3), (10, 4, 3), (10, 9, 11)] {
+        assert!(numbered_frames(total, a, b).is_err(), "{total} {a} {b}");
+    }
+    let dir = scratch("outputs");
+    let (frames, video) = output_paths(&dir.join("loop.mp4")).unwrap();
+    assert_eq!(frames, dir.join("loop.mp4.frames"));
+    assert_eq!(video, Some(dir.join("loop.mp4")));
+    assert_eq!(output_paths(&dir).unwrap(), (dir.clone(), None));
+    std::fs::write(dir.join("notes.txt"), "x").unwrap();
+    assert!(output_paths(&dir.join("notes.txt")).is_err());
+}

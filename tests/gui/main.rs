@@ -2,6 +2,7 @@
 //! here the helpers they share (a harness, private copies of the examples, mouse drags).
 #![cfg(feature = "gui")]
 
+mod animation;
 mod escape_tab;
 mod explore_tab;
 mod export;

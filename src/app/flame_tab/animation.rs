@@ -46,6 +46,7 @@ impl FlameTab {
         if let Some(a) = self.animation.take() {
             self.doc_mut().end_gesture(a.before);
         }
+        self.timeline.stop();
         let doc = self.doc();
         let a = doc.flame().clone();
         let b = &doc.flames[(doc.current + 1) % n];
@@ -110,6 +111,7 @@ impl FlameTab {
             self.doc_mut().end_gesture(a.before);
             self.notices.status("Animation stopped");
         } else {
+            self.timeline.stop();
             let seed = self.rng.u64();
             self.animation = Some(Animation {
                 before: self.doc().begin_gesture(),
@@ -153,11 +155,15 @@ impl FlameTab {
         }
     }
 
-    /// The flame the preview shows: a morph frame or the current flame.
-    pub fn shown_flame(&self) -> &Flame {
+    /// The flame the preview shows: a morph frame, the timeline's current frame, or the
+    /// current flame.
+    pub fn shown_flame(&self) -> Flame {
         match &self.morph {
-            Some(m) => &m.frames[m.index],
-            None => self.doc().flame(),
+            Some(m) => m.frames[m.index].clone(),
+            None => {
+                let base = self.doc().flame();
+                self.timeline.flame_at(base).unwrap_or_else(|| base.clone())
+            }
         }
     }
 }

@@ -132,13 +132,9 @@ impl FlameTab {
         }
     }
 
-    /// Open the export dialog for the current flame.
-    pub fn open_export_dialog(&mut self, options: &Options) {
-        if self.export_job.is_some() {
-            self.notices
-                .status("An export is running: stop it before starting another");
-            return;
-        }
+    /// Where exports of the current flame go first, and the name they start from: the folder
+    /// of the last export or of the file, and the flame's name as a file name.
+    pub(super) fn export_place(&self) -> (std::path::PathBuf, String) {
         let f = self.doc().flame();
         let dir = self.last_export_dir.clone().or_else(|| {
             self.doc()
@@ -151,6 +147,18 @@ impl FlameTab {
         } else {
             io::ifs::entry_name(&f.name)
         };
+        (dir.unwrap_or_default(), name)
+    }
+
+    /// Open the export dialog for the current flame.
+    pub fn open_export_dialog(&mut self, options: &Options) {
+        if self.export_job.is_some() {
+            self.notices
+                .status("An export is running: stop it before starting another");
+            return;
+        }
+        let f = self.doc().flame();
+        let (dir, name) = self.export_place();
         self.export_dialog = Some(ExportSettings {
             width: f.width,
             height: f.height,
@@ -158,7 +166,7 @@ impl FlameTab {
             supersample: f.supersample,
             bits16: false,
             transparent: false,
-            path: dir.unwrap_or_default().join(format!("{name}.png")),
+            path: dir.join(format!("{name}.png")),
             lock_aspect: true,
             refine: false,
             save_state: false,
@@ -361,6 +369,10 @@ impl FlameTab {
                 GradientAction::FromImage => req = Some(FlameRequest::GradientFromImage),
                 GradientAction::Edit => self.palette_editor.open = true,
             }
+        }
+        self.loop_window(ctx);
+        if let Some(r) = self.anim_windows(ctx, options) {
+            req = Some(r);
         }
         let dragging = ctx.input(|i| i.pointer.any_down());
         let doc = pick(self.showing, &mut self.batch, &mut self.file);

@@ -30,6 +30,8 @@ pub struct Document {
     redo: Vec<Step>,
     /// A change in progress while a control is dragged: which flame, and how it was before.
     live: Option<(usize, Flame)>,
+    /// Undos and redos so far: a flame that changed by one was restored, not edited.
+    restores: u64,
 }
 
 impl Document {
@@ -49,6 +51,7 @@ impl Document {
             undo: Vec::new(),
             redo: Vec::new(),
             live: None,
+            restores: 0,
         }
     }
 
@@ -186,6 +189,7 @@ impl Document {
         };
         let r = self.swap(s);
         self.redo.push(r);
+        self.restores += 1;
         self.dirty = true;
         true
     }
@@ -197,12 +201,19 @@ impl Document {
         };
         let r = self.swap(s);
         self.undo.push(r);
+        self.restores += 1;
         self.dirty = true;
         true
     }
 
     pub fn undo_len(&self) -> usize {
         self.undo.len()
+    }
+
+    /// How many undos and redos were made: a change of the flame that comes with a change of
+    /// this count is a restored state, not an edit.
+    pub fn restores(&self) -> u64 {
+        self.restores
     }
 }
 

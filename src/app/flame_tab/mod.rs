@@ -11,9 +11,14 @@
 //! | `editor_state.rs`, `triangles.rs`, `editor_tools.rs` | the triangle editor |
 //! | `transform_list.rs`, `xform_panel.rs`, `variations_panel.rs`, `xaos.rs`, `settings.rs` | the sections |
 //! | `animation.rs` | rotating triangles and morphs between flames |
+//! | `timeline/` | the timeline under the preview: keys, curves, playback, loop tools |
+//! | `anim_export/` | the Animation export window: frames and videos in the background |
 //! | `gradients.rs`, `palette_editor.rs`, `mutations.rs`, `export.rs`, `variation_filter.rs` | windows |
 //! | `first_flame.rs` | the striking random flame of the first start |
 
+pub(crate) mod anim_export;
+pub use anim_export::SourceKind;
+pub use timeline::rotation_loop;
 pub(crate) mod animation;
 pub(crate) mod commands;
 pub(crate) mod document;
@@ -30,6 +35,7 @@ pub mod preview;
 pub(crate) mod preview_panel;
 pub(crate) mod settings;
 pub(crate) mod thumbnails;
+pub(crate) mod timeline;
 pub(crate) mod transform_list;
 pub(crate) mod triangles;
 pub(crate) mod variation_filter;
@@ -57,6 +63,7 @@ use mutations::MutationWindow;
 use palette_editor::PaletteEditor;
 use preview_panel::Preview;
 use thumbnails::Thumbnails;
+use timeline::Timeline;
 use variation_filter::VariationFilter;
 
 pub use animation::MORPH_FRAMES;
@@ -79,6 +86,8 @@ pub enum FlameRequest {
     GradientFromImage,
     /// Choose the file an export writes.
     ChooseExportFile,
+    /// Choose the folder or video an animation export writes.
+    ChooseAnimationFile,
 }
 
 /// State of the flame tab.
@@ -117,6 +126,12 @@ pub struct FlameTab {
     pub animation: Option<Animation>,
     /// The running morph to the next flame, if any.
     pub morph: Option<Morph>,
+    /// The timeline under the preview.
+    pub timeline: Timeline,
+    /// The Animation export window, when open.
+    pub anim_export: Option<anim_export::AnimDialog>,
+    /// The running animation export.
+    pub anim_job: Option<anim_export::AnimJob>,
     /// Where the last random batch is kept (the platform data directory; none in tests
     /// unless they set one).
     pub data_dir: Option<PathBuf>,
@@ -171,6 +186,9 @@ impl FlameTab {
             export_job: None,
             animation: None,
             morph: None,
+            timeline: Timeline::default(),
+            anim_export: None,
+            anim_job: None,
             data_dir,
             preview: ctx.map(Preview::new),
             preview_rect: None,
@@ -267,7 +285,7 @@ impl FlameTab {
         self.edit_started();
     }
 
-    /// The tab's panels: file contents, editor, preview.
+    /// The tab's panels: timeline (when shown), file contents, editor, preview.
     pub fn ui(&mut self, ui: &mut egui::Ui, options: &Options) {
         // A drag of a number, slider or the camera has ended: it becomes one undo step.
         let idle = ui.input(|i| !i.pointer.any_down() && i.smooth_scroll_delta == Vec2::ZERO);
@@ -276,6 +294,22 @@ impl FlameTab {
             if let Some(b) = &mut self.batch {
                 b.commit_live();
             }
+        }
+        if self.timeline.open {
+            let h = ui.available_height();
+            // The whole width, as in animation programs (the ruler wants room); each layout
+            // keeps its own height: the curve editor needs more.
+            let (id, size) = if self.timeline.show_curve {
+                ("timeline-with-curve", 330.0)
+            } else {
+                ("timeline", 130.0)
+            };
+            egui::Panel::bottom(id)
+                .resizable(true)
+                .default_size(size)
+                .min_size(90.0)
+                .max_size((h * 0.6).max(90.0))
+                .show(ui, |ui| self.timeline_panel(ui));
         }
         // Side panels never take the picture's room: at most a quarter and a half of the
         // width, so that a small window still shows the preview.
@@ -302,6 +336,7 @@ impl FlameTab {
         egui::CentralPanel::default().show(ui, |ui| self.preview_panel(ui, options, dragging));
         self.thumbs.end_frame(ui.ctx());
         self.step_animations(ui.ctx());
+        self.timeline_frame(ui.ctx());
     }
 
     /// The tab's part of the status bar.

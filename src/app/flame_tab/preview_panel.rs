@@ -124,7 +124,7 @@ impl Preview {
 impl FlameTab {
     pub(super) fn preview_panel(&mut self, ui: &mut egui::Ui, options: &Options, dragging: bool) {
         let avail = ui.available_size();
-        let f = self.shown_flame().clone();
+        let f = self.shown_flame();
         // The preview keeps the flame's aspect ratio and is at most preview_size pixels.
         let ppp = ui.ctx().pixels_per_point();
         let aspect = f.width as f32 / f.height.max(1) as f32;
@@ -140,8 +140,8 @@ impl FlameTab {
             h *= k;
         }
         let px = [(w * ppp).max(16.0) as u32, (h * ppp).max(12.0) as u32];
-        let animating = self.animation.is_some() || self.morph.is_some();
-        let dragging = dragging || self.camera_drag;
+        let animating = self.animation.is_some() || self.morph.is_some() || self.timeline.playing();
+        let dragging = dragging || self.camera_drag || self.timeline.scrubbing;
         if let Some(p) = &mut self.preview {
             let quick = dragging || animating;
             let first = options.preview_quality.min(f.quality);
@@ -201,6 +201,7 @@ impl FlameTab {
         self.preview_rect = image.as_ref().map(|r| r.rect);
         if let Some(r) = image
             && self.morph.is_none()
+            && !self.timeline.plays_sequence()
         {
             let r = named(r, "Preview").on_hover_text(
                 "wheel: zoom at the pointer · drag: move · right-drag: rotate · double-click: fit",

@@ -1,4 +1,5 @@
-//! The Flame section: name, size, camera, quality and tone mapping of the whole flame.
+//! The Flame section: name, size, camera, quality and tone mapping of the whole flame, and
+//! the motion blur of its animation frames.
 
 use std::ops::RangeInclusive;
 
@@ -41,6 +42,7 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
         tone_rows(ui, &mut f);
         palette_row(ui, &mut f);
         background_row(ui, &mut f);
+        motion_blur_rows(ui, &mut f);
     });
     if f.estimator_radius < f.estimator_minimum {
         f.estimator_minimum = f.estimator_radius;
@@ -248,4 +250,62 @@ fn background_row(ui: &mut egui::Ui, f: &mut Flame) {
         f.background = bg.map(|v| v as f64);
     }
     ui.end_row();
+}
+
+/// Motion blur of animation frames (flam3's temporal filter, Chaotica's exposure): how many
+/// sub-frames, over how many frames, weighted how.
+fn motion_blur_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    use crate::flame::sequence::{MAX_TEMPORAL_SAMPLES, TemporalFilterType};
+    ui.strong("Motion blur");
+    ui.end_row();
+    let a = &mut f.anim;
+    let l = ui.label("Sub-frames");
+    ui.add(
+        egui::DragValue::new(&mut a.temporal_samples)
+            .range(1..=MAX_TEMPORAL_SAMPLES)
+            .clamp_existing_to_range(false),
+    )
+    .labelled_by(l.id)
+    .on_hover_text(
+        "temporal samples: each animation frame is drawn from this many instants of its \
+         exposure, sharing the frame's samples (1: no blur)",
+    );
+    ui.end_row();
+    row(
+        ui,
+        "Exposure (frames)",
+        "how long the shutter is open, in frames (flam3's temporal filter width): the \
+         sub-frames span the frame's time ± half of it",
+        &mut a.temporal_filter_width,
+        0.01,
+        0.0..=1000.0,
+    );
+    let l = ui.label("Shape");
+    let r = egui::ComboBox::from_id_salt("blur-shape")
+        .selected_text(a.temporal_filter_type.name())
+        .show_ui(ui, |ui| {
+            for t in [
+                TemporalFilterType::Box,
+                TemporalFilterType::Gaussian,
+                TemporalFilterType::Exp,
+            ] {
+                ui.selectable_value(&mut a.temporal_filter_type, t, t.name());
+            }
+        })
+        .response;
+    r.labelled_by(l.id).on_hover_text(
+        "how the sub-frames weigh: box (all alike), gaussian (the middle most), exp (rising \
+         towards the end of the exposure for a positive exponent, the start for a negative one)",
+    );
+    ui.end_row();
+    if a.temporal_filter_type == TemporalFilterType::Exp {
+        row(
+            ui,
+            "Exponent",
+            "the exp shape's exponent (flam3's temporal_filter_exp)",
+            &mut a.temporal_filter_exp,
+            0.05,
+            -100.0..=100.0,
+        );
+    }
 }

@@ -19,4 +19,5 @@ mod window;
 pub use job::{ExportJob, JobAction};
 pub use resume::{ResumeInfo, quality_text};
 pub use settings::ExportSettings;
+pub(super) use window::size_fields;
 pub use window::{dialog, job_window};

@@ -196,27 +196,41 @@ pub fn dialog(ui: &mut egui::Ui, s: &mut ExportSettings, browse: &mut bool) -> O
 fn size_row(ui: &mut egui::Ui, s: &mut ExportSettings) {
     ui.label("Size");
     ui.horizontal(|ui| {
-        let aspect = s.width as f64 / s.height.max(1) as f64;
-        let w = named(
-            ui.add(egui::DragValue::new(&mut s.width).range(1..=30000)),
-            "Export width",
+        size_fields(
+            ui,
+            (&mut s.width, &mut s.height, &mut s.lock_aspect),
+            ["Export width", "Export height"],
         )
-        .on_hover_text("width in pixels");
-        ui.label("×");
-        let h = named(
-            ui.add(egui::DragValue::new(&mut s.height).range(1..=30000)),
-            "Export height",
-        )
-        .on_hover_text("height in pixels");
-        ui.checkbox(&mut s.lock_aspect, "keep proportions")
-            .on_hover_text("changing one side changes the other");
-        if s.lock_aspect {
-            if w.changed() {
-                s.height = ((s.width as f64 / aspect).round() as u32).clamp(1, 30000);
-            } else if h.changed() {
-                s.width = ((s.height as f64 * aspect).round() as u32).clamp(1, 30000);
-            }
-        }
     });
     ui.end_row();
+}
+
+/// Width × height in pixels (named `names` for screen readers and tests) and "keep
+/// proportions": changing one side then changes the other.
+pub(in crate::app::flame_tab) fn size_fields(
+    ui: &mut egui::Ui,
+    (width, height, lock): (&mut u32, &mut u32, &mut bool),
+    names: [&str; 2],
+) {
+    let aspect = *width as f64 / (*height).max(1) as f64;
+    let w = named(
+        ui.add(egui::DragValue::new(width).range(1..=30000)),
+        names[0],
+    )
+    .on_hover_text("width in pixels");
+    ui.label("×");
+    let h = named(
+        ui.add(egui::DragValue::new(height).range(1..=30000)),
+        names[1],
+    )
+    .on_hover_text("height in pixels");
+    ui.checkbox(lock, "keep proportions")
+        .on_hover_text("changing one side changes the other");
+    if *lock {
+        if w.changed() {
+            *height = ((*width as f64 / aspect).round() as u32).clamp(1, 30000);
+        } else if h.changed() {
+            *width = ((*height as f64 * aspect).round() as u32).clamp(1, 30000);
+        }
+    }
 }
