@@ -17,8 +17,6 @@ pub mod memory;
 pub mod noise;
 pub mod palette;
 pub mod rng;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod sound;
 pub mod surface;
 pub mod threads;

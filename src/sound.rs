@@ -15,7 +15,9 @@ pub const MAX_FRAMES: usize = 10_000_000;
 /// A sound as mono samples in [−1, 1].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sound {
+    /// Samples per second, in hertz (44 100 for a CD); 0 is read as 1.
     pub rate: u32,
+    /// The samples in time order, one channel (the reader averages the channels of a file).
     pub samples: Vec<f32>,
 }
 
@@ -29,7 +31,10 @@ impl Sound {
 /// A frequency band, in hertz.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
+    /// The lowest frequency, in hertz (bin 0, the constant part, is always left out).
     pub low: f64,
+    /// The highest frequency, in hertz (frequencies above half the sample rate are left
+    /// out).
     pub high: f64,
 }
 
@@ -55,7 +60,11 @@ impl Band {
 /// way to a new value taken per frame (1: at once).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Smoothing {
+    /// The fraction of the way taken per frame while the energy rises, in [0, 1]
+    /// (default 1: at once).
     pub attack: f64,
+    /// The fraction of the way taken per frame while the energy falls, in [0, 1]
+    /// (default 0.3: a sound fades out over a few frames).
     pub release: f64,
 }
 

@@ -5,8 +5,10 @@ use crate::flame::interpolate::interpolate_at;
 use crate::flame::model::{Affine, Flame};
 use crate::flame::rng::FastRng;
 
-/// Angular step of the rotation animation: 2° per frame, 90 frames per 180° turn.
+/// Angular step of the rotation animation, in degrees per frame.
 pub const ROTATION_STEP_DEG: f64 = 2.0;
+/// Frames in one turn of the rotation animation: 90 steps of [`ROTATION_STEP_DEG`] make
+/// 180°, after which every xform draws its direction again.
 pub const FRAMES_PER_TURN: u32 = 90;
 
 /// Rotate an xform's triangle about its centroid: L′ = R·L, O′ = C + R(O − C).
@@ -35,6 +37,8 @@ pub struct RotationAnimation {
 }
 
 impl RotationAnimation {
+    /// An animation at frame 0 whose turn directions are drawn from a generator seeded with
+    /// `seed` (the same seed turns the same xforms the same way).
     pub fn new(seed: u64) -> RotationAnimation {
         RotationAnimation {
             rng: FastRng::new(seed),

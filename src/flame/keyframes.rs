@@ -17,6 +17,7 @@ use crate::flame::variations::{self, Form, VarId};
 /// How the curve runs from a key to the next.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Interp {
+    /// A straight line to the next key's value.
     Linear,
     /// Catmull-Rom through the keys before and after (tangents from the neighbours).
     #[default]
@@ -29,7 +30,9 @@ pub enum Interp {
 }
 
 impl Interp {
+    /// Every interpolation, in declaration order (what [`Interp::from_name`] searches).
     pub const ALL: [Interp; 4] = [Interp::Linear, Interp::Smooth, Interp::Bezier, Interp::Step];
+    /// The name in files (`<key interp="…">`).
     pub fn name(self) -> &'static str {
         match self {
             Interp::Linear => "linear",
@@ -38,6 +41,7 @@ impl Interp {
             Interp::Step => "step",
         }
     }
+    /// The interpolation named `s` (the inverse of [`Interp::name`]); `None` for another word.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|i| i.name() == s)
     }
@@ -46,6 +50,7 @@ impl Interp {
 /// Easing of the segment after a key: how the time between two keys is spent.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Ease {
+    /// The time runs evenly (u).
     #[default]
     None,
     /// Slow start (u²).
@@ -57,7 +62,9 @@ pub enum Ease {
 }
 
 impl Ease {
+    /// Every easing, in declaration order (what [`Ease::from_name`] searches).
     pub const ALL: [Ease; 4] = [Ease::None, Ease::In, Ease::Out, Ease::InOut];
+    /// The name in files (`<key ease="…">`).
     pub fn name(self) -> &'static str {
         match self {
             Ease::None => "none",
@@ -66,9 +73,12 @@ impl Ease {
             Ease::InOut => "in_out",
         }
     }
+    /// The easing named `s` (the inverse of [`Ease::name`]); `None` for another word.
     pub fn from_name(s: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|e| e.name() == s)
     }
+    /// The eased fraction of a segment: `u` ∈ [0, 1] (the share of its frames gone) mapped
+    /// into [0, 1], 0 and 1 kept.
     pub fn apply(self, u: f64) -> f64 {
         match self {
             Ease::None => u,
@@ -82,9 +92,14 @@ impl Ease {
 /// A value at a frame, and how the curve leaves it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Key {
+    /// The frame the key sits at (0 is the first frame; fractions allowed; finite).
     pub frame: f64,
+    /// The target's value at that frame, in the target's units (degrees for angles; positive
+    /// for the scale factors of a curve of [`CurveStyle::Keys`]).
     pub value: f64,
+    /// How the curve runs from this key to the next (default smooth).
     pub interp: Interp,
+    /// The easing of the segment after this key (default none).
     pub ease: Ease,
     /// Bézier handles as (frames, value) offsets from the key: the one before it and the one
     /// after it. `None`: flat handles a third of the way to the neighbouring keys.
@@ -92,6 +107,8 @@ pub struct Key {
 }
 
 impl Key {
+    /// A key of `value` at `frame` leaving it the default way: smooth, without easing, with
+    /// automatic handles.
     pub fn new(frame: f64, value: f64) -> Key {
         Key {
             frame,
@@ -106,34 +123,56 @@ impl Key {
 /// Flame settings a curve can drive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FlameParam {
+    /// The x of the point at the picture's centre, in world units.
     CenterX,
+    /// The y of the point at the picture's centre, in world units.
     CenterY,
     /// flam3's zoom (a power of two).
     Zoom,
-    /// Pixels per unit.
+    /// Pixels per unit at zoom 0; interpolated as a logarithm.
     Scale,
-    /// Degrees.
+    /// The picture's turn in degrees (positive: clockwise on screen).
     Rotate,
-    /// Degrees.
+    /// The 3-D camera's pitch (`cam_pitch`), in degrees (the flame keeps radians).
     CamPitch,
-    /// Degrees.
+    /// The 3-D camera's yaw (`cam_yaw`), in degrees (the flame keeps radians).
     CamYaw,
+    /// The 3-D camera's perspective (`cam_perspective`): 1/distance of the eye, 0 for none.
     CamPerspective,
+    /// The height of the 3-D camera's focal plane (`cam_zpos`).
     CamZpos,
+    /// The 3-D camera's depth-of-field blur (`cam_dof`; 0: none).
     CamDof,
+    /// JWildfire's `cam_zoom`, a further factor on the scale (1: none); interpolated as a
+    /// logarithm.
     CamZoom,
+    /// The tone map's brightness (flam3's `brightness`).
     Brightness,
+    /// The tone map's contrast (positive; 1: none).
     Contrast,
+    /// The tone map's gamma.
     Gamma,
+    /// The density below which gamma is applied linearly (`gamma_threshold`).
     GammaThreshold,
+    /// The mix of the two gamma rules, 0–1 (`vibrancy`).
     Vibrancy,
+    /// How bright areas move towards white (`highlight_power`; negative: off).
     HighlightPower,
+    /// The red of the background, 0–1.
     BackgroundR,
+    /// The green of the background, 0–1.
     BackgroundG,
+    /// The blue of the background, 0–1.
     BackgroundB,
+    /// The largest radius of the density-estimation filter, in pixels (`estimator_radius`;
+    /// 0: no density estimation).
     EstimatorRadius,
+    /// The smallest radius of the density-estimation filter (`estimator_minimum`).
     EstimatorMinimum,
+    /// How fast the density-estimation radius shrinks as the density grows
+    /// (`estimator_curve`).
     EstimatorCurve,
+    /// The radius of the spatial filter, in pixels (`filter`).
     Filter,
 }
 
@@ -169,28 +208,49 @@ pub(crate) const FLAME_PARAMS: [(FlameParam, &str); 24] = [
 /// the factor; `MoveX`/`MoveY` set the translation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum XformParam {
+    /// The relative probability of choosing the xform (≥ 0).
     Weight,
+    /// The colour coordinate the xform moves points towards, 0–1.
     Color,
+    /// How far a step moves the colour coordinate towards `color`, 0–1 (`color_speed`).
     ColorSpeed,
+    /// How visible the xform's points are, 0–1.
     Opacity,
+    /// The x of the map's translation (`e`; flam3's fifth `coefs` number).
     MoveX,
+    /// The y of the map's translation (`f`; flam3's sixth `coefs` number).
     MoveY,
+    /// The map's linear part turned by this many degrees (0: as in the file; positive turns
+    /// from the x axis towards the y axis).
     Rotate,
+    /// The map's linear part multiplied by this factor (1: as in the file); interpolated as
+    /// a logarithm.
     Scale,
+    /// The x of the post map's translation.
     PostMoveX,
+    /// The y of the post map's translation.
     PostMoveY,
+    /// The post map's linear part turned by this many degrees (0: as in the file).
     PostRotate,
+    /// The post map's linear part multiplied by this factor (1: as in the file);
+    /// interpolated as a logarithm.
     PostScale,
-    /// The map's coefficients in flam3's `coefs` order: x → x′, x → y′, y → x′, y → y′
-    /// (set as they stand, as JWildfire's curves set them).
+    /// The map's coefficient of x in x′, the first of flam3's `coefs` (the coefficients are
+    /// set as they stand, as JWildfire's curves set them).
     Coef00,
+    /// The map's coefficient of x in y′, the second of flam3's `coefs`.
     Coef01,
+    /// The map's coefficient of y in x′, the third of flam3's `coefs`.
     Coef10,
+    /// The map's coefficient of y in y′, the fourth of flam3's `coefs`.
     Coef11,
-    /// The post map's coefficients, in the same order.
+    /// The post map's coefficient of x in x′ (the first of flam3's `post`).
     PostCoef00,
+    /// The post map's coefficient of x in y′ (the second of flam3's `post`).
     PostCoef01,
+    /// The post map's coefficient of y in x′ (the third of flam3's `post`).
     PostCoef10,
+    /// The post map's coefficient of y in y′ (the fourth of flam3's `post`).
     PostCoef11,
 }
 
@@ -220,29 +280,43 @@ pub(crate) const XFORM_PARAMS: [(XformParam, &str); 20] = [
 /// Which xform: a standard one by index, or the final one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum XformRef {
+    /// The standard xform at this index (0-based, in the flame's order).
     Index(usize),
+    /// The final xform.
     Final,
 }
 
 /// A variation's weight, or its k-th parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum VarParam {
+    /// The variation's weight; 0 takes it out of the xform at that frame.
     Weight,
+    /// The parameter at this index of the variation's parameter list (0-based, in the order
+    /// of its table entry and of its attributes in flame XML).
     Param(usize),
 }
 
 /// What a curve drives.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Target {
+    /// A setting of the flame.
     Flame(FlameParam),
+    /// A setting of an xform (skipped at frames of a flame that lacks the xform).
     Xform(XformRef, XformParam),
+    /// A variation of an xform: its weight (a variation the xform lacks is added, with its
+    /// default parameters) or one of its parameters.
     Var {
+        /// The xform holding the variation.
         xform: XformRef,
+        /// The variation.
         var: VarId,
+        /// Which of its forms (regular, `pre_` or `post_`): an xform may hold each.
         form: Form,
+        /// The weight or a parameter.
         param: VarParam,
     },
-    /// The palette turned by this many entries (of 256).
+    /// The palette turned by this many entries (of 256; rounded to whole entries, positive
+    /// moves each colour to a higher index).
     PaletteRotate,
     /// The palette's hue turned by this many degrees.
     PaletteHue,
@@ -352,8 +426,9 @@ impl std::str::FromStr for Target {
     }
 }
 
-/// Most keys on one curve, and most curves on one flame (a file that says more is refused).
+/// Most keys on one curve (a file that says more is refused).
 pub const MAX_KEYS: usize = 100_000;
+/// Most curves on one flame (a file that says more is refused).
 pub const MAX_CURVES: usize = 10_000;
 /// Most frames of a timeline.
 pub const MAX_FRAMES: u32 = 10_000_000;
@@ -374,12 +449,14 @@ pub enum CurveStyle {
 /// A curve of keys driving one target. Keys are kept sorted by frame, one per frame.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Curve {
+    /// What the curve drives.
     pub target: Target,
     keys: Vec<Key>,
     style: CurveStyle,
 }
 
 impl Curve {
+    /// An empty curve for `target` whose keys say how it runs ([`CurveStyle::Keys`]).
     pub fn new(target: Target) -> Curve {
         Curve {
             target,
@@ -396,6 +473,7 @@ impl Curve {
         }
     }
 
+    /// The keys, sorted by frame, one per frame.
     pub fn keys(&self) -> &[Key] {
         &self.keys
     }
@@ -456,7 +534,9 @@ impl Curve {
         (i < self.keys.len()).then(|| self.keys.remove(i))
     }
 
-    /// Move key `i` to another frame and value; returns its new index.
+    /// Move key `i` to another frame and value; returns its new index. A key already at
+    /// that frame is replaced; on an error (no key `i`, a value [`Curve::insert`] refuses) the
+    /// curve is unchanged.
     pub fn move_key(&mut self, i: usize, frame: f64, value: f64) -> Result<usize, String> {
         let mut k = *self.keys.get(i).ok_or("no such key")?;
         k.frame = frame;
@@ -610,6 +690,8 @@ pub struct Keyframes {
     pub fps: f64,
     /// A seamless loop: frame `frames` equals frame 0 (Chaotica's "wrap").
     pub wrap: bool,
+    /// The curves, one per target as [`Keyframes::curve_mut`] makes them. [`Keyframes::apply`]
+    /// sets values first, then scales, then turns, each group in this order.
     pub curves: Vec<Curve>,
 }
 
@@ -625,6 +707,7 @@ impl Default for Keyframes {
 }
 
 impl Keyframes {
+    /// True when no curve has a key: nothing moves.
     pub fn is_empty(&self) -> bool {
         self.curves.iter().all(|c| c.keys.is_empty())
     }

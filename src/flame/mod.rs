@@ -2,8 +2,6 @@
 //! tone mapping, automatic framing and the progressive renderer.
 
 pub(crate) mod affine;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod animate;
 pub mod animated;
 mod budget;
@@ -19,22 +17,14 @@ pub(crate) mod histogram;
 pub(crate) mod ifs3d;
 pub mod interpolate;
 pub mod jwf_curve;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod keyframes;
 pub mod loops;
 pub mod model;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod motion_blur;
 pub mod mutate;
 mod plot;
 pub mod random;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod render;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod sequence;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;

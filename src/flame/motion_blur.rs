@@ -16,8 +16,13 @@ use crate::flame::sequence::TemporalFilter;
 /// One sub-frame: the flame at its time, its weight, and its share of the frame's samples.
 #[derive(Clone, Debug)]
 pub struct SubFrame {
+    /// The flame at the sub-frame's time, on the frame's bucket grid (its size and
+    /// supersampling) with the spatial filter of the animation's first flame.
     pub flame: Flame,
+    /// The temporal filter's weight, in (0, 1]: the sub-frame's colours are multiplied by it.
     pub weight: f64,
+    /// The sub-frame's share of the frame's samples: the flame's quality·4^zoom samples per
+    /// pixel over the picture, divided among the sub-frames.
     pub samples: u64,
 }
 
@@ -26,6 +31,7 @@ pub struct SubFrame {
 pub struct MotionFrame {
     /// The settings the picture is developed with (size, filter, tone, log scale).
     pub develop: Flame,
+    /// The sub-frames in time order (at least one; exactly one without motion blur).
     pub subframes: Vec<SubFrame>,
     /// The filter's mean weight (flam3's `sumfilt`): the log scale divides the density by it.
     pub mean_weight: f64,

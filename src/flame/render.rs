@@ -54,6 +54,7 @@ pub use crate::flame::strips::check_memory_rows;
 /// and which band of the image (for renders in strips).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Plan {
+    /// The share of the samples this render iterates (the whole render by default).
     pub part: Part,
     /// Accumulate only this band; `None`: the whole image.
     pub strip: Option<Strip>,
@@ -439,10 +440,15 @@ impl Renderer {
         self.part_total.max(1)
     }
 
+    /// Samples iterated so far by this render (its part's share; with those of a continued
+    /// saved state), bad ones included.
     pub fn samples_done(&self) -> u64 {
         self.samples_done
     }
 
+    /// Samples so far that were bad values (flam3's term: a coordinate NaN, infinite or
+    /// beyond 10¹⁰, a wider limit for flames with Fractorium's variations); each point was
+    /// restarted at a random place of [−1, 1]².
     pub fn bad_values(&self) -> u64 {
         self.badvals
     }
@@ -453,10 +459,12 @@ impl Renderer {
         quality_of_samples(&self.flame, self.samples_done)
     }
 
+    /// Worker threads, one histogram each: the image depends on this count.
     pub fn threads(&self) -> usize {
         self.hists.len()
     }
 
+    /// The share of the whole render's samples this render iterates.
     pub fn part(&self) -> Part {
         self.part
     }
@@ -466,10 +474,12 @@ impl Renderer {
         (self.samples_done as f64 / self.total_samples() as f64).min(1.0)
     }
 
+    /// True when every sub-batch of this part has been iterated, or the render was cancelled.
     pub fn is_done(&self) -> bool {
         self.cancelled || self.next_batch >= self.batches_total
     }
 
+    /// True once a pass was cancelled: the render stops there and cannot continue.
     pub fn is_cancelled(&self) -> bool {
         self.cancelled
     }

@@ -15,12 +15,15 @@ pub enum Interpolation {
 }
 
 impl Interpolation {
+    /// The value's name in flame XML (the `interpolation` attribute).
     pub fn name(self) -> &'static str {
         match self {
             Interpolation::Linear => "linear",
             Interpolation::Smooth => "smooth",
         }
     }
+    /// The value named `s` in flame XML (the inverse of [`Self::name`]); `None` for a name
+    /// flam3 does not know.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "linear" => Some(Interpolation::Linear),
@@ -40,13 +43,16 @@ pub enum InterpolationType {
     /// translation linearly; padding xforms chosen to match their partners.
     #[default]
     Log,
-    /// flam3 2.7's behaviour (`old`): linear, no parameter matching of padding xforms.
+    /// flam3 2.7's behaviour (`old`): linear, padding xforms plain (no matching to their
+    /// partners, no parameters carried over) and not turned in rotations.
     Compat,
-    /// flam3 2.6's behaviour (`older`).
+    /// flam3 2.6's behaviour (`older`): blended exactly as `old`, as flam3 3.1.1 does too;
+    /// kept apart so that a file says what it said.
     Older,
 }
 
 impl InterpolationType {
+    /// The value's name in flame XML (the `interpolation_type` attribute).
     pub fn name(self) -> &'static str {
         match self {
             InterpolationType::Linear => "linear",
@@ -55,6 +61,8 @@ impl InterpolationType {
             InterpolationType::Older => "older",
         }
     }
+    /// The value named `s` in flame XML (the inverse of [`Self::name`]); `None` for a name
+    /// flam3 does not know.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "linear" => Some(InterpolationType::Linear),
@@ -82,6 +90,7 @@ pub enum PaletteInterpolation {
 }
 
 impl PaletteInterpolation {
+    /// The value's name in flame XML (the `palette_interpolation` attribute).
     pub fn name(self) -> &'static str {
         match self {
             PaletteInterpolation::Hsv => "hsv",
@@ -90,6 +99,8 @@ impl PaletteInterpolation {
             PaletteInterpolation::Sweep => "sweep",
         }
     }
+    /// The value named `s` in flame XML (the inverse of [`Self::name`]); `None` for a name
+    /// flam3 does not know.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "hsv" => Some(PaletteInterpolation::Hsv),
@@ -104,8 +115,12 @@ impl PaletteInterpolation {
 /// The weighting of the sub-frames of a motion-blurred frame (`temporal_filter_type`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum TemporalFilterType {
+    /// Every sub-frame weighs the same (flam3's default).
     #[default]
     Box,
+    /// flam3's Gaussian kernel exp(−2x²) over the exposure, x running from 1.5 at its start to
+    /// 0 at the sub-frame `n/2` (the later middle one for an even count), so the middle of the
+    /// exposure weighs most.
     Gaussian,
     /// `pow(x, |temporal_filter_exp|)`, rising towards the end of the exposure for a positive
     /// exponent and towards its start for a negative one.
@@ -113,6 +128,7 @@ pub enum TemporalFilterType {
 }
 
 impl TemporalFilterType {
+    /// The value's name in flame XML (the `temporal_filter_type` attribute).
     pub fn name(self) -> &'static str {
         match self {
             TemporalFilterType::Box => "box",
@@ -120,6 +136,8 @@ impl TemporalFilterType {
             TemporalFilterType::Exp => "exp",
         }
     }
+    /// The value named `s` in flame XML (the inverse of [`Self::name`]); `None` for a name
+    /// flam3 does not know.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "box" => Some(TemporalFilterType::Box),
@@ -139,13 +157,20 @@ pub const MAX_TEMPORAL_SAMPLES: u32 = 100_000;
 pub struct Animation {
     /// The control point's time (`time`): frame t of a sequence is time t.
     pub time: f64,
+    /// How the control points around a time are chosen and blended (`interpolation`;
+    /// default linear).
     pub interpolation: Interpolation,
+    /// How the affine maps of xforms are blended and padding xforms chosen
+    /// (`interpolation_type`; default log).
     pub interpolation_type: InterpolationType,
+    /// How palettes are blended (`palette_interpolation`; default hsv_circular).
     pub palette_interpolation: PaletteInterpolation,
     /// With `hsv_circular`: 0 blends palettes in HSV, 1 in RGB (`hsv_rgb_palette_blend`).
     pub hsv_rgb_palette_blend: f64,
     /// Sub-frames of a frame (`temporal_samples`), each drawn from the flame at its own time.
+    /// Default 1000, as in flam3; at most [`MAX_TEMPORAL_SAMPLES`] are used.
     pub temporal_samples: u32,
+    /// The weighting of the sub-frames (`temporal_filter_type`; default box).
     pub temporal_filter_type: TemporalFilterType,
     /// The exposure, in frames (`temporal_filter_width`): sub-frames span time ± width/2.
     pub temporal_filter_width: f64,
@@ -182,6 +207,7 @@ pub enum MotionFunction {
 }
 
 impl MotionFunction {
+    /// The value's name in flame XML (the `motion_function` attribute).
     pub fn name(self) -> &'static str {
         match self {
             MotionFunction::Sin => "sin",
@@ -189,6 +215,8 @@ impl MotionFunction {
             MotionFunction::Hill => "hill",
         }
     }
+    /// The value named `s` in flame XML (the inverse of [`Self::name`]); `None` for a name
+    /// flam3 does not know.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "sin" => Some(MotionFunction::Sin),
@@ -225,8 +253,12 @@ impl MotionFunction {
 /// and the mean weight (flam3's `sumfilt`, which the log-density scale divides by).
 #[derive(Clone, Debug, PartialEq)]
 pub struct TemporalFilter {
+    /// Each sub-frame's time less the frame's, in frames, rising from −width/2 to width/2
+    /// (a single sub-frame sits at 0).
     pub deltas: Vec<f64>,
+    /// Each sub-frame's weight, in (0, 1], the largest 1 (as many as `deltas`).
     pub weights: Vec<f64>,
+    /// The mean of `weights` (flam3's `sumfilt`); 1 for the box filter.
     pub mean_weight: f64,
 }
 

@@ -30,28 +30,58 @@ pub enum Source {
     /// One flame with keyframes; frame k applies its curves at k.
     Keys(Flame),
     /// Fraktalai's rotation: every triangle turns about its centre, 2° a frame.
-    Rotation { flame: Flame, seed: u64 },
+    Rotation {
+        /// The flame of frame 0, whose triangles turn.
+        flame: Flame,
+        /// The seed of the turn directions (the same seed, the same animation).
+        seed: u64,
+    },
     /// In-betweens through the flames in order over `frames` frames (flam3's blend).
-    Interpolation { flames: Vec<Flame>, frames: u64 },
+    Interpolation {
+        /// The flames passed through, at least two: the first is frame 0, the last frame
+        /// `frames` − 1.
+        flames: Vec<Flame>,
+        /// Frames of the animation.
+        frames: u64,
+    },
 }
 
 /// Why an animation could not be rendered.
 #[derive(Debug, thiserror::Error)]
 pub enum AnimError {
+    /// The animation cannot be made as asked (an empty or unordered sequence, too few flames
+    /// to interpolate, a bad frame range, too many frames); the message says why.
     #[error("{0}")]
     Settings(String),
+    /// A frame's flame could not be rendered (its settings, the memory it needs).
     #[error("frame {frame}: {source}")]
-    Render { frame: String, source: RenderError },
+    Render {
+        /// The frame's file name.
+        frame: String,
+        /// Why the renderer refused it.
+        source: RenderError,
+    },
+    /// The folder of frames could not be made, or a frame could not be written or read back.
     #[error("'{path}': {source}")]
     Io {
+        /// The folder or frame.
         path: PathBuf,
+        /// The system's error.
         source: std::io::Error,
     },
+    /// The video could not be written; the frames written so far stay in their folder.
     #[error(
         "{source}\nThe frames written so far are kept in '{frames}'; run the same command again \
          to encode them (frames already on disk are not rendered again)."
     )]
-    Video { source: VideoError, frames: PathBuf },
+    Video {
+        /// What went wrong with the video.
+        source: VideoError,
+        /// The folder of the frames.
+        frames: PathBuf,
+    },
+    /// The run was cancelled while a frame was rendered; the frames finished before it stay
+    /// on disk.
     #[error("interrupted")]
     Interrupted,
 }
@@ -59,7 +89,11 @@ pub enum AnimError {
 /// One frame to make: its time (or index) and its file name.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FrameSpec {
+    /// The frame's time: the control points' time for a sequence, the frame number for
+    /// keyframes, rotations and in-betweens (sequences and keyframes blend fractional times;
+    /// rotations and in-betweens take the whole frame below).
     pub time: f64,
+    /// The frame's file name in the job's folder (`00003.png`).
     pub name: String,
 }
 
@@ -275,14 +309,20 @@ pub fn output_paths(out: &Path) -> Result<(PathBuf, Option<PathBuf>), AnimError>
 
 /// An animation to write.
 pub struct Job {
+    /// What moves.
     pub source: Source,
+    /// The frames to make, in order (see [`frames_by_time`]).
     pub frames: Vec<FrameSpec>,
     /// Where the PNG frames go.
     pub dir: PathBuf,
     /// A video made of the frames, with its settings.
     pub video: Option<(PathBuf, VideoOptions)>,
+    /// The renderer's settings (seed, threads, memory limit, output format) for every frame.
     pub render: RenderOptions,
+    /// Another picture size for every flame (width and height in pixels), keeping its framing;
+    /// `None`: the flames' own.
     pub size: Option<(u32, u32)>,
+    /// Another quality (samples per pixel) for every flame; `None`: the flames' own.
     pub quality: Option<f64>,
     /// Motion blur as the flames ask (false: every frame at its instant).
     pub blur: bool,
@@ -293,8 +333,9 @@ pub struct Job {
 pub struct Progress {
     /// Frames finished (rendered or found on disk).
     pub done: usize,
+    /// Frames of the job.
     pub total: usize,
-    /// Of the frame being rendered.
+    /// The share of the frame being rendered that is done, in [0, 1].
     pub fraction: f64,
     /// Frames found on disk and not rendered again.
     pub skipped: usize,
@@ -303,8 +344,11 @@ pub struct Progress {
 /// What a finished job did.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Summary {
+    /// Frames rendered and written.
     pub rendered: usize,
+    /// Frames found on disk (of the right size) and not rendered again.
     pub skipped: usize,
+    /// The video written, if the job made one.
     pub video: Option<PathBuf>,
 }
 

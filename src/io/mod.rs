@@ -1,8 +1,6 @@
 //! Readers and writers of every file format ugnis opens or saves. Parsers report errors with
 //! file, line and column and never panic.
 
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod animation;
 pub mod atomic;
 pub mod audio;
@@ -10,8 +8,6 @@ pub mod bmp;
 pub mod diag;
 pub(crate) mod error;
 pub mod escape_view;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod flam3_xml;
 mod fractint_text;
 pub mod ggr;
@@ -26,8 +22,6 @@ pub mod scene;
 pub mod strip_png;
 pub mod svg;
 pub mod ugr;
-// Its items are not documented yet.
-#[allow(missing_docs)]
 pub mod video;
 pub(crate) mod xml;
 

@@ -11,8 +11,9 @@ use image::RgbaImage;
 
 use crate::io::atomic::AtomicFile;
 
-/// Most frames per second a video may have, and the fewest.
+/// Most frames per second a video may have.
 pub const MAX_FPS: f64 = 1000.0;
+/// Fewest frames per second a video may have (a frame every 100 seconds).
 pub const MIN_FPS: f64 = 0.01;
 
 /// What an output path asks for, by its extension.
@@ -20,6 +21,8 @@ pub const MIN_FPS: f64 = 0.01;
 pub enum VideoKind {
     /// A video through ffmpeg, in this container (`mp4`, `webm`, `mkv`, `mov`).
     Ffmpeg(&'static str),
+    /// Animated GIF (`.gif`), written by ugnis, looping forever; transparency is composed over
+    /// black and delays are whole hundredths of a second.
     Gif,
     /// Animated PNG (`.apng`).
     Apng,
@@ -44,24 +47,46 @@ impl VideoKind {
 /// Why a video could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum VideoError {
+    /// The output needs ffmpeg and the program could not be run; `what` names the output
+    /// ("a .mp4 video").
     #[error(
         "'{path}': writing {what} needs ffmpeg, which is not on PATH (Debian and Ubuntu: \
          apt install ffmpeg; Fedora: dnf install ffmpeg; macOS: brew install ffmpeg)"
     )]
-    FfmpegMissing { path: PathBuf, what: String },
+    FfmpegMissing {
+        /// The video that was to be written.
+        path: PathBuf,
+        /// What needed ffmpeg, for the message ("a .mp4 video").
+        what: String,
+    },
+    /// ffmpeg ended with an error or stopped reading frames; the message ends with the last
+    /// lines ffmpeg wrote to its standard error.
     #[error("'{path}': ffmpeg failed ({status}){}", tail(.stderr))]
     FfmpegFailed {
+        /// The video that was being written.
         path: PathBuf,
+        /// ffmpeg's exit status, as the system words it ("exit status: 1").
         status: String,
+        /// Everything ffmpeg wrote to its standard error.
         stderr: String,
     },
+    /// Creating, writing or renaming the file (or starting ffmpeg) failed.
     #[error("'{path}': {source}")]
     Io {
+        /// The video that was being written.
         path: PathBuf,
+        /// The system's error.
         source: std::io::Error,
     },
+    /// The output cannot be made as asked (not a video name, a frame rate out of range, a frame
+    /// of the wrong size) or the GIF/APNG encoder failed.
     #[error("'{path}': {message}")]
-    Encode { path: PathBuf, message: String },
+    Encode {
+        /// The video that was being written.
+        path: PathBuf,
+        /// What went wrong.
+        message: String,
+    },
 }
 
 fn tail(stderr: &str) -> String {
@@ -76,6 +101,8 @@ fn tail(stderr: &str) -> String {
 /// Settings of a video.
 #[derive(Clone, Debug)]
 pub struct VideoOptions {
+    /// Frames per second, from [`MIN_FPS`] to [`MAX_FPS`] (default 25; a GIF rounds the
+    /// delay to hundredths of a second).
     pub fps: f64,
     /// A sound file to mux in (ffmpeg outputs only); the video ends with the shorter of the two.
     pub audio: Option<PathBuf>,

@@ -4,9 +4,10 @@
 //! Everything ugnis does not interpret — unknown attributes, `<edit>` histories, variations it
 //! cannot render — is kept and written back, so a read/write round trip is lossless.
 //!
-//! The reader is [`read`] (the document in `read.rs`, a flame's attributes in `flame.rs`, its
-//! children in `children.rs`, colours in `palette.rs`, xforms in `xform.rs`, animation settings,
-//! `<motion>` elements and keyframes in `anim.rs`, JWildfire's motion curves in `jwf_curves.rs`); the writer is [`write`] (`write.rs`).
+//! The reader is [`read()`] (the document in `read.rs`, a flame's attributes in `flame.rs`, its
+//! children in `children.rs`, colours in `palette.rs`, xforms in `xform.rs`, animation
+//! settings, `<motion>` elements and keyframes in `anim.rs`, JWildfire's motion curves in
+//! `jwf_curves.rs`); the writer is [`write()`] (`write.rs`).
 
 use std::path::PathBuf;
 
@@ -48,6 +49,7 @@ pub const MAX_WARNINGS_PER_CODE: usize = 20;
 pub struct FlameFile {
     /// `name` of the `<flames>` root, if any.
     pub name: String,
+    /// The flames in document order (every `<flame>` element, at any depth).
     pub flames: Vec<Flame>,
 }
 
@@ -68,6 +70,7 @@ pub enum LibrarySource<'a> {
 pub struct ReadOptions<'a> {
     /// File name used in diagnostics.
     pub file: String,
+    /// Where a `palette="N"` attribute finds flam3's palette library (searched by default).
     pub library: LibrarySource<'a>,
     /// Quality for flames without a `quality` attribute (the Options main density).
     pub default_quality: f64,
