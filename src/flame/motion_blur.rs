@@ -55,6 +55,7 @@ impl MotionFrame {
                 && s.flame.zoom == first.zoom
                 && s.flame.rotate == first.rotate
                 && s.flame.cam == first.cam
+                && s.flame.cam_zoom == first.cam_zoom
         })
     }
 }
