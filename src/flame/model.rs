@@ -83,7 +83,8 @@ pub struct Xform {
     /// How much of a colour set by a "direct colour" variation is kept (Fractorium's
     /// `direct_color`; 1 = all of it).
     pub direct_color: f64,
-    /// Variation terms in file order; a variation appears at most once.
+    /// Variation terms in file order; their outputs are summed. A variation appears once,
+    /// except in JWildfire's files, which may use one twice (`log` and `log#1#`).
     pub vars: Vec<Var>,
     /// Xaos multipliers towards xforms 0, 1, …; missing entries are 1.
     pub chaos: Vec<f64>,

@@ -11,7 +11,7 @@ use super::palette::{PaletteData, read_color, read_colors, read_palette};
 use super::xform::{read_motion_attrs, read_xform};
 use crate::flame::model::{Flame, Xform};
 use crate::flame::symmetry::add_symmetry;
-use crate::io::xml::{Attr, XmlCursor, scan_attrs};
+use crate::io::xml::{Attr, XmlCursor};
 
 /// Read the children of a `<flame>` up to its end tag.
 pub(super) fn read_flame_children(
@@ -28,7 +28,7 @@ pub(super) fn read_flame_children(
             Event::Eof => return Err(cx.err(p.start, "XML001", "end of file inside <flame>")),
             Event::Start(e) | Event::Empty(e) => {
                 let is_empty = matches!(p.event, Event::Empty(_));
-                let attrs = scan_attrs(e, p.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                let attrs = cx.attrs(e, p.start + 1)?;
                 let tag = e.name();
                 let (start, end) = (p.start, p.end);
                 match tag.as_ref() {
@@ -113,8 +113,7 @@ fn read_xform_children(cx: &mut Ctx, cur: &mut XmlCursor, text: &str, x: &mut Xf
                             format!("more than {MAX_MOTIONS} <motion> elements in one xform"),
                         ));
                     }
-                    let attrs =
-                        scan_attrs(e, c.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                    let attrs = cx.attrs(e, c.start + 1)?;
                     let delta = read_motion_attrs(cx, &attrs)?;
                     x.motion.push(motion_from(cx, &attrs, delta, c.start)?);
                 } else {
@@ -145,7 +144,7 @@ fn read_keys(cx: &mut Ctx, cur: &mut XmlCursor, f: &mut Flame) -> R<()> {
             },
             Event::Start(e) | Event::Empty(e) => {
                 let is_empty = matches!(c.event, Event::Empty(_));
-                let attrs = scan_attrs(e, c.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                let attrs = cx.attrs(e, c.start + 1)?;
                 match (e.name().as_ref(), &mut curve) {
                     ("curve", None) => {
                         let made = keys_curve(cx, &attrs, c.start, &f.keys)?;
