@@ -673,6 +673,16 @@ impl Flame {
         }
     }
 
+    /// The program whose formulas the flame's variations follow where programs differ: the
+    /// one that wrote it, as its palette rule names it (flam3's for Apophysis and ugnis).
+    pub fn dialect(&self) -> variations::Dialect {
+        match self.palette_index {
+            PaletteIndex::Fractorium => variations::Dialect::Fractorium,
+            PaletteIndex::JWildfire => variations::Dialect::JWildfire,
+            PaletteIndex::Flam3 | PaletteIndex::Apophysis => variations::Dialect::Flam3,
+        }
+    }
+
     /// Pixels per world unit: scale·2^zoom·cam_zoom.
     pub fn ppu(&self) -> f64 {
         self.scale * self.zoom.exp2() * self.cam_zoom

@@ -138,6 +138,7 @@ impl Chaos {
         if weights.iter().sum::<f64>() <= 0.0 {
             return Err(ChaosError::ZeroWeights);
         }
+        let dialect = flame.dialect();
         let xforms: Vec<CompiledXform> = flame
             .xforms
             .iter()
@@ -147,7 +148,7 @@ impl Chaos {
                     Some(s) if s < n && s != i => 0.0,
                     _ => x.opacity,
                 };
-                CompiledXform::new(x, o, true)
+                CompiledXform::new(x, o, true, dialect)
             })
             .collect();
         let xaos = flame
@@ -175,7 +176,7 @@ impl Chaos {
         let final_xform = flame
             .final_xform
             .as_ref()
-            .map(|f| CompiledXform::new(f, f.opacity, true));
+            .map(|f| CompiledXform::new(f, f.opacity, true, dialect));
         // flam3 resets points beyond 1e10; Fractorium only NaN. Flames that use a variation
         // flam3 does not have follow Fractorium.
         let fractorium = flame
