@@ -6,7 +6,9 @@
 mod common;
 
 use std::path::PathBuf;
+use std::process::Command;
 
+use ugnis::flame::variations::{self, Form};
 use ugnis::io;
 use ugnis::io::flam3_xml::{self, LibrarySource, ReadOptions};
 
@@ -19,6 +21,18 @@ fn opts() -> ReadOptions<'static> {
         library: LibrarySource::Paths(vec![]),
         ..ReadOptions::default()
     }
+}
+
+fn ugnis(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_ugnis"))
+        .args(args)
+        .output()
+        .expect("run ugnis");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
 }
 
 /// flam3 3.1 writes palette bytes with `%2x` (a space before a single digit); flam3-render
@@ -62,4 +76,83 @@ fn flam3_space_padded_palette_reads_as_flam3_reads_it() {
     let e = flam3_xml::read(&short, &opts()).unwrap_err();
     assert_eq!(e.code, "XML010");
     assert!(e.message.contains("16 hex colours of 6 digits"), "{e}");
+}
+
+/// JWildfire's flame with a variation used twice in an xform (`log`, `log#1#`), parameter
+/// names holding spaces (`glsl_apollonian_Density Pixels`) and two final xforms: read as
+/// JWildfire reads it, written back so that JWildfire reads it again.
+#[test]
+fn jwildfire_doubled_variations_and_final_xforms() {
+    let path = fixture("jwf-doubled-and-finals.flame");
+    let p = io::read_flame_file(&path, &opts()).unwrap();
+    let f = &p.value.flames[0];
+    let log = variations::by_name("log").unwrap();
+    let lin = variations::by_name("linear3D").unwrap();
+    let x = &f.xforms[0];
+    let got: Vec<(variations::VarId, f64, Vec<f64>)> = x
+        .vars
+        .iter()
+        .map(|v| (v.id, v.weight, v.params.clone()))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            (lin, 0.3, vec![]),
+            (log, 0.25, vec![2.0]),
+            (log, 0.125, vec![3.0]),
+            (lin, 0.2, vec![]),
+        ]
+    );
+    // A further use with its own priority: `spherical#1#` runs before the others.
+    let forms: Vec<Form> = f.xforms[1].vars.iter().map(|v| v.form).collect();
+    assert_eq!(forms, [Form::Regular, Form::Pre]);
+    // Names JWildfire wrote with spaces are kept whole, with one warning each at their line.
+    let kept: Vec<&str> = f.xforms[1]
+        .extra_attrs
+        .iter()
+        .map(|(k, _)| k.as_str())
+        .collect();
+    for name in [
+        "glsl_apollonian_Density Pixels",
+        "dc_acrilic_Red Fac.",
+        "dc_acrilic_Size (N PowersOf 2)",
+    ] {
+        assert!(kept.contains(&name), "{name} not in {kept:?}");
+    }
+    let spaced: Vec<_> = p.warnings.iter().filter(|w| w.code == "XML024").collect();
+    assert_eq!(spaced.len(), 3, "{:?}", p.warnings);
+    assert!(spaced.iter().all(|w| w.line() == Some(3)));
+    assert!(spaced[0].message.contains("'glsl_apollonian_Density'"));
+    // Two final xforms, in file order.
+    assert!(f.final_xform.is_some());
+    assert_eq!(f.more_finals.len(), 1);
+    assert_eq!(f.more_finals[0].coefs.e, 1.0);
+    // Written back as JWildfire writes them, and read again the same.
+    let text = flam3_xml::write(&p.value);
+    for part in [
+        "log=\"0.25\"",
+        "log#1#=\"0.125\"",
+        "log#1#_base=\"3\"",
+        "linear3D#1#=\"0.2\"",
+        "glsl_apollonian_Density Pixels=\"800\"",
+    ] {
+        assert!(text.contains(part), "{part} not written");
+    }
+    assert_eq!(text.matches("<finalxform").count(), 2);
+    let again = flam3_xml::read(&text, &opts()).unwrap().value;
+    let g = &again.flames[0];
+    assert_eq!(g.xforms, f.xforms);
+    // (A final xform's xaos row of ones means nothing and is not written.)
+    let no_xaos = |x: &ugnis::flame::Xform| ugnis::flame::Xform {
+        chaos: Vec::new(),
+        ..x.clone()
+    };
+    let finals = |f: &ugnis::flame::Flame| f.finals().map(no_xaos).collect::<Vec<_>>();
+    assert_eq!(finals(g), finals(f));
+    assert_eq!(finals(g).len(), 2);
+    // `info` counts the finals.
+    let (code, out, err) = ugnis(&["info", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("2 xforms + 2 finals"), "{out}");
+    assert!(err.contains("XML024"), "{err}");
 }

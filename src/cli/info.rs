@@ -140,10 +140,10 @@ pub fn run(a: InfoArgs) -> Result<()> {
                     f.width,
                     f.height,
                     f.xforms.len(),
-                    if f.final_xform.is_some() {
-                        " + final"
-                    } else {
-                        ""
+                    match f.finals().count() {
+                        0 => String::new(),
+                        1 => " + final".to_string(),
+                        n => format!(" + {n} finals"),
                     },
                     f.variations_used().join(", ")
                 );

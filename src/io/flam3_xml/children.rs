@@ -1,4 +1,4 @@
-//! Reading a flame's children: xforms (with their `<motion>` elements) and the final xform,
+//! Reading a flame's children: xforms (with their `<motion>` elements) and the final xforms,
 //! colours, symmetry, ugnis' keyframes; anything else (`<edit>` histories, other programs'
 //! elements) is kept verbatim.
 
@@ -38,7 +38,10 @@ pub(super) fn read_flame_children(
                         if !is_empty {
                             read_xform_children(cx, cur, text, &mut x)?;
                         }
-                        if fin {
+                        if fin && f.final_xform.is_some() {
+                            // JWildfire's several final xforms, applied in order.
+                            f.more_finals.push(x);
+                        } else if fin {
                             f.final_xform = Some(x);
                         } else {
                             f.xforms.push(x);
@@ -79,15 +82,13 @@ pub(super) fn read_flame_children(
     }
 }
 
-/// The attributes of an `<xform>` or `<finalxform>` (one final xform, a bounded count).
+/// The attributes of an `<xform>` or `<finalxform>` (a bounded count of them).
 fn new_xform(cx: &mut Ctx, f: &Flame, attrs: &[Attr], fin: bool, start: usize) -> R<Xform> {
-    if fin && f.final_xform.is_some() {
-        return Err(cx.err(start, "XML006", "more than one <finalxform>"));
-    }
-    if f.xforms.len() >= MAX_XFORMS {
+    let finals = f.final_xform.is_some() as usize + f.more_finals.len();
+    if f.xforms.len() + finals >= MAX_XFORMS {
         return Err(cx.err(start, "XML003", format!("more than {MAX_XFORMS} xforms")));
     }
-    let parity = (f.xforms.len() + f.final_xform.is_some() as usize) % 2;
+    let parity = (f.xforms.len() + finals) % 2;
     read_xform(cx, attrs, fin, parity as f64)
 }
 

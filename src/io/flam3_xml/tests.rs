@@ -290,12 +290,6 @@ fn hex_palette_and_errors_have_positions() {
     )
     .unwrap_err();
     assert_eq!(e.code, "XML007");
-    let e = read(
-        "<flame><xform weight=\"1\"/><finalxform/><finalxform/></flame>",
-        &opts(),
-    )
-    .unwrap_err();
-    assert_eq!(e.code, "XML006");
     let e = read("<flames/>", &opts()).unwrap_err();
     assert_eq!(e.code, "XML002");
     let e = read("<flame><xform weight='1'/>", &opts()).unwrap_err();

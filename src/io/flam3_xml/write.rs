@@ -148,8 +148,11 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
         write_xform(s, x, extra.unwrap_or(&x.extra_attrs), "xform", &inner);
     }
-    if let Some(fx) = &f.final_xform {
-        let extra = jwf.as_ref().and_then(|w| w.final_xform.as_ref());
+    for (k, fx) in f.finals().enumerate() {
+        let extra = jwf
+            .as_ref()
+            .and_then(|w| w.final_xform.as_ref())
+            .filter(|_| k == 0);
         write_xform(
             s,
             fx,
