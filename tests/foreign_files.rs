@@ -156,3 +156,73 @@ fn jwildfire_doubled_variations_and_final_xforms() {
     assert!(out.contains("2 xforms + 2 finals"), "{out}");
     assert!(err.contains("XML024"), "{err}");
 }
+
+/// A flam3 template (render settings, no xform) is described by `info`, and `render
+/// --template` applies it as flam3-genome's `template=` does: the values are those
+/// flam3-genome 3.1.1 prints for `template=template.flam3 clone_all=…` (the scale follows the
+/// height, 240·240/480 = 120; the centre, rotation, brightness, gamma and vibrancy stay).
+#[test]
+fn flam3_templates_are_described_and_applied() {
+    let t = fixture("template.flam3");
+    let (code, out, err) = ugnis(&["info", t.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("320x240  template"), "{out}");
+    assert!(
+        out.contains("applies: size, zoom, oversample, filter"),
+        "{out}"
+    );
+    assert!(
+        out.contains("center, scale, brightness, gamma, vibrancy"),
+        "{out}"
+    );
+    let tpl = io::read_template_file(&t, &opts()).unwrap().value;
+    let text = "<flame name=\"target\" size=\"640 480\" center=\"0.1 0.2\" scale=\"240\" \
+        rotate=\"30\" quality=\"10\" brightness=\"4\" gamma=\"4\" vibrancy=\"1\" \
+        palette_mode=\"linear\"><xform weight=\"1\" color=\"0\" linear=\"1\" \
+        coefs=\"0.5 0 0 0.5 0 0\"/><color index=\"0\" rgb=\"255 0 0\"/></flame>";
+    let mut f = flam3_xml::read(text, &opts())
+        .unwrap()
+        .value
+        .flames
+        .remove(0);
+    tpl.apply(&mut f);
+    assert_eq!((f.width, f.height, f.scale), (320, 240, 120.0));
+    assert_eq!(
+        (f.zoom, f.supersample, f.filter, f.quality),
+        (0.5, 2, 0.75, 7.0)
+    );
+    assert_eq!(f.filter_shape.name(), "mitchell");
+    assert_eq!(f.background, [0.25, 0.5, 1.0]);
+    assert_eq!((f.estimator_radius, f.highlight_power), (5.0, 2.0));
+    assert!(
+        f.extra_attrs
+            .contains(&("passes".to_string(), "2".to_string()))
+    );
+    assert_eq!((f.center, f.rotate), ([0.1, 0.2], 30.0));
+    assert_eq!((f.brightness, f.gamma, f.vibrancy), (4.0, 4.0, 1.0));
+    assert_eq!(f.palette_mode.name(), "linear");
+    // The command line: the template's size (a small one here) and quality.
+    let dir = common::temp_dir("foreign-template");
+    let small = dir.join("small.flam3");
+    std::fs::write(&small, "<flame size=\"40 30\" quality=\"2\"/>").unwrap();
+    let ex = common::example("sierpinski.flame");
+    let png = dir.join("s.png");
+    let (code, _, err) = ugnis(&[
+        "render",
+        ex.to_str().unwrap(),
+        "--template",
+        small.to_str().unwrap(),
+        "-o",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let img = image::open(&png).unwrap();
+    assert_eq!((img.width(), img.height()), (40, 30));
+    // A template rendered as a flame is refused with how to use it.
+    let (code, _, err) = ugnis(&["render", small.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("error[XML007]") && err.contains("--template"),
+        "{err}"
+    );
+}

@@ -82,16 +82,22 @@ pub(super) fn read_flame(
     }
     cut_xaos_rows(cx, &mut f, start);
     super::jwf_curves::read(cx, &mut f, start);
-    resolve_palette(
-        cx,
-        &mut f,
-        pal,
-        gradient_name,
-        st.library_palette,
-        st.hue,
-        start,
-    )?;
-    check_iterable(cx, &f, start)?;
+    // A template (render settings, no xform) needs no colours and no xform.
+    let template = cx.opts.templates && f.xforms.is_empty();
+    if !template || st.library_palette.is_some() || pal.any() {
+        resolve_palette(
+            cx,
+            &mut f,
+            pal,
+            gradient_name,
+            st.library_palette,
+            st.hue,
+            start,
+        )?;
+    }
+    if !template {
+        check_iterable(cx, &f, start)?;
+    }
     Ok(f)
 }
 

@@ -28,6 +28,11 @@ impl PaletteData {
             hires: None,
         }
     }
+
+    /// Whether any colour was read.
+    pub(super) fn any(&self) -> bool {
+        self.any
+    }
 }
 
 /// The flame's gradient from what was read: inline colours win over a library palette (flam3
