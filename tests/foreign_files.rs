@@ -5,12 +5,12 @@
 
 mod common;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use ugnis::flame::variations::{self, Form};
-use ugnis::io;
 use ugnis::io::flam3_xml::{self, LibrarySource, ReadOptions};
+use ugnis::io::{self, lsystem};
 
 fn fixture(name: &str) -> PathBuf {
     common::fixture(&format!("foreign/{name}"))
@@ -221,8 +221,63 @@ fn flam3_templates_are_described_and_applied() {
     // A template rendered as a flame is refused with how to use it.
     let (code, _, err) = ugnis(&["render", small.to_str().unwrap()]);
     assert_eq!(code, 1);
-    assert!(
-        err.contains("error[XML007]") && err.contains("--template"),
-        "{err}"
+    assert!(err.contains("error[XML007]") && err.contains("--template"), "{err}");
+}
+
+/// Fractint's own `.l` syntax: every entry that Fractint can draw opens, the one it cannot is
+/// reported and skipped, and stray text draws one warning per entry.
+#[test]
+fn fractint_l_file_opens_entry_by_entry() {
+    let p = io::read_lsystems(&fixture("fractint-forms.l")).unwrap();
+    let names: Vec<&str> = p.value.entries.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(names, ["Koch", "Dragon", "Squares"]);
+    for e in &p.value.entries {
+        let c = e.compile().unwrap();
+        assert!(c.counts(3).segments > 0.0, "{}", e.name);
+    }
+    let w: Vec<(&str, Option<usize>)> = p.warnings.iter().map(|w| (w.code, w.line())).collect();
+    assert_eq!(
+        w,
+        [
+            ("LSY017", Some(16)),
+            ("LSY008", Some(26)),
+            ("LSY017", Some(31)),
+        ],
+        "{:?}",
+        p.warnings
     );
+}
+
+/// With UGNIS_FRACTINT_DIR set to a folder of Fractint's own `.l` files (not part of the
+/// project), every entry of every file opens and draws.
+#[test]
+fn fractint_l_files_of_a_folder_open() {
+    let Ok(dir) = std::env::var("UGNIS_FRACTINT_DIR") else {
+        return;
+    };
+    let mut files = 0;
+    for e in std::fs::read_dir(Path::new(&dir)).unwrap() {
+        let path = e.unwrap().path();
+        if path.extension().is_none_or(|x| x != "l") {
+            continue;
+        }
+        files += 1;
+        let text = String::from_utf8_lossy(&std::fs::read(&path).unwrap()).into_owned();
+        let p =
+            lsystem::parse(&text, &path.display().to_string()).unwrap_or_else(|e| panic!("{e}"));
+        let skipped: Vec<String> = p
+            .warnings
+            .iter()
+            .filter(|w| w.message.contains("is skipped"))
+            .map(|w| w.to_string())
+            .collect();
+        assert!(skipped.is_empty(), "{skipped:?}");
+        for s in &p.value.entries {
+            let c = s
+                .compile()
+                .unwrap_or_else(|e| panic!("{}: {}: {e}", path.display(), s.name));
+            assert!(c.counts(2).segments >= 0.0);
+        }
+    }
+    assert!(files > 0, "no .l files in {dir}");
 }
