@@ -221,7 +221,10 @@ fn flam3_templates_are_described_and_applied() {
     // A template rendered as a flame is refused with how to use it.
     let (code, _, err) = ugnis(&["render", small.to_str().unwrap()]);
     assert_eq!(code, 1);
-    assert!(err.contains("error[XML007]") && err.contains("--template"), "{err}");
+    assert!(
+        err.contains("error[XML007]") && err.contains("--template"),
+        "{err}"
+    );
 }
 
 /// Fractint's own `.l` syntax: every entry that Fractint can draw opens, the one it cannot is
