@@ -100,18 +100,34 @@ fn lsystem_refuses_bad_input_with_one_message() {
     let bad = dir.join("bad.l");
     std::fs::write(
         &bad,
-        "Good {\n Angle 6\n Axiom F\n}\nBad {\n Angle 4\n Axiom F\n F=F@\n}\n",
+        "Good {\n Angle 6\n Axiom F\n}\nBad {\n Angle 4\n Axiom F\n +=F\n}\n",
     )
     .unwrap();
+    // One bad entry does not block the others (Fractint reads entry by entry): the good one
+    // draws, with the bad one's problem as a warning; the bad one asked for is the error.
     let (code, _, err) = ugnis(&[
         "lsystem",
         bad.to_str().unwrap(),
         "-o",
         out.to_str().unwrap(),
     ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("bad.l:8:2: warning[LSY008]"), "{err}");
+    std::fs::remove_file(&out).unwrap();
+    let (code, _, err) = ugnis(&[
+        "lsystem",
+        bad.to_str().unwrap(),
+        "--name",
+        "bad",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(code, 1);
     assert!(
-        err.contains("bad.l:8:5: error[LSY010]: expected a step factor after '@'"),
+        err.contains(
+            "bad.l:8:2: error[LSY008]: '+' is a turtle command and cannot have a production; \
+             entry 'Bad' is skipped"
+        ),
         "{err}"
     );
     assert_eq!(err.lines().count(), 1, "{err}");

@@ -175,7 +175,10 @@ fn prepared(s: &Set) -> Prepared {
     } else {
         Form::Regular
     };
-    Prepared::new(s.id, form, s.weight, &s.params, s.aff, s.compat)
+    let mut v = Prepared::new(s.id, form, s.weight, &s.params, s.aff, s.compat);
+    // The vectors are Fractorium's: where programs differ, its formulas.
+    v.dialect = variations::Dialect::Fractorium;
+    v
 }
 
 fn input(t: &Table, r: &[String]) -> ([f64; 3], Acc) {

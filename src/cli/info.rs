@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 
+use ugnis::io::flam3_xml::ReadOptions;
 use ugnis::io::{self, FileKind};
 
 #[derive(Args, Debug)]
@@ -122,13 +123,22 @@ pub fn run(a: InfoArgs) -> Result<()> {
             }
         }
         _ => {
-            let p = super::read_flame_file(path, &Default::default())?;
+            // flam3's template files (render settings, no xform) are described too.
+            let opts = ReadOptions {
+                templates: true,
+                ..Default::default()
+            };
+            let p = super::read_flame_file(path, &opts)?;
             for w in &p.warnings {
                 eprintln!("{w}");
             }
             let flames = &p.value.flames;
             let _ = writeln!(out, "{}: {} flame(s)", path.display(), flames.len());
-            for f in flames {
+            for (i, f) in flames.iter().enumerate() {
+                if f.xforms.is_empty() {
+                    describe_template(&mut out, path, f, i == 0)?;
+                    continue;
+                }
                 let _ = writeln!(
                     out,
                     "  {:<24} {}x{}  {} xforms{}  variations: {}",
@@ -140,10 +150,10 @@ pub fn run(a: InfoArgs) -> Result<()> {
                     f.width,
                     f.height,
                     f.xforms.len(),
-                    if f.final_xform.is_some() {
-                        " + final"
-                    } else {
-                        ""
+                    match f.finals().count() {
+                        0 => String::new(),
+                        1 => " + final".to_string(),
+                        n => format!(" + {n} finals"),
                     },
                     f.variations_used().join(", ")
                 );
@@ -151,6 +161,48 @@ pub fn run(a: InfoArgs) -> Result<()> {
         }
     }
     super::print_stdout(&out)
+}
+
+/// A flame without xforms: a template of render settings (flam3's `vidres.flam3`), with what
+/// `render --template` takes from it (known for the file's first flame).
+fn describe_template(
+    out: &mut String,
+    path: &std::path::Path,
+    f: &ugnis::flame::Flame,
+    first: bool,
+) -> Result<()> {
+    let name = if f.name.is_empty() {
+        "(unnamed)"
+    } else {
+        &f.name
+    };
+    let _ = writeln!(
+        out,
+        "  {name:<24} {}x{}  template: render settings, no xforms",
+        f.width, f.height
+    );
+    if first {
+        let t = io::read_template_file(path, &Default::default())?.value;
+        let applied = t.applied();
+        let _ = writeln!(
+            out,
+            "    render --template applies: {}",
+            if applied.is_empty() {
+                "nothing".to_string()
+            } else {
+                applied.join(", ")
+            }
+        );
+        let not = t.not_applied();
+        if !not.is_empty() {
+            let _ = writeln!(
+                out,
+                "    and leaves the flame's own (as flam3-genome does): {}",
+                not.join(", ")
+            );
+        }
+    }
+    Ok(())
 }
 
 /// `ugnis info S.ugnis-state`.

@@ -57,8 +57,26 @@ pub fn run(a: LsystemArgs) -> Result<()> {
     }
     let background = parse_color(&a.background)?;
     let p = io::read_lsystems(&a.file)?;
-    for w in &p.warnings {
-        eprintln!("{w}");
+    // An entry asked for by name that could not be read: its problem is the error.
+    let skipped = a
+        .name
+        .as_ref()
+        .filter(|n| p.value.get(n).is_none())
+        .and_then(|n| {
+            let says = format!("entry '{}' is skipped", n.to_ascii_lowercase());
+            p.warnings
+                .iter()
+                .position(|w| w.message.to_ascii_lowercase().ends_with(&says))
+        });
+    for (i, w) in p.warnings.iter().enumerate() {
+        if Some(i) != skipped {
+            eprintln!("{w}");
+        }
+    }
+    if let Some(i) = skipped {
+        let mut e = p.warnings[i].clone();
+        e.warning = false;
+        return Err(e.into());
     }
     let file = p.value;
     let sys = match &a.name {

@@ -264,10 +264,16 @@ pub fn command_for(path: &Path) -> String {
 }
 
 /// Read the flames of any flame source ([`io::read_flame_file`]); a file that another view
-/// opens is refused with the command that reads it.
+/// opens is refused with the command that reads it, a flame without xforms with how a
+/// template of render settings is used.
 pub fn read_flame_file(path: &Path, opts: &ReadOptions) -> Result<Parsed<FlameFile>> {
     io::read_flame_file(path, opts).map_err(|e| {
-        if io::view_of(io::kind_of(path)) == View::Flame {
+        if e.code == "XML007" && e.message.contains("no <xform>") {
+            let p = path.display();
+            anyhow::anyhow!(
+                "{e}\n  a flam3 template of render settings? apply it: ugnis render FLAME --template {p}"
+            )
+        } else if io::view_of(io::kind_of(path)) == View::Flame {
             e.into()
         } else {
             anyhow::anyhow!("{e}\n  try: {}", command_for(path))

@@ -28,6 +28,11 @@ pub struct RenderArgs {
     /// Render the flame with this name
     #[arg(long)]
     pub name: Option<String>,
+    /// Apply a flam3 template's render settings (size, quality, filter, oversampling,
+    /// background, density estimator …) as flam3-genome's `template=` does; --size,
+    /// --quality and --supersample still win
+    #[arg(long, value_name = "TEMPLATE", conflicts_with = "resume")]
+    pub template: Option<PathBuf>,
     /// Image size WxH (keeps the framing: pixels per unit scale with the width)
     #[arg(long, value_parser = super::parse_size)]
     pub size: Option<(u32, u32)>,
@@ -236,6 +241,13 @@ pub fn run(a: RenderArgs) -> Result<()> {
         let input = a.input.as_ref().context("no flame file given")?;
         let flames = load_flames(input, a.palettes.as_ref(), a.strict)?;
         let mut flame = select(flames, a.index, a.name.as_deref(), input)?;
+        if let Some(t) = &a.template {
+            let t = io::read_template_file(t, &ReadOptions::default())?;
+            for w in &t.warnings {
+                eprintln!("{w}");
+            }
+            t.value.apply(&mut flame);
+        }
         if let Some((w, h)) = a.size {
             flame.resize_keep_framing(w, h);
         }

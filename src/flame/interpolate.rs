@@ -449,22 +449,34 @@ fn blend_xform(cpi: &[Cp], c: &[f64], i: usize) -> Xform {
     x
 }
 
-/// Variation weights and parameters blended over the union of the variations used; a control
-/// point without a variation counts weight 0 and the variation's default parameters.
+/// Variation weights and parameters blended over the union of the variations used (a
+/// variation used twice in an xform, as JWildfire allows, pairs its first uses, then its
+/// second ones); a control point without a variation counts weight 0 and the variation's
+/// default parameters.
 fn blend_vars(xs: &[&Xform], c: &[f64]) -> Vec<Var> {
-    let mut keys: Vec<(VarId, Form)> = Vec::new();
+    // (variation, form, which use of it in the xform).
+    let mut keys: Vec<(VarId, Form, usize)> = Vec::new();
     for x in xs {
-        for v in &x.vars {
-            if !keys.contains(&(v.id, v.form)) {
-                keys.push((v.id, v.form));
+        for (i, v) in x.vars.iter().enumerate() {
+            let k = x.vars[..i]
+                .iter()
+                .filter(|u| u.id == v.id && u.form == v.form)
+                .count();
+            if !keys.contains(&(v.id, v.form, k)) {
+                keys.push((v.id, v.form, k));
             }
         }
     }
     let mut out = Vec::with_capacity(keys.len());
-    for (id, form) in keys {
+    for (id, form, k) in keys {
         let found: Vec<Option<&Var>> = xs
             .iter()
-            .map(|x| x.vars.iter().find(|v| v.id == id && v.form == form))
+            .map(|x| {
+                x.vars
+                    .iter()
+                    .filter(|v| v.id == id && v.form == form)
+                    .nth(k)
+            })
             .collect();
         let weight = lerp_sum(c, found.iter().map(|v| v.map_or(0.0, |v| v.weight)));
         if weight == 0.0 {

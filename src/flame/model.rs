@@ -83,7 +83,8 @@ pub struct Xform {
     /// How much of a colour set by a "direct colour" variation is kept (Fractorium's
     /// `direct_color`; 1 = all of it).
     pub direct_color: f64,
-    /// Variation terms in file order; a variation appears at most once.
+    /// Variation terms in file order; their outputs are summed. A variation appears once,
+    /// except in JWildfire's files, which may use one twice (`log` and `log#1#`).
     pub vars: Vec<Var>,
     /// Xaos multipliers towards xforms 0, 1, …; missing entries are 1.
     pub chaos: Vec<f64>,
@@ -591,6 +592,9 @@ pub struct Flame {
     /// The final xform, applied to every point before it is plotted (the orbit goes on from
     /// the point before it).
     pub final_xform: Option<Xform>,
+    /// Further final xforms, applied in order after `final_xform` (and only with it): JWildfire
+    /// allows several `<finalxform>` and chains them. The editor shows the first only.
+    pub more_finals: Vec<Xform>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
     pub solo_xform: Option<usize>,
     /// False when the flame came without a camera (e.g. from an IFS file) and must be framed
@@ -646,6 +650,7 @@ impl Default for Flame {
             keys: Keyframes::default(),
             xforms: Vec::new(),
             final_xform: None,
+            more_finals: Vec::new(),
             solo_xform: None,
             has_camera: true,
             seed: None,
@@ -672,6 +677,16 @@ impl Flame {
         }
     }
 
+    /// The program whose formulas the flame's variations follow where programs differ: the
+    /// one that wrote it, as its palette rule names it (flam3's for Apophysis and ugnis).
+    pub fn dialect(&self) -> variations::Dialect {
+        match self.palette_index {
+            PaletteIndex::Fractorium => variations::Dialect::Fractorium,
+            PaletteIndex::JWildfire => variations::Dialect::JWildfire,
+            PaletteIndex::Flam3 | PaletteIndex::Apophysis => variations::Dialect::Flam3,
+        }
+    }
+
     /// Pixels per world unit: scale·2^zoom·cam_zoom.
     pub fn ppu(&self) -> f64 {
         self.scale * self.zoom.exp2() * self.cam_zoom
@@ -687,10 +702,21 @@ impl Flame {
         }
     }
 
+    /// The final xforms in the order they apply: `final_xform`, then `more_finals` (none
+    /// without a `final_xform`).
+    pub fn finals(&self) -> impl Iterator<Item = &Xform> {
+        let more = if self.final_xform.is_some() {
+            &self.more_finals[..]
+        } else {
+            &[]
+        };
+        self.final_xform.iter().chain(more)
+    }
+
     /// Names of every variation that has nonzero weight somewhere (supported or not).
     pub fn variations_used(&self) -> Vec<String> {
         let mut out: Vec<String> = Vec::new();
-        for x in self.xforms.iter().chain(self.final_xform.iter()) {
+        for x in self.xforms.iter().chain(self.finals()) {
             for v in &x.vars {
                 let n = v.attr_name();
                 if !out.contains(&n) {
@@ -711,7 +737,7 @@ impl Flame {
     pub fn unsupported_variation_warnings(&self) -> Vec<String> {
         let mut seen: Vec<String> = Vec::new();
         let mut out = Vec::new();
-        for x in self.xforms.iter().chain(self.final_xform.iter()) {
+        for x in self.xforms.iter().chain(self.finals()) {
             for (n, w) in x.unsupported_vars() {
                 if w != 0.0 && !seen.contains(&n) {
                     out.push(format!(

@@ -49,6 +49,7 @@ impl MotionFrame {
         self.subframes.iter().all(|s| {
             s.flame.xforms == first.xforms
                 && s.flame.final_xform == first.final_xform
+                && s.flame.more_finals == first.more_finals
                 && s.flame.palette == first.palette
                 && s.flame.center == first.center
                 && s.flame.scale == first.scale

@@ -241,7 +241,7 @@ impl RenderState {
         if let Some(k) = (0..a.xforms.len()).find(|&k| a.xforms[k] != b.xforms[k]) {
             return Some(format!("xform {} differs", k + 1));
         }
-        if a.final_xform != b.final_xform {
+        if a.final_xform != b.final_xform || a.more_finals != b.more_finals {
             return Some("the final xform differs".into());
         }
         if a.palette != b.palette || a.palette_mode != b.palette_mode {

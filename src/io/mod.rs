@@ -317,9 +317,7 @@ fn read_flame_file_with(
     opts: &flam3_xml::ReadOptions,
     ifs_defaults: &crate::flame::NewFlame,
 ) -> Result<Parsed<flam3_xml::FlameFile>, Diagnostic> {
-    let name = path.display().to_string();
-    let kind = kind_of(path);
-    if kind == FileKind::Ifs {
+    if kind_of(path) == FileKind::Ifs {
         let p = ifs_flames_with(path, ifs_defaults)?;
         return Ok(Parsed {
             value: flam3_xml::FlameFile {
@@ -329,6 +327,27 @@ fn read_flame_file_with(
             warnings: p.warnings,
         });
     }
+    let (text, o) = flame_text(path, opts)?;
+    flam3_xml::read(&text, &o)
+}
+
+/// A flam3 template file: render settings to apply to flames ([`flam3_xml::Template`]).
+pub fn read_template_file(
+    path: &Path,
+    opts: &flam3_xml::ReadOptions,
+) -> Result<Parsed<flam3_xml::Template>, Diagnostic> {
+    let (text, o) = flame_text(path, opts)?;
+    flam3_xml::read_template(&text, &o)
+}
+
+/// The flame XML of a flame file (or of the genome a PNG carries), with the reader options
+/// for it (its name; the `.fla` rules for `.fla` files).
+fn flame_text<'a>(
+    path: &Path,
+    opts: &flam3_xml::ReadOptions<'a>,
+) -> Result<(String, flam3_xml::ReadOptions<'a>), Diagnostic> {
+    let name = path.display().to_string();
+    let kind = kind_of(path);
     let view = view_of(kind);
     if view != View::Flame {
         return Err(Diagnostic::error(
@@ -367,7 +386,7 @@ fn read_flame_file_with(
             )?
         }
     };
-    flam3_xml::read(&text, &o)
+    Ok((text, o))
 }
 
 /// The first bytes of every PNG file.

@@ -19,6 +19,43 @@ pub struct Attr<'a> {
 /// Scan the attributes of a tag. `content` is the text between `<` and `>` (or `/>`), which
 /// starts at byte `base` of the source. Errors carry the byte offset and a message.
 pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, String)> {
+    scan(content, base, None)
+}
+
+/// [`scan_attrs`] as JWildfire's own reader takes a tag, for flame files: a name may hold
+/// JWildfire's index of a variation used twice (`log#1#`), and a name without a value is
+/// read together with the words after it up to the next `=`, as JWildfire's reader does (it
+/// wrote parameter names with spaces, `glsl_apollonian_Density Pixels="…"`), or dropped at
+/// the end of the tag.
+/// Each such reading adds a note (byte offset, what was read) to `notes`.
+pub fn scan_attrs_jwf<'a>(
+    content: &'a str,
+    base: usize,
+    notes: &mut Vec<(usize, String)>,
+) -> Result<Vec<Attr<'a>>, (usize, String)> {
+    scan(content, base, Some(notes))
+}
+
+/// A name's end: the first `=`, blank or `/` from `i`.
+fn name_end(b: &[u8], mut i: usize) -> usize {
+    while i < b.len() && b[i] != b'=' && !b[i].is_ascii_whitespace() && b[i] != b'/' {
+        i += 1;
+    }
+    i
+}
+
+fn skip_blanks(b: &[u8], mut i: usize) -> usize {
+    while i < b.len() && b[i].is_ascii_whitespace() {
+        i += 1;
+    }
+    i
+}
+
+fn scan<'a>(
+    content: &'a str,
+    base: usize,
+    mut notes: Option<&mut Vec<(usize, String)>>,
+) -> Result<Vec<Attr<'a>>, (usize, String)> {
     let b = content.as_bytes();
     let mut i = 0;
     // Element name.
@@ -28,33 +65,62 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
     let mut out = Vec::new();
     let mut seen: std::collections::HashSet<&str> = std::collections::HashSet::new();
     loop {
-        while i < b.len() && b[i].is_ascii_whitespace() {
-            i += 1;
-        }
+        i = skip_blanks(b, i);
         if i >= b.len() || b[i] == b'/' {
             break;
         }
         let ns = i;
-        while i < b.len() && b[i] != b'=' && !b[i].is_ascii_whitespace() && b[i] != b'/' {
-            i += 1;
-        }
-        let name = &content[ns..i];
-        if !is_xml_name(name) {
+        i = name_end(b, i);
+        let first = &content[ns..i];
+        let valid = if notes.is_some() {
+            is_jwf_name
+        } else {
+            is_xml_name
+        };
+        if !valid(first) {
             return Err((
                 base + ns,
-                format!("'{name}' is not an attribute name (letters, digits, '_', '-', '.', ':')"),
+                format!("'{first}' is not an attribute name (letters, digits, '_', '-', '.', ':')"),
             ));
         }
-        while i < b.len() && b[i].is_ascii_whitespace() {
-            i += 1;
-        }
+        i = skip_blanks(b, i);
         if i >= b.len() || b[i] != b'=' {
-            return Err((base + ns, format!("attribute '{name}' has no value")));
+            let Some(notes) = notes.as_deref_mut() else {
+                return Err((base + ns, format!("attribute '{first}' has no value")));
+            };
+            // JWildfire's reader: the name runs on to the next `=`.
+            let mut end = ns + first.len();
+            while i < b.len() && b[i] != b'=' && b[i] != b'/' {
+                end = name_end(b, i);
+                i = skip_blanks(b, end);
+            }
+            let name = &content[ns..end];
+            if i >= b.len() || b[i] != b'=' {
+                notes.push((
+                    base + ns,
+                    format!("attribute '{name}' has no value; ignored"),
+                ));
+                continue;
+            }
+            // JWildfire's parameter names hold spaces, brackets, signs (`Size (N PowersOf 2)`,
+            // `Pan -Re`); what could not be written back is refused.
+            if let Some(c) = name
+                .chars()
+                .find(|c| matches!(c, '"' | '\'' | '<' | '>' | '&'))
+            {
+                return Err((base + ns, format!("'{c}' in the attribute name '{name}'")));
+            }
+            notes.push((
+                base + ns,
+                format!(
+                    "attribute '{first}' has no value; read with what follows as '{name}', as \
+                     JWildfire reads it"
+                ),
+            ));
         }
+        let name = content[ns..i].trim_end();
         i += 1;
-        while i < b.len() && b[i].is_ascii_whitespace() {
-            i += 1;
-        }
+        i = skip_blanks(b, i);
         if i >= b.len() || (b[i] != b'"' && b[i] != b'\'') {
             return Err((
                 base + i,
@@ -97,6 +163,29 @@ pub fn scan_attrs(content: &str, base: usize) -> Result<Vec<Attr<'_>>, (usize, S
         });
     }
     Ok(out)
+}
+
+/// A name of JWildfire's files: an XML name, after removing JWildfire's index `#k#` of a
+/// variation used more than once in an xform (`log#1#`, `log#1#_base`).
+fn is_jwf_name(name: &str) -> bool {
+    match split_jwf_index(name) {
+        Some((base, _)) => is_xml_name(&base),
+        None => is_xml_name(name),
+    }
+}
+
+/// JWildfire's index of a repeated variation in an attribute name: `log#1#_base` →
+/// (`log_base`, 1). None without a `#digits#` group (or with `#0#`, which JWildfire never
+/// writes).
+pub fn split_jwf_index(name: &str) -> Option<(String, u32)> {
+    let s = name.find('#')?;
+    let e = s + 1 + name[s + 1..].find('#')?;
+    let k: u32 = name[s + 1..e]
+        .bytes()
+        .all(|c| c.is_ascii_digit())
+        .then(|| name[s + 1..e].parse().ok())
+        .flatten()?;
+    (k > 0).then(|| (format!("{}{}", &name[..s], &name[e + 1..]), k))
 }
 
 /// An XML name: a letter, '_' or ':' (or any non-ASCII character), then those, digits, '-' and
@@ -225,6 +314,41 @@ mod tests {
             let (pos, msg) = scan_attrs(src, 0).unwrap_err();
             assert_eq!(pos, at, "{src}: {msg}");
             assert!(msg.contains("not an attribute name"), "{src}: {msg}");
+        }
+    }
+
+    /// JWildfire's files: an index in a name (`log#1#`), names written with spaces (read
+    /// whole, as JWildfire reads them), a name without a value at the end (dropped); each
+    /// reported. The strict scanner refuses them all.
+    #[test]
+    fn jwildfire_names() {
+        let src = r#"xform log#1#="0.5" log#1#_base="2" a_Density Pixels="800" b_Size (N PowersOf 2)="4" lone"#;
+        let mut notes = Vec::new();
+        let a = scan_attrs_jwf(src, 0, &mut notes).unwrap();
+        let names: Vec<&str> = a.iter().map(|a| a.name).collect();
+        assert_eq!(
+            names,
+            [
+                "log#1#",
+                "log#1#_base",
+                "a_Density Pixels",
+                "b_Size (N PowersOf 2)"
+            ]
+        );
+        assert_eq!(a[2].value, "800");
+        assert_eq!(notes.len(), 3, "{notes:?}");
+        assert_eq!(notes[0].0, src.find("a_Density").unwrap());
+        assert!(
+            notes[2].1.contains("'lone' has no value; ignored"),
+            "{notes:?}"
+        );
+        assert!(scan_attrs(src, 0).is_err());
+        assert!(scan_attrs_jwf(r#"x a b"c="1""#, 0, &mut notes).is_err());
+        assert!(scan_attrs_jwf(r#"x log#1#="1" log#1#="2""#, 0, &mut notes).is_err());
+        assert_eq!(split_jwf_index("log#1#_base"), Some(("log_base".into(), 1)));
+        assert_eq!(split_jwf_index("log#12#"), Some(("log".into(), 12)));
+        for no in ["log", "log#0#", "log#x#", "log#1", "log##"] {
+            assert_eq!(split_jwf_index(no), None, "{no}");
         }
     }
 

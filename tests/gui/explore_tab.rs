@@ -120,12 +120,27 @@ fn explore_lsystem_editor_shows_a_bad_rule_with_its_line() {
     h.state_mut()
         .explore
         .lsystem
-        .set_text("Bad {\n  Angle 6\n  Axiom F\n  F=F+@\n}\n");
+        .set_text("Bad {\n  Angle 6\n  Axiom F\n  +=F+F\n}\n");
     h.run_steps(2);
     let e = h.state().explore.lsystem.error.clone().unwrap();
-    assert!(e.starts_with("Line 4, column "), "{e}");
+    assert!(
+        e.starts_with("Line 4, column 3: '+' is a turtle command"),
+        "{e}"
+    );
     assert!(h.query_by_label(&e).is_some());
     assert!(h.query_by_label("(nothing drawn)").is_some());
+    // What Fractint would ignore is drawn without, and shown with its line.
+    h.state_mut()
+        .explore
+        .lsystem
+        .set_text("Stray {\n  Angle 6\n  Axiom F\n  F=F+@F\n}\n");
+    h.run_steps(2);
+    let e = h.state().explore.lsystem.error.clone().unwrap();
+    assert!(
+        e.starts_with("Line 4, column 5: in 'Stray', ignored"),
+        "{e}"
+    );
+    assert!(h.query_by_label("Segments: 16").is_some());
     // Typing in the editor redraws: a good rule again.
     h.state_mut()
         .explore

@@ -38,7 +38,8 @@ pub struct LSystemView {
     /// A preset drawn as built in (it uses features `.l` files cannot hold), until the text
     /// is edited.
     pub built_in: Option<LSystem>,
-    /// Why the text cannot be drawn, with its line.
+    /// What is wrong with the text, with its line: why it cannot be drawn, or what the reader
+    /// skipped or ignored in it (the entries it could read are drawn).
     pub error: Option<String>,
     /// Why the picture is not drawn (too large for the live view).
     pub note: Option<String>,
@@ -187,6 +188,7 @@ impl LSystemView {
         }
         match io::lsystem::parse(&self.text, &self.source_name()) {
             Ok(p) => {
+                self.error = p.warnings.first().map(describe);
                 self.entries = p.value.entries;
                 if self.entries.is_empty() {
                     self.error = Some("No entries: write Name { Angle n, Axiom …, rules }".into());

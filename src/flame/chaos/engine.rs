@@ -358,11 +358,11 @@ impl Chaos {
         (nf, took, bad)
     }
 
-    /// The first `m` samples of `ln.fin` through the final xform (hidden ones get visibility
-    /// 0) and the camera.
+    /// The first `m` samples of `ln.fin` through the final xforms in order (hidden ones get
+    /// visibility 0) and the camera.
     #[inline(always)]
     fn finish_samples(&self, ln: &mut Lanes, m: usize, rng: &mut FastRng) {
-        if let Some(f) = &self.final_xform {
+        for f in self.final_xform.iter().chain(&self.more_finals) {
             if f.opacity >= 1.0 {
                 let fin = &mut ln.fin;
                 f.apply_soa(

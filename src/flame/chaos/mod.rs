@@ -67,6 +67,8 @@ pub struct Chaos {
     pub xforms: Vec<CompiledXform>,
     /// The final xform, compiled, if the flame has one.
     pub final_xform: Option<CompiledXform>,
+    /// The flame's further final xforms, compiled, applied in order after the first.
+    pub more_finals: Vec<CompiledXform>,
     /// The 3-D camera, if the flame has one.
     pub projection: Option<Projection>,
     /// Row 0: plain weights. Rows 1..=n: xaos rows after xform i − 1 (only when xaos is used),
@@ -138,6 +140,7 @@ impl Chaos {
         if weights.iter().sum::<f64>() <= 0.0 {
             return Err(ChaosError::ZeroWeights);
         }
+        let dialect = flame.dialect();
         let xforms: Vec<CompiledXform> = flame
             .xforms
             .iter()
@@ -147,7 +150,7 @@ impl Chaos {
                     Some(s) if s < n && s != i => 0.0,
                     _ => x.opacity,
                 };
-                CompiledXform::new(x, o, true)
+                CompiledXform::new(x, o, true, dialect)
             })
             .collect();
         let xaos = flame
@@ -172,22 +175,28 @@ impl Chaos {
                 tables.extend_from_slice(&selection_table(&row));
             }
         }
-        let final_xform = flame
-            .final_xform
-            .as_ref()
-            .map(|f| CompiledXform::new(f, f.opacity, true));
+        let mut finals = flame
+            .finals()
+            .map(|f| CompiledXform::new(f, f.opacity, true, dialect));
+        let final_xform = finals.next();
+        let more_finals: Vec<CompiledXform> = finals.collect();
         // flam3 resets points beyond 1e10; Fractorium only NaN. Flames that use a variation
         // flam3 does not have follow Fractorium.
         let fractorium = flame
             .xforms
             .iter()
-            .chain(flame.final_xform.as_ref())
+            .chain(flame.finals())
             .flat_map(|x| &x.vars)
             .any(|v| v.weight != 0.0 && !variations::info(v.id).has(variations::flag::FLAM3));
         let mut xforms = xforms;
         let mut final_xform = final_xform;
+        let mut more_finals = more_finals;
         if fractorium {
-            for x in xforms.iter_mut().chain(final_xform.as_mut()) {
+            for x in xforms
+                .iter_mut()
+                .chain(final_xform.as_mut())
+                .chain(&mut more_finals)
+            {
                 x.bad_limit = BAD_LIMIT_WIDE;
             }
         }
@@ -215,7 +224,11 @@ impl Chaos {
                     .collect::<Option<Vec<_>>>()
             })
             .flatten();
-        let hides = xforms.iter().chain(final_xform.as_ref()).any(|x| x.hides);
+        let hides = xforms
+            .iter()
+            .chain(final_xform.as_ref())
+            .chain(&more_finals)
+            .any(|x| x.hides);
         Ok(Chaos {
             affine,
             hides,
@@ -223,6 +236,7 @@ impl Chaos {
             vis,
             xforms,
             final_xform,
+            more_finals,
             projection: Projection::of(flame),
             tables,
             xaos,
@@ -240,22 +254,25 @@ impl Chaos {
         self.tables[row * CHOOSE_GRAIN + u] as usize
     }
 
-    /// Apply the final xform (if any, with its opacity as a probability) to a copy of a point.
+    /// Apply the final xforms (if any, in order, each with its opacity as a probability) to a
+    /// copy of a point.
     #[inline(always)]
     pub fn finalise(&self, p: Pt, rng: &mut FastRng) -> Pt {
         self.finalise_hiding(p, rng).0
     }
 
-    /// [`Chaos::finalise`], also saying whether the final xform hid the point.
+    /// [`Chaos::finalise`], also saying whether a final xform hid the point.
     #[inline(always)]
     pub fn finalise_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
-        match &self.final_xform {
-            Some(f) if f.opacity >= 1.0 || rng.f01() < f.opacity => {
+        let (mut p, mut hidden) = (p, false);
+        for f in self.final_xform.iter().chain(&self.more_finals) {
+            if f.opacity >= 1.0 || rng.f01() < f.opacity {
                 let (q, _, hide) = f.apply_hiding(p, rng);
-                (q, hide)
+                p = q;
+                hidden |= hide;
             }
-            _ => (p, false),
         }
+        (p, hidden)
     }
 
     /// Where a point is plotted: through the 3-D camera, if any (z is kept).
@@ -479,5 +496,91 @@ mod tests {
             0.5,
         ));
         assert_eq!(Chaos::new(&f).unwrap().xforms[0].bad_limit, BAD_LIMIT_WIDE);
+    }
+
+    /// Several final xforms apply in order, in both runners (JWildfire chains them): scale
+    /// by ½ about the origin, then move by (1, 0).
+    #[test]
+    fn final_xforms_chain_in_order() {
+        let mut f = Flame {
+            xforms: vec![Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+                1.0,
+                0.0,
+            )],
+            final_xform: Some(Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+                0.0,
+                0.0,
+            )),
+            more_finals: vec![Xform::linear(
+                Affine::new(1.0, 0.0, 0.0, 1.0, 1.0, 0.0),
+                0.0,
+                0.0,
+            )],
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        let mut rng = FastRng::new(3);
+        let p = Pt {
+            x: 0.5,
+            y: -0.25,
+            z: 0.0,
+            c: 0.0,
+        };
+        let q = ch.finalise(p, &mut rng);
+        assert_eq!((q.x, q.y), (1.25, -0.125));
+        // The lane runner: every sample of an orbit shrinking to the origin ends near (1, 0).
+        let mut ln = Lanes::new();
+        let mut seen = 0;
+        ch.run_lanes(
+            1000,
+            &mut rng,
+            &mut ln,
+            |xs: &[f64], ys: &[f64], _: &[f64], _, vs: &[f64]| {
+                for k in (0..xs.len()).filter(|&k| vs[k] >= 0.0) {
+                    assert!((xs[k] - 1.0).abs() < 1e-3 && ys[k].abs() < 1e-3);
+                    seen += 1;
+                }
+            },
+        );
+        assert!(seen > 0);
+        // Without a first final xform the others do not apply.
+        f.final_xform = None;
+        let q = Chaos::new(&f).unwrap().finalise(p, &mut rng);
+        assert_eq!((q.x, q.y), (0.5, -0.25));
+    }
+
+    /// A variation used twice in an xform (JWildfire's `linear3D` and `linear3D#1#`) adds both
+    /// outputs: weights 0.3 and 0.2 move a point as weight 0.5 does.
+    #[test]
+    fn a_variation_used_twice_sums() {
+        let lin = variations::by_name("linear3D").unwrap();
+        let mut two = Xform::linear(Affine::new(0.9, 0.1, -0.2, 0.8, 0.1, 0.2), 1.0, 0.0);
+        two.vars = vec![
+            crate::flame::model::Var::new(lin, 0.3),
+            crate::flame::model::Var::new(lin, 0.2),
+        ];
+        let mut one = two.clone();
+        one.vars = vec![crate::flame::model::Var::new(lin, 0.5)];
+        let p = Pt {
+            x: 0.3,
+            y: -0.7,
+            z: 0.25,
+            c: 0.5,
+        };
+        let run = |x: &Xform| {
+            let f = Flame {
+                xforms: vec![x.clone()],
+                ..Flame::default()
+            };
+            Chaos::new(&f).unwrap().xforms[0]
+                .apply(p, &mut FastRng::new(1))
+                .0
+        };
+        let (a, b) = (run(&two), run(&one));
+        for (u, v) in [(a.x, b.x), (a.y, b.y), (a.z, b.z)] {
+            assert!((u - v).abs() < 1e-12, "{a:?} {b:?}");
+        }
     }
 }

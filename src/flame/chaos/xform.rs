@@ -5,7 +5,7 @@
 use super::{BAD_LIMIT, Pt};
 use crate::flame::model::{Affine, Xform};
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{self, Acc, Form, Prepared, VarIn};
+use crate::flame::variations::{self, Acc, Dialect, Form, Prepared, VarIn};
 
 /// One xform ready for iteration.
 #[derive(Clone, Debug)]
@@ -59,7 +59,9 @@ pub fn adjust_opacity(o: f64) -> f64 {
     }
 }
 impl CompiledXform {
-    pub fn new(x: &Xform, opacity: f64, compat: bool) -> Self {
+    /// Compile `x` with plotted opacity `opacity`; its variations follow Fractorium's
+    /// flam3-compatibility switch `compat` and, where programs differ, `dialect`'s formulas.
+    pub fn new(x: &Xform, opacity: f64, compat: bool, dialect: Dialect) -> Self {
         let mut pre_vars = Vec::new();
         let mut vars = Vec::new();
         let mut post_vars = Vec::new();
@@ -69,8 +71,9 @@ impl CompiledXform {
             if v.weight == 0.0 {
                 continue;
             }
-            let p =
+            let mut p =
                 Prepared::with_texts(v.id, v.form, v.weight, &v.params, &v.texts, x.coefs, compat);
+            p.dialect = dialect;
             sets_color |= p.def.has(variations::flag::SETS_COLOR);
             match v.form {
                 Form::Pre => pre_vars.push(p),

@@ -223,6 +223,20 @@ impl Clone for VarState {
     }
 }
 
+/// Whose formula a variation follows where the programs compute it differently: the program
+/// that wrote the flame (flam3's for ugnis' own flames and for Apophysis', which share its
+/// formulas).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Dialect {
+    /// flam3 (and Apophysis, and ugnis' own flames).
+    #[default]
+    Flam3,
+    /// Fractorium.
+    Fractorium,
+    /// JWildfire.
+    JWildfire,
+}
+
 /// A variation ready to evaluate: its weight, normalised parameters followed by derived values,
 /// and the xform's affine map.
 #[derive(Clone, Debug)]
@@ -244,6 +258,8 @@ pub struct Prepared {
     pub aff: Affine,
     /// Fractorium's flam3-compatibility switch (on by default).
     pub compat: bool,
+    /// The program whose formula to follow where programs differ (flam3's by default).
+    pub dialect: Dialect,
     /// State carried from one call to the next (used by the stateful variations only).
     pub state: VarState,
     /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and

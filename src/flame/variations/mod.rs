@@ -117,7 +117,9 @@ pub(crate) mod util;
 
 pub(crate) use batch::inline_batch;
 pub(crate) use batch::{batch_with, generic_batch};
-pub use def::{Assign, BatchFn, EvalFn, Form, PrepareFn, Prepared, VarDef, VarState, flag};
+pub use def::{
+    Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, VarDef, VarState, flag,
+};
 pub use flam3::*;
 pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name, param_of,

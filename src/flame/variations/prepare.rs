@@ -2,7 +2,7 @@
 //! fetched, its derived values computed — and evaluating one variation at one point, as an
 //! xform with only that variation would.
 
-use super::def::{Form, Prepared, VarState, flag};
+use super::def::{Dialect, Form, Prepared, VarState, flag};
 use super::point::{Acc, VarIn};
 use super::registry::info;
 use super::{V3, VarId, shared};
@@ -53,6 +53,7 @@ impl Prepared {
             derived_at: def.params.len(),
             aff,
             compat,
+            dialect: Dialect::default(),
             state: VarState::default(),
             data: None,
             texts,

@@ -1,4 +1,4 @@
-//! Reading a flame's children: xforms (with their `<motion>` elements) and the final xform,
+//! Reading a flame's children: xforms (with their `<motion>` elements) and the final xforms,
 //! colours, symmetry, ugnis' keyframes; anything else (`<edit>` histories, other programs'
 //! elements) is kept verbatim.
 
@@ -11,7 +11,7 @@ use super::palette::{PaletteData, read_color, read_colors, read_palette};
 use super::xform::{read_motion_attrs, read_xform};
 use crate::flame::model::{Flame, Xform};
 use crate::flame::symmetry::add_symmetry;
-use crate::io::xml::{Attr, XmlCursor, scan_attrs};
+use crate::io::xml::{Attr, XmlCursor};
 
 /// Read the children of a `<flame>` up to its end tag.
 pub(super) fn read_flame_children(
@@ -28,7 +28,7 @@ pub(super) fn read_flame_children(
             Event::Eof => return Err(cx.err(p.start, "XML001", "end of file inside <flame>")),
             Event::Start(e) | Event::Empty(e) => {
                 let is_empty = matches!(p.event, Event::Empty(_));
-                let attrs = scan_attrs(e, p.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                let attrs = cx.attrs(e, p.start + 1)?;
                 let tag = e.name();
                 let (start, end) = (p.start, p.end);
                 match tag.as_ref() {
@@ -38,7 +38,10 @@ pub(super) fn read_flame_children(
                         if !is_empty {
                             read_xform_children(cx, cur, text, &mut x)?;
                         }
-                        if fin {
+                        if fin && f.final_xform.is_some() {
+                            // JWildfire's several final xforms, applied in order.
+                            f.more_finals.push(x);
+                        } else if fin {
                             f.final_xform = Some(x);
                         } else {
                             f.xforms.push(x);
@@ -79,15 +82,13 @@ pub(super) fn read_flame_children(
     }
 }
 
-/// The attributes of an `<xform>` or `<finalxform>` (one final xform, a bounded count).
+/// The attributes of an `<xform>` or `<finalxform>` (a bounded count of them).
 fn new_xform(cx: &mut Ctx, f: &Flame, attrs: &[Attr], fin: bool, start: usize) -> R<Xform> {
-    if fin && f.final_xform.is_some() {
-        return Err(cx.err(start, "XML006", "more than one <finalxform>"));
-    }
-    if f.xforms.len() >= MAX_XFORMS {
+    let finals = f.final_xform.is_some() as usize + f.more_finals.len();
+    if f.xforms.len() + finals >= MAX_XFORMS {
         return Err(cx.err(start, "XML003", format!("more than {MAX_XFORMS} xforms")));
     }
-    let parity = (f.xforms.len() + f.final_xform.is_some() as usize) % 2;
+    let parity = (f.xforms.len() + finals) % 2;
     read_xform(cx, attrs, fin, parity as f64)
 }
 
@@ -113,8 +114,7 @@ fn read_xform_children(cx: &mut Ctx, cur: &mut XmlCursor, text: &str, x: &mut Xf
                             format!("more than {MAX_MOTIONS} <motion> elements in one xform"),
                         ));
                     }
-                    let attrs =
-                        scan_attrs(e, c.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                    let attrs = cx.attrs(e, c.start + 1)?;
                     let delta = read_motion_attrs(cx, &attrs)?;
                     x.motion.push(motion_from(cx, &attrs, delta, c.start)?);
                 } else {
@@ -145,7 +145,7 @@ fn read_keys(cx: &mut Ctx, cur: &mut XmlCursor, f: &mut Flame) -> R<()> {
             },
             Event::Start(e) | Event::Empty(e) => {
                 let is_empty = matches!(c.event, Event::Empty(_));
-                let attrs = scan_attrs(e, c.start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+                let attrs = cx.attrs(e, c.start + 1)?;
                 match (e.name().as_ref(), &mut curve) {
                     ("curve", None) => {
                         let made = keys_curve(cx, &attrs, c.start, &f.keys)?;

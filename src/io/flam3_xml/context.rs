@@ -8,13 +8,15 @@ use std::collections::{HashMap, HashSet};
 use super::{LibrarySource, MAX_WARNINGS_PER_CODE, ReadOptions};
 use crate::io::diag::{Diagnostic, Pos, SourceMap, parse_int, parse_number};
 use crate::io::palettes::{self, PaletteLibrary};
-use crate::io::xml::Attr;
+use crate::io::xml::{Attr, scan_attrs_jwf};
 
 pub(super) struct Ctx<'t, 'o> {
     pub(super) file: &'t str,
     pub(super) map: SourceMap<'t>,
     pub(super) warnings: Vec<Diagnostic>,
     pub(super) reported_vars: HashSet<String>,
+    /// Attribute names without a value reported so far (each once per file).
+    pub(super) reported_valueless: HashSet<String>,
     /// Attributes of other programs that ugnis keeps but does not interpret (reported once per
     /// file, in one line).
     pub(super) ignored_attrs: Vec<String>,
@@ -41,6 +43,7 @@ impl<'t, 'o: 't> Ctx<'t, 'o> {
             map: SourceMap::new(text),
             warnings: Vec::new(),
             reported_vars: HashSet::new(),
+            reported_valueless: HashSet::new(),
             ignored_attrs: Vec::new(),
             ignored_set: HashSet::new(),
             warn_counts: Default::default(),
@@ -110,6 +113,22 @@ impl Ctx<'_, '_> {
         if self.ignored_set.remove(&name_hash(name)) {
             self.ignored_attrs.retain(|n| n != name);
         }
+    }
+
+    /// The attributes of a tag whose text between `<` and `>` starts at byte `base`, read as
+    /// JWildfire reads them ([`scan_attrs_jwf`]; what is not XML is reported as a warning).
+    pub(super) fn attrs<'e>(&mut self, content: &'e str, base: usize) -> R<Vec<Attr<'e>>> {
+        let mut notes = Vec::new();
+        let attrs =
+            scan_attrs_jwf(content, base, &mut notes).map_err(|(o, m)| self.err(o, "XML001", m))?;
+        for (off, m) in notes {
+            // Once per file for each name without a value.
+            let word = m.split(" has no value").next().unwrap_or("").to_string();
+            if self.reported_valueless.insert(word) {
+                self.warn(off, "XML024", m);
+            }
+        }
+        Ok(attrs)
     }
 
     pub(super) fn err(&self, off: usize, code: &'static str, msg: impl Into<String>) -> Diagnostic {

@@ -11,7 +11,7 @@ use super::palette::{PaletteData, resolve_palette};
 use crate::flame::curves::{self, Curves};
 use crate::flame::model::{FilterShape, Flame, FlameKind, PaletteIndex, PaletteMode};
 use crate::io::diag::parse_int;
-use crate::io::xml::{Attr, XmlCursor, scan_attrs};
+use crate::io::xml::{Attr, XmlCursor};
 
 /// What a flame's attributes say that is settled only once all of them are read.
 struct Pending {
@@ -41,7 +41,7 @@ pub(super) fn read_flame(
     start: usize,
     is_empty: bool,
 ) -> R<Flame> {
-    let attrs = scan_attrs(e, start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+    let attrs = cx.attrs(e, start + 1)?;
     let mut f = Flame {
         // flam3 defaults for absent attributes.
         width: 100,
@@ -82,16 +82,22 @@ pub(super) fn read_flame(
     }
     cut_xaos_rows(cx, &mut f, start);
     super::jwf_curves::read(cx, &mut f, start);
-    resolve_palette(
-        cx,
-        &mut f,
-        pal,
-        gradient_name,
-        st.library_palette,
-        st.hue,
-        start,
-    )?;
-    check_iterable(cx, &f, start)?;
+    // A template (render settings, no xform) needs no colours and no xform.
+    let template = cx.opts.templates && f.xforms.is_empty();
+    if !template || st.library_palette.is_some() || pal.any() {
+        resolve_palette(
+            cx,
+            &mut f,
+            pal,
+            gradient_name,
+            st.library_palette,
+            st.hue,
+            start,
+        )?;
+    }
+    if !template {
+        check_iterable(cx, &f, start)?;
+    }
     Ok(f)
 }
 

@@ -7,7 +7,8 @@
 //! The reader is [`read()`] (the document in `read.rs`, a flame's attributes in `flame.rs`, its
 //! children in `children.rs`, colours in `palette.rs`, xforms in `xform.rs`, animation
 //! settings, `<motion>` elements and keyframes in `anim.rs`, JWildfire's motion curves in
-//! `jwf_curves.rs`); the writer is [`write()`] (`write.rs`).
+//! `jwf_curves.rs`); the writer is [`write()`] (`write.rs`). flam3's template files (render
+//! settings to apply to other flames) are read by [`read_template()`] (`template.rs`).
 
 use std::path::PathBuf;
 
@@ -22,6 +23,7 @@ mod flame;
 mod jwf_curves;
 mod palette;
 mod read;
+mod template;
 mod write;
 mod xform;
 
@@ -29,6 +31,7 @@ mod xform;
 mod tests;
 
 pub use read::read;
+pub use template::{Template, read_template};
 pub use write::{flame_element, write};
 
 /// Revision of the `.fla` format this version writes.
@@ -78,6 +81,9 @@ pub struct ReadOptions<'a> {
     pub default_gradient: Gradient,
     /// Validate as a `.fla` file (`<flames>` root, unique non-empty names).
     pub fla: bool,
+    /// Accept flames without xforms: flam3's template files (render settings only, see
+    /// [`read_template`]).
+    pub templates: bool,
 }
 
 impl Default for ReadOptions<'_> {
@@ -88,6 +94,7 @@ impl Default for ReadOptions<'_> {
             default_quality: 15.0,
             default_gradient: Gradient::default(),
             fla: false,
+            templates: false,
         }
     }
 }

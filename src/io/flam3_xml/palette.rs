@@ -28,6 +28,11 @@ impl PaletteData {
             hires: None,
         }
     }
+
+    /// Whether any colour was read.
+    pub(super) fn any(&self) -> bool {
+        self.any
+    }
 }
 
 /// The flame's gradient from what was read: inline colours win over a library palette (flam3
@@ -338,24 +343,50 @@ fn palette_text(cx: &Ctx, cur: &mut XmlCursor, start: usize) -> R<(String, usize
     Ok((content, content_off))
 }
 
-/// `count` colours of `dpc` hex digits each (6: RGB, 8: RGBA), as fractions.
+/// `count` colours of `dpc` hex digits each (6: RGB, 8: RGBA), as fractions. Data that is not
+/// whole colours between whitespace is read as flam3 reads it (see [`flam3_hex_colors`]),
+/// with a warning: flam3 3.1 writes bytes below 0x10 padded with a space.
 fn hex_palette(
-    cx: &Ctx,
+    cx: &mut Ctx,
     content: &str,
     content_off: usize,
     count: usize,
     dpc: usize,
 ) -> R<Vec<[f64; 4]>> {
-    for tok in content.split_whitespace() {
-        if !tok.len().is_multiple_of(dpc) || !tok.bytes().all(|c| c.is_ascii_hexdigit()) {
-            return Err(cx.err(
-                content_off,
+    let whole = content
+        .split_whitespace()
+        .all(|tok| tok.len().is_multiple_of(dpc) && tok.bytes().all(|c| c.is_ascii_hexdigit()));
+    let cols = if whole {
+        decode_hex_colors(content, dpc).unwrap_or_default()
+    } else {
+        let cols = flam3_hex_colors(content, count, dpc / 2).map_err(|at| {
+            cx.err(
+                content_off + at,
                 "XML010",
-                format!("palette data must be hex colours of {dpc} digits (whitespace only between colours)"),
-            ));
-        }
-    }
-    let cols = decode_hex_colors(content, dpc).unwrap_or_default();
+                format!(
+                    "palette data must be {count} hex colours of {dpc} digits (whitespace between \
+                     colours, or flam3's bytes padded with a space)"
+                ),
+            )
+        })?;
+        // At the first word that is not whole colours.
+        let at = content
+            .split(|c: char| c.is_ascii_whitespace())
+            .scan(0, |pos, w| {
+                let here = *pos;
+                *pos += w.len() + 1;
+                Some((here, w))
+            })
+            .find(|(_, w)| !w.is_empty() && !w.len().is_multiple_of(dpc))
+            .map_or(0, |(o, _)| o);
+        cx.warn(
+            content_off + at,
+            "XML023",
+            "palette bytes below 0x10 are padded with a space instead of a 0 (as flam3 3.1 \
+             writes them); read as flam3 reads them",
+        );
+        cols
+    };
     if cols.len() != count {
         return Err(cx.err(
             content_off,
@@ -378,6 +409,47 @@ fn hex_palette(
             ]
         })
         .collect())
+}
+
+/// C's `isspace`: what flam3's reader skips.
+fn c_space(c: u8) -> bool {
+    matches!(c, b' ' | b'\t' | b'\n' | 0x0b | 0x0c | b'\r')
+}
+
+/// `count` colours of `nbytes` bytes each, read as flam3's hex palette reader does: each byte
+/// is a C `%2x` field (blanks skipped before it, then one or two hex digits), each colour
+/// starts 2·`nbytes` characters after the previous one, and blanks between colours are
+/// skipped. Data written with `%2x` (a space before a single digit) is read without error, a
+/// colour whose first byte is padded shifts the ones after it by a character as it does in
+/// flam3. Err: the byte offset where a byte or the end of the data was expected.
+fn flam3_hex_colors(content: &str, count: usize, nbytes: usize) -> Result<Vec<[u8; 4]>, usize> {
+    let b = content.as_bytes();
+    let skip = |mut i: usize| {
+        while i < b.len() && c_space(b[i]) {
+            i += 1;
+        }
+        i
+    };
+    let mut out = Vec::with_capacity(count.min(b.len() / 2 + 1));
+    let mut at = skip(0);
+    for _ in 0..count {
+        let mut c = [0u8, 0, 0, 255];
+        let mut j = at;
+        for v in c.iter_mut().take(nbytes) {
+            j = skip(j);
+            let s = j;
+            while j < b.len() && j - s < 2 && b[j].is_ascii_hexdigit() {
+                j += 1;
+            }
+            *v = u8::from_str_radix(content.get(s..j).ok_or(s)?, 16).map_err(|_| s)?;
+        }
+        out.push(c);
+        at = skip((at + 2 * nbytes).min(b.len()));
+    }
+    if at < b.len() {
+        return Err(at);
+    }
+    Ok(out)
 }
 
 /// The old `<palette index0=… hue0=…>`: a library palette, hue-rotated (the other attributes

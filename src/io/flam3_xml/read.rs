@@ -7,7 +7,7 @@ use super::flame::read_flame;
 use super::{FLA_FORMAT, FlameFile, MAX_FLAMES, ReadOptions};
 use crate::flame::model::Flame;
 use crate::io::diag::{Diagnostic, Parsed, Pos};
-use crate::io::xml::{Attr, XmlCursor, scan_attrs};
+use crate::io::xml::{Attr, XmlCursor};
 
 /// Read every flame of a flam3/Apophysis/ugnis XML document.
 pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
@@ -65,7 +65,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
 /// a `.fla` file must have one.
 fn read_root(cx: &mut Ctx, e: &BytesStart, tag: &str, start: usize, out: &mut FlameFile) -> R<()> {
     if tag == "flames" {
-        let attrs = scan_attrs(e, start + 1).map_err(|(o, m)| cx.err(o, "XML001", m))?;
+        let attrs = cx.attrs(e, start + 1)?;
         root_attrs(cx, &attrs, out)
     } else if cx.opts.fla {
         Err(cx.err(

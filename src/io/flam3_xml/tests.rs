@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::flame::model::{Affine, PaletteMode};
-use crate::flame::variations;
+use crate::flame::variations::{self, Form};
 use crate::io::diag::Pos;
 
 fn opts() -> ReadOptions<'static> {
@@ -290,12 +290,6 @@ fn hex_palette_and_errors_have_positions() {
     )
     .unwrap_err();
     assert_eq!(e.code, "XML007");
-    let e = read(
-        "<flame><xform weight=\"1\"/><finalxform/><finalxform/></flame>",
-        &opts(),
-    )
-    .unwrap_err();
-    assert_eq!(e.code, "XML006");
     let e = read("<flames/>", &opts()).unwrap_err();
     assert_eq!(e.code, "XML002");
     let e = read("<flame><xform weight='1'/>", &opts()).unwrap_err();
@@ -396,4 +390,44 @@ fn writer_follows_apophysis_line_rules() {
     // Palette as zero-padded upper-case hex, 8 colours per line.
     assert!(t.contains("FF0000FE0001"), "{t}");
     assert!(!t.contains("ugnis_kind") || t.contains("ugnis_kind=\"flame\""));
+}
+
+/// JWildfire writes a variation used twice in an xform as `NAME` and `NAME#1#` (its
+/// parameters `NAME#1#_param`, its priority `NAME#1#_fx_priority`): two uses, written back
+/// the same way; a dropped use's parameters are not written twice.
+#[test]
+fn jwildfire_variation_used_twice() {
+    let text = r#"<flame version="JWildfire V7.30"><xform weight="1" julian="0.5" julian_power="3" julian#1#="0.25" julian#1#_power="5" julian#1#_fx_priority="1" julian#2#="0" julian#2#_power="7" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let vars: Vec<(Form, f64, f64)> = f.xforms[0]
+        .vars
+        .iter()
+        .map(|v| (v.form, v.weight, v.params[0]))
+        .collect();
+    assert_eq!(vars, [(Form::Regular, 0.5, 3.0), (Form::Post, 0.25, 5.0)]);
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f.clone()],
+    });
+    // The post_ use has a name of its own; the dropped third use keeps its parameter.
+    assert!(out.contains("julian=\"0.5\" post_julian=\"0.25\""), "{out}");
+    assert!(out.contains("julian#2#_power=\"7\""), "{out}");
+    let mut x = f.xforms[0].clone();
+    x.vars[1].form = Form::Regular;
+    x.extra_attrs.clear();
+    let g = Flame {
+        xforms: vec![x.clone()],
+        ..f
+    };
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![g],
+    });
+    assert!(
+        out.contains("julian=\"0.5\" julian#1#=\"0.25\" julian_power=\"3\""),
+        "{out}"
+    );
+    assert!(out.contains("julian#1#_power=\"5\""), "{out}");
+    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(back.xforms[0].vars, x.vars);
 }

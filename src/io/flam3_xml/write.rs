@@ -1,6 +1,7 @@
 //! Writing flames as flam3 XML: the whole `.fla`/`.flame` document, or one `<flame>` element
 //! (as embedded in PNG files). Every attribute and child kept from reading is written back.
 
+use std::collections::HashSet;
 use std::fmt::Write as _;
 
 use super::anim::{write_anim_attrs, write_keys, write_motion};
@@ -147,8 +148,11 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
         write_xform(s, x, extra.unwrap_or(&x.extra_attrs), "xform", &inner);
     }
-    if let Some(fx) = &f.final_xform {
-        let extra = jwf.as_ref().and_then(|w| w.final_xform.as_ref());
+    for (k, fx) in f.finals().enumerate() {
+        let extra = jwf
+            .as_ref()
+            .and_then(|w| w.final_xform.as_ref())
+            .filter(|_| k == 0);
         write_xform(
             s,
             fx,
@@ -189,18 +193,25 @@ fn write_xform(s: &mut String, x: &Xform, extra: &[(String, String)], tag: &str,
     if x.direct_color != 1.0 {
         let _ = write!(s, " direct_color=\"{}\"", n(x.direct_color));
     }
-    for v in &x.vars {
-        let _ = write!(s, " {}=\"{}\"", v.attr_name(), n(v.weight));
+    // Names written so far: a kept attribute of the same name (the parameter of a variation
+    // of weight 0 that was dropped on reading) is not written again.
+    let mut written: HashSet<String> = HashSet::new();
+    let names = var_names(x);
+    for (v, name) in x.vars.iter().zip(&names) {
+        let _ = write!(s, " {}=\"{}\"", name.weight, n(v.weight));
     }
-    for v in &x.vars {
+    for (v, name) in x.vars.iter().zip(names) {
         for i in 0..variations::info(v.id).params.len() {
-            let name = variations::param_attr_name(v.id, v.form, i);
-            let _ = write!(s, " {name}=\"{}\"", n(v.params[i]));
+            let pn = name.of(variations::param_attr_name(v.id, v.form, i));
+            let _ = write!(s, " {pn}=\"{}\"", n(v.params[i]));
+            written.insert(pn);
         }
         for (i, t) in v.texts.iter().enumerate() {
-            let name = variations::text_attr_name(v.id, v.form, i);
-            let _ = write!(s, " {name}=\"{}\"", text_to_hex(t));
+            let tn = name.of(variations::text_attr_name(v.id, v.form, i));
+            let _ = write!(s, " {tn}=\"{}\"", text_to_hex(t));
+            written.insert(tn);
         }
+        written.insert(name.weight);
     }
     let c = x.coefs.to_coefs();
     let _ = write!(
@@ -234,7 +245,7 @@ fn write_xform(s: &mut String, x: &Xform, extra: &[(String, String)], tag: &str,
         let v: Vec<String> = chaos.iter().map(|c| n(*c)).collect();
         let _ = write!(s, " chaos=\"{}\"", v.join(" "));
     }
-    for (k, v) in extra {
+    for (k, v) in extra.iter().filter(|(k, _)| !written.contains(k)) {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
     if x.extra_children.is_empty() && x.motion.is_empty() {
@@ -250,6 +261,53 @@ fn write_xform(s: &mut String, x: &Xform, extra: &[(String, String)], tag: &str,
         }
         let _ = writeln!(s, "{ind}</{tag}>");
     }
+}
+
+/// The attribute names of one variation of an xform: its weight's name, and the JWildfire
+/// index `#k#` that its parameters' names carry after the variation's name.
+struct VarName {
+    weight: String,
+    /// `(variation name, index)` for a further use of the variation (JWildfire's `NAME#k#`).
+    index: Option<(String, String)>,
+}
+
+impl VarName {
+    /// A parameter's attribute name for this use of the variation.
+    fn of(&self, param: String) -> String {
+        match &self.index {
+            Some((var, idx)) if param.starts_with(var.as_str()) => {
+                format!("{var}{idx}{}", &param[var.len()..])
+            }
+            _ => param,
+        }
+    }
+}
+
+/// The names of an xform's variations: a variation used more than once is written as
+/// JWildfire writes it, `NAME`, `NAME#1#`, `NAME#2#`, … (with `NAME#1#_param` for its
+/// parameters), which JWildfire reads back as further uses of NAME.
+fn var_names(x: &Xform) -> Vec<VarName> {
+    let mut seen: Vec<String> = Vec::new();
+    x.vars
+        .iter()
+        .map(|v| {
+            let name = v.attr_name();
+            let k = seen.iter().filter(|s| **s == name).count();
+            seen.push(name.clone());
+            if k == 0 {
+                VarName {
+                    weight: name,
+                    index: None,
+                }
+            } else {
+                let idx = format!("#{k}#");
+                VarName {
+                    weight: format!("{name}{idx}"),
+                    index: Some((name, idx)),
+                }
+            }
+        })
+        .collect()
 }
 
 fn to8(v: f64) -> u8 {

@@ -8,13 +8,15 @@ use super::context::{Ctx, R};
 use crate::flame::model::{Affine, Var, Xform};
 use crate::flame::variations::{self, Form, VarId};
 use crate::io::diag::{Diagnostic, parse_number};
-use crate::io::xml::Attr;
+use crate::io::xml::{Attr, split_jwf_index};
 
 /// A variation parameter read before its variation is known: it goes to its variation, or is
 /// kept as the attribute `name="raw"` if the xform has no such variation.
 struct Param<T> {
     id: VarId,
     form: Form,
+    /// Which use of the variation in the xform (JWildfire's `NAME#k#`; 0: the first).
+    instance: u32,
     index: usize,
     value: T,
     name: String,
@@ -31,14 +33,23 @@ struct Pending {
     animate: Option<f64>,
     /// Reading a `<motion>` element: values are changes, so any sign is allowed.
     motion: bool,
+    /// Which use of its variation each of the xform's variations is (in `x.vars` order).
+    instances: Vec<u32>,
 }
 
-/// Set the weight of a variation form (replacing an earlier attribute for the same form; weight
-/// 0 removes it).
-fn set_var(x: &mut Xform, id: VarId, form: Form, w: f64) {
-    x.vars.retain(|v| !(v.id == id && v.form == form));
+/// Set the weight of use `instance` of a variation form (replacing an earlier attribute for
+/// the same use; weight 0 removes it). JWildfire writes a variation used twice in an xform as
+/// `NAME` and `NAME#1#`: both stay, and their outputs are summed as in JWildfire.
+fn set_var(x: &mut Xform, st: &mut Pending, id: VarId, form: Form, instance: u32, w: f64) {
+    if let Some(i) = (0..x.vars.len())
+        .find(|&i| x.vars[i].id == id && x.vars[i].form == form && st.instances[i] == instance)
+    {
+        x.vars.remove(i);
+        st.instances.remove(i);
+    }
     if w != 0.0 {
         x.vars.push(Var::with_form(id, form, w));
+        st.instances.push(instance);
     }
 }
 
@@ -67,6 +78,7 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
         texts: Vec::new(),
         animate: None,
         motion,
+        instances: Vec::new(),
     };
     let marked_vars = marked_variations(attrs);
     for a in attrs {
@@ -185,14 +197,14 @@ fn core_attr(cx: &mut Ctx, x: &mut Xform, st: &mut Pending, a: &Attr, fin: bool)
             x.chaos = c;
         }
         "direct_color" => x.direct_color = cx.num(a)?,
-        "var" | "var1" => flam3_var_list(cx, x, a)?,
+        "var" | "var1" => flam3_var_list(cx, x, st, a)?,
         _ => return Ok(false),
     }
     Ok(true)
 }
 
 /// flam3's `var="w0 w1 …"` (weights by flam3 index) and `var1="i"` (one variation of weight 1).
-fn flam3_var_list(cx: &mut Ctx, x: &mut Xform, a: &Attr) -> R<()> {
+fn flam3_var_list(cx: &mut Ctx, x: &mut Xform, st: &mut Pending, a: &Attr) -> R<()> {
     if a.name == "var" {
         let ws = cx.nums(a, "XML003")?;
         if ws.len() > variations::FLAM3_COUNT {
@@ -206,7 +218,7 @@ fn flam3_var_list(cx: &mut Ctx, x: &mut Xform, a: &Attr) -> R<()> {
             if *w != 0.0
                 && let Some((id, form)) = variations::from_flam3_index(i)
             {
-                set_var(x, id, form, *w);
+                set_var(x, st, id, form, 0, *w);
             }
         }
         return Ok(());
@@ -223,12 +235,14 @@ fn flam3_var_list(cx: &mut Ctx, x: &mut Xform, a: &Attr) -> R<()> {
         ));
     };
     x.vars.clear();
-    set_var(x, id, form, 1.0);
+    st.instances.clear();
+    set_var(x, st, id, form, 0, 1.0);
     Ok(())
 }
 
 /// A variation's weight, one of its parameters, or another attribute (kept as it stands; a
-/// variation ugnis cannot render is reported once per file).
+/// variation ugnis cannot render is reported once per file). JWildfire's `NAME#k#` (and
+/// `NAME#k#_param`) are the k-th further use of variation NAME in the xform.
 fn variation_attr(
     cx: &mut Ctx,
     x: &mut Xform,
@@ -238,23 +252,29 @@ fn variation_attr(
 ) -> R<()> {
     let name = a.name;
     let v = a.value.trim();
-    if let Some((id, form)) = variations::parse_name(name) {
+    let indexed = split_jwf_index(name);
+    let (base, instance) = indexed
+        .as_ref()
+        .map_or((name, 0), |(b, k)| (b.as_str(), *k));
+    if let Some((id, form)) = variations::parse_name(base) {
         let w = cx.num(a)?;
-        set_var(x, id, form, w);
-    } else if let Some((id, form, index)) = variations::param_of(name) {
+        set_var(x, st, id, form, instance, w);
+    } else if let Some((id, form, index)) = variations::param_of(base) {
         let value = cx.num(a)?;
         st.params.push(Param {
             id,
             form,
+            instance,
             index,
             value,
             name: name.to_string(),
             raw: a.value.to_string(),
         });
-    } else if let Some((id, form, index)) = variations::text_of(name) {
+    } else if let Some((id, form, index)) = variations::text_of(base) {
         st.texts.push(Param {
             id,
             form,
+            instance,
             index,
             value: text_from_hex(v),
             name: name.to_string(),
@@ -263,12 +283,12 @@ fn variation_attr(
     } else {
         let numeric = parse_number(v).is_ok();
         let marked = marked_vars.contains(name);
-        if numeric && (marked || variations::is_foreign_variation_name(name)) {
-            if cx.reported_vars.insert(name.to_string()) {
+        if numeric && (marked || variations::is_foreign_variation_name(base)) {
+            if cx.reported_vars.insert(base.to_string()) {
                 cx.warn(
                     a.offset,
                     "XML020",
-                    format!("variation '{name}' (weight {v}) not supported; ignored"),
+                    format!("variation '{base}' (weight {v}) not supported; ignored"),
                 );
             }
         } else if !matches!(
@@ -283,35 +303,34 @@ fn variation_attr(
 }
 
 /// JWildfire marks a variation used before (< 0) or after (> 0) the others with
-/// NAME_fx_priority: the variation and its parameters change form.
+/// NAME_fx_priority (NAME#k#_fx_priority for a further use): the variation and its
+/// parameters change form.
 fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending) {
     for a in attrs {
-        if let Some(name) = a.name.strip_suffix("_fx_priority")
+        let (base, instance) = split_jwf_index(a.name).unwrap_or((a.name.to_string(), 0));
+        if let Some(name) = base.strip_suffix("_fx_priority")
             && let Ok(p) = parse_number(a.value.trim())
             && p != 0.0
             && let Some((id, Form::Regular)) = variations::parse_name(name)
         {
             let form = if p < 0.0 { Form::Pre } else { Form::Post };
-            for var in x
-                .vars
-                .iter_mut()
-                .filter(|v| v.id == id && v.form == Form::Regular)
-            {
-                var.form = form;
+            let this = |vid: VarId, vform: Form, k: u32| {
+                vid == id && vform == Form::Regular && k == instance
+            };
+            for (var, &k) in x.vars.iter_mut().zip(&st.instances) {
+                if this(var.id, var.form, k) {
+                    var.form = form;
+                }
             }
-            for p in st
-                .params
-                .iter_mut()
-                .filter(|p| p.id == id && p.form == Form::Regular)
-            {
-                p.form = form;
+            for p in st.params.iter_mut() {
+                if this(p.id, p.form, p.instance) {
+                    p.form = form;
+                }
             }
-            for t in st
-                .texts
-                .iter_mut()
-                .filter(|t| t.id == id && t.form == Form::Regular)
-            {
-                t.form = form;
+            for t in st.texts.iter_mut() {
+                if this(t.id, t.form, t.instance) {
+                    t.form = form;
+                }
             }
         }
     }
@@ -319,18 +338,22 @@ fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending) {
 
 /// Parameters go to their variation; parameters of absent variations are kept as-is.
 fn attach_params(x: &mut Xform, st: Pending) {
-    for p in st.params {
-        if let Some(var) = x.vars.iter_mut().find(|v| v.id == p.id && v.form == p.form) {
-            var.params[p.index] = p.value;
-        } else {
-            x.extra_attrs.push((p.name, p.raw));
+    let find = |x: &Xform, id: VarId, form: Form, k: u32| {
+        (0..x.vars.len())
+            .find(|&i| x.vars[i].id == id && x.vars[i].form == form && st.instances[i] == k)
+    };
+    for p in &st.params {
+        match find(x, p.id, p.form, p.instance) {
+            Some(i) => x.vars[i].params[p.index] = p.value,
+            None => x.extra_attrs.push((p.name.clone(), p.raw.clone())),
         }
     }
-    for t in st.texts {
-        if let Some(var) = x.vars.iter_mut().find(|v| v.id == t.id && v.form == t.form) {
-            var.texts[t.index] = variations::info(t.id).texts[t.index].normalise(&t.value);
-        } else {
-            x.extra_attrs.push((t.name, t.raw));
+    for t in &st.texts {
+        match find(x, t.id, t.form, t.instance) {
+            Some(i) => {
+                x.vars[i].texts[t.index] = variations::info(t.id).texts[t.index].normalise(&t.value)
+            }
+            None => x.extra_attrs.push((t.name.clone(), t.raw.clone())),
         }
     }
 }

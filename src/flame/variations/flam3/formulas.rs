@@ -8,7 +8,7 @@ use crate::flame::affine::Affine;
 use crate::flame::fastmath as fm;
 use crate::flame::rng::FastRng;
 use crate::flame::variations::util::{rand_size, zeps};
-use crate::flame::variations::{EPS, Form, Prepared, VarIn};
+use crate::flame::variations::{Dialect, EPS, Form, Prepared, VarIn};
 
 #[inline(always)]
 fn sincos(a: f64) -> (f64, f64) {
@@ -596,13 +596,23 @@ pub(super) fn formula(
             let xx = x - lx;
             let yy = y + ly;
             let r = (xx * xx + yy * yy).sqrt();
+            // flam3, Apophysis and JWildfire add the centre (x, −y) unweighted; Fractorium
+            // weights it too, so that weight 0 collapses to the origin.
+            let weighted = v.dialect == Dialect::Fractorium;
             if r < w {
                 let a = yy.atan2(xx) + spin + twist * (w - r);
                 let (s, c) = sincos(a);
-                (w * (r * c + lx), w * (r * s - ly))
-            } else {
+                if weighted {
+                    (w * (r * c + lx), w * (r * s - ly))
+                } else {
+                    (w * r * c + lx, w * r * s - ly)
+                }
+            } else if weighted {
                 let r = 1.0 + space / zeps(r);
                 (w * (r * xx + lx), w * (r * yy - ly))
+            } else {
+                let r = w * (1.0 + space / zeps(r));
+                (r * xx + lx, r * yy - ly)
             }
         }
         LOONIE => {

@@ -459,3 +459,99 @@ fn batch_loop<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mu
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::affine::Affine;
+    use crate::flame::variations::{Dialect, Form, VarId, eval_prepared};
+
+    /// lazysusan adds its centre unweighted in flam3 and JWildfire, weighted in Fractorium:
+    /// rows of each program's own numeric vectors (JWildfire 9.00, Fractorium 25.25.12.1),
+    /// as (weight, spin, space, twist, x, y, input, output).
+    #[test]
+    fn lazysusan_follows_the_writer() {
+        type Row = (f64, [f64; 5], [f64; 2], [f64; 2]);
+        let jwf = [0.1, 0.4, 0.2, 0.1, 0.2];
+        let jwildfire: [Row; 4] = [
+            (
+                0.7,
+                jwf,
+                [-0.1125, 0.3975],
+                [-0.09502981922398035, 0.1987768732179206],
+            ),
+            (
+                0.7,
+                jwf,
+                [0.625, 0.125],
+                [0.43856263280855756, 0.06867795530288268],
+            ),
+            (
+                -1.3,
+                jwf,
+                [-0.1125, 0.3975],
+                [0.5504954683235146, -1.4666872579919998],
+            ),
+            (
+                -1.3,
+                jwf,
+                [0.625, 0.125],
+                [-1.0246378762776882, -0.8962043996004736],
+            ),
+        ];
+        let fr = [2.8132741228718343, 0.3, 0.3, 0.3, 0.3];
+        let fractorium: [Row; 2] = [
+            (
+                0.7,
+                fr,
+                [-0.1125, 0.3975],
+                [-0.18564863008924068, 0.45900586542362515],
+            ),
+            (
+                0.7,
+                fr,
+                [0.625, 0.125],
+                [-0.09059375503098684, -0.43339627220786625],
+            ),
+        ];
+        let run = |d: Dialect, (w, p, t, _): &Row| {
+            let mut v = Prepared::new(
+                LAZYSUSAN as VarId,
+                Form::Regular,
+                *w,
+                p,
+                Affine::default(),
+                true,
+            );
+            v.dialect = d;
+            let o = eval_prepared(
+                &v,
+                [t[0], t[1], 0.0],
+                Acc::default(),
+                false,
+                &mut FastRng::new(1),
+            );
+            [o.x, o.y]
+        };
+        for (rows, mine, other) in [
+            (&jwildfire[..], Dialect::JWildfire, Dialect::Fractorium),
+            (&jwildfire[..], Dialect::Flam3, Dialect::Fractorium),
+            (&fractorium[..], Dialect::Fractorium, Dialect::Flam3),
+        ] {
+            for row in rows {
+                let got = run(mine, row);
+                for k in 0..2 {
+                    assert!(
+                        (got[k] - row.3[k]).abs() < 1e-9,
+                        "{mine:?} {row:?}: {got:?}"
+                    );
+                }
+                let theirs = run(other, row);
+                assert!(
+                    (theirs[0] - row.3[0]).abs() > 1e-3,
+                    "{other:?} agrees on {row:?}"
+                );
+            }
+        }
+    }
+}
