@@ -111,8 +111,14 @@ fn resolve(variation: &str, params: &str) -> Result<(VarId, Vec<f64>), String> {
             }
             // Ranges in brackets ("2[int,1,inf]") are documentation.
             let v = v.split('[').next().unwrap();
-            match variations::param_of(k) {
-                Some((pid, _, i)) if pid == id => p[i] = num(v),
+            // JWildfire's vectors name parameters without the variation's prefix that its
+            // flame files (and ugnis) put in front of them.
+            let found = variations::param_of(k)
+                .filter(|(pid, _, _)| *pid == id)
+                .or_else(|| variations::param_of(&format!("{variation}_{k}")))
+                .filter(|(pid, _, _)| *pid == id);
+            match found {
+                Some((_, _, i)) => p[i] = num(v),
                 _ => return Err(format!("{variation}: parameter '{k}' is unknown")),
             }
         }
