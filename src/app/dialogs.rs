@@ -28,6 +28,8 @@ pub enum Purpose {
     ResumeState,
     /// The video file of an animation export.
     ExportAnimation,
+    /// A sound whose loudness moves a parameter.
+    SoundFile,
 }
 
 impl Purpose {
@@ -50,6 +52,7 @@ impl Purpose {
             Purpose::BoxCountImage => "Image to box-count",
             Purpose::ResumeState => "Resume render state",
             Purpose::ExportAnimation => "Export animation",
+            Purpose::SoundFile => "Sound for the motion",
         }
     }
 
@@ -68,6 +71,7 @@ impl Purpose {
             Purpose::BoxCountImage => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::ResumeState => &["ugnis-state"],
             Purpose::ExportAnimation => &["mp4", "webm", "mkv", "mov", "gif", "apng"],
+            Purpose::SoundFile => &["wav", "flac", "mp3"],
         }
     }
 

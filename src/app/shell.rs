@@ -406,6 +406,7 @@ impl UgnisApp {
             Some(FlameRequest::GradientFromImage) => self.browse(Purpose::GradientFromImage),
             Some(FlameRequest::ChooseExportFile) => self.browse(Purpose::Export),
             Some(FlameRequest::ChooseAnimationFile) => self.browse(Purpose::ExportAnimation),
+            Some(FlameRequest::ChooseSoundFile) => self.browse(Purpose::SoundFile),
             None => {}
         }
         self.dialogs(&ctx);

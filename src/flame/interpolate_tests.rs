@@ -310,7 +310,12 @@ fn consecutive_rotations_are_brought_within_half_a_turn_as_flam3_reads_them() {
         f.rotate = rotate;
         f
     };
-    let cps = vec![at(0.0, 10.0), at(1.0, 350.0), at(2.0, -700.0), at(3.0, 1e12)];
+    let cps = vec![
+        at(0.0, 10.0),
+        at(1.0, 350.0),
+        at(2.0, -700.0),
+        at(3.0, 1e12),
+    ];
     // 350° after 10° is −10°; −700° after −10° is 20°; a nonsense angle stays as written.
     assert_eq!(unwrapped_rotations(&cps), vec![10.0, -10.0, 20.0, 1e12]);
     // Half a turn exactly stays on the side it was written (flam3's loops stop there).

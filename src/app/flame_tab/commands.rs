@@ -371,6 +371,9 @@ impl FlameTab {
             }
         }
         self.loop_window(ctx);
+        if self.sound_window(ctx) == Some(super::timeline::SoundAsk::Browse) {
+            req = Some(FlameRequest::ChooseSoundFile);
+        }
         if let Some(r) = self.anim_windows(ctx, options) {
             req = Some(r);
         }

@@ -88,6 +88,8 @@ pub enum FlameRequest {
     ChooseExportFile,
     /// Choose the folder or video an animation export writes.
     ChooseAnimationFile,
+    /// Choose the sound that drives a parameter.
+    ChooseSoundFile,
 }
 
 /// State of the flame tab.

@@ -442,9 +442,16 @@ fn a_second_curve_for_one_target_is_skipped_with_a_warning() {
     c.insert(Key::new(0.0, 1.0)).unwrap();
     c.insert(Key::new(9.0, 2.0)).unwrap();
     let text = flame_element(&f);
-    let (a, b) = (text.find("<curve").unwrap(), text.find("</curve>").unwrap() + 8);
+    let (a, b) = (
+        text.find("<curve").unwrap(),
+        text.find("</curve>").unwrap() + 8,
+    );
     let curve = &text[a..b];
-    let doubled = text.replacen(curve, &format!("{curve}{}", curve.replace("\"2\"", "\"5\"")), 1);
+    let doubled = text.replacen(
+        curve,
+        &format!("{curve}{}", curve.replace("\"2\"", "\"5\"")),
+        1,
+    );
     let p = read(&doubled, &opts()).unwrap();
     let back = &p.value.flames[0];
     assert_eq!(back.keys.curves.len(), 1);
