@@ -150,16 +150,16 @@ pub fn drive(s: &SoundArgs, flame: &mut Flame, fps: Option<f64>, input: &Path) -
     );
     let curve = curve_from_energy(&energy, target, low, high);
     if flame.keys.curve(&target).is_some() {
-        eprintln!("'{target}' had keyframes; the sound's curve replaces them");
+        stderr!("'{target}' had keyframes; the sound's curve replaces them");
         flame.keys.curves.retain(|c| c.target != target);
     }
     flame.keys.curves.push(curve);
     if let Some(out) = &s.save_keys {
-        super::check_output(out)?;
+        super::check_outputs(&[input, path.as_path()], &[out.as_path()])?;
         let name = flame.name.clone();
         ugnis::io::write_flames(out, &name, std::slice::from_ref(flame))
             .map_err(|e| anyhow::anyhow!("'{}': {e}", out.display()))?;
-        eprintln!(
+        stderr!(
             "saved the flame with the sound's curve ({} keys) to '{}'",
             flame.keys.frames,
             out.display()
