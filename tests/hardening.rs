@@ -6,6 +6,8 @@
 mod common;
 #[path = "hardening/outputs.rs"]
 mod outputs;
+#[path = "hardening/readers.rs"]
+mod readers;
 #[path = "hardening/signals.rs"]
 mod signals;
 #[path = "hardening/stderr.rs"]
