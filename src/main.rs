@@ -1,5 +1,6 @@
 //! ugnis: the desktop fractal editor (no arguments) and its command line.
 
+#[macro_use]
 mod cli;
 
 use clap::{Parser, Subcommand};
@@ -61,7 +62,7 @@ fn main() {
     };
     cli::set_progress_mode(cli.progress);
     if cli.command.is_some() {
-        cli::install_interrupt_handler();
+        cli::signals::install();
     }
     let result = match cli.command {
         Some(Command::Render(a)) => cli::render::run(a),
@@ -78,11 +79,7 @@ fn main() {
         None => run_gui(cli.file),
     };
     if let Err(e) = result {
-        if e.downcast_ref::<cli::Interrupted>().is_some() || cli::interrupted() {
-            eprintln!("{}", cli::Interrupted);
-            std::process::exit(130);
-        }
-        eprintln!("error: {e:#}");
+        stderr!("error: {e:#}");
         std::process::exit(1);
     }
 }

@@ -122,14 +122,14 @@ pub fn drive(s: &SoundArgs, flame: &mut Flame, fps: Option<f64>, input: &Path) -
     let replaced = drive_flame(flame, &sound, &d)
         .map_err(|e| anyhow::anyhow!("--sound {}: {e} ({})", path.display(), input.display()))?;
     if replaced {
-        eprintln!("'{target}' had keyframes; the sound's curve replaces them");
+        stderr!("'{target}' had keyframes; the sound's curve replaces them");
     }
     if let Some(out) = &s.save_keys {
-        super::check_output(out)?;
+        super::check_outputs(&[input, path.as_path()], &[out.as_path()])?;
         let name = flame.name.clone();
         ugnis::io::write_flames(out, &name, std::slice::from_ref(flame))
             .map_err(|e| anyhow::anyhow!("'{}': {e}", out.display()))?;
-        eprintln!(
+        stderr!(
             "saved the flame with the sound's curve ({} keys) to '{}'",
             flame.keys.frames,
             out.display()

@@ -100,7 +100,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         (Some(v), _) => {
             let p = escape_view::read(v)?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let mut doc = p.value;
             // A gradient file named relative to the view: absolute, so that the view saved
@@ -205,7 +205,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
     if let Some(g) = &a.gradient {
         let p = escape_view::resolve_gradient_parsed(g, None).map_err(|e| anyhow::anyhow!(e))?;
         for w in &p.warnings {
-            eprintln!("{w}");
+            stderr!("{w}");
         }
         doc.params.palette.gradient = p.value;
         // A saved view resolves relative paths from its own directory: keep files absolute.
@@ -242,10 +242,20 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&out) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", out.display());
     }
-    super::check_output(&out)?;
-    if let Some(v) = &a.save_view {
-        super::check_output(v)?;
-    }
+    let gradient_file = a
+        .gradient
+        .as_deref()
+        .filter(|g| ugnis::gradient::builtin_named(g).is_none())
+        .map(std::path::Path::new);
+    let inputs: Vec<&std::path::Path> = [a.view.as_deref(), gradient_file]
+        .into_iter()
+        .flatten()
+        .collect();
+    let outputs: Vec<&std::path::Path> = [Some(out.as_path()), a.save_view.as_deref()]
+        .into_iter()
+        .flatten()
+        .collect();
+    super::check_outputs(&inputs, &outputs)?;
     let doc = doc_from_args(&a)?;
     // What is saved must read back: refuse a view that its own reader would refuse.
     let view_text = escape_view::write(&doc);
@@ -258,15 +268,16 @@ pub fn run(a: EscapeArgs) -> Result<()> {
             doc.width as u64 * doc.height as u64,
             &format!("rendering {}", doc.params.family.name()),
         );
-        let done = r.run_exact(super::interrupt_flag(), &|n| pb.inc(n));
+        let done = r.run_exact(super::no_cancel(), &|n| pb.inc(n));
         pb.finish_and_clear();
         if !done {
-            return Err(super::Interrupted.into());
+            return Err(super::stopped_early());
         }
         Ok(r.image())
     })?;
-    super::check_interrupted()?;
     let img = image::DynamicImage::ImageRgb8(img);
+    // The image and the view are put in place together, or neither.
+    let held = io::atomic::hold();
     if is_bmp {
         io::bmp::save(&out, &img).with_context(|| format!("cannot write '{}'", out.display()))?;
     } else {
@@ -280,5 +291,5 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     if let Some(v) = &a.save_view {
         escape_view::save(v, &doc).with_context(|| format!("cannot write '{}'", v.display()))?;
     }
-    Ok(())
+    Ok(held.commit()?)
 }
