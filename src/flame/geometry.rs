@@ -77,10 +77,7 @@ impl Geometry {
         let jwf = JwfRaster::new(&flame.jwf, flame.filter, os);
         let gutter = jwf.border;
         let (bw, bh) = (os * w + 2 * gutter, os * h + 2 * gutter);
-        let mut bucket_from_world = bucket_from_world(flame, os, w, h, gutter);
-        // JWildfire rounds to the nearest bucket.
-        bucket_from_world.e += 0.5;
-        bucket_from_world.f += 0.5;
+        let bucket_from_world = jwf_bucket_from_world(flame, os, w, h, gutter);
         Geometry {
             width: w,
             height: h,
@@ -117,13 +114,10 @@ impl Geometry {
     /// frame draws into the frame's one histogram.
     pub fn with_camera_of(&self, flame: &Flame) -> Geometry {
         Geometry {
-            bucket_from_world: {
-                let mut m = bucket_from_world(flame, self.os, self.width, self.height, self.gutter);
-                if self.jwf.is_some() {
-                    m.e += 0.5;
-                    m.f += 0.5;
-                }
-                m
+            bucket_from_world: if self.jwf.is_some() {
+                jwf_bucket_from_world(flame, self.os, self.width, self.height, self.gutter)
+            } else {
+                bucket_from_world(flame, self.os, self.width, self.height, self.gutter)
             },
             ..self.clone()
         }
@@ -257,6 +251,21 @@ fn bucket_from_world(flame: &Flame, os: usize, w: usize, h: usize, gutter: usize
         e: ox - k * (c * cx - s * cy),
         f: oy - k * (s * cx + c * cy),
     }
+}
+
+/// [`bucket_from_world`] as JWildfire maps: rounding to the nearest bucket, and for a 3-D
+/// camera the rotation about the origin rather than the centre (JWildfire turns the projected
+/// point, then moves the centre to the middle of the picture).
+fn jwf_bucket_from_world(flame: &Flame, os: usize, w: usize, h: usize, gutter: usize) -> Affine {
+    let mut m = bucket_from_world(flame, os, w, h, gutter);
+    if crate::flame::chaos::Projection::is_jwildfire_3d(flame) {
+        let k = os as f64 * flame.ppu();
+        m.e = (os * w) as f64 / 2.0 + gutter as f64 - k * flame.center[0];
+        m.f = (os * h) as f64 / 2.0 + gutter as f64 - k * flame.center[1];
+    }
+    m.e += 0.5;
+    m.f += 0.5;
+    m
 }
 
 #[cfg(test)]

@@ -91,6 +91,11 @@ pub struct JwfLook {
     pub kernel: JwfKernel,
     /// The background.
     pub background: JwfBackground,
+    /// The camera's bank, radians (`cam_roll`): a turn about the viewing axis before pitch and
+    /// yaw.
+    pub bank: f64,
+    /// Factor on the depth of field's blur (`cam_dof_scale`).
+    pub dof_scale: f64,
 }
 
 impl Default for JwfLook {
@@ -105,6 +110,8 @@ impl Default for JwfLook {
             antialias_radius: 0.5,
             kernel: JwfKernel::MitchellSmooth,
             background: JwfBackground::default(),
+            bank: 0.0,
+            dof_scale: 1.0,
         }
     }
 }

@@ -1,6 +1,7 @@
 //! JWildfire's picture settings on a `<flame>` (`white_level`, `low_density_brightness`,
 //! `balancing_red` …, `saturation`, `fg_opacity`, `antialias_amount`, `antialias_radius`,
-//! `filter_kernel`, `background_type` and the gradient background's colours): read into
+//! `filter_kernel`, `background_type` and the gradient background's colours, the camera's
+//! `cam_roll` and `cam_dof_scale`): read into
 //! [`JwfLook`] for flames JWildfire wrote, kept verbatim for the others, and written back for
 //! flames JWildfire's renderer draws; and the colour types of a JWildfire file's xforms.
 
@@ -59,6 +60,8 @@ pub(super) fn attr(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, a: &Attr) -> R
         "background_ll" => l.background.ll = colour(cx)?,
         "background_lr" => l.background.lr = colour(cx)?,
         "background_cc" => l.background.cc = colour(cx)?,
+        "cam_roll" => l.bank = cx.num(a)?,
+        "cam_dof_scale" => l.dof_scale = cx.num(a)?,
         _ => return Ok(false),
     }
     st.names.push(a.name.to_string());
@@ -107,7 +110,7 @@ pub(super) fn write(s: &mut String, f: &Flame) {
          balancing_green=\"{}\" balancing_blue=\"{}\" saturation=\"{}\" fg_opacity=\"{}\" \
          antialias_amount=\"{}\" antialias_radius=\"{}\" filter_kernel=\"{}\" \
          background_type=\"{}\" background_ul=\"{}\" background_ur=\"{}\" background_ll=\"{}\" \
-         background_lr=\"{}\" background_cc=\"{}\"",
+         background_lr=\"{}\" background_cc=\"{}\" cam_roll=\"{}\" cam_dof_scale=\"{}\"",
         n(l.white_level),
         n(l.low_density_brightness),
         n(l.balance[0]),
@@ -124,6 +127,8 @@ pub(super) fn write(s: &mut String, f: &Flame) {
         rgb(b.ll),
         rgb(b.lr),
         rgb(b.cc),
+        n(l.bank),
+        n(l.dof_scale),
     );
 }
 
