@@ -17,6 +17,7 @@ pub(crate) mod histogram;
 pub(crate) mod ifs3d;
 pub mod interpolate;
 pub mod jwf_curve;
+pub mod jwf_render;
 pub mod keyframes;
 pub mod loops;
 pub mod model;

@@ -615,6 +615,11 @@ impl Renderer {
         if self.complete() {
             return self.flame.quality * 4f64.powf(self.flame.zoom) * weight;
         }
+        if self.geom.jwf.is_some() {
+            // JWildfire's samples also cover the border of its raster.
+            let done = self.samples_done.max(1) as f64 / self.flame.samples_per_quality();
+            return done * 4f64.powf(self.flame.zoom) * weight;
+        }
         let px = self.flame.width as f64 * self.flame.height as f64;
         (self.samples_done.max(1) as f64) / px * weight
     }

@@ -30,6 +30,8 @@ struct Pending {
     version_index: PaletteIndex,
     palette_mode_seen: bool,
     smooth_gradient: Option<(String, usize)>,
+    /// JWildfire's picture settings.
+    jwf: super::jwf_look::Pending,
 }
 
 /// Read a `<flame>` element whose start tag `e` is at `start`.
@@ -64,23 +66,28 @@ pub(super) fn read_flame(
         version_index: PaletteIndex::Flam3,
         palette_mode_seen: false,
         smooth_gradient: None,
+        jwf: Default::default(),
     };
     for a in &attrs {
         let handled = camera_attr(cx, &mut f, &mut st, a)?
             || tone_attr(cx, &mut f, &mut st, a)?
             || palette_attr(cx, &mut f, &mut st, a)?
-            || anim_attr(cx, &mut f, a)?;
+            || anim_attr(cx, &mut f, a)?
+            || super::jwf_look::attr(cx, &mut f, &mut st.jwf, a)?;
         if !handled {
             other_attr(cx, &mut f, a)?;
         }
     }
-    settle_attrs(cx, &mut f, &st, start)?;
+    settle_attrs(cx, &mut f, &mut st, start)?;
     let mut pal = PaletteData::new();
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
         read_flame_children(cx, cur, text, &mut f, &mut pal)?;
     }
     cut_xaos_rows(cx, &mut f, start);
+    if st.version_index == PaletteIndex::JWildfire && st.palette_index.is_none() {
+        super::jwf_look::settle_color_types(&mut f);
+    }
     super::jwf_curves::read(cx, &mut f, start);
     // A template (render settings, no xform) needs no colours and no xform.
     let template = cx.opts.templates && f.xforms.is_empty();
@@ -404,14 +411,15 @@ fn other_attr(cx: &mut Ctx, f: &mut Flame, a: &Attr) -> R<()> {
 }
 
 /// The rules that need all attributes: `angle` without `rotate`, the palette index rule,
-/// JWildfire's smooth gradient, the contrast and the density estimator.
-fn settle_attrs(cx: &mut Ctx, f: &mut Flame, st: &Pending, start: usize) -> R<()> {
+/// JWildfire's picture settings and smooth gradient, the contrast and the density estimator.
+fn settle_attrs(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, start: usize) -> R<()> {
     if !st.rotate_seen
         && let Some(ang) = st.angle
     {
         f.rotate = -ang.to_degrees();
     }
     f.palette_index = st.palette_index.unwrap_or(st.version_index);
+    super::jwf_look::settle(cx, f, std::mem::take(&mut st.jwf));
     if let Some((v, _)) = &st.smooth_gradient {
         if f.palette_index == PaletteIndex::JWildfire {
             if !st.palette_mode_seen && matches!(v.as_str(), "1" | "true") {

@@ -21,6 +21,7 @@ mod children;
 mod context;
 mod flame;
 mod jwf_curves;
+mod jwf_look;
 mod palette;
 mod read;
 mod template;

@@ -138,6 +138,7 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         }
     }
     write_anim_attrs(s, &f.anim);
+    super::jwf_look::write(s, f);
     let jwf = jwf_curves::for_writing(f);
     for (k, v) in jwf.as_ref().map_or(&f.extra_attrs, |w| &w.flame) {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
