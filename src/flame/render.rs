@@ -653,6 +653,38 @@ impl Renderer {
         )
     }
 
+    /// Two pictures of independent halves of the samples so far — the even and the odd
+    /// threads' histograms, each exposed for its own samples — with each half's share of the
+    /// samples. Their difference measures the noise (grain) left in [`Renderer::preview`], the
+    /// two-buffer estimate of Monte Carlo renderers, free of the change density estimation
+    /// makes as the density grows. `None` with one thread, or as soon as `stop` is set.
+    pub fn preview_halves(&self, stop: &AtomicBool) -> Option<[(DynamicImage, f64); 2]> {
+        let t = self.hists.len();
+        if t < 2 {
+            return None;
+        }
+        let half = |k: usize| -> Option<(DynamicImage, f64)> {
+            let mut it = self.hists.iter().skip(k).step_by(2);
+            let mut m = it.next()?.clone();
+            for h in it {
+                m.add(h);
+            }
+            // Threads iterate equal numbers of sub-batches (within one).
+            let share = (t - k).div_ceil(2) as f64 / t as f64;
+            let img = develop_rows_until(
+                &self.flame,
+                &self.geom,
+                &m,
+                self.density() * share,
+                self.format,
+                self.out_rows.clone(),
+                stop,
+            )?;
+            Some((img, share))
+        };
+        Some([half(0)?, half(1)?])
+    }
+
     /// A quick look at the image as it stands: like [`Renderer::preview`] but without density
     /// estimation (a few milliseconds instead of tens at low densities, where DE kernels are
     /// widest). Same exposure; noisier. The GUI shows it first after an edit and while

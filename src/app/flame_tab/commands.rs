@@ -233,7 +233,9 @@ impl FlameTab {
     pub fn paste(&mut self, text: &str) {
         match io::flam3_xml::read(text, &Default::default()) {
             Ok(p) => {
-                let new: Vec<Flame> = p.value.flames;
+                let mut new: Vec<Flame> = p.value.flames;
+                new.iter_mut()
+                    .for_each(crate::app::loading::keep_file_weights);
                 let n = new.len();
                 self.doc_mut().edit_document(|fl, cur| {
                     fl.extend(new);
