@@ -62,6 +62,13 @@
 //! | `fr_trig` | trigonometric formulas of x and y (`bisplit`, `crescents`, `petal`, `rays1`, `tancos`, …) |
 //! | `fr_truchet` | Truchet tilings (`Truchet*`, `truchet_knot`, `hex_truchet`) |
 //! | `fr_waves` | wave displacements (`waves22` … `waves42`, `ripple`, `vibration`, `interference2`, …) |
+//! | `jwf_b_3d` | JWildfire's 3-D maps (`affine3D`, `tangent3D`, `inflateZ_*`, `onion`, …) |
+//! | `jwf_b_complex` | JWildfire's complex functions (`cos2_bs`, `acoth`, `sqrt_asinh`, `julia_outside`, `plusrecip`, …) |
+//! | `jwf_b_crops` | JWildfire's shape crops (`crop_box`, `crop_x`, `crop_trapezoid`, `crop_polygon`) |
+//! | `jwf_b_cuts` | JWildfire's shader cut-outs (`cut_tileillusion`, `cut_sqcir`, `cut_rgrid`, `cut_zigzag`) |
+//! | `jwf_b_dc` | JWildfire's shader direct-colour stamps (`dc_acrilic`, `dc_vortex`, `dc_portal`, `glsl_hoshi`) |
+//! | `jwf_b_ifs` | small random-map IFS after Paul Bourke (`invtree_js`, `wallpaper_js`, `woggle_js`) |
+//! | `jwf_b_shapes` | JWildfire's plane shapes and warps (`waves2_wf`, `yin_yang`, `heart_wf`, …) |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
 //! | `jwf_direct_colour` | JWildfire's `dc_*` stamps and `julian2dc` |
 //! | `jwf_drawings` | drawings, curves and filled figures (`hilbert_js`, `tree_js`, `rose_wf`, `nsudoku`, …) |
@@ -103,6 +110,14 @@ mod fr_trig;
 mod fr_truchet;
 mod fr_waves;
 mod jwf_3d;
+// JWildfire variations, second part.
+mod jwf_b_3d;
+mod jwf_b_complex;
+mod jwf_b_crops;
+mod jwf_b_cuts;
+mod jwf_b_dc;
+mod jwf_b_ifs;
+mod jwf_b_shapes;
 mod jwf_direct_colour;
 mod jwf_drawings;
 mod jwf_knots;

@@ -9,6 +9,8 @@ use std::collections::HashMap;
 use std::sync::LazyLock;
 
 use super::VarId;
+// JWildfire variations, second part.
+use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 use super::def::{VarDef, flag};
 use super::{
     flam3, fr_3d, fr_bipolar_elliptic, fr_blurs, fr_complex, fr_crops, fr_curves, fr_direct_colour,
@@ -33,7 +35,7 @@ pub fn info(id: VarId) -> &'static VarDef {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 28] = [
+const FILES: [&[VarDef]; 35] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -62,6 +64,14 @@ const FILES: [&[VarDef]; 28] = [
     jwf_maps::DEFS,
     jwf_symmetry::DEFS,
     jwf_text::DEFS,
+    // JWildfire variations, second part.
+    jwf_b_3d::DEFS,
+    jwf_b_complex::DEFS,
+    jwf_b_crops::DEFS,
+    jwf_b_cuts::DEFS,
+    jwf_b_dc::DEFS,
+    jwf_b_ifs::DEFS,
+    jwf_b_shapes::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
