@@ -575,6 +575,9 @@ pub struct Flame {
     pub palette_mode: PaletteMode,
     /// Whose rule indexes the palette (the program that wrote the file).
     pub palette_index: PaletteIndex,
+    /// JWildfire's "preserve Z": in a flame JWildfire wrote, its 2-D variations carry the
+    /// weighted input z along (else their z is 0).
+    pub preserve_z: bool,
     /// The gradient (256 entries).
     pub palette: Gradient,
     /// The file's palette when it has more than 256 entries (Fractorium writes such palettes):
@@ -643,6 +646,7 @@ impl Default for Flame {
             background: [0.0, 0.0, 0.0],
             palette_mode: PaletteMode::Step,
             palette_index: PaletteIndex::Flam3,
+            preserve_z: false,
             palette: Gradient::default(),
             palette_hires: None,
             curves: crate::flame::curves::Curves::default(),
@@ -684,6 +688,15 @@ impl Flame {
             PaletteIndex::Fractorium => variations::Dialect::Fractorium,
             PaletteIndex::JWildfire => variations::Dialect::JWildfire,
             PaletteIndex::Flam3 | PaletteIndex::Apophysis => variations::Dialect::Flam3,
+        }
+    }
+
+    /// How the variations of this flame run: as the program that wrote it runs them.
+    pub fn rules(&self) -> variations::Rules {
+        variations::Rules {
+            compat: true,
+            dialect: self.dialect(),
+            preserve_z: self.preserve_z,
         }
     }
 

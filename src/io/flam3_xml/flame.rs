@@ -30,6 +30,10 @@ struct Pending {
     version_index: PaletteIndex,
     palette_mode_seen: bool,
     smooth_gradient: Option<(String, usize)>,
+    /// JWildfire's `preserve_z` and `new_linear` (which JWildfire reads as "preserve Z" too,
+    /// after `preserve_z`).
+    preserve_z: Option<bool>,
+    new_linear: Option<bool>,
 }
 
 /// Read a `<flame>` element whose start tag `e` is at `start`.
@@ -64,6 +68,8 @@ pub(super) fn read_flame(
         version_index: PaletteIndex::Flam3,
         palette_mode_seen: false,
         smooth_gradient: None,
+        preserve_z: None,
+        new_linear: None,
     };
     for a in &attrs {
         let handled = camera_attr(cx, &mut f, &mut st, a)?
@@ -71,7 +77,11 @@ pub(super) fn read_flame(
             || palette_attr(cx, &mut f, &mut st, a)?
             || anim_attr(cx, &mut f, a)?;
         if !handled {
-            other_attr(cx, &mut f, a)?;
+            match a.name {
+                "preserve_z" => st.preserve_z = Some(a.value.trim() == "1"),
+                "new_linear" => st.new_linear = Some(a.value.trim() == "1"),
+                _ => other_attr(cx, &mut f, a)?,
+            }
         }
     }
     settle_attrs(cx, &mut f, &st, start)?;
@@ -347,7 +357,6 @@ fn other_attr(cx: &mut Ctx, f: &mut Flame, a: &Attr) -> R<()> {
             }
             f.name = v.to_string();
         }
-        "new_linear" => {}
         "soloxform" => {
             let n = cx.num(a)?;
             f.solo_xform = if n >= 0.0 { Some(n as usize) } else { None };
@@ -412,6 +421,14 @@ fn settle_attrs(cx: &mut Ctx, f: &mut Flame, st: &Pending, start: usize) -> R<()
         f.rotate = -ang.to_degrees();
     }
     f.palette_index = st.palette_index.unwrap_or(st.version_index);
+    // JWildfire reads `new_linear` as its "preserve Z" (after `preserve_z`); for flam3 it says
+    // that linear is 2-D, as ugnis' linear is.
+    f.preserve_z = st.preserve_z.unwrap_or(false);
+    if f.palette_index == PaletteIndex::JWildfire
+        && let Some(on) = st.new_linear
+    {
+        f.preserve_z = on;
+    }
     if let Some((v, _)) = &st.smooth_gradient {
         if f.palette_index == PaletteIndex::JWildfire {
             if !st.palette_mode_seen && matches!(v.as_str(), "1" | "true") {
