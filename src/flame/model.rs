@@ -497,6 +497,9 @@ pub struct Flame {
     pub palette_mode: PaletteMode,
     /// Whose rule indexes the palette (the program that wrote the file).
     pub palette_index: PaletteIndex,
+    /// JWildfire's "preserve Z": in a flame JWildfire wrote, its 2-D variations carry the
+    /// weighted input z along (else their z is 0).
+    pub preserve_z: bool,
     /// The gradient (256 entries).
     pub palette: Gradient,
     /// The file's palette when it has more than 256 entries (Fractorium writes such palettes):
@@ -568,6 +571,7 @@ impl Default for Flame {
             background: [0.0, 0.0, 0.0],
             palette_mode: PaletteMode::Step,
             palette_index: PaletteIndex::Flam3,
+            preserve_z: false,
             palette: Gradient::default(),
             palette_hires: None,
             curves: crate::flame::curves::Curves::default(),
@@ -617,6 +621,15 @@ impl Flame {
     /// the flames JWildfire wrote, as the palette rule names the writer.
     pub fn renders_as_jwildfire(&self) -> bool {
         self.palette_index == PaletteIndex::JWildfire
+    }
+
+    /// How the variations of this flame run: as the program that wrote it runs them.
+    pub fn rules(&self) -> variations::Rules {
+        variations::Rules {
+            compat: true,
+            dialect: self.dialect(),
+            preserve_z: self.preserve_z,
+        }
     }
 
     /// Pixels per world unit: scale·2^zoom·cam_zoom.

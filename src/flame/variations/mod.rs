@@ -70,6 +70,7 @@
 //! | `jwf_b_ifs` | small random-map IFS after Paul Bourke (`invtree_js`, `wallpaper_js`, `woggle_js`) |
 //! | `jwf_b_shapes` | JWildfire's plane shapes and warps (`waves2_wf`, `yin_yang`, `heart_wf`, …) |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
+//! | `jwf_dialect` | JWildfire's own formulas for names the others also use (`polar`, `rings`, …), for the flames JWildfire wrote |
 //! | `jwf_direct_colour` | JWildfire's `dc_*` stamps and `julian2dc` |
 //! | `jwf_drawings` | drawings, curves and filled figures (`hilbert_js`, `tree_js`, `rose_wf`, `nsudoku`, …) |
 //! | `jwf_knots` | `knots3D` |
@@ -118,6 +119,7 @@ mod jwf_b_cuts;
 mod jwf_b_dc;
 mod jwf_b_ifs;
 mod jwf_b_shapes;
+mod jwf_dialect;
 mod jwf_direct_colour;
 mod jwf_drawings;
 mod jwf_knots;
@@ -133,7 +135,8 @@ pub(crate) mod util;
 pub(crate) use batch::inline_batch;
 pub(crate) use batch::{batch_with, generic_batch};
 pub use def::{
-    Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, VarDef, VarState, flag,
+    Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, Rules, VarDef, VarState, ZRule,
+    flag,
 };
 pub use flam3::*;
 pub use names::{
@@ -146,7 +149,7 @@ pub use params::{
 pub use point::{Acc, VarIn, need};
 pub(crate) use point::{SoaAcc, SoaIn};
 pub use prepare::{eval_point, eval_prepared};
-pub use registry::{all, count, info};
+pub use registry::{all, count, info, jwildfire_twin};
 pub use shared::{BuildFn, SharedDef};
 
 // For the formulas' files, which import everything above with `use super::*`.

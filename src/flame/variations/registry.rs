@@ -11,12 +11,13 @@ use std::sync::LazyLock;
 use super::VarId;
 // JWildfire variations, second part.
 use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
-use super::def::{VarDef, flag};
+use super::def::{Form, VarDef, flag};
+use super::names::lookup_in;
 use super::{
     flam3, fr_3d, fr_bipolar_elliptic, fr_blurs, fr_complex, fr_crops, fr_curves, fr_direct_colour,
     fr_distance_blurs, fr_grids, fr_hexagons, fr_hyperbolic, fr_inversions, fr_julias, fr_moves,
     fr_polynomial_maps, fr_quaternions, fr_radial, fr_synth, fr_trig, fr_truchet, fr_waves, jwf_3d,
-    jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_symmetry, jwf_text,
+    jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_symmetry, jwf_text,
 };
 
 /// Every variation, by id.
@@ -32,6 +33,12 @@ pub fn count() -> usize {
 /// The registry entry of variation `id` (panics for an id not below [`count`]).
 pub fn info(id: VarId) -> &'static VarDef {
     REGISTRY.defs[id as usize]
+}
+
+/// JWildfire's own formula for variation `id` used in `form`, where it differs from the one
+/// flam3's and Fractorium's flames get (see `jwf_dialect`).
+pub fn jwildfire_twin(id: VarId, form: Form) -> Option<&'static VarDef> {
+    REGISTRY.twins.get(&(id, form)).copied()
 }
 
 /// The formulas' files, each with its table of variations.
@@ -161,6 +168,34 @@ pub(super) struct Registry {
     pub(super) params: HashMap<String, (VarId, usize)>,
     /// Lower-case full text parameter name → (id, text index).
     pub(super) texts: HashMap<String, (VarId, usize)>,
+    /// (id, form) → JWildfire's formula where it differs.
+    pub(super) twins: HashMap<(VarId, Form), &'static VarDef>,
+}
+
+/// The JWildfire twins by the variation and form their names denote: the formulas of
+/// [`jwf_dialect::DEFS`], and the variations JWildfire computes as 2-D ones where flam3's or
+/// Fractorium's carry z along (their own formula, the framework's z).
+fn twins(
+    names: &HashMap<String, VarId>,
+    defs: &[&'static VarDef],
+) -> HashMap<(VarId, Form), &'static VarDef> {
+    let mut out = HashMap::new();
+    for name in jwf_dialect::FLAT {
+        let key = lookup_in(names, defs, &name.to_ascii_lowercase());
+        let (id, form) = key.unwrap_or_else(|| panic!("2-D twin {name} is not registered"));
+        let d = defs[id as usize];
+        let flat: &'static VarDef = Box::leak(Box::new(VarDef {
+            flags: d.flags & !flag::WRITES_Z,
+            ..*d
+        }));
+        out.insert((id, form), flat);
+    }
+    for d in jwf_dialect::DEFS {
+        let key = lookup_in(names, defs, &d.name.to_ascii_lowercase());
+        let key = key.unwrap_or_else(|| panic!("twin {} is not registered", d.name));
+        out.insert(key, d);
+    }
+    out
 }
 
 pub(super) static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
@@ -181,11 +216,13 @@ pub(super) static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
             texts.insert(t.name.to_ascii_lowercase(), (i as VarId, k));
         }
     }
+    let twins = twins(&names, &defs);
     Registry {
         defs,
         names,
         params,
         texts,
+        twins,
     }
 });
 

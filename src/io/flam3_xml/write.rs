@@ -63,7 +63,7 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         "{ind}<flame name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
          supersample=\"{}\" filter=\"{}\" filter_shape=\"{}\" quality=\"{}\" background=\"{} {} {}\" brightness=\"{}\" \
          gamma=\"{}\" gamma_threshold=\"{}\" vibrancy=\"{}\" highlight_power=\"{}\" estimator_radius=\"{}\" \
-         estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\" new_linear=\"1\" ugnis_contrast=\"{}\"",
+         estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\"{} ugnis_contrast=\"{}\"",
         escape_attr(name),
         crate::VERSION,
         f.width,
@@ -89,8 +89,17 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         n(f.estimator_minimum),
         n(f.estimator_curve),
         f.palette_mode.name(),
+        // flam3's "linear is 2-D" switch; JWildfire reads it as its "preserve Z" instead.
+        if f.palette_index == PaletteIndex::JWildfire {
+            ""
+        } else {
+            " new_linear=\"1\""
+        },
         n(f.contrast),
     );
+    if f.preserve_z {
+        s.push_str(" preserve_z=\"1\"");
+    }
     if let Some(seed) = f.seed {
         let _ = write!(s, " ugnis_seed=\"{seed}\"");
     }
