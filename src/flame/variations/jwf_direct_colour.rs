@@ -31,6 +31,7 @@ macro_rules! dc_tail {
         ]
     };
 }
+pub(super) use dc_tail;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("julian2dc", julian2dc)
@@ -121,7 +122,7 @@ fn dc_luma(c: [i64; 3]) -> f64 {
 /// colour's luminance, scaled and offset, gives z (which replaces the running z when reset_z
 /// is 1). `tail` holds the five shared parameters, which come last (see `dc_tail!`).
 #[inline(always)]
-fn dc_common(
+pub(super) fn dc_common(
     v: &Prepared,
     tail: [f64; 5],
     t: &VarIn,
@@ -156,7 +157,7 @@ fn dc_common(
     [v.w * x, v.w * y, z]
 }
 
-const DC_FLAGS: u32 =
+pub(super) const DC_FLAGS: u32 =
     flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::WRITES_ACC;
 
 /// JWildfire's rounded 1/π in dc_mandala (kept: it is not the nearest double to 1/π).
