@@ -23,6 +23,10 @@ macro_rules! bs_params {
     };
 }
 
+/// Apophysis' 14-digit e, log_apo's default base.
+#[allow(clippy::approx_constant)]
+const APO_E: f64 = 2.71828182845905;
+
 /// Flags of the variations that pick the sign of their output at random.
 const RANDOM_SIGN: u32 = flag::JWILDFIRE | flag::RANDOM;
 
@@ -59,7 +63,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("sqrt_atanh", sqrt_atanh).flags(RANDOM_SIGN),
     VarDef::new("sqrt_acosech", sqrt_acosech).flags(RANDOM_SIGN),
     VarDef::new("log_apo", log_apo)
-        .params(&[p("log_apo_base", 2.71828182845905)])
+        .params(&[p("log_apo_base", APO_E)])
         .flags(flag::JWILDFIRE)
         .prepare(log_apo_prepare),
     VarDef::new("invpolar", invpolar).flags(flag::JWILDFIRE),

@@ -475,7 +475,13 @@ fn cut_btree(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, time, thickness, zoom, mode, invert] = v.params();
     let (x, y, _) = cut_point(mode, t, rng, -1.0, 2.0, 0.0);
     let (wx, wy) = (x * zoom, y * zoom);
-    let ty = wy / wy * fract(time);
+    // The shader's w/w: 1, or NaN at 0 (the cut then keeps nothing there).
+    let unit = if wy != 0.0 && wy.is_finite() {
+        1.0
+    } else {
+        f64::NAN
+    };
+    let ty = unit * fract(time);
     let ly = wy * wy * 5.0 - ty;
     let my = 2.0_f64.powf(ly.ceil()) * (ty + 1.0);
     let w2 = fract(my * wx) - 0.5;

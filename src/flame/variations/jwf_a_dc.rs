@@ -109,6 +109,10 @@ fn rot(x: f64, y: f64, a: f64) -> (f64, f64) {
     (c * x + s * y, -s * x + c * y)
 }
 
+/// The shader's 2π to 3 digits.
+#[allow(clippy::approx_constant)]
+const SHADER_TAU: f64 = 6.28;
+
 /// The stars' one-to-one hash.
 fn hash11(p: f64) -> f64 {
     let p = fract(p * 35.35);
@@ -152,7 +156,7 @@ fn starsfield_grey(x: f64, y: f64, time: f64, zdistance: f64, glow: f64) -> f64 
     let mut col = 0.0;
     let mut i = 0.0;
     while i < 1.0 {
-        (ux, uy) = rot(ux, uy, hash11(i) * 6.28);
+        (ux, uy) = rot(ux, uy, hash11(i) * SHADER_TAU);
         let t = fract(i - time);
         let s = smoothstep(0.0, 1.0, t);
         let f = smoothstep(0.0, 1.0, t) * smoothstep(1.0, 0.0, t);

@@ -12,6 +12,10 @@ use std::f64::consts::{PI, SQRT_2, TAU};
 
 use super::*;
 
+/// corners' default log base, e to 6 digits as JWildfire has it.
+#[allow(clippy::approx_constant)]
+const CORNERS_E: f64 = 2.71828;
+
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("bwraps7", bwraps7)
         .params(&[
@@ -55,7 +59,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("corners_y_power", 0.75),
             p("corners_xy_power_add", 0.0),
             p("corners_log_mode", 0.0),
-            p("corners_log_base", 2.71828),
+            p("corners_log_base", CORNERS_E),
         ])
         .flags(flag::JWILDFIRE),
     VarDef::new("disc3", disc3)
