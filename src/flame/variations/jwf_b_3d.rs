@@ -53,7 +53,10 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::JWILDFIRE | flag::USES_Z | flag::WRITES_Z),
     VarDef::new("ztwister", ztwister)
-        .params(&[p("ztwister_twist", 4.2), p("ztwister_base", std::f64::consts::E)])
+        .params(&[
+            p("ztwister_twist", 4.2),
+            p("ztwister_base", std::f64::consts::E),
+        ])
         .flags(flag::JWILDFIRE | flag::READS_ACC),
     VarDef::new("post_zscale_wf", post_zscale_wf)
         .params(&[p("post_zscale_wf_ztranslate", 0.0)])
@@ -257,11 +260,7 @@ fn ztwister(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         ez = base.powf(ez) - 1.0;
     }
     let (s, c) = ez.sin_cos();
-    [
-        v.w * (t.x * c - t.y * s),
-        v.w * (t.x * s + t.y * c),
-        0.0,
-    ]
+    [v.w * (t.x * c - t.y * s), v.w * (t.x * s + t.y * c), 0.0]
 }
 
 /// post_zscale_wf: the z summed so far, scaled by the weight and shifted.

@@ -172,7 +172,6 @@ const FOREIGN_VARIATIONS: &[&str] = &[
     "cross2",
     "mandelbrot",
     "oscope",
-    "pdj3d",
     "perspective2",
     "wedge_julia_3D",
     "whorl3D",

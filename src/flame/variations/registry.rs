@@ -9,8 +9,6 @@ use std::collections::HashMap;
 use std::sync::LazyLock;
 
 use super::VarId;
-// JWildfire variations, second part.
-use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 use super::def::{VarDef, flag};
 use super::{
     flam3, fr_3d, fr_bipolar_elliptic, fr_blurs, fr_complex, fr_crops, fr_curves, fr_direct_colour,
@@ -18,6 +16,8 @@ use super::{
     fr_polynomial_maps, fr_quaternions, fr_radial, fr_synth, fr_trig, fr_truchet, fr_waves, jwf_3d,
     jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_symmetry, jwf_text,
 };
+// JWildfire variations, second part.
+use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
