@@ -210,6 +210,10 @@ fn cylinder_apo(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
     [v.w * t.x.sin(), v.w * t.y, v.w * t.x.cos()]
 }
 
+/// JWildfire's rounded √2 in onion (two different roundings, kept).
+#[allow(clippy::approx_constant)]
+const ONION_SQRT2: [f64; 2] = [1.41421356, 1.414213569];
+
 /// onion: a sphere of radius |weight| about a centre: points inside drop to its lower half,
 /// points outside are folded back towards the centre and lifted; the weight is the radius,
 /// not a factor, and z adds the input z.
@@ -224,10 +228,10 @@ fn onion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     } else {
         let x1 = (2.0 * r0 - dr) * x0 / dr;
         let y1 = (2.0 * r0 - dr) * y0 / dr;
-        if 2.0 * r0 - dr > r0 / 1.41421356 {
+        if 2.0 * r0 - dr > r0 / ONION_SQRT2[0] {
             (x1, y1, (r0 * r0 - (x1 * x1 + y1 * y1)).sqrt())
         } else {
-            let z = (dr - r0 - (r0 - r0 / 1.414213569)).exp() - 1.0 + r0 / 1.414213569;
+            let z = (dr - r0 - (r0 - r0 / ONION_SQRT2[1])).exp() - 1.0 + r0 / ONION_SQRT2[1];
             (x1, y1, z)
         }
     };

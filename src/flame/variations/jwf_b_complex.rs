@@ -15,6 +15,10 @@ use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI, TAU};
 
 use super::*;
 
+/// JWildfire's default centre of inverted_julia (3.14, not π).
+#[allow(clippy::approx_constant)]
+const INV_JULIA_CENTER: f64 = 3.14;
+
 /// The four detuning factors x1, x2, y1, y2 of the `*2_bs` functions.
 macro_rules! bs_params {
     ($n:literal, $x1:expr, $x2:expr, $y1:expr, $y2:expr) => {
@@ -84,7 +88,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("inverted_julia_a2y_add", 0.0),
             p("inverted_julia_cos_mult", 0.0),
             p("inverted_julia_y_mult", 1.0),
-            p("inverted_julia_center", 3.14),
+            p("inverted_julia_center", INV_JULIA_CENTER),
             p("inverted_julia_x2y2_add", 0.0),
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM),

@@ -219,6 +219,10 @@ fn dc_portal(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     })
 }
 
+/// The shader's rounded π in glsl_hoshi (kept).
+#[allow(clippy::approx_constant)]
+const HOSHI_PI: f64 = 3.14159;
+
 /// glsl_hoshi: a star-like folding fractal (iterated fold, scale, translate and rotate), its
 /// colour a hue from the final angle. A pixel of a `Density Pixels`² grid is drawn at random;
 /// the palette index is the colour's luminance (`Gradient` 0) or red·green (1).
@@ -236,7 +240,7 @@ fn glsl_hoshi(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
         py = (py + 0.5).abs() - 0.5;
         px = px * scale - translate;
         py = py * scale - translate;
-        let a = 3.14159
+        let a = HOSHI_PI
             / (0.10
                 + (time * 0.0005 + k as f64 * 0.5000001).sin() * 0.4999
                 + 0.5
