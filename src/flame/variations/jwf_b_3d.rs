@@ -53,7 +53,10 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::JWILDFIRE | flag::USES_Z | flag::WRITES_Z),
     VarDef::new("ztwister", ztwister)
-        .params(&[p("ztwister_twist", 4.2), p("ztwister_base", std::f64::consts::E)])
+        .params(&[
+            p("ztwister_twist", 4.2),
+            p("ztwister_base", std::f64::consts::E),
+        ])
         .flags(flag::JWILDFIRE | flag::READS_ACC),
     VarDef::new("post_zscale_wf", post_zscale_wf)
         .params(&[p("post_zscale_wf_ztranslate", 0.0)])
@@ -207,6 +210,10 @@ fn cylinder_apo(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
     [v.w * t.x.sin(), v.w * t.y, v.w * t.x.cos()]
 }
 
+/// JWildfire's rounded √2 in onion (two different roundings, kept).
+#[allow(clippy::approx_constant)]
+const ONION_SQRT2: [f64; 2] = [1.41421356, 1.414213569];
+
 /// onion: a sphere of radius |weight| about a centre: points inside drop to its lower half,
 /// points outside are folded back towards the centre and lifted; the weight is the radius,
 /// not a factor, and z adds the input z.
@@ -221,10 +228,10 @@ fn onion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     } else {
         let x1 = (2.0 * r0 - dr) * x0 / dr;
         let y1 = (2.0 * r0 - dr) * y0 / dr;
-        if 2.0 * r0 - dr > r0 / 1.41421356 {
+        if 2.0 * r0 - dr > r0 / ONION_SQRT2[0] {
             (x1, y1, (r0 * r0 - (x1 * x1 + y1 * y1)).sqrt())
         } else {
-            let z = (dr - r0 - (r0 - r0 / 1.414213569)).exp() - 1.0 + r0 / 1.414213569;
+            let z = (dr - r0 - (r0 - r0 / ONION_SQRT2[1])).exp() - 1.0 + r0 / ONION_SQRT2[1];
             (x1, y1, z)
         }
     };
@@ -257,11 +264,7 @@ fn ztwister(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         ez = base.powf(ez) - 1.0;
     }
     let (s, c) = ez.sin_cos();
-    [
-        v.w * (t.x * c - t.y * s),
-        v.w * (t.x * s + t.y * c),
-        0.0,
-    ]
+    [v.w * (t.x * c - t.y * s), v.w * (t.x * s + t.y * c), 0.0]
 }
 
 /// post_zscale_wf: the z summed so far, scaled by the weight and shifted.

@@ -15,6 +15,10 @@ use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI, TAU};
 
 use super::*;
 
+/// JWildfire's default centre of inverted_julia (3.14, not π).
+#[allow(clippy::approx_constant)]
+const INV_JULIA_CENTER: f64 = 3.14;
+
 /// The four detuning factors x1, x2, y1, y2 of the `*2_bs` functions.
 macro_rules! bs_params {
     ($n:literal, $x1:expr, $x2:expr, $y1:expr, $y2:expr) => {
@@ -51,10 +55,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::JWILDFIRE),
     VarDef::new("atan", atan)
-        .params(&[
-            p_int("atan_Mode", 0.0, 0.0, 2.0),
-            p("atan_Stretch", 1.0),
-        ])
+        .params(&[p_int("atan_Mode", 0.0, 0.0, 2.0), p("atan_Stretch", 1.0)])
         .flags(flag::JWILDFIRE),
     VarDef::new("acoth", acoth).flags(flag::JWILDFIRE),
     VarDef::new("sqrt_acoth", sqrt_acoth).flags(flag::JWILDFIRE | flag::RANDOM),
@@ -87,7 +88,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("inverted_julia_a2y_add", 0.0),
             p("inverted_julia_cos_mult", 0.0),
             p("inverted_julia_y_mult", 1.0),
-            p("inverted_julia_center", 3.14),
+            p("inverted_julia_center", INV_JULIA_CENTER),
             p("inverted_julia_x2y2_add", 0.0),
         ])
         .flags(flag::JWILDFIRE | flag::RANDOM),
@@ -139,7 +140,6 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[p("bulge_N", 2.0)])
         .flags(flag::JWILDFIRE),
 ];
-
 
 /// DarkBeam's complex numbers as JWildfire computes them.
 #[derive(Clone, Copy, Debug)]
@@ -481,8 +481,7 @@ fn cpow3_prepare(v: &mut Prepared) {
     let ang = TAU / divisor;
     let c = r * (FRAC_PI_2 * a).cos() / divisor;
     let d = r * (FRAC_PI_2 * a).sin() / divisor;
-    v.p
-        .extend_from_slice(&[ang, c, d, c / 2.0, d / 2.0, 0.5 / spread, TAU * spread]);
+    v.p.extend_from_slice(&[ang, c, d, c / 2.0, d / 2.0, 0.5 / spread, TAU * spread]);
 }
 
 /// cpow3_wf: a complex power z^(c + i·d) on a random branch (discrete or not), with JWildfire's
@@ -511,7 +510,15 @@ fn cpow3_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// csc_squared: both coordinates scaled by (csc² + π·pi_mult)^csc_pow + csc_add, where
 /// csc = csc_div / cos(x/cos_div) / tan(x/tan_div).
 fn csc_squared(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let [csc_div, cos_div, tan_div, csc_pow, pi_mult, csc_add, scale_y] = v.params();
+    let [
+        csc_div,
+        cos_div,
+        tan_div,
+        csc_pow,
+        pi_mult,
+        csc_add,
+        scale_y,
+    ] = v.params();
     let csc = csc_div / (t.x / cos_div).cos() / (t.x / tan_div).tan();
     let fx = (csc * csc + PI * pi_mult).powf(csc_pow) + csc_add;
     [v.w * t.x * fx, v.w * t.y * fx * scale_y, 0.0]

@@ -148,3 +148,6 @@ fn crop_polygon(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V
     };
     crop(v, t, acc, d, invert)
 }
+
+#[cfg(test)]
+mod tests;

@@ -70,7 +70,22 @@ const P_ACRILIC: &[Param] = &{
 /// dc_acrilic: three passes of a sine/cosine flow of the point, each giving one channel as
 /// cos((sin(p5·x²) + sin(p6·y²))·factor).
 fn dc_acrilic(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [_, time, zoom, steps, p1, p2, p3, p4, p5, p6, fr, fg, fb, tail @ ..] = v.params::<18>();
+    let [
+        _,
+        time,
+        zoom,
+        steps,
+        p1,
+        p2,
+        p3,
+        p4,
+        p5,
+        p6,
+        fr,
+        fg,
+        fb,
+        tail @ ..,
+    ] = v.params::<18>();
     dc_common(v, tail, t, acc, rng, 0.5, |x, y| {
         let (mut px, mut py) = (zoom * x, zoom * y);
         let mut col = [0.0; 3];
@@ -78,12 +93,18 @@ fn dc_acrilic(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
             let jf = j as f64;
             for i in 1..(steps as i64) {
                 let i = i as f64;
-                px += 0.1 / (i + jf) * (i * p1 * py + time + ((time / (p2 * i)) * i + jf).cos()).sin();
-                py += 0.1 / (i + jf) * (i * p3 * px + time + ((time / (p4 * i)) * i + jf).sin()).cos();
+                px += 0.1 / (i + jf)
+                    * (i * p1 * py + time + ((time / (p2 * i)) * i + jf).cos()).sin();
+                py += 0.1 / (i + jf)
+                    * (i * p3 * px + time + ((time / (p4 * i)) * i + jf).sin()).cos();
             }
             *c = (p5 * px * px).sin() + (p6 * py * py).sin();
         }
-        [(col[0] * fr).cos(), (col[1] * fg).cos(), (col[2] * fb).cos()]
+        [
+            (col[0] * fr).cos(),
+            (col[1] * fg).cos(),
+            (col[2] * fb).cos(),
+        ]
     })
 }
 
@@ -198,6 +219,10 @@ fn dc_portal(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     })
 }
 
+/// The shader's rounded π in glsl_hoshi (kept).
+#[allow(clippy::approx_constant)]
+const HOSHI_PI: f64 = 3.14159;
+
 /// glsl_hoshi: a star-like folding fractal (iterated fold, scale, translate and rotate), its
 /// colour a hue from the final angle. A pixel of a `Density Pixels`² grid is drawn at random;
 /// the palette index is the colour's luminance (`Gradient` 0) or red·green (1).
@@ -205,10 +230,7 @@ fn glsl_hoshi(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     let [res, _, time, steps, scale, translate, gradient] = v.params();
     let i = (rng.f01() * res).trunc();
     let j = (rng.f01() * res).trunc();
-    let (mut px, mut py) = (
-        (2.0 * i / res - 1.0) * 0.182,
-        (2.0 * j / res - 1.0) * 0.182,
-    );
+    let (mut px, mut py) = ((2.0 * i / res - 1.0) * 0.182, (2.0 * j / res - 1.0) * 0.182);
     let x = py;
     px = (gmod(px, 4.0) - 2.0).abs();
     py = (gmod(py, 4.0) - 2.0).abs();
@@ -218,7 +240,7 @@ fn glsl_hoshi(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
         py = (py + 0.5).abs() - 0.5;
         px = px * scale - translate;
         py = py * scale - translate;
-        let a = 3.14159
+        let a = HOSHI_PI
             / (0.10
                 + (time * 0.0005 + k as f64 * 0.5000001).sin() * 0.4999
                 + 0.5

@@ -23,8 +23,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[p_int("woggle_js_m", 2.0, 2.0, 12.0)])
         .flags(flag::JWILDFIRE | flag::RANDOM),
     VarDef::new("crown_js", crown_js)
-        .params(&[p("crown_js_a", 5.0), p("crown_js_b", 0.630_929_753_571_457_4)])
-        .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC),
+        .params(&[
+            p("crown_js_a", 5.0),
+            p("crown_js_b", 0.630_929_753_571_457_4),
+        ])
+        .flags(
+            flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC,
+        ),
     VarDef::new("triangle", triangle)
         .params(&[
             p("triangle_x1", -0.2),
@@ -79,7 +84,11 @@ fn wallpaper_js(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3
     let [a, b, c] = v.params();
     if rng.f01() < 0.5 {
         // Java's Integer.signum((int) x).
-        let s = if t.x.trunc() == 0.0 { 0.0 } else { t.x.signum() };
+        let s = if t.x.trunc() == 0.0 {
+            0.0
+        } else {
+            t.x.signum()
+        };
         [t.y - s * (b * t.x - c).abs().sqrt(), a - t.x, 0.0]
     } else {
         acc.x = 0.0;
@@ -96,15 +105,9 @@ fn woggle_js(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let (bc, ac) = (TAU * c / m).sin_cos();
     let ra = 1.0 / (3f64.sqrt() * (t.x * t.x + t.y * t.y).sqrt());
     let (x, y) = if c as i64 % 2 == 0 {
-        (
-            -t.x / r + ra * t.y / r + ac,
-            -ra * t.x / r - t.y / r + bc,
-        )
+        (-t.x / r + ra * t.y / r + ac, -ra * t.x / r - t.y / r + bc)
     } else {
-        (
-            t.x / r + ra * t.y / r + ac,
-            -ra * t.x / r + t.y / r + bc,
-        )
+        (t.x / r + ra * t.y / r + ac, -ra * t.x / r + t.y / r + bc)
     };
     [x * v.w, y * v.w, 0.0]
 }

@@ -186,7 +186,11 @@ fn waves4_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
     let [dx, dy] = v.derived();
     let wave = |c: f64, use_cos: f64| {
         let (s, co) = c.sin_cos();
-        if use_cos == 1.0 { co * s * co } else { s * co * s }
+        if use_cos == 1.0 {
+            co * s * co
+        } else {
+            s * co * s
+        }
     };
     let x = (t.x + dx * scalex * wave(t.y * freqx, cos_x)) * dx;
     let y = (t.y + dy * scaley * wave(t.x * freqy, cos_y)) * dy;
@@ -361,8 +365,9 @@ fn hole2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         6 => (rhosq * (1.0 + (b * theta).sin()) + delta).sqrt(),
         7 => (rhosq + (0.5 * b * theta).sin().abs() + delta).sqrt(),
         8 => (rhosq + (PI * (b * theta).sin()).sin() + delta).sqrt(),
-        _ => (rhosq + ((b * theta).sin() + (2.0 * b * theta + FRAC_PI_2).sin()) / 2.0 + delta)
-            .sqrt(),
+        _ => {
+            (rhosq + ((b * theta).sin() + (2.0 * b * theta + FRAC_PI_2).sin()) / 2.0 + delta).sqrt()
+        }
     };
     let r1 = if inside != 0.0 { v.w / r1 } else { v.w * r1 };
     [r1 * theta.cos(), r1 * theta.sin(), 0.0]
@@ -476,7 +481,11 @@ fn vogel(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let i = (rng.f01() * n).trunc().min(n - 1.0) + 1.0;
     let a = i * (2.0 * PI / (PHI * PHI));
     let r = v.w * (t.sqrt + i.sqrt());
-    [r * (a.cos() + scale * t.x), r * (a.sin() + scale * t.y), 0.0]
+    [
+        r * (a.cos() + scale * t.x),
+        r * (a.sin() + scale * t.y),
+        0.0,
+    ]
 }
 
 /// fresnel: the point scaled by the fractional part of ring·(distance from a centre), Fresnel
@@ -532,7 +541,11 @@ fn glynnia3(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [rscale, dscale, rthresh, ythresh] = v.params();
     let vvar2 = v.w * 2f64.sqrt() / 2.0;
     let r = rscale * (t.x * t.x + t.y * t.y).sqrt();
-    let side = if r > rthresh && t.y > ythresh { 1.0 } else { -1.0 };
+    let side = if r > rthresh && t.y > ythresh {
+        1.0
+    } else {
+        -1.0
+    };
     if rng.f01() > 0.5 {
         let d = dscale * (r + t.x).sqrt();
         if d == 0.0 {

@@ -179,7 +179,6 @@ pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
 const FOREIGN_VARIATIONS: &[&str] = &[
     "cross2",
     "oscope",
-    "pdj3d",
     "perspective2",
     "wedge_julia_3D",
     "whorl3D",

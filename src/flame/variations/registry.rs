@@ -9,8 +9,6 @@ use std::collections::HashMap;
 use std::sync::LazyLock;
 
 use super::VarId;
-// JWildfire variations, second part.
-use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 use super::def::{Form, VarDef, flag};
 use super::names::lookup_in;
 use super::{
@@ -24,6 +22,8 @@ use super::{
     jwf_a_complex, jwf_a_crops, jwf_a_cuts, jwf_a_dc, jwf_a_fractals, jwf_a_ifs, jwf_a_plane,
     jwf_a_sdf3d, jwf_a_shapes, jwf_a_surfaces, jwf_a_warps,
 };
+// JWildfire variations, second part.
+use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
