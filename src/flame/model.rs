@@ -643,8 +643,8 @@ impl Flame {
         let (w, h) = (self.width as f64, self.height as f64);
         let area = if self.renders_as_jwildfire() {
             let os = self.supersample.max(1) as usize;
-            let border = crate::flame::jwf_render::JwfRaster::new(&self.jwf, self.filter, os)
-                .border as f64;
+            let border =
+                crate::flame::jwf_render::JwfRaster::new(&self.jwf, self.filter, os).border as f64;
             let os = os as f64;
             (os * w + 2.0 * border) * (os * h + 2.0 * border) / os
         } else {

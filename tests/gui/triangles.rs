@@ -219,17 +219,30 @@ fn a_loaded_flame_keeps_its_weights_when_a_triangle_is_reshaped() {
     // re-derive them.
     let mut h = open("sierpinski.flame");
     assert!(!h.state().flame.auto_weights(&h.state().options));
-    let w0: Vec<f64> = h.state().flame.doc().flame().xforms.iter().map(|x| x.weight).collect();
+    let w0: Vec<f64> = h
+        .state()
+        .flame
+        .doc()
+        .flame()
+        .xforms
+        .iter()
+        .map(|x| x.weight)
+        .collect();
     let tri = selected_coefs(h.state()).triangle();
     let st = &h.state().flame.editor;
     let from = st.screen_from_world(tri[1]);
     drag(&mut h, from, from + Vec2::new(40.0, 25.0));
     let f = h.state().flame.doc().flame();
-    assert_ne!(f.xforms[0].coefs, Affine::from_triangle(tri), "the triangle moved");
+    assert_ne!(
+        f.xforms[0].coefs,
+        Affine::from_triangle(tri),
+        "the triangle moved"
+    );
     let w1: Vec<f64> = f.xforms.iter().map(|x| x.weight).collect();
     assert_eq!(w1, w0, "the weights are the file's");
     // Ticking "from areas" asks for the rule: the weights follow the areas from then on.
-    h.get_by_role_and_label(Role::CheckBox, "from areas").click();
+    h.get_by_role_and_label(Role::CheckBox, "from areas")
+        .click();
     h.run_steps(2);
     let f = h.state().flame.doc().flame();
     assert_eq!(f.auto_weights, Some(true));

@@ -110,9 +110,12 @@ fn ifs_files_are_read_in_linear_time_up_to_their_limits() {
     )
     .unwrap_err();
     assert!(e.message.contains("more than 10000 entries"), "{e}");
-    let p = linear("ifs: rows of one entry", MAX_ROWS, |n| ifs_text(1, n), |t| {
-        parse(t, "rows.ifs")
-    });
+    let p = linear(
+        "ifs: rows of one entry",
+        MAX_ROWS,
+        |n| ifs_text(1, n),
+        |t| parse(t, "rows.ifs"),
+    );
     assert_eq!(p.value.entries[0].rows.len(), MAX_ROWS);
     let e = parse(&ifs_text(1, MAX_ROWS + 1), "rows.ifs").unwrap_err();
     assert!(e.message.contains("more than 1000 rows"), "{e}");
@@ -122,7 +125,10 @@ fn ifs_files_are_read_in_linear_time_up_to_their_limits() {
     std::fs::write(&f, ifs_text(MAX_ENTRIES, 3)).unwrap();
     let t = Instant::now();
     let (code, out, err) = ugnis(&["info", s(&f)]);
-    println!("ugnis info of 10,000 entries: {:.3} s", t.elapsed().as_secs_f64());
+    println!(
+        "ugnis info of 10,000 entries: {:.3} s",
+        t.elapsed().as_secs_f64()
+    );
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("10000 entries"), "{out}");
     assert!(t.elapsed() < Duration::from_secs(5));
@@ -137,7 +143,11 @@ fn every_other_reader_is_read_in_linear_time_at_its_limit() {
     // of one flame; one more of each is refused.
     let batch = |n: usize| {
         let flames: String = (0..n)
-            .map(|k| format!("<flame name=\"f{k}\" size=\"8 8\"><xform weight=\"1\" linear=\"1\"/></flame>\n"))
+            .map(|k| {
+                format!(
+                    "<flame name=\"f{k}\" size=\"8 8\"><xform weight=\"1\" linear=\"1\"/></flame>\n"
+                )
+            })
             .collect();
         format!("<flames>{flames}</flames>")
     };
@@ -174,10 +184,7 @@ fn every_other_reader_is_read_in_linear_time_at_its_limit() {
         let mut s = format!("GIMP Gradient\nName: big\n{n}\n");
         for k in 0..n {
             let (a, b) = (k as f64 / n as f64, (k + 1) as f64 / n as f64);
-            s.push_str(&format!(
-                "{a} {} {b} 0 0 0 1 1 1 1 1 0 0\n",
-                (a + b) / 2.0
-            ));
+            s.push_str(&format!("{a} {} {b} 0 0 0 1 1 1 1 1 0 0\n", (a + b) / 2.0));
         }
         s
     };

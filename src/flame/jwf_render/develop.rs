@@ -75,7 +75,11 @@ impl JwfRaster {
     }
 
     /// The bucket rows (of the whole grid) that output rows `out` read.
-    pub fn source_rows(&self, out: std::ops::Range<usize>, grid_rows: usize) -> std::ops::Range<usize> {
+    pub fn source_rows(
+        &self,
+        out: std::ops::Range<usize>,
+        grid_rows: usize,
+    ) -> std::ops::Range<usize> {
         if out.is_empty() {
             return 0..0;
         }
@@ -285,7 +289,11 @@ fn rgb_to_hsl(c: [f64; 3]) -> (f64, f64, f64) {
 /// Hue, saturation and luminosity (each clamped to 0..=1) to RGB, as JWildfire converts.
 fn hsl_to_rgb(h: f64, s: f64, l: f64) -> [f64; 3] {
     let (h, s, l) = (h.clamp(0.0, 1.0), s.clamp(0.0, 1.0), l.clamp(0.0, 1.0));
-    let v = if l <= 0.5 { l * (1.0 + s) } else { l + s - l * s };
+    let v = if l <= 0.5 {
+        l * (1.0 + s)
+    } else {
+        l + s - l * s
+    };
     if v <= 0.0 {
         return [0.0; 3];
     }
@@ -305,7 +313,14 @@ fn hsl_to_rgb(h: f64, s: f64, l: f64) -> [f64; 3] {
 }
 
 /// The background of pixel (x, y) of a `w`×`h` picture, whole numbers 0..=255.
-fn background(bg: &JwfBackground, single: [f64; 3], x: usize, y: usize, w: usize, h: usize) -> [f64; 3] {
+fn background(
+    bg: &JwfBackground,
+    single: [f64; 3],
+    x: usize,
+    y: usize,
+    w: usize,
+    h: usize,
+) -> [f64; 3] {
     let round = |v: f64| java_int(v * 255.0 + 0.5).clamp(0.0, 255.0);
     let lerp = |a: f64, b: f64, t: f64| a + (b - a) * t;
     let blerp = |c: [[f64; 3]; 4], tx: f64, ty: f64| {
@@ -323,12 +338,26 @@ fn background(bg: &JwfBackground, single: [f64; 3], x: usize, y: usize, w: usize
             blerp([ints(bg.ul), ints(bg.ur), ints(bg.ll), ints(bg.lr)], tx, ty)
         }
         JwfBackgroundKind::Gradient2x2C => {
-            let (ul, ur, ll, lr, cc) = (ints(bg.ul), ints(bg.ur), ints(bg.ll), ints(bg.lr), ints(bg.cc));
+            let (ul, ur, ll, lr, cc) = (
+                ints(bg.ul),
+                ints(bg.ur),
+                ints(bg.ll),
+                ints(bg.lr),
+                ints(bg.cc),
+            );
             let mid = |a: [f64; 3], b: [f64; 3]| [0, 1, 2].map(|k| lerp(a[k], b[k], 0.5));
             let (w2, h2) = ((w / 2) as f64 - 1.0, (h / 2) as f64 - 1.0);
             let (left, top) = (x as f64 <= w2, y as f64 <= h2);
-            let tx = if left { x as f64 / w2 } else { (x as f64 - w2) / w2 };
-            let ty = if top { y as f64 / h2 } else { (y as f64 - h2) / h2 };
+            let tx = if left {
+                x as f64 / w2
+            } else {
+                (x as f64 - w2) / w2
+            };
+            let ty = if top {
+                y as f64 / h2
+            } else {
+                (y as f64 - h2) / h2
+            };
             let corners = match (left, top) {
                 (true, true) => [ul, mid(ul, ur), mid(ll, ul), cc],
                 (true, false) => [mid(ul, ll), cc, ll, mid(ll, lr)],
@@ -376,7 +405,11 @@ pub(crate) fn develop(
                 let Some(b) = at(x0 + j as isize, y0 + i as isize) else {
                     continue;
                 };
-                let t = if f.is_empty() { 1.0 } else { f.taps[i * f.size + j] };
+                let t = if f.is_empty() {
+                    1.0
+                } else {
+                    f.taps[i * f.size + j]
+                };
                 if !density_only {
                     s[0] += t * b[0] as f64;
                     s[1] += t * b[1] as f64;

@@ -65,7 +65,8 @@ pub(super) fn attr(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, a: &Attr) -> R
         _ => return Ok(false),
     }
     st.names.push(a.name.to_string());
-    f.extra_attrs.push((a.name.to_string(), a.value.to_string()));
+    f.extra_attrs
+        .push((a.name.to_string(), a.value.to_string()));
     Ok(true)
 }
 
