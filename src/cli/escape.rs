@@ -5,7 +5,6 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use clap::Args;
 
-use ugnis::escape::fx::Fx;
 use ugnis::escape::{C, Coloring, EscapeRenderer, Family, Fill, Sampling, Warp};
 use ugnis::io::escape_view::{self, EscapeDoc, family_from_name, parse_complex, parse_poly};
 use ugnis::io::{self, FileKind};
@@ -37,8 +36,8 @@ pub struct EscapeArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub center: Option<String>,
     /// World width of the view (any exponent down to 1e-10000, e.g. 1e-1000)
-    #[arg(long, value_parser = parse_width_arg)]
-    pub width: Option<Fx>,
+    #[arg(long, allow_hyphen_values = true)]
+    pub width: Option<String>,
     /// Image size WxH
     #[arg(long, value_parser = super::parse_size)]
     pub size: Option<(u32, u32)>,
@@ -84,10 +83,6 @@ pub struct EscapeArgs {
     /// Output image (.png or .bmp)
     #[arg(short, long)]
     pub output: PathBuf,
-}
-
-fn parse_width_arg(s: &str) -> Result<Fx, String> {
-    escape_view::parse_width(s)
 }
 
 fn complex(s: &Option<String>, what: &str) -> Result<Option<C>> {
@@ -192,7 +187,8 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         })?;
         doc.view = doc.view.with_centre(c);
     }
-    if let Some(wd) = a.width {
+    if let Some(wd) = &a.width {
+        let wd = escape_view::parse_width(wd).map_err(|e| anyhow::anyhow!("--width: {e}"))?;
         doc.set_world_width_fx(wd);
     }
     if let Some(n) = a.max_iter {

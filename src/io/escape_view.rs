@@ -113,7 +113,7 @@ fn fmt_small(v: Fx) -> String {
 /// limit (`3`, `1e-1000`).
 pub fn parse_width(s: &str) -> Result<Fx, String> {
     let w = Fx::parse(s).ok_or_else(|| format!("width '{}' is not a number", s.trim()))?;
-    if !(w.m > 0.0) {
+    if w.m <= 0.0 || w.m.is_nan() {
         return Err(format!("width '{}' must be positive", s.trim()));
     }
     if w.log10() < crate::escape::render::DEEP_LIMIT_EXP10 {
