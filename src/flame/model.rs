@@ -523,6 +523,11 @@ pub struct Flame {
     /// Further final xforms, applied in order after `final_xform` (and only with it): JWildfire
     /// allows several `<finalxform>` and chains them. The editor shows the first only.
     pub more_finals: Vec<Xform>,
+    /// The settings of the layer the flame's xforms, final xforms and gradient make (JWildfire's
+    /// first `<layer>`; plain for other flames).
+    pub layer: crate::flame::layers::LayerSettings,
+    /// JWildfire's further layers, drawn into the same picture (none for other flames).
+    pub more_layers: Vec<crate::flame::layers::Layer>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
     pub solo_xform: Option<usize>,
     /// False when the flame came without a camera (e.g. from an IFS file) and must be framed
@@ -581,6 +586,8 @@ impl Default for Flame {
             xforms: Vec::new(),
             final_xform: None,
             more_finals: Vec::new(),
+            layer: crate::flame::layers::LayerSettings::default(),
+            more_layers: Vec::new(),
             solo_xform: None,
             has_camera: true,
             seed: None,
@@ -674,10 +681,19 @@ impl Flame {
         self.final_xform.iter().chain(more)
     }
 
+    /// Every xform and final xform of the flame, those of its further layers too.
+    fn every_xform(&self) -> impl Iterator<Item = &Xform> {
+        let layers = self
+            .more_layers
+            .iter()
+            .flat_map(|l| l.xforms.iter().chain(&l.finals));
+        self.xforms.iter().chain(self.finals()).chain(layers)
+    }
+
     /// Names of every variation that has nonzero weight somewhere (supported or not).
     pub fn variations_used(&self) -> Vec<String> {
         let mut out: Vec<String> = Vec::new();
-        for x in self.xforms.iter().chain(self.finals()) {
+        for x in self.every_xform() {
             for v in &x.vars {
                 let n = v.attr_name();
                 if !out.contains(&n) {
@@ -698,7 +714,7 @@ impl Flame {
     pub fn unsupported_variation_warnings(&self) -> Vec<String> {
         let mut seen: Vec<String> = Vec::new();
         let mut out = Vec::new();
-        for x in self.xforms.iter().chain(self.finals()) {
+        for x in self.every_xform() {
             for (n, w) in x.unsupported_vars() {
                 if w != 0.0 && !seen.contains(&n) {
                     out.push(format!(

@@ -96,13 +96,16 @@ impl JwfRaster {
     }
 }
 
-/// JWildfire's log scale of a bucket of `a` hits: (k1·log10(1 + a·k2) + glow/(a + 1))/(white·a).
+/// JWildfire's log scale of a bucket of `a` hits: (k1·log10(1 + x·k2) + glow/(x + 1))/(white·x)
+/// with x = a/m, m the number of flames its motion blur draws (1 without).
 #[derive(Clone, Copy, Debug)]
 struct LogScale {
     k1: f64,
     k2: f64,
     glow: f64,
     white: f64,
+    /// 1/m.
+    blur: f64,
 }
 
 impl LogScale {
@@ -112,17 +115,26 @@ impl LogScale {
         let ppu = flame.ppu();
         let area = flame.width as f64 * flame.height as f64 / (ppu * ppu);
         let k2 = 1.0 / (flame.contrast * area * density);
+        let blurred = flame.jwf.motion_blur_length;
+        // JWildfire turns the low-density brightness off for motion blur.
+        let ldb = if blurred > 0 {
+            0.0
+        } else {
+            flame.jwf.low_density_brightness
+        };
         LogScale {
             k1: flame.contrast * 2.0 * flame.brightness / os,
             k2,
-            glow: flame.jwf.low_density_brightness * k2 * area / os,
+            glow: ldb * k2 * area / os,
             white: flame.jwf.white_level,
+            blur: 1.0 / (blurred as f64 + 1.0),
         }
     }
 
     #[inline(always)]
     fn factor(&self, a: f64) -> f64 {
-        (self.k1 * (1.0 + a * self.k2).log10() + self.glow / (a + 1.0)) / (self.white * a)
+        let x = a * self.blur;
+        (self.k1 * (1.0 + x * self.k2).log10() + self.glow / (x + 1.0)) / (self.white * x)
     }
 }
 

@@ -96,6 +96,15 @@ pub struct JwfLook {
     pub bank: f64,
     /// Factor on the depth of field's blur (`cam_dof_scale`).
     pub dof_scale: f64,
+    /// The frame of JWildfire's motion curves the picture shows (`frame`, counted from 1).
+    pub frame: f64,
+    /// Further flames at earlier and later times drawn into the picture (`motion_blur_length`;
+    /// 0: none).
+    pub motion_blur_length: u32,
+    /// Frames between those flames (`motion_blur_timestep`).
+    pub motion_blur_timestep: f64,
+    /// How fast their colours fade with their distance in time (`motion_blur_decay`).
+    pub motion_blur_decay: f64,
 }
 
 impl Default for JwfLook {
@@ -112,6 +121,43 @@ impl Default for JwfLook {
             background: JwfBackground::default(),
             bank: 0.0,
             dof_scale: 1.0,
+            frame: 1.0,
+            motion_blur_length: 0,
+            motion_blur_timestep: 0.05,
+            motion_blur_decay: 0.03,
         }
+    }
+}
+
+impl crate::flame::model::Flame {
+    /// The flame as JWildfire shows it: for a flame JWildfire's renderer draws, its keyframes
+    /// (JWildfire's motion curves) played at the frame it shows ([`JwfLook::frame`]); any other
+    /// flame as it stands. (With motion blur the renderer plays them at each of its times.)
+    pub fn at_jwildfire_frame(&self) -> crate::flame::model::Flame {
+        let blurred = self.jwildfire_motion_blur().len() > 1;
+        if self.renders_as_jwildfire() && !self.keys.is_empty() && !blurred {
+            self.keys.apply(self, self.jwf.frame - 1.0)
+        } else {
+            self.clone()
+        }
+    }
+
+    /// JWildfire's motion blur: the times of the flames drawn for the frame shown (from 1),
+    /// with the factors on their colours. The frame itself comes first; without motion blur it
+    /// is the only one.
+    pub fn jwildfire_motion_blur(&self) -> Vec<(f64, f64)> {
+        let l = &self.jwf;
+        let n = l.motion_blur_length;
+        if !self.renders_as_jwildfire() || n == 0 {
+            return vec![(l.frame, 1.0)];
+        }
+        let half = n as f64 * l.motion_blur_timestep / 2.0;
+        let mut out = vec![(l.frame, 1.0)];
+        for p in 1..=n {
+            let p = p as f64;
+            let fade = 1.0 - p * p * l.motion_blur_decay * 0.07 / n as f64;
+            out.push((l.frame + half - p * l.motion_blur_timestep, fade.max(0.01)));
+        }
+        out
     }
 }

@@ -1,7 +1,7 @@
 //! JWildfire's picture settings on a `<flame>` (`white_level`, `low_density_brightness`,
 //! `balancing_red` …, `saturation`, `fg_opacity`, `antialias_amount`, `antialias_radius`,
 //! `filter_kernel`, `background_type` and the gradient background's colours, the camera's
-//! `cam_roll` and `cam_dof_scale`): read into
+//! `cam_roll` and `cam_dof_scale`, the `frame` shown and its motion blur): read into
 //! [`JwfLook`] for flames JWildfire wrote, kept verbatim for the others, and written back for
 //! flames JWildfire's renderer draws; and the colour types of a JWildfire file's xforms.
 
@@ -12,6 +12,9 @@ use crate::flame::jwf_render::{JwfBackgroundKind, JwfKernel, JwfLook};
 use crate::flame::model::Flame;
 use crate::io::diag::fmt_num;
 use crate::io::xml::Attr;
+
+/// Most flames JWildfire's motion blur may add.
+const MAX_MOTION_BLUR: i64 = 1000;
 
 /// The settings read so far, and the names they were read from.
 #[derive(Default)]
@@ -62,6 +65,20 @@ pub(super) fn attr(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, a: &Attr) -> R
         "background_cc" => l.background.cc = colour(cx)?,
         "cam_roll" => l.bank = cx.num(a)?,
         "cam_dof_scale" => l.dof_scale = cx.num(a)?,
+        "frame" => l.frame = cx.num(a)?,
+        "motion_blur_length" => {
+            let n = cx.int(a)?;
+            if !(0..=MAX_MOTION_BLUR).contains(&n) {
+                return Err(cx.err(
+                    a.offset,
+                    "XML013",
+                    format!("motion_blur_length {n} must be between 0 and {MAX_MOTION_BLUR}"),
+                ));
+            }
+            l.motion_blur_length = n as u32;
+        }
+        "motion_blur_timestep" => l.motion_blur_timestep = cx.num(a)?,
+        "motion_blur_decay" => l.motion_blur_decay = cx.num(a)?,
         _ => return Ok(false),
     }
     st.names.push(a.name.to_string());
@@ -111,7 +128,8 @@ pub(super) fn write(s: &mut String, f: &Flame) {
          balancing_green=\"{}\" balancing_blue=\"{}\" saturation=\"{}\" fg_opacity=\"{}\" \
          antialias_amount=\"{}\" antialias_radius=\"{}\" filter_kernel=\"{}\" \
          background_type=\"{}\" background_ul=\"{}\" background_ur=\"{}\" background_ll=\"{}\" \
-         background_lr=\"{}\" background_cc=\"{}\" cam_roll=\"{}\" cam_dof_scale=\"{}\"",
+         background_lr=\"{}\" background_cc=\"{}\" cam_roll=\"{}\" cam_dof_scale=\"{}\" frame=\"{}\" \
+         motion_blur_length=\"{}\" motion_blur_timestep=\"{}\" motion_blur_decay=\"{}\"",
         n(l.white_level),
         n(l.low_density_brightness),
         n(l.balance[0]),
@@ -130,6 +148,10 @@ pub(super) fn write(s: &mut String, f: &Flame) {
         rgb(b.cc),
         n(l.bank),
         n(l.dof_scale),
+        n(l.frame),
+        l.motion_blur_length,
+        n(l.motion_blur_timestep),
+        n(l.motion_blur_decay),
     );
 }
 

@@ -22,6 +22,7 @@ mod context;
 mod flame;
 mod jwf_curves;
 mod jwf_look;
+mod layers;
 mod palette;
 mod read;
 mod template;
