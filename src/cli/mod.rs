@@ -16,6 +16,7 @@ pub mod merge;
 pub mod random;
 pub mod render;
 pub mod scene;
+pub mod thumbnail;
 
 use std::io::{IsTerminal, Write};
 use std::path::Path;
