@@ -10,9 +10,11 @@ mod file_values;
 mod files;
 mod flame_tab;
 mod opening;
+mod preview;
 mod scene_tab;
 mod shell;
 mod triangles;
+mod windows;
 
 use std::path::{Path, PathBuf};
 

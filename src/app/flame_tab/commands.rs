@@ -372,6 +372,7 @@ impl FlameTab {
                 GradientAction::Edit => self.palette_editor.open = true,
             }
         }
+        self.history_window(ctx);
         self.loop_window(ctx);
         if self.sound_window(ctx) == Some(super::timeline::SoundAsk::Browse) {
             req = Some(FlameRequest::ChooseSoundFile);
