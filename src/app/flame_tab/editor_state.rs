@@ -10,6 +10,7 @@ use std::collections::HashMap;
 
 use eframe::egui::{Color32, Pos2, Rect, Vec2};
 
+use super::transform_tools::Amounts;
 use super::variations_panel::VarFind;
 use crate::flame::{Affine, Flame, Xform};
 
@@ -87,6 +88,8 @@ pub struct EditorState {
     pub section: Section,
     /// Weights of transforms switched off in the transform list, by (flame, transform).
     pub off_weights: HashMap<(usize, usize), f64>,
+    /// The amounts of the typed-amount tools (turn, scale, move).
+    pub amounts: Amounts,
 }
 
 /// The sections below the triangle canvas.
@@ -121,6 +124,7 @@ impl Default for EditorState {
             var_find: VarFind::default(),
             section: Section::default(),
             off_weights: HashMap::new(),
+            amounts: Amounts::default(),
         }
     }
 }

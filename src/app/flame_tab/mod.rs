@@ -10,6 +10,7 @@
 //! | `preview_window.rs` | the preview over the whole window or in a window of its own |
 //! | `editor_panel.rs` | the right panel: triangle editor and the sections below it |
 //! | `editor_state.rs`, `triangles.rs`, `editor_tools.rs` | the triangle editor |
+//! | `transform_tools.rs` | turn, scale and move by typed amounts (Apophysis' triangle buttons) |
 //! | `transform_list.rs`, `xform_panel.rs`, `variations_panel.rs`, `xaos.rs`, `settings.rs` | the sections |
 //! | `animation.rs` | rotating triangles and morphs between flames |
 //! | `timeline/` | the timeline under the preview: keys, curves, playback, loop tools |
@@ -41,6 +42,7 @@ pub(crate) mod settings;
 pub(crate) mod thumbnails;
 pub(crate) mod timeline;
 pub(crate) mod transform_list;
+pub(crate) mod transform_tools;
 pub(crate) mod triangles;
 pub(crate) mod variation_filter;
 pub(crate) mod variations_panel;
