@@ -133,9 +133,16 @@ impl UgnisApp {
             Action::ShowVariationFilter => {
                 self.flame.variation_filter.open = !self.flame.variation_filter.open
             }
-            Action::ShowGradient => self.flame.gradients.open = !self.flame.gradients.open,
+            // One window, two pages: the key shows its page, or closes the window showing it.
+            Action::ShowGradient => {
+                let (g, e) = (&mut self.flame.gradients, &mut self.flame.palette_editor);
+                g.open = !(g.open && !e.open);
+                e.open = false;
+            }
             Action::ShowPaletteEditor => {
-                self.flame.palette_editor.open = !self.flame.palette_editor.open
+                let (g, e) = (&mut self.flame.gradients, &mut self.flame.palette_editor);
+                e.open = !(g.open && e.open);
+                g.open = e.open;
             }
             Action::ShowMutations => self.flame.mutations.open = !self.flame.mutations.open,
             Action::RandomFlame => self.flame.random_flame(o),

@@ -9,6 +9,8 @@ mod export;
 mod file_values;
 mod files;
 mod flame_tab;
+mod gradient;
+mod left_panel;
 mod opening;
 mod preview;
 mod scene_tab;

@@ -121,6 +121,8 @@ pub struct FlameTab {
     pub preview_window: bool,
     /// The History window is open.
     pub history_open: bool,
+    /// The last random batch is unfolded in the left panel.
+    pub batch_shown: bool,
     /// Which variations new random flames get.
     pub variation_mode: VariationMode,
     /// Status lines and message boxes of the tab.
@@ -194,6 +196,7 @@ impl FlameTab {
             full_view: false,
             preview_window: false,
             history_open: false,
+            batch_shown: true,
             variation_mode: options.variation_mode(),
             notices: Notices::default(),
             gradients: GradientWindow::default(),
