@@ -6,7 +6,11 @@ mod common;
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-fn thumbnail(input: &std::path::Path, out: &std::path::Path, size: &str) -> (i32, String, Duration) {
+fn thumbnail(
+    input: &std::path::Path,
+    out: &std::path::Path,
+    size: &str,
+) -> (i32, String, Duration) {
     let t = Instant::now();
     let o = Command::new(env!("CARGO_BIN_EXE_ugnis"))
         .args(["thumbnail"])
@@ -62,7 +66,11 @@ fn anything_else_is_an_error_message_never_a_panic() {
     let empty = dir.join("empty.fla");
     std::fs::write(&empty, "").unwrap();
     let broken = dir.join("broken.flame");
-    std::fs::write(&broken, "<flames><flame size=\"-3 x\" quality=\"nan\"><xform").unwrap();
+    std::fs::write(
+        &broken,
+        "<flames><flame size=\"-3 x\" quality=\"nan\"><xform",
+    )
+    .unwrap();
     let huge = dir.join("huge.flame");
     std::fs::File::create(&huge)
         .unwrap()

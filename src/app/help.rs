@@ -109,9 +109,7 @@ pub fn show(ctx: &egui::Context, page: HelpPage) -> bool {
                 egui::ScrollArea::vertical()
                     .max_height(420.0)
                     .auto_shrink([false, true])
-                    .scroll_bar_visibility(
-                        egui::scroll_area::ScrollBarVisibility::AlwaysVisible,
-                    )
+                    .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
                     .show(ui, |ui| {
                         egui::Grid::new("shortcut-grid")
                             .striped(true)

@@ -126,7 +126,9 @@ fn flame_picture(path: &Path, size: u32) -> Result<DynamicImage> {
 
 /// The first gradients of a gradient file as horizontal bands.
 fn gradient_picture(path: &Path, size: u32) -> Result<DynamicImage> {
-    let gs = io::read_gradients(path).map_err(|e| anyhow::anyhow!("{e}"))?.value;
+    let gs = io::read_gradients(path)
+        .map_err(|e| anyhow::anyhow!("{e}"))?
+        .value;
     if gs.is_empty() {
         bail!("'{}' holds no gradient", path.display());
     }

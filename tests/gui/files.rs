@@ -182,7 +182,10 @@ fn a_folder_typed_into_the_chooser_is_kept_and_opened() {
     h.run_steps(2);
     let b = h.state().file_browser().unwrap();
     assert_eq!(b.dir, std::fs::canonicalize(&sub).unwrap());
-    assert!(h.query_by_label("tri.flame").is_some(), "the folder's file is listed");
+    assert!(
+        h.query_by_label("tri.flame").is_some(),
+        "the folder's file is listed"
+    );
     // A name that is no folder is told, and the text stays for correcting.
     let field = h.get_by_role_and_label(Role::TextInput, "Folder");
     field.focus();

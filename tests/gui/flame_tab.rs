@@ -356,7 +356,8 @@ fn every_flame_setting_has_a_control_including_the_3d_camera() {
     set_number(&mut h, "DE radius", 6.0);
     set_number(&mut h, "DE minimum", 0.5);
     set_number(&mut h, "DE curve", 0.6);
-    h.get_by_role_and_label(Role::ComboBox, "Filter shape").click();
+    h.get_by_role_and_label(Role::ComboBox, "Filter shape")
+        .click();
     h.run_steps(2);
     h.get_by_label("mitchell").click();
     h.run_steps(2);
@@ -364,7 +365,10 @@ fn every_flame_setting_has_a_control_including_the_3d_camera() {
     let c = f.cam;
     assert!((c.pitch - 30f64.to_radians()).abs() < 1e-12);
     assert!((c.yaw + 45f64.to_radians()).abs() < 1e-12);
-    assert_eq!((c.perspective, c.zpos, c.dof, c.blur_curve), (0.2, 0.5, 0.1, 0.3));
+    assert_eq!(
+        (c.perspective, c.zpos, c.dof, c.blur_curve),
+        (0.2, 0.5, 0.1, 0.3)
+    );
     assert_eq!(f.supersample, 2);
     assert_eq!(f.filter, 1.2);
     assert_eq!(f.filter_shape.name(), "mitchell");

@@ -65,10 +65,7 @@ fn rotate_follows_the_drag_shows_its_amount_and_is_one_step() {
     );
     // The amount is shown beside the slider.
     let slider = h.get_by_role_and_label(Role::Slider, "Rotate");
-    assert_eq!(
-        slider.accesskit_node().numeric_value(),
-        Some(shift as f64)
-    );
+    assert_eq!(slider.accesskit_node().numeric_value(), Some(shift as f64));
     h.drop_at(a + Vec2::new(r.width() * 0.2, 0.0));
     h.run_steps(3);
     assert_eq!(h.state().flame.doc().undo_len(), 1, "one undo step");
@@ -132,7 +129,8 @@ fn editing_a_256_colour_palette_as_keys_keeps_its_colours() {
     h.state_mut().flame.apply_gradient(g.clone());
     h.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::G);
     h.run_steps(3);
-    h.get_by_role_and_label(Role::Button, "Edit as keys").click();
+    h.get_by_role_and_label(Role::Button, "Edit as keys")
+        .click();
     h.run_steps(3);
     assert!(h.state().flame.palette_editor.keys.is_some());
     let now = &h.state().flame.doc().flame().palette;

@@ -34,7 +34,10 @@ fn the_left_panel_shows_a_files_flames_beside_a_batch_on_one_line_each() {
                 .is_some_and(|n| n.rect().bottom() < 800.0 && n.rect().height() < 30.0)
         })
         .count();
-    assert!(shown >= 9, "{shown} of 12 file flames in view, each on one line");
+    assert!(
+        shown >= 9,
+        "{shown} of 12 file flames in view, each on one line"
+    );
     // The batch folds away, and the file's list then has all the room.
     h.get_by_label("Last random batch (100)").click();
     h.run_steps(3);

@@ -114,7 +114,9 @@ fn a_still_preview_refines_until_clean_then_idles() {
     let ctx = h.ctx.clone();
     h.state_mut().flame.start_preview(&ctx);
     h.run_steps(2);
-    wait_until(&mut h, |a| a.flame.preview_progress().is_some_and(|(_, done)| done));
+    wait_until(&mut h, |a| {
+        a.flame.preview_progress().is_some_and(|(_, done)| done)
+    });
     h.run_steps(2);
     assert!(
         h.query_by_label_contains("preview clean").is_some(),

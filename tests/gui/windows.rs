@@ -45,7 +45,9 @@ fn the_history_lists_the_steps_and_goes_back_to_one() {
         .flame
         .doc_mut()
         .edit(|f| f.xforms[1].coefs.e += 0.1);
-    h.state_mut().flame.apply_gradient(ugnis::gradient::builtin_named("glacier").unwrap());
+    h.state_mut()
+        .flame
+        .apply_gradient(ugnis::gradient::builtin_named("glacier").unwrap());
     h.key_press_modifiers(Modifiers::COMMAND, Key::H);
     h.run_steps(3);
     for label in ["1. Tone", "2. Transform 2 triangle", "3. Gradient"] {
@@ -69,15 +71,25 @@ fn the_history_lists_the_steps_and_goes_back_to_one() {
 
 #[test]
 fn a_long_status_line_ends_at_the_window_and_opens_whole() {
-    let mut h = harness_sized(Start::File(crate::example("sierpinski.flame")), 800.0, 600.0);
-    let long = format!("warning: {}", "an attribute of another program, ".repeat(12));
+    let mut h = harness_sized(
+        Start::File(crate::example("sierpinski.flame")),
+        800.0,
+        600.0,
+    );
+    let long = format!(
+        "warning: {}",
+        "an attribute of another program, ".repeat(12)
+    );
     h.state_mut().flame.notices.status(long.clone());
     h.run_steps(2);
     let r = h.get_by_label(long.as_str()).rect();
     assert!(r.right() <= 800.0, "{r:?}");
     h.get_by_label(long.as_str()).click();
     h.run_steps(2);
-    assert!(h.query_by_label("Status").is_some(), "a message box with the whole line");
+    assert!(
+        h.query_by_label("Status").is_some(),
+        "a message box with the whole line"
+    );
     h.key_press(Key::Escape);
     h.run_steps(2);
     assert!(h.query_by_label("Status").is_none(), "Esc dismisses it");

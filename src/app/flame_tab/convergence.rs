@@ -49,12 +49,7 @@ fn rms_difference(a: &[u8], b: &[u8], background: [u8; 3]) -> Option<f64> {
 
 /// The noise of the whole picture from pictures of two independent parts of its samples
 /// (RGB8, same size) and their shares of the samples.
-pub fn noise_of_halves(
-    a: &[u8],
-    b: &[u8],
-    shares: [f64; 2],
-    background: [u8; 3],
-) -> Option<f64> {
+pub fn noise_of_halves(a: &[u8], b: &[u8], shares: [f64; 2], background: [u8; 3]) -> Option<f64> {
     let [s1, s2] = shares;
     if !(s1 > 0.0 && s2 > 0.0) {
         return None;
@@ -89,12 +84,7 @@ const BACKGROUND_SLACK: u8 = 1;
 /// The quality a clean picture needs: at least `least`; noise falls as 1/√samples, so noise
 /// `noise` measured at quality `measured_at` needs `measured_at·(noise/target)²`; at most
 /// `most`.
-pub fn quality_needed(
-    least: f64,
-    most: f64,
-    measured: Option<(f64, f64)>,
-    target: f64,
-) -> f64 {
+pub fn quality_needed(least: f64, most: f64, measured: Option<(f64, f64)>, target: f64) -> f64 {
     let by_noise = match measured {
         Some((q, n)) if n > target && target > 0.0 => q * (n / target).powi(2),
         _ => 0.0,
@@ -188,8 +178,14 @@ mod tests {
         // Clean already: the least quality decides.
         assert_eq!(quality_needed(100.0, 2000.0, Some((50.0, 0.5)), 1.0), 100.0);
         // Twice the target's noise: four times the samples.
-        assert_eq!(quality_needed(100.0, 2000.0, Some((200.0, 2.0)), 1.0), 800.0);
-        assert_eq!(quality_needed(100.0, 2000.0, Some((1000.0, 4.0)), 1.0), 2000.0);
+        assert_eq!(
+            quality_needed(100.0, 2000.0, Some((200.0, 2.0)), 1.0),
+            800.0
+        );
+        assert_eq!(
+            quality_needed(100.0, 2000.0, Some((1000.0, 4.0)), 1.0),
+            2000.0
+        );
         assert_eq!(quality_needed(100.0, 2000.0, None, 1.0), 100.0);
     }
 
@@ -241,15 +237,11 @@ mod tests {
         r.run(r.total_samples(), &never);
         let late = noise(&r);
         let ratio = late / early;
-        assert!((0.38..0.65).contains(&ratio), "{early:.2} → {late:.2}: {ratio:.2}");
-        let one = Renderer::new(
-            &f,
-            &RenderOptions {
-                threads: 1,
-                ..opts
-            },
-        )
-        .unwrap();
+        assert!(
+            (0.38..0.65).contains(&ratio),
+            "{early:.2} → {late:.2}: {ratio:.2}"
+        );
+        let one = Renderer::new(&f, &RenderOptions { threads: 1, ..opts }).unwrap();
         assert!(one.preview_halves(&never).is_none());
     }
 }

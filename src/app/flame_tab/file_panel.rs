@@ -30,17 +30,26 @@ impl FlameTab {
         let file = &self.file;
         let (name, n, dirty) = (file.name.clone(), file.flames.len(), file.dirty);
         ui.add(
-            egui::Label::new(egui::RichText::new(format!("{name}{}", if dirty { " *" } else { "" })).heading())
-                .truncate(),
+            egui::Label::new(
+                egui::RichText::new(format!("{name}{}", if dirty { " *" } else { "" })).heading(),
+            )
+            .truncate(),
         )
-        .on_hover_text(self.file.path.as_ref().map_or(name.clone(), |p| p.display().to_string()));
+        .on_hover_text(
+            self.file
+                .path
+                .as_ref()
+                .map_or(name.clone(), |p| p.display().to_string()),
+        );
         ui.label(format!("{n} flame(s)"));
         ui.separator();
         let mut select = None;
         let batch_len = self.batch.as_ref().map_or(0, |b| b.flames.len());
         let row_h = FILE_THUMB.y + ui.spacing().item_spacing.y;
         let list_height = if batch_len > 0 && self.batch_shown {
-            (n as f32 * row_h).min(ui.available_height() * 0.66).max(row_h)
+            (n as f32 * row_h)
+                .min(ui.available_height() * 0.66)
+                .max(row_h)
         } else {
             f32::INFINITY
         };

@@ -59,27 +59,42 @@ pub fn describe(before: &Flame, after: &Flame) -> String {
         });
     }
     let groups: [(&str, bool); 9] = [
-        ("Gradient", before.palette != after.palette || before.palette_mode != after.palette_mode),
+        (
+            "Gradient",
+            before.palette != after.palette || before.palette_mode != after.palette_mode,
+        ),
         (
             "Camera",
             (before.center, before.scale, before.zoom, before.rotate)
                 != (after.center, after.scale, after.zoom, after.rotate),
         ),
         ("3-D camera", before.cam != after.cam),
-        ("Size", (before.width, before.height) != (after.width, after.height)),
+        (
+            "Size",
+            (before.width, before.height) != (after.width, after.height),
+        ),
         ("Name", before.name != after.name),
         (
             "Tone",
-            (before.brightness, before.gamma, before.gamma_threshold, before.vibrancy)
-                != (after.brightness, after.gamma, after.gamma_threshold, after.vibrancy)
-                || (before.highlight_power, before.contrast, before.background)
-                    != (after.highlight_power, after.contrast, after.background),
+            (
+                before.brightness,
+                before.gamma,
+                before.gamma_threshold,
+                before.vibrancy,
+            ) != (
+                after.brightness,
+                after.gamma,
+                after.gamma_threshold,
+                after.vibrancy,
+            ) || (before.highlight_power, before.contrast, before.background)
+                != (after.highlight_power, after.contrast, after.background),
         ),
         (
             "Render settings",
             (before.quality, before.filter, before.estimator_radius)
                 != (after.quality, after.filter, after.estimator_radius)
-                || (before.supersample, before.filter_shape) != (after.supersample, after.filter_shape)
+                || (before.supersample, before.filter_shape)
+                    != (after.supersample, after.filter_shape)
                 || (before.estimator_minimum, before.estimator_curve)
                     != (after.estimator_minimum, after.estimator_curve),
         ),

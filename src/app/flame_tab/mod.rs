@@ -357,7 +357,7 @@ impl FlameTab {
         let mut dragging = false;
         if self.show_files {
             egui::Panel::left("files")
-                .default_size((width * 0.15).clamp(110.0, 190.0))
+                .default_size((width * 0.16).clamp(120.0, 190.0))
                 .min_size(90.0)
                 .max_size((width * 0.2).max(100.0))
                 .resizable(true)

@@ -509,9 +509,7 @@ impl State {
                 .rate
                 .map_or(u64::MAX, |r| (r * PASS_S) as u64)
                 .max(SUB_PASS_MIN);
-            a.target_samples = a
-                .target_samples
-                .saturating_add(a.target_samples.min(most));
+            a.target_samples = a.target_samples.saturating_add(a.target_samples.min(most));
         }
     }
 }

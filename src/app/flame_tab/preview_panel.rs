@@ -4,8 +4,8 @@
 use eframe::egui::{self, Vec2};
 
 use super::FlameTab;
-use super::preview_window::PreviewPlace;
 use super::preview::{PreviewEvent, PreviewJob, PreviewWorker};
+use super::preview_window::PreviewPlace;
 use crate::app::a11y::named;
 use crate::app::options::Options;
 use crate::flame::Flame;
@@ -215,7 +215,11 @@ impl FlameTab {
                 let room = ui.available_size().max(size);
                 let (area, _) = ui.allocate_exact_size(room, egui::Sense::hover());
                 let rect = egui::Rect::from_center_size(area.center(), size);
-                let r = ui.interact(rect, ui.scope_id().with("picture"), egui::Sense::click_and_drag());
+                let r = ui.interact(
+                    rect,
+                    ui.scope_id().with("picture"),
+                    egui::Sense::click_and_drag(),
+                );
                 match self.preview.as_ref().and_then(|p| p.texture.as_ref()) {
                     Some(t) => egui::Image::new((t.id(), size)).paint_at(ui, rect),
                     // Until the first picture arrives: its place, already movable.

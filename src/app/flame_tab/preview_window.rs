@@ -27,7 +27,12 @@ fn viewport_id() -> egui::ViewportId {
 impl FlameTab {
     /// The buttons on the picture (shown while the pointer is over it): full window and own
     /// window, or the way back.
-    pub(super) fn place_buttons(&mut self, ui: &mut egui::Ui, rect: egui::Rect, place: PreviewPlace) {
+    pub(super) fn place_buttons(
+        &mut self,
+        ui: &mut egui::Ui,
+        rect: egui::Rect,
+        place: PreviewPlace,
+    ) {
         let hovered = ui.rect_contains_pointer(rect);
         if !hovered && place == PreviewPlace::Panel {
             return;
@@ -46,7 +51,9 @@ impl FlameTab {
             PreviewPlace::Panel => {
                 if ui
                     .small_button("Own window")
-                    .on_hover_text("show the preview in a window of its own; the editor takes this room")
+                    .on_hover_text(
+                        "show the preview in a window of its own; the editor takes this room",
+                    )
                     .clicked()
                 {
                     self.preview_window = true;
@@ -90,7 +97,12 @@ impl FlameTab {
     }
 
     /// The preview's own window, while it is open; closing it brings the preview back.
-    pub(super) fn preview_viewport(&mut self, ctx: &egui::Context, options: &Options, dragging: bool) {
+    pub(super) fn preview_viewport(
+        &mut self,
+        ctx: &egui::Context,
+        options: &Options,
+        dragging: bool,
+    ) {
         if !self.preview_window {
             return;
         }
@@ -108,11 +120,9 @@ impl FlameTab {
                 });
                 return false;
             }
-            egui::CentralPanel::default()
-                .frame(frame)
-                .show(ui, |ui| {
-                    self.preview_panel(ui, options, dragging, PreviewPlace::OwnWindow)
-                });
+            egui::CentralPanel::default().frame(frame).show(ui, |ui| {
+                self.preview_panel(ui, options, dragging, PreviewPlace::OwnWindow)
+            });
             // Its own close button, or Esc in it, brings the preview back.
             ui.ctx()
                 .input(|i| i.viewport().close_requested() || i.key_pressed(egui::Key::Escape))

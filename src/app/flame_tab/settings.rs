@@ -45,7 +45,9 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
             .min_col_width(120.0)
             .show(ui, |ui| rows(ui));
     };
-    grid(ui, "flame-picture", &mut |ui| name_and_size_rows(ui, &mut f));
+    grid(ui, "flame-picture", &mut |ui| {
+        name_and_size_rows(ui, &mut f)
+    });
     ui.strong("Camera");
     grid(ui, "flame-camera", &mut |ui| camera_rows(ui, &mut f));
     egui::CollapsingHeader::new("3-D camera")
@@ -63,7 +65,9 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
     ui.strong("Palette");
     grid(ui, "flame-palette", &mut |ui| palette_rows(ui, &mut f));
     ui.strong("Motion blur");
-    grid(ui, "flame-motion-blur", &mut |ui| motion_blur_rows(ui, &mut f));
+    grid(ui, "flame-motion-blur", &mut |ui| {
+        motion_blur_rows(ui, &mut f)
+    });
     if f.estimator_radius < f.estimator_minimum {
         f.estimator_minimum = f.estimator_radius;
     }

@@ -136,7 +136,10 @@ fn icon_button(ui: &mut egui::Ui, glyph: Glyph, name: &str) -> egui::Response {
             let before = at(0.93);
             vec![
                 Shape::line(pts, stroke),
-                head(end + (end - before).normalized() * 2.0, (end - before).normalized()),
+                head(
+                    end + (end - before).normalized() * 2.0,
+                    (end - before).normalized(),
+                ),
             ]
         }
     };
@@ -303,7 +306,11 @@ mod tests {
         let v0 = [t0[0][0] - c0[0], t0[0][1] - c0[1]];
         let v1 = [t1[0][0] - c1[0], t1[0][1] - c1[1]];
         assert!((v1[0] - v0[1]).abs() < 1e-12 && (v1[1] + v0[0]).abs() < 1e-12);
-        assert_eq!(f.xforms[1], flame().xforms[1], "only the selected one turns");
+        assert_eq!(
+            f.xforms[1],
+            flame().xforms[1],
+            "only the selected one turns"
+        );
         apply(&mut f, &st, Tool::Rotate(-90.0), false);
         assert!(close(f.xforms[0].coefs.triangle(), t0));
     }
