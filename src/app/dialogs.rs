@@ -234,13 +234,9 @@ impl FileBrowser {
                     .add(egui::TextEdit::singleline(&mut self.folder).desired_width(f32::INFINITY))
                     .labelled_by(l.id)
                     .on_hover_text("type a folder and press Enter");
-                if r.lost_focus() {
-                    if ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-                        self.go_to_typed_folder();
-                    } else {
-                        // Left without Enter: the field shows the folder again.
-                        self.folder = self.dir.display().to_string();
-                    }
+                // The text stays as typed until Enter goes there (or a folder is chosen).
+                if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                    self.go_to_typed_folder();
                 }
             });
             egui::ScrollArea::vertical()
@@ -368,6 +364,9 @@ pub fn confirm_discard(ctx: &egui::Context, what: &str) -> Option<Confirm> {
         ui.label(format!(
             "The flames have unsaved changes. Save them before {what}?"
         ));
+        if ui.input(|i| i.key_pressed(egui::Key::Escape)) {
+            r = Some(Confirm::Cancel);
+        }
         ui.horizontal(|ui| {
             if ui.button("Save").clicked() {
                 r = Some(Confirm::Save);
@@ -390,7 +389,7 @@ pub fn message(ctx: &egui::Context, title: &str, text: &str) -> bool {
         ui.set_max_width(520.0);
         ui.heading(title);
         ui.label(text);
-        if ui.button("OK").clicked() {
+        if ui.button("OK").clicked() || ui.input(|i| i.key_pressed(egui::Key::Escape)) {
             done = true;
         }
     });

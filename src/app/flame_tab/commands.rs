@@ -363,15 +363,19 @@ impl FlameTab {
             self.editor.auto_zoom(&f);
             self.notices.status("Mutant chosen (Undo returns)");
         }
-        let current = self.doc().flame().palette.clone();
-        if let Some(a) = self.gradients.show(ctx, &current) {
+        let dragging = ctx.input(|i| i.pointer.any_down());
+        let doc = pick(self.showing, &mut self.batch, &mut self.file);
+        if let Some(a) = self
+            .gradients
+            .show(ctx, doc, &mut self.palette_editor, dragging)
+        {
             match a {
                 GradientAction::Apply(g) => self.apply_gradient(g),
                 GradientAction::Load => req = Some(FlameRequest::LoadGradient),
                 GradientAction::FromImage => req = Some(FlameRequest::GradientFromImage),
-                GradientAction::Edit => self.palette_editor.open = true,
             }
         }
+        self.history_window(ctx);
         self.loop_window(ctx);
         if self.sound_window(ctx) == Some(super::timeline::SoundAsk::Browse) {
             req = Some(FlameRequest::ChooseSoundFile);
@@ -379,9 +383,6 @@ impl FlameTab {
         if let Some(r) = self.anim_windows(ctx, options) {
             req = Some(r);
         }
-        let dragging = ctx.input(|i| i.pointer.any_down());
-        let doc = pick(self.showing, &mut self.batch, &mut self.file);
-        self.palette_editor.show(ctx, doc, dragging);
         req
     }
 }
