@@ -136,7 +136,7 @@ impl UgnisApp {
             // One window, two pages: the key shows its page, or closes the window showing it.
             Action::ShowGradient => {
                 let (g, e) = (&mut self.flame.gradients, &mut self.flame.palette_editor);
-                g.open = !(g.open && !e.open);
+                g.open = !g.open || e.open;
                 e.open = false;
             }
             Action::ShowPaletteEditor => {

@@ -61,7 +61,7 @@ pub fn run(a: ThumbnailArgs) -> Result<()> {
             MAX_INPUT_BYTES >> 20
         );
     }
-    super::check_output(&a.output)?;
+    super::check_outputs(&[&a.input], &[&a.output])?;
     // A bug must not crash a file manager's helper with a backtrace: it becomes the error.
     let (input, size) = (a.input.clone(), a.size);
     let img = std::panic::catch_unwind(move || picture(&input, size))

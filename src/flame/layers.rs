@@ -166,7 +166,11 @@ mod tests {
                 weight: 2.0,
                 ..LayerSettings::default()
             },
-            xforms: vec![Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0), 1.0, 0.0)],
+            xforms: vec![Xform::linear(
+                Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+                1.0,
+                0.0,
+            )],
             ..Layer::default()
         });
         f.more_layers.push(Layer {

@@ -203,7 +203,7 @@ impl ToneMap {
     /// Colour (0..=255, unrounded) and alpha (0..=1) of filtered colour `c` and density `i`
     /// over background `bg` (whole numbers 0..=255).
     fn pixel(&self, c: [f64; 3], i: f64, bg: [f64; 3]) -> ([f64; 3], f64) {
-        if !(i > 0.0) {
+        if i.is_nan() || i <= 0.0 {
             return if self.transparent {
                 ([0.0; 3], 0.0)
             } else {
@@ -383,6 +383,7 @@ fn background(
 
 /// Develop the output rows `out_rows` of a JWildfire flame's histogram (which holds bucket rows
 /// `geom.row0 .. geom.row0 + geom.bh` of the whole grid), or `None` when `stop` is set first.
+#[allow(clippy::too_many_arguments)] // the parts of one develop step; bundling them buys nothing
 pub(crate) fn develop(
     flame: &Flame,
     geom: &Geometry,

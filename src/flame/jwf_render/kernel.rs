@@ -272,7 +272,7 @@ impl JwfFilter {
         let support = kernel.support();
         let fw = (2.0 * os as f64 * support * radius) as usize;
         let mut size = fw + 1;
-        if size % 2 == 0 {
+        if size.is_multiple_of(2) {
             size += 1;
         }
         let adjust = if fw > 0 {
