@@ -237,10 +237,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("flatten", "x, y differ; runs as regular, JWildfire as post"),
     ("flora", "not implemented"),
     ("flower", "x, y differ at the origin"),
-    (
-        "flower_db",
-        "JWildfire's parameter 'stem_thickness' is missing",
-    ),
     ("foci_3D", "x, y, z differ at the origin"),
     ("fract_dragon_wf", "not implemented"),
     ("fract_formula_julia_wf", "not implemented"),

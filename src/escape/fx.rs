@@ -162,6 +162,15 @@ impl Fx {
     /// a finite number. The mantissa's first 17 significant digits count.
     pub fn parse(s: &str) -> Option<Fx> {
         let s = s.trim();
+        // Within f64's normal range the standard parser is exact (correctly rounded).
+        if let Ok(f) = s.parse::<f64>()
+            && f.is_finite()
+            && f.abs() >= f64::MIN_POSITIVE
+            && s.bytes()
+                .all(|c| c.is_ascii_digit() || b"+-.eE".contains(&c))
+        {
+            return Some(Fx::from_f64(f));
+        }
         let (mant, exp) = match s.find(['e', 'E']) {
             Some(k) => (&s[..k], s[k + 1..].parse::<i64>().ok()?),
             None => (s, 0),
