@@ -288,6 +288,7 @@ fn convert_between_formats() {
 #[test]
 fn random_writes_a_reproducible_batch_with_thumbnails() {
     let dir = common::temp_dir("cli-random");
+    let _cleanup = common::Cleanup(dir.clone());
     let out = dir.join("batch.fla");
     let thumbs = dir.join("thumbs");
     let args = |o: &std::path::Path| -> Vec<String> {
@@ -386,6 +387,7 @@ fn random_writes_a_reproducible_batch_with_thumbnails() {
 #[test]
 fn animate_writes_rotation_and_interpolation_frames() {
     let dir = common::temp_dir("cli-animate");
+    let _cleanup = common::Cleanup(dir.clone());
     let ex = common::example("sierpinski.flame");
     let rot = dir.join("rot");
     let (code, _, err) = ugnis(&[
@@ -459,6 +461,7 @@ fn animate_writes_rotation_and_interpolation_frames() {
 #[test]
 fn escape_renders_kinds_views_and_rejects_bad_input() {
     let dir = common::temp_dir("cli-escape");
+    let _cleanup = common::Cleanup(dir.clone());
     let png = dir.join("m.png");
     let view = dir.join("m.esc");
     let (code, _, err) = ugnis(&[
@@ -614,6 +617,7 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
 #[test]
 fn scene_renders_files_and_reports_bad_ones() {
     let dir = common::temp_dir("cli-scene");
+    let _cleanup = common::Cleanup(dir.clone());
     let out = dir.join("jug.png");
     let ex = common::example("teapot.toml");
     let (code, _, err) = ugnis(&[
@@ -692,6 +696,7 @@ fn random_draws_only_from_the_variations_list() {
 #[test]
 fn scene_ray_casts_new_kinds_and_refuses_what_does_not_fit() {
     let dir = common::temp_dir("cli-scene-raycast");
+    let _cleanup = common::Cleanup(dir.clone());
     let out = dir.join("menger.png");
     let ex = common::example("menger.toml");
     let (code, stdout, err) = ugnis(&[

@@ -58,6 +58,7 @@ fn turn_of(a: &ugnis::flame::model::Affine) -> f64 {
 #[test]
 fn a_sound_turns_an_xform_and_its_curve_is_saved() {
     let dir = common::temp_dir("cli-sound");
+    let _cleanup = common::Cleanup(dir.clone());
     let wav = dir.join("bass.wav");
     swelling_bass(&wav);
     let (frames, keys) = (dir.join("frames"), dir.join("keys.flame"));
@@ -109,6 +110,7 @@ fn the_sound_goes_into_the_video() {
         return;
     }
     let dir = common::temp_dir("cli-sound-video");
+    let _cleanup = common::Cleanup(dir.clone());
     let wav = dir.join("bass.wav");
     swelling_bass(&wav);
     let mp4 = dir.join("movie.mp4");
@@ -140,6 +142,7 @@ fn the_sound_goes_into_the_video() {
 #[test]
 fn bad_sound_options_are_refused_clearly() {
     let dir = common::temp_dir("cli-sound-bad");
+    let _cleanup = common::Cleanup(dir.clone());
     let wav = dir.join("bass.wav");
     swelling_bass(&wav);
     let junk = dir.join("junk.mp3");

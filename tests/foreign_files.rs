@@ -203,6 +203,7 @@ fn flam3_templates_are_described_and_applied() {
     assert_eq!(f.palette_mode.name(), "linear");
     // The command line: the template's size (a small one here) and quality.
     let dir = common::temp_dir("foreign-template");
+    let _cleanup = common::Cleanup(dir.clone());
     let small = dir.join("small.flam3");
     std::fs::write(&small, "<flame size=\"40 30\" quality=\"2\"/>").unwrap();
     let ex = common::example("sierpinski.flame");

@@ -29,6 +29,7 @@ fn thumbnail(
 #[test]
 fn every_registered_kind_gets_a_picture_of_the_asked_size() {
     let dir = common::temp_dir("thumbnail-kinds");
+    let _cleanup = common::Cleanup(dir.clone());
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     // (file, its thumbnail's size when known: at the file's aspect)
     for (file, size) in [
@@ -60,6 +61,7 @@ fn every_registered_kind_gets_a_picture_of_the_asked_size() {
 #[test]
 fn anything_else_is_an_error_message_never_a_panic() {
     let dir = common::temp_dir("thumbnail-bad");
+    let _cleanup = common::Cleanup(dir.clone());
     let out = dir.join("t.png");
     let garbage = dir.join("garbage.flame");
     std::fs::write(&garbage, [0u8, 159, 146, 150, 255, 0, 60, 102, 108]).unwrap();

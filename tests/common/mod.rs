@@ -63,6 +63,18 @@ pub fn load_rgb(p: &Path) -> image::RgbImage {
 }
 
 /// A fresh temporary directory for one test.
+/// Removes a test's temporary directory when the test ends well (a failed test leaves it,
+/// to be looked at).
+pub struct Cleanup(pub PathBuf);
+
+impl Drop for Cleanup {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+}
+
 pub fn temp_dir(tag: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("ugnis-test-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
