@@ -151,7 +151,8 @@ pub fn run(doc: &EscapeDoc, z: &ZoomVideo) -> Result<()> {
     }
     let end = doc.world_width_fx();
     let halvings = (Fx::from_f64(z.start_width).log2() - end.log2()).ceil();
-    if !(halvings >= 1.0) {
+    // NaN (a width that is not a number) is refused too.
+    if halvings.is_nan() || halvings < 1.0 {
         bail!(
             "the view's width {end:.3} is not narrower than the start width {}; give a \
              deeper --width or a wider --zoom-from",
