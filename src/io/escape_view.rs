@@ -96,16 +96,16 @@ pub fn format_center(doc: &EscapeDoc) -> String {
     }
 }
 
-/// Shortest round-trip form, with an exponent for tiny values (deep-zoom widths), and 17
-/// significant digits below f64's range.
+/// Shortest round-trip form, and for deep-zoom widths (below 1e-4) an exponent with 14
+/// significant digits.
 fn fmt_small(v: Fx) -> String {
     let f = v.to_f64();
-    if f != 0.0 && f.abs() < 1e-4 && f.abs() > 1e-300 {
-        format!("{f:e}")
-    } else if f.abs() > 1e-300 || v.is_zero() {
+    if f.abs() >= 1e-4 || v.is_zero() {
         format!("{f}")
     } else {
-        format!("{v:.17}")
+        // Fourteen significant digits: what survives the width's trip through the half-height
+        // (and the extended number's arithmetic) unchanged.
+        format!("{v:.14}")
     }
 }
 
