@@ -1,4 +1,5 @@
-//! `ugnis escape`: render an escape-time fractal (or a saved view) to PNG or BMP.
+//! `ugnis escape`: render an escape-time fractal (or a saved view) to PNG or BMP, or its
+//! iteration data to OpenEXR.
 
 use std::path::PathBuf;
 
@@ -80,9 +81,25 @@ pub struct EscapeArgs {
     /// Also save the view as a .esc file
     #[arg(long)]
     pub save_view: Option<PathBuf>,
-    /// Output image (.png or .bmp)
-    #[arg(short, long)]
-    pub output: PathBuf,
+    /// Output image (.png or .bmp), or iteration data (.exr: channels N, NF, DEX, DEY as
+    /// Kalles Fraktaler and zoomasm read them)
+    #[arg(short, long, required_unless_present = "zoom_video")]
+    pub output: Option<PathBuf>,
+    /// Make a zoom video (.mp4, .webm, .mkv, .mov, .gif or .apng) from --zoom-from into the view
+    #[arg(long)]
+    pub zoom_video: Option<PathBuf>,
+    /// Frames of the zoom video
+    #[arg(long, default_value_t = 250)]
+    pub frames: u32,
+    /// Frames per second of the zoom video
+    #[arg(long, default_value_t = 25.0, value_parser = super::finite)]
+    pub fps: f64,
+    /// Width the zoom video starts from
+    #[arg(long, default_value_t = 4.0, value_parser = super::finite)]
+    pub zoom_from: f64,
+    /// Folder of the zoom video's keyframes, kept to resume (default: VIDEO.keyframes)
+    #[arg(long)]
+    pub keyframes: Option<PathBuf>,
 }
 
 fn complex(s: &Option<String>, what: &str) -> Result<Option<C>> {
@@ -233,11 +250,32 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
     Ok(doc)
 }
 
+/// A zoom video of the view.
+fn run_zoom_video(a: &EscapeArgs, video: &std::path::Path) -> Result<()> {
+    let doc = doc_from_args(a)?;
+    let z = super::zoom_video::ZoomVideo {
+        out: video.to_path_buf(),
+        frames: a.frames,
+        fps: a.fps,
+        keyframes: a.keyframes.clone(),
+        start_width: a.zoom_from,
+    };
+    super::check_outputs(&[], &[video])?;
+    super::pool(a.threads)?.install(|| super::zoom_video::run(&doc, &z))
+}
+
 pub fn run(a: EscapeArgs) -> Result<()> {
-    let out = a.output.clone();
+    if let Some(v) = a.zoom_video.clone() {
+        if a.output.is_some() {
+            bail!("give either -o or --zoom-video");
+        }
+        return run_zoom_video(&a, &v);
+    }
+    let out = a.output.clone().context("give -o OUTPUT")?;
     let is_bmp = io::kind_of(&out) == FileKind::Bmp;
-    if !is_bmp && io::kind_of(&out) != FileKind::Png {
-        bail!("output '{}' must end in .png or .bmp", out.display());
+    let is_exr = is_exr(&out);
+    if !is_bmp && !is_exr && io::kind_of(&out) != FileKind::Png {
+        bail!("output '{}' must end in .png, .bmp or .exr", out.display());
     }
     let gradient_file = a
         .gradient
@@ -259,6 +297,9 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     escape_view::parse(&view_text, "the view", None)
         .map_err(|e| anyhow::anyhow!("the view cannot be saved as given: {}", e.message))?;
     let pool = super::pool(a.threads)?;
+    if is_exr {
+        return pool.install(|| write_exr(&doc, &out, a.save_view.as_deref()));
+    }
     let img = pool.install(|| -> Result<image::RgbImage> {
         let mut r = EscapeRenderer::new(&doc.params, doc.view.clone(), doc.width, doc.height)?;
         let pb = super::progress_bar(
@@ -287,6 +328,42 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     }
     if let Some(v) = &a.save_view {
         escape_view::save(v, &doc).with_context(|| format!("cannot write '{}'", v.display()))?;
+    }
+    Ok(held.commit()?)
+}
+
+fn is_exr(p: &std::path::Path) -> bool {
+    p.extension()
+        .is_some_and(|e| e.to_string_lossy().eq_ignore_ascii_case("exr"))
+}
+
+/// Render the samples of `doc` with distance estimates and write its iteration data.
+fn write_exr(doc: &EscapeDoc, out: &std::path::Path, view: Option<&std::path::Path>) -> Result<()> {
+    let mut params = doc.params.clone();
+    // Distance colouring computes the estimates (and the smooth counts all colourings have).
+    params.coloring = Coloring::Distance;
+    let mut r = EscapeRenderer::new(&params, doc.view.clone(), doc.width, doc.height)?;
+    let pb = super::progress_bar(
+        doc.width as u64 * doc.height as u64,
+        &format!("rendering {}", doc.params.family.name()),
+    );
+    let done = r.run_exact(super::no_cancel(), &|n| pb.inc(n));
+    pb.finish_and_clear();
+    if !done {
+        return Err(super::stopped_early());
+    }
+    // Deep views estimate distances in pixels already, the others in world units.
+    let de_scale = if ugnis::escape::is_deep(&params.family, &doc.view, doc.height) {
+        1.0
+    } else {
+        1.0 / doc.view.pixel_size(doc.height)
+    };
+    let data = io::exr::IterationData::from_samples(r.samples(), doc.width, doc.height, de_scale);
+    let held = io::atomic::hold();
+    data.save(out)
+        .with_context(|| format!("cannot write '{}'", out.display()))?;
+    if let Some(v) = view {
+        escape_view::save(v, doc).with_context(|| format!("cannot write '{}'", v.display()))?;
     }
     Ok(held.commit()?)
 }

@@ -29,6 +29,7 @@ pub mod render;
 pub mod scene;
 pub mod signals;
 pub mod thumbnail;
+pub mod zoom_video;
 
 use std::io::{IsTerminal, Write};
 use std::path::Path;

@@ -55,7 +55,9 @@ pub struct Reference {
 /// Progress of a reference orbit (iterations done) and a request to stop it.
 #[derive(Default)]
 pub struct OrbitProgress {
+    /// Iterations of the orbit computed so far.
     pub done: AtomicU64,
+    /// Set to stop the orbit (it then returns None).
     pub cancel: AtomicBool,
 }
 

@@ -1,6 +1,6 @@
 //! Deep zoom against the truth: every pixel of small grids iterated directly in big fixed
 //! point at the same pixel centres, at depths where the differences are f64 (1e-40, 1e-100)
-//! and where they must be extended (1e-330).
+//! and where they must be extended (1e-330, 1e-1000).
 
 use super::*;
 use crate::escape::family::Family;
@@ -96,11 +96,16 @@ fn deep_view(x: &str, y: &str, half: &str) -> View {
 }
 
 #[test]
-fn mandelbrot_agrees_with_exact_iteration_at_three_depths() {
+fn mandelbrot_agrees_with_exact_iteration_at_four_depths() {
     // Near the Misiurewicz point i (its structure repeats at every depth), offset so that
     // the reference is an ordinary boundary point; 1e-330 needs extended differences.
     let s = settings(6000, false);
-    for (half, min_counts) in [("1e-40", 10), ("1e-100", 10), ("1e-330", 10)] {
+    for (half, min_counts) in [
+        ("1e-40", 10),
+        ("1e-100", 10),
+        ("1e-330", 10),
+        ("1e-1000", 10),
+    ] {
         let view = deep_view("0", "1", half);
         let (frac, distinct) = agreement(&Family::Mandelbrot { power: 2 }, &view, 16, 12, &s);
         assert!(distinct >= min_counts, "{half}: {distinct} counts");

@@ -162,15 +162,6 @@ impl Fx {
     /// a finite number. The mantissa's first 17 significant digits count.
     pub fn parse(s: &str) -> Option<Fx> {
         let s = s.trim();
-        // Within f64's normal range the standard parser is exact (correctly rounded).
-        if let Ok(f) = s.parse::<f64>()
-            && f.is_finite()
-            && f.abs() >= f64::MIN_POSITIVE
-            && s.bytes()
-                .all(|c| c.is_ascii_digit() || b"+-.eE".contains(&c))
-        {
-            return Some(Fx::from_f64(f));
-        }
         let (mant, exp) = match s.find(['e', 'E']) {
             Some(k) => (&s[..k], s[k + 1..].parse::<i64>().ok()?),
             None => (s, 0),
@@ -203,6 +194,13 @@ impl Fx {
         if m == 0.0 {
             return Some(Fx::ZERO);
         }
+        // Within f64's normal range the standard parser rounds correctly.
+        if let Ok(v) = s.parse::<f64>()
+            && v.is_finite()
+            && v.abs() >= f64::MIN_POSITIVE
+        {
+            return Some(Fx::from_f64(v));
+        }
         // value = m · 10^(int_sig − lead_zeros_frac − kept + exp)
         let dexp = exp.checked_add(int_sig - lead_zeros_frac - kept)?;
         if dexp.abs() > 400_000_000 {
@@ -211,8 +209,14 @@ impl Fx {
         Some(Fx::from_f64(sign * m).mul(Fx::pow10(dexp)))
     }
 
-    /// 10^k for any k (relative error a few ulps).
+    /// 10^k for any k: from the exact integer 10^|k| (within an ulp) to the deep-zoom
+    /// limit and beyond up to 10^±30000, by repeated squaring past that.
     pub fn pow10(k: i64) -> Fx {
+        let n = k.unsigned_abs();
+        if n <= 30_000 {
+            let p = super::centre::ibig_to_fx(&dashu_int::IBig::from(10u8).pow(n as usize));
+            return if k < 0 { Fx::from_f64(1.0).div(p) } else { p };
+        }
         let mut result = Fx::from_f64(1.0);
         let mut base = Fx::from_f64(if k < 0 { 0.1 } else { 10.0 });
         let mut n = k.unsigned_abs();
@@ -234,14 +238,27 @@ impl std::fmt::Display for Fx {
         if self.m == 0.0 {
             return write!(f, "0");
         }
-        let l = self.log10();
-        let mut k = l.floor();
-        let mut mant = 10f64.powf(l - k) * self.m.signum();
-        if mant.abs() >= 9.999995 {
+        // The decimal exponent from the logarithm, the mantissa by dividing by 10^k (a few
+        // ulps, where 10^(log10 − k) would lose the logarithm's digits at large exponents).
+        let mut k = self.log10().floor();
+        // Powers of ten above 1 are exact up to 1e22 (0.1 is not): multiply by 10^-k below 1.
+        let mut mant = if k < 0.0 {
+            self.mul(Fx::pow10(-k as i64)).to_f64()
+        } else {
+            self.div(Fx::pow10(k as i64)).to_f64()
+        };
+        if mant.abs() >= 10.0 {
+            mant /= 10.0;
+            k += 1.0;
+        } else if mant.abs() < 1.0 {
+            mant *= 10.0;
+            k -= 1.0;
+        }
+        let p = f.precision().unwrap_or(6).saturating_sub(1);
+        if format!("{:.p$}", mant.abs()).starts_with("10") {
             mant /= 10.0;
             k += 1.0;
         }
-        let p = f.precision().unwrap_or(6).saturating_sub(1);
         let text = format!("{mant:.p$}");
         let text = if text.contains('.') {
             text.trim_end_matches('0').trim_end_matches('.')

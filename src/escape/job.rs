@@ -33,6 +33,7 @@ impl Job {
         view: View,
         w: u32,
         h: u32,
+        progress: &deep::OrbitProgress,
     ) -> Result<Job, EscapeError> {
         check_params(params)?;
         if !matches!(params.family, Family::WarpedJulia(_)) {
@@ -67,9 +68,8 @@ impl Job {
             want_de: params.coloring == Coloring::Distance,
         };
         let reference = if deep {
-            let progress = deep::OrbitProgress::default();
             Some(
-                Job::reference(params, &view, w, h, &settings, &progress).ok_or_else(|| {
+                Job::reference(params, &view, w, h, &settings, progress).ok_or_else(|| {
                     EscapeError::Settings("the reference orbit was cancelled".into())
                 })?,
             )

@@ -28,8 +28,9 @@ pub use color::{Coloring, Palette};
 pub use complex::C;
 pub use doc::EscapeDoc;
 pub use family::{Family, Sample};
+pub use params::supports_deep_zoom;
 pub use render::{
-    EscapeError, EscapeParams, EscapeRenderer, Fill, View, check_memory, check_view_for,
-    estimate_memory, render,
+    EscapeError, EscapeParams, EscapeRenderer, Fill, OrbitProgress, View, auto_max_iter,
+    check_memory, check_view_for, estimate_memory, is_deep, render,
 };
 pub use warp::{Preset, Sampling, Warp};

@@ -169,6 +169,17 @@ pub fn check_memory(
     Ok(need)
 }
 
+/// An iteration limit for a view of half-height `half`: 256 for the whole set, growing with
+/// the decimal digits of the magnification d as 256 + 40·d^1.2 (about 2,000 at 1e-25,
+/// 10,000 at 1e-100, 160,000 at 1e-1000), the way deep-zoom programs raise it with the depth.
+pub fn auto_max_iter(half: super::fx::Fx) -> u32 {
+    let d = -half.log10();
+    if !(d > 0.0) {
+        return 256;
+    }
+    (256.0 + 40.0 * d.min(10_000.0).powf(1.2)).min(10_000_000.0) as u32
+}
+
 /// Check a view against the f64 precision limit.
 pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
     if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
@@ -254,6 +265,18 @@ pub(super) fn check_params(p: &EscapeParams) -> Result<(), EscapeError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn automatic_iterations_grow_with_the_depth() {
+        use super::super::fx::Fx;
+        assert_eq!(auto_max_iter(Fx::from_f64(1.5)), 256);
+        let at = |e: &str| auto_max_iter(Fx::parse(e).unwrap());
+        let (a, b, c) = (at("1e-25"), at("1e-100"), at("1e-1000"));
+        assert!(a > 1000 && a < 5000, "{a}");
+        assert!(b > a && b < 20_000, "{b}");
+        assert!(c > b && c <= 200_000, "{c}");
+        assert!(at("1e-10000") <= 10_000_000);
+    }
 
     #[test]
     fn view_maps_pixels_both_ways_with_y_up() {

@@ -12,8 +12,9 @@ use super::family::Sample;
 use super::guess::mariani_silver;
 use super::job::Job;
 
+pub use super::deep::OrbitProgress;
 pub use super::params::{
-    DEEP_LIMIT_EXP10, EscapeError, EscapeParams, Fill, check_memory, check_view_for,
+    DEEP_LIMIT_EXP10, EscapeError, EscapeParams, Fill, auto_max_iter, check_memory, check_view_for,
     estimate_memory, is_deep,
 };
 pub use super::view::View;
@@ -34,7 +35,19 @@ impl EscapeRenderer {
     /// Check the view, the settings and the memory and prepare a render of `w`×`h` pixels (nothing
     /// computed yet).
     pub fn new(params: &EscapeParams, view: View, w: u32, h: u32) -> Result<Self, EscapeError> {
-        let job = Job::new(params, view, w, h)?;
+        Self::with_progress(params, view, w, h, &OrbitProgress::default())
+    }
+
+    /// As [`EscapeRenderer::new`], reporting the reference orbit of a deep view in `progress`
+    /// (iterations done) and stopping it when `progress.cancel` is set (then an error says so).
+    pub fn with_progress(
+        params: &EscapeParams,
+        view: View,
+        w: u32,
+        h: u32,
+        progress: &OrbitProgress,
+    ) -> Result<Self, EscapeError> {
+        let job = Job::new(params, view, w, h, progress)?;
         Ok(EscapeRenderer {
             samples: vec![Sample::default(); w as usize * h as usize],
             job,

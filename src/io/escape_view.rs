@@ -96,42 +96,16 @@ pub fn format_center(doc: &EscapeDoc) -> String {
     }
 }
 
-/// The view's width as written: the fewest significant digits that read back as the same
-/// view (the width is kept as a half-height, so its own shortest form may carry the rounding
-/// of the aspect ratio: 7.999999999999998e-21 where 8e-21 gives the same view).
-fn width_text(doc: &EscapeDoc) -> String {
-    let width = doc.world_width_fx();
-    let f = width.to_f64();
-    // The width rounded to p + 1 significant digits.
-    let rounded = |p: usize| {
-        if f.abs() >= f64::MIN_POSITIVE && f.is_finite() {
-            format!("{f:.p$e}").parse().ok().map(Fx::from_f64)
-        } else {
-            Fx::parse(&format!("{width:.p$}"))
-        }
-    };
-    let same = |w: &Fx| {
-        let mut d = doc.clone();
-        d.set_world_width_fx(*w);
-        d.view.half_height_fx() == doc.view.half_height_fx()
-    };
-    (0..16)
-        .filter_map(rounded)
-        .find(same)
-        .map_or_else(|| fmt_small(width), fmt_small)
-}
-
-/// Shortest round-trip form, with an exponent for tiny values (deep-zoom widths), and 12
-/// significant digits below f64's range (what the decimal conversion of an extended exponent
-/// keeps exactly; plenty for a width, whose centre is kept to every digit apart).
+/// Shortest round-trip form, and for deep-zoom widths (below 1e-4) an exponent with 14
+/// significant digits.
 fn fmt_small(v: Fx) -> String {
     let f = v.to_f64();
-    if f != 0.0 && f.abs() < 1e-4 && f.abs() > 1e-300 {
-        format!("{f:e}")
-    } else if f.abs() > 1e-300 || v.is_zero() {
+    if f.abs() >= 1e-4 || v.is_zero() {
         format!("{f}")
     } else {
-        format!("{v:.12}")
+        // Fourteen significant digits: what survives the width's trip through the half-height
+        // (and the extended number's arithmetic) unchanged.
+        format!("{v:.14}")
     }
 }
 
@@ -238,7 +212,7 @@ pub fn write(doc: &EscapeDoc) -> String {
         "center = {}\nwidth = {}\nsize = {}x{}\nmax_iter = {}\ncoloring = {}\ngradient = {}\n\
          offset = {}\nrepeat = {}\ninside = {} {} {}\nperiodicity = {}\nfill = {}",
         format_center(doc),
-        width_text(doc),
+        fmt_small(doc.world_width_fx()),
         doc.width,
         doc.height,
         p.max_iter,

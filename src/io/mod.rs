@@ -8,6 +8,7 @@ pub mod bmp;
 pub mod diag;
 pub(crate) mod error;
 pub mod escape_view;
+pub mod exr;
 pub mod flam3_xml;
 mod fractint_text;
 pub mod ggr;

@@ -181,3 +181,80 @@ fn escape_tab_rectangle_zoom_and_pan() {
     h.run_steps(2);
     assert_eq!(h.state().escape.doc.view.center(), v0.center());
 }
+
+#[test]
+fn escape_tab_wheel_zooms_past_1e30_with_a_picture_and_automatic_iterations() {
+    let mut h = escape_tab();
+    // Centre the view on the Misiurewicz point c = i: its neighbourhood has filaments at
+    // every scale, so every depth shows a picture.
+    {
+        let e = &mut h.state_mut().escape;
+        let c = ugnis::io::escape_view::parse_center("0,1").unwrap();
+        e.doc.view = e.doc.view.with_centre(c);
+        e.doc.view.set_half_height(0.5);
+        e.render = true;
+    }
+    h.run_steps(2);
+    let start_iter = h.state().escape.doc.params.max_iter;
+    // The pointer exactly over the view's centre: wheel zooming keeps the world point under
+    // it, so the view stays centred on i.
+    let rect = h.state().escape.canvas_rect.expect("the canvas was drawn");
+    let ppp = h.ctx.pixels_per_point();
+    let w = h.state().escape.doc.width as f32;
+    let ht = h.state().escape.doc.height as f32;
+    let p = rect.min + Vec2::new((w / 2.0 - 0.5) / ppp, (ht / 2.0 - 0.5) / ppp);
+    h.hover_at(p);
+    h.run_steps(2);
+    let mut steps = 0;
+    while h.state().escape.doc.world_width_fx().log10() > -30.5 {
+        h.event(egui::Event::MouseWheel {
+            unit: egui::MouseWheelUnit::Point,
+            delta: Vec2::new(0.0, 400.0),
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Wheel,
+            modifiers: Modifiers::NONE,
+        });
+        h.run_steps(2);
+        steps += 1;
+        assert!(steps < 2000, "the wheel stopped zooming");
+    }
+    let e = &h.state().escape;
+    let depth = e.doc.world_width_fx().log10();
+    assert!(depth < -30.0 && depth > -40.0, "width 1e{depth}");
+    assert!(e.depth_text().starts_with("width ") && e.depth_text().contains("e-3"));
+    assert!(
+        e.status_text().contains(&e.depth_text()),
+        "{}",
+        e.status_text()
+    );
+    // The view is still centred on i to the digits the depth needs.
+    let [x, y] = e.doc.view.centre_text();
+    assert!(
+        x.trim_start_matches('-')
+            .trim_start_matches(['0', '.'])
+            .is_empty(),
+        "{x}"
+    );
+    let frac = y.strip_prefix('1').unwrap_or("x").trim_start_matches('.');
+    assert!(frac.chars().all(|c| c == '0'), "{y}");
+    // The iteration limit followed the depth.
+    let auto = e.doc.params.max_iter;
+    assert!(auto > start_iter && auto > 2000, "{start_iter} → {auto}");
+    // The picture arrives and shows more than one colour.
+    let t = std::time::Instant::now();
+    while !h.state().escape.picture_shows_something() {
+        assert!(t.elapsed().as_secs() < 120, "no picture at 1e{depth}");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+        h.run_steps(1);
+    }
+    // Stop ends the render; the view stays.
+    h.state_mut().escape.stop();
+    h.run_steps(2);
+    assert!(!h.state().escape.busy());
+    // Setting the iterations by hand turns the automatic choice off.
+    let e = &mut h.state_mut().escape;
+    e.auto_iter = false;
+    e.doc.params.max_iter = 777;
+    h.run_steps(2);
+    assert_eq!(h.state().escape.doc.params.max_iter, 777);
+}

@@ -19,6 +19,7 @@ impl EscapeTab {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         let (rect, resp, ppp, size) = crate::app::widgets::canvas_area(ui);
+        self.canvas_rect = Some(rect);
         let warped = matches!(self.doc.params.family, Family::WarpedJulia(_));
         let render_size = self.fit_to_panel(size, warped);
         // Interaction (not for textures).
@@ -99,8 +100,9 @@ impl EscapeTab {
             )
         {
             let d = (now - origin) * ppp;
-            let px = self.doc.view.pixel_size(self.doc.height);
-            self.doc.view = v0.shifted(-d.x as f64 * px, d.y as f64 * px);
+            // The pixel size at any depth (f64 would be 0 past 1e-308).
+            let px = self.doc.view.pixel_size_fx(self.doc.height);
+            self.doc.view = v0.shifted_fx(px.scale(-d.x as f64), px.scale(d.y as f64));
         }
         if resp.drag_stopped_by(egui::PointerButton::Primary) {
             self.pan_start = None;

@@ -19,6 +19,7 @@ impl EscapeTab {
             .num_columns(2)
             .show(ui, |ui| {
                 self.family_params(ui, &mut doc.params.family);
+                self.iteration_row(ui, &mut doc);
                 colour_params(ui, &mut doc);
             });
         if doc != self.doc {
@@ -39,6 +40,66 @@ impl EscapeTab {
             ui.label("Click: open the Julia set of the point (preview below)");
         }
         req
+    }
+
+    /// The iteration limit (automatic from the depth unless set), the depth, and while a
+    /// deep view computes its reference orbit, its progress and Stop.
+    fn iteration_row(&mut self, ui: &mut egui::Ui, doc: &mut escape_view::EscapeDoc) {
+        let l = ui.label("Max iterations");
+        ui.horizontal(|ui| {
+            let r = ui
+                .add(
+                    egui::DragValue::new(&mut doc.params.max_iter)
+                        .range(1..=10_000_000)
+                        .clamp_existing_to_range(false)
+                        .speed(10.0),
+                )
+                .labelled_by(l.id)
+                .on_hover_text("iterations before a point counts as inside (more: finer edges)");
+            if r.changed() {
+                self.auto_iter = false;
+            }
+            let deep = crate::escape::supports_deep_zoom(&doc.params.family);
+            let c = ui
+                .add_enabled(deep, egui::Checkbox::new(&mut self.auto_iter, "auto"))
+                .on_hover_text("choose the iterations from the depth of the zoom");
+            if c.changed() && self.auto_iter {
+                doc.params.max_iter = crate::escape::auto_max_iter(doc.view.half_height_fx());
+            }
+        });
+        ui.end_row();
+        ui.label("Depth");
+        ui.label(self.depth_text())
+            .on_hover_text("the view's width in the plane; wheel or right-drag to zoom deeper");
+        ui.end_row();
+        let busy = self.busy();
+        let progress = self.orbit_progress();
+        if busy || progress.is_some() {
+            ui.label("Rendering");
+            ui.horizontal(|ui| {
+                if let Some((done, of)) = progress {
+                    ui.add(
+                        egui::ProgressBar::new((done as f64 / of.max(1) as f64) as f32)
+                            .desired_width(120.0)
+                            .text(format!("reference orbit {done}")),
+                    );
+                } else if let Some(d) = &self.main {
+                    ui.add(
+                        egui::ProgressBar::new(d.fraction as f32)
+                            .desired_width(120.0)
+                            .show_percentage(),
+                    );
+                }
+                if ui
+                    .button("Stop")
+                    .on_hover_text("stop computing this view")
+                    .clicked()
+                {
+                    self.stop();
+                }
+            });
+            ui.end_row();
+        }
     }
 
     /// Back, Forward and Reset view.
@@ -252,16 +313,6 @@ fn complex_row(ui: &mut egui::Ui, label: &str, c: &mut C) {
 /// The rows every family shares: iterations, colouring, gradient, offset, repeat and block
 /// guessing.
 fn colour_params(ui: &mut egui::Ui, doc: &mut escape_view::EscapeDoc) {
-    let l = ui.label("Max iterations");
-    ui.add(
-        egui::DragValue::new(&mut doc.params.max_iter)
-            .range(1..=1_000_000)
-            .clamp_existing_to_range(false)
-            .speed(10.0),
-    )
-    .labelled_by(l.id)
-    .on_hover_text("iterations before a point counts as inside (more: finer edges)");
-    ui.end_row();
     ui.label("Colouring");
     let r = egui::ComboBox::from_id_salt("escape-coloring")
         .selected_text(doc.params.coloring.name())

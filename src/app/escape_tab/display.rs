@@ -1,12 +1,15 @@
 //! The escape-time renderer in the background: each job renders progressively (coarse to
-//! fine) and every pass is sent as a frame; the newest view wins.
+//! fine) and every pass is sent as a frame; the newest view wins. A deep view first computes
+//! its reference orbit, whose progress the tab shows and which Stop ends.
 
+use std::sync::Arc;
+use std::sync::atomic::Ordering;
 use std::time::Instant;
 
 use eframe::egui::{self, Color32};
 
 use crate::app::worker::{JobContext, Worker};
-use crate::escape::{EscapeParams, EscapeRenderer, View};
+use crate::escape::{EscapeParams, EscapeRenderer, OrbitProgress, View};
 
 /// A render request.
 pub struct Job {
@@ -15,6 +18,7 @@ pub struct Job {
     w: u32,
     h: u32,
     generation: u64,
+    orbit: Arc<OrbitProgress>,
 }
 
 /// A frame from the worker.
@@ -33,7 +37,8 @@ fn color_image(img: &image::RgbImage) -> egui::ColorImage {
 /// Render one job pass by pass until it is done or a newer job waits.
 fn render(job: Job, cx: &JobContext<EscapeFrame>) {
     let t = Instant::now();
-    let mut r = match EscapeRenderer::new(&job.params, job.view, job.w, job.h) {
+    let mut r = match EscapeRenderer::with_progress(&job.params, job.view, job.w, job.h, &job.orbit)
+    {
         Ok(r) => r,
         Err(e) => {
             cx.send(EscapeFrame {
@@ -72,6 +77,12 @@ pub struct Display {
     pub fraction: f64,
     pub elapsed_ms: f64,
     pub error: Option<String>,
+    /// The reference orbit of the newest job (iterations done; its cancel flag stops it).
+    orbit: Arc<OrbitProgress>,
+    /// The newest frame, kept to tell whether the picture shows anything.
+    pub last_image: Option<egui::ColorImage>,
+    /// Stop was pressed for the newest job.
+    stopped: bool,
 }
 
 impl Display {
@@ -87,19 +98,51 @@ impl Display {
             fraction: 0.0,
             elapsed_ms: 0.0,
             error: None,
+            orbit: Arc::default(),
+            last_image: None,
+            stopped: false,
         }
+    }
+
+    /// Whether the newest job is still running (no final frame yet).
+    pub fn busy(&self) -> bool {
+        self.submitted.is_some()
+            && !self.stopped
+            && self.error.is_none()
+            && (self.shown != self.generation || self.fraction < 1.0)
+    }
+
+    /// While a deep view computes its reference orbit: the iterations done and the limit.
+    pub fn orbit_progress(&self) -> Option<(u64, u64)> {
+        let (params, _, _) = self.submitted.as_ref()?;
+        let done = self.orbit.done.load(Ordering::Relaxed);
+        (self.shown != self.generation && self.error.is_none() && !self.stopped && done > 0)
+            .then_some((done, params.max_iter as u64))
+    }
+
+    /// Stop the running job (the reference orbit or the passes); the picture keeps what it
+    /// has, and the same view is not started again until it changes.
+    pub fn stop(&mut self) {
+        self.orbit.cancel.store(true, Ordering::Relaxed);
+        self.worker.cancel();
+        self.stopped = true;
     }
 
     pub fn request(&mut self, params: &EscapeParams, view: View, size: [u32; 2]) {
         let key = (params.clone(), view.clone(), size);
         if self.submitted.as_ref() != Some(&key) {
             self.generation += 1;
+            // The previous reference orbit is no longer wanted.
+            self.orbit.cancel.store(true, Ordering::Relaxed);
+            self.orbit = Arc::default();
+            self.stopped = false;
             self.worker.submit(Job {
                 params: params.clone(),
                 view,
                 w: size[0],
                 h: size[1],
                 generation: self.generation,
+                orbit: self.orbit.clone(),
             });
             self.submitted = Some(key);
         }
@@ -112,6 +155,7 @@ impl Display {
             }
             self.error = f.error;
             if self.error.is_none() {
+                self.last_image = Some(f.image.clone());
                 match &mut self.texture {
                     Some(t) => t.set(f.image, egui::TextureOptions::NEAREST),
                     None => {

@@ -51,6 +51,10 @@ pub struct EscapeTab {
     pub render: bool,
     /// A parameter drag is in progress (one history step for all of it).
     editing: bool,
+    /// Max iterations follow the depth (until the user sets them).
+    pub auto_iter: bool,
+    /// Where the picture was drawn last (screen points).
+    pub canvas_rect: Option<egui::Rect>,
 }
 
 impl Default for EscapeTab {
@@ -73,6 +77,8 @@ impl Default for EscapeTab {
             repaint: repaint_of(None),
             render: true,
             editing: false,
+            auto_iter: true,
+            canvas_rect: None,
         }
     }
 }
@@ -188,6 +194,8 @@ impl EscapeTab {
 
     pub fn load(&mut self, doc: EscapeDoc, path: Option<PathBuf>) {
         self.push_history();
+        // A view file's iteration limit was chosen for it.
+        self.auto_iter = false;
         self.doc = doc;
         self.path = path;
     }
@@ -284,10 +292,52 @@ impl EscapeTab {
         d
     }
 
+    /// With automatic iterations, the limit the view's depth asks for (the families that
+    /// zoom deep; the others keep theirs).
+    pub fn apply_auto_iter(&mut self) {
+        if self.auto_iter && crate::escape::supports_deep_zoom(&self.doc.params.family) {
+            self.doc.params.max_iter = crate::escape::auto_max_iter(self.doc.view.half_height_fx());
+        }
+    }
+
+    /// The view's width as the depth a user reads ("width 3.2e-412").
+    pub fn depth_text(&self) -> String {
+        format!("width {:.2}", self.doc.world_width_fx())
+    }
+
+    /// Stop the picture's render (the reference orbit of a deep view or its passes).
+    pub fn stop(&mut self) {
+        if let Some(d) = &mut self.main {
+            d.stop();
+            self.notices.status("Stopped");
+        }
+    }
+
+    /// Whether the picture is still being computed.
+    pub fn busy(&self) -> bool {
+        self.main.as_ref().is_some_and(|d| d.busy())
+    }
+
+    /// While a deep view computes its reference orbit: iterations done and the limit.
+    pub fn orbit_progress(&self) -> Option<(u64, u64)> {
+        self.main.as_ref().and_then(|d| d.orbit_progress())
+    }
+
+    /// The newest picture on screen shows more than one colour.
+    pub fn picture_shows_something(&self) -> bool {
+        self.main
+            .as_ref()
+            .and_then(|d| d.last_image.as_ref())
+            .is_some_and(|img| {
+                img.pixels.len() > 1 && img.pixels.iter().any(|p| *p != img.pixels[0])
+            })
+    }
+
     /// Draw the tab. Returns a request for the application.
     pub fn ui(&mut self, ui: &mut egui::Ui) -> Option<EscapeRequest> {
         let ctx = ui.ctx().clone();
         self.poll_export();
+        self.apply_auto_iter();
         if self.render && self.main.is_none() {
             self.main = Some(Display::new(&ctx));
             self.julia = Some(Display::new(&ctx));
@@ -357,8 +407,13 @@ impl EscapeTab {
                 None => "—".into(),
             }
         };
-        s += &format!("   width {:.3e}", self.doc.world_width());
-        if let Some(d) = &self.main {
+        s += &format!("   {}", self.depth_text());
+        if let Some((done, of)) = self.orbit_progress() {
+            s += &format!(
+                "   reference orbit {done} of {of} iterations ({:.0}%)",
+                done as f64 * 100.0 / of.max(1) as f64
+            );
+        } else if let Some(d) = &self.main {
             s += &format!(
                 "   {}×{}  {:.0}%  {:.0} ms",
                 self.doc.width,
