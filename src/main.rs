@@ -1,5 +1,6 @@
 //! ugnis: the desktop fractal editor (no arguments) and its command line.
 
+#[macro_use]
 mod cli;
 
 use clap::{Parser, Subcommand};
@@ -46,6 +47,8 @@ enum Command {
     Dimension(cli::dimension::DimensionArgs),
     /// Draw the Lorenz attractor (and show its sensitivity to the start)
     Lorenz(cli::lorenz::LorenzArgs),
+    /// A small PNG of a flame, IFS, gradient or escape-time file, quickly (for file managers)
+    Thumbnail(cli::thumbnail::ThumbnailArgs),
 }
 
 fn main() {
@@ -61,7 +64,7 @@ fn main() {
     };
     cli::set_progress_mode(cli.progress);
     if cli.command.is_some() {
-        cli::install_interrupt_handler();
+        cli::signals::install();
     }
     let result = match cli.command {
         Some(Command::Render(a)) => cli::render::run(a),
@@ -75,14 +78,11 @@ fn main() {
         Some(Command::Lsystem(a)) => cli::lsystem::run(a),
         Some(Command::Dimension(a)) => cli::dimension::run(a),
         Some(Command::Lorenz(a)) => cli::lorenz::run(a),
+        Some(Command::Thumbnail(a)) => cli::thumbnail::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {
-        if e.downcast_ref::<cli::Interrupted>().is_some() || cli::interrupted() {
-            eprintln!("{}", cli::Interrupted);
-            std::process::exit(130);
-        }
-        eprintln!("error: {e:#}");
+        stderr!("error: {e:#}");
         std::process::exit(1);
     }
 }

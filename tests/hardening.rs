@@ -4,6 +4,14 @@
 //! library), never from allocating.
 
 mod common;
+#[path = "hardening/outputs.rs"]
+mod outputs;
+#[path = "hardening/readers.rs"]
+mod readers;
+#[path = "hardening/signals.rs"]
+mod signals;
+#[path = "hardening/stderr.rs"]
+mod stderr;
 
 use std::io::{BufRead, Read};
 use std::path::{Path, PathBuf};

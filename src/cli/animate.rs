@@ -121,7 +121,7 @@ pub struct AnimateArgs {
 /// `-o seq.flam3`: the animation written as a flam3 sequence (one flame per frame) instead of
 /// rendered.
 fn export_sequence(a: &AnimateArgs, source: &Source, frames: &[FrameSpec]) -> Result<()> {
-    super::check_output(&a.output)?;
+    super::check_outputs(&inputs(a), &[&a.output])?;
     let flames = source.sequence_of(frames, &adjuster(a.size, a.quality));
     let name = a
         .output
@@ -129,7 +129,7 @@ fn export_sequence(a: &AnimateArgs, source: &Source, frames: &[FrameSpec]) -> Re
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     ugnis::io::write_flames(&a.output, &name, &flames)
         .with_context(|| format!("cannot write '{}'", a.output.display()))?;
-    eprintln!(
+    stderr!(
         "{} flames written to '{}' (render them with flam3-animate, Fractorium or ugnis animate)",
         flames.len(),
         a.output.display()
@@ -170,6 +170,18 @@ fn parse_frames(s: &str) -> Result<Frames, String> {
             Ok(Frames::Count(n as u64))
         }
     }
+}
+
+/// The files an animation reads.
+fn inputs(a: &AnimateArgs) -> Vec<&Path> {
+    let mut v = vec![a.input.as_path()];
+    v.extend(
+        [&a.palettes, &a.sound.sound, &a.audio]
+            .into_iter()
+            .flatten()
+            .map(PathBuf::as_path),
+    );
+    v
 }
 
 /// The mode `auto` stands for.
@@ -397,12 +409,19 @@ pub fn run(a: AnimateArgs) -> Result<()> {
     }
     let (dir, video) = outputs(&a.output)?;
     std::fs::create_dir_all(&dir).with_context(|| format!("cannot create '{}'", dir.display()))?;
-    if let Some(first) = frames.first() {
-        super::check_output(&dir.join(&first.name))?;
-    }
-    if let Some(v) = &video {
-        super::check_output(v)?;
-    }
+    // The frames are checked as the first one and those named as an input (a PNG with an
+    // embedded flame may be one): checking a million names would take a while.
+    let ins = inputs(&a);
+    let names: std::collections::HashSet<_> = ins.iter().filter_map(|p| p.file_name()).collect();
+    let frame_paths: Vec<PathBuf> = frames
+        .iter()
+        .enumerate()
+        .filter(|(k, f)| *k == 0 || names.contains(std::ffi::OsStr::new(&f.name)))
+        .map(|(_, f)| dir.join(&f.name))
+        .collect();
+    let mut outs: Vec<&Path> = frame_paths.iter().map(PathBuf::as_path).collect();
+    outs.extend(video.as_deref());
+    super::check_outputs(&ins, &outs)?;
     let fps = a.fps.unwrap_or(match &source {
         Source::Keys(f) => f.keys.fps,
         _ => 25.0,
@@ -438,18 +457,18 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         blur: !a.no_blur,
     };
     let pb = super::progress_bar(job.frames.len() as u64, "animating");
-    let result = job.run(super::interrupt_flag(), |p| {
+    let result = job.run(super::no_cancel(), |p| {
         pb.set_position(p.done as u64);
     });
     pb.finish_and_clear();
     match result {
         Ok(s) => {
             if s.skipped > 0 {
-                eprintln!("{} frames were already on disk and kept", s.skipped);
+                stderr!("{} frames were already on disk and kept", s.skipped);
             }
             Ok(())
         }
-        Err(AnimError::Interrupted) => Err(super::Interrupted.into()),
+        Err(AnimError::Interrupted) => Err(super::stopped_early()),
         Err(e) => Err(anyhow::anyhow!("{}: {e}", a.input.display())),
     }
 }

@@ -22,6 +22,9 @@ fn is_flames(k: FileKind) -> bool {
 
 pub fn run(a: ConvertArgs) -> Result<()> {
     let (ki, ko) = (io::kind_of(&a.input), io::kind_of(&a.output));
+    if is_flames(ko) || matches!(ko, FileKind::Ugr | FileKind::Map | FileKind::Ggr) {
+        super::check_outputs(&[&a.input], &[&a.output])?;
+    }
     if is_flames(ko) {
         // Any file the flame editor opens, but not one of unknown kind.
         if io::view_of(ki) != View::Flame || ki == FileKind::Unknown {
@@ -29,13 +32,13 @@ pub fn run(a: ConvertArgs) -> Result<()> {
         }
         let p = super::read_flame_file(&a.input, &Default::default())?;
         for w in &p.warnings {
-            eprintln!("{w}");
+            stderr!("{w}");
         }
         let from_ifs = ki == FileKind::Ifs;
         let mut flames = Vec::new();
         for mut f in p.value.flames {
             if f.ifs3d.is_some() && ko != FileKind::Ifs {
-                eprintln!(
+                stderr!(
                     "warning: skipping '{}': 3-D IFS entries cannot be represented as flames",
                     f.name
                 );
@@ -59,17 +62,17 @@ pub fn run(a: ConvertArgs) -> Result<()> {
                     .unwrap_or_default()
             });
         for w in io::write_flames(&a.output, &name, &flames)? {
-            eprintln!("warning: {w}");
+            stderr!("warning: {w}");
         }
         return Ok(());
     }
     if matches!(ko, FileKind::Ugr | FileKind::Map | FileKind::Ggr) {
         let p = io::read_gradients(&a.input)?;
         for w in &p.warnings {
-            eprintln!("{w}");
+            stderr!("{w}");
         }
         let gradients = if ko != FileKind::Ugr && p.value.len() > 1 {
-            eprintln!(
+            stderr!(
                 "warning: {} holds {} gradients; a .{} keeps one, writing the first ('{}')",
                 a.input.display(),
                 p.value.len(),

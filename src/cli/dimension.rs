@@ -99,7 +99,7 @@ pub fn run(a: DimensionArgs) -> Result<()> {
         FileKind::Ifs => {
             let p = io::read_ifs(path)?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let mut any = false;
             for e in p.value.entries.iter().filter(|e| pick(&e.name)) {
@@ -155,7 +155,7 @@ pub fn run(a: DimensionArgs) -> Result<()> {
         FileKind::FlameXml | FileKind::Fla => {
             let p = io::read_flames(path, &Default::default())?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let mut any = false;
             for (i, f) in p.value.iter().enumerate() {

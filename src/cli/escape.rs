@@ -35,9 +35,9 @@ pub struct EscapeArgs {
     /// Centre of the view as X,Y
     #[arg(long, allow_hyphen_values = true)]
     pub center: Option<String>,
-    /// World width of the view
-    #[arg(long, value_parser = super::finite)]
-    pub width: Option<f64>,
+    /// World width of the view (any exponent down to 1e-10000, e.g. 1e-1000)
+    #[arg(long, allow_hyphen_values = true)]
+    pub width: Option<String>,
     /// Image size WxH
     #[arg(long, value_parser = super::parse_size)]
     pub size: Option<(u32, u32)>,
@@ -100,7 +100,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         (Some(v), _) => {
             let p = escape_view::read(v)?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let mut doc = p.value;
             // A gradient file named relative to the view: absolute, so that the view saved
@@ -124,10 +124,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         doc.params.family = family_from_name(k).with_context(|| format!("unknown kind '{k}'"))?;
     }
     if let Some((w, h)) = a.size {
-        let width = doc.world_width();
-        doc.width = w;
-        doc.height = h;
-        doc.view.half_height = width / 2.0 * h as f64 / w as f64;
+        doc.resize(w, h);
     }
     let c = complex(&a.c, "c")?;
     match &mut doc.params.family {
@@ -184,15 +181,15 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         }
     }
     if let Some(v) = &a.center {
-        let c = escape_view::parse_center(v)
-            .with_context(|| format!("--center '{v}': expected RE,IM (e.g. -0.75,0.1)"))?;
-        doc.view = doc.view.with_center_dd(c);
+        let c = escape_view::parse_center(v).map_err(|e| {
+            let shown: String = v.chars().take(60).collect();
+            anyhow::anyhow!("--center '{shown}…': {e}; expected RE,IM (e.g. -0.75,0.1)")
+        })?;
+        doc.view = doc.view.with_centre(c);
     }
-    if let Some(wd) = a.width {
-        if !(wd > 0.0 && wd.is_finite()) {
-            bail!("--width {wd} must be positive");
-        }
-        doc.view.half_height = wd / 2.0 * doc.height as f64 / doc.width as f64;
+    if let Some(wd) = &a.width {
+        let wd = escape_view::parse_width(wd).map_err(|e| anyhow::anyhow!("--width: {e}"))?;
+        doc.set_world_width_fx(wd);
     }
     if let Some(n) = a.max_iter {
         doc.params.max_iter = n;
@@ -205,7 +202,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
     if let Some(g) = &a.gradient {
         let p = escape_view::resolve_gradient_parsed(g, None).map_err(|e| anyhow::anyhow!(e))?;
         for w in &p.warnings {
-            eprintln!("{w}");
+            stderr!("{w}");
         }
         doc.params.palette.gradient = p.value;
         // A saved view resolves relative paths from its own directory: keep files absolute.
@@ -242,10 +239,20 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&out) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", out.display());
     }
-    super::check_output(&out)?;
-    if let Some(v) = &a.save_view {
-        super::check_output(v)?;
-    }
+    let gradient_file = a
+        .gradient
+        .as_deref()
+        .filter(|g| ugnis::gradient::builtin_named(g).is_none())
+        .map(std::path::Path::new);
+    let inputs: Vec<&std::path::Path> = [a.view.as_deref(), gradient_file]
+        .into_iter()
+        .flatten()
+        .collect();
+    let outputs: Vec<&std::path::Path> = [Some(out.as_path()), a.save_view.as_deref()]
+        .into_iter()
+        .flatten()
+        .collect();
+    super::check_outputs(&inputs, &outputs)?;
     let doc = doc_from_args(&a)?;
     // What is saved must read back: refuse a view that its own reader would refuse.
     let view_text = escape_view::write(&doc);
@@ -253,20 +260,21 @@ pub fn run(a: EscapeArgs) -> Result<()> {
         .map_err(|e| anyhow::anyhow!("the view cannot be saved as given: {}", e.message))?;
     let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
-        let mut r = EscapeRenderer::new(&doc.params, doc.view, doc.width, doc.height)?;
+        let mut r = EscapeRenderer::new(&doc.params, doc.view.clone(), doc.width, doc.height)?;
         let pb = super::progress_bar(
             doc.width as u64 * doc.height as u64,
             &format!("rendering {}", doc.params.family.name()),
         );
-        let done = r.run_exact(super::interrupt_flag(), &|n| pb.inc(n));
+        let done = r.run_exact(super::no_cancel(), &|n| pb.inc(n));
         pb.finish_and_clear();
         if !done {
-            return Err(super::Interrupted.into());
+            return Err(super::stopped_early());
         }
         Ok(r.image())
     })?;
-    super::check_interrupted()?;
     let img = image::DynamicImage::ImageRgb8(img);
+    // The image and the view are put in place together, or neither.
+    let held = io::atomic::hold();
     if is_bmp {
         io::bmp::save(&out, &img).with_context(|| format!("cannot write '{}'", out.display()))?;
     } else {
@@ -280,5 +288,5 @@ pub fn run(a: EscapeArgs) -> Result<()> {
     if let Some(v) = &a.save_view {
         escape_view::save(v, &doc).with_context(|| format!("cannot write '{}'", v.display()))?;
     }
-    Ok(())
+    Ok(held.commit()?)
 }

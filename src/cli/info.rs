@@ -93,7 +93,7 @@ pub fn run(a: InfoArgs) -> Result<()> {
         FileKind::Ifs => {
             let p = io::read_ifs(path)?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let _ = writeln!(
                 out,
@@ -114,7 +114,7 @@ pub fn run(a: InfoArgs) -> Result<()> {
         FileKind::Ugr | FileKind::Map | FileKind::Ggr => {
             let p = io::read_gradients(path)?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let _ = writeln!(out, "{}: {} gradient(s)", path.display(), p.value.len());
             for g in &p.value {
@@ -130,7 +130,7 @@ pub fn run(a: InfoArgs) -> Result<()> {
             };
             let p = super::read_flame_file(path, &opts)?;
             for w in &p.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             let flames = &p.value.flames;
             let _ = writeln!(out, "{}: {} flame(s)", path.display(), flames.len());

@@ -80,6 +80,7 @@ pub fn run(a: LorenzArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&a.output) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
     }
+    super::check_outputs(&[], &[&a.output])?;
     for (what, v) in [("--time", a.time), ("--transient", a.transient)] {
         if !(v.is_finite() && (0.0..=1e9).contains(&v)) {
             bail!("{what} {v} must be between 0 and 1e9 (time units of the equations)");

@@ -56,6 +56,7 @@ pub fn run(a: LsystemArgs) -> Result<()> {
         bail!("--order {} must be between 0 and {MAX_ORDER}", a.order);
     }
     let background = parse_color(&a.background)?;
+    super::check_outputs(&[&a.file], &[&a.output])?;
     let p = io::read_lsystems(&a.file)?;
     // An entry asked for by name that could not be read: its problem is the error.
     let skipped = a
@@ -70,7 +71,7 @@ pub fn run(a: LsystemArgs) -> Result<()> {
         });
     for (i, w) in p.warnings.iter().enumerate() {
         if Some(i) != skipped {
-            eprintln!("{w}");
+            stderr!("{w}");
         }
     }
     if let Some(i) = skipped {

@@ -1,7 +1,7 @@
 //! `ugnis merge`: sum the histograms of saved render parts, then density estimation and tone
 //! mapping once.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
 use clap::Args;
@@ -59,15 +59,19 @@ pub fn run(a: MergeArgs) -> Result<()> {
         if io::kind_of(o) == FileKind::Bmp && (a.bits16 || a.transparent) {
             bail!("--bits16 and --transparent need PNG output");
         }
-        super::check_output(o)?;
     }
-    if let Some(s) = &a.save_state {
-        super::check_output(s)?;
-    }
+    let inputs: Vec<&Path> = a.states.iter().map(PathBuf::as_path).collect();
+    let outputs: Vec<&Path> = [&a.output, &a.save_state]
+        .into_iter()
+        .flatten()
+        .map(PathBuf::as_path)
+        .collect();
+    super::check_outputs(&inputs, &outputs)?;
+    // The image and the state are put in place together, or neither.
+    let held = io::atomic::hold();
     let mut readers = Vec::with_capacity(a.states.len());
     for p in &a.states {
         readers.push(StateReader::open(p)?);
-        super::check_interrupted()?;
     }
     // Summed in the order of the parts, whatever the order of the files: the sum of floating
     // point numbers depends on its order, the merged picture must not.
@@ -84,7 +88,7 @@ pub fn run(a: MergeArgs) -> Result<()> {
         })?
     };
     if !merged.is_complete() {
-        eprintln!(
+        stderr!(
             "warning: the parts hold {} of {} shares of the samples; the image is noisier than the full render",
             merged.parts.len(),
             merged.part_count
@@ -126,7 +130,6 @@ pub fn run(a: MergeArgs) -> Result<()> {
     }
     let pb = super::progress_bar(k as u64, "merging");
     for strip in &plan {
-        super::check_interrupted()?;
         let rows = if k == 1 {
             0..geom.full_bh
         } else {
@@ -156,5 +159,5 @@ pub fn run(a: MergeArgs) -> Result<()> {
     }
     pb.finish_and_clear();
     files.finish()?;
-    Ok(())
+    Ok(held.commit()?)
 }

@@ -1,8 +1,19 @@
 //! Command-line subcommands. Each returns `anyhow::Result`; `main` prints the one error message
-//! and exits with status 1 (130 when interrupted).
+//! and exits with status 1 (a signal ends a command at once with 128 + its number, see
+//! [`signals`]).
 //!
-//! Shared here: progress on stderr (a bar on a terminal, a plain line every few seconds
-//! otherwise), Ctrl+C handling, thread counts, output checks and argument parsers.
+//! Shared here: messages on stderr that never panic ([`stderr!`]), progress on stderr (a bar
+//! on a terminal, a plain line every few seconds otherwise), thread counts, output checks and
+//! argument parsers.
+
+/// `eprintln!` that never panics: a message that cannot be written to stderr (a full disk, a
+/// closed pipe, `2>/dev/full`) is dropped. Every message of the command line goes through it.
+macro_rules! stderr {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
 
 pub mod animate;
 mod animate_sound;
@@ -16,6 +27,8 @@ pub mod merge;
 pub mod random;
 pub mod render;
 pub mod scene;
+pub mod signals;
+pub mod thumbnail;
 
 use std::io::{IsTerminal, Write};
 use std::path::Path;
@@ -99,7 +112,7 @@ impl Plain {
         } else {
             String::new()
         };
-        eprintln!(
+        stderr!(
             "{}: {:.0}% ({} elapsed{eta})",
             self.what,
             100.0 * frac.min(1.0),
@@ -179,58 +192,25 @@ fn bar(len: u64, what: &str) -> ProgressBar {
     pb
 }
 
-/// Set by Ctrl+C; every long loop of the commands checks it.
-static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+/// The cancel flag given to renderers. Signals end a command from their own thread
+/// ([`signals`]), so on the command line it is never raised.
+static NEVER_CANCELLED: AtomicBool = AtomicBool::new(false);
 
-/// The flag Ctrl+C sets (for renderers that take a cancel flag).
-pub fn interrupt_flag() -> &'static AtomicBool {
-    &INTERRUPTED
+/// The cancel flag for renderers that take one (never raised: see [`signals`]).
+pub fn no_cancel() -> &'static AtomicBool {
+    &NEVER_CANCELLED
 }
 
-/// Was Ctrl+C pressed?
-pub fn interrupted() -> bool {
-    INTERRUPTED.load(Ordering::Relaxed)
-}
-
-/// The error of an interrupted command (main exits with 130, as shells expect after SIGINT).
-#[derive(Debug)]
-pub struct Interrupted;
-
-impl std::fmt::Display for Interrupted {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("interrupted; the output was not written")
-    }
-}
-
-impl std::error::Error for Interrupted {}
-
-/// Fail with [`Interrupted`] when Ctrl+C was pressed.
-pub fn check_interrupted() -> Result<()> {
-    if interrupted() {
-        return Err(Interrupted.into());
-    }
-    Ok(())
-}
-
-/// Ctrl+C: the first press asks the work to stop (renders stop within a moment, nothing is
-/// written, temporary files are removed as the saves unwind); a second press removes the
-/// temporary files of saves in progress and exits at once.
-pub fn install_interrupt_handler() {
-    let _ = ctrlc::set_handler(|| {
-        if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            ugnis::io::atomic::remove_pending();
-            eprintln!("interrupted");
-            std::process::exit(130);
-        }
-        eprintln!("interrupted: stopping (press Ctrl+C again to quit at once)");
-    });
+/// The error of a render that stopped before its end although nothing cancelled it.
+pub fn stopped_early() -> anyhow::Error {
+    anyhow::anyhow!("the render stopped before its end")
 }
 
 /// Resolve a thread count (0: all cores), clamped to a sane maximum with a warning.
 pub fn threads(requested: usize) -> usize {
     let t = ugnis::threads::Threads::resolve(requested);
     if let Some(w) = t.warning() {
-        eprintln!("warning: {w}");
+        stderr!("warning: {w}");
     }
     t.count
 }
@@ -281,11 +261,23 @@ pub fn read_flame_file(path: &Path, opts: &ReadOptions) -> Result<Parsed<FlameFi
     })
 }
 
-/// Check before long work that an output file can be written (its directory exists and
-/// accepts files), so a long render does not end in "cannot write".
-pub fn check_output(path: &Path) -> Result<()> {
-    ugnis::io::atomic::check_writable(path)
-        .with_context(|| format!("cannot write '{}'", path.display()))
+/// Check before any long work that the outputs of a command can be saved, by the output rule
+/// of [`io::target`]: each is a regular file or a new name in an existing directory that
+/// accepts files, none is one of the command's `inputs`, and none is named twice (so a long
+/// render does not end in "cannot write", and no save replaces what the command reads).
+pub fn check_outputs(inputs: &[&Path], outputs: &[&Path]) -> Result<()> {
+    let mut dirs = std::collections::HashSet::new();
+    for o in outputs {
+        // One trial save per directory; every name is checked against the rule.
+        if dirs.insert(io::atomic::target_dir(o)) {
+            io::atomic::check_writable(o)
+        } else {
+            io::target::check_target(o)
+        }
+        .with_context(|| format!("cannot write '{}'", o.display()))?;
+    }
+    io::target::check_distinct(inputs, outputs)?;
+    Ok(())
 }
 
 /// Write to stdout; a closed pipe (`ugnis info … | head -1`) ends the output quietly.

@@ -131,19 +131,29 @@ fn batch_bytes(count: usize, opts: &RandomOptions) -> u64 {
 
 pub fn run(a: RandomArgs) -> Result<()> {
     let opts = options(&a)?;
-    super::check_output(&a.output)?;
     let seed = a.seed.unwrap_or_else(|| {
         std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
             .map_or(1, |d| d.as_nanos() as u64)
     });
     let threads = super::threads(a.threads);
-    if let Some(dir) = &a.thumbs {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("cannot create '{}'", dir.display()))?;
-        super::check_output(&dir.join("thumbnail.png"))?;
-        check_thumbnail_memory(&a, threads)?;
-    }
+    let thumbs: Vec<PathBuf> = match &a.thumbs {
+        Some(dir) => {
+            std::fs::create_dir_all(dir)
+                .with_context(|| format!("cannot create '{}'", dir.display()))?;
+            check_thumbnail_memory(&a, threads)?;
+            (0..a.count)
+                .map(|i| dir.join(format!("{}.png", flame_name(i, a.count))))
+                .collect()
+        }
+        None => Vec::new(),
+    };
+    let mut outputs = vec![a.output.as_path()];
+    outputs.extend(thumbs.iter().map(PathBuf::as_path));
+    super::check_outputs(&[], &outputs)?;
+    // The batch and its thumbnails are put in place together: a batch that fails leaves
+    // no thumbnail behind.
+    let held = io::atomic::hold();
     let pool = super::pool_of(threads)?;
     let work = a.count as u64 * if a.thumbs.is_some() { 2 } else { 1 };
     let pb = super::progress_bar(work, "random flames");
@@ -158,6 +168,7 @@ pub fn run(a: RandomArgs) -> Result<()> {
         .map_or_else(|| "random".into(), |s| s.to_string_lossy().into_owned());
     io::write_flames(&a.output, &name, &flames)
         .with_context(|| format!("cannot write '{}'", a.output.display()))?;
+    held.commit()?;
     if a.count > 1 {
         super::print_stdout(&format!(
             "wrote {} flames to {} (seed {seed}; {passed} passed the quality check){}\n",
@@ -264,29 +275,29 @@ fn generate(
 ) -> Result<(Vec<Flame>, u64)> {
     let defaults = NewFlame::default();
     let passed = AtomicU64::new(0);
-    let flames: Vec<Option<_>> = pool.install(|| {
+    let mut flames: Vec<Flame> = pool.install(|| {
         (0..a.count)
             .into_par_iter()
             .map(|i| {
-                if super::interrupted() {
-                    return None;
-                }
                 let g = random::generate(random::batch_seed(seed, i), opts, &defaults);
                 if g.passed {
                     passed.fetch_add(1, Ordering::Relaxed);
                 }
                 pb.inc(1);
-                Some(g.flame)
+                g.flame
             })
             .collect()
     });
-    super::check_interrupted()?;
-    let mut flames: Vec<_> = flames.into_iter().flatten().collect();
-    let width = a.count.to_string().len().max(3);
     for (i, f) in flames.iter_mut().enumerate() {
-        f.name = format!("random-{:0width$}", i + 1);
+        f.name = flame_name(i, a.count);
     }
     Ok((flames, passed.load(Ordering::Relaxed)))
+}
+
+/// The name of flame `i` (from 0) of a batch of `count`: random-001…
+fn flame_name(i: usize, count: usize) -> String {
+    let width = count.to_string().len().max(3);
+    format!("random-{:0width$}", i + 1)
 }
 
 /// A PNG thumbnail of every flame (with the flame embedded) in `dir`, rendered in parallel.
@@ -302,7 +313,6 @@ fn thumbnails(
         flames
             .par_iter()
             .map(|f| {
-                super::check_interrupted()?;
                 let mut t = f.clone();
                 t.resize_keep_framing(tw, th);
                 t.quality = a.quality;
@@ -313,8 +323,8 @@ fn thumbnails(
                 };
                 let mut r = Renderer::new(&t, &ro)
                     .with_context(|| format!("cannot render '{}'", f.name))?;
-                if !r.run_all(1, super::interrupt_flag(), |_| {}) {
-                    return Err(super::Interrupted.into());
+                if !r.run_all(1, super::no_cancel(), |_| {}) {
+                    return Err(super::stopped_early());
                 }
                 let img = r.finish();
                 let path = dir.join(format!("{}.png", f.name));
@@ -325,7 +335,6 @@ fn thumbnails(
             })
             .collect()
     });
-    super::check_interrupted()?;
     results.into_iter().collect::<Result<Vec<()>>>()?;
     Ok(())
 }

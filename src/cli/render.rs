@@ -115,7 +115,7 @@ pub fn load_flames(input: &Path, palettes: Option<&PathBuf>, strict: bool) -> Re
         if strict && w.code == "XML020" {
             bail!("{w} (--strict)");
         }
-        eprintln!("{w}");
+        stderr!("{w}");
     }
     Ok(parsed.value.flames)
 }
@@ -191,7 +191,7 @@ pub fn choose_strips(
     }
     let fit = strips::fit(flame, opts)?;
     if fit.strips > 1 {
-        eprintln!(
+        stderr!(
             "{what}: {}: rendering in {} strips",
             fit.describe(),
             fit.strips
@@ -224,11 +224,14 @@ pub fn run(a: RenderArgs) -> Result<()> {
         if is_bmp && (a.bits16 || a.transparent) {
             bail!("--bits16 and --transparent need PNG output");
         }
-        super::check_output(out)?;
     }
-    if let Some(s) = &a.save_state {
-        super::check_output(s)?;
-    }
+    let inputs = [&a.input, &a.resume, &a.template, &a.palettes];
+    let inputs: Vec<&Path> = inputs.into_iter().flatten().map(PathBuf::as_path).collect();
+    let outputs: Vec<&Path> = [out.as_deref(), a.save_state.as_deref()]
+        .into_iter()
+        .flatten()
+        .collect();
+    super::check_outputs(&inputs, &outputs)?;
     let mut source = if let Some(state) = &a.resume {
         if a.size.is_some() || a.quality.is_some() || a.supersample.is_some() {
             bail!(
@@ -240,11 +243,12 @@ pub fn run(a: RenderArgs) -> Result<()> {
     } else {
         let input = a.input.as_ref().context("no flame file given")?;
         let flames = load_flames(input, a.palettes.as_ref(), a.strict)?;
-        let mut flame = select(flames, a.index, a.name.as_deref(), input)?;
+        // A JWildfire flame shows its motion curves at its frame.
+        let mut flame = select(flames, a.index, a.name.as_deref(), input)?.at_jwildfire_frame();
         if let Some(t) = &a.template {
             let t = io::read_template_file(t, &ReadOptions::default())?;
             for w in &t.warnings {
-                eprintln!("{w}");
+                stderr!("{w}");
             }
             t.value.apply(&mut flame);
         }
@@ -293,10 +297,14 @@ pub fn run(a: RenderArgs) -> Result<()> {
     ugnis::flame::render::validate_settings(&flame)
         .with_context(|| format!("cannot render '{}'", flame.name))?;
     let k = choose_strips(&flame, &opts, a.strips, &format!("rendering {label}"))?;
+    // The image and the state are put in place together, or neither.
+    let held = io::atomic::hold();
     if k == 1 {
-        return run_whole(&a, &mut source, &opts, out.as_deref(), &label);
+        run_whole(&a, &mut source, &opts, out.as_deref(), &label)?;
+    } else {
+        run_strips(&a, &mut source, &opts, out.as_deref(), &label, k)?;
     }
-    run_strips(&a, &mut source, &opts, out.as_deref(), &label, k)
+    Ok(held.commit()?)
 }
 
 fn run_whole(
@@ -308,12 +316,12 @@ fn run_whole(
 ) -> Result<()> {
     let mut r = source.renderer(opts, None)?;
     let pb = super::progress_bar(1000, &format!("rendering {label}"));
-    let done = r.run_all(100, super::interrupt_flag(), |f| {
+    let done = r.run_all(100, super::no_cancel(), |f| {
         pb.set_position((f * 1000.0) as u64)
     });
     pb.finish_and_clear();
     if !done {
-        return Err(super::Interrupted.into());
+        return Err(super::stopped_early());
     }
     let samples = r.samples_done();
     let rate = r.bad_values() as f64 / samples.max(1) as f64;
@@ -371,7 +379,7 @@ fn run_strips(
             .map_err(|e| StripError::Render(format!("{e:#}")))
     };
     let hooks = StripHooks {
-        cancel: super::interrupt_flag(),
+        cancel: super::no_cancel(),
         pass: None,
         progress: &mut report,
     };
@@ -379,7 +387,7 @@ fn run_strips(
     pb.finish_and_clear();
     match done {
         Ok(_) => Ok(()),
-        Err(StripError::Cancelled) => Err(super::Interrupted.into()),
+        Err(StripError::Cancelled) => Err(super::stopped_early()),
         Err(e) => Err(e.into()),
     }
 }

@@ -50,7 +50,7 @@ pub fn run(a: SceneArgs) -> Result<()> {
     if !is_bmp && io::kind_of(&a.output) != FileKind::Png {
         bail!("output '{}' must end in .png or .bmp", a.output.display());
     }
-    super::check_output(&a.output)?;
+    super::check_outputs(&[&a.file], &[&a.output])?;
     // The size is checked before the scene's textures are made (which takes a while).
     if let Some((w, h)) = a.size {
         let max = ugnis::surface::MAX_SIDE;
@@ -62,7 +62,7 @@ pub fn run(a: SceneArgs) -> Result<()> {
     let img = pool.install(|| -> Result<image::RgbImage> {
         let mut parsed = io::scene::read_spec(&a.file)?;
         for w in &parsed.warnings {
-            eprintln!("{w}");
+            stderr!("{w}");
         }
         let scene = &mut parsed.spec.scene;
         if let Some((w, h)) = a.size {
@@ -86,15 +86,16 @@ pub fn run(a: SceneArgs) -> Result<()> {
             }
             scene.shadows = matches!(sh, OnOff::On);
         }
+        // A texture's file is an input too.
+        let inputs: Vec<&std::path::Path> = parsed.files.iter().map(|p| p.as_path()).collect();
+        super::check_outputs(&inputs, &[&a.output])?;
         for n in &parsed.notes {
             println!("{n}");
         }
-        super::check_interrupted()?;
         let loaded = parsed.build()?;
-        super::check_interrupted()?;
-        match ugnis::surface::try_render(&loaded.scene, Some(super::interrupt_flag())) {
+        match ugnis::surface::try_render(&loaded.scene, Some(super::no_cancel())) {
             Ok(img) => Ok(img),
-            Err(ugnis::surface::RenderError::Cancelled) => Err(super::Interrupted.into()),
+            Err(ugnis::surface::RenderError::Cancelled) => Err(super::stopped_early()),
             Err(e) => Err(e).with_context(|| format!("cannot render '{}'", a.file.display())),
         }
     })?;

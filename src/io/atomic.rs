@@ -3,50 +3,165 @@
 //!
 //! The temporary file is created exclusively (`O_CREAT | O_EXCL`, never following a symlink)
 //! under an unpredictable name by the `tempfile` crate, so a link planted in the directory
-//! cannot redirect the write. It is removed on every error; while it exists its path is
-//! registered so that an interrupt handler can remove it before the process exits
-//! ([`remove_pending`]).
+//! cannot redirect the write. Every target is checked by the output rule of
+//! [`crate::io::target`] before the temporary file is made and again just before the rename.
+//!
+//! Every temporary file is registered while it exists. A program that ends on a signal calls
+//! [`close`] (no save starts or is renamed into place after it; the processes writing
+//! temporary files, such as ffmpeg, are returned to be stopped) and then [`remove_pending`].
+//! A command with several outputs can [`hold`] its saves and put them in place together, so
+//! that a failure or a signal leaves every old output as it was.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::sync::{Mutex, MutexGuard};
 
-/// Temporary files being written now.
-static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+use crate::io::target::check_target;
 
-/// Removes its path from [`PENDING`] when the save ends, whichever way.
-struct Registered(PathBuf);
-
-impl Registered {
-    fn new(p: &Path) -> Registered {
-        if let Ok(mut v) = PENDING.lock() {
-            v.push(p.to_path_buf());
-        }
-        Registered(p.to_path_buf())
-    }
+/// The temporary files of this process and what may still be done with them.
+struct Registry {
+    /// Temporary files that exist now (being written, or held).
+    pending: Vec<PathBuf>,
+    /// Saves written but not yet renamed, while [`hold`] is in force.
+    held: Option<Vec<(tempfile::TempPath, PathBuf)>>,
+    /// Processes that write temporary files (an encoder), by process id.
+    writers: Vec<u32>,
+    /// Set by [`close`]: the process is ending; nothing more is created or renamed.
+    closed: bool,
 }
 
-impl Drop for Registered {
-    fn drop(&mut self) {
-        if let Ok(mut v) = PENDING.lock()
-            && let Some(i) = v.iter().position(|p| *p == self.0)
-        {
-            v.swap_remove(i);
-        }
-    }
+static REGISTRY: Mutex<Registry> = Mutex::new(Registry {
+    pending: Vec::new(),
+    held: None,
+    writers: Vec::new(),
+    closed: false,
+});
+
+fn registry() -> MutexGuard<'static, Registry> {
+    // A panic while the lock was held leaves the lists as they were: still usable.
+    REGISTRY.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Remove every temporary file a save is writing now (for an interrupt handler that is about
-/// to end the process, when destructors will not run). Returns how many were removed.
+fn closed_error() -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::Interrupted,
+        "the program is stopping; nothing more is saved",
+    )
+}
+
+/// Stop every save: after this no temporary file is created and none is renamed over its
+/// target (those in progress fail). Returns the ids of the processes writing temporary files
+/// now, for the caller to stop before it calls [`remove_pending`]. For a program about to
+/// end on a signal.
+pub fn close() -> Vec<u32> {
+    let mut r = registry();
+    r.closed = true;
+    r.writers.clone()
+}
+
+/// Remove every temporary file that exists now (being written or held), for a program about
+/// to end (destructors will not run). Returns how many were removed.
 pub fn remove_pending() -> usize {
     remove_pending_where(|_| true)
 }
 
 fn remove_pending_where(select: impl Fn(&Path) -> bool) -> usize {
-    let Ok(v) = PENDING.lock() else { return 0 };
-    v.iter()
+    let r = registry();
+    r.pending
+        .iter()
         .filter(|p| select(p) && std::fs::remove_file(p).is_ok())
         .count()
+}
+
+/// A process writing a temporary file (an encoder given the file's name), registered while
+/// this value lives so that [`close`] can name it.
+pub struct WriterProcess(u32);
+
+impl WriterProcess {
+    /// Register the process `id`.
+    pub fn register(id: u32) -> WriterProcess {
+        registry().writers.push(id);
+        WriterProcess(id)
+    }
+}
+
+impl Drop for WriterProcess {
+    fn drop(&mut self) {
+        let mut r = registry();
+        if let Some(i) = r.writers.iter().position(|p| *p == self.0) {
+            r.writers.swap_remove(i);
+        }
+    }
+}
+
+/// Saves held back by [`hold`]; dropped without [`Holding::commit`], they are removed.
+#[must_use = "held saves are removed unless committed"]
+pub struct Holding {
+    active: bool,
+}
+
+/// Hold every save of this process from now on: each is written to its temporary file, and
+/// all are renamed over their targets together by [`Holding::commit`] (or removed if the
+/// holding is dropped). For a command with several outputs (an image and its render state,
+/// a batch and its thumbnails): a failure or a signal before the commit leaves every old
+/// output untouched and no new one. A second hold while one is in force holds nothing more.
+pub fn hold() -> Holding {
+    let mut r = registry();
+    if r.held.is_some() {
+        return Holding { active: false };
+    }
+    r.held = Some(Vec::new());
+    Holding { active: true }
+}
+
+impl Holding {
+    /// Rename every held save over its target. The targets are checked again first, all of
+    /// them before any is replaced.
+    pub fn commit(mut self) -> std::io::Result<()> {
+        if !self.active {
+            return Ok(());
+        }
+        self.active = false;
+        let mut r = registry();
+        let held = r.held.take().unwrap_or_default();
+        if r.closed {
+            drop(r);
+            drop(held);
+            return Err(closed_error());
+        }
+        let mut result = held.iter().try_for_each(|(_, target)| check_target(target));
+        for (tmp, target) in held {
+            let name = tmp.to_path_buf();
+            if result.is_ok() {
+                // A failed rename drops (removes) the temporary file with the error.
+                result = tmp.persist(&target).map_err(|e| e.error);
+            } else {
+                let _ = tmp.close();
+            }
+            unregister(&mut r, &name);
+        }
+        result
+    }
+}
+
+impl Drop for Holding {
+    fn drop(&mut self) {
+        if !self.active {
+            return;
+        }
+        let mut r = registry();
+        for (tmp, _) in r.held.take().unwrap_or_default() {
+            let name = tmp.to_path_buf();
+            let _ = tmp.close();
+            unregister(&mut r, &name);
+        }
+    }
+}
+
+fn unregister(r: &mut Registry, p: &Path) {
+    if let Some(i) = r.pending.iter().position(|q| q == p) {
+        r.pending.swap_remove(i);
+    }
 }
 
 /// The directory a file is saved in ("." for a bare name).
@@ -57,17 +172,16 @@ pub fn target_dir(path: &Path) -> PathBuf {
     }
 }
 
-/// Check, before any long work, that `path` can be saved: it names a file (not a directory)
-/// in an existing directory where files can be created. The check creates and removes one
-/// temporary file there, exactly as the save will.
+/// Check, before any long work, that `path` can be saved: it names a file that the output
+/// rule allows ([`check_target`]: a regular file or a new name) in an existing directory
+/// where files can be created. The check creates and removes one temporary file there,
+/// exactly as the save will.
 pub fn check_writable(path: &Path) -> std::io::Result<()> {
     let bad = |m: String| Err(std::io::Error::new(std::io::ErrorKind::InvalidInput, m));
     if path.file_name().is_none() {
         return bad(format!("'{}' does not name a file", path.display()));
     }
-    if path.is_dir() {
-        return bad(format!("'{}' is a directory", path.display()));
-    }
+    check_target(path)?;
     let dir = target_dir(path);
     if !dir.is_dir() {
         return bad(format!("the directory '{}' does not exist", dir.display()));
@@ -75,9 +189,67 @@ pub fn check_writable(path: &Path) -> std::io::Result<()> {
     create_temp(path).map(drop)
 }
 
+/// A temporary file being written for a save: registered while it exists, removed when
+/// dropped unless it was put in place.
+struct Temp {
+    file: std::fs::File,
+    path: Option<tempfile::TempPath>,
+}
+
+impl Temp {
+    fn path(&self) -> &Path {
+        self.path.as_deref().unwrap_or(Path::new(""))
+    }
+
+    /// Flush to disk and rename over `target` (or hand it to the [`hold`] in force).
+    fn commit(mut self, target: &Path) -> std::io::Result<()> {
+        self.file.flush()?;
+        // A file that is replaced keeps its permissions.
+        if let Ok(m) = std::fs::metadata(target)
+            && m.is_file()
+        {
+            let _ = self.file.set_permissions(m.permissions());
+        }
+        self.file.sync_all()?;
+        let mut r = registry();
+        if r.closed {
+            return Err(closed_error());
+        }
+        check_target(target)?;
+        let tmp = self.path.take().expect("a temporary file until committed");
+        if let Some(held) = r.held.as_mut() {
+            held.push((tmp, target.to_path_buf()));
+            return Ok(());
+        }
+        let name = tmp.to_path_buf();
+        match tmp.persist(target) {
+            Ok(()) => {
+                unregister(&mut r, &name);
+                Ok(())
+            }
+            Err(e) => {
+                // Put back, so that dropping removes it.
+                self.path = Some(e.path);
+                Err(e.error)
+            }
+        }
+    }
+}
+
+impl Drop for Temp {
+    fn drop(&mut self) {
+        if let Some(tmp) = self.path.take() {
+            let mut r = registry();
+            let name = tmp.to_path_buf();
+            let _ = tmp.close();
+            unregister(&mut r, &name);
+        }
+    }
+}
+
 /// Create the temporary file for a save of `path`: `.NAME.<random>.ugnis-tmp` in the same
-/// directory (the rename must not cross file systems).
-fn create_temp(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
+/// directory (the rename must not cross file systems), registered at once.
+fn create_temp(path: &Path) -> std::io::Result<Temp> {
     let name = path.file_name().ok_or_else(|| {
         std::io::Error::new(std::io::ErrorKind::InvalidInput, "path has no file name")
     })?;
@@ -90,7 +262,17 @@ fn create_temp(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
         use std::os::unix::fs::PermissionsExt;
         b.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    b.tempfile_in(target_dir(path))
+    // Created and registered under the lock: a program ending on a signal never misses one.
+    let mut r = registry();
+    if r.closed {
+        return Err(closed_error());
+    }
+    let (file, tmp) = b.tempfile_in(target_dir(path))?.into_parts();
+    r.pending.push(tmp.to_path_buf());
+    Ok(Temp {
+        file,
+        path: Some(tmp),
+    })
 }
 
 /// Write `bytes` to `path` atomically.
@@ -103,50 +285,27 @@ pub fn write_atomic_with(
     path: &Path,
     fill: impl FnOnce(&mut std::fs::File) -> std::io::Result<()>,
 ) -> std::io::Result<()> {
-    if path.is_dir() {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::IsADirectory,
-            format!("'{}' is a directory", path.display()),
-        ));
-    }
+    check_target(path)?;
     let mut tmp = create_temp(path)?;
-    let _registered = Registered::new(tmp.path());
-    fill(tmp.as_file_mut())?;
-    tmp.as_file_mut().flush()?;
-    // A file that is replaced keeps its permissions.
-    if let Ok(m) = std::fs::metadata(path)
-        && m.is_file()
-    {
-        let _ = tmp.as_file().set_permissions(m.permissions());
-    }
-    tmp.as_file().sync_all()?;
+    fill(&mut tmp.file)?;
     // On error the temporary file is dropped, which removes it.
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
+    tmp.commit(path)
 }
 
 /// A file written in place of `path` and put there only by [`AtomicFile::commit`] (dropped
 /// uncommitted, it is removed): for saves written piece by piece, such as posters in strips.
 pub struct AtomicFile {
-    tmp: tempfile::NamedTempFile,
-    _registered: Registered,
+    tmp: Temp,
     path: PathBuf,
 }
 
 impl AtomicFile {
-    /// A temporary file beside `path`, to become `path` when committed (fails for a directory).
+    /// A temporary file beside `path`, to become `path` when committed (fails for a target
+    /// the output rule refuses, see [`check_target`]).
     pub fn create(path: &Path) -> std::io::Result<AtomicFile> {
-        if path.is_dir() {
-            return Err(std::io::Error::new(
-                std::io::ErrorKind::IsADirectory,
-                format!("'{}' is a directory", path.display()),
-            ));
-        }
-        let tmp = create_temp(path)?;
-        let registered = Registered::new(tmp.path());
+        check_target(path)?;
         Ok(AtomicFile {
-            tmp,
-            _registered: registered,
+            tmp: create_temp(path)?,
             path: path.to_path_buf(),
         })
     }
@@ -158,20 +317,12 @@ impl AtomicFile {
 
     /// The temporary file (clone the handle to give a writer its own).
     pub fn file(&mut self) -> &mut std::fs::File {
-        self.tmp.as_file_mut()
+        &mut self.tmp.file
     }
 
     /// Flush to disk and rename over the target.
-    pub fn commit(mut self) -> std::io::Result<()> {
-        self.tmp.as_file_mut().flush()?;
-        if let Ok(m) = std::fs::metadata(&self.path)
-            && m.is_file()
-        {
-            let _ = self.tmp.as_file().set_permissions(m.permissions());
-        }
-        self.tmp.as_file().sync_all()?;
-        self.tmp.persist(&self.path).map_err(|e| e.error)?;
-        Ok(())
+    pub fn commit(self) -> std::io::Result<()> {
+        self.tmp.commit(&self.path)
     }
 }
 
@@ -248,14 +399,14 @@ mod tests {
         let dir = scratch("pending");
         let p = dir.join("b.txt");
         write_atomic_with(&p, |f| {
-            let pending = PENDING.lock().unwrap().clone();
+            let pending = registry().pending.clone();
             let mine: Vec<_> = pending.iter().filter(|q| q.starts_with(&dir)).collect();
             assert_eq!(mine.len(), 1);
             assert!(mine[0].exists());
             f.write_all(b"x")
         })
         .unwrap();
-        assert!(!PENDING.lock().unwrap().iter().any(|q| q.starts_with(&dir)));
+        assert!(!registry().pending.iter().any(|q| q.starts_with(&dir)));
         // An interrupt handler removes the file being written; the save then fails cleanly
         // and the old file stays.
         let r = write_atomic_with(&p, |f| {

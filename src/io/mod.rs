@@ -21,6 +21,7 @@ pub mod render_state;
 pub mod scene;
 pub mod strip_png;
 pub mod svg;
+pub mod target;
 pub mod ugr;
 pub mod video;
 pub(crate) mod xml;

@@ -9,7 +9,7 @@ use std::process::{Child, ChildStdin, Command, Stdio};
 
 use image::RgbaImage;
 
-use crate::io::atomic::AtomicFile;
+use crate::io::atomic::{AtomicFile, WriterProcess};
 
 /// Most frames per second a video may have.
 pub const MAX_FPS: f64 = 1000.0;
@@ -152,6 +152,9 @@ enum Sink {
         stdin: Option<ChildStdin>,
         stderr: std::thread::JoinHandle<String>,
         tmp: AtomicFile,
+        /// ffmpeg writes the temporary file by name: registered, so that a program ending on
+        /// a signal stops it before removing the file.
+        writer: WriterProcess,
     },
     Gif {
         enc: Box<image::codecs::gif::GifEncoder<std::fs::File>>,
@@ -214,6 +217,7 @@ impl Video {
                     s
                 });
                 Sink::Ffmpeg {
+                    writer: WriterProcess::register(child.id()),
                     child,
                     stdin,
                     stderr,
@@ -343,9 +347,11 @@ impl Video {
                 stdin,
                 stderr,
                 tmp,
+                writer,
             } => {
                 drop(stdin);
                 let status = child.wait().map_err(io)?;
+                drop(writer);
                 let stderr = stderr.join().unwrap_or_default();
                 if !status.success() {
                     return Err(VideoError::FfmpegFailed {

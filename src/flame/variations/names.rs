@@ -136,7 +136,8 @@ const PARAM_ALIASES: &[(&str, &str)] = &[
 
 /// Variation names other programs use for a variation of the registry (lower case), also as
 /// the prefix of its parameters.
-const NAME_ALIASES: &[(&str, &str)] = &[("flower_db", "flowerdb")];
+/// (JWildfire's `flower_db` is its own variation, not Fractorium's `flowerdb`.)
+const NAME_ALIASES: &[(&str, &str)] = &[];
 
 /// `key` (lower case) with an alias prefix replaced by the registry's name.
 fn unalias(key: &str) -> String {
@@ -183,11 +184,8 @@ pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
 /// render: an attribute with one of these names is an unsupported variation rather than some
 /// other program's setting.
 const FOREIGN_VARIATIONS: &[&str] = &[
-    "bwraps7",
     "cross2",
-    "mandelbrot",
     "oscope",
-    "pdj3d",
     "perspective2",
     "wedge_julia_3D",
     "whorl3D",

@@ -19,6 +19,13 @@ use super::{
     jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_prepost, jwf_symmetry,
     jwf_text,
 };
+// JWildfire variations, first set of files.
+use super::{
+    jwf_a_complex, jwf_a_crops, jwf_a_cuts, jwf_a_dc, jwf_a_fractals, jwf_a_ifs, jwf_a_plane,
+    jwf_a_sdf3d, jwf_a_shapes, jwf_a_surfaces, jwf_a_warps,
+};
+// JWildfire variations, second part.
+use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -60,7 +67,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 29] = [
+const FILES: [&[VarDef]; 47] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -90,11 +97,31 @@ const FILES: [&[VarDef]; 29] = [
     jwf_prepost::DEFS,
     jwf_symmetry::DEFS,
     jwf_text::DEFS,
+    // JWildfire variations, second part.
+    jwf_b_3d::DEFS,
+    jwf_b_complex::DEFS,
+    jwf_b_crops::DEFS,
+    jwf_b_cuts::DEFS,
+    jwf_b_dc::DEFS,
+    jwf_b_ifs::DEFS,
+    jwf_b_shapes::DEFS,
+    // JWildfire variations, first set of files.
+    jwf_a_complex::DEFS,
+    jwf_a_surfaces::DEFS,
+    jwf_a_warps::DEFS,
+    jwf_a_crops::DEFS,
+    jwf_a_plane::DEFS,
+    jwf_a_ifs::DEFS,
+    jwf_a_shapes::DEFS,
+    jwf_a_sdf3d::DEFS,
+    jwf_a_cuts::DEFS,
+    jwf_a_fractals::DEFS,
+    jwf_a_dc::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
 /// variation missing here comes after these, in the order of [`FILES`].
-const JWILDFIRE_ORDER: [&str; 71] = [
+const JWILDFIRE_ORDER: [&str; 131] = [
     "rose_wf",
     "chrysanthemum",
     "complex",
@@ -149,6 +176,207 @@ const JWILDFIRE_ORDER: [&str; 71] = [
     "dc_circuits",
     "dc_turbulence",
     "dc_gabornoise",
+    // JWildfire variations, second part.
+    "affine3D",
+    "tangent3D",
+    "inflateZ_1",
+    "inflateZ_3",
+    "inflateZ_5",
+    "cylinder_apo",
+    "onion",
+    "sphere_nja",
+    "ztwister",
+    "post_zscale_wf",
+    "swirl3D_wf",
+    "pdj3D",
+    "log_tile2",
+    "dinis_surface_wf",
+    "lorenz_js",
+    "gingerbread_man",
+    "spherecrop",
+    "seashell3D",
+    "cos2_bs",
+    "csc2_bs",
+    "csch2_bs",
+    "sech2_bs",
+    "sinh2_bs",
+    "exp2_bs",
+    "atan",
+    "acoth",
+    "sqrt_acoth",
+    "sqrt_asech",
+    "sqrt_asinh",
+    "exp_multi",
+    "csin",
+    "plusrecip",
+    "inverted_julia",
+    "julia_outside",
+    "cpow3_wf",
+    "csc_squared",
+    "bipolar2",
+    "bulge",
+    "crop_box",
+    "crop_x",
+    "crop_trapezoid",
+    "crop_polygon",
+    "cut_tileillusion",
+    "cut_sqcir",
+    "cut_rgrid",
+    "cut_zigzag",
+    "dc_acrilic",
+    "dc_vortex",
+    "dc_portal",
+    "glsl_hoshi",
+    "invtree_js",
+    "wallpaper_js",
+    "woggle_js",
+    "crown_js",
+    "triangle",
+    "cell2",
+    "waves2_wf",
+    "waves4_wf",
+    "cloverleaf_wf",
+    "yin_yang",
+    "heart_wf",
+    "layered_spiral",
+    "holesq",
+    "stripfit",
+    "squircular",
+    "hole2",
+    "devil_warp",
+    "bsplit",
+    "minkowskope",
+    "circular2",
+    "vogel",
+    "fresnel",
+    "hyperbolicellipse",
+    "whirligig",
+    "glynnia3",
+    "vortex",
+    "oak_leaf",
+];
+
+/// The JWildfire variations added with the first set of files, in the order ugnis took them in
+/// (after [`JWILDFIRE_ORDER`]).
+const JWILDFIRE_ORDER_A: &[&str] = &[
+    "sin2_bs",
+    "cosh2_bs",
+    "cot2_bs",
+    "tan2_bs",
+    "tanh2_bs",
+    "coth2_bs",
+    "sec2_bs",
+    "acosh",
+    "acosech",
+    "sqrt_acosh",
+    "sqrt_atanh",
+    "sqrt_acosech",
+    "log_apo",
+    "invpolar",
+    "bi_linear",
+    "joukowski",
+    "ennepers2",
+    "petal3D_apo",
+    "whitney_umbrella",
+    "butterfly3D",
+    "inflateZ_2",
+    "inflateZ_4",
+    "inflateZ_6",
+    "sph3D",
+    "spherical3D_wf",
+    "onion2",
+    "boxfold",
+    "erf3D",
+    "bwraps7",
+    "rings3",
+    "waves3_wf",
+    "invsquircular",
+    "c_symmetry",
+    "tunnel",
+    "corners",
+    "disc3",
+    "lazysensen",
+    "pTransform",
+    "spligon",
+    "anamorphcyl",
+    "clifford_js",
+    "gridout2",
+    "chunk",
+    "crop_triangle",
+    "crop_rhombus",
+    "crop_cross",
+    "crop_vesica",
+    "crop3D",
+    "flower_db",
+    "atan2_spirals",
+    "minkQM",
+    "scrambly",
+    "colorscale_wf",
+    "bubble_wf",
+    "dustpoint",
+    "threepoint_js",
+    "hadamard_js",
+    "lace_js",
+    "circular",
+    "apollony",
+    "apocarpet_js",
+    "siercarpet_js",
+    "sattractor_js",
+    "cannabiscurve_wf",
+    "maple_leaf",
+    "japanese_maple_leaf",
+    "cone",
+    "r_circleblur",
+    "spliptic_bs",
+    "tile_reverse",
+    "target_sp",
+    "box3D",
+    "bbox3D",
+    "ellipsoid3D",
+    "hexprism3D",
+    "ocylinder3D",
+    "pyramid3D",
+    "solidangle3D",
+    "cappedtorus3D",
+    "ocappedcone3D",
+    "oroundcone3D",
+    "cut_fun",
+    "mandelbrot",
+    "dc_starsfield",
+    "petal3D",
+    "mandelbox2D",
+    "truchet2",
+    "combimirror",
+    "post_bulbtorus_crop",
+    "dc_voronoise",
+    "dc_menger",
+    "elliptic2",
+    "parallel",
+    "shredded",
+    "hypertile3D2b",
+    "glynnlissa",
+    "glynnSShape",
+    "jubiQ",
+    "cut_triskel",
+    "cut_yuebing",
+    "cut_hexdots",
+    "cut_x",
+    "cut_sincos",
+    "cut_sqsplits",
+    "cut_chains",
+    "cut_fractal",
+    "cut_btruchet",
+    "cut_btree",
+    "cut_spiralcb",
+    "cut_snowflake",
+    "cut_booleans",
+    "cut_web",
+    "cut_glypho",
+    "cut_bricks",
+    "dc_booleans",
+    "dc_glypho",
+    "dc_moebiuslog",
+    // JWildfire's own pre_/post_ classes and prepost variations.
     "pre_affine3D",
     "post_affine3D",
     "pre_spin_z",
@@ -168,6 +396,11 @@ const JWILDFIRE_ORDER: [&str; 71] = [
     "ringtile",
 ];
 
+/// Every JWildfire variation's name in registry order.
+fn jwildfire_order() -> impl Iterator<Item = &'static str> {
+    JWILDFIRE_ORDER.iter().chain(JWILDFIRE_ORDER_A).copied()
+}
+
 /// Every variation in registry order (see the module documentation).
 fn ordered() -> Vec<&'static VarDef> {
     let others = || FILES.iter().flat_map(|f| f.iter());
@@ -176,10 +409,9 @@ fn ordered() -> Vec<&'static VarDef> {
     fractorium.sort_by_key(|d| d.name.to_ascii_lowercase());
     let mut jwildfire: Vec<&'static VarDef> = others().filter(|d| d.has(flag::JWILDFIRE)).collect();
     jwildfire.sort_by_key(|d| {
-        JWILDFIRE_ORDER
-            .iter()
-            .position(|n| *n == d.name)
-            .unwrap_or(JWILDFIRE_ORDER.len())
+        jwildfire_order()
+            .position(|n| n == d.name)
+            .unwrap_or(usize::MAX)
     });
     flam3::DEFS
         .iter()
@@ -311,7 +543,7 @@ mod tests {
             .filter(|d| d.has(flag::JWILDFIRE))
             .map(|d| d.name)
             .collect();
-        assert_eq!(jwildfire, JWILDFIRE_ORDER);
+        assert_eq!(jwildfire, jwildfire_order().collect::<Vec<_>>());
     }
 
     /// flam3's list keeps its ids and Fractorium's catalogue follows in alphabetical order.
@@ -328,6 +560,6 @@ mod tests {
             fractorium.is_sorted(),
             "Fractorium's catalogue out of order"
         );
-        assert_eq!(99 + fractorium.len() + JWILDFIRE_ORDER.len(), count());
+        assert_eq!(99 + fractorium.len() + jwildfire_order().count(), count());
     }
 }

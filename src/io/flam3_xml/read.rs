@@ -1,5 +1,7 @@
 //! Reading a document: the root, every `<flame>` at any depth, the `.fla` rules on names.
 
+use std::collections::HashMap;
+
 use quick_xml::events::{BytesStart, Event};
 
 use super::context::{Ctx, R};
@@ -17,7 +19,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
     let mut out = FlameFile::default();
     let mut root_seen = false;
     // Names of the flames so far with their offsets (for the `.fla` rule of unique names).
-    let mut names: Vec<(String, usize)> = Vec::new();
+    let mut names: HashMap<String, usize> = HashMap::new();
     loop {
         let p = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
         match &p.event {
@@ -29,7 +31,8 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
                     root_seen = true;
                     read_root(&mut cx, e, &tag, p.start, &mut out)?;
                 }
-                if tag == "flame" {
+                // flam3's <flame>, or JWildfire's <jwf-flame> (a flame of <layer> elements).
+                if tag == "flame" || tag == "jwf-flame" {
                     if out.flames.len() >= MAX_FLAMES {
                         return Err(cx.err(
                             p.start,
@@ -52,7 +55,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
             &opts.file,
             Pos::File,
             "XML002",
-            "no <flame> element in the document",
+            "no <flame> or <jwf-flame> element in the document",
         ));
     }
     Ok(Parsed {
@@ -83,7 +86,7 @@ fn check_fla_name(
     cx: &Ctx,
     flame: &Flame,
     start: usize,
-    names: &mut Vec<(String, usize)>,
+    names: &mut HashMap<String, usize>,
 ) -> R<()> {
     if flame.name.is_empty() {
         return Err(cx.err(
@@ -92,7 +95,7 @@ fn check_fla_name(
             "every flame in a .fla file needs a non-empty name",
         ));
     }
-    if let Some((_, first)) = names.iter().find(|(n, _)| *n == flame.name) {
+    if let Some(first) = names.get(&flame.name) {
         let Pos::LineCol(l, c) = cx.map.pos(*first) else {
             unreachable!()
         };
@@ -105,7 +108,7 @@ fn check_fla_name(
             ),
         ));
     }
-    names.push((flame.name.clone(), start));
+    names.insert(flame.name.clone(), start);
     Ok(())
 }
 

@@ -58,9 +58,11 @@ pub fn flame_element(f: &Flame) -> String {
 
 fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     let n = fmt_num;
+    // A flame of layers is written as JWildfire writes it.
+    let tag = if f.has_layers() { "jwf-flame" } else { "flame" };
     let _ = write!(
         s,
-        "{ind}<flame name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
+        "{ind}<{tag} name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
          supersample=\"{}\" filter=\"{}\" filter_shape=\"{}\" quality=\"{}\" background=\"{} {} {}\" brightness=\"{}\" \
          gamma=\"{}\" gamma_threshold=\"{}\" vibrancy=\"{}\" highlight_power=\"{}\" estimator_radius=\"{}\" \
          estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\"{} ugnis_contrast=\"{}\"",
@@ -147,32 +149,49 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         }
     }
     write_anim_attrs(s, &f.anim);
+    super::jwf_look::write(s, f);
     let jwf = jwf_curves::for_writing(f);
     for (k, v) in jwf.as_ref().map_or(&f.extra_attrs, |w| &w.flame) {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
     s.push_str(">\n");
     let inner = format!("{ind}   ");
-    for (i, x) in f.xforms.iter().enumerate() {
-        let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
-        let extra = extra.unwrap_or(&x.extra_attrs);
-        write_xform(s, x, extra, "xform", &inner, f.dialect());
+    let own = |s: &mut String, inner: &str| {
+        for (i, x) in f.xforms.iter().enumerate() {
+            let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
+            let extra = extra.unwrap_or(&x.extra_attrs);
+            write_xform(s, x, extra, "xform", inner, f.dialect());
+        }
+        for (k, fx) in f.finals().enumerate() {
+            let extra = jwf
+                .as_ref()
+                .and_then(|w| w.final_xform.as_ref())
+                .filter(|_| k == 0);
+            let extra = extra.unwrap_or(&fx.extra_attrs);
+            write_xform(s, fx, extra, "finalxform", inner, f.dialect());
+        }
+        write_palette(s, f.render_colors(), inner);
+    };
+    if f.has_layers() {
+        let other = |s: &mut String, l: &crate::flame::layers::Layer, inner: &str| {
+            for x in &l.xforms {
+                write_xform(s, x, &x.extra_attrs, "xform", inner, f.dialect());
+            }
+            for x in &l.finals {
+                write_xform(s, x, &x.extra_attrs, "finalxform", inner, f.dialect());
+            }
+            write_palette(s, &l.palette.colors, inner);
+        };
+        super::layers::write_layers(s, f, &inner, own, other);
+    } else {
+        own(s, &inner);
     }
-    for (k, fx) in f.finals().enumerate() {
-        let extra = jwf
-            .as_ref()
-            .and_then(|w| w.final_xform.as_ref())
-            .filter(|_| k == 0);
-        let extra = extra.unwrap_or(&fx.extra_attrs);
-        write_xform(s, fx, extra, "finalxform", &inner, f.dialect());
-    }
-    write_palette(s, f.render_colors(), &inner);
     let written = jwf.as_ref().map_or(&[][..], |w| &w.curves[..]);
     write_keys(s, &f.keys, written, &inner);
     for c in &f.extra_children {
         let _ = writeln!(s, "{inner}{}", c.trim());
     }
-    let _ = writeln!(s, "{ind}</flame>");
+    let _ = writeln!(s, "{ind}</{tag}>");
 }
 
 /// An xform element; `extra` are the kept attributes to write (the xform's own, or with its

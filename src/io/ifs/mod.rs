@@ -104,26 +104,30 @@ impl IfsFile {
     }
 }
 
-/// Fractint takes two names as the same when their first [`NAME_LEN`] characters are equal,
-/// ignoring case.
-fn same_name(a: &str, b: &str) -> bool {
-    let k = |s: &str| s.chars().take(NAME_LEN).collect::<String>().to_lowercase();
-    k(a) == k(b)
+/// What Fractint compares of a name: its first [`NAME_LEN`] characters, ignoring case (two
+/// names with the same key are the same for Fractint). Kept in a hash map, so that checking
+/// every name of a file takes time linear in its entries.
+fn name_key(name: &str) -> String {
+    name.chars()
+        .take(NAME_LEN)
+        .collect::<String>()
+        .to_lowercase()
 }
 
 /// Write an `.ifs` file: CRLF, two-space indent, a blank line between entries. Names that
 /// Fractint would confuse (equal in their first 18 characters, ignoring case) are an error.
 pub fn write(f: &IfsFile) -> Result<String, IfsWriteError> {
-    for (i, a) in f.entries.iter().enumerate() {
+    let mut seen = std::collections::HashMap::new();
+    for a in &f.entries {
         if a.name.is_empty()
             || a.name
                 .contains(|c: char| c.is_whitespace() || "(){};".contains(c))
         {
             return Err(IfsWriteError::EntryName(a.name.clone()));
         }
-        if let Some(b) = f.entries[..i].iter().find(|b| same_name(&a.name, &b.name)) {
+        if let Some(b) = seen.insert(name_key(&a.name), &a.name) {
             return Err(IfsWriteError::SameName {
-                first: b.name.clone(),
+                first: b.clone(),
                 second: a.name.clone(),
             });
         }

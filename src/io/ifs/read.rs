@@ -1,7 +1,9 @@
 //! Reading `.ifs` text: `name { … }` entries (2-D rows of 7 numbers, `(3D)` rows of 13) with
 //! Fractint's tolerances and warnings, and old files of bare rows without a header.
 
-use super::{FRACTINT_MAX_ROWS, IfsEntry, IfsFile, MAX_ENTRIES, MAX_ROWS, NAME_LEN, same_name};
+use std::collections::HashMap;
+
+use super::{FRACTINT_MAX_ROWS, IfsEntry, IfsFile, MAX_ENTRIES, MAX_ROWS, NAME_LEN, name_key};
 use crate::io::diag::{Diagnostic, NumberError, Parsed, Pos, lines, parse_number};
 use crate::io::fractint_text::{Header, Reporter, Word, check_name, header, strip_comment, words};
 
@@ -25,6 +27,8 @@ impl OpenEntry {
 struct Reader<'a> {
     rep: Reporter<'a>,
     out: IfsFile,
+    /// The entries so far by the part of their name Fractint compares (index of the first).
+    names: HashMap<String, usize>,
 }
 
 type R<T> = Result<T, Diagnostic>;
@@ -106,6 +110,7 @@ fn parse_entries(text: &str, file: &str) -> R<Parsed<IfsFile>> {
     let mut rd = Reader {
         rep: Reporter::new(text, file),
         out: IfsFile::default(),
+        names: HashMap::new(),
     };
     let mut cur: Option<OpenEntry> = None;
     for (base, line) in lines(text) {
@@ -405,12 +410,15 @@ impl Reader<'_> {
                 }
             }
         }
-        if let Some(prev) = self.out.entries.iter().find(|e| same_name(&e.name, name)) {
+        let next = self.out.entries.len();
+        if let Some(&prev) = self.names.get(&name_key(name)) {
             let msg = format!(
                 "entry name '{name}' repeats '{}' (Fractint compares the first {NAME_LEN} characters, ignoring case)",
-                prev.name
+                self.out.entries[prev].name
             );
             self.rep.warn(hdr, "IFS012", msg);
+        } else {
+            self.names.insert(name_key(name), next);
         }
     }
 }

@@ -8,6 +8,8 @@
 //! skipped, and the entries around it open. Only a file without any entry that opens is an
 //! error: its first problem.
 
+use std::collections::HashMap;
+
 use super::{LFile, LINE_LIMIT, MAX_ENTRIES};
 use crate::explore::lsystem::{self, ANGLE_DIVISIONS, Angle, LSystem, MAX_RULE_LEN, RESERVED};
 use crate::io::diag::{Diagnostic, Parsed, Pos, lines};
@@ -46,6 +48,9 @@ struct Reader<'a> {
     problems: Vec<Diagnostic>,
     state: State,
     out: LFile,
+    /// The entries so far by their name in lower case (index of the first): finding a repeated
+    /// name takes constant time, reading a file linear time.
+    names: HashMap<String, usize>,
 }
 
 /// Parse the text of an `.l` file.
@@ -56,6 +61,7 @@ pub fn parse(text: &str, file: &str) -> R<Parsed<LFile>> {
         problems: Vec::new(),
         state: State::Outside,
         out: LFile::default(),
+        names: HashMap::new(),
     };
     for (base, line) in lines(text) {
         if line.chars().count() >= LINE_LIMIT {
@@ -220,15 +226,10 @@ impl Reader<'_> {
                 format!("more than {MAX_ENTRIES} entries in one file"),
             ));
         }
-        if let Some(prev) = self
-            .out
-            .entries
-            .iter()
-            .find(|e| e.name.eq_ignore_ascii_case(name))
-        {
+        if let Some(&prev) = self.names.get(&name.to_ascii_lowercase()) {
             let msg = format!(
                 "a second entry named '{name}' (Fractint opens only the first, '{}')",
-                prev.name
+                self.out.entries[prev].name
             );
             self.rep.warn(first.off, "LSY014", msg);
         }
@@ -292,6 +293,9 @@ impl Reader<'_> {
         };
         let mut s = LSystem::new(&o.name, &axiom, &[], Angle::Divisions(n));
         s.rules = o.rules;
+        self.names
+            .entry(o.name.to_ascii_lowercase())
+            .or_insert(self.out.entries.len());
         self.out.entries.push(s);
     }
 

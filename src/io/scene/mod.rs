@@ -83,6 +83,9 @@ pub struct ParsedScene {
     pub notes: Vec<String>,
     /// Values that were changed to fit (clamped) and other remarks.
     pub warnings: Vec<Diagnostic>,
+    /// The files the scene reads (its textures' pictures, flames and views), as named
+    /// from the scene's directory: a command writing beside them checks it replaces none.
+    pub files: Vec<std::path::PathBuf>,
     /// The file's name and where each texture is defined in it.
     name: String,
     texture_pos: Vec<Pos>,
@@ -99,6 +102,7 @@ impl ParsedScene {
             warnings,
             name,
             texture_pos,
+            ..
         } = self;
         let scene = spec.build().map_err(|e| {
             Diagnostic::error(
@@ -237,9 +241,12 @@ pub fn parse_spec(text: &str, name: &str, base: &Path) -> Result<ParsedScene, Di
         patches: 0,
     };
     let mut textures = Vec::new();
+    let mut files = Vec::new();
     for t in spec.texture.unwrap_or_default() {
         let pos = at(Some(t.span()));
-        textures.push(c.texture(t.into_inner(), pos)?);
+        let t = t.into_inner();
+        files.extend(t.file.as_ref().map(|f| base.join(f)));
+        textures.push(c.texture(t, pos)?);
     }
     let mut objects = Vec::new();
     for (k, o) in spec.object.unwrap_or_default().into_iter().enumerate() {
@@ -255,6 +262,7 @@ pub fn parse_spec(text: &str, name: &str, base: &Path) -> Result<ParsedScene, Di
         texture_names: c.texture_names,
         notes: c.notes,
         warnings: c.warnings,
+        files,
         name: name.to_string(),
         texture_pos: c.texture_pos,
     })
