@@ -112,9 +112,15 @@ const NOT_YET: &[(&str, &str)] = &[
         "d_spherical",
         "JWildfire's parameter 'd_spher_weight' is missing",
     ),
-    ("dc_acrilic", "not implemented"),
+    (
+        "dc_acrilic",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_apollonian", "not implemented"),
-    ("dc_booleans", "not implemented"),
+    (
+        "dc_booleans",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_bubble", "JWildfire's parameter 'invert' is missing"),
     ("dc_butterflies", "not implemented"),
     ("dc_cairotiles", "not implemented"),
@@ -123,7 +129,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_circlesblue", "not implemented"),
     (
         "dc_circuits",
-        "colour differs; rgb differs; statistics differ; call sequence differs",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
     ("dc_code", "not implemented"),
     ("dc_crackle_wf", "not implemented"),
@@ -136,9 +142,8 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_fractcolor", "not implemented"),
     (
         "dc_gabornoise",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
-    ("dc_glypho", "not implemented"),
     ("dc_gmandelbroot", "not implemented"),
     ("dc_gnarly", "not implemented"),
     ("dc_grid3D", "not implemented"),
@@ -148,7 +153,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_hyperbolictile", "not implemented"),
     (
         "dc_inversion",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
     ("dc_kaleidocomplex", "not implemented"),
     ("dc_kaleidoscopic", "not implemented"),
@@ -158,25 +163,37 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_layers", "not implemented"),
     (
         "dc_mandala",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
     ("dc_mandbrot", "not implemented"),
     ("dc_mandelbox2D", "not implemented"),
-    ("dc_menger", "not implemented"),
-    ("dc_moebiuslog", "not implemented"),
+    (
+        "dc_menger",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
+    (
+        "dc_moebiuslog",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_pentatiles", "not implemented"),
     ("dc_perlin", "JWildfire's parameter 'color_only' is missing"),
     (
         "dc_poincaredisc",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
-    ("dc_portal", "not implemented"),
+    (
+        "dc_portal",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_quadtree", "not implemented"),
     ("dc_randomoctree", "not implemented"),
     ("dc_rotations", "not implemented"),
     ("dc_spacefold", "not implemented"),
     ("dc_squares", "not implemented"),
-    ("dc_starsfield", "not implemented"),
+    (
+        "dc_starsfield",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_sunflower", "not implemented"),
     ("dc_tesla", "not implemented"),
     ("dc_tree", "not implemented"),
@@ -186,10 +203,16 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_truchet", "not implemented"),
     (
         "dc_turbulence",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
-    ("dc_voronoise", "not implemented"),
-    ("dc_vortex", "not implemented"),
+    (
+        "dc_voronoise",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
+    (
+        "dc_vortex",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_warping", "not implemented"),
     ("dc_worley", "not implemented"),
     ("de_stijl", "not implemented"),
@@ -851,4 +874,27 @@ fn jwildfire_variations_match_their_vectors() {
         }
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// Every JWildfire variation ugnis renders goes by JWildfire's own name where names are listed
+/// (`ugnis info --variations`, the editor's variation list: a variation's name in each form
+/// reads back as that variation and form), so typing JWildfire's name finds it.
+#[test]
+fn jwildfire_names_are_listed_as_jwildfire_writes_them() {
+    let mut unlisted = Vec::new();
+    let mut known = 0;
+    for name in jwildfire_variations().keys() {
+        let Some((id, form)) = variations::parse_name(name) else {
+            continue;
+        };
+        known += 1;
+        let listed = variations::attr_name(id, form);
+        if !listed.eq_ignore_ascii_case(name)
+            || variations::info(id).has(variations::flag::HIDDEN)
+        {
+            unlisted.push(format!("{name} (listed as {listed})"));
+        }
+    }
+    eprintln!("{known} of JWildfire's names are known");
+    assert!(unlisted.is_empty(), "not listed by their name: {unlisted:?}");
 }
