@@ -889,12 +889,14 @@ fn jwildfire_names_are_listed_as_jwildfire_writes_them() {
         };
         known += 1;
         let listed = variations::attr_name(id, form);
-        if !listed.eq_ignore_ascii_case(name)
-            || variations::info(id).has(variations::flag::HIDDEN)
+        if !listed.eq_ignore_ascii_case(name) || variations::info(id).has(variations::flag::HIDDEN)
         {
             unlisted.push(format!("{name} (listed as {listed})"));
         }
     }
     eprintln!("{known} of JWildfire's names are known");
-    assert!(unlisted.is_empty(), "not listed by their name: {unlisted:?}");
+    assert!(
+        unlisted.is_empty(),
+        "not listed by their name: {unlisted:?}"
+    );
 }

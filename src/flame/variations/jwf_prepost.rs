@@ -228,18 +228,7 @@ fn prep_dcztransl(v: &mut Prepared) {
 /// Xyrus02's z by colour: x and y weighted, z the colour's place in the range (times z
 /// unless `overwrite`).
 fn dcztransl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [_, _, factor, overwrite, clamp] = v.params();
-    let [lo, width] = v.derived();
-    let mut zf = factor * (t.color - lo) / width;
-    if clamp != 0.0 {
-        zf = zf.clamp(0.0, 1.0);
-    }
-    let z = if overwrite == 0.0 {
-        v.w * t.z * zf
-    } else {
-        v.w * zf
-    };
-    [v.w * t.x, v.w * t.y, z]
+    super::fr_direct_colour::ztransl_by(v, t, t.color)
 }
 
 /// A damped sine wave along the distance from the centre in a plane (axis 0: xy, moving z;
