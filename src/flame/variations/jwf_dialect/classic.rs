@@ -115,8 +115,10 @@ fn flower(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     [r * t.x, r * t.y, 0.0]
 }
 
-/// JWildfire's constant 0.31830989 for 1/π.
+/// polar as JWildfire computes it: the angle from the y axis over π, the radius less 1.
 fn polar(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    // JWildfire's rounded 1/π (kept: the vectors follow it, not the nearest double).
+    #[allow(clippy::approx_constant)]
     const R_PI: f64 = 0.31830989;
     let ny = (t.x * t.x + t.y * t.y).sqrt() - 1.0;
     [v.w * t.x.atan2(t.y) * R_PI, v.w * ny, 0.0]
