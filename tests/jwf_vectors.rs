@@ -33,21 +33,17 @@ const NOT_YET: &[(&str, &str)] = &[
     ("arctruchet", "not implemented"),
     ("asteria", "x, y differ"),
     ("bSwirl", "x, y differ"),
-    ("blade", "statistics differ"),
     ("blade3D", "statistics differ"),
-    ("blur3D", "call sequence differs"),
     ("boarders", "statistics differ"),
     ("boarders2", "statistics differ"),
     ("brownian_js", "not implemented"),
     ("brush_stroke_wf", "not implemented"),
-    ("bubble", "z differs"),
     ("bubbleT3D", "JWildfire's parameter 'exponent_z' is missing"),
     ("butterfly_fay", "not implemented"),
     ("bwrands", "not implemented"),
     ("c_var", "not implemented"),
     ("cactusGlobe", "not implemented"),
     ("camouflage", "not implemented"),
-    ("cannabiscurve_wf", "not implemented"),
     ("cappedcone3D", "not implemented"),
     ("capsule3D", "not implemented"),
     ("cardioid", "x, y differ at the origin"),
@@ -64,9 +60,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "circlesplit",
         "JWildfire's parameter 'cs_radius' is missing",
     ),
-    ("circular", "not implemented"),
-    ("circular2", "not implemented"),
-    ("cloverleaf_wf", "not implemented"),
     ("colordomain", "not implemented"),
     ("colormap_wf", "not implemented"),
     ("complex", "x, y differ at the origin"),
@@ -80,11 +73,8 @@ const NOT_YET: &[(&str, &str)] = &[
     ("cotq", "x, y, z differ"),
     ("cpow2", "JWildfire's parameter 'range' is missing"),
     ("cpow3", "statistics differ"),
-    ("cpow3_wf", "not implemented"),
     ("crob", "x, y differ; statistics differ"),
-    ("crop", "x, y, z differ; hide flag differs"),
     ("crop_x", "not implemented"),
-    ("cross", "x, y, z differ"),
     ("cschq", "x, y, z differ"),
     ("cscq", "x, y, z differ"),
     ("curliecue", "not implemented"),
@@ -117,15 +107,20 @@ const NOT_YET: &[(&str, &str)] = &[
     ("cut_tstruchet", "not implemented"),
     ("cut_vasarely", "not implemented"),
     ("cut_wood", "not implemented"),
-    ("cylinder", "z differs"),
     ("cylinder3D", "not implemented"),
     (
         "d_spherical",
         "JWildfire's parameter 'd_spher_weight' is missing",
     ),
-    ("dc_acrilic", "not implemented"),
+    (
+        "dc_acrilic",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_apollonian", "not implemented"),
-    ("dc_booleans", "not implemented"),
+    (
+        "dc_booleans",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_bubble", "JWildfire's parameter 'invert' is missing"),
     ("dc_butterflies", "not implemented"),
     ("dc_cairotiles", "not implemented"),
@@ -134,12 +129,11 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_circlesblue", "not implemented"),
     (
         "dc_circuits",
-        "colour differs; rgb differs; statistics differ; call sequence differs",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
     ("dc_code", "not implemented"),
     ("dc_crackle_wf", "not implemented"),
     ("dc_cracklep_wf", "not implemented"),
-    ("dc_cylinder", "call sequence differs"),
     ("dc_cylinder2", "not implemented"),
     ("dc_dmodulus", "not implemented"),
     ("dc_ducks", "not implemented"),
@@ -148,9 +142,8 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_fractcolor", "not implemented"),
     (
         "dc_gabornoise",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
-    ("dc_glypho", "not implemented"),
     ("dc_gmandelbroot", "not implemented"),
     ("dc_gnarly", "not implemented"),
     ("dc_grid3D", "not implemented"),
@@ -160,7 +153,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_hyperbolictile", "not implemented"),
     (
         "dc_inversion",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
     ("dc_kaleidocomplex", "not implemented"),
     ("dc_kaleidoscopic", "not implemented"),
@@ -170,25 +163,37 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_layers", "not implemented"),
     (
         "dc_mandala",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
     ("dc_mandbrot", "not implemented"),
     ("dc_mandelbox2D", "not implemented"),
-    ("dc_menger", "not implemented"),
-    ("dc_moebiuslog", "not implemented"),
+    (
+        "dc_menger",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
+    (
+        "dc_moebiuslog",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_pentatiles", "not implemented"),
     ("dc_perlin", "JWildfire's parameter 'color_only' is missing"),
     (
         "dc_poincaredisc",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
-    ("dc_portal", "not implemented"),
+    (
+        "dc_portal",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_quadtree", "not implemented"),
     ("dc_randomoctree", "not implemented"),
     ("dc_rotations", "not implemented"),
     ("dc_spacefold", "not implemented"),
     ("dc_squares", "not implemented"),
-    ("dc_starsfield", "not implemented"),
+    (
+        "dc_starsfield",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_sunflower", "not implemented"),
     ("dc_tesla", "not implemented"),
     ("dc_tree", "not implemented"),
@@ -198,10 +203,16 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dc_truchet", "not implemented"),
     (
         "dc_turbulence",
-        "colour differs; rgb differs; statistics differ",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
     ),
-    ("dc_voronoise", "not implemented"),
-    ("dc_vortex", "not implemented"),
+    (
+        "dc_voronoise",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
+    (
+        "dc_vortex",
+        "rgb differs where Gradient = 1 (the gradient's nearest colour: taken as 0)",
+    ),
     ("dc_warping", "not implemented"),
     ("dc_worley", "not implemented"),
     ("de_stijl", "not implemented"),
@@ -225,7 +236,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("epispiral_wf", "x, y differ"),
     ("erf", "x, y differ"),
     ("estiq", "y, z differ"),
-    ("exblur", "call sequence differs"),
     ("f_complex", "not implemented"),
     ("falloff2", "x, y, z differ; statistics differ"),
     (
@@ -234,9 +244,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     ("fdisc", "JWildfire's parameter 'ashift' is missing"),
     ("flame_bulb", "not implemented"),
-    ("flatten", "x, y differ; runs as regular, JWildfire as post"),
     ("flora", "not implemented"),
-    ("flower", "x, y differ at the origin"),
     ("foci_3D", "x, y, z differ at the origin"),
     ("fract_dragon_wf", "not implemented"),
     ("fract_formula_julia_wf", "not implemented"),
@@ -270,7 +278,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("glsl_starsfield", "not implemented"),
     ("glynnSim1", "statistics differ"),
     ("glynnSim2B", "not implemented"),
-    ("glynnSim3", "statistics differ"),
     ("glynnia", "statistics differ"),
     ("glynns3subfl", "not implemented"),
     ("glynnspiro", "not implemented"),
@@ -282,11 +289,8 @@ const NOT_YET: &[(&str, &str)] = &[
     ("hamid_js", "not implemented"),
     ("harmonograph_js", "not implemented"),
     ("henon", "JWildfire's parameter 'c' is missing"),
-    ("hexaplay3D", "call sequence differs"),
     ("hexnix3D", "statistics differ; call sequence differs"),
-    ("hilbert_js", "call sequence differs"),
     ("ho", "x, y, z differ"),
-    ("hole", "x, y differ"),
     ("hopalong", "not implemented"),
     ("hourglass3D", "not implemented"),
     ("htree_js", "not implemented"),
@@ -297,7 +301,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("hypertile3D", "x, y, z differ"),
     ("hypertile3D1", "statistics differ"),
     ("hypertile3D2", "statistics differ"),
-    ("hypertile3D2b", "not implemented"),
     ("hypertile3Db", "not implemented"),
     ("iconattractor_js", "not implemented"),
     ("iflames_wf", "not implemented"),
@@ -307,7 +310,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("isosfplot3d_wf", "not implemented"),
     ("jac_asn", "not implemented"),
     ("jac_elk", "not implemented"),
-    ("japanese_maple_leaf", "not implemented"),
     ("julia3Dq", "statistics differ"),
     ("juliac", "statistics differ"),
     ("julian3Dx", "z differs; statistics differ"),
@@ -315,13 +317,11 @@ const NOT_YET: &[(&str, &str)] = &[
     ("juliascope3Db", "not implemented"),
     ("juliascopePlus", "not implemented"),
     ("kaleidoimg", "not implemented"),
-    ("kaleidoscope", "x, y differ"),
     ("kaplan", "not implemented"),
     ("kifs3d", "not implemented"),
     ("klein_group", "not implemented"),
     ("koch_js", "not implemented"),
     ("lazyjess", "x, y differ at the origin"),
-    ("log_tile2", "not implemented"),
     ("loonie_3D", "x, y, z differ at the origin"),
     ("loq", "x, y, z differ"),
     ("lozi", "JWildfire's parameter 'c' is missing"),
@@ -330,8 +330,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("macmillan", "not implemented"),
     ("mandala", "not implemented"),
     ("mandala2", "not implemented"),
-    ("mandelbrot", "not implemented"),
-    ("maple_leaf", "not implemented"),
     ("mask", "JWildfire's parameter 'xshift' is missing"),
     ("maurer_lines", "not implemented"),
     ("maurer_rose", "not implemented"),
@@ -348,7 +346,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("murl", "x, y differ"),
     ("natural_foam", "not implemented"),
     ("npolar", "x, y differ"),
-    ("oak_leaf", "not implemented"),
     ("obj_mesh_primitive_wf", "not implemented"),
     ("obj_mesh_wf", "not implemented"),
     ("ocappedcone3D", "not implemented"),
@@ -359,7 +356,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("oroundcone3D", "not implemented"),
     ("ortho", "x, y differ at the origin"),
     ("pRose3D", "JWildfire's parameter 'srvsc' is missing"),
-    ("parallel", "not implemented"),
     ("parplot2d_wf", "not implemented"),
     ("phoenix_julia", "statistics differ"),
     ("pie3D", "statistics differ"),
@@ -367,7 +363,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("point_mirror_symmetry", "not implemented"),
     ("pointgrid3d_wf", "not implemented"),
     ("pointgrid_wf", "not implemented"),
-    ("polar", "x, z differ"),
     ("polarplot2d_wf", "not implemented"),
     ("polarplot3d_wf", "statistics differ"),
     ("polySurf", "not implemented"),
@@ -385,14 +380,11 @@ const NOT_YET: &[(&str, &str)] = &[
     ("post_coastalbrot_crop", "not implemented"),
     ("post_colormap_wf", "not implemented"),
     ("post_colorscale_wf", "not implemented"),
-    ("post_crop", "z differs; hide flag differs"),
     ("post_crop_trapezoid", "not implemented"),
     ("post_crop_x", "not implemented"),
-    ("post_crosscrop", "not implemented"),
     ("post_curl", "x, y differ"),
     ("post_curl3D", "x, y, z differ"),
     ("post_custom_wf", "not implemented"),
-    ("post_dcztransl", "not implemented"),
     ("post_depth", "x, y, z differ"),
     ("post_displacemap_wf", "not implemented"),
     ("post_falloff2", "x, y, z differ; statistics differ"),
@@ -400,40 +392,26 @@ const NOT_YET: &[(&str, &str)] = &[
     ("post_heat", "x, y, z differ"),
     ("post_julia3Dq", "statistics differ"),
     ("post_juliaq", "statistics differ"),
-    ("post_log_tile2", "not implemented"),
     ("post_mandelbox3d_crop", "not implemented"),
     ("post_mandelbulb3d_crop", "not implemented"),
     ("post_point_crop", "not implemented"),
     ("post_point_symmetry_wf", "not implemented"),
     ("post_smartcrop", "colour differs; statistics differ"),
-    ("post_spin_z", "not implemented"),
     ("post_trig", "not implemented"),
-    ("post_ztranslate_wf", "not implemented"),
-    ("pre_blur", "call sequence differs"),
-    ("pre_blur3D", "call sequence differs"),
     ("pre_boarders2", "statistics differ"),
     ("pre_bwraps2", "not implemented"),
     ("pre_c_var", "not implemented"),
     ("pre_circlecrop", "hide flag differs; statistics differ"),
-    ("pre_crop", "z differs; hide flag differs"),
     ("pre_custom_wf", "not implemented"),
-    ("pre_dcztransl", "not implemented"),
     ("pre_recip", "not implemented"),
     ("pre_rect_wf", "not implemented"),
     ("pre_sinusoidal3d", "z differs"),
-    ("pre_spin_z", "not implemented"),
     ("pre_stabilize", "not implemented"),
     ("pre_subflame_wf", "not implemented"),
-    ("pre_wave3D_wf", "not implemented"),
     ("pre_zscale", "x, y differ"),
-    ("prepost_affine", "not implemented"),
-    ("prepost_blob", "not implemented"),
-    ("prepost_circlize", "not implemented"),
-    ("prepost_mobius", "not implemented"),
     ("primitives_wf", "not implemented"),
     ("quad", "not implemented"),
     ("quaternion", "not implemented"),
-    ("radial_blur", "call sequence differs"),
     ("rational3", "JWildfire's parameter 'a' is missing"),
     ("rays", "statistics differ"),
     ("rays1", "x, y, z differ"),
@@ -444,10 +422,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("rhodonea", "not implemented"),
     ("rhombus3D", "not implemented"),
     ("ringer", "not implemented"),
-    ("rings", "x, y differ"),
-    ("rings2", "x, y, z differ"),
     ("ringsubflame", "not implemented"),
-    ("ringtile", "not implemented"),
     (
         "ripple",
         "JWildfire's parameter 'fixed_dist_calc' is missing",
@@ -455,14 +430,12 @@ const NOT_YET: &[(&str, &str)] = &[
     ("romanesco", "not implemented"),
     ("rose_wf", "statistics differ"),
     ("roundspher", "x, y differ at the origin"),
-    ("rsquares_js", "call sequence differs"),
     ("sattractor3D", "not implemented"),
     ("scry2", "JWildfire's parameter 'sides' is missing"),
     ("scry_3D", "x, y, z differ at the origin"),
     ("sechq", "x, y, z differ"),
     ("secq", "x, y, z differ"),
     ("shape_warp", "not implemented"),
-    ("shredded", "not implemented"),
     ("shredlin", "x, y, z differ"),
     ("sinhq", "y, z differ"),
     ("sinq", "y, z differ"),
@@ -470,12 +443,10 @@ const NOT_YET: &[(&str, &str)] = &[
     ("sinusgrid", "z differs"),
     ("sphericalN", "x, y differ at the origin"),
     ("sphtiling3v2", "not implemented"),
-    ("spiral", "y, z differ"),
     ("spiralwing", "x, y differ at the origin"),
     ("spirograph3D", "not implemented"),
     ("spliptic_bs", "not implemented"),
     ("splitbrdr", "statistics differ"),
-    ("splits", "JWildfire's parameter 'lshear' is missing"),
     ("sqrt_asinh", "not implemented"),
     ("squircular", "not implemented"),
     ("squirrel", "x, y differ"),
@@ -486,7 +457,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("sunflower", "not implemented"),
     ("sunvoroni", "not implemented"),
     ("superShape3d", "statistics differ"),
-    ("super_shape", "x, y differ at the origin"),
     ("svg_wf", "not implemented"),
     ("swirl3", "x, y differ at the origin"),
     ("sym_ng10", "JWildfire's parameter 'spacex' is missing"),
@@ -508,10 +478,8 @@ const NOT_YET: &[(&str, &str)] = &[
     ("tess_shape", "not implemented"),
     ("text_wf", "statistics differ"),
     ("threeply", "not implemented"),
-    ("tile_log", "z differs; statistics differ"),
     ("torus3D", "not implemented"),
     ("tqmirror", "not implemented"),
-    ("tree_js", "call sequence differs"),
     ("triantruchet", "not implemented"),
     ("triprism3D", "not implemented"),
     ("truchet", "JWildfire's parameter 'direct_color' is missing"),
@@ -533,7 +501,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("yplot2d_wf", "not implemented"),
     ("yplot3d_wf", "not implemented"),
     ("z", "x, y differ"),
-    ("zblur", "call sequence differs"),
 ];
 
 /// A table of the vectors: from UGNIS_JWF_VECTORS_DIR, else the committed fixture.
@@ -547,6 +514,9 @@ struct JwfVar {
     priority: i32,
     /// Its direct colour or hide flag varies from call to call.
     random_rgb_or_hide: bool,
+    /// Its output depends on random numbers (its call sequences then depend on JWildfire's
+    /// generator: the statistics test them).
+    random: bool,
 }
 
 /// Every JWildfire variation, by name.
@@ -559,6 +529,7 @@ fn jwildfire_variations() -> BTreeMap<String, JwfVar> {
             let v = JwfVar {
                 priority: t.get(r, "priority").parse().expect("a priority"),
                 random_rgb_or_hide: flags.split(',').any(|f| f == "random_rgb_or_hide"),
+                random: flags.split(',').any(|f| f == "random"),
             };
             (t.get(r, "variation").to_string(), v)
         })
@@ -809,12 +780,17 @@ fn check_random(
     rows.len()
 }
 
-/// The stateful variations, six calls in a row on one object.
-fn check_stateful(by_set: &HashMap<(String, String), &Set>, inputs: &Inputs, fails: &mut Failures) {
+/// The stateful variations without random numbers, six calls in a row on one object.
+fn check_stateful(
+    by_set: &HashMap<(String, String), &Set>,
+    inputs: &Inputs,
+    vars: &BTreeMap<String, JwfVar>,
+    fails: &mut Failures,
+) {
     let t = Table::parse(&fixture("state_sequences"));
     for r in &t.rows {
         let (var, ps) = (t.get(r, "variation"), t.get(r, "param_set"));
-        if !selected(var) {
+        if !selected(var) || vars.get(var).is_none_or(|v| v.random) {
             continue;
         }
         let Some(set) = by_set.get(&(var.to_string(), ps.to_string())) else {
@@ -870,7 +846,7 @@ fn jwildfire_variations_match_their_vectors() {
         .collect();
     let inputs = inputs(&t);
     let rows = check_random(&by_set, &inputs, &mut fails);
-    check_stateful(&by_set, &inputs, &mut fails);
+    check_stateful(&by_set, &inputs, &vars, &mut fails);
 
     let considered: Vec<&String> = vars.keys().filter(|n| selected(n)).collect();
     let mut problems = Vec::new();
@@ -898,4 +874,29 @@ fn jwildfire_variations_match_their_vectors() {
         }
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// Every JWildfire variation ugnis renders goes by JWildfire's own name where names are listed
+/// (`ugnis info --variations`, the editor's variation list: a variation's name in each form
+/// reads back as that variation and form), so typing JWildfire's name finds it.
+#[test]
+fn jwildfire_names_are_listed_as_jwildfire_writes_them() {
+    let mut unlisted = Vec::new();
+    let mut known = 0;
+    for name in jwildfire_variations().keys() {
+        let Some((id, form)) = variations::parse_name(name) else {
+            continue;
+        };
+        known += 1;
+        let listed = variations::attr_name(id, form);
+        if !listed.eq_ignore_ascii_case(name) || variations::info(id).has(variations::flag::HIDDEN)
+        {
+            unlisted.push(format!("{name} (listed as {listed})"));
+        }
+    }
+    eprintln!("{known} of JWildfire's names are known");
+    assert!(
+        unlisted.is_empty(),
+        "not listed by their name: {unlisted:?}"
+    );
 }

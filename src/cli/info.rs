@@ -23,7 +23,7 @@ pub struct InfoArgs {
 fn list_variations() {
     use ugnis::flame::variations::{self, flag};
     let mut out = String::new();
-    let mut n = 0;
+    let (mut n, mut jwildfire) = (0, 0);
     for id in 0..variations::count() as variations::VarId {
         let d = variations::info(id);
         if d.has(flag::HIDDEN) {
@@ -50,6 +50,15 @@ fn list_variations() {
         if d.has(flag::POST_ONLY) {
             props.push("post_ only");
         }
+        if d.has(flag::PRE_ONLY) {
+            props.push("pre_ only");
+        }
+        if d.has(flag::PREPOST) {
+            props.push("pre and post");
+        }
+        if d.has(flag::JWILDFIRE) {
+            jwildfire += 1;
+        }
         let params: Vec<String> = d
             .params
             .iter()
@@ -69,7 +78,8 @@ fn list_variations() {
         ));
     }
     out.push_str(&format!(
-        "{n} variations; each also as pre_NAME and post_NAME (before the others / after their sum)\n"
+        "{n} variations ({jwildfire} of them taken from JWildfire); each also as pre_NAME and post_NAME (before the others / \
+         after their sum) unless marked pre_ or post_ only\n"
     ));
     // A closed pipe (e.g. `| head`) ends the listing quietly.
     use std::io::Write;

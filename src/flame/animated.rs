@@ -92,7 +92,7 @@ impl Target {
                     (Some(v), VarParam::Weight) => v.weight,
                     (None, VarParam::Weight) => 0.0,
                     (Some(v), VarParam::Param(k)) => *v.params.get(k)?,
-                    (None, VarParam::Param(k)) => *variations::info(var).defaults().get(k)?,
+                    (None, VarParam::Param(k)) => *variations::param_defaults(var).get(k)?,
                 }
             }
             Target::PaletteRotate | Target::PaletteHue => 0.0,

@@ -172,6 +172,7 @@ impl Geometry {
             // Grids are far narrower than 2³¹ buckets; a wider one would only lose points.
             bw: self.bw.min(i32::MAX as usize) as f64,
             bh: self.bh.min(i32::MAX as usize) as f64,
+            full_bh: self.full_bh.min(i32::MAX as usize) as f64,
             stride: self.bw as u32,
         }
     }
@@ -193,6 +194,8 @@ pub struct BucketMap {
     row0: f64,
     bw: f64,
     bh: f64,
+    /// Rows of the whole grid.
+    full_bh: f64,
     stride: u32,
 }
 
@@ -204,11 +207,17 @@ impl BucketMap {
         self.index_of(bx, by)
     }
 
-    /// [`BucketMap::index`] of a point moved by `d` buckets once mapped.
+    /// [`BucketMap::index`] of a point moved by `d` buckets once mapped, by JWildfire's rules
+    /// (for its raster, whose map rounds to the nearest bucket): a point outside the raster
+    /// before the move is dropped, and the moved point's bucket is its coordinate truncated
+    /// towards zero (so up to a bucket before the first is the first).
     #[inline(always)]
-    pub fn index_moved(&self, x: f64, y: f64, d: (f64, f64)) -> (u32, bool) {
+    pub fn index_jwildfire(&self, x: f64, y: f64, d: (f64, f64)) -> (u32, bool) {
         let (bx, by) = self.m.apply(x, y);
-        self.index_of(bx + d.0, by + d.1)
+        let seen = (bx >= 0.5) & (bx <= self.bw + 0.5) & (by >= 0.5) & (by <= self.full_bh + 0.5);
+        let trunc = |v: f64| if v > -1.0 && v < 0.0 { 0.0 } else { v };
+        let (i, inside) = self.index_of(trunc(bx + d.0), trunc(by + d.1));
+        (i, inside & seen)
     }
 
     /// The bucket index of continuous bucket coordinates (0 when outside the grid) and

@@ -35,7 +35,7 @@ impl Var {
             id,
             form,
             weight,
-            params: variations::info(id).defaults(),
+            params: variations::param_defaults(id),
             texts: variations::info(id)
                 .texts
                 .iter()

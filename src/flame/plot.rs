@@ -72,17 +72,22 @@ fn iterate_into_generic(
     buf.reserve(n as usize + L);
     let map = geom.bucket_map();
     let (mut idx, mut keep) = ([0u32; L], [0u32; L]);
-    // JWildfire's antialiasing moves points by random offsets, from a stream of their own.
+    // JWildfire's raster, and its antialiasing: points moved by random offsets, from a
+    // stream of their own.
+    let jwf = geom.jwf.is_some();
     let antialias = geom.jwf.as_ref().and_then(|j| j.antialias);
     let mut aa_rng = FastRng::new(if antialias.is_some() { rng.u64() } else { 0 });
     let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs| {
         // Buckets as arrays (vectorised), then a branch-free compaction of the visible
         // points that land in the histogram.
         let m = xs.len().min(ys.len()).min(cs.len()).min(vs.len()).min(L);
-        if let Some((amount, radius)) = antialias {
+        if jwf {
             for j in 0..m {
-                let d = JwfRaster::jitter(amount, radius, &mut aa_rng);
-                let (i, inside) = map.index_moved(xs[j], ys[j], d);
+                let d = match antialias {
+                    Some((amount, radius)) => JwfRaster::jitter(amount, radius, &mut aa_rng),
+                    None => (0.0, 0.0),
+                };
+                let (i, inside) = map.index_jwildfire(xs[j], ys[j], d);
                 idx[j] = i;
                 keep[j] = (inside & (vs[j] > 0.0)) as u32;
             }

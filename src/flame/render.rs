@@ -109,6 +109,9 @@ pub struct Renderer {
     hists: Vec<Histogram>,
     /// Each worker's orbits, kept between passes.
     lanes: Vec<Box<Lanes>>,
+    /// Each worker's orbits of each layer, for a flame of layers (a layer's orbits stay on its
+    /// own attractor); empty otherwise.
+    layer_lanes: Vec<Vec<Box<Lanes>>>,
     /// Each worker's plotted samples, when kept for recolouring.
     logs: Option<Vec<Vec<Pending>>>,
     seed: u64,
@@ -234,6 +237,7 @@ impl Renderer {
             geom,
             out_rows,
             hists,
+            layer_lanes: (0..threads).map(|_| Vec::new()).collect(),
             lanes,
             logs,
             seed: opts.seed,
@@ -296,6 +300,16 @@ impl Renderer {
         self.part_total = self.part.samples(total);
         self.batches_total = self.part.local_batches(sources.batches.len() as u64);
         self.logs = None;
+        let n = if sources.layers {
+            sources.flames.len()
+        } else {
+            0
+        };
+        if self.layer_lanes.first().is_none_or(|l| l.len() != n) {
+            self.layer_lanes = (0..self.lanes.len())
+                .map(|_| (0..n).map(|_| Lanes::new()).collect())
+                .collect();
+        }
         self.motion = Some(Arc::new(sources));
     }
 
@@ -485,9 +499,10 @@ impl Renderer {
             .par_iter_mut()
             .zip(self.lanes.par_iter_mut())
             .zip(logs.par_iter_mut())
+            .zip(self.layer_lanes.par_iter_mut())
             .enumerate()
             .with_max_len(1)
-            .map(|(t, ((hist, lanes), log))| {
+            .map(|(t, (((hist, lanes), log), layer_lanes))| {
                 let mut done = 0u64;
                 let mut bad = 0u64;
                 // First batch index ≥ start that belongs to thread t.
@@ -509,6 +524,7 @@ impl Renderer {
                     let g = part.global(j);
                     let mut n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
                     let (mut chaos, mut geom, mut pal) = (chaos, geom, pal);
+                    let mut layer = None;
                     if let Some(m) = motion {
                         let (s, k) = m.batches[g as usize];
                         n = k as u64;
@@ -521,12 +537,18 @@ impl Renderer {
                         }
                         let t = tools.as_ref().expect("just set");
                         (chaos, geom, pal) = (&t.chaos, &t.geom, &t.palette);
+                        layer = Some(s as usize);
                     }
+                    // A layer's own orbits, or the thread's.
+                    let orbits: &mut Lanes = match layer.and_then(|s| layer_lanes.get_mut(s)) {
+                        Some(l) => l,
+                        None => lanes,
+                    };
                     let mut rng = FastRng::for_stream(seed, g);
                     bad += match ifs3d {
                         None => {
                             let b =
-                                iterate_into(chaos, geom, pal, hist, &mut buf, lanes, n, &mut rng);
+                                iterate_into(chaos, geom, pal, hist, &mut buf, orbits, n, &mut rng);
                             if let Some(log) = log.as_deref_mut() {
                                 log.extend_from_slice(&buf);
                             }

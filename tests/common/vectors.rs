@@ -106,7 +106,7 @@ pub const MAIN_AFFINE: [f64; 6] = [0.75, -0.25, 0.25, 1.25, -0.125, 0.375];
 /// list `params` applied (`-`: the defaults). Parameters may be named with or without the
 /// variation's prefix; ranges in brackets ("2[int,1,inf]") are documentation.
 pub fn resolve_params(id: VarId, variation: &str, params: &str) -> Result<Vec<f64>, String> {
-    let mut p = variations::info(id).defaults();
+    let mut p = variations::param_defaults(id);
     if params == "-" {
         return Ok(p);
     }

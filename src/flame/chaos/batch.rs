@@ -149,7 +149,7 @@ impl CompiledXform {
                 v.apply_pre(&mut tr, &mut acc, c[j], rng);
             }
             (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
-            g.pc[j] = acc.color;
+            g.pc[j] = acc.drawn_color();
             g.hide[j] |= acc.hide;
         }
     }
@@ -254,7 +254,7 @@ impl CompiledXform {
             for v in &self.post_vars {
                 v.apply_post(&mut acc, cj, rng);
             }
-            (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.color);
+            (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.drawn_color());
             g.hide[j] |= acc.hide;
         }
     }

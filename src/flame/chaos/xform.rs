@@ -176,7 +176,7 @@ impl CompiledXform {
         }
         let mut nc = blended;
         if self.sets_color {
-            nc = blended + self.direct_color * (acc.color - blended);
+            nc = blended + self.direct_color * (acc.drawn_color() - blended);
             if nc.is_nan() {
                 nc = 0.0;
             }

@@ -206,6 +206,9 @@ impl ToneMap {
         if i.is_nan() || i <= 0.0 {
             return if self.transparent {
                 ([0.0; 3], 0.0)
+            } else if self.saturation != 0.0 {
+                // JWildfire changes the saturation of the background too.
+                (saturate(bg, self.saturation), 1.0)
             } else {
                 (bg, 1.0)
             };

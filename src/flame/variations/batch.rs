@@ -59,7 +59,7 @@ pub fn batch_with(
         acc.x[j] = a.x + o[0];
         acc.y[j] = a.y + o[1];
         acc.z[j] = a.z + o[2];
-        acc.color[j] = a.color;
+        acc.color[j] = a.drawn_color();
         acc.hide[j] |= a.hide;
     }
 }

@@ -433,9 +433,16 @@ fn dc_ztransl_prepare(v: &mut Prepared) {
 
 /// linear in x and y; z set from (or scaled by) the colour coordinate mapped from [x0, x1].
 fn dc_ztransl(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    ztransl_by(v, t, acc.color)
+}
+
+/// x and y weighted; z from (or scaled by, unless `overwrite`) `color`'s place in the range
+/// [lo, lo + span] of the derived values, times `factor` (clamped to [0, 1] with `clamp`).
+/// Parameters: x0, x1, factor, overwrite, clamp.
+pub(super) fn ztransl_by(v: &Prepared, t: &VarIn, color: f64) -> V3 {
     let [_, _, factor, overwrite, clamp] = v.params();
     let [lo, span] = v.derived();
-    let mut zf = factor * (acc.color - lo) / span;
+    let mut zf = factor * (color - lo) / span;
     if clamp != 0.0 {
         zf = zf.clamp(0.0, 1.0);
     }

@@ -118,9 +118,12 @@ pub(super) fn dc_luma(c: [i64; 3]) -> f64 {
 }
 
 /// The part all dc_ variations share. The point is the input (ColorOnly = 1) or uniform in a
-/// square of half-side `half` (1 or 0.5); its pattern colour sets the palette index, and the
-/// colour's luminance, scaled and offset, gives z (which replaces the running z when reset_z
-/// is 1). `tail` holds the five shared parameters, which come last (see `dc_tail!`).
+/// square of half-side `half` (1 or 0.5); its pattern colour, quantised to bytes, is the
+/// point's own colour (Gradient = 0, JWildfire's default; 1, the gradient's nearest key, is
+/// taken as 0: a variation does not see the gradient) or, by its luminance, the palette
+/// index (Gradient = 2); the luminance, scaled and offset, gives z (which replaces the running
+/// z when reset_z is 1). `tail` holds the five shared parameters, which come last (see
+/// `dc_tail!`).
 #[inline(always)]
 pub(super) fn dc_common(
     v: &Prepared,
@@ -131,7 +134,7 @@ pub(super) fn dc_common(
     half: f64,
     pattern: impl FnOnce(f64, f64) -> [f64; 3],
 ) -> V3 {
-    let [color_only, _gradient, scale_z, offset_z, reset_z] = tail;
+    let [color_only, gradient, scale_z, offset_z, reset_z] = tail;
     let (x, y) = if trunc_i(color_only) == 1 {
         (t.x, t.y)
     } else if half == 1.0 {
@@ -141,8 +144,13 @@ pub(super) fn dc_common(
         let x = rng.f01() - 0.5;
         (x, rng.f01() - 0.5)
     };
-    let luma = dc_luma(dc_bytes(pattern(x, y)));
-    acc.color = luma;
+    let bytes = dc_bytes(pattern(x, y));
+    let luma = dc_luma(bytes);
+    if trunc_i(gradient) < 2 {
+        acc.rgb = Some(bytes.map(|c| c as f64));
+    } else {
+        acc.color = luma;
+    }
     let dz = luma * scale_z + offset_z;
     let z = if trunc_i(reset_z) == 1 {
         if v.form == Form::Regular {

@@ -110,8 +110,8 @@ pub(super) fn prep_w(name: &str, params: &[f64], w: f64) -> Prepared {
     Prepared::new(id, Form::Regular, w, params, Affine::default(), true)
 }
 
-/// Every JWildfire variation's name and parameters resolve to it (a post-only one by its
-/// `post_` name), and its defaults give a finite output at an ordinary point.
+/// Every JWildfire variation's name and parameters resolve to it (a post-only or pre-only
+/// one by its `post_` or `pre_` name), and its defaults give a finite output at an ordinary point.
 #[test]
 fn names_and_parameters_resolve() {
     for d in all().iter().filter(|d| d.has(flag::JWILDFIRE)) {
@@ -126,6 +126,8 @@ fn names_and_parameters_resolve() {
         assert_eq!(info(id).name, d.name);
         if d.has(flag::POST_ONLY) {
             assert_eq!(form, Form::Post);
+        } else if d.has(flag::PRE_ONLY) {
+            assert_eq!(form, Form::Pre, "{}", d.name);
         } else {
             assert_eq!(by_name(d.name), Some(id), "{}", d.name);
         }

@@ -86,6 +86,7 @@
 //! | `jwf_drawings` | drawings, curves and filled figures (`hilbert_js`, `tree_js`, `rose_wf`, `nsudoku`, …) |
 //! | `jwf_knots` | `knots3D` |
 //! | `jwf_maps` | `complex`, `rosoni`, `svensson_js`, `crop_stars`, `post_mirror_wf` |
+//! | `jwf_prepost` | JWildfire's own `pre_`/`post_` classes and its prepost variations (`pre_affine3D`, `post_crosscrop`, `prepost_mobius`, `ringtile`, …) |
 //! | `jwf_symmetry` | the symmetry groups `sym_ng*` and `sym_bg*` |
 //! | `jwf_text` | `text_wf` |
 
@@ -147,6 +148,7 @@ mod jwf_direct_colour;
 mod jwf_drawings;
 mod jwf_knots;
 mod jwf_maps;
+mod jwf_prepost;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;
@@ -163,8 +165,8 @@ pub use def::{
 };
 pub use flam3::*;
 pub use names::{
-    attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name, param_of,
-    parse_name, text_attr_name, text_of,
+    attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
+    param_attr_name_in, param_of, parse_name, text_attr_name, text_of,
 };
 pub use params::{
     Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,
@@ -172,7 +174,7 @@ pub use params::{
 pub use point::{Acc, VarIn, need};
 pub(crate) use point::{SoaAcc, SoaIn};
 pub use prepare::{eval_point, eval_prepared};
-pub use registry::{all, count, info, jwildfire_twin};
+pub use registry::{all, count, def_in, info, jwildfire_twin, param_defaults};
 pub use shared::{BuildFn, SharedDef};
 
 // For the formulas' files, which import everything above with `use super::*`.

@@ -5,9 +5,9 @@
 use std::collections::HashMap;
 
 use super::VarId;
-use super::def::{Form, VarDef, flag};
+use super::def::{Dialect, Form, VarDef, flag};
 use super::flam3::GAUSSIAN_BLUR;
-use super::registry::{REGISTRY, info};
+use super::registry::{REGISTRY, def_in, info};
 
 /// A regular variation by name (case-insensitive).
 pub fn by_name(name: &str) -> Option<VarId> {
@@ -67,11 +67,18 @@ pub fn attr_name(id: VarId, form: Form) -> String {
 
 /// The attribute name of parameter `k` of a variation used in `form`.
 pub fn param_attr_name(id: VarId, form: Form, k: usize) -> String {
-    let d = info(id);
-    if d.has(flag::POST_ONLY | flag::PRE_ONLY) {
-        return d.params[k].name.to_string();
+    param_attr_name_in(Dialect::Flam3, id, form, k)
+}
+
+/// The attribute name of parameter `k` of a variation used in `form` in a flame of
+/// `dialect` (JWildfire names some parameters its own way, and has a few more: see
+/// [`def_in`](super::def_in)).
+pub fn param_attr_name_in(dialect: Dialect, id: VarId, form: Form, k: usize) -> String {
+    let name = def_in(dialect, id, form).params[k].name;
+    if info(id).has(flag::POST_ONLY | flag::PRE_ONLY) {
+        return name.to_string();
     }
-    format!("{}{}", form.prefix(), d.params[k].name)
+    format!("{}{name}", form.prefix())
 }
 
 /// The attribute name of text parameter `k` of a variation used in `form`.

@@ -104,6 +104,20 @@ pub struct Acc {
     pub rgb: Option<[f64; 3]>,
 }
 
+impl Acc {
+    /// The colour coordinate the renderer draws the point with: its palette index, or, for a
+    /// point given a colour of its own (which the renderer does not carry yet), that colour's
+    /// luminance as the index (as JWildfire's direct-colour variations index the gradient
+    /// with Gradient = 2), so their patterns still show.
+    #[inline]
+    pub fn drawn_color(&self) -> f64 {
+        match self.rgb {
+            Some(c) => super::jwf_direct_colour::dc_luma(c.map(|v| v as i64)),
+            None => self.color,
+        }
+    }
+}
+
 /// Per-point quantities of a batch of points, as parallel arrays of one length.
 pub struct SoaIn<'a> {
     pub x: &'a [f64],

@@ -9,13 +9,15 @@ use std::collections::HashMap;
 use std::sync::LazyLock;
 
 use super::VarId;
-use super::def::{Form, VarDef, flag};
+use super::def::{Dialect, Form, VarDef, flag};
 use super::names::lookup_in;
+use super::params::Param;
 use super::{
     flam3, fr_3d, fr_bipolar_elliptic, fr_blurs, fr_complex, fr_crops, fr_curves, fr_direct_colour,
     fr_distance_blurs, fr_grids, fr_hexagons, fr_hyperbolic, fr_inversions, fr_julias, fr_moves,
     fr_polynomial_maps, fr_quaternions, fr_radial, fr_synth, fr_trig, fr_truchet, fr_waves, jwf_3d,
-    jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_symmetry, jwf_text,
+    jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_prepost, jwf_symmetry,
+    jwf_text,
 };
 // JWildfire variations, first set of files.
 use super::{
@@ -46,8 +48,26 @@ pub fn jwildfire_twin(id: VarId, form: Form) -> Option<&'static VarDef> {
     REGISTRY.twins.get(&(id, form)).copied()
 }
 
+/// The registry entry whose formula and parameter names variation `id` used in `form` has in
+/// a flame of `dialect`: its JWildfire twin in a JWildfire flame, else its own.
+pub fn def_in(dialect: Dialect, id: VarId, form: Form) -> &'static VarDef {
+    match dialect {
+        Dialect::JWildfire => jwildfire_twin(id, form).unwrap_or_else(|| info(id)),
+        _ => info(id),
+    }
+}
+
+/// The values a new use of variation `id` stores: its parameters' defaults, then those of the
+/// parameters only its JWildfire formula has.
+pub fn param_defaults(id: VarId) -> Vec<f64> {
+    match REGISTRY.twin_params.get(&id) {
+        Some(ps) => ps.iter().map(|p| p.default).collect(),
+        None => info(id).defaults(),
+    }
+}
+
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 46] = [
+const FILES: [&[VarDef]; 47] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -74,6 +94,7 @@ const FILES: [&[VarDef]; 46] = [
     jwf_drawings::DEFS,
     jwf_knots::DEFS,
     jwf_maps::DEFS,
+    jwf_prepost::DEFS,
     jwf_symmetry::DEFS,
     jwf_text::DEFS,
     // JWildfire variations, second part.
@@ -355,6 +376,24 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "dc_booleans",
     "dc_glypho",
     "dc_moebiuslog",
+    // JWildfire's own pre_/post_ classes and prepost variations.
+    "pre_affine3D",
+    "post_affine3D",
+    "pre_spin_z",
+    "post_spin_z",
+    "post_ztranslate_wf",
+    "pre_dcztransl",
+    "post_dcztransl",
+    "pre_wave3D_wf",
+    "post_log_tile2",
+    "pre_c_symmetry",
+    "post_c_symmetry",
+    "post_crosscrop",
+    "prepost_mobius",
+    "prepost_affine",
+    "prepost_circlize",
+    "prepost_blob",
+    "ringtile",
 ];
 
 /// Every JWildfire variation's name in registry order.
@@ -391,32 +430,74 @@ pub(super) struct Registry {
     pub(super) texts: HashMap<String, (VarId, usize)>,
     /// (id, form) → JWildfire's formula where it differs.
     pub(super) twins: HashMap<(VarId, Form), &'static VarDef>,
+    /// id → the longest parameter list of its twins (the registry's parameters, then those
+    /// only JWildfire's formula has).
+    pub(super) twin_params: HashMap<VarId, &'static [Param]>,
 }
 
 /// The JWildfire twins by the variation and form their names denote: the formulas of
-/// [`jwf_dialect::DEFS`], and the variations JWildfire computes as 2-D ones where flam3's or
-/// Fractorium's carry z along (their own formula, the framework's z).
+/// [`jwf_dialect::TABLES`]; the variations JWildfire computes as 2-D ones where flam3's or
+/// Fractorium's carry z along (their own formula, the framework's z); those it runs after the
+/// others whatever their name says.
 fn twins(
     names: &HashMap<String, VarId>,
     defs: &[&'static VarDef],
 ) -> HashMap<(VarId, Form), &'static VarDef> {
     let mut out = HashMap::new();
-    for name in jwf_dialect::FLAT {
+    let flat = jwf_dialect::FLAT
+        .iter()
+        .map(|n| (*n, None, flag::WRITES_Z, 0));
+    let after = jwf_dialect::AFTER
+        .iter()
+        .map(|n| (*n, None, 0, flag::POST_ONLY));
+    let formulas = (jwf_dialect::FORMULAS.iter()).map(|&(n, f, off, on)| (n, Some(f), off, on));
+    for (name, eval, off, on) in flat.chain(after).chain(formulas) {
         let key = lookup_in(names, defs, &name.to_ascii_lowercase());
-        let (id, form) = key.unwrap_or_else(|| panic!("2-D twin {name} is not registered"));
-        let d = defs[id as usize];
-        let flat: &'static VarDef = Box::leak(Box::new(VarDef {
-            flags: d.flags & !flag::WRITES_Z,
+        let key = key.unwrap_or_else(|| panic!("JWildfire twin {name} is not registered"));
+        let d = out.get(&key).copied().unwrap_or(defs[key.0 as usize]);
+        let twin: &'static VarDef = Box::leak(Box::new(VarDef {
+            flags: (d.flags & !off) | on,
+            eval: eval.unwrap_or(d.eval),
+            // A batch loop inlines the registry's formula.
+            batch: if eval.is_some() { None } else { d.batch },
             ..*d
         }));
-        out.insert((id, form), flat);
+        out.insert(key, twin);
     }
-    for d in jwf_dialect::DEFS {
+    for d in jwf_dialect::TABLES.iter().copied().flatten() {
         let key = lookup_in(names, defs, &d.name.to_ascii_lowercase());
-        let key = key.unwrap_or_else(|| panic!("twin {} is not registered", d.name));
-        out.insert(key, d);
+        let (id, form) =
+            key.unwrap_or_else(|| panic!("JWildfire twin {} is not registered", d.name));
+        let base = defs[id as usize];
+        assert!(
+            d.params.len() >= base.params.len() && d.texts.len() == base.texts.len(),
+            "JWildfire twin {} lacks parameters of {}",
+            d.name,
+            base.name
+        );
+        out.insert((id, form), d);
     }
     out
+}
+
+/// The parameter names JWildfire uses where they differ from the registry's, and the
+/// parameters only JWildfire's formula has (after the registry's), as further entries of the
+/// table of parameter names; the longest parameter list of each variation's twins.
+fn twin_params(
+    twins: &HashMap<(VarId, Form), &'static VarDef>,
+    params: &mut HashMap<String, (VarId, usize)>,
+) -> HashMap<VarId, &'static [Param]> {
+    let mut longest: HashMap<VarId, &'static [Param]> = HashMap::new();
+    for (&(id, _), d) in twins {
+        for (k, p) in d.params.iter().enumerate() {
+            params.entry(p.name.to_ascii_lowercase()).or_insert((id, k));
+        }
+        let l = longest.entry(id).or_insert(d.params);
+        if d.params.len() > l.len() {
+            *l = d.params;
+        }
+    }
+    longest
 }
 
 pub(super) static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
@@ -438,12 +519,14 @@ pub(super) static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
         }
     }
     let twins = twins(&names, &defs);
+    let twin_params = twin_params(&twins, &mut params);
     Registry {
         defs,
         names,
         params,
         texts,
         twins,
+        twin_params,
     }
 });
 

@@ -159,24 +159,26 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     let own = |s: &mut String, inner: &str| {
         for (i, x) in f.xforms.iter().enumerate() {
             let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
-            write_xform(s, x, extra.unwrap_or(&x.extra_attrs), "xform", inner);
+            let extra = extra.unwrap_or(&x.extra_attrs);
+            write_xform(s, x, extra, "xform", inner, f.dialect());
         }
         for (k, fx) in f.finals().enumerate() {
             let extra = jwf
                 .as_ref()
                 .and_then(|w| w.final_xform.as_ref())
                 .filter(|_| k == 0);
-            write_xform(s, fx, extra.unwrap_or(&fx.extra_attrs), "finalxform", inner);
+            let extra = extra.unwrap_or(&fx.extra_attrs);
+            write_xform(s, fx, extra, "finalxform", inner, f.dialect());
         }
         write_palette(s, f.render_colors(), inner);
     };
     if f.has_layers() {
         let other = |s: &mut String, l: &crate::flame::layers::Layer, inner: &str| {
             for x in &l.xforms {
-                write_xform(s, x, &x.extra_attrs, "xform", inner);
+                write_xform(s, x, &x.extra_attrs, "xform", inner, f.dialect());
             }
             for x in &l.finals {
-                write_xform(s, x, &x.extra_attrs, "finalxform", inner);
+                write_xform(s, x, &x.extra_attrs, "finalxform", inner, f.dialect());
             }
             write_palette(s, &l.palette.colors, inner);
         };
@@ -193,8 +195,16 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
 }
 
 /// An xform element; `extra` are the kept attributes to write (the xform's own, or with its
-/// JWildfire curves brought up to date).
-fn write_xform(s: &mut String, x: &Xform, extra: &[(String, String)], tag: &str, ind: &str) {
+/// JWildfire curves brought up to date). Parameters are named and counted as in flames of
+/// `dialect` (the program that wrote the flame).
+fn write_xform(
+    s: &mut String,
+    x: &Xform,
+    extra: &[(String, String)],
+    tag: &str,
+    ind: &str,
+    dialect: variations::Dialect,
+) {
     let n = fmt_num;
     let _ = write!(s, "{ind}<{tag}");
     if tag == "xform" {
@@ -223,9 +233,11 @@ fn write_xform(s: &mut String, x: &Xform, extra: &[(String, String)], tag: &str,
         let _ = write!(s, " {}=\"{}\"", name.weight, n(v.weight));
     }
     for (v, name) in x.vars.iter().zip(names) {
-        for i in 0..variations::info(v.id).params.len() {
-            let pn = name.of(variations::param_attr_name(v.id, v.form, i));
-            let _ = write!(s, " {pn}=\"{}\"", n(v.params[i]));
+        let def = variations::def_in(dialect, v.id, v.form);
+        for (i, p) in def.params.iter().enumerate() {
+            let pn = name.of(variations::param_attr_name_in(dialect, v.id, v.form, i));
+            let value = v.params.get(i).copied().unwrap_or(p.default);
+            let _ = write!(s, " {pn}=\"{}\"", n(value));
             written.insert(pn);
         }
         for (i, t) in v.texts.iter().enumerate() {
