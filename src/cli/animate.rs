@@ -175,7 +175,12 @@ fn parse_frames(s: &str) -> Result<Frames, String> {
 /// The files an animation reads.
 fn inputs(a: &AnimateArgs) -> Vec<&Path> {
     let mut v = vec![a.input.as_path()];
-    v.extend([&a.palettes, &a.sound.sound, &a.audio].into_iter().flatten().map(PathBuf::as_path));
+    v.extend(
+        [&a.palettes, &a.sound.sound, &a.audio]
+            .into_iter()
+            .flatten()
+            .map(PathBuf::as_path),
+    );
     v
 }
 

@@ -122,14 +122,7 @@ fn an_output_is_never_an_input_or_another_output() {
     assert_clean_error(code, &err, &["same.png", "named for two outputs"]);
     // merge: a part as the merged state; the image as the state.
     let part = dir.join("p0.ugs");
-    let (code, _, err) = ugnis(&[
-        "render",
-        s(&f),
-        "--part",
-        "0/2",
-        "--save-state",
-        s(&part),
-    ]);
+    let (code, _, err) = ugnis(&["render", s(&f), "--part", "0/2", "--save-state", s(&part)]);
     assert_eq!(code, 0, "{err}");
     let part_bytes = std::fs::read(&part).unwrap();
     let (code, _, err) = ugnis(&["merge", s(&part), "--save-state", s(&part)]);

@@ -78,7 +78,10 @@ fn term_hup_and_int_stop_the_iteration_at_once() {
             signal,
         );
         assert_eq!(code, Some(status), "SIG{signal}: {err}");
-        assert!(err.contains(&format!("interrupted by SIG{signal}")), "{err}");
+        assert!(
+            err.contains(&format!("interrupted by SIG{signal}")),
+            "{err}"
+        );
         assert!(took < Duration::from_secs(5), "SIG{signal} took {took:?}");
         assert_eq!(snapshot(&dir), before, "SIG{signal} changed the directory");
     }

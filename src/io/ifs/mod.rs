@@ -108,7 +108,10 @@ impl IfsFile {
 /// names with the same key are the same for Fractint). Kept in a hash map, so that checking
 /// every name of a file takes time linear in its entries.
 fn name_key(name: &str) -> String {
-    name.chars().take(NAME_LEN).collect::<String>().to_lowercase()
+    name.chars()
+        .take(NAME_LEN)
+        .collect::<String>()
+        .to_lowercase()
 }
 
 /// Write an `.ifs` file: CRLF, two-space indent, a blank line between entries. Names that
