@@ -30,6 +30,8 @@ fn job(flame: &Flame, generation: u64, final_quality: f64) -> PreviewJob {
         height: H,
         first_quality: PREVIEW_QUALITY,
         final_quality,
+        noise_target: None,
+        least_quality: 0.0,
         threads: THREADS,
         generation,
     }

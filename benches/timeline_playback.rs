@@ -55,6 +55,8 @@ fn show(worker: &PreviewWorker, f: &Flame, frames: &[u32], q: f64, generation: &
             height: H,
             first_quality: q,
             final_quality: q,
+            noise_target: None,
+            least_quality: 0.0,
             threads: THREADS,
             generation: *generation,
         });

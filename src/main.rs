@@ -47,6 +47,8 @@ enum Command {
     Dimension(cli::dimension::DimensionArgs),
     /// Draw the Lorenz attractor (and show its sensitivity to the start)
     Lorenz(cli::lorenz::LorenzArgs),
+    /// A small PNG of a flame, IFS, gradient or escape-time file, quickly (for file managers)
+    Thumbnail(cli::thumbnail::ThumbnailArgs),
 }
 
 fn main() {
@@ -77,6 +79,7 @@ fn main() {
         Some(Command::Lsystem(a)) => cli::lsystem::run(a),
         Some(Command::Dimension(a)) => cli::dimension::run(a),
         Some(Command::Lorenz(a)) => cli::lorenz::run(a),
+        Some(Command::Thumbnail(a)) => cli::thumbnail::run(a),
         None => run_gui(cli.file),
     };
     if let Err(e) = result {

@@ -5,7 +5,8 @@
 //! transformed (FFT), the power of the band's bins summed, and the energies scaled to [0, 1],
 //! optionally with a fast attack and slower release so the motion does not flicker.
 
-use crate::flame::keyframes::{Curve, Interp, Key, MAX_KEYS, Target};
+use crate::flame::Flame;
+use crate::flame::keyframes::{self, Curve, Interp, Key, MAX_KEYS, Target};
 
 /// Samples per analysis window (about 46 ms at 44.1 kHz).
 pub const WINDOW: usize = 2048;
@@ -194,6 +195,69 @@ pub fn curve_from_energy(energy: &[f64], target: Target, low: f64, high: f64) ->
         let _ = c.insert(key);
     }
     c
+}
+
+/// What a sound moves: a target from `low` (silence) to `high` (the loudest frame), the band
+/// that drives it and how fast it follows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drive {
+    /// The setting the sound moves.
+    pub target: Target,
+    /// The frequency band listened to.
+    pub band: Band,
+    /// The value at silence.
+    pub low: f64,
+    /// The value at the loudest frame.
+    pub high: f64,
+    /// How fast the value follows the sound.
+    pub smooth: Smoothing,
+}
+
+/// Give `flame` the curve `sound` makes for `d.target`: on the flame's timeline, or, when the
+/// flame has no keyframes yet, on a new one as long as the sound at the flame's frame rate.
+/// A curve the target had is replaced (the result says so: `Ok(true)`). Refused with a
+/// message: a target the flame lacks, a scale factor with an end not above 0, a sound longer
+/// than an animation may be.
+pub fn drive_flame(flame: &mut Flame, sound: &Sound, d: &Drive) -> Result<bool, String> {
+    let target = d.target;
+    if target.get(flame).is_none() {
+        return Err(format!(
+            "'{target}' is not in this flame ({} xforms, {})",
+            flame.xforms.len(),
+            if flame.final_xform.is_some() {
+                "and a final one"
+            } else {
+                "no final one"
+            }
+        ));
+    }
+    if !(d.low.is_finite() && d.high.is_finite()) {
+        return Err(format!("the range {}..{} must be numbers", d.low, d.high));
+    }
+    if target.is_logarithmic() && (d.low <= 0.0 || d.high <= 0.0) {
+        return Err(format!(
+            "'{target}' is a scale factor: both ends of {}..{} must be above 0",
+            d.low, d.high
+        ));
+    }
+    if flame.keys.is_empty() {
+        let frames = (sound.seconds() * flame.keys.fps).ceil().max(1.0);
+        if frames > keyframes::MAX_FRAMES as f64 {
+            return Err(format!(
+                "the sound lasts {frames} frames at {} fps; an animation has at most {}",
+                flame.keys.fps,
+                keyframes::MAX_FRAMES
+            ));
+        }
+        flame.keys.frames = frames as u32;
+    }
+    let k = &flame.keys;
+    let energy = band_energy(sound, d.band, k.fps, k.frames as usize, d.smooth);
+    let curve = curve_from_energy(&energy, target, d.low, d.high);
+    let replaced = k.curve(&target).is_some();
+    flame.keys.curves.retain(|c| c.target != target);
+    flame.keys.curves.push(curve);
+    Ok(replaced)
 }
 
 #[cfg(test)]

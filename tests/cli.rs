@@ -586,7 +586,7 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
                 "escape",
                 "mandelbrot",
                 "--width",
-                "1e-30",
+                "1e-10001",
                 "--center",
                 "0.3,0",
                 "-o",

@@ -31,6 +31,8 @@ pub enum Action {
     Undo,
     /// Edit ▸ Redo.
     Redo,
+    /// Edit ▸ History: the list of undo steps.
+    ShowHistory,
     /// Edit ▸ Copy flame (XML).
     CopyFlame,
     /// Edit ▸ Paste flame (XML).
@@ -43,6 +45,10 @@ pub enum Action {
     ToggleFilePanel,
     /// Tools ▸ Editor: show or hide the triangle editor.
     ToggleEditor,
+    /// View ▸ Full-window preview: the preview over the whole window, or back.
+    ToggleFullView,
+    /// View ▸ Preview in its own window, or back between the panels.
+    TogglePreviewWindow,
     /// View ▸ Fit preview.
     FitPreview,
     /// View ▸ Zoom in.
@@ -158,6 +164,7 @@ pub const MENU: &[MenuItem] = &[
     item("File", "Exit", Action::Exit, sc(CMD, Key::Q)),
     item("Edit", "Undo", Action::Undo, sc(CMD, Key::Z)),
     item("Edit", "Redo", Action::Redo, sc(CMD, Key::Y)),
+    item("Edit", "History", Action::ShowHistory, sc(CMD, Key::H)),
     item(
         "Edit",
         "Copy flame (XML)",
@@ -173,6 +180,18 @@ pub const MENU: &[MenuItem] = &[
     item("View", "Toolbar", Action::ToggleToolbar, None),
     item("View", "Status bar", Action::ToggleStatusBar, None),
     item("View", "File contents", Action::ToggleFilePanel, None),
+    item(
+        "View",
+        "Full-window preview",
+        Action::ToggleFullView,
+        sc(Modifiers::NONE, Key::F11),
+    ),
+    item(
+        "View",
+        "Preview in its own window",
+        Action::TogglePreviewWindow,
+        None,
+    ),
     item(
         "View",
         "Fit preview",

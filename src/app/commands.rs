@@ -76,6 +76,10 @@ impl UgnisApp {
                 Tab::Scene => self.scene.notices.status("The scene tab has no redo"),
                 Tab::Explore => self.explore.notices.status("The Explore tab has no redo"),
             },
+            Action::ShowHistory => {
+                self.tab = Tab::Flame;
+                self.flame.history_open = !self.flame.history_open;
+            }
             Action::CopyFlame => {
                 ctx.copy_text(io::flam3_xml::flame_element(self.flame.doc().flame()));
                 self.flame.notices.status("Flame copied as XML");
@@ -88,6 +92,15 @@ impl UgnisApp {
             Action::ToggleStatusBar => self.show_status = !self.show_status,
             Action::ToggleFilePanel => self.flame.show_files = !self.flame.show_files,
             Action::ToggleEditor => self.flame.show_editor = !self.flame.show_editor,
+            Action::ToggleFullView => {
+                self.tab = Tab::Flame;
+                self.flame.full_view = !self.flame.full_view;
+            }
+            Action::TogglePreviewWindow => {
+                self.tab = Tab::Flame;
+                self.flame.full_view = false;
+                self.flame.preview_window = !self.flame.preview_window;
+            }
             Action::FitPreview => self.flame.preview_zoom = 1.0,
             Action::ZoomIn => self.flame.preview_zoom = (self.flame.preview_zoom * 1.25).min(8.0),
             Action::ZoomOut => {
@@ -120,9 +133,16 @@ impl UgnisApp {
             Action::ShowVariationFilter => {
                 self.flame.variation_filter.open = !self.flame.variation_filter.open
             }
-            Action::ShowGradient => self.flame.gradients.open = !self.flame.gradients.open,
+            // One window, two pages: the key shows its page, or closes the window showing it.
+            Action::ShowGradient => {
+                let (g, e) = (&mut self.flame.gradients, &mut self.flame.palette_editor);
+                g.open = !g.open || e.open;
+                e.open = false;
+            }
             Action::ShowPaletteEditor => {
-                self.flame.palette_editor.open = !self.flame.palette_editor.open
+                let (g, e) = (&mut self.flame.gradients, &mut self.flame.palette_editor);
+                e.open = !(g.open && e.open);
+                g.open = e.open;
             }
             Action::ShowMutations => self.flame.mutations.open = !self.flame.mutations.open,
             Action::RandomFlame => self.flame.random_flame(o),

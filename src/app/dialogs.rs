@@ -28,6 +28,8 @@ pub enum Purpose {
     ResumeState,
     /// The video file of an animation export.
     ExportAnimation,
+    /// A sound whose loudness moves a parameter.
+    SoundFile,
 }
 
 impl Purpose {
@@ -50,6 +52,7 @@ impl Purpose {
             Purpose::BoxCountImage => "Image to box-count",
             Purpose::ResumeState => "Resume render state",
             Purpose::ExportAnimation => "Export animation",
+            Purpose::SoundFile => "Sound for the motion",
         }
     }
 
@@ -68,6 +71,7 @@ impl Purpose {
             Purpose::BoxCountImage => &["png", "jpg", "jpeg", "bmp", "gif"],
             Purpose::ResumeState => &["ugnis-state"],
             Purpose::ExportAnimation => &["mp4", "webm", "mkv", "mov", "gif", "apng"],
+            Purpose::SoundFile => &["wav", "flac", "mp3"],
         }
     }
 
@@ -98,6 +102,8 @@ pub struct FileBrowser {
     pub purpose: Purpose,
     pub dir: PathBuf,
     pub name: String,
+    /// The Folder field's text: the folder shown, or what is being typed.
+    pub folder: String,
     entries: Vec<(String, bool)>,
     error: Option<String>,
     /// The platform's dialog, run in the background while this one waits.
@@ -128,6 +134,7 @@ impl FileBrowser {
         let dir = absolute_dir(&dir);
         let mut b = FileBrowser {
             purpose,
+            folder: dir.display().to_string(),
             dir,
             name: name.to_string(),
             entries: Vec::new(),
@@ -140,6 +147,7 @@ impl FileBrowser {
     }
 
     fn refresh(&mut self) {
+        self.folder = self.dir.display().to_string();
         self.entries.clear();
         match std::fs::read_dir(&self.dir) {
             Ok(rd) => {
@@ -164,6 +172,25 @@ impl FileBrowser {
                 self.error = None;
             }
             Err(e) => self.error = Some(format!("{}: {e}", self.dir.display())),
+        }
+    }
+
+    /// Go to the folder typed in the Folder field (relative to the folder shown; `~` is the
+    /// home folder); a name that is no folder is told and the field keeps it for correcting.
+    pub fn go_to_typed_folder(&mut self) {
+        let typed = self.folder.trim().to_string();
+        let expanded = match (typed.strip_prefix('~'), std::env::var_os("HOME")) {
+            (Some(rest), Some(home)) if rest.is_empty() || rest.starts_with('/') => {
+                PathBuf::from(home).join(rest.trim_start_matches('/'))
+            }
+            _ => PathBuf::from(&typed),
+        };
+        let p = self.dir.join(expanded);
+        if p.is_dir() {
+            self.dir = absolute_dir(&p);
+            self.refresh();
+        } else {
+            self.error = Some(format!("{}: not a folder", p.display()));
         }
     }
 
@@ -202,21 +229,14 @@ impl FileBrowser {
                     self.dir = absolute_dir(Path::new(&h));
                     self.refresh();
                 }
-                let mut d = self.dir.display().to_string();
                 let l = ui.label("Folder");
-                if ui
-                    .text_edit_singleline(&mut d)
+                let r = ui
+                    .add(egui::TextEdit::singleline(&mut self.folder).desired_width(f32::INFINITY))
                     .labelled_by(l.id)
-                    .on_hover_text("type a folder and press Enter")
-                    .lost_focus()
-                {
-                    let p = self.dir.join(&d);
-                    if p.is_dir() {
-                        self.dir = absolute_dir(&p);
-                        self.refresh();
-                    } else if d != self.dir.display().to_string() {
-                        self.error = Some(format!("{}: not a folder", p.display()));
-                    }
+                    .on_hover_text("type a folder and press Enter");
+                // The text stays as typed until Enter goes there (or a folder is chosen).
+                if r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                    self.go_to_typed_folder();
                 }
             });
             egui::ScrollArea::vertical()
@@ -344,6 +364,9 @@ pub fn confirm_discard(ctx: &egui::Context, what: &str) -> Option<Confirm> {
         ui.label(format!(
             "The flames have unsaved changes. Save them before {what}?"
         ));
+        if ui.input(|i| i.key_pressed(egui::Key::Escape)) {
+            r = Some(Confirm::Cancel);
+        }
         ui.horizontal(|ui| {
             if ui.button("Save").clicked() {
                 r = Some(Confirm::Save);
@@ -366,7 +389,7 @@ pub fn message(ctx: &egui::Context, title: &str, text: &str) -> bool {
         ui.set_max_width(520.0);
         ui.heading(title);
         ui.label(text);
-        if ui.button("OK").clicked() {
+        if ui.button("OK").clicked() || ui.input(|i| i.key_pressed(egui::Key::Escape)) {
             done = true;
         }
     });

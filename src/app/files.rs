@@ -135,6 +135,12 @@ impl UgnisApp {
                 .map(|d| d.settings.output.clone()),
             Purpose::OpenLSystem | Purpose::ExportLSystem => self.explore.lsystem.file.clone(),
             Purpose::BoxCountImage => None,
+            Purpose::SoundFile => self
+                .flame
+                .timeline
+                .sound_dialog
+                .as_ref()
+                .and_then(|d| d.path.clone()),
             Purpose::ResumeState => self.flame.last_export_dir.clone(),
             _ => self.flame.file.path.clone(),
         };
@@ -325,6 +331,11 @@ impl UgnisApp {
             Purpose::ExportAnimation => {
                 if let Some(d) = &mut self.flame.anim_export {
                     d.settings.output = path;
+                }
+            }
+            Purpose::SoundFile => {
+                if let Some(d) = &mut self.flame.timeline.sound_dialog {
+                    d.path = Some(path);
                 }
             }
             Purpose::OpenView => self.open_in(View::Escape, &path),

@@ -86,22 +86,30 @@ pub const PANELS: &[(&str, &str)] = &[
     ),
 ];
 
-/// Show the open help window; returns false when it was closed.
-pub fn show(ctx: &egui::Context, page: HelpPage) -> bool {
-    let mut open = true;
-    let title = match page {
+/// The title of a help window.
+pub fn title(page: HelpPage) -> &'static str {
+    match page {
         HelpPage::Shortcuts => "Keyboard shortcuts",
         HelpPage::Panels => "What the panels do",
         HelpPage::About => "About ugnis",
-    };
+    }
+}
+
+/// Show the open help window; returns false when it was closed.
+pub fn show(ctx: &egui::Context, page: HelpPage) -> bool {
+    let mut open = true;
+    let title = title(page);
     egui::Window::new(title)
         .open(&mut open)
         .collapsible(false)
         .default_width(460.0)
         .show(ctx, |ui| match page {
             HelpPage::Shortcuts => {
+                // The scroll bar always shows: the list is longer than the window.
                 egui::ScrollArea::vertical()
                     .max_height(420.0)
+                    .auto_shrink([false, true])
+                    .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
                     .show(ui, |ui| {
                         egui::Grid::new("shortcut-grid")
                             .striped(true)

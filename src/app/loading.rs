@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use super::options::Options;
-use crate::flame::{Affine, Flame};
+use crate::flame::Flame;
 use crate::io;
 
 /// The flames of a file with what reading them had to say.
@@ -26,7 +26,7 @@ pub fn load_any(path: &Path, options: &Options) -> Result<Loaded, String> {
     }
     let mut flames = p.value;
     for f in &mut flames {
-        keep_foreign_weights(f);
+        keep_file_weights(f);
     }
     // Attributes of other programs are kept and written back: worth a status line, not a
     // message box that must be dismissed before anything else.
@@ -44,20 +44,12 @@ pub fn load_any(path: &Path, options: &Options) -> Result<Loaded, String> {
 /// Reader diagnostics that lose nothing (kept and written back unchanged).
 const INFORMATIONAL: &[&str] = &["XML021"];
 
-/// A flame from another program keeps its own weights: triangle edits re-derive weights from
-/// the areas only when the file asks for it or the weights already follow the areas.
-fn keep_foreign_weights(f: &mut Flame) {
+/// A flame from a file keeps its own weights: triangle edits re-derive weights from the
+/// areas only when the file asks for it (ugnis' `ugnis_auto_weights="1"`) or the user ticks
+/// "from areas". Weights that happen to follow the areas are no request: Apophysis, JWildfire
+/// and flam3 never change a weight when a triangle moves.
+pub fn keep_file_weights(f: &mut Flame) {
     if f.auto_weights.is_none() {
-        let maps: Vec<Affine> = f.xforms.iter().map(|x| x.coefs).collect();
-        let rule = Flame::determinant_weights(&maps);
-        let total: f64 = f.xforms.iter().map(|x| x.weight).sum();
-        let follows = total > 0.0
-            && f.xforms
-                .iter()
-                .zip(&rule)
-                .all(|(x, w)| (x.weight / total - w).abs() < 1e-6);
-        if !follows {
-            f.auto_weights = Some(false);
-        }
+        f.auto_weights = Some(false);
     }
 }

@@ -34,6 +34,9 @@ impl UgnisApp {
         for a in fired {
             self.act(ctx, a);
         }
+        if !typing && !self.modal_open() && ctx.input(|i| i.key_pressed(egui::Key::Escape)) {
+            self.escape_pressed(ctx);
+        }
         // Pasted text that is a flame becomes a new flame of the document.
         let pasted: Vec<String> = ctx.input(|i| {
             i.events
@@ -73,6 +76,9 @@ impl UgnisApp {
             Action::ToggleStatusBar => Some(self.show_status),
             Action::ToggleFilePanel => Some(f.show_files),
             Action::ToggleEditor => Some(f.show_editor),
+            Action::ToggleFullView => Some(f.full_view),
+            Action::ShowHistory => Some(f.history_open),
+            Action::TogglePreviewWindow => Some(f.preview_window),
             Action::ToggleAnimate => Some(f.animation.is_some()),
             Action::ToggleMorph => Some(f.morph.is_some()),
             Action::ToggleTimeline => Some(f.timeline.open),
@@ -315,7 +321,21 @@ impl UgnisApp {
                     ui.separator();
                 }
             }
-            ui.label(self.status().to_string());
+            // A long line (a file's warnings) ends in "…" at the window's edge; the pointer
+            // shows all of it, a click opens it in a message box.
+            let text = self.status().to_string();
+            if !text.is_empty() {
+                let r = ui
+                    .add(
+                        egui::Label::new(&text)
+                            .truncate()
+                            .sense(egui::Sense::click()),
+                    )
+                    .on_hover_text(format!("{text}\n\n(click to see it in a window)"));
+                if r.clicked() {
+                    self.show_message("Status", text);
+                }
+            }
         });
     }
 }

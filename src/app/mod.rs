@@ -4,7 +4,7 @@
 //!
 //! * `shell` — the window: the options, the four tabs, message boxes, the file chooser and
 //!   the "save changes?" question. `menus` draws its menu bar, toolbar and status bar and
-//!   handles shortcuts, pasted flames and dropped files; `actions` lists every command with
+//!   handles shortcuts, pasted flames and dropped files (`closing` is Esc); `actions` lists every command with
 //!   its menu and shortcut; `files` opens and saves, every file in the view
 //!   [`crate::io::view_of`] names, with the flames read by `loading.rs`.
 //! * One folder per tab, each owning its document, background worker and panels:
@@ -21,6 +21,7 @@
 
 pub(crate) mod a11y;
 pub(crate) mod actions;
+mod closing;
 pub(crate) mod commands;
 pub(crate) mod dialogs;
 pub(crate) mod escape_tab;

@@ -32,6 +32,14 @@ pub struct Options {
     pub preview_gamma: f64,
     /// Quality of the preview while an animation or morph runs.
     pub animation_quality: f64,
+    /// The preview refines until its estimated noise is at most this many 8-bit levels (root
+    /// mean square over the flame's pixels), whatever the file's quality.
+    pub preview_noise: f64,
+    /// The fewest samples per pixel the preview refines to before its noise may stop it
+    /// (density estimation keeps sharpening a picture whose grain is gone).
+    pub preview_least_quality: f64,
+    /// The most samples per pixel the preview refines to.
+    pub preview_max_quality: f64,
     // Random
     /// Fewest xforms of a random flame.
     pub min_xforms: usize,
@@ -69,6 +77,12 @@ pub struct Options {
     pub recent_files: Vec<PathBuf>,
 }
 
+/// The preview's noise target by default (8-bit levels of grain): a little less grain than
+/// the example flames have at quality 100.
+pub const DEFAULT_PREVIEW_NOISE: f64 = 2.5;
+/// The range of the preview's noise target.
+pub const PREVIEW_NOISE_RANGE: std::ops::RangeInclusive<f64> = 0.2..=20.0;
+
 /// Most recent files kept.
 pub const RECENT_FILES: usize = 10;
 /// Most names the variations filter keeps (every name with its forms is about 1,400).
@@ -84,6 +98,9 @@ impl Default for Options {
             preview_quality: 5.0,
             preview_gamma: 2.0,
             animation_quality: 1.0,
+            preview_noise: DEFAULT_PREVIEW_NOISE,
+            preview_least_quality: 100.0,
+            preview_max_quality: 2000.0,
             min_xforms: 2,
             max_xforms: 6,
             random_gradient: true,
@@ -92,7 +109,7 @@ impl Default for Options {
             post_probability: 0.0,
             final_probability: 0.0,
             default_gradient: "ember".into(),
-            preview_size: 640,
+            preview_size: 1280,
             threads: 0,
             auto_weights: true,
             width: 640,
@@ -139,6 +156,22 @@ impl Options {
             && !(-100..=100).contains(&k)
         {
             p.push("symmetry order must be between −100 and 100".into());
+        }
+        if !PREVIEW_NOISE_RANGE.contains(&self.preview_noise) {
+            p.push(format!(
+                "preview noise target must be between {} and {} levels",
+                PREVIEW_NOISE_RANGE.start(),
+                PREVIEW_NOISE_RANGE.end()
+            ));
+        }
+        if !(1.0..=crate::flame::render::MAX_QUALITY).contains(&self.preview_max_quality) {
+            p.push(format!(
+                "preview's most quality must be between 1 and {}",
+                crate::flame::render::MAX_QUALITY
+            ));
+        }
+        if !(0.0..=self.preview_max_quality).contains(&self.preview_least_quality) {
+            p.push("preview's least quality must be between 0 and its most quality".into());
         }
         if !(64..=4096).contains(&self.preview_size) {
             p.push("preview size must be between 64 and 4096 pixels".into());

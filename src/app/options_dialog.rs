@@ -79,6 +79,39 @@ fn display_tab(ui: &mut egui::Ui, draft: &mut Options) {
             ui.strong("Preview");
             ui.end_row();
             num(ui, "Density", &mut draft.preview_quality, 0.5);
+            let l = ui.label("Noise target (levels)");
+            ui.add(
+                egui::DragValue::new(&mut draft.preview_noise)
+                    .speed(0.05)
+                    .range(super::options::PREVIEW_NOISE_RANGE),
+            )
+            .labelled_by(l.id)
+            .on_hover_text(
+                "the preview keeps refining until its noise is at most this many of 255 \
+                 levels (lower: cleaner, slower); the file's quality is for export",
+            );
+            ui.end_row();
+            let l = ui.label("Least quality");
+            ui.add(
+                egui::DragValue::new(&mut draft.preview_least_quality)
+                    .speed(5.0)
+                    .range(0.0..=crate::flame::render::MAX_QUALITY),
+            )
+            .labelled_by(l.id)
+            .on_hover_text(
+                "the preview refines to at least this many samples per pixel before its \
+                 noise may stop it (density estimation keeps sharpening the picture)",
+            );
+            ui.end_row();
+            let l = ui.label("Most quality");
+            ui.add(
+                egui::DragValue::new(&mut draft.preview_max_quality)
+                    .speed(10.0)
+                    .range(1.0..=crate::flame::render::MAX_QUALITY),
+            )
+            .labelled_by(l.id)
+            .on_hover_text("the preview stops refining at this many samples per pixel");
+            ui.end_row();
             num(ui, "Gamma", &mut draft.preview_gamma, 0.05);
             ui.strong("Animation");
             ui.end_row();

@@ -209,6 +209,19 @@ impl UgnisApp {
         self.save_options();
     }
 
+    /// Show a message box.
+    pub(super) fn show_message(&mut self, title: &str, text: String) {
+        self.messages.push_back((title.to_string(), text));
+    }
+
+    /// A modal dialog is up (the file chooser, a message box or "save changes?"): it answers
+    /// Esc itself.
+    pub(super) fn modal_open(&self) -> bool {
+        self.browser.is_some()
+            || !self.messages.is_empty()
+            || (self.pending.is_some() && self.flame.file.dirty)
+    }
+
     /// The file chooser, if one is open.
     pub fn file_browser(&self) -> Option<&FileBrowser> {
         self.browser.as_ref()
@@ -348,11 +361,15 @@ impl UgnisApp {
         if self.tab == Tab::Explore {
             self.explore.tick();
         }
-        egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
-        if self.show_toolbar {
+        // The full-window preview leaves out the bars too.
+        let bars = !(self.tab == Tab::Flame && self.flame.full_view);
+        if bars {
+            egui::Panel::top("menu").show(ui, |ui| self.menu_bar(ui));
+        }
+        if self.show_toolbar && bars {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar(ui));
         }
-        if self.show_status {
+        if self.show_status && bars {
             egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
         }
         match self.tab {
@@ -406,6 +423,7 @@ impl UgnisApp {
             Some(FlameRequest::GradientFromImage) => self.browse(Purpose::GradientFromImage),
             Some(FlameRequest::ChooseExportFile) => self.browse(Purpose::Export),
             Some(FlameRequest::ChooseAnimationFile) => self.browse(Purpose::ExportAnimation),
+            Some(FlameRequest::ChooseSoundFile) => self.browse(Purpose::SoundFile),
             None => {}
         }
         self.dialogs(&ctx);

@@ -9,9 +9,9 @@ use anyhow::{Result, bail};
 use clap::Args;
 
 use ugnis::flame::Flame;
-use ugnis::flame::keyframes::{MAX_FRAMES, Target};
+use ugnis::flame::keyframes::Target;
 use ugnis::io::audio::read_sound;
-use ugnis::sound::{Band, Smoothing, band_energy, curve_from_energy};
+use ugnis::sound::{Band, Drive, Smoothing, drive_flame};
 
 #[derive(Args, Debug)]
 pub struct SoundArgs {
@@ -108,52 +108,22 @@ pub fn drive(s: &SoundArgs, flame: &mut Flame, fps: Option<f64>, input: &Path) -
     let target: Target = name
         .parse()
         .map_err(|e| anyhow::anyhow!("--sound-target: {e}"))?;
-    if target.get(flame).is_none() {
-        bail!(
-            "--sound-target '{target}': {} has {} xforms{}",
-            input.display(),
-            flame.xforms.len(),
-            if flame.final_xform.is_some() {
-                " and a final one"
-            } else {
-                " and no final one"
-            }
-        );
-    }
-    if target.is_logarithmic() && (low <= 0.0 || high <= 0.0) {
-        bail!(
-            "--sound-range {low}..{high}: '{target}' is a scale factor; both ends must be positive"
-        );
-    }
     let sound = read_sound(path)?;
-    let had_keys = !flame.keys.is_empty();
     if let Some(fps) = fps {
         flame.keys.fps = fps;
     }
-    if !had_keys {
-        let frames = (sound.seconds() * flame.keys.fps).ceil().max(1.0);
-        if frames > MAX_FRAMES as f64 {
-            bail!(
-                "'{}': {frames} frames at {} fps; an animation has at most {MAX_FRAMES}",
-                path.display(),
-                flame.keys.fps
-            );
-        }
-        flame.keys.frames = frames as u32;
-    }
-    let energy = band_energy(
-        &sound,
-        s.sound_band,
-        flame.keys.fps,
-        flame.keys.frames as usize,
-        s.sound_smooth,
-    );
-    let curve = curve_from_energy(&energy, target, low, high);
-    if flame.keys.curve(&target).is_some() {
+    let d = Drive {
+        target,
+        band: s.sound_band,
+        low,
+        high,
+        smooth: s.sound_smooth,
+    };
+    let replaced = drive_flame(flame, &sound, &d)
+        .map_err(|e| anyhow::anyhow!("--sound {}: {e} ({})", path.display(), input.display()))?;
+    if replaced {
         stderr!("'{target}' had keyframes; the sound's curve replaces them");
-        flame.keys.curves.retain(|c| c.target != target);
     }
-    flame.keys.curves.push(curve);
     if let Some(out) = &s.save_keys {
         super::check_outputs(&[input, path.as_path()], &[out.as_path()])?;
         let name = flame.name.clone();

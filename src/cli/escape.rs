@@ -35,9 +35,9 @@ pub struct EscapeArgs {
     /// Centre of the view as X,Y
     #[arg(long, allow_hyphen_values = true)]
     pub center: Option<String>,
-    /// World width of the view
-    #[arg(long, value_parser = super::finite)]
-    pub width: Option<f64>,
+    /// World width of the view (any exponent down to 1e-10000, e.g. 1e-1000)
+    #[arg(long, allow_hyphen_values = true)]
+    pub width: Option<String>,
     /// Image size WxH
     #[arg(long, value_parser = super::parse_size)]
     pub size: Option<(u32, u32)>,
@@ -124,10 +124,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         doc.params.family = family_from_name(k).with_context(|| format!("unknown kind '{k}'"))?;
     }
     if let Some((w, h)) = a.size {
-        let width = doc.world_width();
-        doc.width = w;
-        doc.height = h;
-        doc.view.half_height = width / 2.0 * h as f64 / w as f64;
+        doc.resize(w, h);
     }
     let c = complex(&a.c, "c")?;
     match &mut doc.params.family {
@@ -184,15 +181,15 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         }
     }
     if let Some(v) = &a.center {
-        let c = escape_view::parse_center(v)
-            .with_context(|| format!("--center '{v}': expected RE,IM (e.g. -0.75,0.1)"))?;
-        doc.view = doc.view.with_center_dd(c);
+        let c = escape_view::parse_center(v).map_err(|e| {
+            let shown: String = v.chars().take(60).collect();
+            anyhow::anyhow!("--center '{shown}…': {e}; expected RE,IM (e.g. -0.75,0.1)")
+        })?;
+        doc.view = doc.view.with_centre(c);
     }
-    if let Some(wd) = a.width {
-        if !(wd > 0.0 && wd.is_finite()) {
-            bail!("--width {wd} must be positive");
-        }
-        doc.view.half_height = wd / 2.0 * doc.height as f64 / doc.width as f64;
+    if let Some(wd) = &a.width {
+        let wd = escape_view::parse_width(wd).map_err(|e| anyhow::anyhow!("--width: {e}"))?;
+        doc.set_world_width_fx(wd);
     }
     if let Some(n) = a.max_iter {
         doc.params.max_iter = n;
@@ -263,7 +260,7 @@ pub fn run(a: EscapeArgs) -> Result<()> {
         .map_err(|e| anyhow::anyhow!("the view cannot be saved as given: {}", e.message))?;
     let pool = super::pool(a.threads)?;
     let img = pool.install(|| -> Result<image::RgbImage> {
-        let mut r = EscapeRenderer::new(&doc.params, doc.view, doc.width, doc.height)?;
+        let mut r = EscapeRenderer::new(&doc.params, doc.view.clone(), doc.width, doc.height)?;
         let pb = super::progress_bar(
             doc.width as u64 * doc.height as u64,
             &format!("rendering {}", doc.params.family.name()),

@@ -28,6 +28,7 @@ pub mod random;
 pub mod render;
 pub mod scene;
 pub mod signals;
+pub mod thumbnail;
 
 use std::io::{IsTerminal, Write};
 use std::path::Path;

@@ -245,7 +245,8 @@ pub fn run(a: RenderArgs) -> Result<()> {
     } else {
         let input = a.input.as_ref().context("no flame file given")?;
         let flames = load_flames(input, a.palettes.as_ref(), a.strict)?;
-        let mut flame = select(flames, a.index, a.name.as_deref(), input)?;
+        // A JWildfire flame shows its motion curves at its frame.
+        let mut flame = select(flames, a.index, a.name.as_deref(), input)?.at_jwildfire_frame();
         if let Some(t) = &a.template {
             let t = io::read_template_file(t, &ReadOptions::default())?;
             for w in &t.warnings {

@@ -1,45 +1,167 @@
-//! Deep zoom for z² + c by perturbation: one reference orbit Z at the view centre C, computed
-//! in double-double arithmetic and stored as f64; every pixel c = C + δc of the Mandelbrot set
-//! then iterates only its difference δ from the reference in f64,
+//! Deep zoom by perturbation for z² + c (the Mandelbrot set and its Julia sets) and z³ + c.
+//!
+//! One reference orbit Z at the view centre is computed in big binary fixed point at the
+//! precision the zoom needs ([`orbit`]) and stored as f64; every pixel then iterates only its
+//! difference δ from the reference,
 //!
 //! ```text
-//! δ(n+1) = 2·Z(n)·δ(n) + δ(n)² + δc,      z(n) = Z(n) + δ(n),
+//! z²: δ(n+1) = 2·Z(n)·δ(n) + δ(n)² + δc,      z³: δ(n+1) = 3Z²δ + 3Zδ² + δ³ + δc,
 //! ```
 //!
-//! which stays accurate because δ is small where Z is not. When the pixel's orbit comes closer
-//! to 0 than its difference (|z| < |δ|), or the reference ends (it escaped), the pixel
-//! rebases onto the start of the reference (δ := z, n := 0), which removes the "glitches" of
-//! single-reference perturbation (Zhuoran's method). Julia sets work the same way with δ(0)
-//! the pixel's offset and no δc term; they rebase onto the orbit of 0 (the critical orbit).
+//! (δc the pixel's offset from the centre for the Mandelbrot kind, 0 for Julia sets, which
+//! start at δ(0) = the offset instead). δ stays accurate because it is small where Z is not.
+//! Where δ is too small for f64 (offsets below about 1e-300) it is kept as an extended-
+//! exponent number ([`Cx`]) until it has grown into f64's range.
+//!
+//! Most iterations are skipped by bilinear approximation ([`super::bla`]). Glitches are
+//! avoided by rebasing (Zhuoran): when the pixel's orbit comes closer to 0 than its
+//! difference (|Z + δ| < |δ|), or the reference ends, the pixel continues from the start of
+//! an orbit that begins at 0 (δ := Z + δ, n_ref := 0): the reference itself for the
+//! Mandelbrot kind, the critical orbit of 0 for a Julia set.
 
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+
+use dashu_int::IBig;
+
+use super::bla::Bla;
+use super::centre::{Centre, ibig_to_fx};
 use super::complex::C;
-use super::dd::Dd;
-use super::family::{IterSettings, Sample};
+use super::family::{IterSettings, Sample, smooth_count};
+use super::fx::{Cx, Fx, ldexp};
 
-/// What the pixels of a deep view iterate around.
+/// Exponent (base 2) above which a difference is kept in f64.
+const F64_FROM: i32 = -900;
+
+/// What the pixels of a deep view iterate around: an orbit and its bilinear table.
+#[derive(Clone, Debug)]
+pub struct Orbit {
+    /// Z(0), Z(1), … until the orbit escaped or reached the iteration limit.
+    pub z: Vec<C>,
+    pub bla: Bla,
+}
+
+/// The reference of a deep view.
 #[derive(Clone, Debug)]
 pub struct Reference {
-    /// The orbit of the view centre: for the Mandelbrot set the orbit of 0 under z² + C (C
-    /// the centre), for a Julia set the orbit of the centre under z² + c.
-    pub orbit: Vec<C>,
-    /// Julia sets: the orbit of 0 under the same map. Pixels rebase onto it (a Mandelbrot
-    /// reference starts at 0 itself).
-    pub critical: Option<Vec<C>>,
+    /// The degree of the map (2 or 3).
+    pub degree: u32,
+    /// The orbit of the view centre: for the Mandelbrot kind the orbit of 0 under
+    /// z^d + C (C the centre), for a Julia set the orbit of the centre under z^d + c.
+    pub main: Orbit,
+    /// Julia sets: the orbit of 0 under the same map, where pixels rebase.
+    pub critical: Option<Orbit>,
+}
+
+/// Progress of a reference orbit (iterations done) and a request to stop it.
+#[derive(Default)]
+pub struct OrbitProgress {
+    pub done: AtomicU64,
+    pub cancel: AtomicBool,
+}
+
+/// A big fixed-point number X / 2^bits as f64.
+fn fix_to_f64(v: &IBig, bits: u32) -> f64 {
+    let f = ibig_to_fx(v);
+    ldexp(f.m, f.e - bits as i32)
+}
+
+/// The orbit of z0 under z^degree + c in binary fixed point with `bits` fraction bits, stored
+/// as f64, until it escapes past the bailout or reaches the iteration limit (None when
+/// cancelled). Always at least two entries.
+pub fn orbit(
+    degree: u32,
+    z0: [IBig; 2],
+    c: [IBig; 2],
+    bits: u32,
+    s: &IterSettings,
+    progress: &OrbitProgress,
+) -> Option<Vec<C>> {
+    let b = bits as usize;
+    let [cx, cy] = c;
+    let [mut x, mut y] = z0;
+    let mut out = Vec::with_capacity(s.max_iter.min(1 << 20) as usize + 1);
+    out.push(C::new(fix_to_f64(&x, bits), fix_to_f64(&y, bits)));
+    for k in 0..s.max_iter {
+        if degree == 3 {
+            let xx = (&x * &x) >> b;
+            let yy = (&y * &y) >> b;
+            let nx = ((&x * (&xx - IBig::from(3u8) * &yy)) >> b) + &cx;
+            let ny = ((&y * (IBig::from(3u8) * &xx - &yy)) >> b) + &cy;
+            (x, y) = (nx, ny);
+        } else {
+            let xx = (&x * &x) >> b;
+            let yy = (&y * &y) >> b;
+            let xy = (&x * &y) >> (b - 1);
+            x = xx - yy + &cx;
+            y = xy + &cy;
+        }
+        let z = C::new(fix_to_f64(&x, bits), fix_to_f64(&y, bits));
+        out.push(z);
+        if !(z.norm2() <= s.bailout2) {
+            break;
+        }
+        if k % 1024 == 0 {
+            progress.done.store(k as u64, Ordering::Relaxed);
+            if progress.cancel.load(Ordering::Relaxed) {
+                return None;
+            }
+        }
+    }
+    progress.done.store(out.len() as u64, Ordering::Relaxed);
+    Some(out)
+}
+
+/// Fraction bits the reference of a view needs: its pixel size, 64 more for the orbit's
+/// growth of errors and the sub-pixel offsets.
+pub fn bits_for(pixel: Fx) -> u32 {
+    let b = -pixel.log2() + 64.0;
+    if b.is_finite() {
+        b.max(64.0) as u32
+    } else {
+        64
+    }
 }
 
 impl Reference {
-    pub fn mandelbrot(centre: [Dd; 2], s: &IterSettings) -> Reference {
-        Reference {
-            orbit: orbit_dd([Dd::ZERO; 2], centre, s),
-            critical: None,
-        }
-    }
-
-    pub fn julia(centre: [Dd; 2], c: C, s: &IterSettings) -> Reference {
-        let c = [Dd::from_f64(c.re), Dd::from_f64(c.im)];
-        Reference {
-            orbit: orbit_dd(centre, c, s),
-            critical: Some(orbit_dd([Dd::ZERO; 2], c, s)),
+    /// The reference for a view centred on `centre` whose pixels lie within `radius` of it:
+    /// the Mandelbrot kind (`julia` None) or the Julia set of `julia`.
+    pub fn new(
+        degree: u32,
+        centre: &Centre,
+        julia: Option<C>,
+        pixel: Fx,
+        radius: Fx,
+        s: &IterSettings,
+        progress: &OrbitProgress,
+    ) -> Option<Reference> {
+        // A Julia set's pixels pass by the critical point, where the map squares their offsets:
+        // twice the digits.
+        let bits = bits_for(pixel) * if julia.is_some() { 2 } else { 1 };
+        let c0 = centre.to_binary(bits);
+        let zero = || [IBig::ZERO, IBig::ZERO];
+        let table = |z: Vec<C>, with_c: bool| Orbit {
+            bla: Bla::new(&z, degree, if with_c { radius } else { Fx::ZERO }, with_c),
+            z,
+        };
+        match julia {
+            None => {
+                let z = orbit(degree, zero(), c0, bits, s, progress)?;
+                Some(Reference {
+                    degree,
+                    main: table(z, true),
+                    critical: None,
+                })
+            }
+            Some(c) => {
+                let cb = Centre::from_f64_exact([c.re, c.im]).to_binary(bits);
+                let z = orbit(degree, c0, cb.clone(), bits, s, progress)?;
+                let k = orbit(degree, zero(), cb, bits, s, progress)?;
+                Some(Reference {
+                    degree,
+                    main: table(z, false),
+                    critical: Some(table(k, false)),
+                })
+            }
         }
     }
 
@@ -48,229 +170,189 @@ impl Reference {
     }
 }
 
-/// The orbit of z0 under z² + c in double-double arithmetic, stored as f64, until it escapes
-/// past the bailout or reaches the iteration limit. Always at least two entries.
-fn orbit_dd(z0: [Dd; 2], c: [Dd; 2], s: &IterSettings) -> Vec<C> {
-    let [cx, cy] = c;
-    let [mut x, mut y] = z0;
-    let mut out = Vec::with_capacity(s.max_iter.min(1 << 20) as usize + 1);
-    out.push(C::new(x.to_f64(), y.to_f64()));
-    for _ in 0..s.max_iter {
-        let xx = x * x;
-        let yy = y * y;
-        let xy = x * y;
-        x = xx - yy + cx;
-        y = xy + xy + cy;
-        let z = C::new(x.to_f64(), y.to_f64());
-        out.push(z);
-        if !(z.norm2() <= s.bailout2) {
-            break;
-        }
+/// One pixel's state: its difference from the reference, the derivative of its orbit and
+/// where it stands.
+struct Pixel<'a> {
+    r: &'a Reference,
+    orbit: &'a Orbit,
+    /// Reference index.
+    m: usize,
+    /// Iterations done.
+    n: u32,
+    /// The pixel's offset as the δc added each step (0 for Julia sets).
+    dc: Cx,
+    dc64: C,
+    /// dz/dc (Mandelbrot kind) or dz/dz₀ (Julia), only when distance estimates are wanted.
+    der: Cx,
+}
+
+/// How a stretch of iterations ended.
+enum Outcome {
+    Done(Sample),
+    /// Carry on in f64 with this difference.
+    ToF64(C),
+}
+
+impl Pixel<'_> {
+    fn last(&self) -> usize {
+        self.orbit.z.len() - 1
     }
-    out
-}
 
-/// Series approximation: δ(n) ≈ A(n)·δc + B(n)·δc² + C(n)·δc³ for every pixel of the view
-/// lets all pixels start at iteration `skip` instead of 0 (the iterations every pixel spends
-/// shadowing the reference).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Series {
-    pub skip: usize,
-    pub a: C,
-    pub b: C,
-    pub c: C,
-}
-
-impl Series {
-    pub const NONE: Series = Series {
-        skip: 0,
-        a: C::ZERO,
-        b: C::ZERO,
-        c: C::ZERO,
-    };
-
-    /// The coefficients and the number of iterations they skip, for pixels within `radius`
-    /// of the reference. The skip is the last iteration at which the series still matches the
-    /// exact perturbation of probe points on the view's border (relative error 1e-13),
-    /// checked at every step up to it.
-    pub fn for_view(r: &Reference, probes: &[C], s: &IterSettings) -> Series {
-        let orbit = &r.orbit;
-        let julia = r.is_julia();
-        let last = orbit.len().saturating_sub(2);
-        let mut best = Series::NONE;
-        // Mandelbrot: δ(0) = 0 and δc is added every step; Julia: δ(0) = δc, nothing added.
-        let (one, add) = if julia { (C::ZERO, 0.0) } else { (C::ONE, 1.0) };
-        let (mut a, mut b, mut c) = (C::ONE - one, C::ZERO, C::ZERO);
-        let mut d: Vec<C> = probes.iter().map(|&p| p * (1.0 - add)).collect();
-        for n in 0..last.min(s.max_iter as usize) {
-            let z = orbit[n];
-            // Coefficients and the probes' exact differences at step n + 1.
-            let c1 = z * c * 2.0 + a * b * 2.0;
-            let b1 = z * b * 2.0 + a * a;
-            let a1 = z * a * 2.0 + one;
-            (a, b, c) = (a1, b1, c1);
-            let mut ok = true;
-            for (dk, &dc) in d.iter_mut().zip(probes) {
-                *dk = z * *dk * 2.0 + *dk * *dk + dc * add;
-                let full = orbit[n + 1] + *dk;
-                // A probe that rebases or escapes ends the shared stretch.
-                if full.norm2() < dk.norm2() || !(full.norm2() <= s.bailout2) {
-                    ok = false;
-                }
-                let dc2 = dc * dc;
-                let approx = a * dc + b * dc2 + c * dc2 * dc;
-                if !((approx - *dk).norm2() <= 1e-26 * dk.norm2()) {
-                    ok = false;
-                }
-            }
-            if !ok {
-                break;
-            }
-            best = Series {
-                skip: n + 1,
-                a,
-                b,
-                c,
+    /// The derivative through one exact step at full value z.
+    #[inline]
+    fn der_step(&mut self, z: C, s: &IterSettings) {
+        if s.want_de {
+            let k = if self.r.degree == 3 {
+                z * z * 3.0
+            } else {
+                z * 2.0
             };
+            let one = if self.r.is_julia() { 0.0 } else { 1.0 };
+            self.der = self.der.mul_c(k).add(Cx::new(one, 0.0, 0));
         }
-        best
     }
-}
 
-/// One pixel at offset `dc` from the reference point, without the series approximation.
-#[cfg(test)]
-pub fn iterate_perturbed(r: &Reference, dc: C, s: &IterSettings) -> Sample {
-    iterate_perturbed_from(r, &Series::NONE, dc, s)
+    /// Rebase onto the orbit that starts at 0.
+    fn rebase(&mut self) {
+        self.m = 0;
+        if let Some(k) = &self.r.critical {
+            self.orbit = k;
+        }
+    }
+
+    fn escaped(&self, n: u32, z: C, r2: f64, s: &IterSettings, pixel: Fx) -> Sample {
+        let deg = self.r.degree as f64;
+        let mut out = s.escape_sample(n, z, r2, C::ONE, deg);
+        out.nu = smooth_count(n, r2, deg);
+        out.de = if s.want_de {
+            // b = 2|z| ln|z| / |dz|, in pixels.
+            let a = r2.sqrt();
+            Fx::from_f64(2.0 * a * a.ln())
+                .div(self.der.abs().mul(pixel))
+                .to_f64() as f32
+        } else {
+            0.0
+        };
+        out
+    }
+
+    /// Iterate while δ is below f64's range.
+    fn run_extended(&mut self, mut d: Cx, s: &IterSettings, pixel: Fx) -> Outcome {
+        loop {
+            if self.n >= s.max_iter {
+                return Outcome::Done(Sample::inside(s.max_iter));
+            }
+            let z = self.orbit.z[self.m];
+            if let Some(st) = self.orbit.bla.find(self.m, d.abs(), s.max_iter - self.n) {
+                d = st.a.mul(d).add(st.b.mul(self.dc));
+                if s.want_de {
+                    self.der = st.a.mul(self.der).add(st.b);
+                }
+                self.m += st.len as usize;
+                self.n += st.len;
+            } else {
+                self.der_step(z + d.to_c(), s);
+                let lin = if self.r.degree == 3 {
+                    d.mul_c(z * z * 3.0)
+                        .add(d.mul(d).mul_c(z * 3.0))
+                        .add(d.mul(d).mul(d))
+                } else {
+                    d.mul_c(z * 2.0).add(d.mul(d))
+                };
+                d = lin.add(self.dc);
+                self.m += 1;
+                self.n += 1;
+            }
+            let full = self.orbit.z[self.m] + d.to_c();
+            let r2 = full.norm2();
+            if s.escaped(r2) {
+                return Outcome::Done(self.escaped(self.n, full, r2, s, pixel));
+            }
+            if self.m == self.last() || r2 < d.norm2().to_f64() {
+                self.rebase();
+                return Outcome::ToF64(full);
+            }
+            if d.e > F64_FROM {
+                return Outcome::ToF64(d.to_c());
+            }
+        }
+    }
+
+    /// Iterate in f64 from difference d to the end.
+    fn run_f64(&mut self, mut d: C, s: &IterSettings, pixel: Fx) -> Sample {
+        let cube = self.r.degree == 3;
+        loop {
+            if self.n >= s.max_iter {
+                return Sample::inside(s.max_iter);
+            }
+            let z = self.orbit.z[self.m];
+            let step = if self.m > 0 {
+                self.orbit
+                    .bla
+                    .find_f64(self.m, d.norm2().sqrt(), s.max_iter - self.n)
+            } else {
+                None
+            };
+            if let Some(st) = step {
+                d = st.a.mul_c(d).add(st.b.mul(self.dc)).to_c();
+                if s.want_de {
+                    self.der = st.a.mul(self.der).add(st.b);
+                }
+                self.m += st.len as usize;
+                self.n += st.len;
+            } else {
+                self.der_step(z + d, s);
+                d = if cube {
+                    d * (z * z * 3.0 + d * (z * 3.0 + d)) + self.dc64
+                } else {
+                    d * (z * 2.0 + d) + self.dc64
+                };
+                self.m += 1;
+                self.n += 1;
+            }
+            let full = self.orbit.z[self.m] + d;
+            let r2 = full.norm2();
+            if s.escaped(r2) {
+                return self.escaped(self.n, full, r2, s, pixel);
+            }
+            if r2 < d.norm2() || self.m == self.last() {
+                d = full;
+                self.rebase();
+            }
+        }
+    }
 }
 
 /// One pixel at offset `dc` from the reference point (the parameter offset for the
-/// Mandelbrot set, the starting-point offset for a Julia set), starting where the series
-/// approximation leaves off.
-pub fn iterate_perturbed_from(r: &Reference, sa: &Series, dc: C, s: &IterSettings) -> Sample {
+/// Mandelbrot kind, the starting-point offset for a Julia set). Distance estimates come out
+/// in units of `pixel`.
+pub fn iterate(r: &Reference, dc: Cx, s: &IterSettings, pixel: Fx) -> Sample {
     let julia = r.is_julia();
-    let mut orbit: &[C] = &r.orbit;
-    let mut last = orbit.len() - 1;
-    let skip = sa.skip.min(last.saturating_sub(1)).min(s.max_iter as usize);
-    let dc2 = dc * dc;
-    // Mandelbrot: δ(0) = 0, δc added each step, dz/dc; Julia: δ(0) = δz0, dz/dz0.
-    let (add, one) = if julia {
-        (C::ZERO, C::ZERO)
-    } else {
-        (dc, C::ONE)
+    let mut p = Pixel {
+        r,
+        orbit: &r.main,
+        m: 0,
+        n: 0,
+        dc: if julia { Cx::ZERO } else { dc },
+        dc64: if julia { C::ZERO } else { dc.to_c() },
+        der: if julia {
+            Cx::new(1.0, 0.0, 0)
+        } else {
+            Cx::ZERO
+        },
     };
-    let mut d = if skip > 0 {
-        sa.a * dc + sa.b * dc2 + sa.c * dc2 * dc
-    } else if julia {
-        dc
+    let d0 = if julia { dc } else { Cx::ZERO };
+    let d = if d0.e <= F64_FROM && !d0.is_zero() || dc.e <= F64_FROM {
+        match p.run_extended(d0, s, pixel) {
+            Outcome::Done(sample) => return sample,
+            Outcome::ToF64(d) => d,
+        }
     } else {
-        C::ZERO
+        d0.to_c()
     };
-    let mut m = skip;
-    // The derivative for the distance estimate, on the full orbit value.
-    let mut der = if skip > 0 {
-        sa.a + sa.b * dc * 2.0 + sa.c * dc2 * 3.0
-    } else {
-        C::ONE - one
-    };
-    for n in skip as u32 + 1..=s.max_iter {
-        let zm = orbit[m];
-        if s.want_de {
-            der = (zm + d) * der * 2.0 + one;
-        }
-        d = zm * d * 2.0 + d * d + add;
-        m += 1;
-        let z = orbit[m] + d;
-        let r2 = z.norm2();
-        if s.escaped(r2) {
-            return s.escape_sample(n, z, r2, der, 2.0);
-        }
-        if r2 < d.norm2() || m == last {
-            // Rebase onto an orbit that starts at 0.
-            d = z;
-            m = 0;
-            if let Some(k) = &r.critical {
-                orbit = k;
-                last = k.len() - 1;
-            }
-        }
-    }
-    Sample::inside(s.max_iter)
+    p.run_f64(d, s, pixel)
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::escape::family::{Family, iterate_point};
-
-    fn settings(max_iter: u32) -> IterSettings {
-        IterSettings {
-            max_iter,
-            bailout2: 4.0,
-            strict: true,
-            period_tol: 0.0,
-            want_de: false,
-        }
-    }
-
-    #[test]
-    fn perturbation_agrees_with_direct_iteration_where_f64_suffices() {
-        // Reference at a boundary point of seahorse valley; pixels up to 1e-3 away, where
-        // plain f64 is exact enough to compare counts.
-        let s = settings(2000);
-        let centre = [Dd::from_f64(-0.7453), Dd::from_f64(0.1127)];
-        let orbit = Reference::mandelbrot(centre, &s);
-        let mut same = 0;
-        let total = 40 * 40;
-        for a in 0..40 {
-            for b in 0..40 {
-                let dc = C::new((a as f64 - 20.0) * 2.5e-5, (b as f64 - 20.0) * 2.5e-5);
-                let p = iterate_perturbed(&orbit, dc, &s);
-                let c = C::new(-0.7453 + dc.re, 0.1127 + dc.im);
-                let q = iterate_point(&Family::Mandelbrot { power: 2 }, c, &s);
-                if (p.n, p.inside) == (q.n, q.inside) {
-                    same += 1;
-                }
-            }
-        }
-        // Rounding differs in the last bits; near the boundary the orbits are chaotic and a
-        // count can move by a few iterations.
-        assert!(same * 100 >= total * 99, "{same} of {total}");
-    }
-
-    #[test]
-    fn rebasing_handles_a_reference_that_escapes_early() {
-        // Reference outside the set (escapes at once); the pixel 0.5 away is inside the main
-        // cardioid. Without rebasing the pixel would be lost when the reference ends.
-        let s = settings(500);
-        let orbit = Reference::mandelbrot([Dd::from_f64(0.5), Dd::ZERO], &s);
-        assert!(orbit.orbit.len() < 10);
-        let p = iterate_perturbed(&orbit, C::new(-0.5, 0.0), &s);
-        assert!(p.inside);
-        let q = iterate_perturbed(&orbit, C::new(-0.2, 0.0), &s);
-        assert_eq!(
-            q.n,
-            iterate_point(&Family::Mandelbrot { power: 2 }, C::new(0.3, 0.0), &s).n
-        );
-    }
-
-    #[test]
-    fn deep_offsets_below_f64_resolution_still_separate() {
-        // At |C| ≈ 0.75, f64 cannot tell c and c + 1e-20 apart; the perturbed pixels can.
-        let s = settings(20_000);
-        let centre = [
-            Dd::parse("-0.743643887037158704752191506114774").unwrap(),
-            Dd::parse("0.131825904205311970493132056385139").unwrap(),
-        ];
-        let orbit = Reference::mandelbrot(centre, &s);
-        let counts: Vec<u32> = (0..16)
-            .map(|k| iterate_perturbed(&orbit, C::new(k as f64 * 1e-20, 0.0), &s).n)
-            .collect();
-        let distinct = {
-            let mut c = counts.clone();
-            c.sort();
-            c.dedup();
-            c.len()
-        };
-        assert!(distinct >= 3, "{counts:?}");
-    }
-}
+#[path = "deep_tests.rs"]
+mod tests;

@@ -1,6 +1,7 @@
 //! An escape-time document: the fractal's parameters, the view, the picture size and the name
 //! of its gradient — what a view file holds and what the escape-time tab edits.
 
+use super::fx::Fx;
 use crate::escape::{EscapeParams, Family, View};
 use crate::gradient;
 
@@ -35,8 +36,29 @@ impl EscapeDoc {
         }
     }
 
-    /// World width of the view.
+    /// World width of the view (0 below f64's range).
     pub fn world_width(&self) -> f64 {
-        2.0 * self.view.half_height * self.width as f64 / self.height.max(1) as f64
+        self.world_width_fx().to_f64()
+    }
+
+    /// World width of the view, at any depth.
+    pub fn world_width_fx(&self) -> Fx {
+        self.view
+            .half_height_fx()
+            .scale(2.0 * self.width as f64 / self.height.max(1) as f64)
+    }
+
+    /// Set the world width of the view (the height follows the picture's aspect).
+    pub fn set_world_width_fx(&mut self, width: Fx) {
+        self.view
+            .set_half_height_fx(width.scale(0.5 * self.height as f64 / self.width.max(1) as f64));
+    }
+
+    /// Change the picture size keeping the world width.
+    pub fn resize(&mut self, w: u32, h: u32) {
+        let width = self.world_width_fx();
+        self.width = w;
+        self.height = h;
+        self.set_world_width_fx(width);
     }
 }

@@ -23,9 +23,8 @@ pub(super) struct Job {
     pub(super) h: u32,
     pub(super) settings: IterSettings,
     pub(super) newton: Option<NewtonSystem>,
-    /// Deep zoom: the reference orbit at the view centre and the series approximation
-    /// that starts every pixel past the iterations they share.
-    pub(super) reference: Option<(deep::Reference, deep::Series)>,
+    /// Deep zoom: the reference orbit at the view centre and its bilinear table.
+    pub(super) reference: Option<deep::Reference>,
 }
 
 impl Job {
@@ -67,25 +66,18 @@ impl Job {
             period_tol,
             want_de: params.coloring == Coloring::Distance,
         };
+        let reference = if deep {
+            let progress = deep::OrbitProgress::default();
+            Some(
+                Job::reference(params, &view, w, h, &settings, &progress).ok_or_else(|| {
+                    EscapeError::Settings("the reference orbit was cancelled".into())
+                })?,
+            )
+        } else {
+            None
+        };
         Ok(Job {
-            reference: deep.then(|| {
-                let orbit = match params.family {
-                    Family::Julia { c, .. } => {
-                        deep::Reference::julia(view.center_dd(), c, &settings)
-                    }
-                    _ => deep::Reference::mandelbrot(view.center_dd(), &settings),
-                };
-                // Probes on the border, where the series is least accurate.
-                let (wf, hf) = ((w - 1) as f64, (h - 1) as f64);
-                let probes: Vec<C> = [0.0, 0.5, 1.0]
-                    .iter()
-                    .flat_map(|&u| [0.0, 0.5, 1.0].map(|v| (u, v)))
-                    .filter(|&(u, v)| (u, v) != (0.5, 0.5))
-                    .map(|(u, v)| view.offset_from_pixel(u * wf, v * hf, w, h))
-                    .collect();
-                let series = deep::Series::for_view(&orbit, &probes, &settings);
-                (orbit, series)
-            }),
+            reference,
             newton: match &params.family {
                 Family::Newton { coeffs } => Some(NewtonSystem::new(coeffs)),
                 _ => None,
@@ -96,6 +88,33 @@ impl Job {
             w,
             h,
         })
+    }
+
+    /// The reference orbit and bilinear table of a deep view (None when cancelled).
+    pub(super) fn reference(
+        params: &EscapeParams,
+        view: &View,
+        w: u32,
+        h: u32,
+        settings: &IterSettings,
+        progress: &deep::OrbitProgress,
+    ) -> Option<deep::Reference> {
+        let (degree, julia) = match params.family {
+            Family::Julia { power, c } => (power, Some(c)),
+            Family::Mandelbrot { power } => (power, None),
+            _ => unreachable!("deep zoom only for z^2 + c and z^3 + c"),
+        };
+        // The largest offset of a pixel from the centre: a corner.
+        let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
+        deep::Reference::new(
+            degree,
+            view.centre(),
+            julia,
+            view.pixel_size_fx(h),
+            radius,
+            settings,
+            progress,
+        )
     }
 
     fn point(&self, i: u32, j: u32) -> C {
@@ -131,11 +150,11 @@ impl Job {
 
     /// One pixel in scalar code.
     fn pixel(&self, i: u32, j: u32) -> Sample {
-        if let Some((orbit, series)) = &self.reference {
+        if let Some(r) = &self.reference {
             let dc = self
                 .view
-                .offset_from_pixel(i as f64, j as f64, self.w, self.h);
-            return deep::iterate_perturbed_from(orbit, series, dc, &self.settings);
+                .offset_from_pixel_fx(i as f64, j as f64, self.w, self.h);
+            return deep::iterate(r, dc, &self.settings, self.view.pixel_size_fx(self.h));
         }
         match (&self.params.family, &self.newton) {
             (Family::Newton { .. }, Some(sys)) => {
@@ -191,111 +210,5 @@ impl Job {
             }
         }
         out
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::escape::dd::Dd;
-
-    /// Escape counts by direct double-double iteration (slow; the truth for deep tests).
-    fn dd_counts(view: &View, w: u32, h: u32, s: &IterSettings) -> Vec<u32> {
-        let [cx, cy] = view.center_dd();
-        let mut out = Vec::new();
-        for j in 0..h {
-            for i in 0..w {
-                let o = view.offset_from_pixel(i as f64, j as f64, w, h);
-                let c = [cx + Dd::from_f64(o.re), cy + Dd::from_f64(o.im)];
-                let (mut x, mut y) = (Dd::ZERO, Dd::ZERO);
-                let mut n = s.max_iter;
-                for k in 1..=s.max_iter {
-                    let (xx, yy, xy) = (x * x, y * y, x * y);
-                    x = xx - yy + c[0];
-                    y = xy + xy + c[1];
-                    if !(x.to_f64().powi(2) + y.to_f64().powi(2) <= s.bailout2) {
-                        n = k;
-                        break;
-                    }
-                }
-                out.push(n);
-            }
-        }
-        out
-    }
-
-    #[test]
-    fn series_approximation_skips_shared_iterations_and_agrees_with_the_truth() {
-        let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
-        p.max_iter = 12_000;
-        let c = crate::io::escape_view::parse_center(
-            "-0.743643887037158704752191506114774, 0.131825904205311970493132056385139",
-        )
-        .unwrap();
-        let view = View::new([0.0; 2], 2e-19).with_center_dd(c);
-        let (w, h) = (40, 30);
-        let job = Job::new(&p, view, w, h).unwrap();
-        let (orbit, series) = job.reference.as_ref().unwrap();
-        assert!(series.skip > 1000, "skip {}", series.skip);
-        let truth = dd_counts(&view, w, h, &job.settings);
-        let (mut with_sa, mut without) = (0, 0);
-        for j in 0..h {
-            for i in 0..w {
-                let t = truth[(j * w + i) as usize];
-                with_sa += (job.pixel(i, j).n == t) as u32;
-                let dc = view.offset_from_pixel(i as f64, j as f64, w, h);
-                let no_series = deep::iterate_perturbed(orbit, dc, &job.settings);
-                without += (no_series.n == t) as u32;
-            }
-        }
-        // Both agree with the truth on all but a few chaotic boundary pixels, and the series
-        // adds no errors of its own beyond that noise.
-        assert!(with_sa * 100 >= w * h * 99, "{with_sa} of {}", w * h);
-        assert!(without * 100 >= w * h * 99, "{without} of {}", w * h);
-        assert!(with_sa + 3 >= without, "with {with_sa}, without {without}");
-    }
-
-    #[test]
-    fn julia_sets_zoom_deep_too() {
-        // Around the β fixed point (1 + √(1 − 4c))/2, which lies on the Julia set, 1e-14 wide.
-        let c = C::new(-0.8, 0.156);
-        let disc = C::ONE - c * 4.0;
-        let root = C::from_polar(disc.abs().sqrt(), disc.im.atan2(disc.re) / 2.0);
-        let beta = (C::ONE + root) * 0.5;
-        let mut p = EscapeParams::new(Family::Julia { power: 2, c });
-        p.max_iter = 4000;
-        let view = View::new([beta.re, beta.im], 1e-14);
-        let (w, h) = (40, 30);
-        assert!(is_deep(&p.family, &view, h));
-        let job = Job::new(&p, view, w, h).unwrap();
-        let [cx, cy] = view.center_dd();
-        let (mut same, mut counts) = (0, Vec::new());
-        for j in 0..h {
-            for i in 0..w {
-                let o = view.offset_from_pixel(i as f64, j as f64, w, h);
-                let (mut x, mut y) = (cx + Dd::from_f64(o.re), cy + Dd::from_f64(o.im));
-                let mut truth = p.max_iter;
-                for k in 1..=p.max_iter {
-                    let (xx, yy, xy) = (x * x, y * y, x * y);
-                    x = xx - yy + Dd::from_f64(c.re);
-                    y = xy + xy + Dd::from_f64(c.im);
-                    if !(x.to_f64().powi(2) + y.to_f64().powi(2) <= job.settings.bailout2) {
-                        truth = k;
-                        break;
-                    }
-                }
-                let got = job.pixel(i, j).n;
-                same += (got == truth) as u32;
-                counts.push(truth);
-            }
-        }
-        counts.sort();
-        counts.dedup();
-        assert!(
-            counts.len() > 20,
-            "the view shows structure: {} counts",
-            counts.len()
-        );
-        assert!(same * 100 >= w * h * 99, "{same} of {}", w * h);
     }
 }

@@ -1,17 +1,21 @@
 //! Escape-time fractals: Mandelbrot, Julia, z^m + c, Newton, logistic, the cubic
 //! z³ + z + p, and the Borowicz warped-Julia textures; colouring; progressive parallel
-//! rendering with a vectorised lane engine; perturbation deep zoom for z² + c.
+//! rendering with a vectorised lane engine; perturbation deep zoom for z² + c and z³ + c
+//! (arbitrary-precision reference, extended exponents, bilinear approximation).
 
 // Escape tests are written `!(r2 <= bailout²)` on purpose: a NaN (an overflowed orbit) must
 // count as escaped, which `r2 > bailout²` would not do.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub(crate) mod bla;
+pub mod centre;
 mod color;
 mod complex;
 pub(crate) mod dd;
 mod deep;
 mod doc;
 pub(crate) mod family;
+pub mod fx;
 mod guess;
 mod job;
 mod lanes;

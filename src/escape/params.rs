@@ -10,9 +10,11 @@ use super::view::View;
 
 /// Relative pixel size below which the Mandelbrot set is drawn by perturbation.
 pub const DEEP_BELOW: f64 = 1e-12;
-/// Relative pixel size limits: f64 arithmetic, and perturbation around a double-double centre.
+/// Relative pixel size limit of f64 arithmetic.
 pub const F64_LIMIT: f64 = 1e-13;
-pub const DD_LIMIT: f64 = 1e-28;
+/// Decimal exponent of the smallest half-height of a deep view (1e-10000): the reference
+/// orbit's arithmetic grows with the digits, and beyond this one orbit takes hours.
+pub const DEEP_LIMIT_EXP10: f64 = -10_000.0;
 
 /// Block filling.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -97,16 +99,11 @@ pub enum EscapeError {
         /// Scale of the centre the pixel is compared with: the largest of 1, |x| and |y|.
         scale: f64,
     },
-    /// The pixel is too small even for perturbation around a double-double centre.
-    #[error(
-        "zoomed in to the deep-zoom limit (pixel {pixel:.3e} at |centre| {scale:.3e}, \
-         double-double precision); zoom out"
-    )]
+    /// The view is narrower than deep zoom goes.
+    #[error("view height {height} is below the deep-zoom limit of 1e-10000; zoom out")]
     DeepLimit {
-        /// Pixel size in world units.
-        pixel: f64,
-        /// Scale of the centre the pixel is compared with: the largest of 1, |x| and |y|.
-        scale: f64,
+        /// The view's height in world units.
+        height: super::fx::Fx,
     },
     /// The picture size (width, height) is outside 1–30000 pixels a side.
     #[error("image size {0}x{1} must be between 1x1 and 30000x30000")]
@@ -129,7 +126,14 @@ pub fn estimate_memory(params: &EscapeParams, view: &View, w: u32, h: u32) -> u6
     let image = px * 3 * 2;
     let iters = params.max_iter as u64 + 2;
     let orbit = if is_deep(&params.family, view, h) {
-        2 * iters * std::mem::size_of::<C>() as u64
+        // The reference orbit and its bilinear table (twice for a Julia set: the critical
+        // orbit too).
+        let copies = if matches!(params.family, Family::Julia { .. }) {
+            2
+        } else {
+            1
+        };
+        copies * (iters * std::mem::size_of::<C>() as u64 + super::bla::table_bytes(iters))
     } else {
         0
     };
@@ -181,7 +185,7 @@ pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
 pub fn supports_deep_zoom(family: &Family) -> bool {
     matches!(
         family,
-        Family::Mandelbrot { power: 2 } | Family::Julia { power: 2, .. }
+        Family::Mandelbrot { power: 2 | 3 } | Family::Julia { power: 2 | 3, .. }
     )
 }
 
@@ -193,20 +197,26 @@ pub fn check_view_for(family: &Family, view: &View, w: u32, h: u32) -> Result<()
     if w == 0 || h == 0 || w > 30_000 || h > 30_000 {
         return Err(EscapeError::BadSize(w, h));
     }
-    let (pixel, scale) = (view.pixel_size(h), view_scale(view));
-    if !(pixel >= DD_LIMIT * scale) || !pixel.is_finite() {
-        return Err(EscapeError::DeepLimit { pixel, scale });
+    let half = view.half_height_fx();
+    if !(half.log10() >= DEEP_LIMIT_EXP10) || !half.is_finite() {
+        return Err(EscapeError::DeepLimit {
+            height: half.scale(2.0),
+        });
     }
     Ok(())
 }
 
 /// True when the view is drawn by perturbation (deep zoom).
 pub fn is_deep(family: &Family, view: &View, h: u32) -> bool {
-    supports_deep_zoom(family) && view.pixel_size(h) < DEEP_BELOW * view_scale(view)
+    supports_deep_zoom(family)
+        && view
+            .pixel_size_fx(h)
+            .lt(super::fx::Fx::from_f64(DEEP_BELOW * view_scale(view)))
 }
 
 fn view_scale(view: &View) -> f64 {
-    view.center[0].abs().max(view.center[1].abs()).max(1.0)
+    let [x, y] = view.center();
+    x.abs().max(y.abs()).max(1.0)
 }
 
 pub(super) fn check_params(p: &EscapeParams) -> Result<(), EscapeError> {
@@ -265,14 +275,15 @@ mod tests {
             check_view(&deep, 400, 300),
             Err(EscapeError::PrecisionLimit { .. })
         ));
-        // The Mandelbrot set z² + c zooms on by perturbation, to the double-double limit.
+        // The Mandelbrot set z² + c zooms on by perturbation, to the deep-zoom limit.
         let m2 = Family::Mandelbrot { power: 2 };
         assert!(check_view_for(&m2, &deep, 400, 300).is_ok());
         assert!(is_deep(&m2, &deep, 300));
         assert!(!is_deep(&m2, &v, 300));
-        let m3 = Family::Mandelbrot { power: 3 };
-        assert!(check_view_for(&m3, &deep, 400, 300).is_err());
-        let too_deep = View::new([-0.7, 0.2], 1e-27);
+        let m4 = Family::Mandelbrot { power: 4 };
+        assert!(check_view_for(&m4, &deep, 400, 300).is_err());
+        let mut too_deep = View::new([-0.7, 0.2], 1.0);
+        too_deep.set_half_height_fx(super::super::fx::Fx::parse("1e-10001").unwrap());
         assert!(matches!(
             check_view_for(&m2, &too_deep, 400, 300),
             Err(EscapeError::DeepLimit { .. })

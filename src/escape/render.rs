@@ -13,7 +13,8 @@ use super::guess::mariani_silver;
 use super::job::Job;
 
 pub use super::params::{
-    EscapeError, EscapeParams, Fill, check_memory, check_view_for, estimate_memory, is_deep,
+    DEEP_LIMIT_EXP10, EscapeError, EscapeParams, Fill, check_memory, check_view_for,
+    estimate_memory, is_deep,
 };
 pub use super::view::View;
 
@@ -195,7 +196,12 @@ fn colorize(job: &Job, samples: &[Sample], step: u32) -> Option<RgbImage> {
     let cz = Colorizer {
         coloring: job.params.coloring,
         palette: &job.params.palette,
-        pixel: job.view.pixel_size(h),
+        // Deep views estimate distances in pixels.
+        pixel: if job.reference.is_some() {
+            1.0
+        } else {
+            job.view.pixel_size(h)
+        },
         roots,
         histogram,
     };
@@ -249,7 +255,7 @@ mod tests {
         let view = View::new([-0.743643887037151, 0.131825904205330], 8e-12);
         let (w, h) = (48, 36);
         assert!(is_deep(&p.family, &view, h));
-        let (_, samples) = render(&p, view, w, h).unwrap();
+        let (_, samples) = render(&p, view.clone(), w, h).unwrap();
         let s = IterSettings {
             max_iter: p.max_iter,
             bailout2: p.bailout() * p.bailout(),
@@ -306,8 +312,8 @@ mod tests {
         let mut p = EscapeParams::new(Family::Mandelbrot { power: 2 });
         p.coloring = Coloring::Bands;
         let view = View::new([-0.7, 0.0], 1.25);
-        let (img, samples) = render(&p, view, 97, 61).unwrap();
-        let mut r = EscapeRenderer::new(&p, view, 97, 61).unwrap();
+        let (img, samples) = render(&p, view.clone(), 97, 61).unwrap();
+        let mut r = EscapeRenderer::new(&p, view.clone(), 97, 61).unwrap();
         let never = AtomicBool::new(false);
         let mut frames = 0;
         while !r.is_done() {

@@ -143,7 +143,6 @@ impl Target {
                         None => return false,
                     },
                 }
-                x.vars.retain(|v| v.weight != 0.0);
             }
             Target::PaletteRotate => {
                 let n = f.palette.colors.len();
@@ -241,7 +240,8 @@ impl Keyframes {
     /// Set in `base` the values its curves have at `frame`, for every target that is not an
     /// offset ([`Target::is_offset`]): what an editor shows as the flame's values at that
     /// frame. Offsets stay with [`Keyframes::apply`], so `apply(base, frame)` is the same
-    /// before and after. A variation whose weight curve passes 0 keeps its parameters.
+    /// before and after. A variation whose weight curve passes 0 stays (weight 0) with its
+    /// parameters.
     pub fn hold_at(&self, base: &mut Flame, frame: f64) {
         let wrap = self.wrap.then_some(self.frames as f64);
         for c in self.curves.iter().filter(|c| !c.target.is_offset()) {
@@ -249,22 +249,6 @@ impl Keyframes {
                 continue;
             };
             let v = to_model_units(&c.target, v);
-            if let Target::Var {
-                xform: r,
-                var,
-                form,
-                param: VarParam::Weight,
-            } = c.target
-                && v == 0.0
-            {
-                // Target::set drops a variation of weight 0, and its parameters with it.
-                if let Some(x) = xform_mut(base, r)
-                    && let Some(w) = x.vars.iter_mut().find(|w| w.id == var && w.form == form)
-                {
-                    w.weight = 0.0;
-                }
-                continue;
-            }
             c.target.set(base, v);
         }
     }
@@ -293,9 +277,24 @@ impl Keyframes {
         };
         let mut curves: Vec<&Curve> = self.curves.iter().collect();
         curves.sort_by_key(order);
-        for c in curves {
+        for c in &curves {
             if let Some(v) = c.eval(frame, wrap) {
                 c.target.set(&mut f, to_model_units(&c.target, v));
+            }
+        }
+        // A keyed variation whose weight is 0 at this frame is not rendered; dropped only
+        // now, so its parameter curves are kept whatever order the curves are stored in.
+        for c in &curves {
+            if let Target::Var {
+                xform: r,
+                var,
+                form,
+                ..
+            } = c.target
+                && let Some(x) = xform_mut(&mut f, r)
+            {
+                x.vars
+                    .retain(|v| !(v.id == var && v.form == form && v.weight == 0.0));
             }
         }
         f

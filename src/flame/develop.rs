@@ -49,6 +49,11 @@ pub(super) fn develop_rows_until(
     out_rows: std::ops::Range<usize>,
     stop: &AtomicBool,
 ) -> Option<DynamicImage> {
+    if let Some(j) = &geom.jwf {
+        return crate::flame::jwf_render::develop::develop(
+            flame, geom, j, hist, density, format, out_rows, stop,
+        );
+    }
     let ls = LogTable::new(LogScale::new(flame, density));
     let mut acc: Vec<Bucket> = Vec::new();
     let acc: &[Bucket] = match &geom.de {
@@ -80,6 +85,13 @@ pub(super) fn develop_draft(
     format: OutputFormat,
     out_rows: std::ops::Range<usize>,
 ) -> DynamicImage {
+    if geom.jwf.is_some() {
+        let mut sum = hists[0].clone();
+        for h in &hists[1..] {
+            sum.add(h);
+        }
+        return develop_rows(flame, geom, &sum, density, format, out_rows);
+    }
     let src = Rows::Draft {
         hists,
         ls: LogTable::new(LogScale::new(flame, density)),

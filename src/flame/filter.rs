@@ -2,7 +2,84 @@
 
 use std::f64::consts::PI;
 
-use crate::flame::model::FilterShape;
+/// Spatial filter kernels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum FilterShape {
+    /// The Gaussian (the default).
+    #[default]
+    Gaussian,
+    /// Hermite.
+    Hermite,
+    /// Box.
+    Box,
+    /// Triangle (tent).
+    Triangle,
+    /// Bell.
+    Bell,
+    /// B-spline.
+    Bspline,
+    /// Mitchell–Netravali.
+    Mitchell,
+    /// Blackman.
+    Blackman,
+    /// Catmull–Rom.
+    Catrom,
+    /// Hanning.
+    Hanning,
+    /// Hamming.
+    Hamming,
+    /// Lanczos, three lobes.
+    Lanczos3,
+    /// Lanczos, two lobes.
+    Lanczos2,
+    /// Quadratic.
+    Quadratic,
+}
+
+impl FilterShape {
+    /// Every kernel, in menu order.
+    pub const ALL: [FilterShape; 14] = [
+        FilterShape::Gaussian,
+        FilterShape::Hermite,
+        FilterShape::Box,
+        FilterShape::Triangle,
+        FilterShape::Bell,
+        FilterShape::Bspline,
+        FilterShape::Mitchell,
+        FilterShape::Blackman,
+        FilterShape::Catrom,
+        FilterShape::Hanning,
+        FilterShape::Hamming,
+        FilterShape::Lanczos3,
+        FilterShape::Lanczos2,
+        FilterShape::Quadratic,
+    ];
+
+    /// The kernel's name in flame files (`filter_shape`).
+    pub fn name(self) -> &'static str {
+        match self {
+            FilterShape::Gaussian => "gaussian",
+            FilterShape::Hermite => "hermite",
+            FilterShape::Box => "box",
+            FilterShape::Triangle => "triangle",
+            FilterShape::Bell => "bell",
+            FilterShape::Bspline => "bspline",
+            FilterShape::Mitchell => "mitchell",
+            FilterShape::Blackman => "blackman",
+            FilterShape::Catrom => "catrom",
+            FilterShape::Hanning => "hanning",
+            FilterShape::Hamming => "hamming",
+            FilterShape::Lanczos3 => "lanczos3",
+            FilterShape::Lanczos2 => "lanczos2",
+            FilterShape::Quadratic => "quadratic",
+        }
+    }
+
+    /// The kernel a name stands for; None if unknown.
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|f| f.name() == s)
+    }
+}
 
 /// Kernel support σ.
 pub fn support(shape: FilterShape) -> f64 {

@@ -3,6 +3,7 @@
 
 use crate::flame::density::DeFilters;
 use crate::flame::filter::SpatialFilter;
+use crate::flame::jwf_render::JwfRaster;
 use crate::flame::model::{Affine, Flame};
 
 /// Everything about the sizes of the buffers of one render.
@@ -27,6 +28,10 @@ pub struct Geometry {
     pub bucket_from_world: Affine,
     pub filter: SpatialFilter,
     pub de: Option<std::sync::Arc<DeFilters>>,
+    /// JWildfire's filters, for flames JWildfire's renderer draws: the bucket grid is then its
+    /// raster (the picture and a border, points rounded to the nearest bucket), with no
+    /// density estimation.
+    pub jwf: Option<std::sync::Arc<JwfRaster>>,
 }
 
 impl Geometry {
@@ -34,6 +39,9 @@ impl Geometry {
     pub fn new(flame: &Flame, de: Option<std::sync::Arc<DeFilters>>) -> Geometry {
         let os = flame.supersample.max(1) as usize;
         let (w, h) = (flame.width as usize, flame.height as usize);
+        if flame.renders_as_jwildfire() {
+            return Self::jwildfire(flame, os, w, h);
+        }
         let filter = SpatialFilter::new(flame.filter_shape, flame.filter, os as u32);
         let mut gutter = filter.gutter;
         let mut delta = 0;
@@ -60,7 +68,45 @@ impl Geometry {
             bucket_from_world,
             filter,
             de,
+            jwf: None,
         }
+    }
+
+    /// The geometry of a flame JWildfire's renderer draws: its raster as the bucket grid.
+    fn jwildfire(flame: &Flame, os: usize, w: usize, h: usize) -> Geometry {
+        let jwf = JwfRaster::new(&flame.jwf, flame.filter, os);
+        let gutter = jwf.border;
+        let (bw, bh) = (os * w + 2 * gutter, os * h + 2 * gutter);
+        let bucket_from_world = jwf_bucket_from_world(flame, os, w, h, gutter);
+        Geometry {
+            width: w,
+            height: h,
+            os,
+            gutter,
+            delta: 0,
+            bw,
+            bh,
+            row0: 0,
+            full_bh: bh,
+            bucket_from_world,
+            filter: SpatialFilter::new(flame.filter_shape, 0.0, os as u32),
+            de: None,
+            jwf: Some(std::sync::Arc::new(jwf)),
+        }
+    }
+
+    /// The bucket rows of the whole grid that the output rows `out` are developed from
+    /// (without the density estimator's reach).
+    pub fn source_rows(&self, out: std::ops::Range<usize>) -> std::ops::Range<usize> {
+        if let Some(j) = &self.jwf {
+            return j.source_rows(out, self.full_bh);
+        }
+        if out.is_empty() {
+            return 0..0;
+        }
+        let lo = out.start * self.os + self.delta;
+        let hi = ((out.end - 1) * self.os + self.delta + self.filter.taps.len()).min(self.full_bh);
+        lo..hi
     }
 
     /// The same bucket grid (size, supersampling, gutter, filters, rows held) seen through
@@ -68,13 +114,11 @@ impl Geometry {
     /// frame draws into the frame's one histogram.
     pub fn with_camera_of(&self, flame: &Flame) -> Geometry {
         Geometry {
-            bucket_from_world: bucket_from_world(
-                flame,
-                self.os,
-                self.width,
-                self.height,
-                self.gutter,
-            ),
+            bucket_from_world: if self.jwf.is_some() {
+                jwf_bucket_from_world(flame, self.os, self.width, self.height, self.gutter)
+            } else {
+                bucket_from_world(flame, self.os, self.width, self.height, self.gutter)
+            },
             ..self.clone()
         }
     }
@@ -157,6 +201,20 @@ impl BucketMap {
     #[inline(always)]
     pub fn index(&self, x: f64, y: f64) -> (u32, bool) {
         let (bx, by) = self.m.apply(x, y);
+        self.index_of(bx, by)
+    }
+
+    /// [`BucketMap::index`] of a point moved by `d` buckets once mapped.
+    #[inline(always)]
+    pub fn index_moved(&self, x: f64, y: f64, d: (f64, f64)) -> (u32, bool) {
+        let (bx, by) = self.m.apply(x, y);
+        self.index_of(bx + d.0, by + d.1)
+    }
+
+    /// The bucket index of continuous bucket coordinates (0 when outside the grid) and
+    /// whether they fall inside.
+    #[inline(always)]
+    fn index_of(&self, bx: f64, by: f64) -> (u32, bool) {
         // Exact: row0 is a whole number no larger than the grid, and a difference of a
         // double and a smaller whole number below 2⁵² is representable.
         let by = by - self.row0;
@@ -193,6 +251,21 @@ fn bucket_from_world(flame: &Flame, os: usize, w: usize, h: usize, gutter: usize
         e: ox - k * (c * cx - s * cy),
         f: oy - k * (s * cx + c * cy),
     }
+}
+
+/// [`bucket_from_world`] as JWildfire maps: rounding to the nearest bucket, and for a 3-D
+/// camera the rotation about the origin rather than the centre (JWildfire turns the projected
+/// point, then moves the centre to the middle of the picture).
+fn jwf_bucket_from_world(flame: &Flame, os: usize, w: usize, h: usize, gutter: usize) -> Affine {
+    let mut m = bucket_from_world(flame, os, w, h, gutter);
+    if crate::flame::chaos::Projection::is_jwildfire_3d(flame) {
+        let k = os as f64 * flame.ppu();
+        m.e = (os * w) as f64 / 2.0 + gutter as f64 - k * flame.center[0];
+        m.f = (os * h) as f64 / 2.0 + gutter as f64 - k * flame.center[1];
+    }
+    m.e += 0.5;
+    m.f += 0.5;
+    m
 }
 
 #[cfg(test)]

@@ -726,8 +726,47 @@ pub fn interpolate_at(cps: &[Flame], time: f64) -> Flame {
     let (i1, i2) = segment(cps.len(), |i| cps[i].anim.time, time);
     let lo = i1.saturating_sub(1);
     let hi = (i2 + 1).min(cps.len() - 1);
-    let window: Vec<Cp> = cps[lo..=hi].iter().map(Cp::new).collect();
+    let turns = unwrapped_rotations(&cps[..=hi]);
+    let window: Vec<Cp> = cps[lo..=hi]
+        .iter()
+        .zip(&turns[lo..])
+        .map(|(f, &rotate)| {
+            let mut cp = Cp::new(f);
+            cp.flame.rotate = rotate;
+            cp
+        })
+        .collect();
     interpolate_cps(&window, time, 0.0).into_flame()
+}
+
+/// The control points' camera rotations as flam3 reads a sequence: each shifted by whole turns
+/// to lie within 180° of the one before (so 350° after 10° turns back by 20°, not forward by
+/// 340°), except after a control point of the `compat` or `older` interpolation types.
+pub fn unwrapped_rotations(cps: &[Flame]) -> Vec<f64> {
+    let mut out: Vec<f64> = Vec::with_capacity(cps.len());
+    for (i, f) in cps.iter().enumerate() {
+        let mut r = f.rotate;
+        if let Some(&prev) = out.last()
+            && !matches!(
+                cps[i - 1].anim.interpolation_type,
+                InterpolationType::Compat | InterpolationType::Older
+            )
+            // Beyond a billion degrees whole turns are lost to rounding: left as written.
+            && (r - prev).abs() < 1e9
+        {
+            // flam3 adds or takes 360° until within range; whole turns toward the previous
+            // angle first (truncated, as those loops would stop), so huge angles cost no time.
+            r -= 360.0 * ((r - prev) / 360.0).trunc();
+            while r < prev - 180.0 {
+                r += 360.0;
+            }
+            while r > prev + 180.0 {
+                r -= 360.0;
+            }
+        }
+        out.push(r);
+    }
+    out
 }
 
 /// The control points (i1, i2) around `time` (the first or last segment outside the sequence).

@@ -302,3 +302,29 @@ fn times_must_increase() {
     assert_eq!(check_times(&[f(2.0), f(1.0)]), Err(1));
     assert_eq!(check_times(&[f(f64::NAN)]), Err(0));
 }
+
+#[test]
+fn consecutive_rotations_are_brought_within_half_a_turn_as_flam3_reads_them() {
+    let at = |t: f64, rotate: f64| {
+        let mut f = flame_at(t, vec![xf(1.0, Affine::default(), &[("linear", 1.0)])]);
+        f.rotate = rotate;
+        f
+    };
+    let cps = vec![
+        at(0.0, 10.0),
+        at(1.0, 350.0),
+        at(2.0, -700.0),
+        at(3.0, 1e12),
+    ];
+    // 350° after 10° is −10°; −700° after −10° is 20°; a nonsense angle stays as written.
+    assert_eq!(unwrapped_rotations(&cps), vec![10.0, -10.0, 20.0, 1e12]);
+    // Half a turn exactly stays on the side it was written (flam3's loops stop there).
+    let half = vec![at(0.0, 0.0), at(1.0, 180.0), at(2.0, -180.0)];
+    assert_eq!(unwrapped_rotations(&half), vec![0.0, 180.0, 180.0]);
+    // The blend between 10° and 350° passes 0°, not 180°.
+    assert!(close(interpolate_at(&cps, 0.5).rotate, 0.0));
+    // Not after a control point of the compat type.
+    let mut compat = cps.clone();
+    compat[0].anim.interpolation_type = InterpolationType::Compat;
+    assert_eq!(unwrapped_rotations(&compat)[1], 350.0);
+}

@@ -249,3 +249,31 @@ fn holding_a_frame_sets_values_and_leaves_offsets_to_apply() {
     assert_eq!(held.xforms[0].vars[1].params[0], 5.0);
     assert_eq!(k.apply(&held, 3.0), k.apply(&base, 3.0));
 }
+
+#[test]
+fn a_parameter_curve_stored_before_its_weight_curve_is_kept() {
+    use crate::flame::model::{Affine, Flame, Xform};
+    let julia = variations::parse_name("julian").unwrap();
+    // The variation is not in the base: both its weight and its power come from curves.
+    let base = Flame {
+        xforms: vec![Xform::linear(Affine::default(), 1.0, 0.0)],
+        ..Flame::default()
+    };
+    let target = |param| Target::Var {
+        xform: XformRef::Index(0),
+        var: julia.0,
+        form: julia.1,
+        param,
+    };
+    let (power, weight) = (target(VarParam::Param(0)), target(VarParam::Weight));
+    let mut k = Keyframes::default();
+    k.curve_mut(power).insert(Key::new(0.0, 4.0)).unwrap();
+    k.curve_mut(weight).insert(Key::new(0.0, 0.5)).unwrap();
+    let at = k.apply(&base, 0.0);
+    let v = at.xforms[0].vars.iter().find(|v| v.id == julia.0).unwrap();
+    assert_eq!((v.weight, v.params[0]), (0.5, 4.0));
+    // At weight 0 the variation is not rendered at all.
+    k.curve_mut(weight).insert(Key::new(0.0, 0.0)).unwrap();
+    let off = k.apply(&base, 0.0);
+    assert!(off.xforms[0].vars.iter().all(|v| v.id != julia.0));
+}

@@ -17,7 +17,9 @@ pub(crate) mod histogram;
 pub(crate) mod ifs3d;
 pub mod interpolate;
 pub mod jwf_curve;
+pub mod jwf_render;
 pub mod keyframes;
+pub mod layers;
 pub mod loops;
 pub mod model;
 pub mod motion_blur;
@@ -29,6 +31,7 @@ pub mod sequence;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
 mod settings;
+mod sources;
 pub(crate) mod state;
 pub mod strips;
 pub(crate) mod symmetry;

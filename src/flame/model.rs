@@ -1,6 +1,7 @@
 //! The flame / IFS data model.
 
 pub use crate::flame::affine::Affine;
+pub use crate::flame::filter::FilterShape;
 use crate::flame::keyframes::Keyframes;
 use crate::flame::sequence::{Animation, MotionFunction};
 use crate::flame::variations::{self, Form, VarId};
@@ -205,85 +206,6 @@ impl Xform {
     /// Xaos multiplier towards xform `j`.
     pub fn chaos_to(&self, j: usize) -> f64 {
         self.chaos.get(j).copied().unwrap_or(1.0)
-    }
-}
-
-/// Spatial filter kernels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum FilterShape {
-    /// The Gaussian (the default).
-    #[default]
-    Gaussian,
-    /// Hermite.
-    Hermite,
-    /// Box.
-    Box,
-    /// Triangle (tent).
-    Triangle,
-    /// Bell.
-    Bell,
-    /// B-spline.
-    Bspline,
-    /// Mitchell–Netravali.
-    Mitchell,
-    /// Blackman.
-    Blackman,
-    /// Catmull–Rom.
-    Catrom,
-    /// Hanning.
-    Hanning,
-    /// Hamming.
-    Hamming,
-    /// Lanczos, three lobes.
-    Lanczos3,
-    /// Lanczos, two lobes.
-    Lanczos2,
-    /// Quadratic.
-    Quadratic,
-}
-
-impl FilterShape {
-    /// Every kernel, in menu order.
-    pub const ALL: [FilterShape; 14] = [
-        FilterShape::Gaussian,
-        FilterShape::Hermite,
-        FilterShape::Box,
-        FilterShape::Triangle,
-        FilterShape::Bell,
-        FilterShape::Bspline,
-        FilterShape::Mitchell,
-        FilterShape::Blackman,
-        FilterShape::Catrom,
-        FilterShape::Hanning,
-        FilterShape::Hamming,
-        FilterShape::Lanczos3,
-        FilterShape::Lanczos2,
-        FilterShape::Quadratic,
-    ];
-
-    /// The kernel's name in flame files (`filter_shape`).
-    pub fn name(self) -> &'static str {
-        match self {
-            FilterShape::Gaussian => "gaussian",
-            FilterShape::Hermite => "hermite",
-            FilterShape::Box => "box",
-            FilterShape::Triangle => "triangle",
-            FilterShape::Bell => "bell",
-            FilterShape::Bspline => "bspline",
-            FilterShape::Mitchell => "mitchell",
-            FilterShape::Blackman => "blackman",
-            FilterShape::Catrom => "catrom",
-            FilterShape::Hanning => "hanning",
-            FilterShape::Hamming => "hamming",
-            FilterShape::Lanczos3 => "lanczos3",
-            FilterShape::Lanczos2 => "lanczos2",
-            FilterShape::Quadratic => "quadratic",
-        }
-    }
-
-    /// The kernel a name stands for; None if unknown.
-    pub fn from_name(s: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|f| f.name() == s)
     }
 }
 
@@ -575,6 +497,9 @@ pub struct Flame {
     pub palette_mode: PaletteMode,
     /// Whose rule indexes the palette (the program that wrote the file).
     pub palette_index: PaletteIndex,
+    /// JWildfire's "preserve Z": in a flame JWildfire wrote, its 2-D variations carry the
+    /// weighted input z along (else their z is 0).
+    pub preserve_z: bool,
     /// The gradient (256 entries).
     pub palette: Gradient,
     /// The file's palette when it has more than 256 entries (Fractorium writes such palettes):
@@ -583,6 +508,9 @@ pub struct Flame {
     pub palette_hires: Option<Vec<[f64; 4]>>,
     /// Colour curves applied to the final picture (Fractorium's; identity by default).
     pub curves: crate::flame::curves::Curves,
+    /// JWildfire's picture settings, used when JWildfire's renderer draws the flame (see
+    /// [`Flame::renders_as_jwildfire`]).
+    pub jwf: crate::flame::jwf_render::JwfLook,
     /// The control point's time and how it animates (flam3's sequence settings).
     pub anim: Animation,
     /// ugnis' own keyframe animation of this flame's settings.
@@ -595,6 +523,11 @@ pub struct Flame {
     /// Further final xforms, applied in order after `final_xform` (and only with it): JWildfire
     /// allows several `<finalxform>` and chains them. The editor shows the first only.
     pub more_finals: Vec<Xform>,
+    /// The settings of the layer the flame's xforms, final xforms and gradient make (JWildfire's
+    /// first `<layer>`; plain for other flames).
+    pub layer: crate::flame::layers::LayerSettings,
+    /// JWildfire's further layers, drawn into the same picture (none for other flames).
+    pub more_layers: Vec<crate::flame::layers::Layer>,
     /// Render only this xform (flam3 `soloxform`); others get opacity 0.
     pub solo_xform: Option<usize>,
     /// False when the flame came without a camera (e.g. from an IFS file) and must be framed
@@ -643,14 +576,18 @@ impl Default for Flame {
             background: [0.0, 0.0, 0.0],
             palette_mode: PaletteMode::Step,
             palette_index: PaletteIndex::Flam3,
+            preserve_z: false,
             palette: Gradient::default(),
             palette_hires: None,
             curves: crate::flame::curves::Curves::default(),
+            jwf: crate::flame::jwf_render::JwfLook::default(),
             anim: Animation::default(),
             keys: Keyframes::default(),
             xforms: Vec::new(),
             final_xform: None,
             more_finals: Vec::new(),
+            layer: crate::flame::layers::LayerSettings::default(),
+            more_layers: Vec::new(),
             solo_xform: None,
             has_camera: true,
             seed: None,
@@ -687,14 +624,45 @@ impl Flame {
         }
     }
 
+    /// Whether JWildfire's renderer draws the flame (its filters, tone map and plotting): for
+    /// the flames JWildfire wrote, as the palette rule names the writer.
+    pub fn renders_as_jwildfire(&self) -> bool {
+        self.palette_index == PaletteIndex::JWildfire
+    }
+
+    /// How the variations of this flame run: as the program that wrote it runs them.
+    pub fn rules(&self) -> variations::Rules {
+        variations::Rules {
+            compat: true,
+            dialect: self.dialect(),
+            preserve_z: self.preserve_z,
+        }
+    }
+
     /// Pixels per world unit: scale·2^zoom·cam_zoom.
     pub fn ppu(&self) -> f64 {
         self.scale * self.zoom.exp2() * self.cam_zoom
     }
 
-    /// Total chaos-game samples: quality·4^zoom·W·H.
+    /// Chaos-game samples per unit of quality: 4^zoom·W·H (JWildfire: 4^zoom times its
+    /// raster of the picture and the filter's border, divided by the oversampling).
+    pub fn samples_per_quality(&self) -> f64 {
+        let (w, h) = (self.width as f64, self.height as f64);
+        let area = if self.renders_as_jwildfire() {
+            let os = self.supersample.max(1) as usize;
+            let border =
+                crate::flame::jwf_render::JwfRaster::new(&self.jwf, self.filter, os).border as f64;
+            let os = os as f64;
+            (os * w + 2.0 * border) * (os * h + 2.0 * border) / os
+        } else {
+            w * h
+        };
+        (4f64).powf(self.zoom) * area
+    }
+
+    /// Total chaos-game samples: quality·[`Flame::samples_per_quality`].
     pub fn total_samples(&self) -> u64 {
-        let n = self.quality * (4f64).powf(self.zoom) * self.width as f64 * self.height as f64;
+        let n = self.quality * self.samples_per_quality();
         if n.is_finite() && n > 0.0 {
             n.ceil() as u64
         } else {
@@ -713,10 +681,19 @@ impl Flame {
         self.final_xform.iter().chain(more)
     }
 
+    /// Every xform and final xform of the flame, those of its further layers too.
+    fn every_xform(&self) -> impl Iterator<Item = &Xform> {
+        let layers = self
+            .more_layers
+            .iter()
+            .flat_map(|l| l.xforms.iter().chain(&l.finals));
+        self.xforms.iter().chain(self.finals()).chain(layers)
+    }
+
     /// Names of every variation that has nonzero weight somewhere (supported or not).
     pub fn variations_used(&self) -> Vec<String> {
         let mut out: Vec<String> = Vec::new();
-        for x in self.xforms.iter().chain(self.finals()) {
+        for x in self.every_xform() {
             for v in &x.vars {
                 let n = v.attr_name();
                 if !out.contains(&n) {
@@ -737,7 +714,7 @@ impl Flame {
     pub fn unsupported_variation_warnings(&self) -> Vec<String> {
         let mut seen: Vec<String> = Vec::new();
         let mut out = Vec::new();
-        for x in self.xforms.iter().chain(self.finals()) {
+        for x in self.every_xform() {
             for (n, w) in x.unsupported_vars() {
                 if w != 0.0 && !seen.contains(&n) {
                     out.push(format!(

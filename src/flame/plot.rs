@@ -6,6 +6,7 @@ use crate::flame::chaos::{Chaos, LANES, Lanes};
 use crate::flame::geometry::Geometry;
 use crate::flame::histogram::{Bucket, Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
+use crate::flame::jwf_render::JwfRaster;
 use crate::flame::model::PaletteMode;
 use crate::flame::rng::FastRng;
 
@@ -71,14 +72,26 @@ fn iterate_into_generic(
     buf.reserve(n as usize + L);
     let map = geom.bucket_map();
     let (mut idx, mut keep) = ([0u32; L], [0u32; L]);
+    // JWildfire's antialiasing moves points by random offsets, from a stream of their own.
+    let antialias = geom.jwf.as_ref().and_then(|j| j.antialias);
+    let mut aa_rng = FastRng::new(if antialias.is_some() { rng.u64() } else { 0 });
     let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs| {
         // Buckets as arrays (vectorised), then a branch-free compaction of the visible
         // points that land in the histogram.
         let m = xs.len().min(ys.len()).min(cs.len()).min(vs.len()).min(L);
-        for j in 0..m {
-            let (i, inside) = map.index(xs[j], ys[j]);
-            idx[j] = i;
-            keep[j] = (inside & (vs[j] > 0.0)) as u32;
+        if let Some((amount, radius)) = antialias {
+            for j in 0..m {
+                let d = JwfRaster::jitter(amount, radius, &mut aa_rng);
+                let (i, inside) = map.index_moved(xs[j], ys[j], d);
+                idx[j] = i;
+                keep[j] = (inside & (vs[j] > 0.0)) as u32;
+            }
+        } else {
+            for j in 0..m {
+                let (i, inside) = map.index(xs[j], ys[j]);
+                idx[j] = i;
+                keep[j] = (inside & (vs[j] > 0.0)) as u32;
+            }
         }
         // Written straight into the spare capacity of `buf`: every place is written before
         // it is counted, only the kept ones are counted.

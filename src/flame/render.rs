@@ -36,6 +36,7 @@ use crate::flame::model::Flame;
 use crate::flame::motion_blur::MotionFrame;
 use crate::flame::plot::{Pending, accumulate, iterate_3d, iterate_into};
 use crate::flame::rng::FastRng;
+use crate::flame::sources::{SourceTools, Sources};
 use crate::flame::state::{Part, RenderState};
 use crate::flame::strips::Strip;
 use crate::flame::tonemap::OutputFormat;
@@ -124,53 +125,9 @@ pub struct Renderer {
     samples_done: u64,
     badvals: u64,
     cancelled: bool,
-    /// Set for a motion-blurred frame: the sub-frames its sub-batches draw from.
-    motion: Option<Arc<Motion>>,
-}
-
-/// The sub-frames of a motion-blurred frame, prepared for the renderer.
-struct Motion {
-    /// Each sub-frame's flame and weight.
-    subframes: Vec<(Flame, f64)>,
-    /// The sub-batches of the whole frame in order: (sub-frame, samples).
-    batches: Vec<(u32, u32)>,
-    /// The temporal filter's mean weight (the log scale divides the density by it).
-    mean_weight: f64,
-}
-
-/// What a worker thread draws a motion-blurred frame's sub-batch with: the sub-frame's xforms,
-/// camera and weighted palette.
-struct SubFrameTools {
-    index: u32,
-    n_xforms: usize,
-    chaos: Chaos,
-    geom: Geometry,
-    palette: PlotPalette,
-}
-
-impl SubFrameTools {
-    /// `frame` is the frame's own bucket grid: the sub-frame draws into it through its own
-    /// camera, as flam3 does (the grid, gutter and filters are the frame's).
-    fn new(m: &Motion, index: u32, frame: &Geometry) -> SubFrameTools {
-        let (flame, weight) = &m.subframes[index as usize];
-        // Checked when the render was prepared.
-        let chaos = Chaos::new(flame).expect("sub-frame flames were validated");
-        let geom = frame.with_camera_of(flame);
-        let mut palette = PlotPalette::new(flame);
-        let w = *weight as f32;
-        for c in &mut palette.colors {
-            for v in c.iter_mut() {
-                *v *= w;
-            }
-        }
-        SubFrameTools {
-            index,
-            n_xforms: flame.xforms.len(),
-            chaos,
-            geom,
-            palette,
-        }
-    }
+    /// Set for a motion-blurred frame or a flame of layers: the sub-frames or layers its
+    /// sub-batches draw from.
+    motion: Option<Arc<Sources>>,
 }
 
 impl Renderer {
@@ -262,7 +219,16 @@ impl Renderer {
             .then(|| (0..threads).map(|_| spare.log()).collect());
         let total = flame.total_samples().max(1);
         let part = plan.part;
-        Ok(Renderer {
+        let layers = if flame.has_sources() {
+            let l = flame.sources();
+            for s in &l {
+                Chaos::new(&s.flame)?;
+            }
+            Some(Sources::layers(&flame, l))
+        } else {
+            None
+        };
+        let mut r = Renderer {
             palette: PlotPalette::new(&flame),
             chaos,
             ifs3d,
@@ -283,7 +249,12 @@ impl Renderer {
             cancelled: false,
             motion: None,
             flame,
-        })
+        };
+        if let Some(l) = layers {
+            let total = l.total().max(1);
+            r.draw_from(l, total);
+        }
+        Ok(r)
     }
 
     /// Prepare a motion-blurred frame (see [`crate::flame::motion_blur::frame_at`]): every
@@ -316,34 +287,17 @@ impl Renderer {
             .collect();
         checked?;
         let mut r = Self::build(&frame.develop, opts, plan, &mut Spare::default())?;
-        let mut batches = Vec::new();
-        for (i, s) in frame.subframes.iter().enumerate() {
-            // Sub-batches of equal size, so that threads taking every other one share the work
-            // evenly.
-            let k = s.samples.div_ceil(SUB_BATCH);
-            for j in 0..k {
-                let n = s.samples * (j + 1) / k - s.samples * j / k;
-                batches.push((i as u32, n as u32));
-            }
-        }
-        let total: u64 = frame.total_samples().max(1);
-        if batches.is_empty() {
-            batches.push((0, 1));
-        }
-        r.total = total;
-        r.part_total = r.part.samples(total);
-        r.batches_total = r.part.local_batches(batches.len() as u64);
-        r.logs = None;
-        r.motion = Some(Arc::new(Motion {
-            subframes: frame
-                .subframes
-                .iter()
-                .map(|s| (s.flame.clone(), s.weight))
-                .collect(),
-            batches,
-            mean_weight: frame.mean_weight,
-        }));
+        r.draw_from(Sources::motion(frame), frame.total_samples().max(1));
         Ok(r)
+    }
+
+    /// Draw the samples from `sources` (`total` samples in all) instead of the flame.
+    fn draw_from(&mut self, sources: Sources, total: u64) {
+        self.total = total;
+        self.part_total = self.part.samples(total);
+        self.batches_total = self.part.local_batches(sources.batches.len() as u64);
+        self.logs = None;
+        self.motion = Some(Arc::new(sources));
     }
 
     /// Continue a saved render with `add_quality` more samples per pixel. `hist` holds the
@@ -420,6 +374,22 @@ impl Renderer {
         let mut f = self.flame.clone();
         f.quality += add_quality;
         validate_settings(&f)?;
+        if let Some(m) = &self.motion {
+            if !m.layers {
+                return Err(RenderError::Settings(
+                    "a motion-blurred frame cannot continue".into(),
+                ));
+            }
+            // The layers' shares of the added samples follow the ones drawn so far.
+            let mut add = self.flame.clone();
+            add.quality = add_quality;
+            let all = m.extended(Sources::layers(&add, add.sources()));
+            self.flame.quality = f.quality;
+            let total = all.total().max(1);
+            self.draw_from(all, total);
+            self.batches_total = self.batches_total.max(self.next_batch);
+            return Ok(());
+        }
         self.flame.quality = f.quality;
         self.logs = None;
         self.total = self.flame.total_samples().max(1);
@@ -525,8 +495,8 @@ impl Renderer {
                 let first = start + (t as u64 + threads - start % threads) % threads;
                 let mut j = first;
                 let mut buf = Vec::with_capacity(SUB_BATCH as usize);
-                // The sub-frame this thread drew its last sub-batch from (motion blur).
-                let mut tools: Option<SubFrameTools> = None;
+                // The source this thread drew its last sub-batch from (sub-frame or layer).
+                let mut tools: Option<SourceTools> = None;
                 if let Some(log) = log.as_deref_mut() {
                     // The pass's samples, without the copies of a doubling vector.
                     log.reserve(per_thread as usize);
@@ -544,7 +514,7 @@ impl Renderer {
                         let (s, k) = m.batches[g as usize];
                         n = k as u64;
                         if tools.as_ref().is_none_or(|t| t.index != s) {
-                            let t = SubFrameTools::new(m, s, geom);
+                            let t = SourceTools::new(m, s, geom);
                             if tools.as_ref().is_none_or(|o| o.n_xforms != t.n_xforms) {
                                 lanes.forget_last_xforms();
                             }
@@ -616,6 +586,11 @@ impl Renderer {
         if self.complete() {
             return self.flame.quality * 4f64.powf(self.flame.zoom) * weight;
         }
+        if self.geom.jwf.is_some() {
+            // JWildfire's samples also cover the border of its raster.
+            let done = self.samples_done.max(1) as f64 / self.total_samples() as f64;
+            return self.flame.quality * done * 4f64.powf(self.flame.zoom) * weight;
+        }
         let px = self.flame.width as f64 * self.flame.height as f64;
         (self.samples_done.max(1) as f64) / px * weight
     }
@@ -647,6 +622,38 @@ impl Renderer {
             self.out_rows.clone(),
             stop,
         )
+    }
+
+    /// Two pictures of independent halves of the samples so far — the even and the odd
+    /// threads' histograms, each exposed for its own samples — with each half's share of the
+    /// samples. Their difference measures the noise (grain) left in [`Renderer::preview`], the
+    /// two-buffer estimate of Monte Carlo renderers, free of the change density estimation
+    /// makes as the density grows. `None` with one thread, or as soon as `stop` is set.
+    pub fn preview_halves(&self, stop: &AtomicBool) -> Option<[(DynamicImage, f64); 2]> {
+        let t = self.hists.len();
+        if t < 2 {
+            return None;
+        }
+        let half = |k: usize| -> Option<(DynamicImage, f64)> {
+            let mut it = self.hists.iter().skip(k).step_by(2);
+            let mut m = it.next()?.clone();
+            for h in it {
+                m.add(h);
+            }
+            // Threads iterate equal numbers of sub-batches (within one).
+            let share = (t - k).div_ceil(2) as f64 / t as f64;
+            let img = develop_rows_until(
+                &self.flame,
+                &self.geom,
+                &m,
+                self.density() * share,
+                self.format,
+                self.out_rows.clone(),
+                stop,
+            )?;
+            Some((img, share))
+        };
+        Some([half(0)?, half(1)?])
     }
 
     /// A quick look at the image as it stands: like [`Renderer::preview`] but without density
@@ -713,7 +720,7 @@ impl Renderer {
     }
 
     fn state(&self) -> Option<RenderState> {
-        if self.cancelled || self.motion.is_some() {
+        if self.cancelled || self.motion.as_ref().is_some_and(|m| !m.layers) {
             return None;
         }
         let mut flame = self.flame.clone();

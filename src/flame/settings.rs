@@ -157,7 +157,7 @@ pub fn validate_settings(flame: &Flame) -> Result<(), RenderError> {
 /// samples of its zoom and size would pass [`MAX_TOTAL_SAMPLES`] first. `Renderer::extend`
 /// refuses to go past it.
 pub fn quality_limit(flame: &Flame) -> f64 {
-    let per_quality = 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
+    let per_quality = flame.samples_per_quality();
     let by_samples = MAX_TOTAL_SAMPLES / per_quality;
     if by_samples.is_finite() && by_samples > 0.0 {
         by_samples.min(MAX_QUALITY)
@@ -169,7 +169,7 @@ pub fn quality_limit(flame: &Flame) -> f64 {
 /// Quality (samples per pixel, before the zoom's 4^zoom) that `samples` iterations give
 /// `flame`: the inverse of [`Flame::total_samples`].
 pub fn quality_of_samples(flame: &Flame, samples: u64) -> f64 {
-    let per_quality = 4f64.powf(flame.zoom) * flame.width as f64 * flame.height as f64;
+    let per_quality = flame.samples_per_quality();
     if per_quality.is_finite() && per_quality > 0.0 {
         samples as f64 / per_quality
     } else {

@@ -38,13 +38,7 @@ pub fn plan(flame: &Flame, k: usize) -> Result<Vec<Strip>, RenderError> {
         )));
     }
     let geom = geometry_of(flame)?;
-    let (os, g, delta, fw, bh) = (
-        geom.os,
-        geom.gutter,
-        geom.delta,
-        geom.filter.taps.len(),
-        geom.full_bh,
-    );
+    let (os, g, bh) = (geom.os, geom.gutter, geom.full_bh);
     // A bucket's DE kernel reaches `half` rows; its hit count sums a block of os/2 rows more.
     let margin = geom
         .de
@@ -56,8 +50,9 @@ pub fn plan(flame: &Flame, k: usize) -> Result<Vec<Strip>, RenderError> {
             let (y0, y1) = (cut(s), cut(s + 1));
             let core_lo = if s == 0 { 0 } else { y0 * os + g };
             let core_hi = if s + 1 == k { bh } else { y1 * os + g };
-            let need_lo = (y0 * os + delta).saturating_sub(margin);
-            let need_hi = ((y1 - 1) * os + delta + fw + margin).min(bh);
+            let need = geom.source_rows(y0..y1);
+            let need_lo = need.start.saturating_sub(margin);
+            let need_hi = (need.end + margin).min(bh);
             Strip {
                 out_rows: y0..y1,
                 hist_rows: core_lo.min(need_lo)..core_hi.max(need_hi),

@@ -18,7 +18,8 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use super::diag::{Diagnostic, Parsed, Pos};
-use crate::escape::dd::Dd;
+use crate::escape::centre::Centre;
+use crate::escape::fx::Fx;
 use crate::escape::{C, Coloring, Family, Fill, Sampling, Warp};
 use crate::gradient::{self, Gradient};
 use crate::noise::Fbm;
@@ -69,38 +70,62 @@ pub fn parse_complex(s: &str) -> Option<C> {
     }
 }
 
-/// Parse a centre "re, im" to double-double precision (up to 32 significant digits each,
-/// for deep zooms).
-pub fn parse_center(s: &str) -> Option<[Dd; 2]> {
+/// Parse a centre "re, im" (or "re,im", "re im", or a single real) to any number of digits
+/// (up to [`crate::escape::centre::MAX_DIGITS`] after the point, for deep zooms).
+pub fn parse_center(s: &str) -> Result<Centre, String> {
     let parts: Vec<&str> = s
         .split(|ch: char| ch == ',' || ch.is_whitespace())
         .filter(|t| !t.is_empty())
         .collect();
     match parts.as_slice() {
-        [re] => Some([Dd::parse(re)?, Dd::ZERO]),
-        [re, im] => Some([Dd::parse(re)?, Dd::parse(im)?]),
-        _ => None,
+        [re] => Centre::parse(re, "0"),
+        [re, im] => Centre::parse(re, im),
+        _ => Err("expected 're, im'".into()),
     }
 }
 
-/// The centre as written in a view file: shortest f64 form, or all the digits of the
-/// double-double centre when the view is a deep zoom.
+/// The centre as written in a view file: shortest f64 form, or the digits the zoom needs
+/// when the view is a deep zoom.
 pub fn format_center(doc: &EscapeDoc) -> String {
     if crate::escape::render::is_deep(&doc.params.family, &doc.view, doc.height) {
-        let [x, y] = doc.view.center_dd();
+        let [x, y] = doc.view.centre_text();
         format!("{x}, {y}")
     } else {
-        format!("{}, {}", doc.view.center[0], doc.view.center[1])
+        let [x, y] = doc.view.center();
+        format!("{x}, {y}")
     }
 }
 
-/// Shortest round-trip form, with an exponent for tiny values (deep-zoom widths).
-fn fmt_small(v: f64) -> String {
-    if v != 0.0 && v.abs() < 1e-4 {
-        format!("{v:e}")
+/// Shortest round-trip form, with an exponent for tiny values (deep-zoom widths), and 17
+/// significant digits below f64's range.
+fn fmt_small(v: Fx) -> String {
+    let f = v.to_f64();
+    if f != 0.0 && f.abs() < 1e-4 && f.abs() > 1e-300 {
+        format!("{f:e}")
+    } else if f.abs() > 1e-300 || v.is_zero() {
+        format!("{f}")
     } else {
-        format!("{v}")
+        format!("{v:.17}")
     }
+}
+
+/// Parse a view width: a positive number of any decimal exponent down to the deep-zoom
+/// limit (`3`, `1e-1000`).
+pub fn parse_width(s: &str) -> Result<Fx, String> {
+    let w = Fx::parse(s).ok_or_else(|| format!("width '{}' is not a number", s.trim()))?;
+    if w.m <= 0.0 || w.m.is_nan() {
+        return Err(format!("width '{}' must be positive", s.trim()));
+    }
+    if w.log10() < crate::escape::render::DEEP_LIMIT_EXP10 {
+        return Err(format!(
+            "width '{}' is below the deep-zoom limit of 1e-10000",
+            s.trim()
+        ));
+    }
+    if w.log10() > 15.0 {
+        return Err(format!("width '{}' is too large (at most 1e15)", s.trim()));
+    }
+    Ok(w)
 }
 
 /// Parse polynomial coefficients, highest degree first: real numbers separated by spaces, or
@@ -182,7 +207,7 @@ pub fn write(doc: &EscapeDoc) -> String {
         "center = {}\nwidth = {}\nsize = {}x{}\nmax_iter = {}\ncoloring = {}\ngradient = {}\n\
          offset = {}\nrepeat = {}\ninside = {} {} {}\nperiodicity = {}\nfill = {}",
         format_center(doc),
-        fmt_small(doc.world_width()),
+        fmt_small(doc.world_width_fx()),
         doc.width,
         doc.height,
         p.max_iter,
@@ -487,13 +512,13 @@ const VIEW_KEYS: &[Key<ViewDraft>] = &[
         Ok(())
     }),
     key("center", |v, s| {
-        let c = parse_center(s.value).ok_or_else(|| s.expected("expected 're, im'"))?;
-        v.doc.view = v.doc.view.with_center_dd(c);
+        let c = parse_center(s.value).map_err(|e| s.err("ESC003", format!("center: {e}")))?;
+        v.doc.view = v.doc.view.with_centre(c);
         Ok(())
     }),
     key("width", |v, s| {
-        let wd = s.positive()?;
-        v.doc.view.half_height = wd / 2.0 * v.doc.height as f64 / v.doc.width as f64;
+        let wd = parse_width(s.value).map_err(|e| s.err("ESC004", e))?;
+        v.doc.set_world_width_fx(wd);
         Ok(())
     }),
     key("max_iter", |v, s| {
@@ -704,7 +729,7 @@ mod tests {
             let mut d = EscapeDoc::new(family_from_name(kind).unwrap());
             d.params.max_iter = 777;
             d.params.coloring = Coloring::Histogram;
-            d.view.center = [0.125, -0.25];
+            d.view = d.view.with_centre(Centre::from_f64([0.125, -0.25]));
             d.gradient_source = "lagoon".into();
             d.params.palette.gradient = gradient::builtin_named("lagoon").unwrap();
             d.params.palette.offset = 0.5;
@@ -715,8 +740,8 @@ mod tests {
             assert_eq!(b.params.family, d.params.family, "{kind}");
             assert_eq!(b.params, d.params, "{kind}");
             assert_eq!((b.width, b.height), (d.width, d.height));
-            assert!((b.view.half_height - d.view.half_height).abs() < 1e-12);
-            assert_eq!(b.view.center, d.view.center);
+            assert!((b.view.half_height() - d.view.half_height()).abs() < 1e-12);
+            assert_eq!(b.view.center(), d.view.center());
         }
     }
 
@@ -727,8 +752,8 @@ mod tests {
             "-0.743643887037158704752191506114774, 0.131825904205311970493132056385139",
         )
         .unwrap();
-        d.view = d.view.with_center_dd(c);
-        d.view.half_height = 3e-21;
+        d.view = d.view.with_centre(c.clone());
+        d.view.set_half_height(3e-21);
         let text = write(&d);
         assert!(
             text.contains("center = -0.7436438870371587047521915061147"),
@@ -736,15 +761,51 @@ mod tests {
         );
         assert!(text.contains("width = 8e-21"), "{text}");
         let b = parse(&text, "deep.esc", None).unwrap().value;
-        let [x, y] = b.view.center_dd();
-        assert!((x - c[0]).to_f64().abs() < 1e-31 && (y - c[1]).to_f64().abs() < 1e-31);
-        assert!((b.view.half_height / 3e-21 - 1.0).abs() < 1e-12);
+        assert_eq!(b.view.centre().format(), c.format());
+        assert!((b.view.half_height() / 3e-21 - 1.0).abs() < 1e-12);
         // Writing again gives the same text.
         assert_eq!(write(&b), text);
         // A shallow view is written as before (shortest f64).
         let mut s = d.clone();
-        s.view.half_height = 0.5;
+        s.view.set_half_height(0.5);
         assert!(write(&s).contains("center = -0.7436438870371587, 0.13182590420531198"));
+    }
+
+    #[test]
+    fn views_of_1e_minus_1000_and_thousands_of_digits_round_trip() {
+        let mut d = EscapeDoc::new(Family::Mandelbrot { power: 2 });
+        let x = format!("-1.{}", "7".repeat(1020));
+        d.view = d
+            .view
+            .with_centre(parse_center(&format!("{x}, 0")).unwrap());
+        d.set_world_width_fx(parse_width("2.5e-1000").unwrap());
+        let text = write(&d);
+        assert!(
+            text.contains("width = 2.5e-1000"),
+            "{}",
+            &text[text.len() - 300..]
+        );
+        assert!(text.contains(&x[..1000]));
+        let b = parse(&text, "deep.esc", None).unwrap().value;
+        assert_eq!(write(&b), text);
+        assert!((b.world_width_fx().log10() - d.world_width_fx().log10()).abs() < 1e-12);
+        // Widths and centres out of range say why.
+        for (bad, what) in [
+            ("width = 1e-100000\n", "deep-zoom limit"),
+            ("width = nan\n", "not a number"),
+            ("width = -1\n", "positive"),
+            ("width = 1e99\n", "too large"),
+        ] {
+            let e = parse(&format!("kind = mandelbrot\n{bad}"), "v.esc", None)
+                .err()
+                .unwrap();
+            assert!(e.to_string().contains(what), "{bad}: {e}");
+        }
+        let long = format!("center = 0.{}, 0\n", "1".repeat(100_000));
+        let e = parse(&format!("kind = mandelbrot\n{long}"), "v.esc", None)
+            .err()
+            .unwrap();
+        assert!(e.to_string().contains("20000 digits"), "{e}");
     }
 
     #[test]

@@ -187,10 +187,10 @@ impl TextureSpec {
                 Texture::from_image(&img.to_rgb8())
             }
             TextureKind::Escape(d) => {
-                let mut view = d.view;
                 // Keep the view's world width at the texture's size.
-                view.half_height = d.world_width() / 2.0 * h as f64 / w as f64;
-                let (img, _) = crate::escape::render(&d.params, view, w as u32, h as u32)
+                let mut d = d.clone();
+                d.resize(w as u32, h as u32);
+                let (img, _) = crate::escape::render(&d.params, d.view.clone(), w as u32, h as u32)
                     .map_err(|e| e.to_string())?;
                 Texture::from_image(&img)
             }

@@ -155,3 +155,48 @@ fn attributes_of_other_programs_are_told_in_the_status_line() {
     );
     assert!(h.query_by_label("Warnings").is_none());
 }
+
+#[test]
+fn a_folder_typed_into_the_chooser_is_kept_and_opened() {
+    let dir = std::env::temp_dir().join(format!("ugnis-gui-folder-{}", std::process::id()));
+    let sub = dir.join("flames here");
+    std::fs::create_dir_all(&sub).unwrap();
+    std::fs::copy(example("sierpinski.flame"), sub.join("tri.flame")).unwrap();
+    let mut h = harness(Start::File(example("sierpinski.flame")));
+    h.key_press_modifiers(Modifiers::COMMAND, Key::O);
+    h.run_steps(2);
+    let field = h.get_by_role_and_label(Role::TextInput, "Folder");
+    field.focus();
+    h.run_steps(1);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    h.run_steps(1);
+    // Typed a key at a time, with frames between: nothing is lost.
+    let text = sub.display().to_string();
+    for c in text.chars() {
+        h.get_by_role_and_label(Role::TextInput, "Folder")
+            .type_text(&c.to_string());
+        h.run_steps(1);
+    }
+    assert_eq!(h.state().file_browser().unwrap().folder, text);
+    h.key_press(Key::Enter);
+    h.run_steps(2);
+    let b = h.state().file_browser().unwrap();
+    assert_eq!(b.dir, std::fs::canonicalize(&sub).unwrap());
+    assert!(
+        h.query_by_label("tri.flame").is_some(),
+        "the folder's file is listed"
+    );
+    // A name that is no folder is told, and the text stays for correcting.
+    let field = h.get_by_role_and_label(Role::TextInput, "Folder");
+    field.focus();
+    h.run_steps(1);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    h.get_by_role_and_label(Role::TextInput, "Folder")
+        .type_text("no-such-folder");
+    h.run_steps(1);
+    h.key_press(Key::Enter);
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("not a folder").is_some());
+    assert_eq!(h.state().file_browser().unwrap().folder, "no-such-folder");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -203,7 +203,12 @@ fn the_palette_rule_is_chosen_in_the_flame_settings() {
         h.state().flame.doc().flame().palette_index,
         PaletteIndex::Flam3
     );
-    h.get_by_role_and_label(Role::ComboBox, "rule").click();
+    // The rule has a row of its own, its label at the left of its control.
+    let label = h.get_by_role_and_label(Role::Label, "Rule").rect();
+    let combo = h.get_by_role_and_label(Role::ComboBox, "Rule").rect();
+    assert!((label.center().y - combo.center().y).abs() < 4.0);
+    assert!(label.right() < combo.left());
+    h.get_by_role_and_label(Role::ComboBox, "Rule").click();
     h.run_steps(3);
     h.get_by_label("as Fractorium").click();
     h.run_steps(2);
@@ -332,4 +337,59 @@ fn random_flames_use_the_variations_filter() {
             .variation_filter
             .contains(&"swirl".to_string())
     );
+}
+
+#[test]
+fn every_flame_setting_has_a_control_including_the_3d_camera() {
+    let mut h = harness_sized(Start::File(example("sierpinski.flame")), 1280.0, 1800.0);
+    section(&mut h, "Settings");
+    h.get_by_label("3-D camera").click();
+    h.run_steps(2);
+    set_number(&mut h, "Pitch (°)", 30.0);
+    set_number(&mut h, "Yaw (°)", -45.0);
+    set_number(&mut h, "Perspective", 0.2);
+    set_number(&mut h, "Z position", 0.5);
+    set_number(&mut h, "Depth of field", 0.1);
+    set_number(&mut h, "Blur curve", 0.3);
+    set_number(&mut h, "Supersample", 2.0);
+    set_number(&mut h, "Filter radius", 1.2);
+    set_number(&mut h, "DE radius", 6.0);
+    set_number(&mut h, "DE minimum", 0.5);
+    set_number(&mut h, "DE curve", 0.6);
+    h.get_by_role_and_label(Role::ComboBox, "Filter shape")
+        .click();
+    h.run_steps(2);
+    h.get_by_label("mitchell").click();
+    h.run_steps(2);
+    let f = h.state().flame.doc().flame().clone();
+    let c = f.cam;
+    assert!((c.pitch - 30f64.to_radians()).abs() < 1e-12);
+    assert!((c.yaw + 45f64.to_radians()).abs() < 1e-12);
+    assert_eq!(
+        (c.perspective, c.zpos, c.dof, c.blur_curve),
+        (0.2, 0.5, 0.1, 0.3)
+    );
+    assert_eq!(f.supersample, 2);
+    assert_eq!(f.filter, 1.2);
+    assert_eq!(f.filter_shape.name(), "mitchell");
+    assert_eq!(
+        (f.estimator_radius, f.estimator_minimum, f.estimator_curve),
+        (6.0, 0.5, 0.6)
+    );
+    // Saved and read back as they are.
+    let path = example("sierpinski.flame").with_file_name("settings.flame");
+    assert!(h.state_mut().flame.save_to(&path));
+    let back = ugnis::io::read_flames(&path, &Default::default())
+        .unwrap()
+        .value
+        .remove(0);
+    assert!((back.cam.pitch - c.pitch).abs() < 1e-9);
+    assert_eq!(back.filter_shape, f.filter_shape);
+    assert_eq!(back.estimator_minimum, 0.5);
+    // Each change is one undo step.
+    for _ in 0..12 {
+        h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+        h.run_steps(1);
+    }
+    assert!(h.state().flame.doc().flame().cam.is_flat());
 }

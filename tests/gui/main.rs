@@ -9,10 +9,14 @@ mod export;
 mod file_values;
 mod files;
 mod flame_tab;
+mod gradient;
+mod left_panel;
 mod opening;
+mod preview;
 mod scene_tab;
 mod shell;
 mod triangles;
+mod windows;
 
 use std::path::{Path, PathBuf};
 

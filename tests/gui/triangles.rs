@@ -11,7 +11,7 @@ use ugnis::app::Selected;
 use ugnis::app::{Start, UgnisApp};
 use ugnis::flame::{Affine, Flame};
 
-use crate::{drag, harness, open, section, set_number};
+use crate::{drag, harness, harness_sized, open, section, set_number};
 
 fn selected_coefs(app: &UgnisApp) -> Affine {
     match app.flame.editor.selected {
@@ -211,4 +211,108 @@ fn a_typed_weight_is_kept_and_says_why() {
         Some(false),
         "typing a weight switches the rule off"
     );
+}
+
+#[test]
+fn a_loaded_flame_keeps_its_weights_when_a_triangle_is_reshaped() {
+    // Sierpinski's equal weights happen to follow its equal areas: still no request to
+    // re-derive them.
+    let mut h = open("sierpinski.flame");
+    assert!(!h.state().flame.auto_weights(&h.state().options));
+    let w0: Vec<f64> = h
+        .state()
+        .flame
+        .doc()
+        .flame()
+        .xforms
+        .iter()
+        .map(|x| x.weight)
+        .collect();
+    let tri = selected_coefs(h.state()).triangle();
+    let st = &h.state().flame.editor;
+    let from = st.screen_from_world(tri[1]);
+    drag(&mut h, from, from + Vec2::new(40.0, 25.0));
+    let f = h.state().flame.doc().flame();
+    assert_ne!(
+        f.xforms[0].coefs,
+        Affine::from_triangle(tri),
+        "the triangle moved"
+    );
+    let w1: Vec<f64> = f.xforms.iter().map(|x| x.weight).collect();
+    assert_eq!(w1, w0, "the weights are the file's");
+    // Ticking "from areas" asks for the rule: the weights follow the areas from then on.
+    h.get_by_role_and_label(Role::CheckBox, "from areas")
+        .click();
+    h.run_steps(2);
+    let f = h.state().flame.doc().flame();
+    assert_eq!(f.auto_weights, Some(true));
+    let maps: Vec<Affine> = f.xforms.iter().map(|x| x.coefs).collect();
+    let rule = Flame::determinant_weights(&maps);
+    let total: f64 = f.xforms.iter().map(|x| x.weight).sum();
+    for (x, r) in f.xforms.iter().zip(rule) {
+        assert!((x.weight / total - r).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn typed_amounts_turn_scale_and_move_as_single_undo_steps() {
+    let mut h = harness_sized(
+        Start::File(crate::example("sierpinski.flame")),
+        1280.0,
+        1400.0,
+    );
+    let original = h.state().flame.doc().flame().clone();
+    let t0 = selected_coefs(h.state()).triangle();
+    set_number(&mut h, "Rotate by", 90.0);
+    h.get_by_role_and_label(Role::Button, "Rotate counter-clockwise")
+        .click();
+    h.run_steps(2);
+    // A quarter turn about the centre: the centre stays, det stays.
+    let m = selected_coefs(h.state());
+    let c = |t: [[f64; 2]; 3]| {
+        [
+            (t[0][0] + t[1][0] + t[2][0]) / 3.0,
+            (t[0][1] + t[1][1] + t[2][1]) / 3.0,
+        ]
+    };
+    let (c0, c1) = (c(t0), c(m.triangle()));
+    assert!((c0[0] - c1[0]).abs() < 1e-9 && (c0[1] - c1[1]).abs() < 1e-9);
+    assert!((m.det() - Affine::from_triangle(t0).det()).abs() < 1e-9);
+    assert_eq!(h.state().flame.doc().undo_len(), 1);
+    // Grow by 50 %, then move up by 0.25 (y up: the world's f falls).
+    set_number(&mut h, "Scale by", 50.0);
+    h.get_by_role_and_label(Role::Button, "Grow").click();
+    h.run_steps(2);
+    assert!((selected_coefs(h.state()).det() - 2.25 * m.det()).abs() < 1e-9);
+    let f_before = selected_coefs(h.state()).f;
+    set_number(&mut h, "Move by", 0.25);
+    h.get_by_role_and_label(Role::Button, "Move up").click();
+    h.run_steps(2);
+    assert!((selected_coefs(h.state()).f - (f_before - 0.25)).abs() < 1e-9);
+    // All transforms, half a turn about the origin: every triangle is mirrored through it.
+    let before_all = h.state().flame.doc().flame().clone();
+    h.get_by_role_and_label(Role::CheckBox, "All transforms, about the origin")
+        .click();
+    set_number(&mut h, "Rotate by", 180.0);
+    h.get_by_role_and_label(Role::Button, "Rotate clockwise")
+        .click();
+    h.run_steps(2);
+    for (a, b) in h
+        .state()
+        .flame
+        .doc()
+        .flame()
+        .xforms
+        .iter()
+        .zip(&before_all.xforms)
+    {
+        for (p, q) in a.coefs.triangle().iter().zip(b.coefs.triangle()) {
+            assert!((p[0] + q[0]).abs() < 1e-9 && (p[1] + q[1]).abs() < 1e-9);
+        }
+    }
+    for _ in 0..4 {
+        h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+        h.run_steps(2);
+    }
+    assert_eq!(h.state().flame.doc().flame(), &original);
 }

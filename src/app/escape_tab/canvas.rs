@@ -4,7 +4,8 @@
 use eframe::egui::{self, Color32, Pos2, Rect, Stroke, Vec2};
 
 use super::EscapeTab;
-use crate::escape::{Family, View};
+use crate::escape::Family;
+use crate::escape::fx::Fx;
 
 /// Device pixel coordinates of a screen point in the canvas `rect`.
 fn pixel_of(p: Pos2, rect: Rect, ppp: f32) -> [f64; 2] {
@@ -52,10 +53,7 @@ impl EscapeTab {
     /// panel, keeping the world width; a texture keeps its own aspect, fitted in.
     fn fit_to_panel(&mut self, size: [u32; 2], warped: bool) -> [u32; 2] {
         if !warped && [self.doc.width, self.doc.height] != size {
-            let width = self.doc.world_width();
-            self.doc.width = size[0];
-            self.doc.height = size[1];
-            self.doc.view.half_height = width / 2.0 * size[1] as f64 / size[0] as f64;
+            self.doc.resize(size[0], size[1]);
         }
         if warped {
             // Textures keep their own aspect (2:1 for a sky dome), fitted into the panel.
@@ -91,11 +89,11 @@ impl EscapeTab {
     fn pan(&mut self, ctx: &egui::Context, resp: &egui::Response, ppp: f32) {
         if resp.drag_started_by(egui::PointerButton::Primary) {
             self.push_history();
-            self.pan_start = Some(self.doc.view);
+            self.pan_start = Some(self.doc.view.clone());
         }
         if resp.dragged_by(egui::PointerButton::Primary)
             && let (Some(v0), Some(origin), Some(now)) = (
-                self.pan_start,
+                self.pan_start.clone(),
                 ctx.input(|i| i.pointer.press_origin()),
                 resp.interact_pointer_pos(),
             )
@@ -120,17 +118,18 @@ impl EscapeTab {
             let r = Rect::from_two_pos(a, b);
             if r.width() > 4.0 && r.height() > 4.0 {
                 let c = pixel_of(r.center(), rect, ppp);
-                let o = self.doc.view.offset_from_pixel(
+                let o = self.doc.view.offset_from_pixel_fx(
                     c[0] - 0.5,
                     c[1] - 0.5,
                     self.doc.width,
                     self.doc.height,
                 );
                 let factor = (rect.width() / r.width()).min(rect.height() / r.height()) as f64;
-                let v = View {
-                    half_height: self.doc.view.half_height / factor,
-                    ..self.doc.view.shifted(o.re, o.im)
-                };
+                let v = self
+                    .doc
+                    .view
+                    .scaled(1.0 / factor)
+                    .shifted_fx(Fx::new(o.re, o.e), Fx::new(o.im, o.e));
                 match crate::escape::render::check_view_for(
                     &self.doc.params.family,
                     &v,
@@ -161,10 +160,10 @@ impl EscapeTab {
         warped: bool,
     ) {
         if let Some(d) = &mut self.main {
-            d.request(&self.doc.params, self.doc.view, render_size);
+            d.request(&self.doc.params, self.doc.view.clone(), render_size);
             d.poll(ctx, "escape-main");
             if let Some(t) = &d.texture {
-                let img_rect = match (d.shown_view, warped) {
+                let img_rect = match (d.shown_view.clone(), warped) {
                     // Until the new frame arrives, draw the old one where its view now lies.
                     (Some(v), false) if v != self.doc.view => {
                         let corner =

@@ -91,7 +91,7 @@ impl Display {
     }
 
     pub fn request(&mut self, params: &EscapeParams, view: View, size: [u32; 2]) {
-        let key = (params.clone(), view, size);
+        let key = (params.clone(), view.clone(), size);
         if self.submitted.as_ref() != Some(&key) {
             self.generation += 1;
             self.worker.submit(Job {
@@ -120,7 +120,7 @@ impl Display {
                     }
                 }
                 self.shown = f.generation;
-                self.shown_view = self.submitted.as_ref().map(|s| s.1);
+                self.shown_view = self.submitted.as_ref().map(|s| s.1.clone());
             }
             self.fraction = f.fraction;
             self.elapsed_ms = f.elapsed_ms;

@@ -242,8 +242,9 @@ impl EscapeTab {
         let w = task_worker("ugnis-escape-export", move || r());
         self.notices.status(format!("Exporting {}…", out.display()));
         w.submit(Box::new(move |_, _| {
-            let (img, _) = crate::escape::render(&doc.params, doc.view, doc.width, doc.height)
-                .map_err(|e| e.to_string())?;
+            let (img, _) =
+                crate::escape::render(&doc.params, doc.view.clone(), doc.width, doc.height)
+                    .map_err(|e| e.to_string())?;
             let img = image::DynamicImage::ImageRgb8(img);
             let res = if io::kind_of(&out) == io::FileKind::Bmp {
                 io::bmp::save(&out, &img)
@@ -279,10 +280,7 @@ impl EscapeTab {
     /// The view as an export at `export_size` (same centre and world width).
     pub fn export_doc(&self) -> EscapeDoc {
         let mut d = self.doc.clone();
-        let width = d.world_width();
-        d.width = self.export_size[0].max(1);
-        d.height = self.export_size[1].max(1);
-        d.view.half_height = width / 2.0 * d.height as f64 / d.width as f64;
+        d.resize(self.export_size[0].max(1), self.export_size[1].max(1));
         d
     }
 
@@ -342,9 +340,17 @@ impl EscapeTab {
             self.doc.height,
         );
         let mut s = if deep {
-            // Pointer coordinates in f64 would all look alike here: show the exact centre.
-            let [x, y] = self.doc.view.center_dd();
-            format!("deep zoom, centre {x}, {y}")
+            // Pointer coordinates in f64 would all look alike here: show the depth and the
+            // start of the exact centre (Copy centre gives all of it).
+            let [x, y] = self.doc.view.centre_text();
+            let short = |t: &str| -> String {
+                if t.len() > 40 {
+                    format!("{}…", &t[..40])
+                } else {
+                    t.to_string()
+                }
+            };
+            format!("deep zoom, centre {}, {}", short(&x), short(&y))
         } else {
             match self.hover {
                 Some(c) => format!("{:.10} {:+.10}i", c.re, c.im),

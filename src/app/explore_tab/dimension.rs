@@ -546,8 +546,8 @@ fn escape_boundary(doc: &EscapeDoc) -> Result<Mask, String> {
     let k = (1024.0 / side).min(1.0);
     let w = ((doc.width as f64 * k).round() as u32).max(16);
     let h = ((doc.height as f64 * k).round() as u32).max(16);
-    let (_, samples) =
-        crate::escape::render::render(&doc.params, doc.view, w, h).map_err(|e| e.to_string())?;
+    let (_, samples) = crate::escape::render::render(&doc.params, doc.view.clone(), w, h)
+        .map_err(|e| e.to_string())?;
     let (wu, hu) = (w as usize, h as usize);
     let inside = |x: usize, y: usize| samples.get(y * wu + x).is_some_and(|s| s.inside);
     let mut bits = vec![false; wu * hu];

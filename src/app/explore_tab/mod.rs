@@ -157,6 +157,17 @@ impl ExploreTab {
         }
     }
 
+    /// Notices of a topic's background work: message boxes always, the status line only
+    /// while that topic is shown (a line about another topic would be stale).
+    fn take_notices(&mut self, from: Topic, notices: Vec<crate::app::notice::Notice>) {
+        for n in notices {
+            match n {
+                crate::app::notice::Notice::Status(_) if from != self.topic => {}
+                n => self.notices.push(n),
+            }
+        }
+    }
+
     /// The line at the left of the status bar.
     pub fn status_text(&self) -> String {
         match self.topic {
@@ -176,12 +187,10 @@ impl ExploreTab {
     ) -> Option<ExploreRequest> {
         let mut req = None;
         // Background results first, so the numbers below are current.
-        for n in self.lsystem.poll() {
-            self.notices.push(n);
-        }
-        for n in self.dimension.poll() {
-            self.notices.push(n);
-        }
+        let from_lsystem = self.lsystem.poll();
+        self.take_notices(Topic::LSystems, from_lsystem);
+        let from_dimension = self.dimension.poll();
+        self.take_notices(Topic::Dimension, from_dimension);
         self.julia.poll(ui.ctx());
         let width = ui.available_width();
         egui::Panel::left("explore-topics")
@@ -197,6 +206,10 @@ impl ExploreTab {
                         .on_hover_text(t.hint())
                         .clicked()
                     {
+                        if self.topic != t {
+                            // The status line spoke of the topic left behind.
+                            self.notices.status.clear();
+                        }
                         self.topic = t;
                     }
                 }

@@ -233,7 +233,9 @@ impl FlameTab {
     pub fn paste(&mut self, text: &str) {
         match io::flam3_xml::read(text, &Default::default()) {
             Ok(p) => {
-                let new: Vec<Flame> = p.value.flames;
+                let mut new: Vec<Flame> = p.value.flames;
+                new.iter_mut()
+                    .for_each(crate::app::loading::keep_file_weights);
                 let n = new.len();
                 self.doc_mut().edit_document(|fl, cur| {
                     fl.extend(new);
@@ -361,22 +363,26 @@ impl FlameTab {
             self.editor.auto_zoom(&f);
             self.notices.status("Mutant chosen (Undo returns)");
         }
-        let current = self.doc().flame().palette.clone();
-        if let Some(a) = self.gradients.show(ctx, &current) {
+        let dragging = ctx.input(|i| i.pointer.any_down());
+        let doc = pick(self.showing, &mut self.batch, &mut self.file);
+        if let Some(a) = self
+            .gradients
+            .show(ctx, doc, &mut self.palette_editor, dragging)
+        {
             match a {
                 GradientAction::Apply(g) => self.apply_gradient(g),
                 GradientAction::Load => req = Some(FlameRequest::LoadGradient),
                 GradientAction::FromImage => req = Some(FlameRequest::GradientFromImage),
-                GradientAction::Edit => self.palette_editor.open = true,
             }
         }
+        self.history_window(ctx);
         self.loop_window(ctx);
+        if self.sound_window(ctx) == Some(super::timeline::SoundAsk::Browse) {
+            req = Some(FlameRequest::ChooseSoundFile);
+        }
         if let Some(r) = self.anim_windows(ctx, options) {
             req = Some(r);
         }
-        let dragging = ctx.input(|i| i.pointer.any_down());
-        let doc = pick(self.showing, &mut self.batch, &mut self.file);
-        self.palette_editor.show(ctx, doc, dragging);
         req
     }
 }

@@ -8,13 +8,29 @@ use crate::flame::Flame;
 /// Undo steps kept.
 pub const UNDO_LIMIT: usize = 200;
 
-/// One undoable change: the state it replaced.
+/// One undoable change: the state it replaced, and what it was (for the History window).
 #[derive(Clone, Debug)]
 enum Step {
     /// An edit of one flame.
-    Flame { index: usize, before: Box<Flame> },
+    Flame {
+        index: usize,
+        before: Box<Flame>,
+        label: String,
+    },
     /// A change of the set of flames (add, delete, new file, batch).
-    Document { before: Vec<Flame>, current: usize },
+    Document {
+        before: Vec<Flame>,
+        current: usize,
+        label: String,
+    },
+}
+
+impl Step {
+    fn label(&self) -> &str {
+        match self {
+            Step::Flame { label, .. } | Step::Document { label, .. } => label,
+        }
+    }
 }
 
 /// The flames being edited.
@@ -65,11 +81,18 @@ impl Document {
         let before = self.flames[self.current].clone();
         f(&mut self.flames[self.current]);
         if self.flames[self.current] != before {
-            self.push(Step::Flame {
-                index: self.current,
-                before: Box::new(before),
-            });
+            self.push_flame(self.current, before);
         }
+    }
+
+    /// An edit of flame `index` that replaced `before`, labelled by what changed.
+    fn push_flame(&mut self, index: usize, before: Flame) {
+        let label = super::history::describe(&before, &self.flames[index]);
+        self.push(Step::Flame {
+            index,
+            before: Box::new(before),
+            label,
+        });
     }
 
     /// Edit the current flame from a control; while `dragging` (a pointer is held on a slider
@@ -98,10 +121,7 @@ impl Document {
             && i < self.flames.len()
             && self.flames[i] != before
         {
-            self.push(Step::Flame {
-                index: i,
-                before: Box::new(before),
-            });
+            self.push_flame(i, before);
         }
     }
 
@@ -118,10 +138,7 @@ impl Document {
     /// End a continuous edit: one undo step for the whole gesture.
     pub fn end_gesture(&mut self, before: Flame) {
         if self.flames[self.current] != before {
-            self.push(Step::Flame {
-                index: self.current,
-                before: Box::new(before),
-            });
+            self.push_flame(self.current, before);
         }
     }
 
@@ -137,9 +154,11 @@ impl Document {
             return;
         }
         self.current = self.current.min(self.flames.len() - 1);
+        let label = super::history::describe_document(&before, &self.flames);
         self.push(Step::Document {
             before,
             current: cur,
+            label,
         });
     }
 
@@ -162,21 +181,31 @@ impl Document {
 
     fn swap(&mut self, s: Step) -> Step {
         match s {
-            Step::Flame { index, before } => {
+            Step::Flame {
+                index,
+                before,
+                label,
+            } => {
                 let i = index.min(self.flames.len() - 1);
                 let now = std::mem::replace(&mut self.flames[i], *before);
                 self.current = i;
                 Step::Flame {
                     index: i,
                     before: Box::new(now),
+                    label,
                 }
             }
-            Step::Document { before, current } => {
+            Step::Document {
+                before,
+                current,
+                label,
+            } => {
                 let now = std::mem::replace(&mut self.flames, before);
                 let cur = std::mem::replace(&mut self.current, current.min(self.flames.len() - 1));
                 Step::Document {
                     before: now,
                     current: cur,
+                    label,
                 }
             }
         }
@@ -208,6 +237,29 @@ impl Document {
 
     pub fn undo_len(&self) -> usize {
         self.undo.len()
+    }
+
+    /// What the steps were: those that can be undone, oldest first, and those that can be
+    /// redone, next first.
+    pub fn history(&self) -> (Vec<&str>, Vec<&str>) {
+        (
+            self.undo.iter().map(Step::label).collect(),
+            self.redo.iter().rev().map(Step::label).collect(),
+        )
+    }
+
+    /// Undo or redo until `position` steps of the history are applied (0: the oldest state
+    /// kept); false when nothing changed.
+    pub fn go_to(&mut self, position: usize) -> bool {
+        self.commit_live();
+        let mut moved = false;
+        while self.undo.len() > position && self.undo() {
+            moved = true;
+        }
+        while self.undo.len() < position && self.redo() {
+            moved = true;
+        }
+        moved
     }
 
     /// How many undos and redos were made: a change of the flame that comes with a change of
@@ -301,6 +353,19 @@ mod tests {
         assert_eq!(d.flame().name, "b");
         d.undo();
         assert_eq!(d.flames.len(), 2);
+        // The steps say what they were, and the history can be walked.
+        assert_eq!(d.history(), (vec![], vec!["Delete flame"]));
+        assert!(d.go_to(1));
+        assert_eq!(d.flames.len(), 1);
+        d.edit(|f| f.gamma = 3.0);
+        assert_eq!(d.history(), (vec!["Delete flame", "Tone"], vec![]));
+        assert!(d.go_to(0));
+        assert_eq!(d.flames.len(), 2);
+        assert_eq!(d.history(), (vec![], vec!["Delete flame", "Tone"]));
+        assert!(!d.go_to(0));
+        assert!(d.go_to(2));
+        assert_eq!(d.flame().gamma, 3.0);
+        d.go_to(0);
         // At least 100 steps are kept.
         for i in 0..150 {
             d.edit(|f| f.zoom = i as f64 + 1.0);

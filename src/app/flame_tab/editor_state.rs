@@ -10,6 +10,7 @@ use std::collections::HashMap;
 
 use eframe::egui::{Color32, Pos2, Rect, Vec2};
 
+use super::transform_tools::Amounts;
 use super::variations_panel::VarFind;
 use crate::flame::{Affine, Flame, Xform};
 
@@ -77,6 +78,9 @@ pub struct EditorState {
     pub hover_world: Option<[f64; 2]>,
     /// The canvas rectangle of the last frame.
     pub canvas: Rect,
+    /// The view was fitted to the triangles and not moved since: it is fitted again when the
+    /// canvas changes size.
+    pub fitted: bool,
     pub(super) gesture: Option<Gesture>,
     /// The Find box of the variations section.
     pub var_find: VarFind,
@@ -84,6 +88,8 @@ pub struct EditorState {
     pub section: Section,
     /// Weights of transforms switched off in the transform list, by (flame, transform).
     pub off_weights: HashMap<(usize, usize), f64>,
+    /// The amounts of the typed-amount tools (turn, scale, move).
+    pub amounts: Amounts,
 }
 
 /// The sections below the triangle canvas.
@@ -113,10 +119,12 @@ impl Default for EditorState {
             grid: true,
             hover_world: None,
             canvas: Rect::from_min_size(Pos2::ZERO, Vec2::splat(100.0)),
+            fitted: false,
             gesture: None,
             var_find: VarFind::default(),
             section: Section::default(),
             off_weights: HashMap::new(),
+            amounts: Amounts::default(),
         }
     }
 }
@@ -198,6 +206,7 @@ impl EditorState {
         let h = (y1 - y0).max(0.1);
         let s = self.canvas.size();
         self.zoom = (0.85 * (s.x as f64 / w).min(s.y as f64 / h)).clamp(5.0, 5000.0);
+        self.fitted = true;
     }
 }
 

@@ -1,10 +1,15 @@
 //! The left panel of the flame tab: the open file's flames and the last random batch, each with
-//! a thumbnail; a click edits a flame, Keep copies a batch flame into the file.
+//! a thumbnail; a click edits a flame, Keep copies a batch flame into the file. Rows are one
+//! line high (long names end in "…", the pointer shows them whole), the file's list gets the
+//! room it needs up to two thirds of the panel, and the batch folds away.
 
 use eframe::egui::{self, Vec2};
 
 use super::FlameTab;
 use super::thumbnails::Slot;
+
+/// Size of a file flame's thumbnail.
+const FILE_THUMB: Vec2 = Vec2::new(48.0, 36.0);
 
 /// Thumbnail lists.
 const FILE_LIST: u8 = 0;
@@ -24,13 +29,27 @@ impl FlameTab {
     pub(super) fn file_panel(&mut self, ui: &mut egui::Ui) {
         let file = &self.file;
         let (name, n, dirty) = (file.name.clone(), file.flames.len(), file.dirty);
-        ui.heading(format!("{name}{}", if dirty { " *" } else { "" }));
+        ui.add(
+            egui::Label::new(
+                egui::RichText::new(format!("{name}{}", if dirty { " *" } else { "" })).heading(),
+            )
+            .truncate(),
+        )
+        .on_hover_text(
+            self.file
+                .path
+                .as_ref()
+                .map_or(name.clone(), |p| p.display().to_string()),
+        );
         ui.label(format!("{n} flame(s)"));
         ui.separator();
         let mut select = None;
         let batch_len = self.batch.as_ref().map_or(0, |b| b.flames.len());
-        let list_height = if batch_len > 0 {
-            (ui.available_height() * 0.35).max(80.0)
+        let row_h = FILE_THUMB.y + ui.spacing().item_spacing.y;
+        let list_height = if batch_len > 0 && self.batch_shown {
+            (n as f32 * row_h)
+                .min(ui.available_height() * 0.66)
+                .max(row_h)
         } else {
             f32::INFINITY
         };
@@ -38,8 +57,9 @@ impl FlameTab {
         egui::ScrollArea::vertical()
             .id_salt("file-flames")
             .max_height(list_height)
-            .show(ui, |ui| {
-                for i in 0..n {
+            .auto_shrink([false, true])
+            .show_rows(ui, FILE_THUMB.y, n, |ui, range| {
+                for i in range {
                     let f = &self.file.flames[i];
                     let label = if f.name.is_empty() {
                         format!("flame {}", i + 1)
@@ -48,14 +68,14 @@ impl FlameTab {
                     };
                     let tex = self.thumbnail((FILE_LIST, i));
                     ui.horizontal(|ui| {
-                        let size = Vec2::new(64.0, 48.0);
                         let r = match tex {
-                            Some(t) => {
-                                ui.add(egui::Image::new((t, size)).sense(egui::Sense::click()))
-                            }
-                            None => ui.add(egui::Button::new("…").min_size(size)),
+                            Some(t) => ui
+                                .add(egui::Image::new((t, FILE_THUMB)).sense(egui::Sense::click())),
+                            None => ui.add(egui::Button::new("…").min_size(FILE_THUMB)),
                         };
-                        let l = ui.selectable_label(current == Some(i), label);
+                        let l = ui
+                            .add(egui::Button::selectable(current == Some(i), &label).truncate())
+                            .on_hover_text(&label);
                         if r.clicked() || l.clicked() {
                             select = Some(i);
                         }
@@ -72,10 +92,18 @@ impl FlameTab {
             return;
         }
         ui.separator();
-        ui.horizontal(|ui| {
-            ui.strong(format!("Last random batch ({batch_len})"));
-        });
-        ui.label("Click to edit; Keep copies into the file.");
+        let header = egui::CollapsingHeader::new(format!("Last random batch ({batch_len})"))
+            .id_salt("batch-header")
+            .open(Some(self.batch_shown))
+            .show(ui, |ui| {
+                ui.label("Click to edit; Keep copies into the file.");
+            });
+        if header.header_response.clicked() {
+            self.batch_shown = !self.batch_shown;
+        }
+        if !self.batch_shown {
+            return;
+        }
         // A grid of thumbnails; only the visible rows are drawn and asked for, so the
         // pictures in view render first.
         let cols = ((ui.available_width() / 86.0).floor() as usize).max(1);
@@ -112,7 +140,12 @@ impl FlameTab {
                                     ),
                                     None => ui.add(egui::Button::new("…").min_size(size)),
                                 };
-                                let l = ui.selectable_label(current == Some(i), name);
+                                let l = ui
+                                    .add(
+                                        egui::Button::selectable(current == Some(i), &name)
+                                            .truncate(),
+                                    )
+                                    .on_hover_text(&name);
                                 if r.clicked() || l.clicked() {
                                     open = Some(i);
                                 }

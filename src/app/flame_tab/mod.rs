@@ -3,12 +3,14 @@
 //!
 //! | file | what |
 //! |---|---|
-//! | `document.rs` | the flames of a file or batch and the undo history |
+//! | `document.rs`, `history.rs` | the flames of a file or batch, the undo history and its window |
 //! | `commands.rs` | random flames, batches, weights, save, paste, export; the windows |
 //! | `file_panel.rs` | the left panel: the file's flames and the batch, with thumbnails |
-//! | `preview_panel.rs` / `preview.rs` | the central picture (camera by mouse) and its renderer |
+//! | `preview_panel.rs` / `preview.rs` / `convergence.rs` | the central picture (camera by mouse), its renderer and when it is clean |
+//! | `preview_window.rs` | the preview over the whole window or in a window of its own |
 //! | `editor_panel.rs` | the right panel: triangle editor and the sections below it |
 //! | `editor_state.rs`, `triangles.rs`, `editor_tools.rs` | the triangle editor |
+//! | `transform_tools.rs` | turn, scale and move by typed amounts (Apophysis' triangle buttons) |
 //! | `transform_list.rs`, `xform_panel.rs`, `variations_panel.rs`, `xaos.rs`, `settings.rs` | the sections |
 //! | `animation.rs` | rotating triangles and morphs between flames |
 //! | `timeline/` | the timeline under the preview: keys, curves, playback, loop tools |
@@ -21,6 +23,7 @@ pub use anim_export::SourceKind;
 pub use timeline::rotation_loop;
 pub(crate) mod animation;
 pub(crate) mod commands;
+pub(crate) mod convergence;
 pub(crate) mod document;
 pub(crate) mod editor_panel;
 pub(crate) mod editor_state;
@@ -29,14 +32,17 @@ pub(crate) mod export;
 pub(crate) mod file_panel;
 pub(crate) mod first_flame;
 pub(crate) mod gradients;
+pub(crate) mod history;
 pub(crate) mod mutations;
 pub(crate) mod palette_editor;
 pub mod preview;
 pub(crate) mod preview_panel;
+pub(crate) mod preview_window;
 pub(crate) mod settings;
 pub(crate) mod thumbnails;
 pub(crate) mod timeline;
 pub(crate) mod transform_list;
+pub(crate) mod transform_tools;
 pub(crate) mod triangles;
 pub(crate) mod variation_filter;
 pub(crate) mod variations_panel;
@@ -62,6 +68,7 @@ use gradients::GradientWindow;
 use mutations::MutationWindow;
 use palette_editor::PaletteEditor;
 use preview_panel::Preview;
+use preview_window::PreviewPlace;
 use thumbnails::Thumbnails;
 use timeline::Timeline;
 use variation_filter::VariationFilter;
@@ -88,6 +95,8 @@ pub enum FlameRequest {
     ChooseExportFile,
     /// Choose the folder or video an animation export writes.
     ChooseAnimationFile,
+    /// Choose the sound that drives a parameter.
+    ChooseSoundFile,
 }
 
 /// State of the flame tab.
@@ -106,6 +115,14 @@ pub struct FlameTab {
     pub show_editor: bool,
     /// Preview zoom (1 = fit).
     pub preview_zoom: f32,
+    /// The preview covers the whole window (F11).
+    pub full_view: bool,
+    /// The preview is in a window of its own; the editor takes its room.
+    pub preview_window: bool,
+    /// The History window is open.
+    pub history_open: bool,
+    /// The last random batch is unfolded in the left panel.
+    pub batch_shown: bool,
     /// Which variations new random flames get.
     pub variation_mode: VariationMode,
     /// Status lines and message boxes of the tab.
@@ -176,6 +193,10 @@ impl FlameTab {
             show_files: true,
             show_editor: true,
             preview_zoom: 1.0,
+            full_view: false,
+            preview_window: false,
+            history_open: false,
+            batch_shown: true,
             variation_mode: options.variation_mode(),
             notices: Notices::default(),
             gradients: GradientWindow::default(),
@@ -204,6 +225,20 @@ impl FlameTab {
     fn repaint(&self) -> impl Fn() + Send + 'static {
         let r = self.repaint.clone();
         move || r()
+    }
+
+    /// Start the live preview's renderer if it is not running (the application starts it
+    /// with the window; tests that look at the picture start it here).
+    pub fn start_preview(&mut self, ctx: &egui::Context) {
+        if self.preview.is_none() {
+            self.preview = Some(Preview::new(ctx));
+        }
+    }
+
+    /// How far the preview has got: its refining progress in [0, 1] and whether it is clean
+    /// (done); `None` without a preview renderer.
+    pub fn preview_progress(&self) -> Option<(f64, bool)> {
+        self.preview.as_ref().map(|p| (p.fraction(), !p.refining()))
     }
 
     /// The document the editor shows (the file or the batch).
@@ -295,6 +330,11 @@ impl FlameTab {
                 b.commit_live();
             }
         }
+        if self.full_view {
+            self.full_window_ui(ui, options);
+            self.end_frame(ui.ctx());
+            return;
+        }
         if self.timeline.open {
             let h = ui.available_height();
             // The whole width, as in animation programs (the ruler wants room); each layout
@@ -311,32 +351,47 @@ impl FlameTab {
                 .max_size((h * 0.6).max(90.0))
                 .show(ui, |ui| self.timeline_panel(ui));
         }
-        // Side panels never take the picture's room: at most a quarter and a half of the
-        // width, so that a small window still shows the preview.
+        // The side panels leave the preview most of the room: narrower in a small window,
+        // never more than a fifth and two fifths of the width.
         let width = ui.available_width();
         let mut dragging = false;
         if self.show_files {
             egui::Panel::left("files")
-                .default_size(200.0f32.min(width * 0.2))
-                .min_size(100.0)
-                .max_size((width * 0.25).max(100.0))
+                .default_size((width * 0.16).clamp(120.0, 190.0))
+                .min_size(90.0)
+                .max_size((width * 0.2).max(100.0))
                 .resizable(true)
                 .show(ui, |ui| self.file_panel(ui));
         }
-        if self.show_editor {
-            egui::Panel::right("editor")
-                .default_size(520.0f32.min(width * 0.42))
-                .min_size(200.0)
-                .max_size((width * 0.55).max(200.0))
-                .resizable(true)
-                .show(ui, |ui| {
-                    dragging = self.editor_panel(ui, options);
-                });
+        if self.preview_window {
+            // The preview has its own window: the editor takes the middle.
+            egui::CentralPanel::default().show(ui, |ui| {
+                dragging = self.editor_panel(ui, options);
+            });
+            self.preview_viewport(ui.ctx(), options, dragging);
+        } else {
+            if self.show_editor {
+                egui::Panel::right("editor")
+                    .default_size((width * 0.36).clamp(280.0, 460.0))
+                    .min_size(220.0)
+                    .max_size((width * 0.5).max(220.0))
+                    .resizable(true)
+                    .show(ui, |ui| {
+                        dragging = self.editor_panel(ui, options);
+                    });
+            }
+            egui::CentralPanel::default().show(ui, |ui| {
+                self.preview_panel(ui, options, dragging, PreviewPlace::Panel)
+            });
         }
-        egui::CentralPanel::default().show(ui, |ui| self.preview_panel(ui, options, dragging));
-        self.thumbs.end_frame(ui.ctx());
-        self.step_animations(ui.ctx());
-        self.timeline_frame(ui.ctx());
+        self.end_frame(ui.ctx());
+    }
+
+    /// What runs every frame after the panels: thumbnails, animations, the timeline.
+    fn end_frame(&mut self, ctx: &egui::Context) {
+        self.thumbs.end_frame(ctx);
+        self.step_animations(ctx);
+        self.timeline_frame(ctx);
     }
 
     /// The tab's part of the status bar.

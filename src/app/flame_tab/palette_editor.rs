@@ -1,7 +1,8 @@
-//! The palette editor (Fractorium's Palette tab and curves): key colours on a strip (drag a key
-//! to move it, click to pick its colour), adjustments (hue, saturation, brightness, contrast,
-//! frequency, blur) and colour curves. Every change recolours the preview at once; a drag is
-//! one undo step.
+//! The palette editor, the Editor page of the gradient window (Fractorium's Palette tab and
+//! curves): key colours on a strip (drag a key to move it, click to pick its colour),
+//! adjustments (hue, saturation, brightness, contrast, frequency, blur) and colour curves.
+//! Every change recolours the preview at once; a drag is one undo step. A palette of 256
+//! colours without keys is edited as keys fitted to reproduce it exactly.
 
 use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
 
@@ -72,12 +73,14 @@ impl PaletteEditor {
         }
     }
 
-    /// Show the window; changes go to the current flame's palette.
-    pub fn show(&mut self, ctx: &egui::Context, doc: &mut Document, dragging: bool) {
-        if !self.open {
-            self.produced = None;
-            return;
-        }
+    /// Forget what the editor made (the window was closed: the next opening starts from the
+    /// flame's palette as it is then).
+    pub fn forget(&mut self) {
+        self.produced = None;
+    }
+
+    /// The editor's page; changes go to the current flame's palette.
+    pub fn ui(&mut self, ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
         let current = doc.flame().palette.clone();
         // Keys built from 256 exact colours, and an untouched start, reproduce the palette;
         // anything the editor did not make starts a new edit.
@@ -89,21 +92,14 @@ impl PaletteEditor {
             self.start_from(&current);
         }
         let before = (self.keys.clone(), self.adjust, self.curves.clone());
-        let mut open = self.open;
-        egui::Window::new("Palette editor")
-            .open(&mut open)
-            .default_width(360.0)
-            .show(ctx, |ui| {
-                ui.set_width(340.0);
-                strip(ui, &current, Vec2::new(340.0, 24.0));
-                ui.separator();
-                self.keys_ui(ui);
-                ui.separator();
-                self.adjust_ui(ui);
-                ui.separator();
-                self.curves_ui(ui);
-            });
-        self.open = open;
+        ui.set_width(340.0);
+        strip(ui, &current, Vec2::new(340.0, 24.0));
+        ui.separator();
+        self.keys_ui(ui);
+        ui.separator();
+        self.adjust_ui(ui);
+        ui.separator();
+        self.curves_ui(ui);
         let changed = (self.keys.clone(), self.adjust, self.curves.clone()) != before;
         if changed {
             let g = self.result();
@@ -119,10 +115,13 @@ impl PaletteEditor {
                 ui.label("This palette has 256 colours and no keys.");
                 if ui
                     .button("Edit as keys")
-                    .on_hover_text("replace it by 8 keys sampled from it")
+                    .on_hover_text(
+                        "keys placed where the colours turn, as many as reproduce the palette \
+                         exactly (the colours do not change until a key is edited)",
+                    )
                     .clicked()
                 {
-                    self.keys = Some(palette::sample_keys(&self.original, 8));
+                    self.keys = Some(fit_keys(&self.original));
                 }
             });
             return;
@@ -388,8 +387,12 @@ impl PaletteEditor {
         };
         let mut pts = curve.points().to_vec();
         let mut changed = false;
+        // The point under the press, not under the pointer once the drag is recognised (by
+        // then it has left the point's hit radius).
         if resp.drag_started()
-            && let Some(s) = resp.interact_pointer_pos()
+            && let Some(s) = ui
+                .input(|i| i.pointer.press_origin())
+                .or(resp.interact_pointer_pos())
         {
             self.dragged_point = hit(s);
         }
@@ -427,6 +430,42 @@ impl PaletteEditor {
     }
 }
 
+/// Keys that reproduce `g` to 8 bits: the first and last entry, then, while some entry's
+/// 8-bit colour differs, a key on the entry that is farthest off (each key sits on an entry
+/// with that entry's colour, so entries with a key are exact).
+pub fn fit_keys(g: &Gradient) -> Vec<Stop> {
+    let key = |i: usize| {
+        let c = g.colors[i];
+        Stop {
+            pos: i as f64 / 255.0,
+            rgb: [c[0], c[1], c[2]],
+        }
+    };
+    let last = g.colors.len().saturating_sub(1).min(255);
+    let mut keys = vec![key(0), key(last)];
+    loop {
+        let fit = palette::from_keys("", &keys);
+        let worst = fit
+            .colors
+            .iter()
+            .zip(&g.colors)
+            .enumerate()
+            // Entries whose 8-bit colour differs, the farthest off first.
+            .filter(|(i, _)| fit.rgb8(*i) != g.rgb8(*i))
+            .map(|(i, (a, b))| {
+                let e = (0..3).map(|k| (a[k] - b[k]).abs()).fold(0.0, f64::max);
+                (i, e)
+            })
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        match worst {
+            Some((i, _)) => keys.push(key(i)),
+            None => break,
+        }
+    }
+    keys.sort_by(|a, b| a.pos.total_cmp(&b.pos));
+    keys
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -439,6 +478,25 @@ mod tests {
         e.start_from(&plain);
         assert!(e.keys.is_none());
         assert_eq!(e.result().colors, plain.colors);
+        // As keys, the same colours to 8 bits, with fewer keys than entries for a smooth one.
+        e.keys = Some(fit_keys(&plain));
+        let k = e.keys.as_ref().unwrap().len();
+        assert!((2..=256).contains(&k), "{k}");
+        let r = e.result();
+        for i in 0..256 {
+            assert_eq!(r.rgb8(i), plain.rgb8(i), "entry {i}");
+        }
+        // A palette of random colours needs a key on nearly every entry, and still fits.
+        let mut rng = crate::flame::rng::FastRng::new(4);
+        let mut noisy = plain.clone();
+        for c in &mut noisy.colors {
+            for v in c.iter_mut().take(3) {
+                *v = (rng.f01() * 255.0).round() / 255.0;
+            }
+        }
+        let keys = fit_keys(&noisy);
+        let fit = palette::from_keys("", &keys);
+        assert!(fit.rgb8(100) == noisy.rgb8(100) && fit.rgb8(7) == noisy.rgb8(7));
         // A keyed palette is rebuilt from its keys (the built-ins are rounded to 8 bits).
         let g = crate::gradient::builtin_named("lagoon").unwrap();
         e.start_from(&g);

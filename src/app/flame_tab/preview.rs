@@ -1,11 +1,13 @@
 //! The progressive live preview, rendered in the background: restarted within milliseconds by
-//! new edits, refined in passes of doubling size, recoloured without iterating when only the
-//! gradient changes.
+//! new edits, refined in passes of doubling size until the picture is clean (a noise target,
+//! see `convergence.rs`, whatever quality the file asks for its export), recoloured without
+//! iterating when only the gradient changes. When it is clean the worker waits: no CPU.
 
 use std::time::Instant;
 
 use eframe::egui;
 
+use super::convergence;
 use crate::app::worker::{JobContext, Worker};
 use crate::flame::Flame;
 use crate::flame::render::{RenderOptions, Renderer, Spare};
@@ -14,6 +16,13 @@ use crate::flame::render::{RenderOptions, Renderer, Spare};
 const FIRST_FRAME_BUDGET_S: f64 = 0.018;
 /// The first frame has at least this many samples per pixel (a readable picture).
 const MIN_FIRST_QUALITY: f64 = 1.0;
+/// Seconds of sampling a pass takes at most: later passes add this much, not twice the samples.
+const PASS_S: f64 = 1.5;
+/// Samples a pass adds at least.
+const SUB_PASS_MIN: u64 = 100_000;
+/// A refining preview keeps its samples for instant recolouring up to this quality; past it
+/// the render grows without them (a recolour then starts it again).
+const KEEP_QUALITY: f64 = 64.0;
 
 /// A preview to render.
 #[derive(Clone, Debug)]
@@ -26,8 +35,14 @@ pub struct PreviewJob {
     pub height: u32,
     /// Quality of the first pass (fast feedback).
     pub first_quality: f64,
-    /// Quality at which refinement stops.
+    /// Quality at which refinement stops (with a noise target: the most it goes to).
     pub final_quality: f64,
+    /// Refine until the estimated noise is at most this many 8-bit levels (root mean square
+    /// over the flame's pixels); `None`: until `final_quality`.
+    pub noise_target: Option<f64>,
+    /// With a noise target: the quality it refines to at least (density estimation keeps
+    /// sharpening a picture whose grain is gone).
+    pub least_quality: f64,
     /// Worker threads (0: all cores).
     pub threads: usize,
     /// Number of the job: a frame carries it, so that frames of older jobs can be told apart.
@@ -41,8 +56,13 @@ pub struct PreviewFrame {
     pub generation: u64,
     /// The picture.
     pub image: egui::ColorImage,
-    /// Fraction of the final quality done.
+    /// How far the job has got, in [0, 1]: the share of the final quality's samples done, or
+    /// with a noise target the share of the samples a clean picture needs (estimated).
     pub fraction: f64,
+    /// Samples per pixel the picture shows.
+    pub quality: f64,
+    /// The estimated noise of the picture (8-bit levels), once two refined pictures exist.
+    pub noise: Option<f64>,
     /// Milliseconds since the job was submitted.
     pub elapsed_ms: f64,
     /// The final quality is reached.
@@ -136,9 +156,143 @@ struct Active {
     job: PreviewJob,
     renderer: Renderer,
     started: Instant,
-    target_fraction: f64,
+    /// Samples the next pass brings the render to.
+    target_samples: u64,
     /// Frames sent for this job.
     passes: u32,
+    /// With one thread: the refined picture (RGB8) the next measurement compares with, and
+    /// its samples.
+    last: Option<(Vec<u8>, u64)>,
+    /// The last measurement of the noise: at which quality, how much.
+    measured: Option<(f64, f64)>,
+    /// The estimated noise of the last picture.
+    noise: Option<f64>,
+    /// The progress shown last (it never goes back).
+    shown_fraction: f64,
+    /// Nothing more to do: the final quality or the noise target is reached.
+    done: bool,
+}
+
+impl Active {
+    /// The frame of `image` as it stands.
+    fn frame(&self, image: egui::ColorImage) -> PreviewFrame {
+        PreviewFrame {
+            generation: self.job.generation,
+            image,
+            fraction: self.shown_fraction,
+            quality: self.quality_done(),
+            noise: self.noise,
+            elapsed_ms: self.started.elapsed().as_secs_f64() * 1000.0,
+            done: self.done,
+        }
+    }
+
+    /// Samples per pixel done.
+    fn quality_done(&self) -> f64 {
+        let f = self.renderer.flame();
+        let px = f.width as f64 * f.height as f64 * 4f64.powf(f.zoom);
+        self.renderer.samples_done() as f64 / px.max(1.0)
+    }
+
+    /// Measure the noise of the refined picture `image` when it is due (see
+    /// `convergence.rs`): from a quarter of the least quality on, at every doubling of the
+    /// samples, and whenever the square-root law says the target may be met. False when
+    /// `stop` was set meanwhile.
+    fn measure_noise(
+        &mut self,
+        image: &image::DynamicImage,
+        pool: &Option<(usize, rayon::ThreadPool)>,
+        stop: &std::sync::atomic::AtomicBool,
+    ) -> bool {
+        let (q, least) = (self.quality_done(), self.job.least_quality);
+        let target = self.job.noise_target.unwrap_or(0.0);
+        if q < least / 4.0 {
+            return true;
+        }
+        let bg = self.job.flame.background.map(|v| (v * 255.0).round() as u8);
+        let r = &self.renderer;
+        if r.threads() < 2 {
+            let n = r.samples_done();
+            if self.last.as_ref().is_some_and(|(_, n0)| n < 2 * n0) {
+                return true;
+            }
+            let now = image.to_rgb8().into_raw();
+            if let Some((before, n0)) = &self.last
+                && let Some(e) = convergence::noise_between(before, &now, *n0, n, bg)
+            {
+                self.noise = Some(e);
+                self.measured = Some((q, e));
+            }
+            self.last = Some((now, n));
+            return true;
+        }
+        let due = match self.measured {
+            None => true,
+            Some((q0, e0)) => q >= 2.0 * q0 || (q >= least && e0 * (q0 / q).sqrt() <= target),
+        };
+        if !due {
+            return true;
+        }
+        let Some([(a, sa), (b, sb)]) = on_pool(pool, || r.preview_halves(stop)) else {
+            return false;
+        };
+        let (a, b) = (a.to_rgb8(), b.to_rgb8());
+        if let Some(e) = convergence::noise_of_halves(a.as_raw(), b.as_raw(), [sa, sb], bg) {
+            self.noise = Some(e);
+            self.measured = Some((q, e));
+        }
+        true
+    }
+
+    /// Progress and done after a pass.
+    fn after_pass(&mut self) {
+        // Nothing more to add: the final quality (or the engine's limit) is reached.
+        let at_cap = self.renderer.is_done() && !self.can_grow();
+        let fraction = match self.job.noise_target {
+            Some(t) => {
+                let q = self.quality_done();
+                let least = self.job.least_quality.min(self.job.final_quality);
+                let clean = q >= least && self.noise.is_some_and(|e| e <= t);
+                self.done = clean || at_cap;
+                let needed =
+                    convergence::quality_needed(least, self.job.final_quality, self.measured, t);
+                (q / needed.max(1e-9)).clamp(0.0, 1.0)
+            }
+            None => {
+                self.done = self.renderer.is_done();
+                self.renderer.fraction()
+            }
+        };
+        self.shown_fraction = if self.done {
+            1.0
+        } else {
+            fraction.max(self.shown_fraction)
+        };
+    }
+
+    /// Can the render take more samples (a job with a noise target below its final quality
+    /// and the engine's limit)?
+    fn can_grow(&self) -> bool {
+        let f = self.renderer.flame();
+        self.job.noise_target.is_some()
+            && f.quality < self.job.final_quality
+            && f.quality < crate::flame::render::quality_limit(f)
+    }
+
+    /// Grow the render when the next pass wants more samples than it holds (a job with a noise
+    /// target starts small and grows up to its final quality).
+    fn grow_to_target(&mut self) {
+        let total = self.renderer.total_samples();
+        if self.job.noise_target.is_none() || self.target_samples <= total {
+            return;
+        }
+        let q = self.renderer.flame().quality;
+        let want = (q * self.target_samples as f64 / total as f64).min(self.job.final_quality);
+        if want > q {
+            // Refused only past the engine's limits: the render then ends where it is.
+            let _ = self.renderer.extend(want - q);
+        }
+    }
 }
 
 /// What the worker keeps between jobs.
@@ -172,37 +326,54 @@ impl State {
         let t = Instant::now();
         let job = match msg {
             PreviewMsg::Render(job) => job,
-            PreviewMsg::Recolor(job) => {
-                let g = job.generation;
-                let pool = &self.pool;
-                let recoloured = match self.active.as_mut() {
-                    Some(a) if a.job.generation == g => on_pool(pool, || {
-                        a.renderer
-                            .recolor(&job.flame.palette, job.flame.palette_mode)
-                    }),
-                    _ => false,
-                };
-                match self.active.as_mut() {
-                    Some(a) if recoloured => {
-                        a.job.flame.palette = job.flame.palette;
-                        a.job.flame.palette_mode = job.flame.palette_mode;
-                        cx.send(PreviewEvent::Frame(PreviewFrame {
-                            generation: g,
-                            image: to_color_image(&on_pool(pool, || a.renderer.preview())),
-                            fraction: a.renderer.fraction(),
-                            elapsed_ms: t.elapsed().as_secs_f64() * 1000.0,
-                            done: a.renderer.is_done(),
-                        }));
-                        self.refine(cx);
-                        return;
-                    }
-                    _ => job,
+            PreviewMsg::Recolor(job) => match self.recolor(job, cx) {
+                None => {
+                    self.refine(cx);
+                    return;
                 }
-            }
+                Some(job) => job,
+            },
         };
         if self.start(job, t, cx) {
             self.refine(cx);
         }
+    }
+
+    /// Recolour the active job's kept samples with `job`'s palette and send the frame; the job
+    /// back when that cannot be done (it is then rendered from scratch).
+    fn recolor(&mut self, job: PreviewJob, cx: &JobContext<PreviewEvent>) -> Option<PreviewJob> {
+        let pool = &self.pool;
+        let Some(a) = self
+            .active
+            .as_mut()
+            .filter(|a| a.job.generation == job.generation)
+        else {
+            return Some(job);
+        };
+        let palette = (&job.flame.palette, job.flame.palette_mode);
+        if !on_pool(pool, || a.renderer.recolor(palette.0, palette.1)) {
+            return Some(job);
+        }
+        a.job.flame.palette = job.flame.palette;
+        a.job.flame.palette_mode = job.flame.palette_mode;
+        // The earlier pictures had other colours: the next one is compared with this one (the
+        // noise, a matter of samples, stays as it was).
+        a.started = Instant::now();
+        let refined = a.passes > 1;
+        let image = on_pool(pool, || {
+            if refined {
+                a.renderer.preview()
+            } else {
+                a.renderer.preview_draft()
+            }
+        });
+        if refined && a.last.is_some() {
+            // One thread: the comparisons go on from the picture in its new colours.
+            a.last = Some((image.to_rgb8().into_raw(), a.renderer.samples_done()));
+        }
+        a.after_pass();
+        cx.send(PreviewEvent::Frame(a.frame(to_color_image(&image))));
+        None
     }
 
     /// Drop the active job, keeping its memory for the next one.
@@ -216,7 +387,12 @@ impl State {
     fn start(&mut self, job: PreviewJob, t: Instant, cx: &JobContext<PreviewEvent>) -> bool {
         let mut flame = job.flame.clone();
         flame.resize_keep_framing(job.width.max(1), job.height.max(1));
-        flame.quality = job.final_quality.max(job.first_quality).max(1e-3);
+        let last = job.final_quality.max(job.first_quality).max(1e-3);
+        // A job with a noise target starts at the quality whose samples are kept and grows.
+        flame.quality = match job.noise_target {
+            Some(_) => last.min(KEEP_QUALITY.max(job.first_quality)),
+            None => last,
+        };
         let opts = RenderOptions {
             seed: 1,
             threads: job.threads,
@@ -231,20 +407,28 @@ impl State {
         self.spare = Spare::default();
         match made {
             Ok(r) => {
-                let mut first = (job.first_quality / flame.quality).clamp(0.0, 1.0);
+                let mut first_flame = flame.clone();
+                first_flame.quality = job.first_quality.min(flame.quality).max(1e-3);
+                let mut first = first_flame.total_samples();
                 // Keep the first frame within its time budget on this machine: fewer samples
                 // for a costly flame (the next passes refine it).
                 if let Some(rate) = self.rate {
-                    let budget = rate * FIRST_FRAME_BUDGET_S / r.total_samples().max(1) as f64;
-                    let floor = MIN_FIRST_QUALITY / flame.quality;
+                    first_flame.quality = MIN_FIRST_QUALITY;
+                    let floor = first_flame.total_samples();
+                    let budget = (rate * FIRST_FRAME_BUDGET_S) as u64;
                     first = first.min(budget.max(floor));
                 }
                 self.active = Some(Active {
                     job,
                     renderer: r,
                     started: t,
-                    target_fraction: first,
+                    target_samples: first.max(1),
                     passes: 0,
+                    last: None,
+                    measured: None,
+                    noise: None,
+                    shown_fraction: 0.0,
+                    done: false,
                 });
                 true
             }
@@ -265,12 +449,18 @@ impl State {
             let Some(a) = self.active.as_mut() else {
                 return;
             };
-            if a.renderer.is_done() || cx.is_stale() {
+            if a.done || cx.is_stale() {
                 return;
             }
-            // One pass up to the target fraction, then double the target.
-            let total = a.renderer.total_samples();
-            let want = ((a.target_fraction * total as f64) as u64)
+            a.grow_to_target();
+            if a.renderer.is_done() {
+                // Nothing left to add (the engine's limits): this picture is the last.
+                a.done = true;
+                return;
+            }
+            // One pass up to the target, then double the target.
+            let want = a
+                .target_samples
                 .saturating_sub(a.renderer.samples_done())
                 .max(1);
             let t_pass = Instant::now();
@@ -295,23 +485,31 @@ impl State {
             let first_pass = a.passes == 0;
             a.passes += 1;
             let quick = a.job.final_quality <= a.job.first_quality;
-            let image = if first_pass || quick {
-                on_pool(&self.pool, || a.renderer.preview_draft())
+            let (image, refined) = if first_pass || quick {
+                (on_pool(&self.pool, || a.renderer.preview_draft()), false)
             } else {
                 match on_pool(&self.pool, || a.renderer.preview_until(cancel)) {
-                    Some(image) => image,
+                    Some(image) => (image, true),
                     // A newer job waits: its frame, not this one, is wanted.
                     None => return,
                 }
             };
-            cx.send(PreviewEvent::Frame(PreviewFrame {
-                generation: a.job.generation,
-                image: to_color_image(&image),
-                fraction: a.renderer.fraction(),
-                elapsed_ms: a.started.elapsed().as_secs_f64() * 1000.0,
-                done: a.renderer.is_done(),
-            }));
-            a.target_fraction = (a.target_fraction * 2.0).min(1.0);
+            if refined
+                && a.job.noise_target.is_some()
+                && !a.measure_noise(&image, &self.pool, cancel)
+            {
+                // A newer job waits.
+                return;
+            }
+            a.after_pass();
+            cx.send(PreviewEvent::Frame(a.frame(to_color_image(&image))));
+            // Twice the samples, or at most about PASS_S more seconds of them: a frame at
+            // least that often.
+            let most = self
+                .rate
+                .map_or(u64::MAX, |r| (r * PASS_S) as u64)
+                .max(SUB_PASS_MIN);
+            a.target_samples = a.target_samples.saturating_add(a.target_samples.min(most));
         }
     }
 }
@@ -344,6 +542,8 @@ mod tests {
             height: 120,
             first_quality: 1.0,
             final_quality: 8.0,
+            noise_target: None,
+            least_quality: 0.0,
             threads: 2,
             generation,
         }
@@ -388,6 +588,54 @@ mod tests {
             }
             _ => panic!("no recoloured frame"),
         }
+    }
+
+    /// Frames of a job until it is done.
+    fn until_done(w: &PreviewWorker) -> Vec<PreviewFrame> {
+        let mut frames = Vec::new();
+        while let Some(PreviewEvent::Frame(f)) = w.wait(Duration::from_secs(60)) {
+            let done = f.done;
+            frames.push(f);
+            if done {
+                return frames;
+            }
+        }
+        panic!("no end after {} frames", frames.len());
+    }
+
+    #[test]
+    fn a_noise_target_refines_past_the_files_quality_then_stops() {
+        let w = PreviewWorker::new(|| {});
+        let mut j = job(1);
+        // The file asks for quality 1: the preview does not stop there.
+        j.flame.quality = 1.0;
+        j.final_quality = 400.0;
+        j.least_quality = 30.0;
+        j.noise_target = Some(3.0);
+        w.submit(j.clone());
+        let frames = until_done(&w);
+        let last = frames.last().unwrap();
+        assert!(last.quality >= 30.0, "{}", last.quality);
+        assert!(
+            last.noise.is_some_and(|n| n <= 3.0) || last.quality >= 399.0,
+            "{:?} at {}",
+            last.noise,
+            last.quality
+        );
+        assert!(frames.windows(2).all(|p| p[1].quality > p[0].quality));
+        assert!(frames.windows(2).all(|p| p[1].fraction >= p[0].fraction));
+        assert_eq!(last.fraction, 1.0);
+        // Done means idle: nothing more comes.
+        assert!(w.wait(Duration::from_millis(300)).is_none());
+        // An unreachable target stops at the most quality.
+        let mut k = j.clone();
+        k.generation = 2;
+        k.noise_target = Some(0.01);
+        k.final_quality = 40.0;
+        w.submit(k);
+        let last = until_done(&w).pop().unwrap();
+        assert!((last.quality - 40.0).abs() < 1.0, "{}", last.quality);
+        assert!(last.noise.is_some_and(|n| n > 0.01));
     }
 
     #[test]

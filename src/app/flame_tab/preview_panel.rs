@@ -5,6 +5,7 @@ use eframe::egui::{self, Vec2};
 
 use super::FlameTab;
 use super::preview::{PreviewEvent, PreviewJob, PreviewWorker};
+use super::preview_window::PreviewPlace;
 use crate::app::a11y::named;
 use crate::app::options::Options;
 use crate::flame::Flame;
@@ -19,10 +20,16 @@ pub struct Preview {
     texture: Option<egui::TextureHandle>,
     /// Generation of the newest job.
     pub generation: u64,
-    /// The flame, size and quality of the last job.
-    submitted: Option<(Flame, [u32; 2], bool)>,
+    /// The last job.
+    submitted: Option<PreviewJob>,
     fraction: f64,
     elapsed_ms: f64,
+    /// Samples per pixel and estimated noise of the picture shown, and whether it is final.
+    quality: f64,
+    noise: Option<f64>,
+    done: bool,
+    /// The submitted job refines to a noise target (not a drag or animation frame).
+    refining: bool,
     error: Option<String>,
     /// Generation of the picture on screen.
     pub shown_generation: u64,
@@ -46,33 +53,44 @@ impl Preview {
             submitted: None,
             fraction: 0.0,
             elapsed_ms: 0.0,
+            quality: 0.0,
+            noise: None,
+            done: false,
+            refining: false,
             error: None,
             shown_generation: 0,
         }
     }
 
-    /// Render `f` at `px` unless that is what is on its way already.
-    fn request(&mut self, f: &Flame, px: [u32; 2], quick: bool, job: impl Fn(u64) -> PreviewJob) {
-        let need = match &self.submitted {
-            Some((sf, size, q)) => sf != f || *size != px || *q != quick,
-            None => true,
+    /// Render `job` unless that is what is on its way already (its generation is set here).
+    fn request(&mut self, mut job: PreviewJob) {
+        let same_settings = |s: &PreviewJob| {
+            (s.width, s.height, s.first_quality, s.final_quality)
+                == (job.width, job.height, job.first_quality, job.final_quality)
+                && (s.noise_target, s.least_quality) == (job.noise_target, job.least_quality)
+                && s.threads == job.threads
         };
-        if !need {
-            return;
-        }
         let only_palette = match &self.submitted {
-            Some((sf, size, q)) => {
-                *size == px && *q == quick && without_palette(sf) == without_palette(f)
+            Some(s) if same_settings(s) => {
+                if s.flame == job.flame {
+                    return;
+                }
+                without_palette(&s.flame) == without_palette(&job.flame)
             }
-            None => false,
+            _ => false,
         };
-        if only_palette {
-            self.worker.recolor(job(self.generation));
-        } else {
+        if !only_palette {
             self.generation += 1;
-            self.worker.submit(job(self.generation));
         }
-        self.submitted = Some((f.clone(), px, quick));
+        job.generation = self.generation;
+        self.refining = job.noise_target.is_some();
+        self.done = false;
+        self.submitted = Some(job.clone());
+        if only_palette {
+            self.worker.recolor(job);
+        } else {
+            self.worker.submit(job);
+        }
     }
 
     /// Take the frames the worker finished.
@@ -92,6 +110,9 @@ impl Preview {
                     }
                     self.fraction = fr.fraction;
                     self.elapsed_ms = fr.elapsed_ms;
+                    self.quality = fr.quality;
+                    self.noise = fr.noise;
+                    self.done = fr.done;
                     self.error = None;
                     self.shown_generation = fr.generation;
                 }
@@ -107,107 +128,177 @@ impl Preview {
         }
     }
 
-    /// The preview's part of the status bar.
+    /// The preview's part of the status bar: how far the refinement has got.
     pub fn status(&self, ui: &mut egui::Ui) {
         if let Some(e) = &self.error {
             ui.colored_label(egui::Color32::from_rgb(230, 120, 90), e);
-        } else {
-            ui.label(format!(
-                "preview {:>3.0}%  {:.0} ms",
-                self.fraction * 100.0,
-                self.elapsed_ms
-            ));
+            return;
         }
+        let noise = self
+            .noise
+            .map_or(String::new(), |n| format!("  noise {n:.1}"));
+        let text = if !self.refining {
+            format!("preview {:.0} ms", self.elapsed_ms)
+        } else if self.done {
+            format!(
+                "preview clean  quality {:.0}{noise}  {:.1} s",
+                self.quality,
+                self.elapsed_ms / 1000.0
+            )
+        } else {
+            format!(
+                "refining {:>3.0}%  quality {:.0}{noise}",
+                self.fraction * 100.0,
+                self.quality
+            )
+        };
+        ui.label(text).on_hover_text(
+            "the preview adds samples until its noise reaches the target of Options › Display \
+             (levels of 255), then stops; quality: samples per pixel so far",
+        );
+    }
+
+    /// True while the preview is still adding samples to a still picture.
+    pub fn refining(&self) -> bool {
+        self.refining && !self.done && self.error.is_none()
+    }
+
+    /// How far the refinement has got, in [0, 1].
+    pub fn fraction(&self) -> f64 {
+        self.fraction
+    }
+}
+
+/// The largest size of aspect `aspect` (width/height) that fits in `avail`.
+pub(super) fn fit_aspect(avail: Vec2, aspect: f32) -> (f32, f32) {
+    let aspect = if aspect.is_finite() && aspect > 0.0 {
+        aspect
+    } else {
+        1.0
+    };
+    let (w, h) = (avail.x.max(1.0), avail.x.max(1.0) / aspect);
+    if h > avail.y.max(1.0) {
+        (avail.y.max(1.0) * aspect, avail.y.max(1.0))
+    } else {
+        (w, h)
     }
 }
 
 impl FlameTab {
-    pub(super) fn preview_panel(&mut self, ui: &mut egui::Ui, options: &Options, dragging: bool) {
+    /// The picture, as large as `ui` allows at the flame's aspect, with the buttons of `place`
+    /// on it; `dragging`: a triangle or control is being dragged (quick frames).
+    pub(super) fn preview_panel(
+        &mut self,
+        ui: &mut egui::Ui,
+        options: &Options,
+        dragging: bool,
+        place: PreviewPlace,
+    ) {
         let avail = ui.available_size();
         let f = self.shown_flame();
-        // The preview keeps the flame's aspect ratio and is at most preview_size pixels.
+        let (w, h) = fit_aspect(avail, f.width as f32 / f.height.max(1) as f32);
+        // Rendered at the screen's pixels, at most preview_size on the longer side (a larger
+        // area shows it scaled up).
         let ppp = ui.ctx().pixels_per_point();
-        let aspect = f.width as f32 / f.height.max(1) as f32;
-        let (mut w, mut h) = (avail.x, avail.x / aspect);
-        if h > avail.y {
-            h = avail.y;
-            w = h * aspect;
-        }
-        let cap = options.preview_size as f32 / ppp;
-        if w.max(h) > cap {
-            let k = cap / w.max(h);
-            w *= k;
-            h *= k;
-        }
-        let px = [(w * ppp).max(16.0) as u32, (h * ppp).max(12.0) as u32];
-        let animating = self.animation.is_some() || self.morph.is_some() || self.timeline.playing();
-        let dragging = dragging || self.camera_drag || self.timeline.scrubbing;
-        if let Some(p) = &mut self.preview {
-            let quick = dragging || animating;
-            let first = options.preview_quality.min(f.quality);
-            let final_q = if quick {
-                if animating {
-                    options.animation_quality
-                } else {
-                    options.preview_quality
-                }
-            } else {
-                f.quality
-            };
-            let first_q = if animating {
-                options.animation_quality
-            } else {
-                first
-            };
-            let threads = options.threads;
-            p.request(&f, px, quick, |generation| PreviewJob {
-                flame: f.clone(),
-                width: px[0],
-                height: px[1],
-                first_quality: first_q,
-                final_quality: final_q,
-                threads,
-                generation,
-            });
-            p.poll(ui.ctx());
-        }
+        let k = (options.preview_size as f32 / (w.max(h) * ppp)).min(1.0);
+        let px = [
+            (w * ppp * k).round().max(16.0) as u32,
+            (h * ppp * k).round().max(12.0) as u32,
+        ];
+        self.request_preview(ui.ctx(), options, &f, px, dragging);
         let size = Vec2::new(w, h) * self.preview_zoom;
         let mut image = None;
         egui::ScrollArea::both()
             .scroll_source(egui::scroll_area::ScrollSource::SCROLL_BAR)
             .show(ui, |ui| {
-                ui.centered_and_justified(|ui| {
-                    let r = match self.preview.as_ref().and_then(|p| p.texture.as_ref()) {
-                        Some(t) => ui.add(
-                            egui::Image::new((t.id(), size)).sense(egui::Sense::click_and_drag()),
-                        ),
-                        None => {
-                            // Until the first picture arrives: its place, already movable.
-                            let (rect, r) =
-                                ui.allocate_exact_size(size, egui::Sense::click_and_drag());
-                            ui.painter().text(
-                                rect.center(),
-                                egui::Align2::CENTER_CENTER,
-                                "rendering…",
-                                egui::FontId::proportional(14.0),
-                                ui.visuals().weak_text_color(),
-                            );
-                            r
-                        }
-                    };
-                    image = Some(r);
-                });
+                // The picture in the middle of the room (or of its zoomed size).
+                let room = ui.available_size().max(size);
+                let (area, _) = ui.allocate_exact_size(room, egui::Sense::hover());
+                let rect = egui::Rect::from_center_size(area.center(), size);
+                let r = ui.interact(
+                    rect,
+                    ui.scope_id().with("picture"),
+                    egui::Sense::click_and_drag(),
+                );
+                match self.preview.as_ref().and_then(|p| p.texture.as_ref()) {
+                    Some(t) => egui::Image::new((t.id(), size)).paint_at(ui, rect),
+                    // Until the first picture arrives: its place, already movable.
+                    None => {
+                        ui.painter().text(
+                            rect.center(),
+                            egui::Align2::CENTER_CENTER,
+                            "rendering…",
+                            egui::FontId::proportional(14.0),
+                            ui.visuals().weak_text_color(),
+                        );
+                    }
+                }
+                image = Some(r);
             });
-        self.preview_rect = image.as_ref().map(|r| r.rect);
-        if let Some(r) = image
-            && self.morph.is_none()
-            && !self.timeline.plays_sequence()
-        {
-            let r = named(r, "Preview").on_hover_text(
+        let Some(r) = image else { return };
+        let clip = ui.clip_rect();
+        self.preview_rect = Some(r.rect);
+        self.progress_line(ui, r.rect.intersect(clip));
+        if self.morph.is_none() && !self.timeline.plays_sequence() {
+            let r = named(r.clone(), "Preview").on_hover_text(
                 "wheel: zoom at the pointer · drag: move · right-drag: rotate · double-click: fit",
             );
             self.camera(ui, &r, &f);
         }
+        self.place_buttons(ui, r.rect.intersect(clip), place);
+    }
+
+    /// Ask the worker for the picture of `f` at `px` pixels: quick frames while dragging or
+    /// animating, otherwise refined to the noise target.
+    fn request_preview(
+        &mut self,
+        ctx: &egui::Context,
+        options: &Options,
+        f: &Flame,
+        px: [u32; 2],
+        dragging: bool,
+    ) {
+        let animating = self.animation.is_some() || self.morph.is_some() || self.timeline.playing();
+        let dragging = dragging || self.camera_drag || self.timeline.scrubbing;
+        let Some(p) = &mut self.preview else { return };
+        // A still picture refines to the preview's noise target, whatever the file's quality
+        // (that is for export); a drag or animation frame is one quick pass.
+        let (first_q, final_q, noise) = if animating {
+            (options.animation_quality, options.animation_quality, None)
+        } else if dragging {
+            (options.preview_quality, options.preview_quality, None)
+        } else {
+            (
+                options.preview_quality,
+                options.preview_max_quality.max(options.preview_quality),
+                Some(options.preview_noise),
+            )
+        };
+        p.request(PreviewJob {
+            flame: f.clone(),
+            width: px[0],
+            height: px[1],
+            first_quality: first_q,
+            final_quality: final_q,
+            noise_target: noise,
+            least_quality: options.preview_least_quality,
+            threads: options.threads,
+            generation: 0,
+        });
+        p.poll(ctx);
+    }
+
+    /// A thin bar along the bottom of the picture while it refines: how far it has got.
+    fn progress_line(&self, ui: &egui::Ui, rect: egui::Rect) {
+        let Some(p) = self.preview.as_ref().filter(|p| p.refining()) else {
+            return;
+        };
+        let bar = egui::Rect::from_min_size(
+            egui::pos2(rect.left(), rect.bottom() - 3.0),
+            Vec2::new(rect.width() * p.fraction().clamp(0.02, 1.0) as f32, 3.0),
+        );
+        ui.painter()
+            .rect_filled(bar, 0.0, ui.visuals().selection.bg_fill);
     }
 
     /// The camera by mouse on the picture: wheel zooms at the pointer, a drag moves the view,

@@ -1,5 +1,8 @@
-//! The Flame section: name, size, camera, quality and tone mapping of the whole flame, and
-//! the motion blur of its animation frames.
+//! The Settings section: everything of the whole flame that Apophysis' Adjust window and
+//! Fractorium's flame tab hold — name and size; the camera, flat and 3-D (pitch, yaw,
+//! perspective, focal height, depth of field and its blur curve); quality, oversampling,
+//! the spatial filter and density estimation; the tone map, palette rule and background; and
+//! the motion blur of animation frames.
 
 use std::ops::RangeInclusive;
 
@@ -36,13 +39,34 @@ fn row(
 pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
     let mut f = doc.flame().clone();
     let before = f.clone();
-    egui::Grid::new("flame-grid").num_columns(2).show(ui, |ui| {
-        name_and_size_rows(ui, &mut f);
-        camera_rows(ui, &mut f);
+    let grid = |ui: &mut egui::Ui, id: &str, rows: &mut dyn FnMut(&mut egui::Ui)| {
+        egui::Grid::new(id)
+            .num_columns(2)
+            .min_col_width(120.0)
+            .show(ui, |ui| rows(ui));
+    };
+    grid(ui, "flame-picture", &mut |ui| {
+        name_and_size_rows(ui, &mut f)
+    });
+    ui.strong("Camera");
+    grid(ui, "flame-camera", &mut |ui| camera_rows(ui, &mut f));
+    egui::CollapsingHeader::new("3-D camera")
+        .default_open(!f.cam.is_flat())
+        .show(ui, |ui| {
+            grid(ui, "flame-camera-3d", &mut |ui| camera3d_rows(ui, &mut f))
+        });
+    ui.strong("Render");
+    grid(ui, "flame-render", &mut |ui| render_rows(ui, &mut f));
+    ui.strong("Tone");
+    grid(ui, "flame-tone", &mut |ui| {
         tone_rows(ui, &mut f);
-        palette_row(ui, &mut f);
         background_row(ui, &mut f);
-        motion_blur_rows(ui, &mut f);
+    });
+    ui.strong("Palette");
+    grid(ui, "flame-palette", &mut |ui| palette_rows(ui, &mut f));
+    ui.strong("Motion blur");
+    grid(ui, "flame-motion-blur", &mut |ui| {
+        motion_blur_rows(ui, &mut f)
     });
     if f.estimator_radius < f.estimator_minimum {
         f.estimator_minimum = f.estimator_radius;
@@ -50,6 +74,134 @@ pub fn flame_settings(ui: &mut egui::Ui, doc: &mut Document, dragging: bool) {
     if f != before {
         doc.edit_while(dragging, |g| *g = f);
     }
+}
+
+/// An angle in radians shown and typed in degrees.
+fn degrees_row(ui: &mut egui::Ui, label: &str, tip: &str, radians: &mut f64) {
+    let mut deg = radians.to_degrees();
+    let old = deg;
+    row(ui, label, tip, &mut deg, 0.5, -360.0..=360.0);
+    if deg != old {
+        *radians = deg.to_radians();
+    }
+}
+
+/// The 3-D camera of Apophysis 7X, Fractorium and JWildfire.
+fn camera3d_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    let c = &mut f.cam;
+    degrees_row(
+        ui,
+        "Pitch (°)",
+        "tilts the plane away from the viewer (about the horizontal axis)",
+        &mut c.pitch,
+    );
+    degrees_row(
+        ui,
+        "Yaw (°)",
+        "turns the plane about the vertical axis before the pitch",
+        &mut c.yaw,
+    );
+    row(
+        ui,
+        "Perspective",
+        "how strongly far parts shrink (1/distance of the eye; 0: parallel view)",
+        &mut c.perspective,
+        0.005,
+        -100.0..=100.0,
+    );
+    row(
+        ui,
+        "Z position",
+        "height of the focal plane: points there are sharp",
+        &mut c.zpos,
+        0.01,
+        -1000.0..=1000.0,
+    );
+    row(
+        ui,
+        "Depth of field",
+        "blur of points away from the focal plane (0: all sharp)",
+        &mut c.dof,
+        0.005,
+        0.0..=100.0,
+    );
+    row(
+        ui,
+        "Blur curve",
+        "how the blur grows away from the picture's centre (Fractorium; 0: the same everywhere)",
+        &mut c.blur_curve,
+        0.01,
+        0.0..=100.0,
+    );
+}
+
+/// Quality, oversampling, the spatial filter and density estimation.
+fn render_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    row(
+        ui,
+        "Quality",
+        "samples per pixel of the exported picture (the preview refines on its own, to the \
+         noise target of Options › Display)",
+        &mut f.quality,
+        1.0,
+        0.01..=1e6,
+    );
+    let l = ui.label("Supersample");
+    ui.add(
+        egui::DragValue::new(&mut f.supersample)
+            .range(1..=16)
+            .clamp_existing_to_range(false),
+    )
+    .labelled_by(l.id)
+    .on_hover_text(
+        "renders at this many times the size per side and filters down (smoother edges; \
+         memory and time grow with its square)",
+    );
+    ui.end_row();
+    row(
+        ui,
+        "Filter radius",
+        "radius of the spatial filter in pixels (softens; 0: none)",
+        &mut f.filter,
+        0.01,
+        0.0..=100.0,
+    );
+    let l = ui.label("Filter shape");
+    let r = egui::ComboBox::from_id_salt("filter-shape")
+        .selected_text(f.filter_shape.name())
+        .show_ui(ui, |ui| {
+            for s in crate::flame::FilterShape::ALL {
+                ui.selectable_value(&mut f.filter_shape, s, s.name());
+            }
+        })
+        .response;
+    r.labelled_by(l.id)
+        .on_hover_text("the spatial filter's kernel (flam3's filter_shape)");
+    ui.end_row();
+    row(
+        ui,
+        "DE radius",
+        "density estimation: the largest blur radius, for the sparsest areas (0: off)",
+        &mut f.estimator_radius,
+        0.1,
+        0.0..=50.0,
+    );
+    row(
+        ui,
+        "DE minimum",
+        "density estimation: the smallest blur radius, for the densest areas",
+        &mut f.estimator_minimum,
+        0.05,
+        0.0..=50.0,
+    );
+    row(
+        ui,
+        "DE curve",
+        "density estimation: how fast the radius shrinks as the density grows",
+        &mut f.estimator_curve,
+        0.01,
+        0.0..=10.0,
+    );
 }
 
 /// The flame's name and picture size.
@@ -128,16 +280,8 @@ fn camera_rows(ui: &mut egui::Ui, f: &mut Flame) {
     );
 }
 
-/// Quality and the tone mapping.
+/// The tone map.
 fn tone_rows(ui: &mut egui::Ui, f: &mut Flame) {
-    row(
-        ui,
-        "Quality",
-        "samples per pixel of the final render",
-        &mut f.quality,
-        1.0,
-        0.01..=1e6,
-    );
     row(
         ui,
         "Brightness",
@@ -186,52 +330,47 @@ fn tone_rows(ui: &mut egui::Ui, f: &mut Flame) {
         0.01,
         0.01..=100.0,
     );
-    row(
-        ui,
-        "DE radius",
-        "density estimation: blur radius for sparse areas (0: off)",
-        &mut f.estimator_radius,
-        0.1,
-        0.0..=50.0,
-    );
 }
 
-/// How colour coordinates pick gradient entries: the palette mode and whose rule.
-fn palette_row(ui: &mut egui::Ui, f: &mut Flame) {
-    ui.label("Palette");
-    ui.horizontal(|ui| {
-        use crate::flame::{PaletteIndex, PaletteMode};
-        let r = egui::ComboBox::from_label("mode")
-            .selected_text(f.palette_mode.name())
-            .show_ui(ui, |ui| {
-                for m in [PaletteMode::Step, PaletteMode::Linear] {
-                    ui.selectable_value(&mut f.palette_mode, m, m.name());
-                }
-            })
-            .response;
-        r.on_hover_text(
+/// How colour coordinates pick gradient entries: the palette mode and whose rule, each a row
+/// of its own with its label at the left.
+fn palette_rows(ui: &mut egui::Ui, f: &mut Flame) {
+    use crate::flame::{PaletteIndex, PaletteMode};
+    let l = ui.label("Mode");
+    egui::ComboBox::from_id_salt("palette-mode")
+        .selected_text(f.palette_mode.name())
+        .show_ui(ui, |ui| {
+            for m in [PaletteMode::Step, PaletteMode::Linear] {
+                ui.selectable_value(&mut f.palette_mode, m, m.name());
+            }
+        })
+        .response
+        .labelled_by(l.id)
+        .on_hover_text(
             "step: each colour coordinate takes one gradient entry; \
              linear: blends the two nearest entries",
         );
-        let rule = |i: PaletteIndex| match i {
-            PaletteIndex::Flam3 => "as flam3",
-            PaletteIndex::Apophysis => "as Apophysis",
-            PaletteIndex::Fractorium => "as Fractorium",
-            PaletteIndex::JWildfire => "as JWildfire",
-        };
-        let r = egui::ComboBox::from_label("rule")
-            .selected_text(rule(f.palette_index))
-            .show_ui(ui, |ui| {
-                for i in PaletteIndex::ALL {
-                    ui.selectable_value(&mut f.palette_index, i, rule(i));
-                }
-            })
-            .response;
-        r.on_hover_text(
+    ui.end_row();
+    let rule = |i: PaletteIndex| match i {
+        PaletteIndex::Flam3 => "as flam3",
+        PaletteIndex::Apophysis => "as Apophysis",
+        PaletteIndex::Fractorium => "as Fractorium",
+        PaletteIndex::JWildfire => "as JWildfire",
+    };
+    let l = ui.label("Rule");
+    egui::ComboBox::from_id_salt("palette-rule")
+        .selected_text(rule(f.palette_index))
+        .show_ui(ui, |ui| {
+            for i in PaletteIndex::ALL {
+                ui.selectable_value(&mut f.palette_index, i, rule(i));
+            }
+        })
+        .response
+        .labelled_by(l.id)
+        .on_hover_text(
             "whose rule turns a colour coordinate into a gradient position: the program \
              that wrote the file (they differ by up to one entry)",
         );
-    });
     ui.end_row();
 }
 
@@ -256,8 +395,6 @@ fn background_row(ui: &mut egui::Ui, f: &mut Flame) {
 /// sub-frames, over how many frames, weighted how.
 fn motion_blur_rows(ui: &mut egui::Ui, f: &mut Flame) {
     use crate::flame::sequence::{MAX_TEMPORAL_SAMPLES, TemporalFilterType};
-    ui.strong("Motion blur");
-    ui.end_row();
     let a = &mut f.anim;
     let l = ui.label("Sub-frames");
     ui.add(

@@ -39,8 +39,14 @@ pub fn canvas(
     let mut out = CanvasOutput::default();
     let size = ui.available_size().max(Vec2::new(120.0, 120.0));
     let (rect, resp) = ui.allocate_exact_size(size, Sense::click_and_drag());
+    let resized = (st.canvas.size() - rect.size()).length() > 1.0;
     st.canvas = rect;
     st.fix_selection(doc.flame());
+    // A view that was fitted stays fitted when the canvas changes size (the first layout, a
+    // resized window): every triangle stays in sight.
+    if resized && st.fitted {
+        st.auto_zoom(doc.flame());
+    }
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, Color32::from_gray(18));
     zoom_at_pointer(ui, &resp, st);
@@ -111,6 +117,7 @@ fn zoom_at_pointer(ui: &egui::Ui, resp: &egui::Response, st: &mut EditorState) {
             let after = st.world_from_screen(hp);
             st.view_center[0] += before[0] - after[0];
             st.view_center[1] += before[1] - after[1];
+            st.fitted = false;
         }
         st.hover_world = Some(st.world_from_screen(hp));
     } else if st.gesture.is_none() {
@@ -354,6 +361,7 @@ fn drag_gesture(
             let d = resp.drag_delta();
             st.view_center[0] -= d.x as f64 / st.zoom;
             st.view_center[1] -= d.y as f64 / st.zoom;
+            st.fitted = false;
             None
         }
         Drag::Vertex(k) => {

@@ -7,6 +7,7 @@ use eframe::egui::{self, Color32, Sense, Vec2};
 use super::document::Document;
 use super::editor_state::{EditorState, Selected, xform_of, xform_of_mut};
 use super::transform_list::{set_xform_name, xform_name};
+use super::transform_tools;
 use super::variations_panel;
 use crate::app::a11y::named;
 use crate::flame::{Affine, Xform};
@@ -173,6 +174,14 @@ pub fn triangle_section(
             apply(doc, sel, x, auto_weights, dragging);
         }
     }
+    ui.separator();
+    egui::CollapsingHeader::new("Turn, scale, move by amounts")
+        .default_open(true)
+        .show(ui, |ui| {
+            let mut amounts = st.amounts;
+            transform_tools::tools_ui(ui, doc, st, &mut amounts, auto_weights);
+            st.amounts = amounts;
+        });
 }
 
 /// Corners (with y up) and coefficients of the pre or post map.
@@ -206,18 +215,38 @@ fn corners_and_coefficients(ui: &mut egui::Ui, st: &EditorState, x: &mut Xform) 
     });
     ui.label("Coefficients, as the file stores them: x' = a·x + b·y + e, y' = c·x + d·y + f")
         .on_hover_text("in the image, y points down; the triangle above shows y up");
-    egui::Grid::new("coef-grid").num_columns(6).show(ui, |ui| {
-        for row in [
-            [("a", &mut m.a), ("b", &mut m.b), ("e", &mut m.e)],
-            [("c", &mut m.c), ("d", &mut m.d), ("f", &mut m.f)],
-        ] {
-            for (l, v) in row {
+    // Three pairs a row; two in a narrow panel (a small window), so that it fits.
+    let per_row = if ui.available_width() < 380.0 { 2 } else { 3 };
+    egui::Grid::new("coef-grid")
+        .num_columns(2 * per_row)
+        .show(ui, |ui| {
+            let cells: [(&str, &mut f64); 6] = if per_row == 3 {
+                [
+                    ("a", &mut m.a),
+                    ("b", &mut m.b),
+                    ("e", &mut m.e),
+                    ("c", &mut m.c),
+                    ("d", &mut m.d),
+                    ("f", &mut m.f),
+                ]
+            } else {
+                [
+                    ("a", &mut m.a),
+                    ("b", &mut m.b),
+                    ("c", &mut m.c),
+                    ("d", &mut m.d),
+                    ("e", &mut m.e),
+                    ("f", &mut m.f),
+                ]
+            };
+            for (k, (l, v)) in cells.into_iter().enumerate() {
                 ui.label(l);
                 coef_changed |= num(ui, v, l, &format!("coefficient {l}"));
+                if (k + 1) % per_row == 0 {
+                    ui.end_row();
+                }
             }
-            ui.end_row();
-        }
-    });
+        });
     ui.horizontal(|ui| {
         if ui
             .button("Reset")

@@ -68,11 +68,11 @@ impl SceneTab {
                 let d = escape.clone();
                 Box::new(move |_, _| {
                     let (w, h) = (1024u32, 512u32);
-                    let mut view = d.view;
+                    let mut d = d.clone();
                     if !matches!(d.params.family, Family::WarpedJulia(_)) {
-                        view.half_height = d.world_width() / 2.0 * h as f64 / w as f64;
+                        d.resize(w, h);
                     }
-                    crate::escape::render(&d.params, view, w, h)
+                    crate::escape::render(&d.params, d.view.clone(), w, h)
                         .map(|(img, _)| {
                             (
                                 slot,

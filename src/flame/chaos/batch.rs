@@ -249,6 +249,7 @@ impl CompiledXform {
                 z: g.pz[j],
                 color: g.pc[j],
                 hide: false,
+                rgb: None,
             };
             for v in &self.post_vars {
                 v.apply_post(&mut acc, cj, rng);

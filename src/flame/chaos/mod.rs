@@ -140,7 +140,7 @@ impl Chaos {
         if weights.iter().sum::<f64>() <= 0.0 {
             return Err(ChaosError::ZeroWeights);
         }
-        let dialect = flame.dialect();
+        let rules = flame.rules();
         let xforms: Vec<CompiledXform> = flame
             .xforms
             .iter()
@@ -150,7 +150,7 @@ impl Chaos {
                     Some(s) if s < n && s != i => 0.0,
                     _ => x.opacity,
                 };
-                CompiledXform::new(x, o, true, dialect)
+                CompiledXform::new(x, o, rules)
             })
             .collect();
         let xaos = flame
@@ -177,7 +177,7 @@ impl Chaos {
         }
         let mut finals = flame
             .finals()
-            .map(|f| CompiledXform::new(f, f.opacity, true, dialect));
+            .map(|f| CompiledXform::new(f, f.opacity, rules));
         let final_xform = finals.next();
         let more_finals: Vec<CompiledXform> = finals.collect();
         // flam3 resets points beyond 1e10; Fractorium only NaN. Flames that use a variation

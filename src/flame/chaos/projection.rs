@@ -20,11 +20,20 @@ pub struct Projection {
     blur_curve: f64,
     /// Half the image size in world units (the blur curve is relative to it).
     half: [f64; 2],
+    /// JWildfire's camera (for the flames it draws): z is not moved by the focal plane, the
+    /// turn includes the bank (`cam_roll`), a point with 1 − p·z′ below ε is dropped, and depth
+    /// of field blurs only the points in front of the focal plane, by its distance times
+    /// `cam_dof_scale`.
+    jwildfire: bool,
+    dof_scale: f64,
 }
 
 impl Projection {
     /// The projection of `flame`'s camera, or `None` for the flat view.
     pub fn of(flame: &Flame) -> Option<Projection> {
+        if flame.renders_as_jwildfire() {
+            return Self::jwildfire(flame);
+        }
         let c = &flame.cam;
         if c.is_flat() {
             return None;
@@ -46,12 +55,73 @@ impl Projection {
                 flame.width as f64 / 2.0 / ppu,
                 flame.height as f64 / 2.0 / ppu,
             ],
+            jwildfire: false,
+            dof_scale: 1.0,
         })
+    }
+
+    /// Whether JWildfire projects `flame`'s points in 3-D (a turn, a bank, perspective or
+    /// depth of field; the focal plane alone does not).
+    pub fn is_jwildfire_3d(flame: &Flame) -> bool {
+        let c = &flame.cam;
+        [c.pitch, c.yaw, flame.jwf.bank, c.perspective, c.dof]
+            .iter()
+            .any(|v| v.abs() > 1e-6)
+    }
+
+    /// JWildfire's camera: the turn by yaw, pitch and bank (the picture's rotation is applied
+    /// afterwards, about the origin: see [`crate::flame::geometry::Geometry`]).
+    fn jwildfire(flame: &Flame) -> Option<Projection> {
+        if !Self::is_jwildfire_3d(flame) {
+            return None;
+        }
+        let c = &flame.cam;
+        let (sy, cy) = (-c.yaw).sin_cos();
+        let (sp, cp) = c.pitch.sin_cos();
+        let (sb, cb) = flame.jwf.bank.sin_cos();
+        Some(Projection {
+            // JWildfire's matrix at roll 0, rows giving x′, y′, z′.
+            m: [
+                [cb * cy, -cb * sy, sb],
+                [cp * sy + sp * sb * cy, cp * cy - sp * sb * sy, -cb * sp],
+                [sp * sy - cp * sb * cy, sp * cy + cp * sb * sy, cp * cb],
+            ],
+            perspective: c.perspective,
+            zpos: c.zpos,
+            blur: 0.1 * c.dof,
+            blur_curve: 0.0,
+            half: [1.0, 1.0],
+            jwildfire: true,
+            dof_scale: flame.jwf.dof_scale,
+        })
+    }
+
+    /// [`Projection::project`] by JWildfire's rules.
+    #[inline(always)]
+    fn project_jwildfire(&self, x: f64, y: f64, z: f64, rng: &mut FastRng) -> (f64, f64) {
+        let m = &self.m;
+        let px = m[0][0] * x + m[0][1] * y + m[0][2] * z;
+        let py = m[1][0] * x + m[1][1] * y + m[1][2] * z;
+        let pz = m[2][0] * x + m[2][1] * y + m[2][2] * z;
+        let zr = 1.0 - self.perspective * pz;
+        if zr < 1e-6 {
+            return (f64::NAN, f64::NAN);
+        }
+        let zdist = self.zpos - pz;
+        if self.blur == 0.0 || zdist <= 0.0 {
+            return (px / zr, py / zr);
+        }
+        let dr = rng.f01() * self.blur * zdist * self.dof_scale;
+        let (s, c) = (rng.f01() * std::f64::consts::TAU).sin_cos();
+        ((px + dr * c) / zr, (py + dr * s) / zr)
     }
 
     /// The plotted position of a point.
     #[inline(always)]
     pub fn project(&self, x: f64, y: f64, z: f64, rng: &mut FastRng) -> (f64, f64) {
+        if self.jwildfire {
+            return self.project_jwildfire(x, y, z, rng);
+        }
         let m = &self.m;
         let z = z - self.zpos;
         let px = m[0][0] * x + m[0][1] * y;

@@ -5,7 +5,7 @@
 use super::{BAD_LIMIT, Pt};
 use crate::flame::model::{Affine, Xform};
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{self, Acc, Dialect, Form, Prepared, VarIn};
+use crate::flame::variations::{self, Acc, Form, Prepared, Rules, VarIn, ZRule};
 
 /// One xform ready for iteration.
 #[derive(Clone, Debug)]
@@ -59,9 +59,9 @@ pub fn adjust_opacity(o: f64) -> f64 {
     }
 }
 impl CompiledXform {
-    /// Compile `x` with plotted opacity `opacity`; its variations follow Fractorium's
-    /// flam3-compatibility switch `compat` and, where programs differ, `dialect`'s formulas.
-    pub fn new(x: &Xform, opacity: f64, compat: bool, dialect: Dialect) -> Self {
+    /// Compile `x` with plotted opacity `opacity`; its variations run as `rules` say (the
+    /// rules of the program that wrote the flame).
+    pub fn new(x: &Xform, opacity: f64, rules: Rules) -> Self {
         let mut pre_vars = Vec::new();
         let mut vars = Vec::new();
         let mut post_vars = Vec::new();
@@ -71,11 +71,20 @@ impl CompiledXform {
             if v.weight == 0.0 {
                 continue;
             }
-            let mut p =
-                Prepared::with_texts(v.id, v.form, v.weight, &v.params, &v.texts, x.coefs, compat);
-            p.dialect = dialect;
+            let prepare = |form| {
+                let (w, p, t) = (v.weight, &v.params, &v.texts);
+                Prepared::for_flame(v.id, form, w, p, t, x.coefs, rules)
+            };
+            let p = prepare(v.form);
             sets_color |= p.def.has(variations::flag::SETS_COLOR);
-            match v.form {
+            if p.def.has(variations::flag::PREPOST) {
+                // Called before the regular variations and again after them.
+                pre_vars.push(prepare(Form::Pre));
+                post_vars.push(prepare(Form::Post));
+                continue;
+            }
+            // The phase, which a JWildfire flame's variation may have whatever its name says.
+            match p.form {
                 Form::Pre => pre_vars.push(p),
                 Form::Regular => {
                     needs |= p.def.needs;
@@ -84,8 +93,15 @@ impl CompiledXform {
                 Form::Post => post_vars.push(p),
             }
         }
+        // The short path computes flam3's linear, z carried along.
         let linear_only = match (&pre_vars[..], &vars[..], &post_vars[..]) {
-            ([], [v], []) if v.id == variations::LINEAR && !sets_color => Some(v.w),
+            ([], [v], [])
+                if v.id == variations::LINEAR
+                    && !sets_color
+                    && (v.def.has(variations::flag::WRITES_Z) || v.zrule == ZRule::Weighted) =>
+            {
+                Some(v.w)
+            }
             _ => None,
         };
         let hides = pre_vars

@@ -53,6 +53,7 @@ pub fn batch_with(
             z: acc.z[j],
             color: acc.color[j],
             hide: false,
+            rgb: None,
         };
         let o = v.eval_with(&f, &t, &mut a, rng);
         acc.x[j] = a.x + o[0];

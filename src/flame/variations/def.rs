@@ -45,6 +45,12 @@ pub mod flag {
     pub const USES_AFFINE: u32 = 8192;
     /// May hide the point: the orbit goes on, the sample is not drawn (JWildfire's crops).
     pub const HIDES: u32 = 16384;
+    /// Exists only as `pre_NAME` (a JWildfire class of its own, named with its prefix).
+    pub const PRE_ONLY: u32 = 32768;
+    /// Runs twice per iteration, as JWildfire's "prepost" variations do: once before the
+    /// regular variations (in its `pre_` form) and once after them (in its `post_` form). The
+    /// formula tells the two calls apart by [`Prepared::form`].
+    pub const PREPOST: u32 = 65536;
 }
 
 /// Regular, `pre_` or `post_` use of a variation.
@@ -237,6 +243,39 @@ pub enum Dialect {
     JWildfire,
 }
 
+/// The output z of a formula that does not compute one (a 2-D variation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ZRule {
+    /// 0: a regular variation (flam3, Fractorium; JWildfire without "preserve Z").
+    Zero,
+    /// The input z: a `pre_`/`post_` form that replaces the point.
+    Input,
+    /// The weight times the input z: a regular 2-D variation of a JWildfire flame with
+    /// "preserve Z" on.
+    Weighted,
+}
+
+/// How the program that wrote a flame runs its variations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rules {
+    /// Fractorium's flam3-compatibility switch (on by default).
+    pub compat: bool,
+    /// Whose formulas, where programs differ.
+    pub dialect: Dialect,
+    /// JWildfire's "preserve Z": its 2-D variations carry the weighted input z along.
+    pub preserve_z: bool,
+}
+
+impl Default for Rules {
+    fn default() -> Self {
+        Rules {
+            compat: true,
+            dialect: Dialect::Flam3,
+            preserve_z: false,
+        }
+    }
+}
+
 /// A variation ready to evaluate: its weight, normalised parameters followed by derived values,
 /// and the xform's affine map.
 #[derive(Clone, Debug)]
@@ -245,7 +284,8 @@ pub struct Prepared {
     pub id: VarId,
     /// Its registry entry.
     pub def: &'static VarDef,
-    /// Regular, `pre_` or `post_`.
+    /// Regular, `pre_` or `post_`: the phase it runs in (a variation JWildfire runs before or
+    /// after the others whatever its name says — `flatten` — runs there).
     pub form: Form,
     /// The weight.
     pub w: f64,
@@ -260,6 +300,8 @@ pub struct Prepared {
     pub compat: bool,
     /// The program whose formula to follow where programs differ (flam3's by default).
     pub dialect: Dialect,
+    /// The output z when the formula computes none.
+    pub zrule: ZRule,
     /// State carried from one call to the next (used by the stateful variations only).
     pub state: VarState,
     /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
@@ -311,14 +353,15 @@ impl Prepared {
         self.data.as_deref().unwrap_or(&[])
     }
 
-    /// The output z of a formula that does not compute one: 0 for a regular variation, the
+    /// The output z of a formula that does not compute one ([`Prepared::zrule`]): 0 for a
+    /// regular variation (the weighted input z in a JWildfire flame with "preserve Z" on), the
     /// input z for a `pre_`/`post_` form that replaces the point, 0 for one that adds to it.
     #[inline(always)]
     pub fn default_z(&self, t: &VarIn) -> f64 {
-        if self.form != Form::Regular && self.def.assign == Assign::Set {
-            t.z
-        } else {
-            0.0
+        match self.zrule {
+            ZRule::Zero => 0.0,
+            ZRule::Input => t.z,
+            ZRule::Weighted => self.w * t.z,
         }
     }
 

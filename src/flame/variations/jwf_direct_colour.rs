@@ -31,6 +31,7 @@ macro_rules! dc_tail {
         ]
     };
 }
+pub(super) use dc_tail;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("julian2dc", julian2dc)
@@ -92,7 +93,7 @@ fn trunc_i(x: f64) -> i64 {
 
 /// GLSL `mod`: x − y·⌊x/y⌋.
 #[inline(always)]
-fn gmod(x: f64, y: f64) -> f64 {
+pub(super) fn gmod(x: f64, y: f64) -> f64 {
     x - y * (x / y).floor()
 }
 
@@ -104,12 +105,12 @@ fn kaleido(x: f64, y: f64, k: f64) -> (f64, f64) {
 }
 
 /// Colour channels in 0..=255 as JWildfire quantises them.
-fn dc_bytes(rgb: [f64; 3]) -> [i64; 3] {
+pub(super) fn dc_bytes(rgb: [f64; 3]) -> [i64; 3] {
     rgb.map(|c| ((c * 256.0).floor() as i64).clamp(0, 255))
 }
 
 /// Luminance of quantised channels, in [0, 1].
-fn dc_luma(c: [i64; 3]) -> f64 {
+pub(super) fn dc_luma(c: [i64; 3]) -> f64 {
     let r = (c[0] as f64 * 0.299) as i64;
     let g = (c[1] as f64 * 0.587) as i64;
     let b = (c[2] as f64 * 0.114) as i64;
@@ -121,7 +122,7 @@ fn dc_luma(c: [i64; 3]) -> f64 {
 /// colour's luminance, scaled and offset, gives z (which replaces the running z when reset_z
 /// is 1). `tail` holds the five shared parameters, which come last (see `dc_tail!`).
 #[inline(always)]
-fn dc_common(
+pub(super) fn dc_common(
     v: &Prepared,
     tail: [f64; 5],
     t: &VarIn,
@@ -156,7 +157,7 @@ fn dc_common(
     [v.w * x, v.w * y, z]
 }
 
-const DC_FLAGS: u32 =
+pub(super) const DC_FLAGS: u32 =
     flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::WRITES_ACC;
 
 /// JWildfire's rounded 1/π in dc_mandala (kept: it is not the nearest double to 1/π).

@@ -46,6 +46,7 @@ pub(super) fn run(v: &Prepared, pts: &[[f64; 3]], color: f64, rng: &mut FastRng)
                 z: 0.0,
                 color,
                 hide: false,
+                rgb: None,
             };
             let a = eval_prepared(v, *p, acc, true, rng);
             [a.x, a.y, a.z, a.color]

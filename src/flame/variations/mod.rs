@@ -62,7 +62,26 @@
 //! | `fr_trig` | trigonometric formulas of x and y (`bisplit`, `crescents`, `petal`, `rays1`, `tancos`, …) |
 //! | `fr_truchet` | Truchet tilings (`Truchet*`, `truchet_knot`, `hex_truchet`) |
 //! | `fr_waves` | wave displacements (`waves22` … `waves42`, `ripple`, `vibration`, `interference2`, …) |
+//! | `jwf_b_3d` | JWildfire's 3-D maps (`affine3D`, `tangent3D`, `inflateZ_*`, `onion`, …) |
+//! | `jwf_b_complex` | JWildfire's complex functions (`cos2_bs`, `acoth`, `sqrt_asinh`, `julia_outside`, `plusrecip`, …) |
+//! | `jwf_b_crops` | JWildfire's shape crops (`crop_box`, `crop_x`, `crop_trapezoid`, `crop_polygon`) |
+//! | `jwf_b_cuts` | JWildfire's shader cut-outs (`cut_tileillusion`, `cut_sqcir`, `cut_rgrid`, `cut_zigzag`) |
+//! | `jwf_b_dc` | JWildfire's shader direct-colour stamps (`dc_acrilic`, `dc_vortex`, `dc_portal`, `glsl_hoshi`) |
+//! | `jwf_b_ifs` | small random-map IFS after Paul Bourke (`invtree_js`, `wallpaper_js`, `woggle_js`) |
+//! | `jwf_b_shapes` | JWildfire's plane shapes and warps (`waves2_wf`, `yin_yang`, `heart_wf`, …) |
+//! | `jwf_a_complex` | JWildfire's complex functions (`sin2_bs` … `sec2_bs`, `acosh`, `sqrt_atanh`, `log_apo`, `joukowski`, …) |
+//! | `jwf_a_crops` | JWildfire's crops by shape (`crop_triangle`, `crop_rhombus`, `crop_cross`, `crop_vesica`, `crop3D`) |
+//! | `jwf_a_cuts` | JWildfire's cuts along shader patterns (`cut_fun`) |
+//! | `jwf_a_dc` | more of JWildfire's `dc_*` stamps (`dc_starsfield`, …) |
+//! | `jwf_a_fractals` | JWildfire's escape-time fractals as point sets (`mandelbrot`) |
+//! | `jwf_a_ifs` | JWildfire's one-variation IFS with random maps (`dustpoint`, `hadamard_js`, `lace_js`, `apollony`, `siercarpet_js`, …) |
+//! | `jwf_a_plane` | JWildfire's maps of the plane by formula (`flower_db`, `atan2_spirals`, `minkQM`, `scrambly`, `colorscale_wf`) |
+//! | `jwf_a_sdf3d` | JWildfire's solids filled at random by signed distance (`box3D`, `bbox3D`, `ellipsoid3D`, `pyramid3D`, …) |
+//! | `jwf_a_shapes` | JWildfire's figures from the angle, outlined or filled (`cannabiscurve_wf`, `maple_leaf`, …), `cone`, `r_circleblur`, `target_sp`, … |
+//! | `jwf_a_surfaces` | JWildfire's 3-D surfaces and z maps (`ennepers2`, `petal3D_apo`, `inflateZ_*`, `onion2`, `boxfold`, …) |
+//! | `jwf_a_warps` | JWildfire's warps of the plane (`bwraps7`, `rings3`, `waves3_wf`, `pTransform`, `spligon`, `chunk`, …) |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
+//! | `jwf_dialect` | JWildfire's own formulas for names the others also use (`polar`, `rings`, …), for the flames JWildfire wrote |
 //! | `jwf_direct_colour` | JWildfire's `dc_*` stamps and `julian2dc` |
 //! | `jwf_drawings` | drawings, curves and filled figures (`hilbert_js`, `tree_js`, `rose_wf`, `nsudoku`, …) |
 //! | `jwf_knots` | `knots3D` |
@@ -102,7 +121,28 @@ mod fr_synth;
 mod fr_trig;
 mod fr_truchet;
 mod fr_waves;
+// JWildfire variations, first set of files.
 mod jwf_3d;
+// JWildfire variations, second part.
+mod jwf_a_complex;
+mod jwf_a_crops;
+mod jwf_a_cuts;
+mod jwf_a_dc;
+mod jwf_a_fractals;
+mod jwf_a_ifs;
+mod jwf_a_plane;
+mod jwf_a_sdf3d;
+mod jwf_a_shapes;
+mod jwf_a_surfaces;
+mod jwf_a_warps;
+mod jwf_b_3d;
+mod jwf_b_complex;
+mod jwf_b_crops;
+mod jwf_b_cuts;
+mod jwf_b_dc;
+mod jwf_b_ifs;
+mod jwf_b_shapes;
+mod jwf_dialect;
 mod jwf_direct_colour;
 mod jwf_drawings;
 mod jwf_knots;
@@ -118,7 +158,8 @@ pub(crate) mod util;
 pub(crate) use batch::inline_batch;
 pub(crate) use batch::{batch_with, generic_batch};
 pub use def::{
-    Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, VarDef, VarState, flag,
+    Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, Rules, VarDef, VarState, ZRule,
+    flag,
 };
 pub use flam3::*;
 pub use names::{
@@ -131,7 +172,7 @@ pub use params::{
 pub use point::{Acc, VarIn, need};
 pub(crate) use point::{SoaAcc, SoaIn};
 pub use prepare::{eval_point, eval_prepared};
-pub use registry::{all, count, info};
+pub use registry::{all, count, info, jwildfire_twin};
 pub use shared::{BuildFn, SharedDef};
 
 // For the formulas' files, which import everything above with `use super::*`.

@@ -2,8 +2,10 @@
 //! parameters take in files, the aliases other programs write, the variations of other programs
 //! ugnis does not render, and flam3's numeric indices.
 
+use std::collections::HashMap;
+
 use super::VarId;
-use super::def::{Form, flag};
+use super::def::{Form, VarDef, flag};
 use super::flam3::GAUSSIAN_BLUR;
 use super::registry::{REGISTRY, info};
 
@@ -11,33 +13,44 @@ use super::registry::{REGISTRY, info};
 pub fn by_name(name: &str) -> Option<VarId> {
     let key = name.to_ascii_lowercase();
     let id = *REGISTRY.names.get(&key)?;
-    (!info(id).has(flag::POST_ONLY)).then_some(id)
+    (!info(id).has(flag::POST_ONLY | flag::PRE_ONLY)).then_some(id)
 }
 
 /// The variation and form an attribute name denotes: `NAME`, `pre_NAME` or `post_NAME`
 /// (case-insensitive). flam3's `pre_blur` is the `pre_` form of `gaussian_blur`.
 pub fn parse_name(attr: &str) -> Option<(VarId, Form)> {
     let key = unalias(&attr.to_ascii_lowercase());
+    lookup_in(&REGISTRY.names, &REGISTRY.defs, &key)
+}
+
+/// The form a variation registered under its own name takes: `pre_`/`post_` for the
+/// variations that exist only so (registered under their prefixed names).
+fn own_form(d: &VarDef) -> Form {
+    if d.has(flag::POST_ONLY) {
+        Form::Post
+    } else if d.has(flag::PRE_ONLY) {
+        Form::Pre
+    } else {
+        Form::Regular
+    }
+}
+
+/// [`parse_name`] of a lower-case name without aliases, in the table `names` (lower-case
+/// name → id) of the variations `defs`.
+pub(super) fn lookup_in(
+    names: &HashMap<String, VarId>,
+    defs: &[&VarDef],
+    key: &str,
+) -> Option<(VarId, Form)> {
     if key == "pre_blur" {
         return Some((GAUSSIAN_BLUR, Form::Pre));
     }
-    if let Some(&id) = REGISTRY.names.get(&key) {
-        // Post-only variations are registered under their `post_` name.
-        let form = if info(id).has(flag::POST_ONLY) {
-            Form::Post
-        } else {
-            Form::Regular
-        };
-        return Some((id, form));
+    if let Some(&id) = names.get(key) {
+        return Some((id, own_form(defs[id as usize])));
     }
-    for (prefix, form) in [("pre_", Form::Pre), ("post_", Form::Post)] {
-        if let Some(rest) = key.strip_prefix(prefix)
-            && let Some(&id) = REGISTRY.names.get(rest)
-        {
-            return Some((id, form));
-        }
-    }
-    None
+    [("pre_", Form::Pre), ("post_", Form::Post)]
+        .into_iter()
+        .find_map(|(prefix, form)| Some((*names.get(key.strip_prefix(prefix)?)?, form)))
 }
 
 /// The attribute name of a variation used in `form`.
@@ -46,7 +59,7 @@ pub fn attr_name(id: VarId, form: Form) -> String {
     if form == Form::Pre && id == GAUSSIAN_BLUR {
         return "pre_blur".to_string();
     }
-    if d.has(flag::POST_ONLY) {
+    if d.has(flag::POST_ONLY | flag::PRE_ONLY) {
         return d.name.to_string();
     }
     format!("{}{}", form.prefix(), d.name)
@@ -55,7 +68,7 @@ pub fn attr_name(id: VarId, form: Form) -> String {
 /// The attribute name of parameter `k` of a variation used in `form`.
 pub fn param_attr_name(id: VarId, form: Form, k: usize) -> String {
     let d = info(id);
-    if d.has(flag::POST_ONLY) {
+    if d.has(flag::POST_ONLY | flag::PRE_ONLY) {
         return d.params[k].name.to_string();
     }
     format!("{}{}", form.prefix(), d.params[k].name)
@@ -116,7 +129,8 @@ const PARAM_ALIASES: &[(&str, &str)] = &[
 
 /// Variation names other programs use for a variation of the registry (lower case), also as
 /// the prefix of its parameters.
-const NAME_ALIASES: &[(&str, &str)] = &[("flower_db", "flowerdb")];
+/// (JWildfire's `flower_db` is its own variation, not Fractorium's `flowerdb`.)
+const NAME_ALIASES: &[(&str, &str)] = &[];
 
 /// `key` (lower case) with an alias prefix replaced by the registry's name.
 fn unalias(key: &str) -> String {
@@ -144,12 +158,7 @@ pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
         REGISTRY.params.get(alias).copied()
     };
     if let Some((id, k)) = lookup(&key) {
-        let form = if info(id).has(flag::POST_ONLY) {
-            Form::Post
-        } else {
-            Form::Regular
-        };
-        return Some((id, form, k));
+        return Some((id, own_form(info(id)), k));
     }
     for (prefix, form) in [("pre_", Form::Pre), ("post_", Form::Post)] {
         if let Some(rest) = key.strip_prefix(prefix)
@@ -168,11 +177,8 @@ pub fn param_of(attr: &str) -> Option<(VarId, Form, usize)> {
 /// render: an attribute with one of these names is an unsupported variation rather than some
 /// other program's setting.
 const FOREIGN_VARIATIONS: &[&str] = &[
-    "bwraps7",
     "cross2",
-    "mandelbrot",
     "oscope",
-    "pdj3d",
     "perspective2",
     "wedge_julia_3D",
     "whorl3D",

@@ -99,6 +99,9 @@ pub struct Acc {
     pub color: f64,
     /// The sample is not drawn (set by the [`super::flag::HIDES`] variations).
     pub hide: bool,
+    /// A colour of its own (red, green, blue, 0–255) instead of the palette's, as JWildfire's
+    /// direct-colour variations set it; `None` for the palette's.
+    pub rgb: Option<[f64; 3]>,
 }
 
 /// Per-point quantities of a batch of points, as parallel arrays of one length.

@@ -2,9 +2,9 @@
 //! fetched, its derived values computed — and evaluating one variation at one point, as an
 //! xform with only that variation would.
 
-use super::def::{Dialect, Form, Prepared, VarState, flag};
+use super::def::{Assign, Dialect, Form, Prepared, Rules, VarState, ZRule, flag};
 use super::point::{Acc, VarIn};
-use super::registry::info;
+use super::registry::{info, jwildfire_twin};
 use super::{V3, VarId, shared};
 use crate::flame::affine::Affine;
 use crate::flame::rng::FastRng;
@@ -27,7 +27,44 @@ impl Prepared {
         aff: Affine,
         compat: bool,
     ) -> Self {
-        let def = info(id);
+        let rules = Rules {
+            compat,
+            ..Rules::default()
+        };
+        Self::for_flame(id, form, w, params, texts, aff, rules)
+    }
+
+    /// Prepare variation `id` used in `form` as the program that wrote the flame runs it
+    /// (`rules`): in a JWildfire flame, JWildfire's own formula where it differs from the
+    /// others' (chosen here, once, so that the others pay nothing per point), in the phase
+    /// JWildfire runs it, and with JWildfire's z for 2-D variations.
+    pub fn for_flame(
+        id: VarId,
+        form: Form,
+        w: f64,
+        params: &[f64],
+        texts: &[String],
+        aff: Affine,
+        rules: Rules,
+    ) -> Self {
+        let jwildfire = rules.dialect == Dialect::JWildfire;
+        let def = jwildfire
+            .then(|| jwildfire_twin(id, form))
+            .flatten()
+            .unwrap_or_else(|| info(id));
+        let form = if def.has(flag::PRE_ONLY) {
+            Form::Pre
+        } else if def.has(flag::POST_ONLY) {
+            Form::Post
+        } else {
+            form
+        };
+        let zrule = match form {
+            Form::Regular if jwildfire && rules.preserve_z => ZRule::Weighted,
+            Form::Regular => ZRule::Zero,
+            _ if def.assign == Assign::Set => ZRule::Input,
+            _ => ZRule::Zero,
+        };
         let texts = def
             .texts
             .iter()
@@ -52,8 +89,9 @@ impl Prepared {
             p,
             derived_at: def.params.len(),
             aff,
-            compat,
-            dialect: Dialect::default(),
+            compat: rules.compat,
+            dialect: rules.dialect,
+            zrule,
             state: VarState::default(),
             data: None,
             texts,
@@ -111,6 +149,7 @@ pub fn eval_prepared(v: &Prepared, t: V3, mut acc: Acc, poison: bool, rng: &mut 
                 z: tr[2],
                 color: acc.color,
                 hide: acc.hide,
+                rgb: acc.rgb,
             }
         }
         Form::Post => {

@@ -9,13 +9,21 @@ use std::collections::HashMap;
 use std::sync::LazyLock;
 
 use super::VarId;
-use super::def::{VarDef, flag};
+use super::def::{Form, VarDef, flag};
+use super::names::lookup_in;
 use super::{
     flam3, fr_3d, fr_bipolar_elliptic, fr_blurs, fr_complex, fr_crops, fr_curves, fr_direct_colour,
     fr_distance_blurs, fr_grids, fr_hexagons, fr_hyperbolic, fr_inversions, fr_julias, fr_moves,
     fr_polynomial_maps, fr_quaternions, fr_radial, fr_synth, fr_trig, fr_truchet, fr_waves, jwf_3d,
-    jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_symmetry, jwf_text,
+    jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_symmetry, jwf_text,
 };
+// JWildfire variations, first set of files.
+use super::{
+    jwf_a_complex, jwf_a_crops, jwf_a_cuts, jwf_a_dc, jwf_a_fractals, jwf_a_ifs, jwf_a_plane,
+    jwf_a_sdf3d, jwf_a_shapes, jwf_a_surfaces, jwf_a_warps,
+};
+// JWildfire variations, second part.
+use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -32,8 +40,14 @@ pub fn info(id: VarId) -> &'static VarDef {
     REGISTRY.defs[id as usize]
 }
 
+/// JWildfire's own formula for variation `id` used in `form`, where it differs from the one
+/// flam3's and Fractorium's flames get (see `jwf_dialect`).
+pub fn jwildfire_twin(id: VarId, form: Form) -> Option<&'static VarDef> {
+    REGISTRY.twins.get(&(id, form)).copied()
+}
+
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 28] = [
+const FILES: [&[VarDef]; 46] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -62,11 +76,31 @@ const FILES: [&[VarDef]; 28] = [
     jwf_maps::DEFS,
     jwf_symmetry::DEFS,
     jwf_text::DEFS,
+    // JWildfire variations, second part.
+    jwf_b_3d::DEFS,
+    jwf_b_complex::DEFS,
+    jwf_b_crops::DEFS,
+    jwf_b_cuts::DEFS,
+    jwf_b_dc::DEFS,
+    jwf_b_ifs::DEFS,
+    jwf_b_shapes::DEFS,
+    // JWildfire variations, first set of files.
+    jwf_a_complex::DEFS,
+    jwf_a_surfaces::DEFS,
+    jwf_a_warps::DEFS,
+    jwf_a_crops::DEFS,
+    jwf_a_plane::DEFS,
+    jwf_a_ifs::DEFS,
+    jwf_a_shapes::DEFS,
+    jwf_a_sdf3d::DEFS,
+    jwf_a_cuts::DEFS,
+    jwf_a_fractals::DEFS,
+    jwf_a_dc::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
 /// variation missing here comes after these, in the order of [`FILES`].
-const JWILDFIRE_ORDER: [&str; 54] = [
+const JWILDFIRE_ORDER: [&str; 131] = [
     "rose_wf",
     "chrysanthemum",
     "complex",
@@ -121,7 +155,212 @@ const JWILDFIRE_ORDER: [&str; 54] = [
     "dc_circuits",
     "dc_turbulence",
     "dc_gabornoise",
+    // JWildfire variations, second part.
+    "affine3D",
+    "tangent3D",
+    "inflateZ_1",
+    "inflateZ_3",
+    "inflateZ_5",
+    "cylinder_apo",
+    "onion",
+    "sphere_nja",
+    "ztwister",
+    "post_zscale_wf",
+    "swirl3D_wf",
+    "pdj3D",
+    "log_tile2",
+    "dinis_surface_wf",
+    "lorenz_js",
+    "gingerbread_man",
+    "spherecrop",
+    "seashell3D",
+    "cos2_bs",
+    "csc2_bs",
+    "csch2_bs",
+    "sech2_bs",
+    "sinh2_bs",
+    "exp2_bs",
+    "atan",
+    "acoth",
+    "sqrt_acoth",
+    "sqrt_asech",
+    "sqrt_asinh",
+    "exp_multi",
+    "csin",
+    "plusrecip",
+    "inverted_julia",
+    "julia_outside",
+    "cpow3_wf",
+    "csc_squared",
+    "bipolar2",
+    "bulge",
+    "crop_box",
+    "crop_x",
+    "crop_trapezoid",
+    "crop_polygon",
+    "cut_tileillusion",
+    "cut_sqcir",
+    "cut_rgrid",
+    "cut_zigzag",
+    "dc_acrilic",
+    "dc_vortex",
+    "dc_portal",
+    "glsl_hoshi",
+    "invtree_js",
+    "wallpaper_js",
+    "woggle_js",
+    "crown_js",
+    "triangle",
+    "cell2",
+    "waves2_wf",
+    "waves4_wf",
+    "cloverleaf_wf",
+    "yin_yang",
+    "heart_wf",
+    "layered_spiral",
+    "holesq",
+    "stripfit",
+    "squircular",
+    "hole2",
+    "devil_warp",
+    "bsplit",
+    "minkowskope",
+    "circular2",
+    "vogel",
+    "fresnel",
+    "hyperbolicellipse",
+    "whirligig",
+    "glynnia3",
+    "vortex",
+    "oak_leaf",
 ];
+
+/// The JWildfire variations added with the first set of files, in the order ugnis took them in
+/// (after [`JWILDFIRE_ORDER`]).
+const JWILDFIRE_ORDER_A: &[&str] = &[
+    "sin2_bs",
+    "cosh2_bs",
+    "cot2_bs",
+    "tan2_bs",
+    "tanh2_bs",
+    "coth2_bs",
+    "sec2_bs",
+    "acosh",
+    "acosech",
+    "sqrt_acosh",
+    "sqrt_atanh",
+    "sqrt_acosech",
+    "log_apo",
+    "invpolar",
+    "bi_linear",
+    "joukowski",
+    "ennepers2",
+    "petal3D_apo",
+    "whitney_umbrella",
+    "butterfly3D",
+    "inflateZ_2",
+    "inflateZ_4",
+    "inflateZ_6",
+    "sph3D",
+    "spherical3D_wf",
+    "onion2",
+    "boxfold",
+    "erf3D",
+    "bwraps7",
+    "rings3",
+    "waves3_wf",
+    "invsquircular",
+    "c_symmetry",
+    "tunnel",
+    "corners",
+    "disc3",
+    "lazysensen",
+    "pTransform",
+    "spligon",
+    "anamorphcyl",
+    "clifford_js",
+    "gridout2",
+    "chunk",
+    "crop_triangle",
+    "crop_rhombus",
+    "crop_cross",
+    "crop_vesica",
+    "crop3D",
+    "flower_db",
+    "atan2_spirals",
+    "minkQM",
+    "scrambly",
+    "colorscale_wf",
+    "bubble_wf",
+    "dustpoint",
+    "threepoint_js",
+    "hadamard_js",
+    "lace_js",
+    "circular",
+    "apollony",
+    "apocarpet_js",
+    "siercarpet_js",
+    "sattractor_js",
+    "cannabiscurve_wf",
+    "maple_leaf",
+    "japanese_maple_leaf",
+    "cone",
+    "r_circleblur",
+    "spliptic_bs",
+    "tile_reverse",
+    "target_sp",
+    "box3D",
+    "bbox3D",
+    "ellipsoid3D",
+    "hexprism3D",
+    "ocylinder3D",
+    "pyramid3D",
+    "solidangle3D",
+    "cappedtorus3D",
+    "ocappedcone3D",
+    "oroundcone3D",
+    "cut_fun",
+    "mandelbrot",
+    "dc_starsfield",
+    "petal3D",
+    "mandelbox2D",
+    "truchet2",
+    "combimirror",
+    "post_bulbtorus_crop",
+    "dc_voronoise",
+    "dc_menger",
+    "elliptic2",
+    "parallel",
+    "shredded",
+    "hypertile3D2b",
+    "glynnlissa",
+    "glynnSShape",
+    "jubiQ",
+    "cut_triskel",
+    "cut_yuebing",
+    "cut_hexdots",
+    "cut_x",
+    "cut_sincos",
+    "cut_sqsplits",
+    "cut_chains",
+    "cut_fractal",
+    "cut_btruchet",
+    "cut_btree",
+    "cut_spiralcb",
+    "cut_snowflake",
+    "cut_booleans",
+    "cut_web",
+    "cut_glypho",
+    "cut_bricks",
+    "dc_booleans",
+    "dc_glypho",
+    "dc_moebiuslog",
+];
+
+/// Every JWildfire variation's name in registry order.
+fn jwildfire_order() -> impl Iterator<Item = &'static str> {
+    JWILDFIRE_ORDER.iter().chain(JWILDFIRE_ORDER_A).copied()
+}
 
 /// Every variation in registry order (see the module documentation).
 fn ordered() -> Vec<&'static VarDef> {
@@ -131,10 +370,9 @@ fn ordered() -> Vec<&'static VarDef> {
     fractorium.sort_by_key(|d| d.name.to_ascii_lowercase());
     let mut jwildfire: Vec<&'static VarDef> = others().filter(|d| d.has(flag::JWILDFIRE)).collect();
     jwildfire.sort_by_key(|d| {
-        JWILDFIRE_ORDER
-            .iter()
-            .position(|n| *n == d.name)
-            .unwrap_or(JWILDFIRE_ORDER.len())
+        jwildfire_order()
+            .position(|n| n == d.name)
+            .unwrap_or(usize::MAX)
     });
     flam3::DEFS
         .iter()
@@ -151,6 +389,34 @@ pub(super) struct Registry {
     pub(super) params: HashMap<String, (VarId, usize)>,
     /// Lower-case full text parameter name → (id, text index).
     pub(super) texts: HashMap<String, (VarId, usize)>,
+    /// (id, form) → JWildfire's formula where it differs.
+    pub(super) twins: HashMap<(VarId, Form), &'static VarDef>,
+}
+
+/// The JWildfire twins by the variation and form their names denote: the formulas of
+/// [`jwf_dialect::DEFS`], and the variations JWildfire computes as 2-D ones where flam3's or
+/// Fractorium's carry z along (their own formula, the framework's z).
+fn twins(
+    names: &HashMap<String, VarId>,
+    defs: &[&'static VarDef],
+) -> HashMap<(VarId, Form), &'static VarDef> {
+    let mut out = HashMap::new();
+    for name in jwf_dialect::FLAT {
+        let key = lookup_in(names, defs, &name.to_ascii_lowercase());
+        let (id, form) = key.unwrap_or_else(|| panic!("2-D twin {name} is not registered"));
+        let d = defs[id as usize];
+        let flat: &'static VarDef = Box::leak(Box::new(VarDef {
+            flags: d.flags & !flag::WRITES_Z,
+            ..*d
+        }));
+        out.insert((id, form), flat);
+    }
+    for d in jwf_dialect::DEFS {
+        let key = lookup_in(names, defs, &d.name.to_ascii_lowercase());
+        let key = key.unwrap_or_else(|| panic!("twin {} is not registered", d.name));
+        out.insert(key, d);
+    }
+    out
 }
 
 pub(super) static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
@@ -171,11 +437,13 @@ pub(super) static REGISTRY: LazyLock<Registry> = LazyLock::new(|| {
             texts.insert(t.name.to_ascii_lowercase(), (i as VarId, k));
         }
     }
+    let twins = twins(&names, &defs);
     Registry {
         defs,
         names,
         params,
         texts,
+        twins,
     }
 });
 
@@ -192,7 +460,7 @@ mod tests {
             .filter(|d| d.has(flag::JWILDFIRE))
             .map(|d| d.name)
             .collect();
-        assert_eq!(jwildfire, JWILDFIRE_ORDER);
+        assert_eq!(jwildfire, jwildfire_order().collect::<Vec<_>>());
     }
 
     /// flam3's list keeps its ids and Fractorium's catalogue follows in alphabetical order.
@@ -209,6 +477,6 @@ mod tests {
             fractorium.is_sorted(),
             "Fractorium's catalogue out of order"
         );
-        assert_eq!(99 + fractorium.len() + JWILDFIRE_ORDER.len(), count());
+        assert_eq!(99 + fractorium.len() + jwildfire_order().count(), count());
     }
 }

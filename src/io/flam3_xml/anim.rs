@@ -385,6 +385,14 @@ pub(super) fn keys_curve(
         };
     }
     match t.value.parse() {
+        Ok(target) if k.curve(&target).is_some() => {
+            cx.warn(
+                t.offset,
+                "XML021",
+                format!("a second curve for '{target}': the first is played, this one skipped"),
+            );
+            Ok(None)
+        }
         Ok(target) => Ok(Some(Curve::with_style(target, style))),
         Err(e) => {
             cx.warn(t.offset, "XML021", format!("{e}; the curve is skipped"));

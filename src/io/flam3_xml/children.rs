@@ -1,5 +1,5 @@
 //! Reading a flame's children: xforms (with their `<motion>` elements) and the final xforms,
-//! colours, symmetry, ugnis' keyframes; anything else (`<edit>` histories, other programs'
+//! colours, symmetry, ugnis' keyframes, JWildfire's layers; anything else (`<edit>` histories, other programs'
 //! elements) is kept verbatim.
 
 use quick_xml::events::Event;
@@ -21,6 +21,7 @@ pub(super) fn read_flame_children(
     f: &mut Flame,
     pal: &mut PaletteData,
 ) -> R<()> {
+    let mut layers = 0;
     loop {
         let p = cur.next_event().map_err(|(o, m)| cx.err(o, "XML001", m))?;
         match &p.event {
@@ -59,6 +60,13 @@ pub(super) fn read_flame_children(
                         }
                     }
                     "palette" => read_palette(cx, cur, &attrs, start, is_empty, pal)?,
+                    "layer" => {
+                        let first = layers == 0;
+                        layers += 1;
+                        super::layers::read_layer(
+                            cx, cur, text, f, pal, &attrs, start, is_empty, first,
+                        )?;
+                    }
                     "ugnis_keys" => {
                         keys_timeline(cx, &attrs, &mut f.keys)?;
                         if !is_empty {

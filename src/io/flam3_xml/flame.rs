@@ -30,6 +30,12 @@ struct Pending {
     version_index: PaletteIndex,
     palette_mode_seen: bool,
     smooth_gradient: Option<(String, usize)>,
+    /// JWildfire's picture settings.
+    jwf: super::jwf_look::Pending,
+    /// JWildfire's `preserve_z` and `new_linear` (which JWildfire reads as "preserve Z" too,
+    /// after `preserve_z`).
+    preserve_z: Option<bool>,
+    new_linear: Option<bool>,
 }
 
 /// Read a `<flame>` element whose start tag `e` is at `start`.
@@ -64,23 +70,34 @@ pub(super) fn read_flame(
         version_index: PaletteIndex::Flam3,
         palette_mode_seen: false,
         smooth_gradient: None,
+        jwf: Default::default(),
+        preserve_z: None,
+        new_linear: None,
     };
     for a in &attrs {
         let handled = camera_attr(cx, &mut f, &mut st, a)?
             || tone_attr(cx, &mut f, &mut st, a)?
             || palette_attr(cx, &mut f, &mut st, a)?
-            || anim_attr(cx, &mut f, a)?;
+            || anim_attr(cx, &mut f, a)?
+            || super::jwf_look::attr(cx, &mut f, &mut st.jwf, a)?;
         if !handled {
-            other_attr(cx, &mut f, a)?;
+            match a.name {
+                "preserve_z" => st.preserve_z = Some(a.value.trim() == "1"),
+                "new_linear" => st.new_linear = Some(a.value.trim() == "1"),
+                _ => other_attr(cx, &mut f, a)?,
+            }
         }
     }
-    settle_attrs(cx, &mut f, &st, start)?;
+    settle_attrs(cx, &mut f, &mut st, start)?;
     let mut pal = PaletteData::new();
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
         read_flame_children(cx, cur, text, &mut f, &mut pal)?;
     }
     cut_xaos_rows(cx, &mut f, start);
+    if st.version_index == PaletteIndex::JWildfire && st.palette_index.is_none() {
+        super::jwf_look::settle_color_types(&mut f);
+    }
     super::jwf_curves::read(cx, &mut f, start);
     // A template (render settings, no xform) needs no colours and no xform.
     let template = cx.opts.templates && f.xforms.is_empty();
@@ -347,7 +364,6 @@ fn other_attr(cx: &mut Ctx, f: &mut Flame, a: &Attr) -> R<()> {
             }
             f.name = v.to_string();
         }
-        "new_linear" => {}
         "soloxform" => {
             let n = cx.num(a)?;
             f.solo_xform = if n >= 0.0 { Some(n as usize) } else { None };
@@ -404,14 +420,23 @@ fn other_attr(cx: &mut Ctx, f: &mut Flame, a: &Attr) -> R<()> {
 }
 
 /// The rules that need all attributes: `angle` without `rotate`, the palette index rule,
-/// JWildfire's smooth gradient, the contrast and the density estimator.
-fn settle_attrs(cx: &mut Ctx, f: &mut Flame, st: &Pending, start: usize) -> R<()> {
+/// JWildfire's picture settings and smooth gradient, the contrast and the density estimator.
+fn settle_attrs(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, start: usize) -> R<()> {
     if !st.rotate_seen
         && let Some(ang) = st.angle
     {
         f.rotate = -ang.to_degrees();
     }
     f.palette_index = st.palette_index.unwrap_or(st.version_index);
+    super::jwf_look::settle(cx, f, std::mem::take(&mut st.jwf));
+    // JWildfire reads `new_linear` as its "preserve Z" (after `preserve_z`); for flam3 it says
+    // that linear is 2-D, as ugnis' linear is.
+    f.preserve_z = st.preserve_z.unwrap_or(false);
+    if f.palette_index == PaletteIndex::JWildfire
+        && let Some(on) = st.new_linear
+    {
+        f.preserve_z = on;
+    }
     if let Some((v, _)) = &st.smooth_gradient {
         if f.palette_index == PaletteIndex::JWildfire {
             if !st.palette_mode_seen && matches!(v.as_str(), "1" | "true") {

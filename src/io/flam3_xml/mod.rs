@@ -21,6 +21,8 @@ mod children;
 mod context;
 mod flame;
 mod jwf_curves;
+mod jwf_look;
+mod layers;
 mod palette;
 mod read;
 mod template;

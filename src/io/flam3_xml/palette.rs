@@ -33,6 +33,20 @@ impl PaletteData {
     pub(super) fn any(&self) -> bool {
         self.any
     }
+
+    /// The 256-entry gradient of the colours read (missing entries interpolated, more than
+    /// 256 resampled).
+    pub(super) fn gradient(&self, name: String) -> Gradient {
+        Gradient {
+            name,
+            colors: match &self.hires {
+                Some(h) => resample_colors(h, 256),
+                None => interpolate_missing(&self.colors),
+            },
+            stops: Vec::new(),
+            map_entries: None,
+        }
+    }
 }
 
 /// The flame's gradient from what was read: inline colours win over a library palette (flam3
@@ -54,15 +68,7 @@ pub(super) fn resolve_palette(
                 "flame has both inline colours and palette=\"N\"; using the inline colours",
             );
         }
-        f.palette = Gradient {
-            name: gradient_name,
-            colors: match &pal.hires {
-                Some(h) => resample_colors(h, 256),
-                None => interpolate_missing(&pal.colors),
-            },
-            stops: Vec::new(),
-            map_entries: None,
-        };
+        f.palette = pal.gradient(gradient_name);
         f.palette_hires = pal.hires.take();
     } else if let Some((n, off)) = library_palette {
         let lib = cx.library();

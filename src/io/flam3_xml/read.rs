@@ -31,7 +31,8 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
                     root_seen = true;
                     read_root(&mut cx, e, &tag, p.start, &mut out)?;
                 }
-                if tag == "flame" {
+                // flam3's <flame>, or JWildfire's <jwf-flame> (a flame of <layer> elements).
+                if tag == "flame" || tag == "jwf-flame" {
                     if out.flames.len() >= MAX_FLAMES {
                         return Err(cx.err(
                             p.start,
@@ -54,7 +55,7 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
             &opts.file,
             Pos::File,
             "XML002",
-            "no <flame> element in the document",
+            "no <flame> or <jwf-flame> element in the document",
         ));
     }
     Ok(Parsed {

@@ -431,3 +431,36 @@ fn jwildfire_variation_used_twice() {
     let back = read(&out, &opts()).unwrap().value.flames.remove(0);
     assert_eq!(back.xforms[0].vars, x.vars);
 }
+
+#[test]
+fn a_second_curve_for_one_target_is_skipped_with_a_warning() {
+    use crate::flame::keyframes::{FlameParam, Key, Target};
+    let mut f = read(SIMPLE, &opts()).unwrap().value.flames.remove(0);
+    let zoom = Target::Flame(FlameParam::Zoom);
+    f.keys.frames = 10;
+    let c = f.keys.curve_mut(zoom);
+    c.insert(Key::new(0.0, 1.0)).unwrap();
+    c.insert(Key::new(9.0, 2.0)).unwrap();
+    let text = flame_element(&f);
+    let (a, b) = (
+        text.find("<curve").unwrap(),
+        text.find("</curve>").unwrap() + 8,
+    );
+    let curve = &text[a..b];
+    let doubled = text.replacen(
+        curve,
+        &format!("{curve}{}", curve.replace("\"2\"", "\"5\"")),
+        1,
+    );
+    let p = read(&doubled, &opts()).unwrap();
+    let back = &p.value.flames[0];
+    assert_eq!(back.keys.curves.len(), 1);
+    assert_eq!(back.keys, f.keys, "the first curve is played");
+    assert!(
+        p.warnings
+            .iter()
+            .any(|w| w.to_string().contains("second curve for 'zoom'")),
+        "{:?}",
+        p.warnings
+    );
+}

@@ -58,12 +58,14 @@ pub fn flame_element(f: &Flame) -> String {
 
 fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
     let n = fmt_num;
+    // A flame of layers is written as JWildfire writes it.
+    let tag = if f.has_layers() { "jwf-flame" } else { "flame" };
     let _ = write!(
         s,
-        "{ind}<flame name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
+        "{ind}<{tag} name=\"{}\" version=\"ugnis-{}\" size=\"{} {}\" center=\"{} {}\" scale=\"{}\" rotate=\"{}\" zoom=\"{}\" \
          supersample=\"{}\" filter=\"{}\" filter_shape=\"{}\" quality=\"{}\" background=\"{} {} {}\" brightness=\"{}\" \
          gamma=\"{}\" gamma_threshold=\"{}\" vibrancy=\"{}\" highlight_power=\"{}\" estimator_radius=\"{}\" \
-         estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\" new_linear=\"1\" ugnis_contrast=\"{}\"",
+         estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\"{} ugnis_contrast=\"{}\"",
         escape_attr(name),
         crate::VERSION,
         f.width,
@@ -89,8 +91,17 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         n(f.estimator_minimum),
         n(f.estimator_curve),
         f.palette_mode.name(),
+        // flam3's "linear is 2-D" switch; JWildfire reads it as its "preserve Z" instead.
+        if f.palette_index == PaletteIndex::JWildfire {
+            ""
+        } else {
+            " new_linear=\"1\""
+        },
         n(f.contrast),
     );
+    if f.preserve_z {
+        s.push_str(" preserve_z=\"1\"");
+    }
     if let Some(seed) = f.seed {
         let _ = write!(s, " ugnis_seed=\"{seed}\"");
     }
@@ -138,36 +149,47 @@ fn write_flame(s: &mut String, f: &Flame, name: &str, ind: &str) {
         }
     }
     write_anim_attrs(s, &f.anim);
+    super::jwf_look::write(s, f);
     let jwf = jwf_curves::for_writing(f);
     for (k, v) in jwf.as_ref().map_or(&f.extra_attrs, |w| &w.flame) {
         let _ = write!(s, " {k}=\"{}\"", escape_attr(v));
     }
     s.push_str(">\n");
     let inner = format!("{ind}   ");
-    for (i, x) in f.xforms.iter().enumerate() {
-        let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
-        write_xform(s, x, extra.unwrap_or(&x.extra_attrs), "xform", &inner);
+    let own = |s: &mut String, inner: &str| {
+        for (i, x) in f.xforms.iter().enumerate() {
+            let extra = jwf.as_ref().and_then(|w| w.xforms.get(i));
+            write_xform(s, x, extra.unwrap_or(&x.extra_attrs), "xform", inner);
+        }
+        for (k, fx) in f.finals().enumerate() {
+            let extra = jwf
+                .as_ref()
+                .and_then(|w| w.final_xform.as_ref())
+                .filter(|_| k == 0);
+            write_xform(s, fx, extra.unwrap_or(&fx.extra_attrs), "finalxform", inner);
+        }
+        write_palette(s, f.render_colors(), inner);
+    };
+    if f.has_layers() {
+        let other = |s: &mut String, l: &crate::flame::layers::Layer, inner: &str| {
+            for x in &l.xforms {
+                write_xform(s, x, &x.extra_attrs, "xform", inner);
+            }
+            for x in &l.finals {
+                write_xform(s, x, &x.extra_attrs, "finalxform", inner);
+            }
+            write_palette(s, &l.palette.colors, inner);
+        };
+        super::layers::write_layers(s, f, &inner, own, other);
+    } else {
+        own(s, &inner);
     }
-    for (k, fx) in f.finals().enumerate() {
-        let extra = jwf
-            .as_ref()
-            .and_then(|w| w.final_xform.as_ref())
-            .filter(|_| k == 0);
-        write_xform(
-            s,
-            fx,
-            extra.unwrap_or(&fx.extra_attrs),
-            "finalxform",
-            &inner,
-        );
-    }
-    write_palette(s, f.render_colors(), &inner);
     let written = jwf.as_ref().map_or(&[][..], |w| &w.curves[..]);
     write_keys(s, &f.keys, written, &inner);
     for c in &f.extra_children {
         let _ = writeln!(s, "{inner}{}", c.trim());
     }
-    let _ = writeln!(s, "{ind}</flame>");
+    let _ = writeln!(s, "{ind}</{tag}>");
 }
 
 /// An xform element; `extra` are the kept attributes to write (the xform's own, or with its

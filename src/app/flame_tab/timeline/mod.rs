@@ -16,6 +16,7 @@
 //! | `keys.rs` | undoable key edits and the animatable parameters of a flame |
 //! | `curve_editor.rs` | value against frame of the chosen parameter, keys and Bézier handles |
 //! | `loop_tools.rs` | a rotation loop as keys; morphs and loops as flam3 sequences |
+//! | `sound.rs` | a sound file's loudness as the curve of the chosen parameter |
 
 pub mod curve_editor;
 mod icons;
@@ -23,6 +24,7 @@ pub mod keys;
 pub mod loop_tools;
 mod panel;
 pub mod ruler;
+pub mod sound;
 
 use std::collections::VecDeque;
 use std::time::Instant;
@@ -36,6 +38,7 @@ use crate::flame::interpolate::interpolate_at;
 use crate::flame::keyframes::Target;
 
 pub use loop_tools::{LoopDialog, rotation_loop};
+pub use sound::{SoundAsk, SoundDialog};
 
 /// What the timeline plays.
 #[derive(Clone, Debug, Default)]
@@ -131,6 +134,8 @@ pub struct Timeline {
     pub curve: Option<curve_editor::Geometry>,
     /// The loop tools' dialog, when open.
     pub loop_dialog: Option<LoopDialog>,
+    /// The sound window's settings, when open.
+    pub sound_dialog: Option<SoundDialog>,
     play: Option<Play>,
     /// When the last frames were shown during playback (frames per second).
     shown_at: VecDeque<Instant>,
@@ -153,6 +158,7 @@ impl Default for Timeline {
             ruler: None,
             curve: None,
             loop_dialog: None,
+            sound_dialog: None,
             play: None,
             shown_at: VecDeque::new(),
             seen: None,

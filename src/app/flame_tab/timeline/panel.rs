@@ -82,6 +82,13 @@ impl FlameTab {
             {
                 t.loop_dialog = Some(t.loop_dialog.clone().unwrap_or_default());
             }
+            if ui
+                .button("Sound…")
+                .on_hover_text("move the chosen parameter with the loudness of a sound file")
+                .clicked()
+            {
+                t.sound_dialog = Some(t.sound_dialog.clone().unwrap_or_default());
+            }
         });
         if keys_mode && timeline != (f.keys.frames, f.keys.fps, f.keys.wrap) {
             let doc = super::super::pick(self.showing, &mut self.batch, &mut self.file);

@@ -104,6 +104,7 @@ fn dc_full_transform_matches_jwildfire() {
             z: 0.5,
             color: 0.9,
             hide: false,
+            rgb: None,
         };
         let a = eval_prepared(&v, [inp[0], inp[1], 0.4], start, true, &mut rng);
         assert_all_close("dc_mandala", &[a.x, a.y, a.z, a.color], want);
@@ -131,6 +132,7 @@ fn dc_scatter_ranges_and_z_modes() {
                 z: 3.0,
                 color: 0.5,
                 hide: false,
+                rgb: None,
             };
             let a = eval_prepared(&v, [9.0, 9.0, 9.0], start, true, &mut rng);
             let (x, y) = ((a.x - 1.0) / 2.0, (a.y - 1.0) / 2.0);
@@ -176,6 +178,7 @@ fn dc_scatter_ranges_and_z_modes() {
         z: 3.0,
         color: 0.0,
         hide: false,
+        rgb: None,
     };
     let a = eval_prepared(&v, [0.13, -0.27, 0.0], start, true, &mut rng);
     assert!(close(a.z, 3.0 + a.color * 0.5 + 0.25));

@@ -422,6 +422,7 @@ fn svensson_formula_and_overwrite() {
         z: 0.25,
         color: 0.5,
         hide: false,
+        rgb: None,
     };
     let a = eval_prepared(&v, [x, y, 0.0], start, true, &mut rng);
     let ex = -6.56 * (1.4 * x).sin() - (1.56 * y).sin();

@@ -51,6 +51,14 @@ pub fn fract(x: f64) -> f64 {
     x - x.floor()
 }
 
+/// GLSL's `smoothstep(e0, e1, x)`: 0 before e0, 1 after e1, the cubic 3t² − 2t³ between (the
+/// edges in either order, as shader code passes them).
+#[inline(always)]
+pub fn smoothstep(e0: f64, e1: f64, x: f64) -> f64 {
+    let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
 /// Linear interpolation from `a` (at t = 0) to `b` (at t = 1): a + (b − a)·t (GLSL's `mix`).
 #[inline(always)]
 pub fn mix(a: f64, b: f64, t: f64) -> f64 {

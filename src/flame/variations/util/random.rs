@@ -44,6 +44,19 @@ impl Mwc {
         Mwc { u: s, v: s >> 16 }
     }
 
+    /// The generator's state as one number (for the variations that carry it between calls).
+    pub fn to_bits(&self) -> u64 {
+        ((self.u as u32 as u64) << 32) | self.v as u32 as u64
+    }
+
+    /// The generator whose state [`Mwc::to_bits`] gave.
+    pub fn from_bits(b: u64) -> Mwc {
+        Mwc {
+            u: (b >> 32) as u32 as i32,
+            v: b as u32 as i32,
+        }
+    }
+
     /// The next number, in [0, 1].
     pub fn next_f64(&mut self) -> f64 {
         self.v = 36969i32

@@ -1,0 +1,158 @@
+//! Bilinear approximation (BLA) of perturbed orbits (Zhuoran; as described by Claude
+//! Heiland-Allen in "Deep zoom theory and practice (again)" and used by Fraktaler-3 and
+//! Imagina). Where the non-linear terms of the perturbation are negligible, l iterations from
+//! reference index m act on the difference δ as one linear map
+//!
+//! ```text
+//! δ(m + l) = A·δ(m) + B·δc,      valid while |δ(m)| < R.
+//! ```
+//!
+//! One step of z² + c has A = 2Z(m), B = 1 and R = ε·|A| (|δ|² is below ε·|2Zδ|); of z³ + c,
+//! A = 3Z², B = 1 and R = ε·|Z| (|3Zδ²| below ε·|3Z²δ|). Two steps x then y merge into
+//! A = A_y·A_x, B = A_y·B_x + B_y, R = min(R_x, max(0, (R_y − |B_x|·|δc|max) / |A_x|)), with
+//! |δc|max the largest pixel offset of the view. The table holds, for each level k ≥ 1, the
+//! merged steps of 2^k iterations starting at m = 1 + j·2^k; a pixel at index m takes the
+//! longest one whose radius admits it. Julia sets have no δc term: B = 0.
+
+use super::complex::C;
+use super::fx::{Cx, Fx};
+
+/// The relative size below which a non-linear term is dropped: f64's unit round-off.
+const EPSILON: f64 = 1.0 / (1u64 << 53) as f64;
+
+/// A merged step.
+#[derive(Clone, Copy, Debug)]
+pub struct Step {
+    pub a: Cx,
+    pub b: Cx,
+    /// Validity radius, and the same as f64 (0 below f64's range).
+    pub r: Fx,
+    pub r64: f64,
+    /// Iterations skipped.
+    pub len: u32,
+}
+
+/// The bilinear steps of one reference orbit.
+#[derive(Clone, Debug, Default)]
+pub struct Bla {
+    /// levels[k − 1][j]: the step of up to 2^k iterations from m = 1 + j·2^k.
+    levels: Vec<Vec<Step>>,
+}
+
+fn merge(x: &Step, y: &Step, dc_max: Fx) -> Step {
+    let a = y.a.mul(x.a);
+    let b = y.a.mul(x.b).add(y.b);
+    let ax = x.a.abs();
+    let ry = y.r.sub(x.b.abs().mul(dc_max));
+    let ry = if ry.m > 0.0 && !ax.is_zero() {
+        ry.div(ax)
+    } else {
+        Fx::ZERO
+    };
+    let r = if ry.lt(x.r) { ry } else { x.r };
+    Step {
+        a,
+        b,
+        r,
+        r64: r.to_f64(),
+        len: x.len + y.len,
+    }
+}
+
+/// Bytes the table of an orbit of `len` points takes (about one merged step per point).
+pub fn table_bytes(len: u64) -> u64 {
+    len * std::mem::size_of::<Step>() as u64
+}
+
+impl Bla {
+    /// The table for orbit `z` of z^degree + c, pixels within `dc_max` of the reference,
+    /// with (`with_c`, the Mandelbrot kind) or without a δc term.
+    pub fn new(z: &[C], degree: u32, dc_max: Fx, with_c: bool) -> Bla {
+        let last = z.len().saturating_sub(1);
+        if last < 3 {
+            return Bla::default();
+        }
+        let single = |m: usize| {
+            let zm = z[m];
+            let (a, r) = if degree == 3 {
+                (zm * zm * 3.0, Fx::from_f64(zm.abs() * EPSILON))
+            } else {
+                (zm * 2.0, Fx::from_f64(zm.abs() * 2.0 * EPSILON))
+            };
+            Step {
+                a: Cx::from_c(a),
+                b: Cx::new(if with_c { 1.0 } else { 0.0 }, 0.0, 0),
+                r,
+                r64: r.to_f64(),
+                len: 1,
+            }
+        };
+        // Single steps from m = 1 to last − 1 (the last lands on the final point).
+        let mut levels = Vec::new();
+        let mut prev: Vec<Step> = (1..last)
+            .step_by(2)
+            .map(|m| {
+                let x = single(m);
+                if m + 1 < last {
+                    merge(&x, &single(m + 1), dc_max)
+                } else {
+                    x
+                }
+            })
+            .collect();
+        while prev.len() > 1 {
+            let next: Vec<Step> = prev
+                .chunks(2)
+                .map(|p| match p {
+                    [x, y] => merge(x, y, dc_max),
+                    [x] => *x,
+                    _ => unreachable!(),
+                })
+                .collect();
+            levels.push(prev);
+            prev = next;
+        }
+        levels.push(prev);
+        Bla { levels }
+    }
+
+    /// The longest step from reference index m admitting |δ| = `d` and at most `room`
+    /// iterations.
+    #[inline]
+    pub fn find(&self, m: usize, d: Fx, room: u32) -> Option<&Step> {
+        if m == 0 {
+            return None;
+        }
+        let k0 = (m - 1).trailing_zeros() as usize;
+        for k in (0..self.levels.len().min(k0)).rev() {
+            let Some(st) = self.levels[k].get((m - 1) >> (k + 1)) else {
+                continue;
+            };
+            if st.len <= room && d.lt(st.r) {
+                return Some(st);
+            }
+        }
+        None
+    }
+
+    /// As [`Bla::find`] for a difference of size `d` in f64's range.
+    #[inline]
+    pub fn find_f64(&self, m: usize, d: f64, room: u32) -> Option<&Step> {
+        let k0 = (m - 1).trailing_zeros() as usize;
+        for k in (0..self.levels.len().min(k0)).rev() {
+            let Some(st) = self.levels[k].get((m - 1) >> (k + 1)) else {
+                continue;
+            };
+            if d < st.r64 && st.len <= room {
+                return Some(st);
+            }
+        }
+        None
+    }
+
+    /// Number of steps stored.
+    #[cfg(test)]
+    pub fn len(&self) -> usize {
+        self.levels.iter().map(Vec::len).sum()
+    }
+}

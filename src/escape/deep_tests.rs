@@ -1,0 +1,217 @@
+//! Deep zoom against the truth: every pixel of small grids iterated directly in big fixed
+//! point at the same pixel centres, at depths where the differences are f64 (1e-40, 1e-100)
+//! and where they must be extended (1e-330).
+
+use super::*;
+use crate::escape::family::Family;
+use crate::escape::view::View;
+
+fn settings(max_iter: u32, want_de: bool) -> IterSettings {
+    IterSettings {
+        max_iter,
+        bailout2: 256.0 * 256.0,
+        strict: true,
+        period_tol: 0.0,
+        want_de,
+    }
+}
+
+/// The escape count and continuous count of z0 under z^degree + c, directly in fixed point.
+fn exact(
+    degree: u32,
+    z0: [IBig; 2],
+    c: [IBig; 2],
+    bits: u32,
+    s: &IterSettings,
+) -> (u32, f64, bool) {
+    let b = bits as usize;
+    let [mut x, mut y] = z0;
+    let to = |v: &IBig| fix_to_f64(v, bits);
+    for n in 1..=s.max_iter {
+        let (xx, yy) = ((&x * &x) >> b, (&y * &y) >> b);
+        let (nx, ny) = if degree == 3 {
+            (
+                (&x * (&xx - IBig::from(3u8) * &yy)) >> b,
+                (&y * (IBig::from(3u8) * &xx - &yy)) >> b,
+            )
+        } else {
+            (&xx - &yy, (&x * &y) >> (b - 1))
+        };
+        x = nx + &c[0];
+        y = ny + &c[1];
+        let r2 = to(&x).powi(2) + to(&y).powi(2);
+        if !(r2 <= s.bailout2) {
+            return (n, smooth_count(n, r2, degree as f64), false);
+        }
+    }
+    (s.max_iter, s.max_iter as f64, true)
+}
+
+/// Render a `w`×`h` grid of `view` by perturbation and directly; the fraction of pixels
+/// whose continuous counts agree within 0.05, and the number of distinct integer counts.
+fn agreement(family: &Family, view: &View, w: u32, h: u32, s: &IterSettings) -> (f64, usize) {
+    let (degree, julia) = match *family {
+        Family::Mandelbrot { power } => (power, None),
+        Family::Julia { power, c } => (power, Some(c)),
+        _ => unreachable!(),
+    };
+    let pixel = view.pixel_size_fx(h);
+    let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
+    let progress = OrbitProgress::default();
+    let r = Reference::new(degree, view.centre(), julia, pixel, radius, s, &progress).unwrap();
+    // The truth with twice the digits the reference gets.
+    let bits = bits_for(pixel) * if julia.is_some() { 4 } else { 2 };
+    let (mut good, mut counts) = (0, Vec::new());
+    for j in 0..h {
+        for i in 0..w {
+            let dc = view.offset_from_pixel_fx(i as f64, j as f64, w, h);
+            let got = iterate(&r, dc, s, pixel);
+            let p = view
+                .centre()
+                .shifted(Fx::new(dc.re, dc.e), Fx::new(dc.im, dc.e))
+                .to_binary(bits);
+            let (n, nu, inside) = match julia {
+                None => exact(degree, [IBig::ZERO, IBig::ZERO], p, bits, s),
+                Some(c) => {
+                    let cb = Centre::from_f64_exact([c.re, c.im]).to_binary(bits);
+                    exact(degree, p, cb, bits, s)
+                }
+            };
+            counts.push(n);
+            let same = if inside {
+                got.inside
+            } else {
+                !got.inside && (got.nu - nu).abs() < 0.05
+            };
+            good += same as u32;
+        }
+    }
+    counts.sort();
+    counts.dedup();
+    (good as f64 / (w * h) as f64, counts.len())
+}
+
+fn deep_view(x: &str, y: &str, half: &str) -> View {
+    View::from_centre(Centre::parse(x, y).unwrap(), Fx::parse(half).unwrap())
+}
+
+#[test]
+fn mandelbrot_agrees_with_exact_iteration_at_three_depths() {
+    // Near the Misiurewicz point i (its structure repeats at every depth), offset so that
+    // the reference is an ordinary boundary point; 1e-330 needs extended differences.
+    let s = settings(6000, false);
+    for (half, min_counts) in [("1e-40", 10), ("1e-100", 10), ("1e-330", 10)] {
+        let view = deep_view("0", "1", half);
+        let (frac, distinct) = agreement(&Family::Mandelbrot { power: 2 }, &view, 16, 12, &s);
+        assert!(distinct >= min_counts, "{half}: {distinct} counts");
+        assert!(frac >= 0.99, "{half}: {frac}");
+    }
+}
+
+#[test]
+fn seahorse_valley_with_a_reference_inside_agrees() {
+    // A centre deep in seahorse valley whose orbit stays bounded for all 20000 iterations:
+    // pixels rebase onto it again and again.
+    let s = settings(20_000, false);
+    let view = deep_view(
+        "-0.743643887037158704752191506114774",
+        "0.131825904205311970493132056385139",
+        "1e-25",
+    );
+    let (frac, distinct) = agreement(&Family::Mandelbrot { power: 2 }, &view, 16, 12, &s);
+    assert!(distinct >= 10, "{distinct} counts");
+    // After 16,000 iterations a few chaotic pixels next to the boundary end 2–3 iterations
+    // apart (f64 rounding of the differences; the truth is the same at twice its digits).
+    assert!(frac >= 0.97, "{frac}");
+}
+
+#[test]
+fn julia_sets_and_the_cubic_zoom_deep_too() {
+    // The Julia set of z² + i (a dendrite) around 0, which lies on it: 0 → i → −1 + i → −i,
+    // a repelling 2-cycle.
+    let c = C::new(0.0, 1.0);
+    let s = settings(4000, false);
+    for half in ["1e-50", "1e-320"] {
+        let view = deep_view("0", "0", half);
+        let (frac, distinct) = agreement(&Family::Julia { power: 2, c }, &view, 12, 9, &s);
+        assert!(distinct >= 5, "{half}: {distinct} counts");
+        assert!(frac >= 0.99, "julia {half}: {frac}");
+    }
+    // z³ + c at a Misiurewicz point: 0 → c → c³ + c lands on a fixed point when
+    // c² = ω − 1, ω = e^(2πi/3) (f64 places it to 1e-16, so the view stays above that).
+    let s = settings(3000, false);
+    let w = C::new(-1.5, 3f64.sqrt() / 2.0);
+    let m = C::from_polar(w.abs().sqrt(), w.im.atan2(w.re) / 2.0);
+    let view = View::from_centre(
+        Centre::from_f64_exact([m.re, m.im]),
+        Fx::parse("1e-13").unwrap(),
+    );
+    let (frac, distinct) = agreement(&Family::Mandelbrot { power: 3 }, &view, 12, 9, &s);
+    assert!(distinct >= 5, "cubic: {distinct} counts");
+    assert!(frac >= 0.99, "cubic: {frac}");
+}
+
+#[test]
+fn bilinear_steps_skip_most_iterations() {
+    // At 1e-100 near i, pixels escape after about 270 iterations; the table covers them in
+    // a few dozen steps.
+    let s = settings(6000, false);
+    let view = deep_view("0", "1", "1e-100");
+    let (w, h) = (8, 6);
+    let pixel = view.pixel_size_fx(h);
+    let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
+    let r = Reference::new(
+        2,
+        view.centre(),
+        None,
+        pixel,
+        radius,
+        &s,
+        &Default::default(),
+    )
+    .unwrap();
+    assert_eq!(r.main.z.len(), 6001, "the reference at i never escapes");
+    assert!(r.main.bla.len() > 5000);
+    let dc = view.offset_from_pixel_fx(1.0, 1.0, w, h);
+    let p = iterate(&r, dc, &s, pixel);
+    assert!(!p.inside && p.n > 200, "{p:?}");
+    let st = r.main.bla.find(1, dc.abs(), 10_000).unwrap();
+    assert!(st.len >= 128, "first step {}", st.len);
+}
+
+#[test]
+fn distance_estimates_are_in_pixels_at_any_depth() {
+    // Pixels next to the boundary of a deep view are within a few pixels of it.
+    let s = settings(6000, true);
+    for half in ["1e-30", "1e-400"] {
+        let view = deep_view("0", "1", half);
+        let (w, h) = (8, 6);
+        let pixel = view.pixel_size_fx(h);
+        let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
+        let r = Reference::new(
+            2,
+            view.centre(),
+            None,
+            pixel,
+            radius,
+            &s,
+            &Default::default(),
+        )
+        .unwrap();
+        let des: Vec<f32> = (0..w)
+            .map(|i| {
+                iterate(
+                    &r,
+                    view.offset_from_pixel_fx(i as f64, 2.0, w, h),
+                    &s,
+                    pixel,
+                )
+                .de
+            })
+            .collect();
+        assert!(
+            des.iter().all(|d| d.is_finite() && *d > 0.0 && *d < 20.0),
+            "{half}: {des:?}"
+        );
+    }
+}

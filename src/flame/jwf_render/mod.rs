@@ -1,0 +1,163 @@
+//! JWildfire's renderer, for the flames JWildfire wrote: its picture settings that flam3 lacks
+//! ([`JwfLook`]), its spatial filter kernels ([`kernel`]), and its development of the histogram
+//! into an image ([`develop`]): per-bucket log scaling with its low-density brightness, a
+//! radial 2-D filter over the scaled buckets (sharpening kernels take the colour through the
+//! kernel and the density through a small Gaussian), and its tone map (white level, gamma
+//! threshold, vibrancy, colour balance, saturation, foreground opacity, gradient backgrounds).
+//!
+//! Which renderer draws a flame follows the program that wrote it, as the palette rule does
+//! ([`crate::flame::PaletteIndex::JWildfire`]). The facts come from JWildfire 9.00's
+//! `FlameRenderer`, `LogDensityFilter`, `LogScaleCalculator`, `GammaCorrectionFilter`,
+//! `FilterHolder` and its filter kernels.
+
+pub(crate) mod develop;
+pub mod kernel;
+
+pub(crate) use develop::JwfRaster;
+pub use kernel::JwfKernel;
+
+/// How JWildfire fills the background (`background_type`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum JwfBackgroundKind {
+    /// One colour (the flame's `background`; JWildfire's choice for files that name no kind).
+    #[default]
+    SingleColor,
+    /// A bilinear blend of four corner colours.
+    Gradient2x2,
+    /// Four bilinear quarters meeting in a centre colour.
+    Gradient2x2C,
+}
+
+impl JwfBackgroundKind {
+    /// Every kind, in JWildfire's order.
+    pub const ALL: [JwfBackgroundKind; 3] = [
+        JwfBackgroundKind::SingleColor,
+        JwfBackgroundKind::Gradient2x2,
+        JwfBackgroundKind::Gradient2x2C,
+    ];
+
+    /// The name JWildfire writes.
+    pub fn name(self) -> &'static str {
+        match self {
+            JwfBackgroundKind::SingleColor => "SINGLE_COLOR",
+            JwfBackgroundKind::Gradient2x2 => "GRADIENT_2X2",
+            JwfBackgroundKind::Gradient2x2C => "GRADIENT_2X2_C",
+        }
+    }
+
+    /// The kind JWildfire names `s`.
+    pub fn from_name(s: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == s)
+    }
+}
+
+/// JWildfire's gradient background: corner colours and a centre colour (RGB, 0–1).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct JwfBackground {
+    /// How the colours fill the picture.
+    pub kind: JwfBackgroundKind,
+    /// Upper left corner.
+    pub ul: [f64; 3],
+    /// Upper right corner.
+    pub ur: [f64; 3],
+    /// Lower left corner.
+    pub ll: [f64; 3],
+    /// Lower right corner.
+    pub lr: [f64; 3],
+    /// Centre (of the four-quarter gradient).
+    pub cc: [f64; 3],
+}
+
+/// JWildfire's picture settings that flam3's flames do not have, with JWildfire's defaults.
+/// They take effect for flames JWildfire wrote; the others keep flam3's renderer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JwfLook {
+    /// The density a palette colour reaches full brightness at (`white_level`; 200 keeps the
+    /// palette's own brightness, more darkens).
+    pub white_level: f64,
+    /// Brightness added where few samples fell (`low_density_brightness`).
+    pub low_density_brightness: f64,
+    /// Factors on red, green and blue before the tone map (`balancing_red` …).
+    pub balance: [f64; 3],
+    /// Saturation of the final colours (`saturation`; 1: unchanged).
+    pub saturation: f64,
+    /// How opaque the flame is over the background (`fg_opacity`; 1: as the density says).
+    pub foreground_opacity: f64,
+    /// Share of the samples moved by a random offset (`antialias_amount`).
+    pub antialias_amount: f64,
+    /// Spread of that offset (`antialias_radius`).
+    pub antialias_radius: f64,
+    /// The spatial filter's kernel (`filter_kernel`; its radius is the flame's `filter`).
+    pub kernel: JwfKernel,
+    /// The background.
+    pub background: JwfBackground,
+    /// The camera's bank, radians (`cam_roll`): a turn about the viewing axis before pitch and
+    /// yaw.
+    pub bank: f64,
+    /// Factor on the depth of field's blur (`cam_dof_scale`).
+    pub dof_scale: f64,
+    /// The frame of JWildfire's motion curves the picture shows (`frame`, counted from 1).
+    pub frame: f64,
+    /// Further flames at earlier and later times drawn into the picture (`motion_blur_length`;
+    /// 0: none).
+    pub motion_blur_length: u32,
+    /// Frames between those flames (`motion_blur_timestep`).
+    pub motion_blur_timestep: f64,
+    /// How fast their colours fade with their distance in time (`motion_blur_decay`).
+    pub motion_blur_decay: f64,
+}
+
+impl Default for JwfLook {
+    fn default() -> Self {
+        JwfLook {
+            white_level: 220.0,
+            low_density_brightness: 0.24,
+            balance: [1.0; 3],
+            saturation: 1.0,
+            foreground_opacity: 1.0,
+            antialias_amount: 0.25,
+            antialias_radius: 0.5,
+            kernel: JwfKernel::MitchellSmooth,
+            background: JwfBackground::default(),
+            bank: 0.0,
+            dof_scale: 1.0,
+            frame: 1.0,
+            motion_blur_length: 0,
+            motion_blur_timestep: 0.05,
+            motion_blur_decay: 0.03,
+        }
+    }
+}
+
+impl crate::flame::model::Flame {
+    /// The flame as JWildfire shows it: for a flame JWildfire's renderer draws, its keyframes
+    /// (JWildfire's motion curves) played at the frame it shows ([`JwfLook::frame`]); any other
+    /// flame as it stands. (With motion blur the renderer plays them at each of its times.)
+    pub fn at_jwildfire_frame(&self) -> crate::flame::model::Flame {
+        let blurred = self.jwildfire_motion_blur().len() > 1;
+        if self.renders_as_jwildfire() && !self.keys.is_empty() && !blurred {
+            self.keys.apply(self, self.jwf.frame - 1.0)
+        } else {
+            self.clone()
+        }
+    }
+
+    /// JWildfire's motion blur: the times of the flames drawn for the frame shown (from 1),
+    /// with the factors on their colours. The frame itself comes first; without motion blur it
+    /// is the only one.
+    pub fn jwildfire_motion_blur(&self) -> Vec<(f64, f64)> {
+        let l = &self.jwf;
+        let n = l.motion_blur_length;
+        if !self.renders_as_jwildfire() || n == 0 {
+            return vec![(l.frame, 1.0)];
+        }
+        let half = n as f64 * l.motion_blur_timestep / 2.0;
+        let mut out = vec![(l.frame, 1.0)];
+        for p in 1..=n {
+            let p = p as f64;
+            let fade = 1.0 - p * p * l.motion_blur_decay * 0.07 / n as f64;
+            out.push((l.frame + half - p * l.motion_blur_timestep, fade.max(0.01)));
+        }
+        out
+    }
+}

@@ -1,0 +1,905 @@
+//! Every JWildfire variation against numeric vectors computed by running JWildfire's own classes
+//! (github.com/thargor6/JWildfire, release 9.00; one point through one variation at a time):
+//! for each of its 884 variations, its default and two other parameter sets (a second affine
+//! map, a negative weight, a running sum where they matter), 24 input points, the exact output,
+//! direct colour and hidden points; random components as statistics of 20 000 calls,
+//! stateful variations call by call. Each variation runs as ugnis runs it in a flame JWildfire
+//! wrote: JWildfire's own formulas, in the phase JWildfire runs it (priority -1: before the
+//! regular variations, on the affine point; 1: after them, on their sum; ±2: both).
+//!
+//! The fixtures are trimmed copies of those vectors (tests/fixtures/jwildfire/, see its
+//! make_fixtures.py). To check against the full files instead, set UGNIS_JWF_VECTORS_DIR to
+//! their folder; to check only some variations, UGNIS_VARS=name,name,…; UGNIS_VEC_ALL=1 prints
+//! every mismatch.
+
+mod common;
+
+use std::collections::{BTreeMap, HashMap};
+
+use common::vectors::{
+    Set, SetRows, Table, acc_in, compare_sequence, compare_stats, num, nums, print_all, same,
+    selected, sets,
+};
+use ugnis::flame::rng::FastRng;
+use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId};
+
+/// The JWildfire variations that do not match their vectors yet, each with why. The test fails
+/// when one of them passes (take it off the list) and when a variation off the list fails.
+/// Sorted, one name per line.
+const NOT_YET: &[(&str, &str)] = &[
+    ("_slice_indicator_wf", "not implemented"),
+    ("arcsech2", "x, y differ"),
+    ("arctanh", "x, y differ"),
+    ("arctruchet", "not implemented"),
+    ("asteria", "x, y differ"),
+    ("bSwirl", "x, y differ"),
+    ("blade", "statistics differ"),
+    ("blade3D", "statistics differ"),
+    ("blur3D", "call sequence differs"),
+    ("boarders", "statistics differ"),
+    ("boarders2", "statistics differ"),
+    ("brownian_js", "not implemented"),
+    ("brush_stroke_wf", "not implemented"),
+    ("bubble", "z differs"),
+    ("bubbleT3D", "JWildfire's parameter 'exponent_z' is missing"),
+    ("butterfly_fay", "not implemented"),
+    ("bwrands", "not implemented"),
+    ("c_var", "not implemented"),
+    ("cactusGlobe", "not implemented"),
+    ("camouflage", "not implemented"),
+    ("cannabiscurve_wf", "not implemented"),
+    ("cappedcone3D", "not implemented"),
+    ("capsule3D", "not implemented"),
+    ("cardioid", "x, y differ at the origin"),
+    ("cell3D", "not implemented"),
+    ("chaosCubes", "not implemented"),
+    ("checkerboard_wf", "not implemented"),
+    ("checks", "x, y, z differ; statistics differ"),
+    ("chrysanthemum", "statistics differ"),
+    (
+        "circlecrop",
+        "z differs; hide flag differs; statistics differ",
+    ),
+    (
+        "circlesplit",
+        "JWildfire's parameter 'cs_radius' is missing",
+    ),
+    ("circular", "not implemented"),
+    ("circular2", "not implemented"),
+    ("cloverleaf_wf", "not implemented"),
+    ("colordomain", "not implemented"),
+    ("colormap_wf", "not implemented"),
+    ("complex", "x, y differ at the origin"),
+    ("cone3D", "not implemented"),
+    ("conicalSpiral", "not implemented"),
+    ("coshq", "y, z differ"),
+    ("cosq", "y, z differ"),
+    ("cot", "x, y differ at the origin"),
+    ("coth2_bs", "not implemented"),
+    ("cothq", "x, y, z differ"),
+    ("cotq", "x, y, z differ"),
+    ("cpow2", "JWildfire's parameter 'range' is missing"),
+    ("cpow3", "statistics differ"),
+    ("cpow3_wf", "not implemented"),
+    ("crob", "x, y differ; statistics differ"),
+    ("crop", "x, y, z differ; hide flag differs"),
+    ("crop_x", "not implemented"),
+    ("cross", "x, y, z differ"),
+    ("cschq", "x, y, z differ"),
+    ("cscq", "x, y, z differ"),
+    ("curliecue", "not implemented"),
+    ("curliecue2", "not implemented"),
+    ("custom_wf", "not implemented"),
+    ("custom_wf_full", "not implemented"),
+    ("cut_2ewangtile", "not implemented"),
+    ("cut_alientext", "not implemented"),
+    ("cut_apollonian", "not implemented"),
+    ("cut_c", "not implemented"),
+    ("cut_celtic", "not implemented"),
+    ("cut_circdes", "not implemented"),
+    ("cut_fingerprint", "not implemented"),
+    ("cut_hextruchetflow", "not implemented"),
+    ("cut_jigsaw", "not implemented"),
+    ("cut_kaleido", "not implemented"),
+    ("cut_kleinian", "not implemented"),
+    ("cut_magfield", "not implemented"),
+    ("cut_mandala", "not implemented"),
+    ("cut_metaballs", "not implemented"),
+    ("cut_pattern", "not implemented"),
+    ("cut_randomtile", "not implemented"),
+    ("cut_shapes", "not implemented"),
+    ("cut_spiral", "not implemented"),
+    ("cut_spots", "not implemented"),
+    ("cut_swarp", "not implemented"),
+    ("cut_triantess", "not implemented"),
+    ("cut_truchet", "not implemented"),
+    ("cut_truchetweaving", "not implemented"),
+    ("cut_tstruchet", "not implemented"),
+    ("cut_vasarely", "not implemented"),
+    ("cut_wood", "not implemented"),
+    ("cylinder", "z differs"),
+    ("cylinder3D", "not implemented"),
+    (
+        "d_spherical",
+        "JWildfire's parameter 'd_spher_weight' is missing",
+    ),
+    ("dc_acrilic", "not implemented"),
+    ("dc_apollonian", "not implemented"),
+    ("dc_booleans", "not implemented"),
+    ("dc_bubble", "JWildfire's parameter 'invert' is missing"),
+    ("dc_butterflies", "not implemented"),
+    ("dc_cairotiles", "not implemented"),
+    ("dc_carpet", "statistics differ"),
+    ("dc_carpet3D", "not implemented"),
+    ("dc_circlesblue", "not implemented"),
+    (
+        "dc_circuits",
+        "colour differs; rgb differs; statistics differ; call sequence differs",
+    ),
+    ("dc_code", "not implemented"),
+    ("dc_crackle_wf", "not implemented"),
+    ("dc_cracklep_wf", "not implemented"),
+    ("dc_cylinder", "call sequence differs"),
+    ("dc_cylinder2", "not implemented"),
+    ("dc_dmodulus", "not implemented"),
+    ("dc_ducks", "not implemented"),
+    ("dc_fingerprint", "not implemented"),
+    ("dc_fractaldots", "not implemented"),
+    ("dc_fractcolor", "not implemented"),
+    (
+        "dc_gabornoise",
+        "colour differs; rgb differs; statistics differ",
+    ),
+    ("dc_glypho", "not implemented"),
+    ("dc_gmandelbroot", "not implemented"),
+    ("dc_gnarly", "not implemented"),
+    ("dc_grid3D", "not implemented"),
+    ("dc_hexagons", "not implemented"),
+    ("dc_hexes_wf", "not implemented"),
+    ("dc_hoshi", "not implemented"),
+    ("dc_hyperbolictile", "not implemented"),
+    (
+        "dc_inversion",
+        "colour differs; rgb differs; statistics differ",
+    ),
+    ("dc_kaleidocomplex", "not implemented"),
+    ("dc_kaleidoscopic", "not implemented"),
+    ("dc_kaleidotile", "not implemented"),
+    ("dc_kaliset", "not implemented"),
+    ("dc_kaliset2", "not implemented"),
+    ("dc_layers", "not implemented"),
+    (
+        "dc_mandala",
+        "colour differs; rgb differs; statistics differ",
+    ),
+    ("dc_mandbrot", "not implemented"),
+    ("dc_mandelbox2D", "not implemented"),
+    ("dc_menger", "not implemented"),
+    ("dc_moebiuslog", "not implemented"),
+    ("dc_pentatiles", "not implemented"),
+    ("dc_perlin", "JWildfire's parameter 'color_only' is missing"),
+    (
+        "dc_poincaredisc",
+        "colour differs; rgb differs; statistics differ",
+    ),
+    ("dc_portal", "not implemented"),
+    ("dc_quadtree", "not implemented"),
+    ("dc_randomoctree", "not implemented"),
+    ("dc_rotations", "not implemented"),
+    ("dc_spacefold", "not implemented"),
+    ("dc_squares", "not implemented"),
+    ("dc_starsfield", "not implemented"),
+    ("dc_sunflower", "not implemented"),
+    ("dc_tesla", "not implemented"),
+    ("dc_tree", "not implemented"),
+    ("dc_triTile", "not implemented"),
+    ("dc_triangle", "x, y, z, colour differ; statistics differ"),
+    ("dc_triantess", "not implemented"),
+    ("dc_truchet", "not implemented"),
+    (
+        "dc_turbulence",
+        "colour differs; rgb differs; statistics differ",
+    ),
+    ("dc_voronoise", "not implemented"),
+    ("dc_vortex", "not implemented"),
+    ("dc_warping", "not implemented"),
+    ("dc_worley", "not implemented"),
+    ("de_stijl", "not implemented"),
+    ("displacemap_wf", "not implemented"),
+    ("dla3d_wf", "x, y, z, colour differ; call sequence differs"),
+    ("dla_wf", "not implemented"),
+    ("dragon_js", "not implemented"),
+    ("drunken_tiles", "not implemented"),
+    ("ducks", "not implemented"),
+    ("eCollide", "x, y differ at the origin"),
+    ("eMod", "x, y differ at the origin"),
+    ("eMotion", "x, y differ at the origin"),
+    ("ePush", "x, y differ at the origin"),
+    ("eRotate", "x, y differ at the origin"),
+    ("eScale", "x, y differ"),
+    ("eSwirl", "x, y differ at the origin"),
+    ("edisc", "x, y differ at the origin"),
+    ("elliptic", "JWildfire's parameter 'mode' is missing"),
+    ("elliptic2", "not implemented"),
+    ("ennepers", "x, y differ"),
+    ("epispiral_wf", "x, y differ"),
+    ("erf", "x, y differ"),
+    ("estiq", "y, z differ"),
+    ("exblur", "call sequence differs"),
+    ("f_complex", "not implemented"),
+    ("falloff2", "x, y, z differ; statistics differ"),
+    (
+        "farblur",
+        "runs as regular, JWildfire as post; statistics differ; call sequence differs",
+    ),
+    ("fdisc", "JWildfire's parameter 'ashift' is missing"),
+    ("flame_bulb", "not implemented"),
+    ("flatten", "x, y differ; runs as regular, JWildfire as post"),
+    ("flora", "not implemented"),
+    ("flower", "x, y differ at the origin"),
+    (
+        "flower_db",
+        "JWildfire's parameter 'stem_thickness' is missing",
+    ),
+    ("foci_3D", "x, y, z differ at the origin"),
+    ("fract_dragon_wf", "not implemented"),
+    ("fract_formula_julia_wf", "not implemented"),
+    ("fract_formula_mand_wf", "not implemented"),
+    ("fract_julia_wf", "not implemented"),
+    ("fract_mandelbrot_wf", "not implemented"),
+    ("fract_meteors_wf", "not implemented"),
+    ("fract_pearls_wf", "not implemented"),
+    ("fract_salamander_wf", "not implemented"),
+    ("funnel", "x, y differ"),
+    ("gamma", "x, y differ"),
+    ("geometricPrimitives", "not implemented"),
+    ("glitchy2", "not implemented"),
+    ("glsl_acrilic", "not implemented"),
+    ("glsl_apollonian", "not implemented"),
+    ("glsl_circlesblue", "not implemented"),
+    ("glsl_circuits", "not implemented"),
+    ("glsl_code", "not implemented"),
+    ("glsl_fractaldots", "not implemented"),
+    ("glsl_grid3D", "not implemented"),
+    ("glsl_hoshi", "not implemented"),
+    ("glsl_hyperbolictile", "not implemented"),
+    ("glsl_kaleidocomplex", "not implemented"),
+    ("glsl_kaleidoscopic", "not implemented"),
+    ("glsl_kaliset", "not implemented"),
+    ("glsl_kaliset2", "not implemented"),
+    ("glsl_mandala", "not implemented"),
+    ("glsl_mandelbox2D", "not implemented"),
+    ("glsl_randomoctree", "not implemented"),
+    ("glsl_squares", "not implemented"),
+    ("glsl_starsfield", "not implemented"),
+    ("glynnSim1", "statistics differ"),
+    ("glynnSim2B", "not implemented"),
+    ("glynnSim3", "statistics differ"),
+    ("glynnia", "statistics differ"),
+    ("glynns3subfl", "not implemented"),
+    ("glynnspiro", "not implemented"),
+    ("gosperisland_js", "not implemented"),
+    ("gpattern", "not implemented"),
+    ("grid3d_wf", "not implemented"),
+    ("gridout3D", "not implemented"),
+    ("gumowski_mira", "not implemented"),
+    ("hamid_js", "not implemented"),
+    ("harmonograph_js", "not implemented"),
+    ("henon", "JWildfire's parameter 'c' is missing"),
+    ("hexaplay3D", "call sequence differs"),
+    ("hexnix3D", "statistics differ; call sequence differs"),
+    ("hilbert_js", "call sequence differs"),
+    ("ho", "x, y, z differ"),
+    ("hole", "x, y differ"),
+    ("hopalong", "not implemented"),
+    ("hourglass3D", "not implemented"),
+    ("htree_js", "not implemented"),
+    ("hypershift", "JWildfire's parameter 'stretch' is missing"),
+    ("hypershift2", "x, y, z differ at the origin"),
+    ("hypertile1", "statistics differ"),
+    ("hypertile2", "statistics differ"),
+    ("hypertile3D", "x, y, z differ"),
+    ("hypertile3D1", "statistics differ"),
+    ("hypertile3D2", "statistics differ"),
+    ("hypertile3D2b", "not implemented"),
+    ("hypertile3Db", "not implemented"),
+    ("iconattractor_js", "not implemented"),
+    ("iflames_wf", "not implemented"),
+    ("intersection", "not implemented"),
+    ("inversion", "not implemented"),
+    ("invtree_js", "not implemented"),
+    ("isosfplot3d_wf", "not implemented"),
+    ("jac_asn", "not implemented"),
+    ("jac_elk", "not implemented"),
+    ("japanese_maple_leaf", "not implemented"),
+    ("julia3Dq", "statistics differ"),
+    ("juliac", "statistics differ"),
+    ("julian3Dx", "z differs; statistics differ"),
+    ("juliaq", "statistics differ"),
+    ("juliascope3Db", "not implemented"),
+    ("juliascopePlus", "not implemented"),
+    ("kaleidoimg", "not implemented"),
+    ("kaleidoscope", "x, y differ"),
+    ("kaplan", "not implemented"),
+    ("kifs3d", "not implemented"),
+    ("klein_group", "not implemented"),
+    ("koch_js", "not implemented"),
+    ("lazyjess", "x, y differ at the origin"),
+    ("log_tile2", "not implemented"),
+    ("loonie_3D", "x, y, z differ at the origin"),
+    ("loq", "x, y, z differ"),
+    ("lozi", "JWildfire's parameter 'c' is missing"),
+    ("lsystem3D_js", "not implemented"),
+    ("lsystem_js", "not implemented"),
+    ("macmillan", "not implemented"),
+    ("mandala", "not implemented"),
+    ("mandala2", "not implemented"),
+    ("mandelbrot", "not implemented"),
+    ("maple_leaf", "not implemented"),
+    ("mask", "JWildfire's parameter 'xshift' is missing"),
+    ("maurer_lines", "not implemented"),
+    ("maurer_rose", "not implemented"),
+    ("meeple", "not implemented"),
+    ("metaballs3d_wf", "not implemented"),
+    ("mobiq", "JWildfire's parameter 'qat' is missing"),
+    ("mobiqN", "not implemented"),
+    ("mobius3D_with_inverse", "not implemented"),
+    ("mobiusN", "JWildfire's parameter 're_a' is missing"),
+    ("mobius_dragon_3D", "not implemented"),
+    ("mobius_strip", "JWildfire's parameter 'twists' is missing"),
+    ("msTruchet", "not implemented"),
+    ("multi_ifs", "not implemented"),
+    ("murl", "x, y differ"),
+    ("natural_foam", "not implemented"),
+    ("npolar", "x, y differ"),
+    ("oak_leaf", "not implemented"),
+    ("obj_mesh_primitive_wf", "not implemented"),
+    ("obj_mesh_wf", "not implemented"),
+    ("ocappedcone3D", "not implemented"),
+    ("octagon", "JWildfire's parameter 'mode' is missing"),
+    ("octahedron3D", "not implemented"),
+    ("octogonprism3D", "not implemented"),
+    ("ocylinder3D", "not implemented"),
+    ("oroundcone3D", "not implemented"),
+    ("ortho", "x, y differ at the origin"),
+    ("pRose3D", "JWildfire's parameter 'srvsc' is missing"),
+    ("parallel", "not implemented"),
+    ("parplot2d_wf", "not implemented"),
+    ("phoenix_julia", "statistics differ"),
+    ("pie3D", "statistics differ"),
+    ("pixel_flow", "statistics differ"),
+    ("point_mirror_symmetry", "not implemented"),
+    ("pointgrid3d_wf", "not implemented"),
+    ("pointgrid_wf", "not implemented"),
+    ("polar", "x, z differ"),
+    ("polarplot2d_wf", "not implemented"),
+    ("polarplot3d_wf", "statistics differ"),
+    ("polySurf", "not implemented"),
+    ("polylogarithm", "not implemented"),
+    ("post_aexion_crop", "not implemented"),
+    ("post_asurf_crop", "not implemented"),
+    ("post_axis_symmetry_wf", "not implemented"),
+    ("post_benesi_crop", "not implemented"),
+    ("post_bristorbrot_crop", "not implemented"),
+    ("post_brush_stroke_wf", "not implemented"),
+    ("post_bumpmap_wf", "not implemented"),
+    ("post_bwraps2", "not implemented"),
+    ("post_c_var", "not implemented"),
+    ("post_circlecrop", "hide flag differs; statistics differ"),
+    ("post_coastalbrot_crop", "not implemented"),
+    ("post_colormap_wf", "not implemented"),
+    ("post_colorscale_wf", "not implemented"),
+    ("post_crop", "z differs; hide flag differs"),
+    ("post_crop_trapezoid", "not implemented"),
+    ("post_crop_x", "not implemented"),
+    ("post_crosscrop", "not implemented"),
+    ("post_curl", "x, y differ"),
+    ("post_curl3D", "x, y, z differ"),
+    ("post_custom_wf", "not implemented"),
+    ("post_dcztransl", "not implemented"),
+    ("post_depth", "x, y, z differ"),
+    ("post_displacemap_wf", "not implemented"),
+    ("post_falloff2", "x, y, z differ; statistics differ"),
+    ("post_flatten", "z differs"),
+    ("post_heat", "x, y, z differ"),
+    ("post_julia3Dq", "statistics differ"),
+    ("post_juliaq", "statistics differ"),
+    ("post_log_tile2", "not implemented"),
+    ("post_mandelbox3d_crop", "not implemented"),
+    ("post_mandelbulb3d_crop", "not implemented"),
+    ("post_point_crop", "not implemented"),
+    ("post_point_symmetry_wf", "not implemented"),
+    ("post_smartcrop", "colour differs; statistics differ"),
+    ("post_spin_z", "not implemented"),
+    ("post_trig", "not implemented"),
+    ("post_ztranslate_wf", "not implemented"),
+    ("pre_blur", "call sequence differs"),
+    ("pre_blur3D", "call sequence differs"),
+    ("pre_boarders2", "statistics differ"),
+    ("pre_bwraps2", "not implemented"),
+    ("pre_c_var", "not implemented"),
+    ("pre_circlecrop", "hide flag differs; statistics differ"),
+    ("pre_crop", "z differs; hide flag differs"),
+    ("pre_custom_wf", "not implemented"),
+    ("pre_dcztransl", "not implemented"),
+    ("pre_recip", "not implemented"),
+    ("pre_rect_wf", "not implemented"),
+    ("pre_sinusoidal3d", "z differs"),
+    ("pre_spin_z", "not implemented"),
+    ("pre_stabilize", "not implemented"),
+    ("pre_subflame_wf", "not implemented"),
+    ("pre_wave3D_wf", "not implemented"),
+    ("pre_zscale", "x, y differ"),
+    ("prepost_affine", "not implemented"),
+    ("prepost_blob", "not implemented"),
+    ("prepost_circlize", "not implemented"),
+    ("prepost_mobius", "not implemented"),
+    ("primitives_wf", "not implemented"),
+    ("quad", "not implemented"),
+    ("quaternion", "not implemented"),
+    ("radial_blur", "call sequence differs"),
+    ("rational3", "JWildfire's parameter 'a' is missing"),
+    ("rays", "statistics differ"),
+    ("rays1", "x, y, z differ"),
+    ("rays2", "x, y, z differ"),
+    ("rays3", "x, y, z differ"),
+    ("rbox3D", "not implemented"),
+    ("recurrenceplot", "not implemented"),
+    ("rhodonea", "not implemented"),
+    ("rhombus3D", "not implemented"),
+    ("ringer", "not implemented"),
+    ("rings", "x, y differ"),
+    ("rings2", "x, y, z differ"),
+    ("ringsubflame", "not implemented"),
+    ("ringtile", "not implemented"),
+    (
+        "ripple",
+        "JWildfire's parameter 'fixed_dist_calc' is missing",
+    ),
+    ("romanesco", "not implemented"),
+    ("rose_wf", "statistics differ"),
+    ("roundspher", "x, y differ at the origin"),
+    ("rsquares_js", "call sequence differs"),
+    ("sattractor3D", "not implemented"),
+    ("scry2", "JWildfire's parameter 'sides' is missing"),
+    ("scry_3D", "x, y, z differ at the origin"),
+    ("sechq", "x, y, z differ"),
+    ("secq", "x, y, z differ"),
+    ("shape_warp", "not implemented"),
+    ("shredded", "not implemented"),
+    ("shredlin", "x, y, z differ"),
+    ("sinhq", "y, z differ"),
+    ("sinq", "y, z differ"),
+    ("sintrange", "x, y differ"),
+    ("sinusgrid", "z differs"),
+    ("sphericalN", "x, y differ at the origin"),
+    ("sphtiling3v2", "not implemented"),
+    ("spiral", "y, z differ"),
+    ("spiralwing", "x, y differ at the origin"),
+    ("spirograph3D", "not implemented"),
+    ("spliptic_bs", "not implemented"),
+    ("splitbrdr", "statistics differ"),
+    ("splits", "JWildfire's parameter 'lshear' is missing"),
+    ("sqrt_asinh", "not implemented"),
+    ("squircular", "not implemented"),
+    ("squirrel", "x, y differ"),
+    ("squish", "statistics differ"),
+    ("starfractal", "not implemented"),
+    ("stwin", "JWildfire's parameter 'offset_xy' is missing"),
+    ("subflame_wf", "not implemented"),
+    ("sunflower", "not implemented"),
+    ("sunvoroni", "not implemented"),
+    ("superShape3d", "statistics differ"),
+    ("super_shape", "x, y differ at the origin"),
+    ("svg_wf", "not implemented"),
+    ("swirl3", "x, y differ at the origin"),
+    ("sym_ng10", "JWildfire's parameter 'spacex' is missing"),
+    ("sym_ng11", "JWildfire's parameter 'spacex' is missing"),
+    ("sym_ng12", "JWildfire's parameter 'spacex' is missing"),
+    ("sym_ng13", "JWildfire's parameter 'radius' is missing"),
+    ("sym_ng14", "JWildfire's parameter 'radius' is missing"),
+    ("sym_ng15", "JWildfire's parameter 'radius' is missing"),
+    ("sym_ng16", "JWildfire's parameter 'radius' is missing"),
+    ("sym_ng17", "JWildfire's parameter 'radius' is missing"),
+    ("sym_ng4", "JWildfire's parameter 'stepx' is missing"),
+    ("sym_ng5", "JWildfire's parameter 'stepx' is missing"),
+    ("sym_ng6", "JWildfire's parameter 'stepx' is missing"),
+    ("synth", "x, y differ; statistics differ"),
+    ("tanhq", "x, y, z differ"),
+    ("tanq", "x, y, z differ"),
+    ("taprats", "not implemented"),
+    ("terrain3D", "not implemented"),
+    ("tess_shape", "not implemented"),
+    ("text_wf", "statistics differ"),
+    ("threeply", "not implemented"),
+    ("tile_log", "z differs; statistics differ"),
+    ("torus3D", "not implemented"),
+    ("tqmirror", "not implemented"),
+    ("tree_js", "call sequence differs"),
+    ("triantruchet", "not implemented"),
+    ("triprism3D", "not implemented"),
+    ("truchet", "JWildfire's parameter 'direct_color' is missing"),
+    ("truchet_ae", "not implemented"),
+    ("truchet_fill", "x, y differ"),
+    ("truchet_hex_fill", "statistics differ"),
+    ("truchetflow", "not implemented"),
+    ("vibration2", "JWildfire's parameter 'd2m' is missing"),
+    ("w", "x, y differ"),
+    ("wallpaper_js", "not implemented"),
+    ("wangtiles", "not implemented"),
+    ("waveblur_wf", "not implemented"),
+    ("waves2b", "x, y differ"),
+    ("wedge_julia", "statistics differ"),
+    ("wedge_sph", "x, y differ at the origin"),
+    ("x", "x, y differ"),
+    ("xerf", "x, y, z differ"),
+    ("y", "x, y differ"),
+    ("yplot2d_wf", "not implemented"),
+    ("yplot3d_wf", "not implemented"),
+    ("z", "x, y differ"),
+    ("zblur", "call sequence differs"),
+];
+
+/// A table of the vectors: from UGNIS_JWF_VECTORS_DIR, else the committed fixture.
+fn fixture(name: &str) -> String {
+    common::vectors::fixture("jwildfire", "UGNIS_JWF_VECTORS_DIR", name)
+}
+
+/// What the vectors say about one variation.
+struct JwfVar {
+    /// -1 pre, 0 regular, 1 post, ±2 prepost.
+    priority: i32,
+    /// Its direct colour or hide flag varies from call to call.
+    random_rgb_or_hide: bool,
+}
+
+/// Every JWildfire variation, by name.
+fn jwildfire_variations() -> BTreeMap<String, JwfVar> {
+    let t = Table::parse(&fixture("variations"));
+    t.rows
+        .iter()
+        .map(|r| {
+            let flags = t.get(r, "flags");
+            let v = JwfVar {
+                priority: t.get(r, "priority").parse().expect("a priority"),
+                random_rgb_or_hide: flags.split(',').any(|f| f == "random_rgb_or_hide"),
+            };
+            (t.get(r, "variation").to_string(), v)
+        })
+        .collect()
+}
+
+/// The images of the 24 points under the main affine map (the trimmed vectors write `-` for
+/// them).
+fn main_points() -> HashMap<String, [f64; 3]> {
+    let p = common::fixture("jwildfire").join("points.tsv");
+    let t = Table::parse(&std::fs::read_to_string(&p).expect("points.tsv"));
+    t.rows
+        .iter()
+        .map(|r| {
+            let v = nums(t.get(r, "t"));
+            (t.get(r, "point").to_string(), [v[0], v[1], v[2]])
+        })
+        .collect()
+}
+
+/// The input point of a row.
+fn t_in(t: &Table, r: &[String], points: &HashMap<String, [f64; 3]>) -> [f64; 3] {
+    match t.opt(r, "t") {
+        Some("-") => points[t.get(r, "point")],
+        Some(s) => nums(s).try_into().expect("three coordinates"),
+        None => [
+            num(t.get(r, "t_x")),
+            num(t.get(r, "t_y")),
+            num(t.get(r, "t_z")),
+        ],
+    }
+}
+
+/// The input point and running sum of every row of the vectors, by (variation, set, point):
+/// the statistics and sequences are of the same inputs.
+type Inputs = HashMap<(String, String, String), ([f64; 3], Acc)>;
+
+fn inputs(t: &Table) -> Inputs {
+    let points = main_points();
+    t.rows
+        .iter()
+        .map(|r| {
+            let key = ["variation", "param_set", "point"].map(|c| t.get(r, c).to_string());
+            (key.into(), (t_in(t, r, &points), acc_in(t, r)))
+        })
+        .collect()
+}
+
+/// The inputs of row `r` of a statistics or sequence table.
+fn input_of(inputs: &Inputs, t: &Table, r: &[String]) -> ([f64; 3], Acc) {
+    let key = ["variation", "param_set", "point"].map(|c| t.get(r, c).to_string());
+    inputs[&key.into()]
+}
+
+/// The variation a name denotes and the form a set of it runs in: a prepost variation's
+/// `SET` rows are its call before the regular variations, `SET_post` its call after them.
+fn resolve(variation: &str, set: &str) -> Result<(VarId, Form), String> {
+    let (id, form) = variations::parse_name(variation)
+        .ok_or_else(|| format!("variation '{variation}' is not in the registry"))?;
+    if variations::info(id).has(variations::flag::PREPOST) {
+        let phase = if set.ends_with("_post") {
+            Form::Post
+        } else {
+            Form::Pre
+        };
+        return Ok((id, phase));
+    }
+    Ok((id, form))
+}
+
+/// A JWildfire flame's rules: JWildfire's formulas, "preserve Z" off (a new flame's default).
+const RULES: Rules = Rules {
+    compat: true,
+    dialect: Dialect::JWildfire,
+    preserve_z: false,
+};
+
+fn prepared(s: &Set) -> Prepared {
+    Prepared::for_flame(s.id, s.form, s.weight, &s.params, &[], s.aff, RULES)
+}
+
+/// The phase JWildfire runs a variation of `priority` in, against the one ugnis runs it in.
+fn phase_error(var: &str, priority: i32) -> Option<String> {
+    let (id, form) = variations::parse_name(var)?;
+    let v = Prepared::for_flame(id, form, 1.0, &[], &[], Default::default(), RULES);
+    let prepost = v.def.has(variations::flag::PREPOST);
+    let want = match priority {
+        -1 => "pre",
+        0 => "regular",
+        1 => "post",
+        _ => "prepost",
+    };
+    let got = match v.form {
+        _ if prepost => "prepost",
+        Form::Pre => "pre",
+        Form::Regular => "regular",
+        Form::Post => "post",
+    };
+    (want != got).then(|| format!("runs as a {got} variation, JWildfire's is {want}"))
+}
+
+/// Failures, by variation (the first few of each).
+#[derive(Default)]
+struct Failures(BTreeMap<String, Vec<String>>);
+
+impl Failures {
+    fn add(&mut self, var: &str, msg: String) {
+        let v = self.0.entry(var.to_string()).or_default();
+        if v.len() < 8 || print_all() {
+            v.push(msg);
+        }
+    }
+    fn merge(&mut self, other: Failures) {
+        for (k, v) in other.0 {
+            for m in v {
+                self.add(&k, m);
+            }
+        }
+    }
+}
+
+/// The exact cells of every row: position, colour, direct colour, hide flag.
+fn check_deterministic(
+    t: &Table,
+    all: &[SetRows],
+    vars: &BTreeMap<String, JwfVar>,
+    fails: &mut Failures,
+) -> usize {
+    let points = main_points();
+    let mut checked = 0;
+    for (var, ps, set, rows) in all {
+        if !selected(var) {
+            continue;
+        }
+        let set = match set {
+            Ok(s) => s,
+            Err(e) => {
+                fails.add(var, e.clone());
+                continue;
+            }
+        };
+        let rgb_may_vary = vars.get(var).is_some_and(|v| v.random_rgb_or_hide);
+        for &i in rows {
+            let r = &t.rows[i];
+            let tx = t_in(t, r, &points);
+            let v = prepared(set);
+            let mut rng = FastRng::new(i as u64);
+            let o = variations::eval_prepared(&v, tx, acc_in(t, r), true, &mut rng);
+            let color_in = acc_in(t, r).color;
+            let want = [
+                t.get(r, "out_x"),
+                t.get(r, "out_y"),
+                t.get(r, "out_z"),
+                t.get(r, "color_out"),
+            ];
+            let got = [o.x, o.y, o.z, o.color];
+            let random_row = want.iter().any(|w| w.is_empty());
+            let point = t.get(r, "point");
+            for k in 0..4 {
+                let w = match want[k] {
+                    "" => continue, // a random component: see the statistical test
+                    "=" => color_in,
+                    w => num(w),
+                };
+                checked += 1;
+                if !same(got[k], w) {
+                    let c = ["x", "y", "z", "color"][k];
+                    let msg = format!("[{ps}] point {point}: {c} = {:e}, want {w:e}", got[k]);
+                    fails.add(var, format!("{msg} (t = {tx:?})"));
+                }
+            }
+            if random_row && rgb_may_vary {
+                continue;
+            }
+            let want_hide = t.get(r, "hide_out") == "1";
+            if o.hide != want_hide {
+                fails.add(
+                    var,
+                    format!("[{ps}] point {point}: hide {}, want {want_hide}", o.hide),
+                );
+            }
+            let want_rgb = match t.get(r, "rgb_out") {
+                "-" => None,
+                s => Some(nums(s)),
+            };
+            let rgb_ok = match (&want_rgb, o.rgb) {
+                (None, None) => true,
+                (Some(w), Some(g)) => (0..3).all(|k| same(g[k], w[k])),
+                _ => false,
+            };
+            if !rgb_ok {
+                let msg = format!("[{ps}] point {point}: rgb {:?}, want {want_rgb:?}", o.rgb);
+                fails.add(var, msg);
+            }
+        }
+    }
+    checked
+}
+
+/// The random components, against their statistics (rows split between threads).
+fn check_random(
+    by_set: &HashMap<(String, String), &Set>,
+    inputs: &Inputs,
+    fails: &mut Failures,
+) -> usize {
+    let t = Table::parse(&fixture("random_stats"));
+    let rows: Vec<(usize, &Vec<String>)> = t
+        .rows
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| selected(t.get(r, "variation")))
+        .collect();
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let chunk = rows.len().div_ceil(threads).max(1);
+    let parts: Vec<Failures> = std::thread::scope(|s| {
+        let handles: Vec<_> = rows
+            .chunks(chunk)
+            .map(|part| {
+                let t = &t;
+                s.spawn(move || {
+                    let mut f = Failures::default();
+                    for &(i, r) in part {
+                        let (var, ps) = (t.get(r, "variation"), t.get(r, "param_set"));
+                        // Each failing variation needs one failing row only.
+                        if f.0.contains_key(var) && !print_all() {
+                            continue;
+                        }
+                        let Some(set) = by_set.get(&(var.to_string(), ps.to_string())) else {
+                            continue;
+                        };
+                        let (tx, acc) = input_of(inputs, t, r);
+                        let v = prepared(set);
+                        let mut rng = FastRng::new(1000 + i as u64);
+                        let draw = || variations::eval_prepared(&v, tx, acc, false, &mut rng);
+                        if let Err(e) = compare_stats(t, r, draw) {
+                            f.add(var, format!("[{ps}] point {}: {e}", t.get(r, "point")));
+                        }
+                    }
+                    f
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    for p in parts {
+        fails.merge(p);
+    }
+    rows.len()
+}
+
+/// The stateful variations, six calls in a row on one object.
+fn check_stateful(by_set: &HashMap<(String, String), &Set>, inputs: &Inputs, fails: &mut Failures) {
+    let t = Table::parse(&fixture("state_sequences"));
+    for r in &t.rows {
+        let (var, ps) = (t.get(r, "variation"), t.get(r, "param_set"));
+        if !selected(var) {
+            continue;
+        }
+        let Some(set) = by_set.get(&(var.to_string(), ps.to_string())) else {
+            continue;
+        };
+        let v = prepared(set);
+        let (tx, _) = input_of(inputs, &t, r);
+        let mut rng = FastRng::new(7);
+        let acc = Acc {
+            color: 0.35,
+            ..Acc::default()
+        };
+        let run = || variations::eval_prepared(&v, tx, acc, false, &mut rng);
+        if let Err(e) = compare_sequence(&t, r, run) {
+            fails.add(var, format!("[{ps}] point {}: {e}", t.get(r, "point")));
+        }
+    }
+}
+
+#[test]
+fn jwildfire_variations_match_their_vectors() {
+    let vars = jwildfire_variations();
+    let listed: BTreeMap<&str, &str> = NOT_YET.iter().copied().collect();
+    let names: Vec<&str> = NOT_YET.iter().map(|(n, _)| *n).collect();
+    assert!(names.is_sorted(), "NOT_YET must be sorted");
+    assert_eq!(
+        listed.len(),
+        NOT_YET.len(),
+        "NOT_YET names a variation twice"
+    );
+    for n in &names {
+        assert!(
+            vars.contains_key(*n),
+            "{n} (in NOT_YET) is not a JWildfire variation"
+        );
+    }
+
+    let t = Table::parse(&fixture("vectors"));
+    let all = sets(&t, resolve);
+    let mut fails = Failures::default();
+    for (name, v) in &vars {
+        if !selected(name) {
+            continue;
+        }
+        if let Some(e) = phase_error(name, v.priority) {
+            fails.add(name, e);
+        }
+    }
+    let checked = check_deterministic(&t, &all, &vars, &mut fails);
+    let by_set: HashMap<(String, String), &Set> = all
+        .iter()
+        .filter_map(|(v, p, s, _)| Some(((v.clone(), p.clone()), s.as_ref().ok()?)))
+        .collect();
+    let inputs = inputs(&t);
+    let rows = check_random(&by_set, &inputs, &mut fails);
+    check_stateful(&by_set, &inputs, &mut fails);
+
+    let considered: Vec<&String> = vars.keys().filter(|n| selected(n)).collect();
+    let mut problems = Vec::new();
+    let mut passing = 0;
+    for name in &considered {
+        match (fails.0.get(*name), listed.get(name.as_str())) {
+            (None, None) => passing += 1,
+            (None, Some(_)) => problems.push(format!("{name} passes: take it off NOT_YET")),
+            (Some(_), Some(_)) => {}
+            (Some(f), None) => problems.push(format!("{name}:\n    {}", f.join("\n    "))),
+        }
+    }
+    let listed_here = considered
+        .iter()
+        .filter(|n| listed.contains_key(n.as_str()))
+        .count();
+    eprintln!(
+        "JWildfire variations: {passing} of {} pass, {listed_here} listed as not yet \
+         ({checked} exact values, {rows} statistics rows)",
+        considered.len()
+    );
+    if print_all() {
+        for (name, f) in &fails.0 {
+            eprintln!("{name}:\n    {}", f.join("\n    "));
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
