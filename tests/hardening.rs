@@ -14,6 +14,10 @@ mod signals;
 mod stderr;
 #[path = "hardening/strips.rs"]
 mod strips;
+#[path = "hardening/variations.rs"]
+mod variations;
+#[path = "hardening/written.rs"]
+mod written;
 
 use std::io::{BufRead, Read};
 use std::path::{Path, PathBuf};

@@ -154,6 +154,14 @@ impl Progress {
         }
     }
 
+    /// A line on stderr above the bar (which is drawn again below it).
+    pub fn note(&self, line: &str) {
+        match &self.inner {
+            Inner::Bar(b) => b.suspend(|| stderr!("{line}")),
+            _ => stderr!("{line}"),
+        }
+    }
+
     pub fn finish_and_clear(&self) {
         if let Inner::Bar(b) = &self.inner {
             b.finish_and_clear();

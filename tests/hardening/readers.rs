@@ -68,7 +68,7 @@ fn linear<T, E: std::fmt::Display>(
 }
 
 /// The processor time this thread has used (the wall clock where it is not known).
-fn thread_cpu_time() -> Duration {
+pub(super) fn thread_cpu_time() -> Duration {
     #[cfg(unix)]
     {
         let mut t = libc::timespec {
