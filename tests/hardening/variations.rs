@@ -4,9 +4,9 @@
 //! depths and table sizes are limited to what the variation can use).
 //!
 //! The variations that grow a structure when they are prepared (a crystal, an aggregate: a
-//! tenth of a second or more each time) are tried with every parameter extreme at once and
-//! with their limited parameters in the test run by `cargo test`; with every parameter in
-//! `benches/hardening.sh` (`--ignored`).
+//! tenth of a second or more each time) are tried with every parameter at once and with their
+//! limited parameters, at ±1e308, 0 and NaN, in the test run by `cargo test`; with every
+//! parameter and value in `benches/hardening.sh` (`--ignored`).
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -20,6 +20,9 @@ use ugnis::flame::variations::{self, Acc, Form, Prepared, eval_prepared, flag};
 use super::readers::thread_cpu_time;
 
 const VALUES: [f64; 8] = [1e308, -1e308, 1e9, -1e9, -1.0, 0.0, 1e-300, f64::NAN];
+
+/// The values a variation that is slow to prepare is tried with.
+const HEAVY_VALUES: [f64; 4] = [1e308, -1e308, 0.0, f64::NAN];
 
 /// Evaluations timed per case (their mean is compared with the limit).
 const EVALS: u32 = 24;
@@ -113,7 +116,11 @@ fn fuzz(every: bool) {
             .map(Some)
             .chain([None]);
         for w in which {
-            for value in VALUES {
+            for &value in if heavy {
+                &HEAVY_VALUES[..]
+            } else {
+                &VALUES[..]
+            } {
                 let name = w.map_or("every parameter", |i| d.params[i].name);
                 let case = format!("{}: {name} = {value:e}", d.name);
                 *current.lock().unwrap() = (case.clone(), Instant::now());
@@ -139,4 +146,35 @@ fn fuzz(every: bool) {
         println!("  {name}: {:.1} s", t.as_secs_f64());
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The case of the report: `nBlur_numEdges="1e308"` pinned the processor for good. The file is
+/// read with a warning naming the parameter and the limit used, and renders at once.
+#[test]
+fn a_flame_with_a_huge_count_renders_with_a_warning() {
+    let dir = super::common::temp_dir("hard-var-count");
+    let f = dir.join("n.flame");
+    std::fs::write(
+        &f,
+        "<flame name=\"n\" size=\"32 24\" scale=\"8\" quality=\"2\">\
+         <xform weight=\"1\" nBlur=\"1\" nBlur_numEdges=\"1e308\" nBlur_numStripes=\"-1e9\" \
+         coefs=\"0.5 0 0 0.5 0 0\"/>\
+         <xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 1 0\"/></flame>",
+    )
+    .unwrap();
+    let out = dir.join("n.png");
+    let t = Instant::now();
+    let (code, _, err) = super::ugnis(&["render", super::s(&f), "-o", super::s(&out)]);
+    assert_eq!(code, 0, "{err}");
+    assert!(t.elapsed() < Duration::from_secs(30), "{:?}", t.elapsed());
+    assert!(
+        err.contains("nBlur_numEdges=\"1e308\"") && err.contains("1000 is used"),
+        "{err}"
+    );
+    assert!(
+        err.contains("nBlur_numStripes=\"-1e9\"") && err.contains("-1000 is used"),
+        "{err}"
+    );
+    assert!(out.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
 }
