@@ -141,7 +141,7 @@ fn fuzz(every: bool) {
         variations::count(),
         start.elapsed().as_secs_f64()
     );
-    slowest.sort_by(|a, b| b.1.cmp(&a.1));
+    slowest.sort_by_key(|s| std::cmp::Reverse(s.1));
     for (name, t) in slowest.iter().take(5) {
         println!("  {name}: {:.1} s", t.as_secs_f64());
     }
