@@ -132,8 +132,8 @@ signal_case() {
   printf '%-58s %8s %10s %5s   %s\n' "$name" "" "" "$code" \
     "stopped ${ms} ms after the signal; outputs: $(ls sig.* 2>/dev/null | wc -l), temporary files: $(ls -a | grep -c ugnis-tmp)"
 }
-signal_case "SIGINT during density estimation (2000x2000, DE radius 9)" INT 3 \
-  "$UGNIS" render ok.flame --size 2000x2000 --quality 5 -o sig.png --save-state sig.ugs
+signal_case "SIGINT during a render with --save-state" INT 3 \
+  "$UGNIS" render ok.flame --size 2000x2000 --quality 2000 -o sig.png --save-state sig.ugs
 signal_case "SIGTERM during the iteration" TERM 2 \
   "$UGNIS" render ok.flame --size 2000x2000 --quality 2000 -o sig.png
 signal_case "SIGHUP during the iteration" HUP 2 \

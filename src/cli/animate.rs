@@ -516,9 +516,11 @@ impl LongRunNote {
     }
 }
 
-/// "3.2 s", "12 min", "5.4 h", "3.1 days".
+/// "40 ms", "3.2 s", "12 min", "5.4 h", "3.1 days".
 fn duration_text(secs: f64) -> String {
-    if secs < 60.0 {
+    if secs < 1.0 {
+        format!("{:.0} ms", secs * 1000.0)
+    } else if secs < 60.0 {
         format!("{secs:.1} s")
     } else if secs < 3600.0 {
         format!("{:.0} min", secs / 60.0)

@@ -395,9 +395,14 @@ impl DlaIndex {
     /// Makes the dense grid cover radius `r` (within the memory budget).
     fn cover(&mut self, r: f64) {
         let want = 2 * ((r * 1.25 + 2.0) / self.cell).ceil() as i64 + 4;
-        if want <= self.side || (want as usize).pow(3) > DLA_NEAR_CELLS {
+        let most = (DLA_NEAR_CELLS as f64).cbrt().round() as i64;
+        if want <= self.side || want > most {
             return;
         }
+        // At least half as wide again: a cluster growing node by node marks its cells a few
+        // times, not at every node (the grid only speeds the search up; any size finds the
+        // same nodes).
+        let want = want.max(self.side + self.side / 2).min(most);
         self.side = want;
         self.near = vec![false; (want as usize).pow(3)];
         let keys: Vec<_> = self.cells.keys().copied().collect();
