@@ -319,7 +319,7 @@ const DLA_MAX_MISSES: usize = 100_000;
 
 /// Gives up growing after this many walker steps in all (parameters that keep walkers
 /// wandering, e.g. a force cancelling their moves, would otherwise take hours).
-const DLA_MAX_STEPS: u64 = 30_000_000;
+const DLA_MAX_STEPS: u64 = 10_000_000;
 
 /// Most nodes of the aggregate (the node count is a table size; the step budget above ends the
 /// growth long before a larger one).
