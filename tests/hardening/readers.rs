@@ -23,65 +23,59 @@ fn timed<T, E: std::fmt::Display>(
     r
 }
 
+/// CPU time the calling thread has used.
+fn thread_cpu_time() -> Duration {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: clock_gettime only writes the timespec it is given.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID)");
+    Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+}
+
 /// Read `make(n)` and `make(n / 4)`: four times the entries must take about four times as
-/// long (a quadratic reader takes sixteen times; ten is allowed for a busy machine and the
-/// caches). Returns the result for `n`.
+/// long (a quadratic reader takes sixteen times). Returns the result for `n`.
 fn linear<T, E: std::fmt::Display>(
     what: &str,
     n: usize,
     make: impl Fn(usize) -> String,
     read: impl Fn(&str) -> Result<T, E>,
 ) -> T {
-    let (small, large) = (make(n / 4), make(n));
-    let time = |text: &str| {
-        let t = thread_cpu_time();
-        let r = read(text);
-        (thread_cpu_time() - t, r)
+    let time = |k: usize| {
+        let text = make(k);
+        // The best of three, in this thread's CPU time: a busy machine preempts long runs more
+        // often than short ones, which skews wall-clock ratios, not CPU time.
+        let mut best = Duration::MAX;
+        let mut out = None;
+        for _ in 0..3 {
+            let t = thread_cpu_time();
+            let r = read(&text);
+            best = best.min(thread_cpu_time().saturating_sub(t));
+            out = Some(r);
+        }
+        (best, text.len(), out.unwrap())
     };
-    // The best of five of each, taken in turns, in the processor time of this thread: the
-    // other tests running meanwhile do not count.
-    let (mut quarter, mut full) = (Duration::MAX, Duration::MAX);
-    let mut out = None;
-    for _ in 0..5 {
-        quarter = quarter.min(time(&small).0);
-        let (t, r) = time(&large);
-        full = full.min(t);
-        out = Some(r);
-    }
+    let (quarter, _, _) = time(n / 4);
+    let (full, bytes, r) = time(n);
     println!(
         "{what}: {n} in {:.3} s ({:.1} MiB), {} in {:.3} s",
         full.as_secs_f64(),
-        large.len() as f64 / (1 << 20) as f64,
+        bytes as f64 / (1 << 20) as f64,
         n / 4,
         quarter.as_secs_f64()
     );
     assert!(
-        full < quarter * 10 + Duration::from_millis(30),
+        full < quarter * 8 + Duration::from_millis(30),
         "{what}: {n} took {full:?}, {} took {quarter:?}: not linear",
         n / 4
     );
     assert!(full < Duration::from_secs(5), "{what} took {full:?}");
-    match out.unwrap() {
+    match r {
         Ok(v) => v,
         Err(e) => panic!("{what}: {e}"),
     }
-}
-
-/// The processor time this thread has used (the wall clock where it is not known).
-pub(super) fn thread_cpu_time() -> Duration {
-    #[cfg(unix)]
-    {
-        let mut t = libc::timespec {
-            tv_sec: 0,
-            tv_nsec: 0,
-        };
-        // SAFETY: clock_gettime fills the struct it is given.
-        if unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) } == 0 {
-            return Duration::new(t.tv_sec as u64, t.tv_nsec as u32);
-        }
-    }
-    static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
-    START.get_or_init(Instant::now).elapsed()
 }
 
 fn ifs_text(entries: usize, rows: usize) -> String {
