@@ -52,6 +52,7 @@ enum Command {
 }
 
 fn main() {
+    cli::fit_allocator_to_address_limit();
     // Usage errors exit with status 1 and one message, like every other bad input; --help and
     // --version print to stdout and exit 0.
     let cli = match Cli::try_parse() {

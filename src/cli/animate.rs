@@ -457,8 +457,12 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         blur: !a.no_blur,
     };
     let pb = super::progress_bar(job.frames.len() as u64, "animating");
+    let mut long = LongRunNote::new();
     let result = job.run(super::no_cancel(), |p| {
         pb.set_position(p.done as u64);
+        if let Some(note) = long.check(&p) {
+            pb.note(&note);
+        }
     });
     pb.finish_and_clear();
     match result {
@@ -470,5 +474,59 @@ pub fn run(a: AnimateArgs) -> Result<()> {
         }
         Err(AnimError::Interrupted) => Err(super::stopped_early()),
         Err(e) => Err(anyhow::anyhow!("{}: {e}", a.input.display())),
+    }
+}
+
+/// An estimate of the whole run once the first frame is rendered, said when the animation will
+/// take more than [`LongRunNote::SAID_FROM`] (a million frames are accepted, and take days).
+struct LongRunNote {
+    start: std::time::Instant,
+    said: bool,
+}
+
+impl LongRunNote {
+    /// Runs estimated to take longer than this are announced.
+    const SAID_FROM: std::time::Duration = std::time::Duration::from_secs(3600);
+
+    fn new() -> Self {
+        Self {
+            start: std::time::Instant::now(),
+            said: false,
+        }
+    }
+
+    /// The note to print after progress `p`, once.
+    fn check(&mut self, p: &ugnis::io::animation::Progress) -> Option<String> {
+        let rendered = p.done.saturating_sub(p.skipped);
+        if self.said || rendered == 0 {
+            return None;
+        }
+        self.said = true;
+        let each = self.start.elapsed().as_secs_f64() / rendered as f64;
+        let left = each * (p.total - p.done) as f64;
+        (left > Self::SAID_FROM.as_secs_f64()).then(|| {
+            format!(
+                "warning: {} frames at about {} each will take about {}; frames already \
+                 written are kept if you stop (Ctrl+C) and skipped when run again",
+                p.total,
+                duration_text(each),
+                duration_text(left)
+            )
+        })
+    }
+}
+
+/// "40 ms", "3.2 s", "12 min", "5.4 h", "3.1 days".
+fn duration_text(secs: f64) -> String {
+    if secs < 1.0 {
+        format!("{:.0} ms", secs * 1000.0)
+    } else if secs < 60.0 {
+        format!("{secs:.1} s")
+    } else if secs < 3600.0 {
+        format!("{:.0} min", secs / 60.0)
+    } else if secs < 48.0 * 3600.0 {
+        format!("{:.1} h", secs / 3600.0)
+    } else {
+        format!("{:.1} days", secs / 86400.0)
     }
 }

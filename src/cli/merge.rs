@@ -104,10 +104,11 @@ pub fn run(a: MergeArgs) -> Result<()> {
     let opts = RenderOptions {
         threads: 1,
         memory_limit: a.memory_limit,
+        save_state: a.save_state.is_some(),
         format,
         ..RenderOptions::default()
     };
-    let k = super::render::choose_strips(&flame, &opts, a.strips, "merging")?;
+    let (k, _) = super::render::choose_strips(&flame, &opts, a.strips, "merging")?;
     let plan = strips::plan(&flame, k)?;
     let geom = geometry_of(&flame)?;
     let density = merged.density();

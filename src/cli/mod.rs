@@ -155,6 +155,14 @@ impl Progress {
         }
     }
 
+    /// A line on stderr above the bar (which is drawn again below it).
+    pub fn note(&self, line: &str) {
+        match &self.inner {
+            Inner::Bar(b) => b.suspend(|| stderr!("{line}")),
+            _ => stderr!("{line}"),
+        }
+    }
+
     pub fn finish_and_clear(&self) {
         if let Inner::Bar(b) = &self.inner {
             b.finish_and_clear();
@@ -205,6 +213,26 @@ pub fn no_cancel() -> &'static AtomicBool {
 /// The error of a render that stopped before its end although nothing cancelled it.
 pub fn stopped_early() -> anyhow::Error {
     anyhow::anyhow!("the render stopped before its end")
+}
+
+/// Under an address-space limit (`ulimit -v`, `prlimit --as`), keep glibc to two malloc
+/// arenas. glibc gives every thread that allocates an arena of its own, reserving 64 MiB of
+/// address space apiece: with a few render threads that is the address space the memory
+/// estimate counted for the render, and a render chosen to fit would fail to allocate. The
+/// render threads allocate their buffers before they start, so two arenas cost nothing.
+pub fn fit_allocator_to_address_limit() {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    // SAFETY: getrlimit fills the struct it is given; mallopt only sets a tuning value, and
+    // runs before any other thread exists.
+    unsafe {
+        let mut r = libc::rlimit {
+            rlim_cur: 0,
+            rlim_max: 0,
+        };
+        if libc::getrlimit(libc::RLIMIT_AS, &mut r) == 0 && r.rlim_cur != libc::RLIM_INFINITY {
+            libc::mallopt(libc::M_ARENA_MAX, 2);
+        }
+    }
 }
 
 /// Resolve a thread count (0: all cores), clamped to a sane maximum with a warning.

@@ -178,26 +178,28 @@ impl Source {
     }
 }
 
-/// How many strips: the asked number, or the fewest that fit in memory (1 when all fits).
+/// How many strips: the asked number, or the fewest that fit in memory (1 when all fits),
+/// with the options to render them with (for a chosen number, the budget it was chosen for:
+/// see [`strips::Fit::options`]).
 pub fn choose_strips(
     flame: &Flame,
     opts: &RenderOptions,
     asked: Option<usize>,
     what: &str,
-) -> Result<usize> {
+) -> Result<(usize, RenderOptions)> {
     if let Some(k) = asked {
         strips::plan(flame, k)?;
-        return Ok(k);
+        return Ok((k, opts.clone()));
     }
     let fit = strips::fit(flame, opts)?;
     if fit.strips > 1 {
         stderr!(
-            "{what}: {}: rendering in {} strips",
+            "{what}: {}: rendering in {} strips (each iterates all the samples again)",
             fit.describe(),
             fit.strips
         );
     }
-    Ok(fit.strips)
+    Ok((fit.strips, fit.options(opts)))
 }
 
 pub fn run(a: RenderArgs) -> Result<()> {
@@ -282,6 +284,7 @@ pub fn run(a: RenderArgs) -> Result<()> {
         threads: super::threads(a.threads),
         memory_limit: a.memory_limit,
         keep_samples: false,
+        save_state: a.save_state.is_some(),
         format: OutputFormat {
             bits16: a.bits16,
             transparent: a.transparent,
@@ -296,7 +299,7 @@ pub fn run(a: RenderArgs) -> Result<()> {
     // Settings errors (size, quality…) first, with their own message.
     ugnis::flame::render::validate_settings(&flame)
         .with_context(|| format!("cannot render '{}'", flame.name))?;
-    let k = choose_strips(&flame, &opts, a.strips, &format!("rendering {label}"))?;
+    let (k, opts) = choose_strips(&flame, &opts, a.strips, &format!("rendering {label}"))?;
     // The image and the state are put in place together, or neither.
     let held = io::atomic::hold();
     if k == 1 {

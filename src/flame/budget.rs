@@ -8,6 +8,25 @@ use crate::flame::plot::Pending;
 use crate::flame::settings::{MAX_KEPT_SAMPLES, RenderError, RenderOptions};
 use crate::threads::Threads;
 
+/// Bucket rows of one compressed chunk of a saved render state.
+pub const SAVE_CHUNK_ROWS: u64 = 32;
+
+/// Most bytes the chunks of a render state being saved hold at once. The writer compresses
+/// [`save_chunks_in_flight`] chunks in parallel; each holds up to twice its size (its packed
+/// copy and the compressor's output) until it is written.
+pub const SAVE_BUFFER_BYTES: u64 = 64 << 20;
+
+/// The PNG compressor's own state and output buffer (the fast deflate ugnis writes with),
+/// besides the rows it filters and, for a whole picture, its compressed data.
+pub const PNG_ENCODER_BYTES: u64 = 64 << 10;
+
+/// How many chunks of `chunk_bytes` the state writer compresses at once on `threads`
+/// threads: two per thread, as far as [`SAVE_BUFFER_BYTES`] allows, and at least one.
+pub fn save_chunks_in_flight(chunk_bytes: u64, threads: usize) -> usize {
+    let fit = SAVE_BUFFER_BYTES / (2 * chunk_bytes).max(1);
+    (2 * threads.max(1)).min(fit.max(1) as usize)
+}
+
 /// Memory the buffers of a render will need, in bytes, part by part.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MemoryEstimate {
@@ -21,6 +40,11 @@ pub struct MemoryEstimate {
     pub develop: u64,
     /// The output image and the copy made while encoding it.
     pub image: u64,
+    /// The encoders' working memory: the PNG compressor with the rows it filters (a whole
+    /// picture is compressed into memory before it is written: up to its own size) and, when
+    /// a render state is saved, the chunks being compressed ([`save_chunks_in_flight`] on the
+    /// pool the save runs on: at most [`SAVE_BUFFER_BYTES`] unless one chunk is larger).
+    pub encoder: u64,
     /// Kept samples for recolouring (0 unless asked for).
     pub kept_samples: u64,
     /// Bytes in all.
@@ -93,6 +117,19 @@ pub fn estimate_memory_rows(
     let channels = if opts.format.transparent { 4 } else { 3 };
     let depth = if opts.format.bits16 { 2 } else { 1 };
     let image = px.saturating_mul(channels * depth * 2);
+    let png = PNG_ENCODER_BYTES
+        + match rows {
+            Some(_) => 4 * flame.width as u64 * channels * depth,
+            None => px.saturating_mul(channels * depth),
+        };
+    let encoder = if opts.save_state {
+        // The pool a save compresses on (the global one: as many threads as cores).
+        let chunk = SAVE_CHUNK_ROWS.saturating_mul(bw).saturating_mul(bucket);
+        let in_flight = save_chunks_in_flight(chunk, rayon::current_num_threads()) as u64;
+        (2 * chunk).saturating_mul(in_flight).saturating_add(png)
+    } else {
+        png
+    };
     let samples = flame.total_samples();
     let kept_samples = if opts.keep_samples && samples <= MAX_KEPT_SAMPLES {
         samples * std::mem::size_of::<Pending>() as u64
@@ -105,10 +142,12 @@ pub fn estimate_memory_rows(
         workers,
         develop,
         image,
+        encoder,
         kept_samples,
         total: workers
             .saturating_add(develop)
             .saturating_add(image)
+            .saturating_add(encoder)
             .saturating_add(kept_samples),
     }
 }

@@ -42,7 +42,8 @@ use crate::flame::strips::Strip;
 use crate::flame::tonemap::OutputFormat;
 
 pub use crate::flame::budget::{
-    MemoryEstimate, available_memory, check_memory, estimate_memory, estimate_memory_rows,
+    MemoryEstimate, PNG_ENCODER_BYTES, SAVE_BUFFER_BYTES, SAVE_CHUNK_ROWS, available_memory,
+    check_memory, estimate_memory, estimate_memory_rows, save_chunks_in_flight,
 };
 pub use crate::flame::develop::{develop, develop_rows};
 pub use crate::flame::settings::{

@@ -25,6 +25,9 @@ pub struct RenderOptions {
     /// Keep every plotted sample (12 bytes each) so that `Renderer::recolor` can change the
     /// palette without iterating again. Ignored above [`MAX_KEPT_SAMPLES`].
     pub keep_samples: bool,
+    /// The render state will be saved: the memory estimate counts the buffers its writer
+    /// compresses in (see [`crate::flame::render::SAVE_BUFFER_BYTES`]).
+    pub save_state: bool,
 }
 
 /// Largest render whose samples are kept for recolouring.
@@ -48,6 +51,7 @@ impl Default for RenderOptions {
             memory_limit: None,
             format: OutputFormat::default(),
             keep_samples: false,
+            save_state: false,
         }
     }
 }

@@ -71,6 +71,10 @@ pub fn strips_for_budget(
 ) -> Result<Option<usize>, RenderError> {
     let h = (flame.height as usize).clamp(1, MAX_STRIPS);
     let fits = |k: usize| -> Result<bool, RenderError> {
+        if k == 1 {
+            // One strip is the whole render, checked as such (its picture is encoded whole).
+            return Ok(estimate_memory(flame, opts).total <= budget);
+        }
         let strips = plan(flame, k)?;
         let worst = strips
             .iter()
@@ -132,6 +136,19 @@ pub struct Fit {
 }
 
 impl Fit {
+    /// The options to render with: the budget the strips were chosen for. Each strip's check
+    /// ([`check_memory_rows`]) then compares the same estimate with the same budget as the
+    /// choice did, instead of measuring again once the render's threads run — the address
+    /// space their stacks and allocator arenas take is what the budget's headroom allowed
+    /// for (see [`crate::memory::ADDRESS_SPACE_HEADROOM`]), and taking it twice refused
+    /// strips that fit.
+    pub fn options(&self, opts: &RenderOptions) -> RenderOptions {
+        RenderOptions {
+            memory_limit: Some(self.budget.bytes),
+            ..opts.clone()
+        }
+    }
+
     /// "needs about 3.1 GiB at once, 2 GiB available (memory limit)".
     pub fn describe(&self) -> String {
         format!(
@@ -196,5 +213,44 @@ mod tests {
         }
         assert!(plan(&f, 0).is_err());
         assert!(plan(&f, 49).is_err());
+    }
+
+    #[test]
+    fn the_chosen_strips_pass_their_own_check_and_are_the_fewest() {
+        let f = Flame {
+            width: 800,
+            height: 600,
+            supersample: 2,
+            estimator_radius: 9.0,
+            ..Flame::default()
+        };
+        let whole = estimate_memory(&f, &RenderOptions::default()).total;
+        for (share, save_state) in [(0.9, false), (0.5, true), (0.3, false), (0.2, true)] {
+            let opts = RenderOptions {
+                threads: 2,
+                memory_limit: Some((whole as f64 * share) as u64),
+                save_state,
+                ..RenderOptions::default()
+            };
+            let fit = fit(&f, &opts).unwrap();
+            assert!(fit.strips > 1, "{share}");
+            let strip_opts = fit.options(&opts);
+            for s in plan(&f, fit.strips).unwrap() {
+                check_memory_rows(&f, &strip_opts, &s).unwrap();
+            }
+            // One strip fewer does not fit (one strip is the whole render, checked whole).
+            let fewer = plan(&f, fit.strips - 1).unwrap();
+            assert!(
+                if fit.strips == 2 {
+                    check_memory(&f, &strip_opts).is_err()
+                } else {
+                    fewer
+                        .iter()
+                        .any(|s| check_memory_rows(&f, &strip_opts, s).is_err())
+                },
+                "{share}: {} strips would have fitted",
+                fit.strips - 1
+            );
+        }
     }
 }

@@ -179,3 +179,30 @@ fn a_signal_while_ffmpeg_encodes_leaves_whole_frames_and_no_video() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// An animation of millions of frames says, after its first frame, how long it will take (and
+/// that stopping keeps the frames written); the most frames a command accepts is said too.
+#[test]
+fn a_huge_animation_says_how_long_it_will_take() {
+    let dir = common::temp_dir("hard-anim-long");
+    let f = small_flame(&dir, "1");
+    let frames = dir.join("frames");
+    let (code, err, _) = signal_when(
+        &[
+            "animate",
+            s(&f),
+            "--frames",
+            "10000000",
+            "--size",
+            "32x24",
+            "-o",
+            s(&frames),
+        ],
+        "will take about",
+        "TERM",
+    );
+    assert_eq!(code, Some(143), "{err}");
+    let (code, _, err) = ugnis(&["animate", s(&f), "--frames", "10000001", "-o", s(&frames)]);
+    assert_clean_error(code, &err, &["10000001 frames", "between 1 and 10000000"]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -56,12 +56,8 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("bubbleT3D", bubble_t3d)
         .params(&[
-            p_int(
-                "bubbleT3D_number_of_stripes",
-                0.0,
-                f64::NEG_INFINITY,
-                f64::INFINITY,
-            ),
+            // Each evaluation walks the stripes one by one.
+            p_int("bubbleT3D_number_of_stripes", 0.0, -1000.0, 1000.0).limited(),
             p_range("bubbleT3D_ratio_of_stripes", 1.0, 0.0, 2.0),
             p_range("bubbleT3D_angle_of_hole", 0.0, -360.0, 360.0),
             p("bubbleT3D_exponentZ", 1.0),

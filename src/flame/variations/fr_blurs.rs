@@ -10,6 +10,11 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 use super::util::{floor_f, floor_i64, rand_size, sign_nz, sqr, square_arc, trunc_i32, zeps};
 use super::*;
 
+/// Most edges (and stripes) of nBlur's polygon: each evaluation steps through the sectors one
+/// by one, and a polygon of 1,000 edges is a circle to within a twentieth of a pixel at a
+/// radius of 10,000 pixels.
+const NBLUR_MAX: f64 = 1000.0;
+
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("blur3D", blur3d)
         .batch(super::inline_batch!(blur3d))
@@ -54,8 +59,8 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("nBlur", nblur)
         .batch(super::inline_batch!(nblur))
         .params(&[
-            p_int("nBlur_numEdges", 3.0, NEG_INF, INF),
-            p_int("nBlur_numStripes", 0.0, NEG_INF, INF),
+            p_int("nBlur_numEdges", 3.0, -NBLUR_MAX, NBLUR_MAX).limited(),
+            p_int("nBlur_numStripes", 0.0, -NBLUR_MAX, NBLUR_MAX).limited(),
             p_range("nBlur_ratioStripes", 1.0, 0.0, 2.0),
             p_range("nBlur_ratioHole", 0.0, 0.0, 1.0),
             p_int("nBlur_circumCircle", 0.0, 0.0, 1.0),

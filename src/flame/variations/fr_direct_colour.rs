@@ -74,7 +74,8 @@ pub(super) static DEFS: &[VarDef] = &[
             p("dc_perlin_amps", 2.0),
             p("dc_perlin_freqs", 2.0),
             p("dc_perlin_z", 0.0),
-            p_int("dc_perlin_select_bailout", 10.0, 2.0, 1000.0),
+            // Rejection draws of 5 octaves of noise each: 100 are tens of microseconds.
+            p_int("dc_perlin_select_bailout", 10.0, 2.0, 100.0).limited(),
         ])
         .flags(flag::RANDOM | flag::SETS_COLOR)
         .prepare(dc_perlin_prepare),

@@ -400,7 +400,8 @@ fn circle_linear(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn circle_cell_rejects(m: i64, n: i64, x: f64, y: f64, sc: f64, dens: f64, seed: f64) -> bool {
     let u = (x * x + y * y).sqrt();
     lattice_noise_2d(trunc_i32(m as f64 + seed), n as i32) > dens
-        || u > (0.3 + 0.7 * lattice_noise_2d((m + 10) as i32, (n + 3) as i32)) * sc
+        || u > (0.3 + 0.7 * lattice_noise_2d(m.wrapping_add(10) as i32, n.wrapping_add(3) as i32))
+            * sc
 }
 
 /// A random point of one of the circles of the `CircleLinear` layout, within [−X, X]×[−Y, Y]
@@ -414,16 +415,16 @@ fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         y = ay * (1.0 - 2.0 * rng.f01());
         m = floor_i64(0.5 * x / sc);
         n = floor_i64(0.5 * y / sc);
-        x -= (m * 2 + 1) as f64 * sc;
-        y -= (n * 2 + 1) as f64 * sc;
+        x -= m.wrapping_mul(2).wrapping_add(1) as f64 * sc;
+        y -= n.wrapping_mul(2).wrapping_add(1) as f64 * sc;
         tries += 1;
         if tries > 10 || !circle_cell_rejects(m, n, x, y, sc, dens, seed) {
             break;
         }
     }
     [
-        v.w * (x + (m * 2 + 1) as f64 * sc),
-        v.w * (y + (n * 2 + 1) as f64 * sc),
+        v.w * (x + m.wrapping_mul(2).wrapping_add(1) as f64 * sc),
+        v.w * (y + n.wrapping_mul(2).wrapping_add(1) as f64 * sc),
         0.0,
     ]
 }
@@ -437,8 +438,8 @@ fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
     let uy = (t.y - ay) * 0.5 + ay;
     let m = floor_i64(0.5 * ux / sc);
     let n = floor_i64(0.5 * uy / sc);
-    let x = ux - (m * 2 + 1) as f64 * sc;
-    let y = uy - (n * 2 + 1) as f64 * sc;
+    let x = ux - m.wrapping_mul(2).wrapping_add(1) as f64 * sc;
+    let y = uy - n.wrapping_mul(2).wrapping_add(1) as f64 * sc;
     if circle_cell_rejects(m, n, x, y, sc, dens, seed) {
         return [v.w * ux, v.w * uy, 0.0];
     }
@@ -450,7 +451,7 @@ fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
         m = floor_i64(0.5 * px / sc);
         n = floor_i64(0.5 * py / sc);
         let alpha = TAU * rng.f01();
-        let u = 0.3 + 0.7 * lattice_noise_2d((m + 10) as i32, (n + 3) as i32);
+        let u = 0.3 + 0.7 * lattice_noise_2d(m.wrapping_add(10) as i32, n.wrapping_add(3) as i32);
         x = u * alpha.cos();
         y = u * alpha.sin();
         tries += 1;
@@ -459,8 +460,8 @@ fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
         }
     }
     [
-        v.w * (x + (m * 2 + 1) as f64 * sc),
-        v.w * (y + (n * 2 + 1) as f64 * sc),
+        v.w * (x + m.wrapping_mul(2).wrapping_add(1) as f64 * sc),
+        v.w * (y + n.wrapping_mul(2).wrapping_add(1) as f64 * sc),
         0.0,
     ]
 }

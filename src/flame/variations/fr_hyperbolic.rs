@@ -189,7 +189,7 @@ fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     let x = inv * fx + shift;
     let y = inv * fy;
     let k = v.w * scale / zeps(x * x + y * y);
-    let ang = (floor_i64(rng.f01() * p_) * 2 + 1) as f64 * PI / p_;
+    let ang = floor_i64(rng.f01() * p_).wrapping_mul(2).wrapping_add(1) as f64 * PI / p_;
     let bx = k * x + shift;
     let by = k * y;
     let (sa, ca) = ang.sin_cos();

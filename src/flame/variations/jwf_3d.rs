@@ -319,7 +319,14 @@ const DLA_MAX_MISSES: usize = 100_000;
 
 /// Gives up growing after this many walker steps in all (parameters that keep walkers
 /// wandering, e.g. a force cancelling their moves, would otherwise take hours).
-const DLA_MAX_STEPS: u64 = 300_000_000;
+const DLA_MAX_STEPS: u64 = 10_000_000;
+
+/// Most nodes of the aggregate (the node count is a table size; the step budget above ends the
+/// growth long before a larger one).
+const DLA_MAX_NODES: f64 = 20_000.0;
+
+/// Largest drift per step: a walker drifting further than this leaves the cluster at once.
+const DLA_MAX_FORCE: f64 = 1000.0;
 
 struct DlaNode {
     x: f64,
@@ -388,9 +395,14 @@ impl DlaIndex {
     /// Makes the dense grid cover radius `r` (within the memory budget).
     fn cover(&mut self, r: f64) {
         let want = 2 * ((r * 1.25 + 2.0) / self.cell).ceil() as i64 + 4;
-        if want <= self.side || (want as usize).pow(3) > DLA_NEAR_CELLS {
+        let most = (DLA_NEAR_CELLS as f64).cbrt().round() as i64;
+        if want <= self.side || want > most {
             return;
         }
+        // At least half as wide again: a cluster growing node by node marks its cells a few
+        // times, not at every node (the grid only speeds the search up; any size finds the
+        // same nodes).
+        let want = want.max(self.side + self.side / 2).min(most);
         self.side = want;
         self.near = vec![false; (want as usize).pow(3)];
         let keys: Vec<_> = self.cells.keys().copied().collect();
@@ -670,16 +682,16 @@ fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 const INT_ANY: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
 
 const P_DLA: &[Param] = &[
-    p_int("dla3d_wf_max_iter", 320.0, INT_ANY.0, INT_ANY.1),
+    p_int("dla3d_wf_max_iter", 320.0, INT_ANY.0, DLA_MAX_NODES).limited(),
     p_int("dla3d_wf_seed", 1234.0, INT_ANY.0, INT_ANY.1),
     p("dla3d_wf_inner_blur_radius", 0.5),
     p("dla3d_wf_outer_blur_radius", 0.01),
     p("dla3d_wf_junction_scale", 1.4),
     p_int("dla3d_wf_dc_color", 1.0, INT_ANY.0, INT_ANY.1),
     p("dla3d_wf_glue_radius", 1.0),
-    p("dla3d_wf_force_x", 0.0),
-    p("dla3d_wf_force_y", 0.0),
-    p("dla3d_wf_force_z", 0.0),
+    p_range("dla3d_wf_force_x", 0.0, -DLA_MAX_FORCE, DLA_MAX_FORCE),
+    p_range("dla3d_wf_force_y", 0.0, -DLA_MAX_FORCE, DLA_MAX_FORCE),
+    p_range("dla3d_wf_force_z", 0.0, -DLA_MAX_FORCE, DLA_MAX_FORCE),
     p_int("dla3d_wf_display_nodes", 1.0, INT_ANY.0, INT_ANY.1),
     p_int("dla3d_wf_display_junctions", 1.0, INT_ANY.0, INT_ANY.1),
     p_int("dla3d_wf_single_thread", 0.0, INT_ANY.0, INT_ANY.1),

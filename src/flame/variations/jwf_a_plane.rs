@@ -265,7 +265,7 @@ fn scrambly_shuffle(mx: &mut [i32], lo: usize, hi: usize, seed: i32) {
 fn scrambly_prepare(v: &mut Prepared) {
     let [l, seed, byrows, cellsize] = v.params();
     let (l, seed, byrows) = (l as i32, seed as i32, byrows as i32);
-    let ll = l.abs().clamp(3, SCRAMBLY_MAX_L);
+    let ll = l.saturating_abs().clamp(3, SCRAMBLY_MAX_L);
     let ll2 = (ll * ll) as usize;
     let mut mx: Vec<i32> = (0..ll2 as i32).collect();
     if (0..=50).contains(&seed) {

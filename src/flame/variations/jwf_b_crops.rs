@@ -115,7 +115,7 @@ fn fold(p: (f64, f64), k: (f64, f64)) -> (f64, f64) {
 
 /// The signed distance to the edge segment |x| ≤ half at height r of a folded point.
 fn edge(p: (f64, f64), lo: f64, hi: f64, r: f64) -> f64 {
-    let (x, y) = (p.0 - p.0.clamp(lo, hi), p.1 - r);
+    let (x, y) = (p.0 - p.0.max(lo).min(hi), p.1 - r);
     (x * x + y * y).sqrt() * gsign(y)
 }
 

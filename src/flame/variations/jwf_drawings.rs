@@ -56,8 +56,8 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(nsudoku_prepare),
     VarDef::new("snowflake_wf", snowflake_wf)
         .params(&[
-            p_int("snowflake_wf_buffer_size", 128.0, 1.0, 2048.0),
-            p_int("snowflake_wf_max_iter", 500.0, 0.0, 100_000.0),
+            p_int("snowflake_wf_buffer_size", 128.0, 1.0, 1024.0).limited(),
+            p_int("snowflake_wf_max_iter", 500.0, 0.0, 100_000.0).limited(),
             p("snowflake_wf_bg_freeze_level", 0.5),
             p("snowflake_wf_fg_freeze_speed", 0.0005),
             p("snowflake_wf_diffusion_speed", 0.01),
@@ -364,6 +364,10 @@ fn nsudoku(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     ]
 }
 
+/// Most cell updates of a snow crystal's growth (four times those of the default 128-cell
+/// grid grown 500 times: a few seconds).
+const SNOW_MAX_WORK: usize = 1 << 27;
+
 /// Ratio JWildfire uses to lay the hexagonal grid out on a square canvas.
 const SNOW_STRETCH: f64 = 1.5 / 1.7321;
 
@@ -382,9 +386,10 @@ fn snow_crystal(q: &[f64]) -> Vec<Vec<f32>> {
         seed,
     ] = params_of(q);
     let w = size.max(1.0) as usize;
-    let iters = max_iter.max(0.0) as usize;
     let h = 2 * w - 1;
     let cells = w * h + (w - 1) * (h - 1);
+    // The growth costs cells × iterations; a large grid gets fewer iterations.
+    let iters = (max_iter.max(0.0) as usize).min(SNOW_MAX_WORK / cells.max(1));
     let (wi, ci) = (w as i64, cells as i64);
     let offsets = [-wi - (wi - 1), -(wi - 1), wi, wi + (wi - 1), wi - 1, -wi];
     let neighbour = |n: usize, k: usize| -> Option<usize> {

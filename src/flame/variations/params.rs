@@ -53,11 +53,33 @@ pub struct Param {
     pub min: f64,
     /// Upper end of the range (may be `inf`).
     pub max: f64,
+    /// The parameter sets a count, a loop bound, a recursion depth or a table size, and the
+    /// range is what the variation can use: a stored value outside it is reported when a file
+    /// is read (see [`Param::limited`]).
+    pub limited: bool,
 }
 
 impl Param {
-    /// The value a formula sees for the stored value `v`.
+    /// The same parameter marked as a count, loop bound, recursion depth or table size whose
+    /// range is what the variation can use, chosen so that no stored value makes one
+    /// evaluation (or the preparation of the variation) take more than a moment.
+    pub const fn limited(self) -> Param {
+        Param {
+            limited: true,
+            ..self
+        }
+    }
+
+    /// Is the stored value `v` outside the range of a [limited](Param::limited) parameter (the
+    /// variation will use the nearest bound)?
+    pub fn beyond_limit(&self, v: f64) -> bool {
+        self.limited && (v > self.max + 0.5 || v < self.min - 0.5)
+    }
+
+    /// The value a formula sees for the stored value `v` (a value that is not a number takes
+    /// the default).
     pub fn normalise(&self, v: f64) -> f64 {
+        let v = if v.is_nan() { self.default } else { v };
         let (lo, hi) = (self.min, self.max);
         match self.kind {
             ParamKind::Real => v.clamp(lo, hi),
@@ -110,6 +132,7 @@ pub const fn p(name: &'static str, default: f64) -> Param {
         kind: ParamKind::Real,
         min: f64::MIN,
         max: f64::MAX,
+        limited: false,
     }
 }
 
@@ -121,6 +144,7 @@ pub const fn p_range(name: &'static str, default: f64, min: f64, max: f64) -> Pa
         kind: ParamKind::Real,
         min,
         max,
+        limited: false,
     }
 }
 
@@ -132,6 +156,7 @@ pub const fn p_cyclic(name: &'static str, default: f64, min: f64, max: f64) -> P
         kind: ParamKind::Cyclic,
         min,
         max,
+        limited: false,
     }
 }
 
@@ -143,6 +168,7 @@ pub const fn p_nonzero(name: &'static str, default: f64, min: f64, max: f64) -> 
         kind: ParamKind::NonZero,
         min,
         max,
+        limited: false,
     }
 }
 
@@ -154,6 +180,7 @@ pub const fn p_int(name: &'static str, default: f64, min: f64, max: f64) -> Para
         kind: ParamKind::Int,
         min,
         max,
+        limited: false,
     }
 }
 
@@ -165,6 +192,7 @@ pub const fn p_int_nonzero(name: &'static str, default: f64, min: f64, max: f64)
         kind: ParamKind::IntNonZero,
         min,
         max,
+        limited: false,
     }
 }
 

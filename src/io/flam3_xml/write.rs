@@ -8,7 +8,7 @@ use super::anim::{write_anim_attrs, write_keys, write_motion};
 use super::jwf_curves;
 use super::{FLA_FORMAT, FlameFile};
 use crate::flame::model::{Flame, PaletteIndex, Xform};
-use crate::flame::variations;
+use crate::flame::variations::{self, Form, VarId};
 use crate::io::diag::fmt_num;
 use crate::io::xml::escape_attr;
 
@@ -231,17 +231,22 @@ fn write_xform(
     let names = var_names(x);
     for (v, name) in x.vars.iter().zip(&names) {
         let _ = write!(s, " {}=\"{}\"", name.weight, n(v.weight));
+        if let Some(p) = name.priority {
+            let pn = format!("{}_fx_priority", name.weight);
+            let _ = write!(s, " {pn}=\"{p}\"");
+            written.insert(pn);
+        }
     }
     for (v, name) in x.vars.iter().zip(names) {
         let def = variations::def_in(dialect, v.id, v.form);
         for (i, p) in def.params.iter().enumerate() {
-            let pn = name.of(variations::param_attr_name_in(dialect, v.id, v.form, i));
+            let pn = name.of(variations::param_attr_name_in(dialect, v.id, name.form, i));
             let value = v.params.get(i).copied().unwrap_or(p.default);
             let _ = write!(s, " {pn}=\"{}\"", n(value));
             written.insert(pn);
         }
         for (i, t) in v.texts.iter().enumerate() {
-            let tn = name.of(variations::text_attr_name(v.id, v.form, i));
+            let tn = name.of(variations::text_attr_name(v.id, name.form, i));
             let _ = write!(s, " {tn}=\"{}\"", text_to_hex(t));
             written.insert(tn);
         }
@@ -303,6 +308,11 @@ struct VarName {
     weight: String,
     /// `(variation name, index)` for a further use of the variation (JWildfire's `NAME#k#`).
     index: Option<(String, String)>,
+    /// The form the names are written in.
+    form: Form,
+    /// JWildfire's `NAME_fx_priority` (−1: `pre_`, 1: `post_`) when the prefixed name would
+    /// be read as another variation.
+    priority: Option<&'static str>,
 }
 
 impl VarName {
@@ -325,23 +335,48 @@ fn var_names(x: &Xform) -> Vec<VarName> {
     x.vars
         .iter()
         .map(|v| {
-            let name = v.attr_name();
+            let (name, form, priority) = names_of(v.id, v.form);
             let k = seen.iter().filter(|s| **s == name).count();
             seen.push(name.clone());
             if k == 0 {
                 VarName {
                     weight: name,
                     index: None,
+                    form,
+                    priority,
                 }
             } else {
                 let idx = format!("#{k}#");
                 VarName {
                     weight: format!("{name}{idx}"),
                     index: Some((name, idx)),
+                    form,
+                    priority,
                 }
             }
         })
         .collect()
+}
+
+/// The name variation `id` used in `form` is written under, the form of its parameters' names
+/// and its JWildfire priority mark. The prefixed name unless it means another variation
+/// (flam3's `pre_blur` is `gaussian_blur`'s `pre_` form, not `blur`'s): then the plain name,
+/// marked as JWildfire marks a variation run before or after the others.
+fn names_of(id: VarId, form: Form) -> (String, Form, Option<&'static str>) {
+    let own = variations::attr_name(id, form);
+    let plain = variations::attr_name(id, Form::Regular);
+    let mark = match form {
+        Form::Pre => "-1",
+        Form::Post => "1",
+        Form::Regular => "0",
+    };
+    if variations::parse_name(&own) == Some((id, form))
+        || variations::parse_name(&plain) != Some((id, Form::Regular))
+    {
+        (own, form, None)
+    } else {
+        (plain, Form::Regular, Some(mark))
+    }
 }
 
 fn to8(v: f64) -> u8 {

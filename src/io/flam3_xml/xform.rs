@@ -261,6 +261,15 @@ fn variation_attr(
         set_var(x, st, id, form, instance, w);
     } else if let Some((id, form, index)) = variations::param_of(base) {
         let value = cx.num(a)?;
+        let def = &variations::info(id).params[index];
+        if def.beyond_limit(value) && cx.reported_vars.insert(base.to_string()) {
+            let bound = if value > def.max { def.max } else { def.min };
+            cx.warn(
+                a.offset,
+                "XML026",
+                format!("{base}=\"{v}\" is outside what the variation can use; {bound} is used"),
+            );
+        }
         st.params.push(Param {
             id,
             form,

@@ -106,3 +106,18 @@ fn whole_colours_compress_better_than_their_fractions() {
     assert!(units * 10 < raw * 4, "{units} of {raw}");
     assert!(units * 10 < ones * 8, "{units} vs {ones}");
 }
+
+#[test]
+fn the_memory_estimate_counts_what_the_writer_holds() {
+    use crate::flame::render::{SAVE_BUFFER_BYTES, SAVE_CHUNK_ROWS, save_chunks_in_flight};
+    assert_eq!(SAVE_CHUNK_ROWS, CHUNK_ROWS as u64);
+    // Two chunks per thread while they fit in the save buffer, never none.
+    let chunk = |bw: u64| CHUNK_ROWS as u64 * bw * 16;
+    assert_eq!(save_chunks_in_flight(chunk(640), 4), 8);
+    let wide = save_chunks_in_flight(chunk(60_000), 32);
+    assert!(
+        wide as u64 * 2 * chunk(60_000) <= SAVE_BUFFER_BYTES,
+        "{wide}"
+    );
+    assert_eq!(save_chunks_in_flight(chunk(400_000), 32), 1);
+}

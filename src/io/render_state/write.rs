@@ -8,6 +8,7 @@ use rayon::prelude::*;
 use super::chunk::compress;
 use super::{CHUNK_ROWS, FORMAT_VERSION, LANE_SET_BYTES, MAGIC, check_saveable};
 use crate::flame::histogram::Bucket;
+use crate::flame::render::save_chunks_in_flight;
 use crate::flame::state::RenderState;
 
 /// The header text of a state.
@@ -85,8 +86,11 @@ impl<W: Write> StateWriter<W> {
         if !data.len().is_multiple_of(bw) || self.next_row + data.len() / bw > self.bh {
             return Err(std::io::Error::other("histogram rows do not fit the grid"));
         }
-        // Compress a group of chunks in parallel, then write them in order.
-        let group = CHUNK_ROWS * bw * rayon::current_num_threads().max(1) * 2;
+        // Compress a group of chunks in parallel, then write them in order: as many as the
+        // memory estimate of a render allows for (see `save_chunks_in_flight`).
+        let chunk_bytes = (CHUNK_ROWS * bw * std::mem::size_of::<Bucket>()) as u64;
+        let in_flight = save_chunks_in_flight(chunk_bytes, rayon::current_num_threads());
+        let group = CHUNK_ROWS * bw * in_flight;
         for part in data.chunks(group) {
             let packed: Vec<Vec<u8>> = part
                 .par_chunks(CHUNK_ROWS * bw)

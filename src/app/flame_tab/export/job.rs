@@ -246,6 +246,7 @@ fn start(
                 threads,
                 format,
                 memory_limit: s.memory_limit,
+                save_state: s.save_state,
                 ..RenderOptions::default()
             };
             let fit = strips::fit(&f, &opts).map_err(|e| e.to_string())?;
@@ -259,7 +260,7 @@ fn start(
                         fit.strips
                     ));
                 }
-                return Ok(Started::Strips(f, opts, fit));
+                return Ok(Started::Strips(f, fit.options(&opts), fit));
             }
             Ok(Started::Whole(Box::new(
                 Renderer::new(&f, &opts).map_err(|e| e.to_string())?,
