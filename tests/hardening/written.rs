@@ -67,7 +67,10 @@ fn every_variation_in_every_form_reads_back_equal() {
                     .enumerate()
                 {
                     let mut v = Var::with_form(id, form, 0.25 + k as f64 / 8.0);
-                    for (i, p) in v.params.iter_mut().enumerate() {
+                    // The parameters of its formula in a flam3 flame (a JWildfire twin's own
+                    // trailing ones are written only in JWildfire flames).
+                    let own = variations::info(id).params.len();
+                    for (i, p) in v.params.iter_mut().take(own).enumerate() {
                         *p += 0.5 + i as f64;
                     }
                     vars.push(v);
@@ -122,7 +125,8 @@ fn var_strategy(ids: Vec<u16>) -> impl Strategy<Value = Var> {
             let fs = forms(id);
             let weight = if weight == 0.0 { 1.0 } else { weight };
             let mut v = Var::with_form(id, fs[f % fs.len()], weight);
-            for (p, q) in v.params.iter_mut().zip(ps.iter().cycle()) {
+            let own = variations::info(id).params.len();
+            for (p, q) in v.params.iter_mut().take(own).zip(ps.iter().cycle()) {
                 *p = *q;
             }
             v
