@@ -65,10 +65,11 @@ pub fn batch_with(
     }
 }
 
-/// A [`BatchFn`] for the formula `$f` (an [`EvalFn`]-shaped function): on CPUs with AVX-512F
-/// or with AVX2 and FMA, [`batch_with`] with the formula inlined and compiled for them — no call
-/// through a pointer and no input record in memory per point; elsewhere [`generic_batch`] (one
-/// copy of the loop each keeps the build short). Every copy gives the same bits: Rust never
+/// A [`BatchFn`] for the formula `$f` (an [`EvalFn`]-shaped function): on CPUs with AVX2 and
+/// FMA, [`batch_with`] with the formula inlined and compiled for them — no call through a
+/// pointer and no input record in memory per point; elsewhere [`generic_batch`] (one copy of
+/// the loop each keeps the build short; an AVX-512 copy measured no faster for these
+/// variations, benches/variation_speed.md). Every copy gives the same bits: Rust never
 /// fuses a multiply and an add on its own. For the variations real files use most.
 macro_rules! inline_batch {
     ($f:path) => {{
@@ -87,15 +88,9 @@ macro_rules! inline_batch {
                 fn avx2(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
                     batch_with(v, s, acc, rng, $f)
                 }
-                #[target_feature(enable = "avx512f,avx2,fma")]
-                fn avx512(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
-                    batch_with(v, s, acc, rng, $f)
-                }
                 match simd() {
-                    // SAFETY: the CPU has reported AVX-512F (and AVX2 and FMA).
-                    Simd::Avx512 => return unsafe { avx512(v, s, acc, rng) },
-                    // SAFETY: the CPU has reported AVX2 and FMA.
-                    Simd::Avx2Fma => return unsafe { avx2(v, s, acc, rng) },
+                    // SAFETY: the CPU has reported AVX2 and FMA (AVX-512F implies them here).
+                    Simd::Avx512 | Simd::Avx2Fma => return unsafe { avx2(v, s, acc, rng) },
                     Simd::Baseline => {}
                 }
             }

@@ -421,12 +421,38 @@ fn batch<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut Fas
     #[cfg(target_arch = "x86_64")]
     match crate::flame::fastmath::simd() {
         // SAFETY: the CPU has reported AVX-512F (and AVX2 and FMA).
-        Simd::Avx512 => return unsafe { batch_avx512::<ID>(v, s, acc, rng) },
-        // SAFETY: the CPU has reported AVX2 and FMA.
-        Simd::Avx2Fma => return unsafe { batch_avx2::<ID>(v, s, acc, rng) },
+        Simd::Avx512 if wider_is_faster(ID) => {
+            return unsafe { batch_avx512::<ID>(v, s, acc, rng) };
+        }
+        // SAFETY: the CPU has reported AVX2 and FMA (AVX-512F implies them here).
+        Simd::Avx512 | Simd::Avx2Fma => return unsafe { batch_avx2::<ID>(v, s, acc, rng) },
         Simd::Baseline => {}
     }
     batch_loop::<ID>(v, s, acc, rng)
+}
+
+/// The variations whose AVX-512 loop measured at least 10 % faster than their AVX2 loop
+/// (benches/variation_speed.md); for the others (linear, spherical, polar, fisheye, juliascope
+/// among them) the eight-lane loop was slower, so the four-lane one runs.
+const fn wider_is_faster(id: u16) -> bool {
+    matches!(
+        id,
+        BLUR | SPIRAL
+            | DISC
+            | NOISE
+            | SWIRL
+            | DIAMOND
+            | EX
+            | EXPONENTIAL
+            | JULIA
+            | SINUSOIDAL
+            | ARCH
+            | BLADE
+            | HANDKERCHIEF
+            | SECANT2
+            | PIE
+            | CYLINDER
+    )
 }
 
 /// [`batch`] for CPUs with AVX2 and FMA.
