@@ -1,10 +1,11 @@
 //! Evaluating a regular variation on a batch of points: the generic loop calling the formula
 //! point by point, and [`inline_batch!`], which builds a loop with the formula inlined (compiled
-//! for AVX2 and FMA where the CPU has them) for the variations real files use most.
+//! for AVX-512 or AVX2 and FMA where the CPU has them) for the variations real files use most.
 
 use super::V3;
 use super::def::Prepared;
 use super::point::{Acc, SoaAcc, SoaIn, VarIn};
+use crate::flame::fastmath::{self, Simd};
 use crate::flame::rng::FastRng;
 
 impl Prepared {
@@ -65,10 +66,11 @@ pub fn batch_with(
 }
 
 /// A [`BatchFn`] for the formula `$f` (an [`EvalFn`]-shaped function): on CPUs with AVX2 and
-/// FMA, [`batch_with`] with the formula inlined — no call through a pointer and no input
-/// record in memory per point; elsewhere [`generic_batch`] (one copy of the loop each keeps the
-/// build short). Both give the same bits: Rust never fuses a multiply and an add on its own.
-/// For the variations real files use most.
+/// FMA, [`batch_with`] with the formula inlined and compiled for them — no call through a
+/// pointer and no input record in memory per point; elsewhere [`generic_batch`] (one copy of
+/// the loop each keeps the build short; an AVX-512 copy measured no faster for these
+/// variations, benches/variation_speed.md). Every copy gives the same bits: Rust never
+/// fuses a multiply and an add on its own. For the variations real files use most.
 macro_rules! inline_batch {
     ($f:path) => {{
         fn batch(
@@ -78,18 +80,19 @@ macro_rules! inline_batch {
             rng: &mut $crate::flame::rng::FastRng,
         ) {
             #[cfg(target_arch = "x86_64")]
-            if $crate::flame::fastmath::has_avx2_fma() {
+            {
+                use $crate::flame::fastmath::{Simd, simd};
+                use $crate::flame::rng::FastRng;
+                use $crate::flame::variations::{Prepared, SoaAcc, SoaIn, batch_with};
                 #[target_feature(enable = "avx2,fma")]
-                fn avx2(
-                    v: &$crate::flame::variations::Prepared,
-                    s: &$crate::flame::variations::SoaIn,
-                    acc: &mut $crate::flame::variations::SoaAcc,
-                    rng: &mut $crate::flame::rng::FastRng,
-                ) {
-                    $crate::flame::variations::batch_with(v, s, acc, rng, $f)
+                fn avx2(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
+                    batch_with(v, s, acc, rng, $f)
                 }
-                // SAFETY: the CPU has reported AVX2 and FMA.
-                return unsafe { avx2(v, s, acc, rng) };
+                match simd() {
+                    // SAFETY: the CPU has reported AVX2 and FMA (AVX-512F implies them here).
+                    Simd::Avx512 | Simd::Avx2Fma => return unsafe { avx2(v, s, acc, rng) },
+                    Simd::Baseline => {}
+                }
             }
             $crate::flame::variations::generic_batch(v, s, acc, rng)
         }
@@ -98,6 +101,75 @@ macro_rules! inline_batch {
 }
 pub(crate) use inline_batch;
 
+/// The batch inputs of the points `pts` (their derived quantities computed as the chaos loop
+/// computes them), as owned columns: x, y, z, r², r, x/r, y/r, atan2(x, y), atan2(y, x),
+/// colour.
+fn columns(pts: &[V3], color: f64) -> [Vec<f64>; 10] {
+    let ts: Vec<VarIn> = pts
+        .iter()
+        .map(|p| VarIn::new(p[0], p[1], p[2], color, 0xff, false))
+        .collect();
+    let col = |f: fn(&VarIn) -> f64| ts.iter().map(f).collect::<Vec<f64>>();
+    [
+        col(|t| t.x),
+        col(|t| t.y),
+        col(|t| t.z),
+        col(|t| t.sumsq),
+        col(|t| t.sqrt),
+        col(|t| t.ux),
+        col(|t| t.uy),
+        col(|t| t.atan_xy),
+        col(|t| t.atan_yx),
+        col(|t| t.color),
+    ]
+}
+
+/// Run `v` over the points `pts` (in groups of 256, as the chaos loop does) `reps` times, the
+/// batch loops of this thread limited to `simd`, through its batch loop (`batched`) or point by
+/// point through its formula's pointer; the seconds it took. For benches.
+pub fn time_batches(v: &Prepared, pts: &[V3], reps: usize, simd: Simd, batched: bool) -> f64 {
+    let [x, y, z, sumsq, sqrt, ux, uy, atan_xy, atan_yx, color] = columns(pts, 0.25);
+    let n = pts.len();
+    let (mut ax, mut ay, mut az) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let (mut ac, mut hide) = (color.clone(), vec![false; n]);
+    let mut rng = FastRng::new(1);
+    fastmath::limit_simd(simd);
+    let start = std::time::Instant::now();
+    for _ in 0..reps {
+        for g in (0..n).step_by(256) {
+            let r = g..n.min(g + 256);
+            let soa = SoaIn {
+                x: &x[r.clone()],
+                y: &y[r.clone()],
+                z: &z[r.clone()],
+                sumsq: &sumsq[r.clone()],
+                sqrt: &sqrt[r.clone()],
+                ux: &ux[r.clone()],
+                uy: &uy[r.clone()],
+                atan_xy: &atan_xy[r.clone()],
+                atan_yx: &atan_yx[r.clone()],
+                color: &color[r.clone()],
+            };
+            let mut acc = SoaAcc {
+                x: &mut ax[r.clone()],
+                y: &mut ay[r.clone()],
+                z: &mut az[r.clone()],
+                color: &mut ac[r.clone()],
+                hide: &mut hide[r],
+            };
+            if batched {
+                v.apply_batch(&soa, &mut acc, &mut rng);
+            } else {
+                generic_batch(v, &soa, &mut acc, &mut rng);
+            }
+        }
+    }
+    let secs = start.elapsed().as_secs_f64();
+    fastmath::limit_simd(Simd::Avx512);
+    std::hint::black_box((&ax, &ay, &az));
+    secs
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::{VarId, all};
@@ -105,9 +177,10 @@ mod tests {
     use crate::flame::affine::Affine;
     use crate::flame::variations::def::Form;
 
-    /// Every batch loop (compiled for AVX2 and FMA where the CPU has them) gives the same bits
-    /// as the formula called point by point (compiled for the baseline CPU), random
-    /// variations included: the chaos game's pictures do not depend on the CPU.
+    /// Every copy of every batch loop (baseline, AVX2 and FMA, AVX-512 as far as the CPU has
+    /// them) gives the same bits as the formula called point by point (compiled for the
+    /// baseline CPU), random variations included (their numbers drawn beforehand in the same
+    /// order): the chaos game's pictures do not depend on the CPU.
     #[test]
     fn batch_loops_match_the_formula_bit_for_bit() {
         let mut gen_rng = FastRng::new(3);
@@ -180,10 +253,15 @@ mod tests {
                 (ax, ay, az)
             };
             let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
-            let (b, g) = (run(true), run(false));
-            assert_eq!(bits(&b.0), bits(&g.0), "{} x", def.name);
-            assert_eq!(bits(&b.1), bits(&g.1), "{} y", def.name);
-            assert_eq!(bits(&b.2), bits(&g.2), "{} z", def.name);
+            let g = run(false);
+            for simd in [Simd::Baseline, Simd::Avx2Fma, Simd::Avx512] {
+                fastmath::limit_simd(simd);
+                let b = run(true);
+                fastmath::limit_simd(Simd::Avx512);
+                assert_eq!(bits(&b.0), bits(&g.0), "{} x {simd:?}", def.name);
+                assert_eq!(bits(&b.1), bits(&g.1), "{} y {simd:?}", def.name);
+                assert_eq!(bits(&b.2), bits(&g.2), "{} z {simd:?}", def.name);
+            }
             checked += 1;
         }
         // flam3's 99 and the 41 inlined loops of the variations real files use most.

@@ -157,7 +157,9 @@ mod noise;
 mod shared;
 pub(crate) mod util;
 
+pub use crate::flame::fastmath::Simd;
 pub(crate) use batch::inline_batch;
+pub use batch::time_batches;
 pub(crate) use batch::{batch_with, generic_batch};
 pub use def::{
     Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, Rules, VarDef, VarState, ZRule,

@@ -8,7 +8,86 @@ use crate::flame::affine::Affine;
 use crate::flame::fastmath as fm;
 use crate::flame::rng::FastRng;
 use crate::flame::variations::util::{rand_size, zeps};
+
 use crate::flame::variations::{Dialect, EPS, Form, Prepared, VarIn};
+
+/// Where a formula takes its random numbers: the generator itself, or the numbers a batch
+/// loop drew for its whole batch beforehand ([`Drawn`], in the same order, so both give the
+/// same bits). The defaults are [`FastRng`]'s own conversions.
+pub(super) trait Draws {
+    fn u64(&mut self) -> u64;
+    #[inline(always)]
+    fn f01(&mut self) -> f64 {
+        (self.u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+    #[inline(always)]
+    fn bit(&mut self) -> bool {
+        (self.u64() >> 63) != 0
+    }
+    /// [`rand_size`]: an integer in 0..n from one draw.
+    #[inline(always)]
+    fn rand_size(&mut self, n: f64) -> f64 {
+        let (u, k) = (self.u64(), n as u64);
+        if k == 0 {
+            (u >> 32) as u32 as f64
+        } else {
+            ((u as u128 * k as u128) >> 64) as f64
+        }
+    }
+}
+
+impl Draws for FastRng {
+    #[inline(always)]
+    fn u64(&mut self) -> u64 {
+        FastRng::u64(self)
+    }
+    #[inline(always)]
+    fn f01(&mut self) -> f64 {
+        FastRng::f01(self)
+    }
+    #[inline(always)]
+    fn bit(&mut self) -> bool {
+        FastRng::bit(self)
+    }
+    #[inline(always)]
+    fn rand_size(&mut self, n: f64) -> f64 {
+        rand_size(self, n)
+    }
+}
+
+/// The most raw draws one point of a flam3 variation takes (gaussian_blur's five).
+pub(super) const MAX_DRAWS: usize = 5;
+
+/// The raw 64-bit draws of one point, drawn beforehand, read in order.
+pub(super) struct Drawn<'a> {
+    pub(super) d: &'a [u64; MAX_DRAWS],
+    pub(super) pos: usize,
+}
+
+impl Draws for Drawn<'_> {
+    #[inline(always)]
+    fn u64(&mut self) -> u64 {
+        let u = self.d[self.pos];
+        self.pos += 1;
+        u
+    }
+}
+
+/// How many raw draws one point of variation `id` takes, for the variations that draw a fixed
+/// number whatever the point (0 for the others and for those that draw none): their batch
+/// loops draw them for the whole batch first, so that the formula's loop carries nothing from
+/// point to point and vectorises.
+pub(super) const fn draws(id: u16) -> usize {
+    match id {
+        JULIA | JULIAN | JULIASCOPE | ARCH | RAYS | BLADE | TWINTRIAN | SUPER_SHAPE | FLOWER
+        | CONIC | BOARDERS | CPOW | WEDGE_JULIA => 1,
+        NOISE | BLUR | SQUARE | PARABOLA => 2,
+        PIE => 3,
+        RADIAL_BLUR => 4,
+        GAUSSIAN_BLUR => 5,
+        _ => 0,
+    }
+}
 
 #[inline(always)]
 fn sincos(a: f64) -> (f64, f64) {
@@ -63,7 +142,7 @@ pub(super) fn formula(
     v: &Prepared,
     t: &VarIn,
     aff: &Affine,
-    rng: &mut FastRng,
+    rng: &mut impl Draws,
 ) -> (f64, f64) {
     let w = v.w;
     let (x, y) = (t.x, t.y);
@@ -256,7 +335,7 @@ pub(super) fn formula(
             let [abs_power, cn] = v.derived();
             let r = w * fm::pow_nonneg(t.sumsq, cn);
             let a = if v.compat {
-                let k = rand_size(rng, abs_power);
+                let k = rng.rand_size(abs_power);
                 (t.atan_yx + 2.0 * PI * k) / power
             } else {
                 let root = (power * rng.f01()).trunc();
@@ -732,7 +811,7 @@ pub(super) fn formula(
             let [angle, count, power] = v.params();
             let [cf, abs_power, cn] = v.derived();
             let r = w * fm::pow_nonneg(t.sumsq, cn);
-            let k = rand_size(rng, abs_power);
+            let k = rng.rand_size(abs_power);
             let mut a = (t.atan_yx + 2.0 * PI * k) / power;
             let c = ((count * a + PI) * (1.0 / PI) * 0.5).floor();
             a = a * cf + c * angle;

@@ -13,8 +13,10 @@ use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
 
 use super::util::zeps;
 use super::{Acc, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, flag, need, p, p_range};
+#[cfg(target_arch = "x86_64")]
+use crate::flame::fastmath::Simd;
 use crate::flame::rng::FastRng;
-use formulas::{formula, z_out};
+use formulas::{Drawn, MAX_DRAWS, draws, formula, z_out};
 
 mod formulas;
 mod fresh;
@@ -412,16 +414,45 @@ fn eval<const ID: u16>(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRn
 /// (One function per variation: inlining every formula into one loop let LLVM speculate the
 /// transcendental calls of other arms, which made every xform ~20x slower.)
 ///
-/// Compiled twice, for the baseline CPU and with AVX2 and FMA (four points per instruction
-/// instead of two), chosen at run time. Rust never fuses a multiply and an add on its own, so
-/// both copies give the same bits.
+/// Compiled three times, for the baseline CPU, with AVX2 and FMA (four points per
+/// instruction instead of two) and with AVX-512F (eight), chosen at run time. Rust never fuses
+/// a multiply and an add on its own, so every copy gives the same bits.
 fn batch<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
     #[cfg(target_arch = "x86_64")]
-    if crate::flame::fastmath::has_avx2_fma() {
-        // SAFETY: the CPU has reported AVX2 and FMA.
-        return unsafe { batch_avx2::<ID>(v, s, acc, rng) };
+    match crate::flame::fastmath::simd() {
+        // SAFETY: the CPU has reported AVX-512F (and AVX2 and FMA).
+        Simd::Avx512 if wider_is_faster(ID) => {
+            return unsafe { batch_avx512::<ID>(v, s, acc, rng) };
+        }
+        // SAFETY: the CPU has reported AVX2 and FMA (AVX-512F implies them here).
+        Simd::Avx512 | Simd::Avx2Fma => return unsafe { batch_avx2::<ID>(v, s, acc, rng) },
+        Simd::Baseline => {}
     }
     batch_loop::<ID>(v, s, acc, rng)
+}
+
+/// The variations whose AVX-512 loop measured at least 10 % faster than their AVX2 loop
+/// (benches/variation_speed.md); for the others (linear, spherical, polar, fisheye, juliascope
+/// among them) the eight-lane loop was slower, so the four-lane one runs.
+const fn wider_is_faster(id: u16) -> bool {
+    matches!(
+        id,
+        BLUR | SPIRAL
+            | DISC
+            | NOISE
+            | SWIRL
+            | DIAMOND
+            | EX
+            | EXPONENTIAL
+            | JULIA
+            | SINUSOIDAL
+            | ARCH
+            | BLADE
+            | HANDKERCHIEF
+            | SECANT2
+            | PIE
+            | CYLINDER
+    )
 }
 
 /// [`batch`] for CPUs with AVX2 and FMA.
@@ -431,31 +462,85 @@ fn batch_avx2<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mu
     batch_loop::<ID>(v, s, acc, rng)
 }
 
+/// [`batch`] for CPUs with AVX-512F.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx2,fma")]
+fn batch_avx512<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
+    batch_loop::<ID>(v, s, acc, rng)
+}
+
+/// The loop over the batch. A variation that draws a fixed number of random numbers per point
+/// ([`draws`]) gets them drawn for the whole batch first, in the order the formula would draw
+/// them (the same stream, the same bits): the formula's loop then vectorises.
 #[inline(always)]
 fn batch_loop<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
     let n = acc.x.len();
-    let (ax, ay) = (&mut acc.x[..n], &mut acc.y[..n]);
-    let (x, y, sumsq, sqrt) = (&s.x[..n], &s.y[..n], &s.sumsq[..n], &s.sqrt[..n]);
-    let (ux, uy, atan_xy, atan_yx) = (&s.ux[..n], &s.uy[..n], &s.atan_xy[..n], &s.atan_yx[..n]);
-    let (z, az) = (&s.z[..n], &mut acc.z[..n]);
-    for j in 0..n {
+    let d = draws(ID);
+    if d == 0 {
+        return batch_span::<ID>(v, s, acc, 0, n, |_, t| formula(ID, v, t, &v.aff, rng));
+    }
+    let mut drawn = [[0u64; MAX_DRAWS]; 256];
+    let mut start = 0;
+    while start < n {
+        let m = (n - start).min(drawn.len());
+        let drawn = &mut drawn[..m];
+        for p in drawn.iter_mut() {
+            for u in p[..d].iter_mut() {
+                *u = rng.u64();
+            }
+        }
+        let drawn = &*drawn;
+        batch_span::<ID>(v, s, acc, start, m, |i, t| {
+            let mut r = Drawn {
+                d: &drawn[i],
+                pos: 0,
+            };
+            formula(ID, v, t, &v.aff, &mut r)
+        });
+        start += m;
+    }
+}
+
+/// The formula `f(i, point)` over the `m` points of the batch from `start` on (`i` counts
+/// from 0).
+#[inline(always)]
+fn batch_span<const ID: u16>(
+    v: &Prepared,
+    s: &SoaIn,
+    acc: &mut SoaAcc,
+    start: usize,
+    m: usize,
+    mut f: impl FnMut(usize, &VarIn) -> (f64, f64),
+) {
+    let r = start..start + m;
+    let (ax, ay) = (&mut acc.x[r.clone()], &mut acc.y[r.clone()]);
+    let (x, y, sumsq, sqrt) = (
+        &s.x[r.clone()],
+        &s.y[r.clone()],
+        &s.sumsq[r.clone()],
+        &s.sqrt[r.clone()],
+    );
+    let (ux, uy) = (&s.ux[r.clone()], &s.uy[r.clone()]);
+    let (atan_xy, atan_yx) = (&s.atan_xy[r.clone()], &s.atan_yx[r.clone()]);
+    let (z, az) = (&s.z[r.clone()], &mut acc.z[r]);
+    for i in 0..m {
         let t = VarIn {
-            x: x[j],
-            y: y[j],
-            z: z[j],
-            sumsq: sumsq[j],
-            sqrt: sqrt[j],
-            ux: ux[j],
-            uy: uy[j],
-            atan_xy: atan_xy[j],
-            atan_yx: atan_yx[j],
+            x: x[i],
+            y: y[i],
+            z: z[i],
+            sumsq: sumsq[i],
+            sqrt: sqrt[i],
+            ux: ux[i],
+            uy: uy[i],
+            atan_xy: atan_xy[i],
+            atan_yx: atan_yx[i],
             color: 0.0,
         };
-        let (dx, dy) = formula(ID, v, &t, &v.aff, rng);
-        ax[j] += dx;
-        ay[j] += dy;
+        let (dx, dy) = f(i, &t);
+        ax[i] += dx;
+        ay[i] += dy;
         if writes_z(ID) {
-            az[j] += z_out(ID, v, &t);
+            az[i] += z_out(ID, v, &t);
         }
     }
 }
