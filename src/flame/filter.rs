@@ -101,9 +101,28 @@ pub fn support(shape: FilterShape) -> f64 {
     }
 }
 
-fn sinc(x: f64) -> f64 {
+pub(crate) fn sinc(x: f64) -> f64 {
     let x = x * PI;
     if x != 0.0 { x.sin() / x } else { 1.0 }
+}
+
+/// The Mitchell–Netravali cubic with parameters b and c at distance t ≥ 0.
+pub(crate) fn mitchell(t: f64, b: f64, c: f64) -> f64 {
+    let tt = t * t;
+    if t < 1.0 {
+        ((12.0 - 9.0 * b - 6.0 * c) * (t * tt)
+            + (-18.0 + 12.0 * b + 6.0 * c) * tt
+            + (6.0 - 2.0 * b))
+            / 6.0
+    } else if t < 2.0 {
+        ((-b - 6.0 * c) * (t * tt)
+            + (6.0 * b + 30.0 * c) * tt
+            + (-12.0 * b - 48.0 * c) * t
+            + (8.0 * b + 24.0 * c))
+            / 6.0
+    } else {
+        0.0
+    }
 }
 
 /// G(x) = e^(−2x²)·√(2/π).
@@ -157,25 +176,7 @@ pub fn kernel(shape: FilterShape, x: f64) -> f64 {
                 0.0
             }
         }
-        FilterShape::Mitchell => {
-            let (b, c) = (1.0 / 3.0, 1.0 / 3.0);
-            let t = x.abs();
-            let tt = t * t;
-            if t < 1.0 {
-                ((12.0 - 9.0 * b - 6.0 * c) * (t * tt)
-                    + (-18.0 + 12.0 * b + 6.0 * c) * tt
-                    + (6.0 - 2.0 * b))
-                    / 6.0
-            } else if t < 2.0 {
-                ((-b - 6.0 * c) * (t * tt)
-                    + (6.0 * b + 30.0 * c) * tt
-                    + (-12.0 * b - 48.0 * c) * t
-                    + (8.0 * b + 24.0 * c))
-                    / 6.0
-            } else {
-                0.0
-            }
-        }
+        FilterShape::Mitchell => mitchell(x.abs(), 1.0 / 3.0, 1.0 / 3.0),
         FilterShape::Blackman => 0.42 + 0.5 * (PI * x).cos() + 0.08 * (2.0 * PI * x).cos(),
         FilterShape::Catrom => {
             if x < -2.0 {

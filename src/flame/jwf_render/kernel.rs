@@ -4,6 +4,9 @@
 
 use std::f64::consts::PI;
 
+use crate::flame::FilterShape;
+use crate::flame::filter::{self, mitchell, sinc};
+
 /// A JWildfire filter kernel (`filter_kernel`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum JwfKernel {
@@ -146,47 +149,17 @@ impl JwfKernel {
     pub fn value(self, x: f64) -> f64 {
         let t = x.abs();
         match self {
-            JwfKernel::Bell => {
-                if t < 0.5 {
-                    0.75 - t * t
-                } else if t < 1.5 {
-                    0.5 * (t - 1.5) * (t - 1.5)
-                } else {
-                    0.0
-                }
-            }
+            JwfKernel::Bell => filter::kernel(FilterShape::Bell, x),
             JwfKernel::Blackman => {
                 sinc(x) * (0.42 + 0.5 * (PI * x).cos() + 0.08 * (2.0 * PI * x).cos())
             }
-            JwfKernel::Box => {
-                if x > -0.5 && x <= 0.5 {
-                    1.0
-                } else {
-                    0.0
-                }
-            }
-            JwfKernel::Bspline => {
-                if t < 1.0 {
-                    let tt = t * t;
-                    0.5 * tt * t - tt + 2.0 / 3.0
-                } else if t < 2.0 {
-                    let u = 2.0 - t;
-                    u * u * u / 6.0
-                } else {
-                    0.0
-                }
-            }
-            JwfKernel::Catrom => crate::flame::filter::kernel(crate::flame::FilterShape::Catrom, x),
-            JwfKernel::Gaussian => crate::flame::filter::gaussian(x),
+            JwfKernel::Box => filter::kernel(FilterShape::Box, x),
+            JwfKernel::Bspline => filter::kernel(FilterShape::Bspline, x),
+            JwfKernel::Catrom => filter::kernel(FilterShape::Catrom, x),
+            JwfKernel::Gaussian => filter::gaussian(x),
             JwfKernel::Hamming => sinc(x) * (0.54 + 0.46 * (PI * x).cos()),
             JwfKernel::Hanning => sinc(x) * (0.5 + 0.5 * (PI * x).cos()),
-            JwfKernel::Hermite => {
-                if t < 1.0 {
-                    (2.0 * t - 3.0) * t * t + 1.0
-                } else {
-                    0.0
-                }
-            }
+            JwfKernel::Hermite => filter::kernel(FilterShape::Hermite, x),
             JwfKernel::Lanczos2 => {
                 if t < 2.0 {
                     sinc(t / 2.0) * sinc(t) * sinc(t / 2.0)
@@ -203,44 +176,12 @@ impl JwfKernel {
             }
             JwfKernel::Mitchell => mitchell(t, 1.0 / 3.0, 1.0 / 3.0),
             JwfKernel::MitchellSmooth | JwfKernel::MitchellSinePow => mitchell(t, 0.42, 0.29),
-            JwfKernel::Quadratic => {
-                crate::flame::filter::kernel(crate::flame::FilterShape::Quadratic, x)
-            }
+            JwfKernel::Quadratic => filter::kernel(FilterShape::Quadratic, x),
             JwfKernel::SinePow5 => sine_pow(x, 5.0),
             JwfKernel::SinePow10 => sine_pow(x, 10.0),
             JwfKernel::SinePow15 => sine_pow(x, 15.0),
-            JwfKernel::Triangle => {
-                if t < 1.0 {
-                    1.0 - t
-                } else {
-                    0.0
-                }
-            }
+            JwfKernel::Triangle => filter::kernel(FilterShape::Triangle, x),
         }
-    }
-}
-
-fn sinc(x: f64) -> f64 {
-    let x = x * PI;
-    if x != 0.0 { x.sin() / x } else { 1.0 }
-}
-
-/// The Mitchell–Netravali cubic with parameters b and c at distance t ≥ 0.
-fn mitchell(t: f64, b: f64, c: f64) -> f64 {
-    let tt = t * t;
-    if t < 1.0 {
-        ((12.0 - 9.0 * b - 6.0 * c) * (t * tt)
-            + (-18.0 + 12.0 * b + 6.0 * c) * tt
-            + (6.0 - 2.0 * b))
-            / 6.0
-    } else if t < 2.0 {
-        ((-b - 6.0 * c) * (t * tt)
-            + (6.0 * b + 30.0 * c) * tt
-            + (-12.0 * b - 48.0 * c) * t
-            + (8.0 * b + 24.0 * c))
-            / 6.0
-    } else {
-        0.0
     }
 }
 
