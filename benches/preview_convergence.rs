@@ -19,33 +19,15 @@ use std::time::{Duration, Instant};
 use ugnis::app::Options;
 use ugnis::app::flame_tab::preview::{PreviewEvent, PreviewJob, PreviewWorker};
 use ugnis::flame::Flame;
-use ugnis::flame::random::{self, RandomOptions, VariationMode};
+
+#[path = "common/flames.rs"]
+mod common_flames;
+use common_flames::flames;
 use ugnis::flame::render::{RenderOptions, render};
 
 const W: u32 = 800;
 const H: u32 = 600;
 const THREADS: usize = 2;
-
-fn flames() -> Vec<(String, Flame)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
-    let mut out = Vec::new();
-    for name in ["orchid", "ember-swirl", "lagoon-post", "moss-classic"] {
-        let f = ugnis::io::read_flames(&dir.join(format!("{name}.flame")), &Default::default())
-            .expect("example")
-            .value
-            .remove(0);
-        out.push((name.to_string(), f));
-    }
-    let opts = RandomOptions {
-        variations: VariationMode::default(),
-        ..RandomOptions::default()
-    };
-    for seed in [11u64, 12, 13] {
-        let f = random::generate(seed, &opts, &Default::default()).flame;
-        out.push((format!("random-{seed}"), f));
-    }
-    out
-}
 
 /// The flame at the preview's size and this quality, rendered with `seed`, as RGB8.
 fn reference(f: &Flame, quality: f64, seed: u64) -> Vec<u8> {

@@ -11,12 +11,14 @@
 //!
 //! Run: `cargo bench --bench preview_loop` (prints a table; exits 1 if a target is missed).
 
-use std::path::Path;
 use std::time::{Duration, Instant};
 
 use ugnis::app::flame_tab::preview::{PreviewEvent, PreviewJob, PreviewWorker};
 use ugnis::flame::Flame;
-use ugnis::flame::random::{self, RandomOptions, VariationMode};
+
+#[path = "common/flames.rs"]
+mod common_flames;
+use common_flames::flames;
 
 const W: u32 = 640;
 const H: u32 = 480;
@@ -55,27 +57,6 @@ fn first_frame(w: &PreviewWorker, generation: u64, t0: Instant) -> (Duration, f6
 fn percentile(v: &mut [f64], p: f64) -> f64 {
     v.sort_by(|a, b| a.total_cmp(b));
     v[((v.len() - 1) as f64 * p).round() as usize]
-}
-
-fn flames() -> Vec<(String, Flame)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
-    let mut out = Vec::new();
-    for name in ["orchid", "ember-swirl", "lagoon-post", "moss-classic"] {
-        let f = ugnis::io::read_flames(&dir.join(format!("{name}.flame")), &Default::default())
-            .expect("example")
-            .value
-            .remove(0);
-        out.push((name.to_string(), f));
-    }
-    let opts = RandomOptions {
-        variations: VariationMode::default(),
-        ..RandomOptions::default()
-    };
-    for seed in [11u64, 12, 13] {
-        let f = random::generate(seed, &opts, &Default::default()).flame;
-        out.push((format!("random-{seed}"), f));
-    }
-    out
 }
 
 fn main() {
