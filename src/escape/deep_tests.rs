@@ -47,6 +47,30 @@ fn exact(
     (s.max_iter, s.max_iter as f64, true)
 }
 
+/// The reference orbit of a `w`×`h` grid of `view` (at its centre, covering its corners) for
+/// `z^degree + c` (or the Julia set of `julia`), and the grid's pixel size.
+fn reference_of(
+    degree: u32,
+    julia: Option<C>,
+    view: &View,
+    w: u32,
+    h: u32,
+    s: &IterSettings,
+) -> (Reference, Fx) {
+    let pixel = view.pixel_size_fx(h);
+    let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
+    let r = Reference::new(
+        degree,
+        view.centre(),
+        julia,
+        pixel,
+        radius,
+        s,
+        &Default::default(),
+    );
+    (r.unwrap(), pixel)
+}
+
 /// Render a `w`×`h` grid of `view` by perturbation and directly; the fraction of pixels
 /// whose continuous counts agree within 0.05, and the number of distinct integer counts.
 fn agreement(family: &Family, view: &View, w: u32, h: u32, s: &IterSettings) -> (f64, usize) {
@@ -55,10 +79,7 @@ fn agreement(family: &Family, view: &View, w: u32, h: u32, s: &IterSettings) -> 
         Family::Julia { power, c } => (power, Some(c)),
         _ => unreachable!(),
     };
-    let pixel = view.pixel_size_fx(h);
-    let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
-    let progress = OrbitProgress::default();
-    let r = Reference::new(degree, view.centre(), julia, pixel, radius, s, &progress).unwrap();
+    let (r, pixel) = reference_of(degree, julia, view, w, h, s);
     // The truth with twice the digits the reference gets.
     let bits = bits_for(pixel) * if julia.is_some() { 4 } else { 2 };
     let (mut good, mut counts) = (0, Vec::new());
@@ -163,18 +184,7 @@ fn bilinear_steps_skip_most_iterations() {
     let s = settings(6000, false);
     let view = deep_view("0", "1", "1e-100");
     let (w, h) = (8, 6);
-    let pixel = view.pixel_size_fx(h);
-    let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
-    let r = Reference::new(
-        2,
-        view.centre(),
-        None,
-        pixel,
-        radius,
-        &s,
-        &Default::default(),
-    )
-    .unwrap();
+    let (r, pixel) = reference_of(2, None, &view, w, h, &s);
     assert_eq!(r.main.z.len(), 6001, "the reference at i never escapes");
     assert!(r.main.bla.len() > 5000);
     let dc = view.offset_from_pixel_fx(1.0, 1.0, w, h);
@@ -191,18 +201,7 @@ fn distance_estimates_are_in_pixels_at_any_depth() {
     for half in ["1e-30", "1e-400"] {
         let view = deep_view("0", "1", half);
         let (w, h) = (8, 6);
-        let pixel = view.pixel_size_fx(h);
-        let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
-        let r = Reference::new(
-            2,
-            view.centre(),
-            None,
-            pixel,
-            radius,
-            &s,
-            &Default::default(),
-        )
-        .unwrap();
+        let (r, pixel) = reference_of(2, None, &view, w, h, &s);
         let des: Vec<f32> = (0..w)
             .map(|i| {
                 iterate(
