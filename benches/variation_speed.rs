@@ -5,7 +5,7 @@
 //! printed as Markdown.
 //!
 //! Run: `cargo bench --bench variation_speed` (on a CPU without AVX-512 or AVX2 the wider
-//! columns repeat the narrower copy).
+//! columns repeat the narrower copy); `VARS=julian,juliascope cargo bench …` times only those.
 
 use ugnis::flame::variations::{Affine, Form, Prepared, Simd, VarId, all, by_name, time_batches};
 use ugnis::rng::FastRng;
@@ -85,7 +85,12 @@ fn main() {
         "| variation | point by point | baseline | AVX2+FMA | AVX-512F | AVX-512 / baseline |"
     );
     println!("|---|---:|---:|---:|---:|---:|");
-    for name in MOST_USED {
+    let only = std::env::var("VARS").ok();
+    let wanted = |name: &str| {
+        only.as_ref()
+            .is_none_or(|o| o.split(',').any(|v| v == name))
+    };
+    for name in MOST_USED.into_iter().filter(|n| wanted(n)) {
         let id: VarId = by_name(name).expect("a registered variation");
         let def = &all()[id as usize];
         // julian and its kin at the powers real files use; the others at their defaults.

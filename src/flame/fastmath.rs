@@ -285,7 +285,7 @@ pub fn exp(x: f64) -> f64 {
     let kf = t - MAGIC;
     // k (|k| ≤ 1023) from the low bits of t; 2^k built from its exponent field.
     let k = (t.to_bits() as i64).wrapping_sub(MAGIC.to_bits() as i64);
-    let two_k = f64::from_bits(((k + 1023) as u64) << 52);
+    let two_k = f64::from_bits((k.wrapping_add(1023) as u64) << 52);
     let hi = x - kf * LN2_HI;
     let lo = kf * LN2_LO;
     let r = hi - lo;

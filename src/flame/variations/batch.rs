@@ -206,12 +206,12 @@ mod tests {
             f: -0.6,
         };
         let mut checked = 0;
-        for (id, def) in all().iter().enumerate() {
-            if def.batch.is_none() {
-                continue;
-            }
+        // Each loop with Fractorium's compatibility switch on and off (loops are compiled for
+        // one setting each).
+        let loops = all().iter().enumerate().filter(|(_, d)| d.batch.is_some());
+        for ((id, def), compat) in loops.flat_map(|l| [(l, true), (l, false)]) {
             let params: Vec<f64> = def.params.iter().map(|p| p.default + 0.37).collect();
-            let v = Prepared::new(id as VarId, Form::Regular, 0.7, &params, aff, true);
+            let v = Prepared::new(id as VarId, Form::Regular, 0.7, &params, aff, compat);
             let ts: Vec<VarIn> = pts
                 .iter()
                 .map(|p| VarIn::new(p[0], p[1], p[2], 0.25, 0xff, false))
@@ -258,13 +258,14 @@ mod tests {
                 fastmath::limit_simd(simd);
                 let b = run(true);
                 fastmath::limit_simd(Simd::Avx512);
-                assert_eq!(bits(&b.0), bits(&g.0), "{} x {simd:?}", def.name);
-                assert_eq!(bits(&b.1), bits(&g.1), "{} y {simd:?}", def.name);
-                assert_eq!(bits(&b.2), bits(&g.2), "{} z {simd:?}", def.name);
+                let name = format!("{} (compat {compat}) {simd:?}", def.name);
+                assert_eq!(bits(&b.0), bits(&g.0), "{name} x");
+                assert_eq!(bits(&b.1), bits(&g.1), "{name} y");
+                assert_eq!(bits(&b.2), bits(&g.2), "{name} z");
             }
             checked += 1;
         }
-        // flam3's 99 and the 41 inlined loops of the variations real files use most.
-        assert!(checked >= 139, "{checked} batch loops");
+        // flam3's 99 and the 41 inlined loops of the variations real files use most, twice.
+        assert!(checked >= 2 * 139, "{checked} batch loops");
     }
 }

@@ -302,8 +302,12 @@ pub struct Prepared {
     pub dialect: Dialect,
     /// The output z when the formula computes none.
     pub zrule: ZRule,
-    /// State carried from one call to the next (used by the stateful variations only).
-    pub state: VarState,
+    /// State carried from one call to the next (used by the stateful variations only). Boxed:
+    /// its atomics inline would make `&Prepared` a reference to interior-mutable memory, and
+    /// the compiler could then keep no parameter in a register across a batch loop's stores
+    /// (every read of a parameter would be repeated per point, and such loops do not
+    /// vectorise).
+    pub state: Box<VarState>,
     /// The data of [`VarDef::shared`] for these parameters (built once per distinct value and
     /// shared through a process-wide cache); `None` for the variations without.
     pub data: Option<Arc<[f64]>>,

@@ -2,7 +2,7 @@
 //! fetched, its derived values computed — and evaluating one variation at one point, as an
 //! xform with only that variation would.
 
-use super::def::{Assign, Dialect, Form, Prepared, Rules, VarState, ZRule, flag};
+use super::def::{Assign, Dialect, Form, Prepared, Rules, ZRule, flag};
 use super::point::{Acc, VarIn};
 use super::registry::{info, jwildfire_twin};
 use super::{V3, VarId, shared};
@@ -92,7 +92,7 @@ impl Prepared {
             compat: rules.compat,
             dialect: rules.dialect,
             zrule,
-            state: VarState::default(),
+            state: Box::default(),
             data: None,
             texts,
         };

@@ -18,7 +18,7 @@ pub(super) trait Draws {
     fn u64(&mut self) -> u64;
     #[inline(always)]
     fn f01(&mut self) -> f64 {
-        (self.u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        u64_to_f64(self.u64() >> 11) * (1.0 / (1u64 << 53) as f64)
     }
     #[inline(always)]
     fn bit(&mut self) -> bool {
@@ -28,12 +28,44 @@ pub(super) trait Draws {
     #[inline(always)]
     fn rand_size(&mut self, n: f64) -> f64 {
         let (u, k) = (self.u64(), n as u64);
-        if k == 0 {
-            (u >> 32) as u32 as f64
-        } else {
-            ((u as u128 * k as u128) >> 64) as f64
-        }
+        // Both outcomes computed and one selected, without a 128-bit multiply: the loop over a
+        // batch then vectorises.
+        let below = u64_to_f64(mul_high(u, k));
+        let full = u32_to_f64(u >> 32);
+        if k == 0 { full } else { below }
     }
+}
+
+/// The high 64 bits of the 128-bit product a·b, from four 32×32→64 multiplies (which vector
+/// units have; a 64×64→128 multiply they have not).
+#[inline(always)]
+fn mul_high(a: u64, b: u64) -> u64 {
+    const M: u64 = 0xFFFF_FFFF;
+    let (al, ah, bl, bh) = (a & M, a >> 32, b & M, b >> 32);
+    // Wrapping operations only to keep overflow checks out of the loop: no product of two
+    // 32-bit halves and no sum here exceeds 2⁶⁴.
+    let (ll, lh) = (al.wrapping_mul(bl), al.wrapping_mul(bh));
+    let (hl, hh) = (ah.wrapping_mul(bl), ah.wrapping_mul(bh));
+    let mid = (ll >> 32).wrapping_add(lh & M).wrapping_add(hl & M);
+    hh.wrapping_add(lh >> 32)
+        .wrapping_add(hl >> 32)
+        .wrapping_add(mid >> 32)
+}
+
+/// An integer below 2³² (held in a u64) as a double, exactly: its bits placed in the mantissa
+/// of 2⁵², which is then subtracted. Vector units without AVX-512DQ cannot convert 64-bit
+/// integers; this needs only bit operations and one subtraction.
+#[inline(always)]
+fn u32_to_f64(k: u64) -> f64 {
+    const TWO_52: u64 = 0x4330_0000_0000_0000;
+    f64::from_bits(TWO_52 | (k & 0xFFFF_FFFF)) - f64::from_bits(TWO_52)
+}
+
+/// A u64 as a double, rounded to nearest as `as f64` rounds: the two 32-bit halves convert
+/// exactly, the high one's scaling by 2³² is exact, and their sum rounds once.
+#[inline(always)]
+fn u64_to_f64(k: u64) -> f64 {
+    u32_to_f64(k >> 32) * 4_294_967_296.0 + u32_to_f64(k)
 }
 
 impl Draws for FastRng {
@@ -136,6 +168,8 @@ pub(super) fn z_out(id: u16, v: &Prepared, t: &VarIn) -> f64 {
     }
 }
 
+/// Variation `id`'s contribution at `t`. `compat` is `v.compat`, passed apart so that a batch
+/// loop can fix it for the whole loop (a branch on it inside the loop stops vectorisation).
 #[inline(always)]
 pub(super) fn formula(
     id: u16,
@@ -143,6 +177,7 @@ pub(super) fn formula(
     t: &VarIn,
     aff: &Affine,
     rng: &mut impl Draws,
+    compat: bool,
 ) -> (f64, f64) {
     let w = v.w;
     let (x, y) = (t.x, t.y);
@@ -297,7 +332,7 @@ pub(super) fn formula(
                 a += dx2;
             }
             let (s, c) = sincos(a);
-            if v.compat {
+            if compat {
                 (r * s, r * c)
             } else {
                 (r * c, r * s)
@@ -334,7 +369,7 @@ pub(super) fn formula(
             let [power] = v.params();
             let [abs_power, cn] = v.derived();
             let r = w * fm::pow_nonneg(t.sumsq, cn);
-            let a = if v.compat {
+            let a = if compat {
                 let k = rng.rand_size(abs_power);
                 (t.atan_yx + 2.0 * PI * k) / power
             } else {
@@ -348,9 +383,10 @@ pub(super) fn formula(
             let [power] = v.params();
             let [abs_power, cn] = v.derived();
             let r = w * fm::pow_nonneg(t.sumsq, cn);
-            let a = if v.compat {
+            let a = if compat {
                 let k = (abs_power * rng.f01()).trunc();
-                if (k as i64) & 1 == 0 {
+                // k's parity in floating point (exact below 2⁵³), which vectorises.
+                if k - 2.0 * (k * 0.5).floor() == 0.0 {
                     (2.0 * PI * k + t.atan_yx) / power
                 } else {
                     (2.0 * PI * k - t.atan_yx) / power
@@ -465,7 +501,7 @@ pub(super) fn formula(
             (w * x * diff, w * x * (diff - s * PI))
         }
         CROSS => {
-            let r = if v.compat {
+            let r = if compat {
                 w / zeps(((x - y) * (x + y)).abs())
             } else {
                 w / zeps(x * x - y * y)
@@ -531,7 +567,7 @@ pub(super) fn formula(
             if g == 0.0 || fg <= 0.0 {
                 // Off the map (on the poles): nothing, or the point itself for pre_/post_ forms
                 // and without flam3 compatibility.
-                if v.compat && v.form == Form::Regular {
+                if compat && v.form == Form::Regular {
                     (0.0, 0.0)
                 } else {
                     (x, y)
@@ -626,7 +662,7 @@ pub(super) fn formula(
             let r2 = (tmp - tmp2).sqrt();
             let xmax = zeps((r1 + r2) * 0.5);
             let a1 = (xmax + (xmax - 1.0).sqrt()).ln();
-            let a2 = if v.compat {
+            let a2 = if compat {
                 -(x / xmax).clamp(-1.0, 1.0).acos()
             } else {
                 (x / xmax).acos()
@@ -656,7 +692,7 @@ pub(super) fn formula(
         }
         ESCHER => {
             let [vc, vd] = v.derived();
-            let a = if v.compat { t.atan_yx } else { t.atan_xy };
+            let a = if compat { t.atan_yx } else { t.atan_xy };
             let lnr = 0.5 * t.sumsq.ln();
             let m = w * (vc * lnr - vd * a).exp();
             let n = vc * a + vd * lnr;
@@ -858,7 +894,7 @@ pub(super) fn formula(
             (t.sumsq.ln() * denom, w * t.atan_yx)
         }
         SIN => {
-            let (x, y) = if v.compat {
+            let (x, y) = if compat {
                 (x, y)
             } else {
                 (x * FRAC_PI_2, y * FRAC_PI_2)
@@ -867,7 +903,7 @@ pub(super) fn formula(
             (w * s * y.cosh(), w * c * y.sinh())
         }
         COS => {
-            let (x, y) = if v.compat {
+            let (x, y) = if compat {
                 (x, y)
             } else {
                 (x * FRAC_PI_2, y * FRAC_PI_2)
@@ -876,7 +912,7 @@ pub(super) fn formula(
             (w * c * y.cosh(), -(w * s * y.sinh()))
         }
         TAN => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(2.0 * x);
                 let den = 1.0 / zeps(c + (2.0 * y).cosh());
                 (w * den * s, w * den * (2.0 * y).sinh())
@@ -887,13 +923,13 @@ pub(super) fn formula(
             }
         }
         SEC => {
-            let (x, y) = if v.compat { (x, y) } else { (x * PI, y * PI) };
+            let (x, y) = if compat { (x, y) } else { (x * PI, y * PI) };
             let (s, c) = sincos(x);
             let den = w * (2.0 / zeps(fm::cos(2.0 * x) + (2.0 * y).cosh()));
             (den * c * y.cosh(), den * s * y.sinh())
         }
         CSC => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(x);
                 let den = 2.0 / zeps((2.0 * y).cosh() - fm::cos(2.0 * x));
                 (w * den * s * y.cosh(), -(w * den * c * y.sinh()))
@@ -906,7 +942,7 @@ pub(super) fn formula(
             }
         }
         COT => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(2.0 * x);
                 let den = 1.0 / zeps((2.0 * y).cosh() - c);
                 (w * den * s, w * den * -(2.0 * y).sinh())
@@ -918,7 +954,7 @@ pub(super) fn formula(
             }
         }
         SINH => {
-            let (x, y) = if v.compat {
+            let (x, y) = if compat {
                 (x, y)
             } else {
                 (x * FRAC_PI_4, y * FRAC_PI_4)
@@ -927,7 +963,7 @@ pub(super) fn formula(
             (w * x.sinh() * c, w * x.cosh() * s)
         }
         COSH => {
-            let (x, y) = if v.compat {
+            let (x, y) = if compat {
                 (x, y)
             } else {
                 (x * FRAC_PI_2, y * FRAC_PI_2)
@@ -936,7 +972,7 @@ pub(super) fn formula(
             (w * x.cosh() * c, w * x.sinh() * s)
         }
         TANH => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(2.0 * y);
                 let den = 1.0 / zeps(c + (2.0 * x).cosh());
                 (w * den * (2.0 * x).sinh(), w * den * s)
@@ -948,7 +984,7 @@ pub(super) fn formula(
             }
         }
         SECH => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(y);
                 let den = 2.0 / zeps(fm::cos(2.0 * y) + (2.0 * x).cosh());
                 (w * den * c * x.cosh(), -(w * den * s * x.sinh()))
@@ -960,7 +996,7 @@ pub(super) fn formula(
             }
         }
         CSCH => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(y);
                 let den = 2.0 / zeps((2.0 * x).cosh() - fm::cos(2.0 * y));
                 (w * den * x.sinh() * c, -(w * den * x.cosh() * s))
@@ -972,7 +1008,7 @@ pub(super) fn formula(
             }
         }
         COTH => {
-            if v.compat {
+            if compat {
                 let (s, c) = sincos(2.0 * y);
                 let den = 1.0 / zeps((2.0 * x).cosh() - c);
                 (w * den * (2.0 * x).sinh(), w * den * s)
@@ -1015,5 +1051,41 @@ pub(super) fn formula(
             )
         }
         _ => (0.0, 0.0),
+    }
+}
+
+#[cfg(test)]
+mod conversion_tests {
+    use super::*;
+
+    /// The vectorisable multiply and conversions give the bits of the 128-bit multiply and of
+    /// `as f64`, on random numbers and on the edges.
+    #[test]
+    fn halves_give_the_bits_of_the_wide_operations() {
+        let mut rng = FastRng::new(11);
+        let edges = [
+            0,
+            1,
+            2,
+            u32::MAX as u64,
+            1 << 32,
+            (1 << 53) + 1,
+            u64::MAX - 1,
+            u64::MAX,
+        ];
+        for i in 0..1_000_000 {
+            let (a, b) = if i < 64 {
+                (edges[i % 8], edges[i / 8])
+            } else {
+                (rng.u64(), rng.u64() >> (i % 64))
+            };
+            assert_eq!(
+                mul_high(a, b),
+                ((a as u128 * b as u128) >> 64) as u64,
+                "{a} {b}"
+            );
+            assert_eq!(u64_to_f64(a).to_bits(), (a as f64).to_bits(), "{a}");
+            assert_eq!(u32_to_f64(b >> 32).to_bits(), ((b >> 32) as f64).to_bits());
+        }
     }
 }

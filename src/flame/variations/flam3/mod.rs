@@ -406,7 +406,7 @@ const fn writes_z(id: u16) -> bool {
 }
 
 fn eval<const ID: u16>(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (x, y) = formula(ID, v, t, &v.aff, rng);
+    let (x, y) = formula(ID, v, t, &v.aff, rng, v.compat);
     [x, y, z_out(ID, v, t)]
 }
 
@@ -471,13 +471,56 @@ fn batch_avx512<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &
 
 /// The loop over the batch. A variation that draws a fixed number of random numbers per point
 /// ([`draws`]) gets them drawn for the whole batch first, in the order the formula would draw
-/// them (the same stream, the same bits): the formula's loop then vectorises.
+/// them (the same stream, the same bits): the formula's loop then vectorises. Fractorium's
+/// compatibility switch is fixed for the loop (one copy of the loop for each setting, for the
+/// variations that read it).
 #[inline(always)]
 fn batch_loop<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
+    if reads_compat(ID) && !v.compat {
+        batch_loop_as::<ID, false>(v, s, acc, rng)
+    } else {
+        batch_loop_as::<ID, true>(v, s, acc, rng)
+    }
+}
+
+/// The variations whose formula reads [`Prepared::compat`].
+const fn reads_compat(id: u16) -> bool {
+    matches!(
+        id,
+        BIPOLAR
+            | COS
+            | COSH
+            | COT
+            | COTH
+            | CROSS
+            | CSC
+            | CSCH
+            | EDISC
+            | ESCHER
+            | FAN2
+            | JULIAN
+            | JULIASCOPE
+            | SEC
+            | SECH
+            | SIN
+            | SINH
+            | TAN
+            | TANH
+    )
+}
+
+/// [`batch_loop`] with the compatibility switch `C`.
+#[inline(always)]
+fn batch_loop_as<const ID: u16, const C: bool>(
+    v: &Prepared,
+    s: &SoaIn,
+    acc: &mut SoaAcc,
+    rng: &mut FastRng,
+) {
     let n = acc.x.len();
     let d = draws(ID);
     if d == 0 {
-        return batch_span::<ID>(v, s, acc, 0, n, |_, t| formula(ID, v, t, &v.aff, rng));
+        return batch_span::<ID, _>(v, s, acc, 0, n, &mut Direct::<C> { v, rng });
     }
     let mut drawn = [[0u64; MAX_DRAWS]; 256];
     let mut start = 0;
@@ -489,28 +532,59 @@ fn batch_loop<const ID: u16>(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mu
                 *u = rng.u64();
             }
         }
-        let drawn = &*drawn;
-        batch_span::<ID>(v, s, acc, start, m, |i, t| {
-            let mut r = Drawn {
-                d: &drawn[i],
-                pos: 0,
-            };
-            formula(ID, v, t, &v.aff, &mut r)
-        });
+        batch_span::<ID, _>(v, s, acc, start, m, &mut Predrawn::<C> { v, drawn });
         start += m;
     }
 }
 
-/// The formula `f(i, point)` over the `m` points of the batch from `start` on (`i` counts
-/// from 0).
+/// Variation `ID`'s formula at point `i` of a span. A trait with an always-inlined method
+/// rather than a closure: a closure is a function of its own, which the compiler may leave
+/// out of line — and a call in the loop stops it from vectorising.
+trait SpanFormula<const ID: u16> {
+    fn at(&mut self, i: usize, t: &VarIn) -> (f64, f64);
+}
+
+/// The formula drawing from the generator itself (variations that draw nothing, or a number
+/// of draws that depends on the point), with the compatibility switch `C`.
+struct Direct<'a, const C: bool> {
+    v: &'a Prepared,
+    rng: &'a mut FastRng,
+}
+
+impl<const ID: u16, const C: bool> SpanFormula<ID> for Direct<'_, C> {
+    #[inline(always)]
+    fn at(&mut self, _: usize, t: &VarIn) -> (f64, f64) {
+        formula(ID, self.v, t, &self.v.aff, self.rng, C)
+    }
+}
+
+/// The formula reading the numbers drawn for the span beforehand (point `i`'s row), with the
+/// compatibility switch `C`.
+struct Predrawn<'a, const C: bool> {
+    v: &'a Prepared,
+    drawn: &'a [[u64; MAX_DRAWS]],
+}
+
+impl<const ID: u16, const C: bool> SpanFormula<ID> for Predrawn<'_, C> {
+    #[inline(always)]
+    fn at(&mut self, i: usize, t: &VarIn) -> (f64, f64) {
+        let mut r = Drawn {
+            d: &self.drawn[i],
+            pos: 0,
+        };
+        formula(ID, self.v, t, &self.v.aff, &mut r, C)
+    }
+}
+
+/// The formula `f` over the `m` points of the batch from `start` on (`i` counts from 0).
 #[inline(always)]
-fn batch_span<const ID: u16>(
+fn batch_span<const ID: u16, F: SpanFormula<ID>>(
     v: &Prepared,
     s: &SoaIn,
     acc: &mut SoaAcc,
     start: usize,
     m: usize,
-    mut f: impl FnMut(usize, &VarIn) -> (f64, f64),
+    f: &mut F,
 ) {
     let r = start..start + m;
     let (ax, ay) = (&mut acc.x[r.clone()], &mut acc.y[r.clone()]);
@@ -536,7 +610,7 @@ fn batch_span<const ID: u16>(
             atan_yx: atan_yx[i],
             color: 0.0,
         };
-        let (dx, dy) = f(i, &t);
+        let (dx, dy) = f.at(i, &t);
         ax[i] += dx;
         ay[i] += dy;
         if writes_z(ID) {
