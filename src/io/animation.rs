@@ -498,7 +498,10 @@ impl Job {
                             .map_err(|e| self.video_error(e))?,
                     ),
                 };
-                let bg = frame.develop.background.map(|c| (c * 255.0).round().clamp(0.0, 255.0) as u8);
+                let bg = frame
+                    .develop
+                    .background
+                    .map(|c| (c * 255.0).round().clamp(0.0, 255.0) as u8);
                 v.push(&img.to_rgba8(), bg)
                     .map_err(|e| self.video_error(e))?;
             }

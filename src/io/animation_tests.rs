@@ -170,11 +170,16 @@ fn gif_frames_of_a_transparent_render_lie_on_the_background_and_apng_keeps_alpha
     let a = q[3] as f64 / 255.0;
     for c in 0..3 {
         let over = q[c] as f64 * a + want[c] as f64 * (1.0 - a);
-        assert!((r[c] as f64 - over).abs() <= 16.0, "{r:?} is not {q:?} over {want:?}");
+        assert!(
+            (r[c] as f64 - over).abs() <= 16.0,
+            "{r:?} is not {q:?} over {want:?}"
+        );
     }
     // The APNG keeps the alpha of the frames.
     let apng = std::fs::File::open(d.join("loop.apng")).unwrap();
-    let mut r = png::Decoder::new(std::io::BufReader::new(apng)).read_info().unwrap();
+    let mut r = png::Decoder::new(std::io::BufReader::new(apng))
+        .read_info()
+        .unwrap();
     let mut buf = vec![0; r.output_buffer_size().unwrap()];
     r.next_frame(&mut buf).unwrap();
     assert_eq!(r.info().color_type, png::ColorType::Rgba);
