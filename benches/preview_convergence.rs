@@ -123,6 +123,7 @@ fn main() {
             least_quality: options.preview_least_quality,
             threads: THREADS,
             generation: generation as u64 + 1,
+            motion: None,
         });
         let mut reached = None;
         let mut frames = 0;

@@ -36,6 +36,7 @@ fn job(flame: &Flame, generation: u64, final_quality: f64) -> PreviewJob {
         least_quality: 0.0,
         threads: THREADS,
         generation,
+        motion: None,
     }
 }
 

@@ -59,6 +59,7 @@ fn show(worker: &PreviewWorker, f: &Flame, frames: &[u32], q: f64, generation: &
             least_quality: 0.0,
             threads: THREADS,
             generation: *generation,
+            motion: None,
         });
         loop {
             match worker.wait(Duration::from_secs(30)) {

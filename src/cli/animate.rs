@@ -467,6 +467,9 @@ pub fn run(a: AnimateArgs) -> Result<()> {
     pb.finish_and_clear();
     match result {
         Ok(s) => {
+            for note in s.notes() {
+                stderr!("{note}");
+            }
             if s.skipped > 0 {
                 stderr!("{} frames were already on disk and kept", s.skipped);
             }

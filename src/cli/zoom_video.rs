@@ -190,7 +190,8 @@ pub fn run(doc: &EscapeDoc, z: &ZoomVideo) -> Result<()> {
             cache = Some((k, load(k)?, inner));
         }
         let (_, outer, inner) = cache.as_ref().expect("loaded");
-        video.push(&interpolate(outer, inner.as_ref(), s))?;
+        // Opaque frames: the background colour is never seen.
+        video.push(&interpolate(outer, inner.as_ref(), s), [0; 3])?;
         pb.inc(1);
     }
     pb.finish_and_clear();

@@ -28,6 +28,7 @@ mod plot;
 pub mod random;
 pub mod render;
 pub mod sequence;
+pub mod shown_maps;
 /// The seeded generator lives at the crate root (gradients, noise and scenes use it too).
 pub use crate::rng;
 mod settings;

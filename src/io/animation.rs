@@ -23,7 +23,7 @@ use crate::io::video::{Video, VideoError, VideoKind, VideoOptions};
 pub const MAX_FRAMES: u64 = 10_000_000;
 
 /// What moves.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Source {
     /// A flam3 sequence: control points sorted by time; frame t is the flame at time t.
     Sequence(Vec<Flame>),
@@ -350,15 +350,58 @@ pub struct Summary {
     pub skipped: usize,
     /// The video written, if the job made one.
     pub video: Option<PathBuf>,
+    /// Frames found on disk incomplete or damaged (cut short, a checksum wrong) and rendered
+    /// again.
+    pub damaged: Vec<PathBuf>,
 }
 
-/// The size of a PNG on disk, if it is one (frames written by an earlier run).
-fn png_size(path: &Path) -> Option<(u32, u32)> {
-    let f = std::fs::File::open(path).ok()?;
-    let r = png::Decoder::new(std::io::BufReader::new(f))
-        .read_info()
-        .ok()?;
-    Some((r.info().width, r.info().height))
+impl Summary {
+    /// One line for each damaged frame rendered again.
+    pub fn notes(&self) -> Vec<String> {
+        self.damaged
+            .iter()
+            .map(|p| {
+                format!(
+                    "'{}' was incomplete or damaged; rendered again",
+                    p.display()
+                )
+            })
+            .collect()
+    }
+}
+
+/// What is on disk where a frame goes.
+#[derive(Debug, PartialEq)]
+enum OnDisk {
+    /// Nothing (or something that is not a PNG at all).
+    Nothing,
+    /// A PNG read whole to its end chunk, every checksum right, of this size.
+    Whole(u32, u32),
+    /// A PNG that breaks off or is damaged.
+    Damaged,
+}
+
+/// What an earlier run left at `path`: a frame is kept only when it decodes completely.
+fn on_disk(path: &Path) -> OnDisk {
+    let Ok(f) = std::fs::File::open(path) else {
+        return OnDisk::Nothing;
+    };
+    let Ok(mut r) = png::Decoder::new(std::io::BufReader::new(f)).read_info() else {
+        // The signature and header are the first 33 bytes: a file shorter than that, or
+        // with a bad header, is damaged if it starts as a PNG does.
+        return match std::fs::read(path) {
+            Ok(b) if b.starts_with(b"\x89PNG") => OnDisk::Damaged,
+            _ => OnDisk::Nothing,
+        };
+    };
+    let Some(n) = r.output_buffer_size() else {
+        return OnDisk::Damaged;
+    };
+    let mut buf = vec![0u8; n];
+    if r.next_frame(&mut buf).is_err() || r.finish().is_err() {
+        return OnDisk::Damaged;
+    }
+    OnDisk::Whole(r.info().width, r.info().height)
 }
 
 /// The change a job makes to every flame: another size (keeping the framing) and quality.
@@ -408,7 +451,11 @@ impl Job {
                 .source
                 .frame(spec.time, self.blur, &adjust, &mut cursor);
             let (w, h) = (frame.develop.width, frame.develop.height);
-            let img = if png_size(&path) == Some((w, h)) {
+            let found = on_disk(&path);
+            if found == OnDisk::Damaged {
+                summary.damaged.push(path.clone());
+            }
+            let img = if found == OnDisk::Whole(w, h) {
                 summary.skipped += 1;
                 let on_disk = image::open(&path).map_err(|e| AnimError::Io {
                     path: path.clone(),
@@ -451,7 +498,12 @@ impl Job {
                             .map_err(|e| self.video_error(e))?,
                     ),
                 };
-                v.push(&img.to_rgba8()).map_err(|e| self.video_error(e))?;
+                let bg = frame
+                    .develop
+                    .background
+                    .map(|c| (c * 255.0).round().clamp(0.0, 255.0) as u8);
+                v.push(&img.to_rgba8(), bg)
+                    .map_err(|e| self.video_error(e))?;
             }
             progress(Progress {
                 done: k + 1,

@@ -105,6 +105,88 @@ fn a_rerun_skips_the_frames_on_disk() {
 }
 
 #[test]
+fn a_truncated_or_damaged_frame_is_rendered_again_with_a_note() {
+    let d = scratch("truncated");
+    let j = job(&d);
+    let never = AtomicBool::new(false);
+    j.run(&never, |_| {}).unwrap();
+    let whole = std::fs::read(d.join("00001.png")).unwrap();
+    // Cut short before its end chunk (as a full disk or a crash leaves it), and one with a
+    // flipped byte in its image data (a checksum wrong).
+    std::fs::write(d.join("00001.png"), &whole[..whole.len() - 20]).unwrap();
+    let mut flipped = std::fs::read(d.join("00003.png")).unwrap();
+    let k = flipped.len() - 30;
+    flipped[k] ^= 0x55;
+    std::fs::write(d.join("00003.png"), &flipped).unwrap();
+    let s = j.run(&never, |_| {}).unwrap();
+    assert_eq!((s.rendered, s.skipped), (2, 2));
+    assert_eq!(s.damaged, [d.join("00001.png"), d.join("00003.png")]);
+    assert!(s.notes()[0].contains("00001.png") && s.notes()[0].contains("rendered again"));
+    assert_eq!(std::fs::read(d.join("00001.png")).unwrap(), whole);
+    // Whole again: the next run keeps all four without a note.
+    let s = j.run(&never, |_| {}).unwrap();
+    assert_eq!((s.rendered, s.skipped, s.damaged.len()), (0, 4, 0));
+}
+
+#[test]
+fn gif_frames_of_a_transparent_render_lie_on_the_background_and_apng_keeps_alpha() {
+    let d = scratch("transparent");
+    let bg = [0.2, 0.5, 0.9];
+    let mut j = job(&d.join("frames"));
+    if let Source::Sequence(cps) = &mut j.source {
+        for f in cps {
+            f.background = bg;
+        }
+    }
+    j.render.format.transparent = true;
+    for name in ["loop.gif", "loop.apng"] {
+        j.video = Some((d.join(name), VideoOptions::default()));
+        j.run(&AtomicBool::new(false), |_| {}).unwrap();
+    }
+    let frame = image::open(d.join("frames/00000.png")).unwrap().to_rgba8();
+    let empty = (0..frame.width())
+        .flat_map(|x| (0..frame.height()).map(move |y| (x, y)))
+        .find(|&(x, y)| frame.get_pixel(x, y)[3] == 0)
+        .expect("the frame has empty pixels");
+    let lit = (0..frame.width())
+        .flat_map(|x| (0..frame.height()).map(move |y| (x, y)))
+        .find(|&(x, y)| frame.get_pixel(x, y)[3] > 200)
+        .expect("the frame has opaque pixels");
+    use image::AnimationDecoder;
+    let gif = std::fs::File::open(d.join("loop.gif")).unwrap();
+    let frames = image::codecs::gif::GifDecoder::new(std::io::BufReader::new(gif))
+        .unwrap()
+        .into_frames()
+        .collect_frames()
+        .unwrap();
+    let g = frames[0].buffer();
+    let want = bg.map(|c| (c * 255.0).round() as i32);
+    let p = g.get_pixel(empty.0, empty.1);
+    for c in 0..3 {
+        assert!((p[c] as i32 - want[c]).abs() <= 12, "{p:?} is not {want:?}");
+    }
+    let q = frame.get_pixel(lit.0, lit.1);
+    let r = g.get_pixel(lit.0, lit.1);
+    let a = q[3] as f64 / 255.0;
+    for c in 0..3 {
+        let over = q[c] as f64 * a + want[c] as f64 * (1.0 - a);
+        assert!(
+            (r[c] as f64 - over).abs() <= 16.0,
+            "{r:?} is not {q:?} over {want:?}"
+        );
+    }
+    // The APNG keeps the alpha of the frames.
+    let apng = std::fs::File::open(d.join("loop.apng")).unwrap();
+    let mut r = png::Decoder::new(std::io::BufReader::new(apng))
+        .read_info()
+        .unwrap();
+    let mut buf = vec![0; r.output_buffer_size().unwrap()];
+    r.next_frame(&mut buf).unwrap();
+    assert_eq!(r.info().color_type, png::ColorType::Rgba);
+    assert_eq!(buf[(empty.1 * frame.width() + empty.0) as usize * 4 + 3], 0);
+}
+
+#[test]
 fn a_cancelled_run_leaves_only_whole_frames() {
     let d = scratch("cancel");
     let j = job(&d);

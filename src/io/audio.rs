@@ -3,6 +3,7 @@
 //! sound, or is cut short or damaged, gives an error naming it.
 
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use symphonia::core::audio::SampleBuffer;
 use symphonia::core::codecs::{CODEC_TYPE_NULL, DecoderOptions};
@@ -33,6 +34,16 @@ pub struct AudioError {
 
 /// Read `path` as one channel of samples at the file's rate.
 pub fn read_sound(path: &Path) -> Result<Sound, AudioError> {
+    read_sound_with(path, &AtomicBool::new(false), &|_| {})
+}
+
+/// [`read_sound`] for a background job: `progress` is told the share decoded (when the file
+/// says its length), and setting `cancel` stops the decoding with an error saying so.
+pub fn read_sound_with(
+    path: &Path,
+    cancel: &AtomicBool,
+    progress: &dyn Fn(f64),
+) -> Result<Sound, AudioError> {
     let fail = |message: String| AudioError {
         path: path.to_path_buf(),
         message,
@@ -83,7 +94,11 @@ pub fn read_sound(path: &Path) -> Result<Sound, AudioError> {
     let mut samples: Vec<f32> = Vec::new();
     let mut bad = 0;
     let mut buf: Option<SampleBuffer<f32>> = None;
+    let length = params.n_frames.filter(|&n| n > 0);
     loop {
+        if cancel.load(Ordering::Relaxed) {
+            return Err(fail("cancelled".into()));
+        }
         let packet = match format.next_packet() {
             Ok(p) => p,
             Err(SymError::IoError(e)) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
@@ -125,6 +140,9 @@ pub fn read_sound(path: &Path) -> Result<Sound, AudioError> {
                 .chunks(channels)
                 .map(|c| c.iter().sum::<f32>() / channels as f32),
         );
+        if let Some(n) = length {
+            progress((samples.len() as f64 / n as f64).min(1.0));
+        }
     }
     if samples.is_empty() {
         return Err(fail("holds no sound (no samples could be decoded)".into()));

@@ -31,6 +31,39 @@ fn a_written_wav_reads_back_with_its_level() {
 }
 
 #[test]
+fn a_background_decode_reports_its_progress_and_stops_when_cancelled() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("long.wav");
+    let rate = 8000;
+    let tone: Vec<f32> = (0..20 * rate)
+        .map(|i| 0.3 * (i as f32 * 0.05).sin())
+        .collect();
+    std::fs::write(&path, wav_bytes(&tone, rate)).unwrap();
+    let seen = std::sync::Mutex::new(Vec::new());
+    let s = read_sound_with(&path, &AtomicBool::new(false), &|f| {
+        seen.lock().unwrap().push(f)
+    })
+    .unwrap();
+    assert_eq!(s.samples.len(), tone.len());
+    let seen = seen.into_inner().unwrap();
+    assert!(seen.len() > 2, "{} progress reports", seen.len());
+    assert!(
+        seen.windows(2).all(|w| w[0] <= w[1]),
+        "progress never goes back"
+    );
+    assert_eq!(*seen.last().unwrap(), 1.0);
+    // Cancelled halfway: an error saying so, not a sound cut short.
+    let cancel = AtomicBool::new(false);
+    let e = read_sound_with(&path, &cancel, &|f| {
+        if f > 0.5 {
+            cancel.store(true, Ordering::Relaxed);
+        }
+    })
+    .unwrap_err();
+    assert!(e.to_string().contains("cancelled"), "{e}");
+}
+
+#[test]
 fn stereo_is_averaged_into_one_channel() {
     // Left a tone, right its opposite: the mix is silence; left a tone, right silence: half.
     let dir = tempfile::tempdir().unwrap();

@@ -22,7 +22,7 @@ pub enum VideoKind {
     /// A video through ffmpeg, in this container (`mp4`, `webm`, `mkv`, `mov`).
     Ffmpeg(&'static str),
     /// Animated GIF (`.gif`), written by ugnis, looping forever; transparency is composed over
-    /// black and delays are whole hundredths of a second.
+    /// the flame's background colour and delays are whole hundredths of a second.
     Gif,
     /// Animated PNG (`.apng`).
     Apng,
@@ -261,8 +261,10 @@ impl Video {
         })
     }
 
-    /// Add the next frame (of the size the video was created with).
-    pub fn push(&mut self, frame: &RgbaImage) -> Result<(), VideoError> {
+    /// Add the next frame (of the size the video was created with). Where the frame is
+    /// transparent, a GIF or ffmpeg video shows it over `background` (the flame's background
+    /// colour, 8-bit RGB); an APNG keeps the alpha.
+    pub fn push(&mut self, frame: &RgbaImage, background: [u8; 3]) -> Result<(), VideoError> {
         if frame.dimensions() != (self.width, self.height) {
             return Err(VideoError::Encode {
                 path: self.path.clone(),
@@ -281,7 +283,7 @@ impl Video {
         };
         match self.sink.as_mut().ok_or_else(failed)? {
             Sink::Ffmpeg { stdin, .. } => {
-                let rgb = over_black(frame);
+                let rgb = over(frame, background);
                 let w = stdin.as_mut().expect("open until finish");
                 if let Err(e) = w.write_all(&rgb) {
                     // ffmpeg has ended: report what it said.
@@ -290,14 +292,12 @@ impl Video {
                 Ok(())
             }
             Sink::Gif { enc, delay, .. } => {
-                let mut f = frame.clone();
-                for p in f.pixels_mut() {
-                    let a = p[3] as u32;
-                    for c in 0..3 {
-                        p[c] = ((p[c] as u32 * a + 127) / 255) as u8;
-                    }
-                    p[3] = 255;
-                }
+                let rgba = over(frame, background)
+                    .chunks_exact(3)
+                    .flat_map(|p| [p[0], p[1], p[2], 255])
+                    .collect();
+                let f = RgbaImage::from_raw(self.width, self.height, rgba)
+                    .expect("the size was checked");
                 enc.encode_frame(image::Frame::from_parts(f, 0, 0, *delay))
                     .map_err(|e| encode_error(&self.path, e))
             }
@@ -387,13 +387,14 @@ fn frame_delay(fps: f64) -> (u16, u16) {
     (100, den.max(1))
 }
 
-/// RGB bytes of a frame composed over black.
-fn over_black(frame: &RgbaImage) -> Vec<u8> {
+/// RGB bytes of a frame (colours not premultiplied) composed over `background`.
+fn over(frame: &RgbaImage, background: [u8; 3]) -> Vec<u8> {
     let mut out = Vec::with_capacity(frame.as_raw().len() / 4 * 3);
     for p in frame.pixels() {
         let a = p[3] as u32;
         for c in 0..3 {
-            out.push(((p[c] as u32 * a + 127) / 255) as u8);
+            let v = p[c] as u32 * a + background[c] as u32 * (255 - a);
+            out.push(((v + 127) / 255) as u8);
         }
     }
     out
@@ -485,10 +486,10 @@ mod tests {
             };
             let mut v = Video::create(&p, 33, 21, 3, &opts).unwrap();
             for k in 0..3 {
-                v.push(&frame(k)).unwrap();
+                v.push(&frame(k), [0; 3]).unwrap();
             }
             assert!(
-                v.push(&RgbaImage::new(2, 2)).is_err(),
+                v.push(&RgbaImage::new(2, 2), [0; 3]).is_err(),
                 "a frame of another size"
             );
             v.finish().unwrap();
@@ -550,7 +551,7 @@ mod tests {
         let p = d.join("m.mp4");
         let mut v = Video::create(&p, 33, 21, 5, &opts).unwrap();
         for k in 0..5 {
-            v.push(&frame(k)).unwrap();
+            v.push(&frame(k), [0; 3]).unwrap();
         }
         v.finish().unwrap();
         let out = Command::new("ffprobe")
@@ -591,7 +592,7 @@ mod tests {
         let big = RgbaImage::new(320, 200);
         let mut failed = None;
         for _ in 0..50 {
-            if let Err(e) = v.push(&big) {
+            if let Err(e) = v.push(&big, [0; 3]) {
                 failed = Some(e);
                 break;
             }

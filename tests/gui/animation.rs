@@ -440,3 +440,169 @@ fn an_mp4_is_made_through_ffmpeg_when_it_is_there() {
         3
     );
 }
+
+#[test]
+fn a_sound_decodes_in_the_background_then_its_curve_is_made() {
+    let mut h = harness_sized(
+        ugnis::app::Start::File(example("sierpinski.flame")),
+        1280.0,
+        1300.0,
+    );
+    timeline_with(&mut h, "zoom");
+    // Eight seconds of a 60 Hz tone, louder in the second half.
+    let rate = 22_050;
+    let tone: Vec<f32> = (0..8 * rate)
+        .map(|i| {
+            let t = i as f32 / rate as f32;
+            let a = if t < 4.0 { 0.05 } else { 0.8 };
+            a * (2.0 * std::f32::consts::PI * 60.0 * t).sin()
+        })
+        .collect();
+    let path = example("sierpinski.flame").with_file_name("beat.wav");
+    std::fs::write(&path, ugnis::io::audio::wav_bytes(&tone, rate as u32)).unwrap();
+    h.get_by_label("Sound…").click();
+    h.run_steps(2);
+    h.state_mut()
+        .flame
+        .timeline
+        .sound_dialog
+        .as_mut()
+        .expect("Sound… opens its window")
+        .path = Some(path);
+    h.run_steps(1);
+    h.get_by_label("Make curve").click();
+    h.step();
+    h.step();
+    // The window says it is decoding (the file is read in the background) …
+    assert!(h.state().flame.timeline.sound_job.is_some());
+    assert!(h.query_by_label_contains("decoding").is_some());
+    assert!(h.query_by_label("Cancel").is_some());
+    // … then what follows the sound.
+    wait_until(&mut h, |s| s.flame.timeline.sound_job.is_none());
+    h.run_steps(2);
+    // In the window (and the status bar).
+    let said = |h: &Harness<'_, UgnisApp>| {
+        h.state()
+            .flame
+            .timeline
+            .sound_dialog
+            .as_ref()
+            .unwrap()
+            .result
+            .clone()
+    };
+    assert!(matches!(said(&h), Some(Ok(t)) if t.contains("follows beat.wav")));
+    assert_eq!(h.query_all_by_label_contains("follows beat.wav").count(), 2);
+    assert!(h.query_by_label_contains("decoding").is_none());
+    assert!(!keys_of(&h, &ZOOM).is_empty(), "the curve is made");
+    // A file that is no sound: the error is shown in the window.
+    let bad = example("sierpinski.flame").with_file_name("noise.wav");
+    std::fs::write(&bad, b"not a sound at all").unwrap();
+    h.state_mut()
+        .flame
+        .timeline
+        .sound_dialog
+        .as_mut()
+        .unwrap()
+        .path = Some(bad);
+    h.run_steps(1);
+    h.get_by_label("Make curve").click();
+    h.run_steps(2);
+    wait_until(&mut h, |s| s.flame.timeline.sound_job.is_none());
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("not a sound file").is_some());
+    assert!(matches!(said(&h), Some(Err(_))));
+}
+
+/// The selected transform's map as the preview shows it at the timeline's frame.
+fn shown_map(h: &Harness<'_, UgnisApp>) -> ugnis::flame::Affine {
+    h.state().flame.shown_flame().xforms[0].coefs
+}
+
+/// Drag the first transform's triangle as shown at the frame from its centre by `by` points.
+fn drag_shown(h: &mut Harness<'_, UgnisApp>, by: egui::Vec2) {
+    let t = shown_map(h).triangle();
+    let c = [
+        (t[0][0] + t[1][0] + t[2][0]) / 3.0,
+        (t[0][1] + t[1][1] + t[2][1]) / 3.0,
+    ];
+    let from = h.state().flame.editor.screen_from_world(c);
+    drag(h, from, from + by);
+}
+
+#[test]
+fn the_triangles_are_the_frames_and_a_drag_keys_the_turn_there() {
+    let mut h = harness_sized(
+        ugnis::app::Start::File(example("sierpinski.flame")),
+        1280.0,
+        1300.0,
+    );
+    // A rotation loop: every transform turns once over 40 frames.
+    h.state_mut().flame.make_rotation_loop(1.0, 40);
+    h.state_mut().flame.editor.selected = ugnis::app::Selected::Xform(0);
+    h.state_mut().flame.timeline.frame = 10.0;
+    h.run_steps(3);
+    let turn = Target::Xform(XformRef::Index(0), XformParam::Rotate);
+    let base = h.state().flame.doc().flame().xforms[0].coefs;
+    let at10 = shown_map(&h);
+    assert_ne!(at10.a, base.a, "turned a quarter at frame 10");
+    // A move of the triangle drawn (the turned one: grabbing the base one's centre would
+    // miss it) moves the base; the turn stays as keyed.
+    let steps = h.state().flame.doc().undo_len();
+    drag_shown(&mut h, egui::Vec2::new(20.0, 10.0));
+    let moved = shown_map(&h);
+    assert!(moved.e != at10.e, "the triangle at the frame moved");
+    assert_eq!(
+        (moved.a, moved.b, moved.c, moved.d),
+        (at10.a, at10.b, at10.c, at10.d)
+    );
+    assert_eq!(keys_of(&h, &turn), vec![(0.0, 0.0), (40.0, 360.0)]);
+    assert_eq!(h.state().flame.doc().undo_len(), steps + 1);
+    // Rotate mode with Auto-key: the turn is keyed at the frame, the base map's shape kept.
+    h.get_by_role_and_label(Role::Button, "Rotate").click();
+    h.run_steps(2);
+    drag_shown(&mut h, egui::Vec2::new(0.0, 40.0));
+    let k = keys_of(&h, &turn);
+    assert_eq!(k.len(), 3, "{k:?}");
+    assert_eq!(k[1].0, 10.0);
+    assert!(
+        (k[1].1 - 90.0).abs() > 1.0,
+        "the key at 10 turned on: {k:?}"
+    );
+    let b = h.state().flame.doc().flame().xforms[0].coefs;
+    assert!(
+        (b.a - base.a).abs() < 1e-9 && (b.d - base.d).abs() < 1e-9,
+        "{b:?}"
+    );
+    // One undo step takes the key away.
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run_steps(2);
+    assert_eq!(keys_of(&h, &turn), vec![(0.0, 0.0), (40.0, 360.0)]);
+    // Without Auto-key the base map turns, no key is made, and the triangle drawn is the
+    // one dragged.
+    h.state_mut().flame.timeline.auto_key = false;
+    h.run_steps(1);
+    drag_shown(&mut h, egui::Vec2::new(0.0, 40.0));
+    assert_eq!(keys_of(&h, &turn), vec![(0.0, 0.0), (40.0, 360.0)]);
+    let b = h.state().flame.doc().flame().xforms[0].coefs;
+    assert!((b.a - base.a).abs() > 1e-3, "the base turned: {b:?}");
+    // An edit while playing pauses playback at the frame shown.
+    h.state_mut().flame.timeline.auto_key = true;
+    h.key_press(Key::Space);
+    h.run_steps(1);
+    assert!(h.state().flame.timeline.playing());
+    wait_until(&mut h, |a| a.flame.timeline.frame != 10.0);
+    section(&mut h, "Settings");
+    let z = h.state().flame.doc().flame().zoom;
+    set_number(&mut h, "Zoom", z + 0.5);
+    h.run_steps(2);
+    assert!(
+        !h.state().flame.timeline.playing(),
+        "the edit paused playback"
+    );
+    let at = h.state().flame.timeline.frame;
+    assert_eq!(h.state().flame.doc().flame().zoom, z + 0.5);
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    h.run_steps(2);
+    assert_eq!(h.state().flame.timeline.frame, at, "paused");
+}

@@ -56,9 +56,10 @@ impl FlameTab {
         }
         let h = (ui.available_height() * 0.5).max(140.0);
         let mut dragging = false;
+        let keyed = self.timeline.keyed_view(self.doc().flame());
         ui.allocate_ui(Vec2::new(ui.available_width(), h), |ui| {
             let (doc, editor) = self.doc_and_editor();
-            let out = triangles::canvas(ui, doc, editor, auto);
+            let out = triangles::canvas(ui, doc, editor, auto, keyed);
             dragging = out.dragging;
             if let Some(a) = out.action {
                 self.editor_action(a, options);
@@ -79,7 +80,7 @@ impl FlameTab {
                 Section::Transforms => self.transforms_section(ui, options),
                 Section::Triangle => {
                     let (doc, editor) = self.doc_and_editor();
-                    xform_panel::triangle_section(ui, doc, editor, auto, held);
+                    xform_panel::triangle_section(ui, doc, editor, auto, held, keyed);
                 }
                 Section::Variations => {
                     let (doc, editor) = self.doc_and_editor();

@@ -36,6 +36,7 @@ pub(crate) mod history;
 pub(crate) mod mutations;
 pub(crate) mod palette_editor;
 pub mod preview;
+pub mod preview_motion;
 pub(crate) mod preview_panel;
 pub(crate) mod preview_window;
 pub(crate) mod settings;

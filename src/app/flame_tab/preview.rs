@@ -8,6 +8,7 @@ use std::time::Instant;
 use eframe::egui;
 
 use super::convergence;
+use super::preview_motion::MotionJob;
 use crate::app::worker::{JobContext, Worker};
 use crate::flame::Flame;
 use crate::flame::render::{RenderOptions, Renderer, Spare};
@@ -47,6 +48,9 @@ pub struct PreviewJob {
     pub threads: usize,
     /// Number of the job: a frame carries it, so that frames of older jobs can be told apart.
     pub generation: u64,
+    /// The frame is motion-blurred: drawn from the sub-frames of this animation's frame (the
+    /// flame is then the frame at its instant, for the status and the background).
+    pub motion: Option<MotionJob>,
 }
 
 /// One rendered preview frame.
@@ -386,13 +390,9 @@ impl State {
     /// Set up the renderer of a new job; false (and an error event) when it cannot render.
     fn start(&mut self, job: PreviewJob, t: Instant, cx: &JobContext<PreviewEvent>) -> bool {
         let mut flame = job.flame.clone();
-        flame.resize_keep_framing(job.width.max(1), job.height.max(1));
+        let (w, h) = (job.width.max(1), job.height.max(1));
+        flame.resize_keep_framing(w, h);
         let last = job.final_quality.max(job.first_quality).max(1e-3);
-        // A job with a noise target starts at the quality whose samples are kept and grows.
-        flame.quality = match job.noise_target {
-            Some(_) => last.min(KEEP_QUALITY.max(job.first_quality)),
-            None => last,
-        };
         let opts = RenderOptions {
             seed: 1,
             threads: job.threads,
@@ -403,7 +403,21 @@ impl State {
         // The replaced render's memory is reused (a new job is never recoloured with the old
         // samples); what the new one does not take is freed.
         self.retire_active();
-        let made = Renderer::reusing(&flame, &opts, &mut self.spare);
+        // A motion-blurred frame cannot grow: it holds the samples of its final quality from
+        // the start (the passes still stop at the noise target).
+        let blurred = job
+            .motion
+            .as_ref()
+            .and_then(|m| m.renderer(w, h, last, &opts));
+        // A job with a noise target starts at the quality whose samples are kept and grows.
+        flame.quality = match job.noise_target {
+            Some(_) if blurred.is_none() => last.min(KEEP_QUALITY.max(job.first_quality)),
+            _ => last,
+        };
+        let made = match blurred {
+            Some(made) => made,
+            None => Renderer::reusing(&flame, &opts, &mut self.spare),
+        };
         self.spare = Spare::default();
         match made {
             Ok(r) => {
@@ -546,6 +560,7 @@ mod tests {
             least_quality: 0.0,
             threads: 2,
             generation,
+            motion: None,
         }
     }
 

@@ -5,6 +5,7 @@ use eframe::egui::{self, Vec2};
 
 use super::FlameTab;
 use super::preview::{PreviewEvent, PreviewJob, PreviewWorker};
+use super::preview_motion::MotionJob;
 use super::preview_window::PreviewPlace;
 use crate::app::a11y::named;
 use crate::app::options::Options;
@@ -69,6 +70,7 @@ impl Preview {
                 == (job.width, job.height, job.first_quality, job.final_quality)
                 && (s.noise_target, s.least_quality) == (job.noise_target, job.least_quality)
                 && s.threads == job.threads
+                && s.motion == job.motion
         };
         let only_palette = match &self.submitted {
             Some(s) if same_settings(s) => {
@@ -137,17 +139,22 @@ impl Preview {
         let noise = self
             .noise
             .map_or(String::new(), |n| format!("  noise {n:.1}"));
+        let blur = self
+            .submitted
+            .as_ref()
+            .and_then(|j| j.motion.as_ref())
+            .map_or(String::new(), |m| format!("  {}", m.describe()));
         let text = if !self.refining {
-            format!("preview {:.0} ms", self.elapsed_ms)
+            format!("preview {:.0} ms{blur}", self.elapsed_ms)
         } else if self.done {
             format!(
-                "preview clean  quality {:.0}{noise}  {:.1} s",
+                "preview clean  quality {:.0}{noise}  {:.1} s{blur}",
                 self.quality,
                 self.elapsed_ms / 1000.0
             )
         } else {
             format!(
-                "refining {:>3.0}%  quality {:.0}{noise}",
+                "refining {:>3.0}%  quality {:.0}{noise}{blur}",
                 self.fraction * 100.0,
                 self.quality
             )
@@ -260,6 +267,16 @@ impl FlameTab {
     ) {
         let animating = self.animation.is_some() || self.morph.is_some() || self.timeline.playing();
         let dragging = dragging || self.camera_drag || self.timeline.scrubbing;
+        let motion = match self.morph {
+            Some(_) => None,
+            None => {
+                // Quick frames (playing, scrubbing, a drag) draw from fewer sub-frames.
+                let moving = animating || dragging;
+                self.timeline
+                    .motion_source(self.doc().flame())
+                    .and_then(|(source, time)| MotionJob::of(source, time, f, moving))
+            }
+        };
         let Some(p) = &mut self.preview else { return };
         // A still picture refines to the preview's noise target, whatever the file's quality
         // (that is for export); a drag or animation frame is one quick pass.
@@ -284,6 +301,7 @@ impl FlameTab {
             least_quality: options.preview_least_quality,
             threads: options.threads,
             generation: 0,
+            motion,
         });
         p.poll(ctx);
     }

@@ -2,7 +2,9 @@
 //! reference triangle; drag inside a triangle to move it, drag a corner to reshape it, Rotate
 //! and Scale modes turn or grow it about its centre or the origin (Shift: 15° steps); wheel
 //! zooms at the pointer, right or middle drag pans; the context menu adds, duplicates and
-//! deletes.
+//! deletes. At a frame of the timeline the triangles are the maps of that frame (with their
+//! keyed turns and scales), and what is dragged is keyed there or changes the base (see
+//! [`crate::flame::shown_maps`]).
 
 use eframe::egui::{self, Color32, Pos2, Sense, Shape, Stroke, Vec2};
 
@@ -12,7 +14,24 @@ use super::editor_state::{
     point_in_triangle, rotate_about, scale_about, xform_of, xform_of_mut,
 };
 use super::editor_tools::EditorAction;
+use crate::flame::keyframes::XformRef;
+use crate::flame::shown_maps::set_shown_map;
 use crate::flame::{Affine, Flame};
+
+/// The timeline's frame the triangles show, and whether edits are keyed there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KeyedView {
+    pub frame: f64,
+    pub auto_key: bool,
+}
+
+/// The flame whose maps are drawn: `f` at the frame of `keyed`, or `f` itself.
+fn view_of(f: &Flame, keyed: Option<KeyedView>) -> Flame {
+    match keyed {
+        Some(k) => f.keys.apply(f, k.frame),
+        None => f.clone(),
+    }
+}
 
 const FINAL_COLOR: Color32 = Color32::from_rgb(255, 255, 255);
 
@@ -35,6 +54,7 @@ pub fn canvas(
     doc: &mut Document,
     st: &mut EditorState,
     auto_weights: bool,
+    keyed: Option<KeyedView>,
 ) -> CanvasOutput {
     let mut out = CanvasOutput::default();
     let size = ui.available_size().max(Vec2::new(120.0, 120.0));
@@ -54,20 +74,20 @@ pub fn canvas(
         draw_grid(&painter, rect, st);
     }
     let reference = draw_reference(&painter, st);
-    let flame = doc.flame().clone();
+    let flame = view_of(doc.flame(), keyed);
     let entries = triangle_entries(&flame, st);
     for e in &entries {
         draw_triangle(&painter, st, e);
     }
     // Interaction.
     if resp.drag_started() {
-        start_gesture(ui, &resp, doc, st, &entries, reference);
+        start_gesture(ui, &resp, doc, &flame, st, &entries, reference);
     }
     if resp.dragged()
         && let Some(g) = st.gesture.clone()
     {
         out.dragging = true;
-        out.changed = drag_gesture(ui, &resp, doc, st, &g, auto_weights);
+        out.changed = drag_gesture(ui, &resp, doc, st, &g, auto_weights, keyed);
     }
     if resp.drag_stopped()
         && let Some(g) = st.gesture.take()
@@ -272,6 +292,7 @@ fn start_gesture(
     ui: &egui::Ui,
     resp: &egui::Response,
     doc: &mut Document,
+    shown: &Flame,
     st: &mut EditorState,
     entries: &[Entry],
     reference: [[f64; 2]; 3],
@@ -285,7 +306,7 @@ fn start_gesture(
     let w = st.world_from_screen(pos);
     let middle = ui.input(|i| i.pointer.middle_down());
     let pan = middle || resp.dragged_by(egui::PointerButton::Secondary);
-    let flame = doc.flame();
+    let flame = shown;
     let drag = if pan {
         Drag::Pan
     } else {
@@ -351,6 +372,7 @@ fn drag_gesture(
     st: &mut EditorState,
     g: &Gesture,
     auto_weights: bool,
+    keyed: Option<KeyedView>,
 ) -> bool {
     let pos = resp.interact_pointer_pos().unwrap_or(resp.rect.center());
     let w = st.world_from_screen(pos);
@@ -394,8 +416,9 @@ fn drag_gesture(
     };
     let sel = st.selected;
     let mut m = Affine::from_triangle(t);
+    let before = view_of(&g.before, keyed);
     if matches!(g.drag, Drag::Body)
-        && let Some(x) = xform_of(&g.before, sel)
+        && let Some(x) = xform_of(&before, sel)
     {
         // A move changes only the translation: keep the linear part bit for bit.
         let s = st.map_of(x);
@@ -403,7 +426,15 @@ fn drag_gesture(
     }
     let edit_post = st.edit_post;
     let f = doc.flame_mut_in_gesture();
-    if let Some(x) = xform_of_mut(f, sel) {
+    if let Some(k) = keyed {
+        // The keys and base as they were when the drag began, then this drag's map.
+        *f = g.before.clone();
+        let x = match sel {
+            Selected::Xform(i) => XformRef::Index(i),
+            Selected::Final => XformRef::Final,
+        };
+        set_shown_map(f, x, edit_post, k.frame, m, k.auto_key);
+    } else if let Some(x) = xform_of_mut(f, sel) {
         if edit_post {
             x.post = m;
         } else {

@@ -8,8 +8,11 @@ use super::document::Document;
 use super::editor_state::{EditorState, Selected, xform_of, xform_of_mut};
 use super::transform_list::{set_xform_name, xform_name};
 use super::transform_tools;
+use super::triangles::KeyedView;
 use super::variations_panel;
 use crate::app::a11y::named;
+use crate::flame::keyframes::XformRef;
+use crate::flame::shown_maps::set_shown_map;
 use crate::flame::{Affine, Xform};
 
 /// A named number; returns true when changed.
@@ -48,14 +51,53 @@ fn unit_slider(ui: &mut egui::Ui, v: &mut f64, name: &str, tip: &str) {
     });
 }
 
+/// The base transform `t` with the numbers of `x` (the transform as shown at a frame) other
+/// than its maps and variations, which stay the base's.
+fn numbers_on_base(t: &mut Xform, x: &Xform) -> Xform {
+    Xform {
+        coefs: t.coefs,
+        post: t.post,
+        vars: std::mem::take(&mut t.vars),
+        ..x.clone()
+    }
+}
+
 /// Apply an edited copy of the selected transform: one undo step per click, per typed value,
 /// or per drag (`dragging`: a pointer is held). Triangle edits re-derive area weights when the
 /// flame follows them.
-fn apply(doc: &mut Document, sel: Selected, x: Xform, auto_weights: bool, dragging: bool) {
-    let geometry = xform_of(doc.flame(), sel).is_some_and(|old| old.coefs != x.coefs);
+fn apply(
+    doc: &mut Document,
+    sel: Selected,
+    (x0, x): (&Xform, Xform),
+    auto_weights: bool,
+    dragging: bool,
+    keyed: Option<KeyedView>,
+) {
+    let geometry = x0.coefs != x.coefs;
     doc.edit_while(dragging, |f| {
-        if let Some(t) = xform_of_mut(f, sel) {
-            *t = x;
+        match keyed {
+            // The maps shown are the frame's: a changed one is keyed there or worked back
+            // into the base; the other numbers are the base's (held at the frame).
+            Some(k) => {
+                let r = match sel {
+                    Selected::Xform(i) => XformRef::Index(i),
+                    Selected::Final => XformRef::Final,
+                };
+                if let Some(t) = xform_of_mut(f, sel) {
+                    *t = numbers_on_base(t, &x);
+                }
+                if x.coefs != x0.coefs {
+                    set_shown_map(f, r, false, k.frame, x.coefs, k.auto_key);
+                }
+                if x.post != x0.post {
+                    set_shown_map(f, r, true, k.frame, x.post, k.auto_key);
+                }
+            }
+            None => {
+                if let Some(t) = xform_of_mut(f, sel) {
+                    *t = x;
+                }
+            }
         }
         if auto_weights && geometry && sel != Selected::Final {
             f.set_determinant_weights();
@@ -70,10 +112,13 @@ pub fn triangle_section(
     st: &mut EditorState,
     auto_weights: bool,
     dragging: bool,
+    keyed: Option<KeyedView>,
 ) {
     st.fix_selection(doc.flame());
     let sel = st.selected;
-    let Some(x0) = xform_of(doc.flame(), sel).cloned() else {
+    // At a frame of the timeline: the maps of that frame (with their keyed turns and scales).
+    let shown = keyed.map(|k| doc.flame().keys.apply(doc.flame(), k.frame));
+    let Some(x0) = xform_of(shown.as_ref().unwrap_or(doc.flame()), sel).cloned() else {
         ui.label("No transform selected");
         return;
     };
@@ -164,14 +209,18 @@ pub fn triangle_section(
             doc.edit(|f| {
                 f.auto_weights = Some(follow_areas);
                 if let Some(t) = xform_of_mut(f, sel) {
-                    *t = x.clone();
+                    *t = match keyed {
+                        // The maps shown are the frame's, not the base's.
+                        Some(_) => numbers_on_base(t, &x),
+                        None => x.clone(),
+                    };
                 }
                 if follow_areas {
                     f.set_determinant_weights();
                 }
             });
         } else {
-            apply(doc, sel, x, auto_weights, dragging);
+            apply(doc, sel, (&x0, x), auto_weights, dragging, keyed);
         }
     }
     ui.separator();
@@ -298,6 +347,6 @@ pub fn variations_section(
     let mut x = x0.clone();
     variations_panel::panel(ui, &mut x, &mut st.var_find);
     if x != x0 {
-        apply(doc, sel, x, false, dragging);
+        apply(doc, sel, (&x0, x), false, dragging, None);
     }
 }

@@ -186,6 +186,9 @@ impl FlameTab {
                 if let Some(v) = &s.video {
                     text.push_str(&format!("; video {}", v.display()));
                 }
+                for note in s.notes() {
+                    text.push_str(&format!("; {note}"));
+                }
                 if let Some(why) = end.no_video {
                     self.notices.message(
                         "Video not made",

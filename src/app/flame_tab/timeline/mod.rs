@@ -36,9 +36,10 @@ use super::{FlameTab, Showing};
 use crate::flame::Flame;
 use crate::flame::interpolate::interpolate_at;
 use crate::flame::keyframes::Target;
+use crate::io::animation::Source;
 
 pub use loop_tools::{LoopDialog, rotation_loop};
-pub use sound::{SoundAsk, SoundDialog};
+pub use sound::{SoundAsk, SoundDialog, SoundJob};
 
 /// What the timeline plays.
 #[derive(Clone, Debug, Default)]
@@ -87,6 +88,8 @@ struct Play {
     from: f64,
     /// Generation of the preview frame that must be shown before the next frame is asked.
     waiting_for: u64,
+    /// The flame when playback started: an edit (the flame differs) pauses it.
+    flame: Flame,
 }
 
 /// What [`Timeline::sync`] saw last: the flame as held, where it was, and its frame.
@@ -136,6 +139,8 @@ pub struct Timeline {
     pub loop_dialog: Option<LoopDialog>,
     /// The sound window's settings, when open.
     pub sound_dialog: Option<SoundDialog>,
+    /// The sound being decoded for the sound window.
+    pub sound_job: Option<std::sync::Arc<SoundJob>>,
     play: Option<Play>,
     /// When the last frames were shown during playback (frames per second).
     shown_at: VecDeque<Instant>,
@@ -159,6 +164,7 @@ impl Default for Timeline {
             curve: None,
             loop_dialog: None,
             sound_dialog: None,
+            sound_job: None,
             play: None,
             shown_at: VecDeque::new(),
             seen: None,
@@ -214,6 +220,30 @@ impl Timeline {
         }
     }
 
+    /// What the preview's frame is blurred from: the animation and the current frame's time
+    /// (None when the preview shows the flame itself).
+    pub fn motion_source(&self, base: &Flame) -> Option<(Source, f64)> {
+        if !self.open {
+            return None;
+        }
+        match &self.mode {
+            Mode::Keys if base.keys.is_empty() => None,
+            Mode::Keys => Some((Source::Keys(base.clone()), self.frame)),
+            Mode::Sequence(s) => Some((Source::Sequence(s.cps.clone()), self.time_of(self.frame))),
+        }
+    }
+
+    /// The frame the triangle editor shows and keys, while the timeline shows the flame's
+    /// keys.
+    pub fn keyed_view(&self, base: &Flame) -> Option<crate::app::flame_tab::triangles::KeyedView> {
+        (self.open && matches!(self.mode, Mode::Keys) && !base.keys.is_empty()).then_some(
+            crate::app::flame_tab::triangles::KeyedView {
+                frame: self.frame,
+                auto_key: self.auto_key,
+            },
+        )
+    }
+
     /// Go to a frame (clamped to the timeline).
     pub fn go_to(&mut self, frame: f64, f: &Flame) {
         let last = self.frames(f).saturating_sub(1) as f64;
@@ -241,6 +271,7 @@ impl Timeline {
                 clock: Instant::now(),
                 from: self.frame,
                 waiting_for: 0,
+                flame: f.clone(),
             });
             self.shown_at.clear();
         }
@@ -395,6 +426,32 @@ impl FlameTab {
         self.timeline.go_to(frame.min(last), &f);
     }
 
+    /// An edit while playing pauses playback at the frame shown, as the edit is made there:
+    /// with Auto-key its animated values are keyed at that frame (the flame from before the
+    /// edit is what the next hold compares with).
+    fn pause_on_edit(&mut self) {
+        let Some(p) = &self.timeline.play else {
+            return;
+        };
+        if &p.flame == self.doc().flame() {
+            return;
+        }
+        let before = p.flame.clone();
+        self.timeline.stop();
+        let (current, restores) = (self.doc().current, self.doc().restores());
+        self.timeline.seen = Some(Seen {
+            showing: self.showing,
+            current,
+            restores,
+            frame: self.timeline.frame,
+            flame: before,
+        });
+        self.notices.status(format!(
+            "Paused at frame {}: edits are made at the frame shown",
+            self.timeline.frame
+        ));
+    }
+
     /// Keep the timeline in step with the document: a sequence made from flames that have
     /// changed ends, the frame stays on the timeline, animated values are held at it.
     pub(super) fn timeline_frame(&mut self, ctx: &egui::Context) {
@@ -410,6 +467,7 @@ impl FlameTab {
         if self.timeline.frame > (frames - 1) as f64 {
             self.timeline.frame = (frames - 1) as f64;
         }
+        self.pause_on_edit();
         if self.timeline.playing() {
             let fps = match &self.timeline.mode {
                 Mode::Keys => self.doc().flame().keys.fps,
