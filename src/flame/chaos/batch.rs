@@ -7,7 +7,7 @@ use super::xform::within;
 use super::{CompiledXform, LANES};
 use crate::flame::fastmath;
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{self, Acc, Prepared, SoaAcc, SoaIn, VarIn, need};
+use crate::flame::variations::{self, Acc, Prepared, SoaAcc, SoaIn, need};
 
 /// Per-point scratch arrays of one xform application.
 #[derive(Clone, Debug)]
@@ -62,35 +62,11 @@ fn own_colour(acc: &Acc, rgb: Option<&mut [u32]>, j: usize) -> f64 {
 
 /// A variation that may set an own colour over a group, point by point (the generic batch
 /// loop of [`Prepared::eval`], own colours into `rgb`).
-fn own_colour_batch(
-    v: &Prepared,
-    s: &SoaIn,
-    acc: &mut SoaAcc,
-    rgb: &mut [u32],
-    rng: &mut FastRng,
-) {
+fn own_colour_batch(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rgb: &mut [u32], rng: &mut FastRng) {
     let n = acc.x.len().min(rgb.len());
     for j in 0..n {
-        let t = VarIn {
-            x: s.x[j],
-            y: s.y[j],
-            z: s.z[j],
-            sumsq: s.sumsq[j],
-            sqrt: s.sqrt[j],
-            ux: s.ux[j],
-            uy: s.uy[j],
-            atan_xy: s.atan_xy[j],
-            atan_yx: s.atan_yx[j],
-            color: s.color[j],
-        };
-        let mut a = Acc {
-            x: acc.x[j],
-            y: acc.y[j],
-            z: acc.z[j],
-            color: acc.color[j],
-            hide: false,
-            rgb: None,
-        };
+        let t = s.at(j);
+        let mut a = acc.at(j);
         let o = v.eval(&t, &mut a, rng);
         acc.x[j] = a.x + o[0];
         acc.y[j] = a.y + o[1];
@@ -412,7 +388,7 @@ mod tests {
     use super::*;
     use crate::flame::chaos::{Chaos, Pt};
     use crate::flame::model::{Affine, Flame, Xform};
-    use crate::flame::variations;
+    use crate::flame::variations::{self, VarIn};
 
     #[test]
     fn pre_and_post_forms_wrap_the_regular_variations() {
@@ -478,7 +454,15 @@ mod tests {
         let mut s = Scratch::new();
         let mut rng = FastRng::new(4);
         let xf = &ch.xforms[0];
-        xf.apply_soa(&mut x, &mut y, &mut z, &mut c, Some(&mut rgb), &mut s, &mut rng);
+        xf.apply_soa(
+            &mut x,
+            &mut y,
+            &mut z,
+            &mut c,
+            Some(&mut rgb),
+            &mut s,
+            &mut rng,
+        );
         for j in 0..n {
             assert_eq!(rgb[j] & own_rgb::OWN, own_rgb::OWN, "{j}");
             assert_eq!(c[j], 0.5 * 0.3 + 0.5 * 0.7);
@@ -489,15 +473,26 @@ mod tests {
         let mut r2 = FastRng::new(9);
         let mut one = [0u32];
         let (mut x1, mut y1, mut z1, mut c1) = ([0.1], [-0.2], [0.0], [0.7]);
-        xf.apply_soa(&mut x1, &mut y1, &mut z1, &mut c1, Some(&mut one), &mut s, &mut r1);
+        xf.apply_soa(
+            &mut x1,
+            &mut y1,
+            &mut z1,
+            &mut c1,
+            Some(&mut one),
+            &mut s,
+            &mut r1,
+        );
         let t = VarIn::new(0.1, -0.2, 0.0, 0.5, xf.needs, false);
         let mut acc = Acc::default();
         xf.vars[0].eval(&t, &mut acc, &mut r2);
         assert_eq!(Some(one[0]), acc.packed_rgb());
         // A palette xform clears the colours it is given …
         let kept = rgb.clone();
-        let xb = &ch.xforms[1];
-        xb.apply_soa(&mut x, &mut y, &mut z, &mut c, Some(&mut rgb), &mut s, &mut rng);
+        let mut step = |xf: &CompiledXform, rgb: &mut [u32]| {
+            let r = Some(rgb);
+            xf.apply_soa(&mut x, &mut y, &mut z, &mut c, r, &mut s, &mut rng);
+        };
+        step(&ch.xforms[1], &mut rgb);
         assert!(rgb.iter().all(|&p| p == 0));
         // … unless it is of JWildfire's colour type NONE.
         f.xforms[1]
@@ -505,8 +500,7 @@ mod tests {
             .push(("color_type".into(), "NONE".into()));
         let ch = Chaos::new(&f).unwrap();
         let mut rgb = kept.clone();
-        let xb = &ch.xforms[1];
-        xb.apply_soa(&mut x, &mut y, &mut z, &mut c, Some(&mut rgb), &mut s, &mut rng);
+        step(&ch.xforms[1], &mut rgb);
         assert_eq!(rgb, kept);
         // Flames of other writers do not carry own colours.
         f.palette_index = PaletteIndex::Flam3;

@@ -179,6 +179,25 @@ pub struct SoaIn<'a> {
     pub color: &'a [f64],
 }
 
+impl SoaIn<'_> {
+    /// The input of point `j`.
+    #[inline(always)]
+    pub fn at(&self, j: usize) -> VarIn {
+        VarIn {
+            x: self.x[j],
+            y: self.y[j],
+            z: self.z[j],
+            sumsq: self.sumsq[j],
+            sqrt: self.sqrt[j],
+            ux: self.ux[j],
+            uy: self.uy[j],
+            atan_xy: self.atan_xy[j],
+            atan_yx: self.atan_yx[j],
+            color: self.color[j],
+        }
+    }
+}
+
 /// Running outputs of a batch of points.
 pub struct SoaAcc<'a> {
     pub x: &'a mut [f64],
@@ -187,4 +206,19 @@ pub struct SoaAcc<'a> {
     pub color: &'a mut [f64],
     /// Set where a variation hides the point (only formulas called point by point hide).
     pub hide: &'a mut [bool],
+}
+
+impl SoaAcc<'_> {
+    /// The running output of point `j`, as a formula called point by point sees it.
+    #[inline(always)]
+    pub fn at(&self, j: usize) -> Acc {
+        Acc {
+            x: self.x[j],
+            y: self.y[j],
+            z: self.z[j],
+            color: self.color[j],
+            hide: false,
+            rgb: None,
+        }
+    }
 }
