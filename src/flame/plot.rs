@@ -7,6 +7,7 @@ use crate::flame::geometry::Geometry;
 use crate::flame::histogram::{Bucket, Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
 use crate::flame::jwf_render::JwfRaster;
+use crate::flame::jwf_render::own_colour::{OwnSample, accumulate_own};
 use crate::flame::model::PaletteMode;
 use crate::flame::rng::FastRng;
 
@@ -77,7 +78,9 @@ fn iterate_into_generic(
     let jwf = geom.jwf.is_some();
     let antialias = geom.jwf.as_ref().and_then(|j| j.antialias);
     let mut aa_rng = FastRng::new(if antialias.is_some() { rng.u64() } else { 0 });
-    let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs| {
+    // Samples with colours of their own, added apart (only flames whose points carry them).
+    let mut own: Vec<OwnSample> = Vec::new();
+    let bad = chaos.run_lanes(n, rng, lanes, |xs, ys, _zs, cs, vs, rgbs| {
         // Buckets as arrays (vectorised), then a branch-free compaction of the visible
         // points that land in the histogram.
         let m = xs.len().min(ys.len()).min(cs.len()).min(vs.len()).min(L);
@@ -96,6 +99,14 @@ fn iterate_into_generic(
                 let (i, inside) = map.index(xs[j], ys[j]);
                 idx[j] = i;
                 keep[j] = (inside & (vs[j] > 0.0)) as u32;
+            }
+        }
+        if !rgbs.is_empty() {
+            for j in 0..m.min(rgbs.len()) {
+                if keep[j] != 0 && rgbs[j] != 0 {
+                    own.push((idx[j], rgbs[j], vs[j] as f32));
+                    keep[j] = 0;
+                }
             }
         }
         // Written straight into the spare capacity of `buf`: every place is written before
@@ -117,6 +128,7 @@ fn iterate_into_generic(
         unsafe { buf.set_len(len + k.min(m)) };
     });
     accumulate(pal, hist, buf);
+    accumulate_own(pal, hist, &own);
     bad
 }
 

@@ -7,7 +7,7 @@ use super::xform::within;
 use super::{CompiledXform, LANES};
 use crate::flame::fastmath;
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{Acc, SoaAcc, SoaIn, need};
+use crate::flame::variations::{self, Acc, Prepared, SoaAcc, SoaIn, need};
 
 /// Per-point scratch arrays of one xform application.
 #[derive(Clone, Debug)]
@@ -45,24 +45,68 @@ impl Scratch {
     }
 }
 
+/// The colour coordinate a point leaves a variation with. Where own colours are carried
+/// (`rgb`), an own colour goes to `rgb[j]` and the coordinate is kept (JWildfire's direct
+/// colour leaves the gradient position alone); elsewhere an own colour becomes its
+/// luminance ([`Acc::drawn_color`]).
+#[inline(always)]
+fn own_colour(acc: &Acc, rgb: Option<&mut [u32]>, j: usize) -> f64 {
+    match (rgb, acc.packed_rgb()) {
+        (Some(r), Some(p)) => {
+            r[j] = p;
+            acc.color
+        }
+        _ => acc.drawn_color(),
+    }
+}
+
+/// A variation that may set an own colour over a group, point by point (the generic batch
+/// loop of [`Prepared::eval`], own colours into `rgb`).
+fn own_colour_batch(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rgb: &mut [u32], rng: &mut FastRng) {
+    let n = acc.x.len().min(rgb.len());
+    for j in 0..n {
+        let t = s.at(j);
+        let mut a = acc.at(j);
+        let o = v.eval(&t, &mut a, rng);
+        acc.x[j] = a.x + o[0];
+        acc.y[j] = a.y + o[1];
+        acc.z[j] = a.z + o[2];
+        acc.color[j] = own_colour(&a, Some(rgb), j);
+        acc.hide[j] |= a.hide;
+    }
+}
+
 // The steps of `apply_soa` take the group as slices of one length (at most `LANES`).
 impl CompiledXform {
     /// Apply to the points `x, y, z, c` (at most [`LANES`]; in place; `g.bad` flags set; a
     /// bad point is replaced by a random point of [−1, 1]²). The pre-affine points and their
     /// derived quantities are computed as arrays, then every regular variation runs over the
-    /// whole group.
+    /// whole group. With `rgb` (the points' own colours, [`variations::own_rgb`]) the own
+    /// colours the variations set are written there, and the colour coordinate keeps its
+    /// blend; a point no variation gives one draws the palette's again unless the xform keeps
+    /// colours.
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn apply_soa(
         &self,
         x: &mut [f64],
         y: &mut [f64],
         z: &mut [f64],
         c: &mut [f64],
+        rgb: Option<&mut [u32]>,
         g: &mut Scratch,
         rng: &mut FastRng,
     ) {
         let n = x.len().min(y.len()).min(z.len()).min(c.len()).min(LANES);
         let (x, y, z, c) = (&mut x[..n], &mut y[..n], &mut z[..n], &mut c[..n]);
+        let mut rgb = rgb.map(|r| &mut r[..n]);
+        if let Some(r) = rgb.as_deref_mut()
+            && !self.keeps_rgb
+        {
+            r.fill(0);
+        }
+        // Only variations that may set an own colour write one.
+        let mut rgb = rgb.filter(|_| self.own_rgb);
         if self.hides {
             g.hide[..n].fill(false);
         }
@@ -72,9 +116,9 @@ impl CompiledXform {
             self.mark_bad(x, y, z, &mut g.bad[..n], rng);
             return;
         }
-        self.pre_forms(x, y, z, c, g, rng);
+        self.pre_forms(x, y, z, c, rgb.as_deref_mut(), g, rng);
         if !self.vars.is_empty() {
-            self.regular_forms(x, y, z, c, g, rng);
+            self.regular_forms(x, y, z, c, rgb.as_deref_mut(), g, rng);
         } else if !self.pre_vars.is_empty() {
             g.px[..n].copy_from_slice(x);
             g.py[..n].copy_from_slice(y);
@@ -84,7 +128,7 @@ impl CompiledXform {
             g.py[..n].fill(0.0);
             g.pz[..n].fill(0.0);
         }
-        self.post_forms(c, g, rng);
+        self.post_forms(c, rgb, g, rng);
         self.finish_group(x, y, z, c, g, rng);
     }
 
@@ -123,14 +167,16 @@ impl CompiledXform {
     }
 
     /// The `pre_` forms, point by point: each replaces (or moves) the point; the colour they
-    /// set goes to `g.pc` (the blended colour when there are none).
+    /// set goes to `g.pc` (the blended colour when there are none), an own colour to `rgb`.
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn pre_forms(
         &self,
         x: &mut [f64],
         y: &mut [f64],
         z: &mut [f64],
         c: &[f64],
+        mut rgb: Option<&mut [u32]>,
         g: &mut Scratch,
         rng: &mut FastRng,
     ) {
@@ -149,7 +195,7 @@ impl CompiledXform {
                 v.apply_pre(&mut tr, &mut acc, c[j], rng);
             }
             (x[j], y[j], z[j]) = (tr[0], tr[1], tr[2]);
-            g.pc[j] = acc.drawn_color();
+            g.pc[j] = own_colour(&acc, rgb.as_deref_mut(), j);
             g.hide[j] |= acc.hide;
         }
     }
@@ -194,14 +240,16 @@ impl CompiledXform {
     }
 
     /// Every regular variation over the whole group, their outputs summed into `g.px`,
-    /// `g.py`, `g.pz` (and their colours into `g.pc`).
+    /// `g.py`, `g.pz` (and their colours into `g.pc`, own colours into `rgb`).
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn regular_forms(
         &self,
         x: &[f64],
         y: &[f64],
         z: &[f64],
         c: &[f64],
+        mut rgb: Option<&mut [u32]>,
         g: &mut Scratch,
         rng: &mut FastRng,
     ) {
@@ -231,13 +279,25 @@ impl CompiledXform {
             hide: &mut g.hide[..n],
         };
         for v in &self.vars {
-            v.apply_batch(&soa, &mut acc, rng);
+            match rgb.as_deref_mut() {
+                Some(r) if v.def.has(variations::flag::SETS_COLOR) => {
+                    own_colour_batch(v, &soa, &mut acc, r, rng)
+                }
+                _ => v.apply_batch(&soa, &mut acc, rng),
+            }
         }
     }
 
-    /// The `post_` forms, point by point, on the summed points in `g`.
+    /// The `post_` forms, point by point, on the summed points in `g` (own colours into
+    /// `rgb`).
     #[inline(always)]
-    fn post_forms(&self, c: &[f64], g: &mut Scratch, rng: &mut FastRng) {
+    fn post_forms(
+        &self,
+        c: &[f64],
+        mut rgb: Option<&mut [u32]>,
+        g: &mut Scratch,
+        rng: &mut FastRng,
+    ) {
         let n = c.len();
         if self.post_vars.is_empty() {
             return;
@@ -254,7 +314,8 @@ impl CompiledXform {
             for v in &self.post_vars {
                 v.apply_post(&mut acc, cj, rng);
             }
-            (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, acc.drawn_color());
+            let pc = own_colour(&acc, rgb.as_deref_mut(), j);
+            (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, pc);
             g.hide[j] |= acc.hide;
         }
     }
@@ -327,7 +388,7 @@ mod tests {
     use super::*;
     use crate::flame::chaos::{Chaos, Pt};
     use crate::flame::model::{Affine, Flame, Xform};
-    use crate::flame::variations;
+    use crate::flame::variations::{self, VarIn};
 
     #[test]
     fn pre_and_post_forms_wrap_the_regular_variations() {
@@ -364,8 +425,86 @@ mod tests {
         // The same through the batched lanes.
         let (mut gx, mut gy, mut gz, mut gc) = ([p.x], [p.y], [p.z], [p.c]);
         let mut s = Scratch::new();
-        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, &mut s, &mut rng);
+        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, None, &mut s, &mut rng);
         assert!((gx[0] - q.x).abs() < 1e-12 && (gy[0] - q.y).abs() < 1e-12);
+    }
+
+    /// Own colours through a group: a direct-colour variation writes its pattern's colour
+    /// (as the scalar path computes it) and leaves the colour coordinate at its blend; an
+    /// xform without one gives the palette's colour back, unless it keeps colours.
+    #[test]
+    fn own_colours_are_written_kept_or_cleared() {
+        use crate::flame::model::{PaletteIndex, Var};
+        use crate::flame::variations::own_rgb;
+        let dc = variations::by_name("dc_mandala").unwrap();
+        let mut a = Xform::linear(Affine::IDENTITY, 1.0, 0.3);
+        a.vars = vec![Var::new(dc, 1.0)];
+        a.color_speed = 0.5;
+        let b = Xform::linear(Affine::new(0.5, 0.0, 0.0, 0.5, 0.1, 0.0), 1.0, 0.9);
+        let mut f = Flame {
+            xforms: vec![a, b],
+            palette_index: PaletteIndex::JWildfire,
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.rgb && ch.xforms[0].own_rgb && !ch.xforms[1].own_rgb);
+        let n = 8;
+        let (mut x, mut y, mut z) = (vec![0.1; n], vec![-0.2; n], vec![0.0; n]);
+        let (mut c, mut rgb) = (vec![0.7; n], vec![0u32; n]);
+        let mut s = Scratch::new();
+        let mut rng = FastRng::new(4);
+        let xf = &ch.xforms[0];
+        xf.apply_soa(
+            &mut x,
+            &mut y,
+            &mut z,
+            &mut c,
+            Some(&mut rgb),
+            &mut s,
+            &mut rng,
+        );
+        for j in 0..n {
+            assert_eq!(rgb[j] & own_rgb::OWN, own_rgb::OWN, "{j}");
+            assert_eq!(c[j], 0.5 * 0.3 + 0.5 * 0.7);
+        }
+        // The scalar path gives the same colour for the same point (the pattern reads the
+        // random point it draws: the same stream, the same draw).
+        let mut r1 = FastRng::new(9);
+        let mut r2 = FastRng::new(9);
+        let mut one = [0u32];
+        let (mut x1, mut y1, mut z1, mut c1) = ([0.1], [-0.2], [0.0], [0.7]);
+        xf.apply_soa(
+            &mut x1,
+            &mut y1,
+            &mut z1,
+            &mut c1,
+            Some(&mut one),
+            &mut s,
+            &mut r1,
+        );
+        let t = VarIn::new(0.1, -0.2, 0.0, 0.5, xf.needs, false);
+        let mut acc = Acc::default();
+        xf.vars[0].eval(&t, &mut acc, &mut r2);
+        assert_eq!(Some(one[0]), acc.packed_rgb());
+        // A palette xform clears the colours it is given …
+        let kept = rgb.clone();
+        let mut step = |xf: &CompiledXform, rgb: &mut [u32]| {
+            let r = Some(rgb);
+            xf.apply_soa(&mut x, &mut y, &mut z, &mut c, r, &mut s, &mut rng);
+        };
+        step(&ch.xforms[1], &mut rgb);
+        assert!(rgb.iter().all(|&p| p == 0));
+        // … unless it is of JWildfire's colour type NONE.
+        f.xforms[1]
+            .extra_attrs
+            .push(("color_type".into(), "NONE".into()));
+        let ch = Chaos::new(&f).unwrap();
+        let mut rgb = kept.clone();
+        step(&ch.xforms[1], &mut rgb);
+        assert_eq!(rgb, kept);
+        // Flames of other writers do not carry own colours.
+        f.palette_index = PaletteIndex::Flam3;
+        assert!(!Chaos::new(&f).unwrap().rgb);
     }
 
     #[test]
@@ -387,7 +526,7 @@ mod tests {
         let mut gz: Vec<f64> = pts.iter().map(|p| p.z + 0.5).collect();
         let mut gc: Vec<f64> = pts.iter().map(|p| p.c).collect();
         let mut s = Scratch::new();
-        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, &mut s, &mut rng);
+        ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, None, &mut s, &mut rng);
         for (j, p) in pts.iter().enumerate() {
             let (q, bad) = ch.xforms[0].apply(Pt { z: p.z + 0.5, ..*p }, &mut rng);
             assert!(!bad && !s.bad[j]);

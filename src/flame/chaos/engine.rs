@@ -31,12 +31,13 @@ impl Chaos {
     /// orbit, chosen at random, restarts (fused) at every call, so that orbits live about as
     /// long as flam3's (one per sub-batch of 10 000 samples).
     ///
-    /// `plot(xs, ys, zs, cs, vis)` receives the points of a step (final xform and camera
-    /// applied) with their visibilities; an entry with a negative visibility is not a sample
-    /// (an orbit still in its fuse or retrying a bad value, or beyond the `n` asked for) and
-    /// must be skipped. Returns the number of bad values.
+    /// `plot(xs, ys, zs, cs, vis, rgb)` receives the points of a step (final xform and camera
+    /// applied) with their visibilities and, for a flame whose points carry own colours
+    /// ([`Chaos::rgb`]; otherwise empty), those colours; an entry with a negative visibility
+    /// is not a sample (an orbit still in its fuse or retrying a bad value, or beyond the `n`
+    /// asked for) and must be skipped. Returns the number of bad values.
     #[inline(always)]
-    pub(crate) fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64])>(
+    pub(crate) fn run_lanes<F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64], &[u32])>(
         &self,
         n: u64,
         rng: &mut FastRng,
@@ -60,7 +61,8 @@ impl Chaos {
                 self.all_samples(ln);
                 plotted += LANES as u64;
                 let o = &ln.sets[ln.cur & 1];
-                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis);
+                let rgb: &[u32] = if self.rgb { &o.rgb } else { &[] };
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis, rgb);
                 continue;
             }
             let (nf, took, bad_values) = self.samples_of_step(ln, n - plotted, direct);
@@ -68,18 +70,21 @@ impl Chaos {
             bad += bad_values;
             if direct {
                 let o = &ln.sets[ln.cur & 1];
-                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis);
+                let rgb: &[u32] = if self.rgb { &o.rgb } else { &[] };
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis, rgb);
                 continue;
             }
             let m = nf.min(LANES);
             self.finish_samples(ln, m, rng);
             let fin = &ln.fin;
+            let rgb: &[u32] = if self.rgb { &fin.rgb[..m] } else { &[] };
             plot(
                 &fin.x[..m],
                 &fin.y[..m],
                 &fin.z[..m],
                 &fin.c[..m],
                 &ln.fin_vis[..m],
+                rgb,
             );
         }
         bad
@@ -94,6 +99,7 @@ impl Chaos {
             for l in 0..LANES {
                 let p = Self::start_point(rng);
                 (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
+                o.rgb[l] = 0;
             }
             ln.started = true;
         } else {
@@ -107,6 +113,7 @@ impl Chaos {
             let o = &mut ln.sets[ln.cur & 1];
             (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
             (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
+            o.rgb[l] = 0;
         }
     }
 
@@ -240,6 +247,11 @@ impl Chaos {
                 dst.last[p] = src.last[l as usize & M];
             }
         }
+        if self.rgb {
+            for (p, &l) in ln.order.iter().enumerate() {
+                dst.rgb[p] = src.rgb[l as usize & M];
+            }
+        }
         if !ln.clean {
             for (p, &l) in ln.order.iter().enumerate() {
                 let l = l as usize & M;
@@ -260,11 +272,13 @@ impl Chaos {
             let (start, end) = (ln.bounds[i].min(LANES), ln.bounds[i + 1].min(LANES));
             if end > start {
                 let r = start..end;
+                let rgb = self.rgb.then(|| &mut dst.rgb[r.clone()]);
                 self.xforms[i].apply_soa(
                     &mut dst.x[r.clone()],
                     &mut dst.y[r.clone()],
                     &mut dst.z[r.clone()],
                     &mut dst.c[r.clone()],
+                    rgb,
                     &mut ln.g,
                     rng,
                 );
@@ -339,6 +353,7 @@ impl Chaos {
                         ln.fin.y[k] = dst.y[p];
                         ln.fin.z[k] = dst.z[p];
                         ln.fin.c[k] = dst.c[p];
+                        ln.fin.rgb[k] = dst.rgb[p];
                         ln.fin_vis[k] = v;
                         nf += 1;
                     }
@@ -365,11 +380,13 @@ impl Chaos {
         for f in self.final_xform.iter().chain(&self.more_finals) {
             if f.opacity >= 1.0 {
                 let fin = &mut ln.fin;
+                let rgb = self.rgb.then(|| &mut fin.rgb[..m]);
                 f.apply_soa(
                     &mut fin.x[..m],
                     &mut fin.y[..m],
                     &mut fin.z[..m],
                     &mut fin.c[..m],
+                    rgb,
                     &mut ln.g,
                     rng,
                 );
@@ -381,7 +398,7 @@ impl Chaos {
                     }
                 }
             } else {
-                Self::final_by_opacity(f, ln, m, rng);
+                Self::final_by_opacity(f, ln, m, self.rgb, rng);
             }
         }
         if let Some(pr) = &self.projection {
@@ -395,7 +412,13 @@ impl Chaos {
     /// The final xform `f` applied to each of the first `m` samples of `ln.fin` with
     /// probability = its opacity: the chosen points are compacted, transformed and put back.
     #[inline(always)]
-    fn final_by_opacity(f: &CompiledXform, ln: &mut Lanes, m: usize, rng: &mut FastRng) {
+    fn final_by_opacity(
+        f: &CompiledXform,
+        ln: &mut Lanes,
+        m: usize,
+        own_rgb: bool,
+        rng: &mut FastRng,
+    ) {
         ln.chosen.clear();
         for j in 0..m {
             if rng.f01() < f.opacity {
@@ -409,6 +432,7 @@ impl Chaos {
             t.y[k] = fin.y[j];
             t.z[k] = fin.z[j];
             t.c[k] = fin.c[j];
+            t.rgb[k] = fin.rgb[j];
         }
         let k = ln.chosen.len().min(LANES);
         f.apply_soa(
@@ -416,6 +440,7 @@ impl Chaos {
             &mut t.y[..k],
             &mut t.z[..k],
             &mut t.c[..k],
+            own_rgb.then(|| &mut t.rgb[..k]),
             &mut ln.g,
             rng,
         );
@@ -432,6 +457,7 @@ impl Chaos {
             fin.y[j] = t.y[k];
             fin.z[j] = t.z[k];
             fin.c[j] = t.c[k];
+            fin.rgb[j] = t.rgb[k];
         }
     }
 }
@@ -475,7 +501,7 @@ mod tests {
                     sxx += (x.abs() < 0.5) as u8 as f64;
                 };
                 if lanes {
-                    ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, _zs, cs, vs| {
+                    ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, _zs, cs, vs, _rgb| {
                         for j in 0..xs.len() {
                             if vs[j] >= 0.0 {
                                 plot(xs[j], ys[j], cs[j], vs[j]);
@@ -505,7 +531,7 @@ mod tests {
         let (mut grid, mut n, mut c) = ([0.0; 64], 0.0, 0.0);
         let mut bad = 0;
         for _ in 0..30 {
-            bad += ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, cs, vs| {
+            bad += ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, cs, vs, _rgb| {
                 for j in 0..xs.len() {
                     if vs[j] >= 0.0 {
                         assert!(xs[j].is_finite() && ys[j].is_finite());
@@ -577,7 +603,7 @@ mod tests {
         let mut ln = Lanes::new();
         let (mut far, mut total) = (0.0, 0.0);
         for _ in 0..calls {
-            ch.run_lanes(n, &mut rng, &mut ln, |xs, _ys, _zs, _cs, vs| {
+            ch.run_lanes(n, &mut rng, &mut ln, |xs, _ys, _zs, _cs, vs, _rgb| {
                 for (x, v) in xs.iter().zip(vs) {
                     if *v >= 0.0 {
                         far += (x.abs() > 0.01) as u8 as f64;
@@ -615,7 +641,7 @@ mod tests {
         let mut ln = Lanes::new();
         let (mut n, mut hidden) = (0u64, 0u64);
         for _ in 0..20 {
-            ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs| {
+            ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs, _rgb| {
                 for j in 0..xs.len() {
                     if vs[j] < 0.0 {
                         continue;

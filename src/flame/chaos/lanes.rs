@@ -4,15 +4,17 @@
 use super::batch::Scratch;
 use super::{FUSE, LANES};
 
-/// The state of [`LANES`] orbits: position, colour coordinate, the xform applied last (xaos
-/// row; `u16::MAX` before the first), consecutive bad values, and steps done (an orbit plots
-/// once this is ≥ 0; it starts at −FUSE).
+/// The state of [`LANES`] orbits: position, colour coordinate, own colour (see
+/// [`crate::flame::variations::own_rgb`]; carried only for flames that have them), the xform
+/// applied last (xaos row; `u16::MAX` before the first), consecutive bad values, and steps
+/// done (an orbit plots once this is ≥ 0; it starts at −FUSE).
 #[derive(Clone, Debug)]
 pub(super) struct Orbits {
     pub(super) x: [f64; LANES],
     pub(super) y: [f64; LANES],
     pub(super) z: [f64; LANES],
     pub(super) c: [f64; LANES],
+    pub(super) rgb: [u32; LANES],
     pub(super) last: [u16; LANES],
     pub(super) consec: [u8; LANES],
     pub(super) step: [i32; LANES],
@@ -25,6 +27,7 @@ impl Orbits {
             y: [0.0; LANES],
             z: [0.0; LANES],
             c: [0.0; LANES],
+            rgb: [0; LANES],
             last: [u16::MAX; LANES],
             consec: [0; LANES],
             step: [-(FUSE as i32); LANES],
@@ -74,6 +77,7 @@ pub(super) struct Group {
     pub(super) y: [f64; LANES],
     pub(super) z: [f64; LANES],
     pub(super) c: [f64; LANES],
+    pub(super) rgb: [u32; LANES],
 }
 
 impl Group {
@@ -83,6 +87,7 @@ impl Group {
             y: [0.0; LANES],
             z: [0.0; LANES],
             c: [0.0; LANES],
+            rgb: [0; LANES],
         }
     }
 }

@@ -80,6 +80,9 @@ pub struct Chaos {
     same_vis: Option<f64>,
     /// Some xform (or the final one) may hide points: hidden samples count but add nothing.
     hides: bool,
+    /// The orbits carry the own colours variations give points (JWildfire's direct colour,
+    /// for a flame JWildfire's renderer draws and some variation of which may set one).
+    pub rgb: bool,
     /// Every xform is an affine map times `linear` (no post-affine), with no final xform,
     /// camera or xaos: orbits then need no grouping by xform (see [`AffineStep`]).
     affine: Option<Vec<AffineStep>>,
@@ -121,6 +124,16 @@ pub fn selection_table(w: &[f64]) -> Box<[u16]> {
         r += delta;
     }
     t
+}
+
+/// Whether JWildfire's xform `x` keeps the colour a point comes with: its colour type is NONE
+/// (no palette look-up), which a final xform that names no colour type has too.
+fn keeps_own_colour(x: &crate::flame::model::Xform, is_final: bool) -> bool {
+    let kind = x.extra_attrs.iter().find(|(k, _)| k == "color_type");
+    match kind {
+        Some((_, v)) => v.trim() == "NONE",
+        None => is_final,
+    }
 }
 
 impl Chaos {
@@ -229,9 +242,25 @@ impl Chaos {
             .chain(final_xform.as_ref())
             .chain(&more_finals)
             .any(|x| x.hides);
+        let rgb = flame.renders_as_jwildfire()
+            && xforms
+                .iter()
+                .chain(final_xform.as_ref())
+                .chain(&more_finals)
+                .any(|x| x.own_rgb);
+        if rgb {
+            for (c, x) in xforms.iter_mut().zip(&flame.xforms) {
+                c.keeps_rgb = keeps_own_colour(x, false);
+            }
+            let finals = final_xform.iter_mut().chain(&mut more_finals);
+            for (c, x) in finals.zip(flame.finals()) {
+                c.keeps_rgb = keeps_own_colour(x, true);
+            }
+        }
         Ok(Chaos {
             affine,
             hides,
+            rgb,
             same_vis: vis.iter().all(|&v| v == vis[0]).then_some(vis[0]),
             vis,
             xforms,
@@ -473,7 +502,7 @@ mod tests {
             2000,
             &mut rng,
             &mut ln,
-            |xs: &[f64], ys: &[f64], zs: &[f64], _, vs: &[f64]| {
+            |xs: &[f64], ys: &[f64], zs: &[f64], _, vs: &[f64], _: &[u32]| {
                 for k in (0..xs.len()).filter(|&k| vs[k] >= 0.0) {
                     assert!(xs[k].is_finite() && ys[k].is_finite() && zs[k].is_finite());
                     seen += 1;
@@ -537,7 +566,7 @@ mod tests {
             1000,
             &mut rng,
             &mut ln,
-            |xs: &[f64], ys: &[f64], _: &[f64], _, vs: &[f64]| {
+            |xs: &[f64], ys: &[f64], _: &[f64], _, vs: &[f64], _: &[u32]| {
                 for k in (0..xs.len()).filter(|&k| vs[k] >= 0.0) {
                     assert!((xs[k] - 1.0).abs() < 1e-3 && ys[k].abs() < 1e-3);
                     seen += 1;

@@ -37,6 +37,12 @@ pub struct CompiledXform {
     pub linear_only: Option<f64>,
     /// Some variation may hide the point ([`variations::flag::HIDES`]).
     pub hides: bool,
+    /// Some variation may give the point a colour of its own (JWildfire's direct colour);
+    /// the lane runner carries it only for flames JWildfire's renderer draws.
+    pub own_rgb: bool,
+    /// A point keeps the own colour it came with unless a variation here sets one (an xform
+    /// of JWildfire's colour type NONE: it does not look the palette up).
+    pub keeps_rgb: bool,
 }
 
 /// |v| ≤ limit; false for NaN (which fails every comparison).
@@ -109,9 +115,14 @@ impl CompiledXform {
             .chain(&vars)
             .chain(&post_vars)
             .any(|v| v.def.has(variations::flag::HIDES));
+        let own_rgb = pre_vars.iter().chain(&vars).chain(&post_vars).any(|v| {
+            v.def.has(variations::flag::JWILDFIRE) && v.def.has(variations::flag::SETS_COLOR)
+        });
         CompiledXform {
             linear_only,
             hides,
+            own_rgb,
+            keeps_rgb: false,
             coefs: x.coefs,
             post: if x.post.is_identity() {
                 None

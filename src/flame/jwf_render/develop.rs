@@ -21,7 +21,7 @@ use crate::flame::tonemap::OutputFormat;
 
 /// JWildfire's palette colours run to 200 where flam3's run to 255 (a white level of 200
 /// shows them at their own brightness).
-const PALETTE_WHITE: f64 = 200.0;
+pub(super) const PALETTE_WHITE: f64 = 200.0;
 
 /// JWildfire's raster of one render: its border, its filters (the kernel at the flame's
 /// radius, and for sharpening kernels the Gaussian that takes the density) and the random

@@ -3,7 +3,8 @@
 //! into an image ([`develop`]): per-bucket log scaling with its low-density brightness, a
 //! radial 2-D filter over the scaled buckets (sharpening kernels take the colour through the
 //! kernel and the density through a small Gaussian), and its tone map (white level, gamma
-//! threshold, vibrancy, colour balance, saturation, foreground opacity, gradient backgrounds).
+//! threshold, vibrancy, colour balance, saturation, foreground opacity, gradient backgrounds);
+//! and the plot of points that carry a colour of their own ([`own_colour`]).
 //!
 //! Which renderer draws a flame follows the program that wrote it, as the palette rule does
 //! ([`crate::flame::PaletteIndex::JWildfire`]). The facts come from JWildfire 9.00's
@@ -12,6 +13,7 @@
 
 pub(crate) mod develop;
 pub mod kernel;
+pub(crate) mod own_colour;
 
 pub(crate) use develop::JwfRaster;
 pub use kernel::JwfKernel;

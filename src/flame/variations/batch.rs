@@ -36,26 +36,8 @@ pub fn batch_with(
 ) {
     let n = acc.x.len();
     for j in 0..n {
-        let t = VarIn {
-            x: s.x[j],
-            y: s.y[j],
-            z: s.z[j],
-            sumsq: s.sumsq[j],
-            sqrt: s.sqrt[j],
-            ux: s.ux[j],
-            uy: s.uy[j],
-            atan_xy: s.atan_xy[j],
-            atan_yx: s.atan_yx[j],
-            color: s.color[j],
-        };
-        let mut a = Acc {
-            x: acc.x[j],
-            y: acc.y[j],
-            z: acc.z[j],
-            color: acc.color[j],
-            hide: false,
-            rgb: None,
-        };
+        let t = s.at(j);
+        let mut a = acc.at(j);
         let o = v.eval_with(&f, &t, &mut a, rng);
         acc.x[j] = a.x + o[0];
         acc.y[j] = a.y + o[1];

@@ -173,7 +173,7 @@ pub use names::{
 pub use params::{
     Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,
 };
-pub use point::{Acc, VarIn, need};
+pub use point::{Acc, VarIn, need, own_rgb};
 pub(crate) use point::{SoaAcc, SoaIn};
 pub use prepare::{eval_point, eval_prepared};
 pub use registry::{all, count, def_in, info, jwildfire_twin, param_defaults};

@@ -100,21 +100,68 @@ pub struct Acc {
     /// The sample is not drawn (set by the [`super::flag::HIDES`] variations).
     pub hide: bool,
     /// A colour of its own (red, green, blue, 0–255) instead of the palette's, as JWildfire's
-    /// direct-colour variations set it; `None` for the palette's.
+    /// direct-colour variations set it; `None` for the palette's. Channels lowered by
+    /// [`Acc::NEAREST_KEY`] ask for the palette colour nearest to them instead (JWildfire's
+    /// Gradient = 1), which the renderer looks up where it knows the palette.
     pub rgb: Option<[f64; 3]>,
 }
 
+/// A point's own colour as the renderer carries it beside the point: 0 for the palette's
+/// colour, else [`own_rgb::OWN`] or [`own_rgb::NEAREST`] with red, green and blue in the
+/// low 24 bits.
+pub mod own_rgb {
+    /// The low 24 bits are the colour to draw.
+    pub const OWN: u32 = 1 << 24;
+    /// The low 24 bits are a colour whose nearest palette colour is drawn.
+    pub const NEAREST: u32 = 1 << 25;
+
+    /// Red, green and blue of a packed colour.
+    #[inline]
+    pub fn channels(p: u32) -> [u8; 3] {
+        [(p >> 16) as u8, (p >> 8) as u8, p as u8]
+    }
+}
+
 impl Acc {
-    /// The colour coordinate the renderer draws the point with: its palette index, or, for a
-    /// point given a colour of its own (which the renderer does not carry yet), that colour's
-    /// luminance as the index (as JWildfire's direct-colour variations index the gradient
-    /// with Gradient = 2), so their patterns still show.
+    /// The colour coordinate the renderer draws the point with where it does not carry own
+    /// colours (flames JWildfire's renderer does not draw): its palette index, or, for a point
+    /// given a colour of its own, that colour's luminance as the index (as JWildfire's
+    /// direct-colour variations index the gradient with Gradient = 2), so their patterns
+    /// still show.
     #[inline]
     pub fn drawn_color(&self) -> f64 {
         match self.rgb {
-            Some(c) => super::jwf_direct_colour::dc_luma(c.map(|v| v as i64)),
+            Some(c) => {
+                let bytes = Self::bytes(c).0;
+                super::jwf_direct_colour::dc_luma(bytes.map(|v| v as i64))
+            }
             None => self.color,
         }
+    }
+
+    /// Subtracted from each channel of [`Acc::rgb`] to ask for the palette's nearest colour.
+    pub const NEAREST_KEY: f64 = 256.0;
+
+    /// The channels of an own colour as bytes, and whether they ask for the nearest palette
+    /// colour.
+    #[inline]
+    fn bytes(c: [f64; 3]) -> ([u8; 3], bool) {
+        let nearest = c.iter().any(|&v| v < 0.0);
+        let lift = if nearest { Self::NEAREST_KEY } else { 0.0 };
+        (c.map(|v| (v + lift).clamp(0.0, 255.0) as u8), nearest)
+    }
+
+    /// The own colour packed as the renderer carries it ([`own_rgb`]); `None` for the
+    /// palette's.
+    #[inline]
+    pub fn packed_rgb(&self) -> Option<u32> {
+        let (b, nearest) = Self::bytes(self.rgb?);
+        let kind = if nearest {
+            own_rgb::NEAREST
+        } else {
+            own_rgb::OWN
+        };
+        Some(kind | (b[0] as u32) << 16 | (b[1] as u32) << 8 | b[2] as u32)
     }
 }
 
@@ -132,6 +179,25 @@ pub struct SoaIn<'a> {
     pub color: &'a [f64],
 }
 
+impl SoaIn<'_> {
+    /// The input of point `j`.
+    #[inline(always)]
+    pub fn at(&self, j: usize) -> VarIn {
+        VarIn {
+            x: self.x[j],
+            y: self.y[j],
+            z: self.z[j],
+            sumsq: self.sumsq[j],
+            sqrt: self.sqrt[j],
+            ux: self.ux[j],
+            uy: self.uy[j],
+            atan_xy: self.atan_xy[j],
+            atan_yx: self.atan_yx[j],
+            color: self.color[j],
+        }
+    }
+}
+
 /// Running outputs of a batch of points.
 pub struct SoaAcc<'a> {
     pub x: &'a mut [f64],
@@ -140,4 +206,19 @@ pub struct SoaAcc<'a> {
     pub color: &'a mut [f64],
     /// Set where a variation hides the point (only formulas called point by point hide).
     pub hide: &'a mut [bool],
+}
+
+impl SoaAcc<'_> {
+    /// The running output of point `j`, as a formula called point by point sees it.
+    #[inline(always)]
+    pub fn at(&self, j: usize) -> Acc {
+        Acc {
+            x: self.x[j],
+            y: self.y[j],
+            z: self.z[j],
+            color: self.color[j],
+            hide: false,
+            rgb: None,
+        }
+    }
 }

@@ -464,3 +464,16 @@ fn a_second_curve_for_one_target_is_skipped_with_a_warning() {
         p.warnings
     );
 }
+
+/// A parameter only the JWildfire formula of a variation has (`splits`' shears, beyond the
+/// registry's `splits_x` and `splits_y`) is read, kept and rendered, not refused.
+#[test]
+fn parameters_only_jwildfires_formula_has_are_read() {
+    let xml = r#"<flame name="s" version="JWildfire V9.00" size="16 12" scale="10" quality="2">
+  <xform weight="1" color="0" splits="1" splits_x="0.1" splits_y="0.2" splits_lshear="0.3" splits_rshear="0.4" coefs="0.5 0 0 0.5 0 0"/>
+</flame>"#;
+    let f = read(xml, &opts()).unwrap().value.flames.remove(0);
+    let v = &f.xforms[0].vars[0];
+    assert!(v.params.len() > 2 && v.params.contains(&0.3) && v.params.contains(&0.4));
+    crate::flame::render(&f, &crate::flame::RenderOptions::default()).unwrap();
+}

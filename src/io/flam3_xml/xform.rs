@@ -261,8 +261,12 @@ fn variation_attr(
         set_var(x, st, id, form, instance, w);
     } else if let Some((id, form, index)) = variations::param_of(base) {
         let value = cx.num(a)?;
-        let def = &variations::info(id).params[index];
-        if def.beyond_limit(value) && cx.reported_vars.insert(base.to_string()) {
+        // A parameter only the variation's JWildfire formula has lies beyond the registry's
+        // list: it has no limit to check here.
+        let def = variations::info(id).params.get(index);
+        if let Some(def) = def.filter(|d| d.beyond_limit(value))
+            && cx.reported_vars.insert(base.to_string())
+        {
             let bound = if value > def.max { def.max } else { def.min };
             cx.warn(
                 a.offset,
