@@ -320,6 +320,11 @@ fn colorscale_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
     } else {
         dz
     };
+    if v.form == Form::Post {
+        // JWildfire's post_colorscale_wf scales the point it is given in place.
+        let z = if reset_z > 0.0 { z } else { t.z + z };
+        return [t.x + v.w * scale_x * t.x, t.y + v.w * scale_y * t.y, z];
+    }
     [v.w * scale_x * t.x, v.w * scale_y * t.y, z]
 }
 

@@ -1,4 +1,5 @@
-//! JWildfire's warps of the plane: bubbles in a grid (`bwraps7`), rings and waves (`rings3`,
+//! JWildfire's warps of the plane: bubbles in a grid (`bwraps7`, and Xyrus02's `bwraps2`,
+//! which JWildfire has as `pre_bwraps2` and `post_bwraps2` only), rings and waves (`rings3`,
 //! `waves3_wf`), the grid shifts `gridout2` and `lazysensen`, polar rewrites (`pTransform`,
 //! `spligon`, `c_symmetry`, `disc3`, `anamorphcyl`), `corners`, `tunnel`, `invsquircular`,
 //! Clifford's attractor map `clifford_js` and the conic cut `chunk`.
@@ -27,6 +28,16 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::JWILDFIRE)
         .prepare(bwraps7_prepare),
+    VarDef::new("bwraps2", bwraps2)
+        .params(&[
+            p("bwraps2_cellsize", 1.0),
+            p("bwraps2_space", 0.0),
+            p("bwraps2_gain", 2.0),
+            p("bwraps2_inner_twist", 0.0),
+            p("bwraps2_outer_twist", 0.0),
+        ])
+        .flags(flag::JWILDFIRE)
+        .prepare(bwraps2_prepare),
     VarDef::new("rings3", rings3)
         .params(&[p("rings3_val", 0.01), p("rings3_n", 0.0)])
         .flags(flag::JWILDFIRE),
@@ -147,9 +158,21 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 fn bwraps7_prepare(v: &mut Prepared) {
-    let [cellsize, space, gain] = v.params();
+    let [_, _, gain] = v.params();
+    bubble_prepare(v, gain * gain + 1e-6);
+}
+
+/// bwraps2's gain is divided by the cell size.
+fn bwraps2_prepare(v: &mut Prepared) {
+    let [cellsize, _, gain] = v.params();
+    bubble_prepare(v, gain * gain / cellsize + 1e-6);
+}
+
+/// The bubbles' derived values for the magnification `g2`: g2, the squared radius, the
+/// radius over the largest bubble.
+fn bubble_prepare(v: &mut Prepared, g2: f64) {
+    let [cellsize, space] = v.params();
     let radius = 0.5 * (cellsize / (1.0 + space * space));
-    let g2 = gain * gain + 1e-6;
     let mut max_bubble = g2 * radius;
     if max_bubble > 2.0 {
         max_bubble = 1.0;
@@ -188,6 +211,14 @@ fn bwraps7(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         v.w * (cy - s * lx + c * ly),
         0.0,
     ]
+}
+
+/// bwraps2: bwraps7's bubbles with the gain divided by the cell size; as JWildfire's
+/// `pre_`/`post_` classes, the point's z is kept.
+fn bwraps2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [x, y, _] = bwraps7(v, t, acc, rng);
+    let z = if v.form == Form::Regular { 0.0 } else { t.z };
+    [x, y, z]
 }
 
 /// rings3: Apophysis' rings2 with a ring-count term n: the radius is pulled towards ring

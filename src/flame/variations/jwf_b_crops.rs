@@ -83,7 +83,13 @@ fn crop_x(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let (px, py) = (t.x.abs(), t.y.abs());
     let m = (px + py).min(w) * 0.5;
     let d = ((px - m).powi(2) + (py - m).powi(2)).sqrt() - radius;
-    acc.hide = (invert == 0.0 && d > 0.0) || d <= 0.0;
+    let hide = if invert == 0.0 { d > 0.0 } else { d <= 0.0 };
+    acc.hide = hide;
+    if v.form == Form::Post {
+        // JWildfire's post_crop_x moves a hidden point to the origin and keeps z.
+        let k = if hide { 0.0 } else { v.w };
+        return [k * t.x, k * t.y, t.z];
+    }
     acc.x = 0.0;
     acc.y = 0.0;
     [v.w * t.x, v.w * t.y, 0.0]

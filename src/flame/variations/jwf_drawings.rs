@@ -32,7 +32,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::JWILDFIRE | flag::RANDOM)
         .prepare(xheart_blur_prepare),
     VarDef::new("epispiral_wf", epispiral_wf)
-        .params(&[p_int("epispiral_wf_waves", 4.0, NEG_INF, INF)])
+        .params(&[p("epispiral_wf_waves", 4.0)])
         .needs(need::ATAN_XY)
         .flags(flag::JWILDFIRE),
     VarDef::new("szubieta", szubieta)
@@ -108,7 +108,11 @@ fn rose_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 fn epispiral_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [waves] = v.params();
     let a = t.atan_xy;
-    let r = 0.5 / (waves * a).cos();
+    let d = (waves * a).cos();
+    if d == 0.0 {
+        return [0.0; 3];
+    }
+    let r = 0.5 / d;
     let (s, c) = a.sin_cos();
     [v.w * s * r, v.w * c * r, 0.0]
 }

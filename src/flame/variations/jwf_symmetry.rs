@@ -520,22 +520,22 @@ const P_NG3: &[Param] = &[
 ];
 
 const P_NG4: &[Param] = &[
-    p("sym_ng4_SepX", 0.0),
-    p("sym_ng4_SepY", 0.0),
-    p("sym_ng4_SkewX", 0.0),
-    p("sym_ng4_SkewY", 0.0),
+    p("sym_ng4_sepx", 0.0),
+    p("sym_ng4_sepy", 0.0),
+    p("sym_ng4_stepx", 0.0),
+    p("sym_ng4_stepy", 0.0),
 ];
 
 const P_NG5: &[Param] = &[
-    p("sym_ng5_SepX", 0.0),
-    p("sym_ng5_SepY", 0.0),
-    p("sym_ng5_SkewX", 0.0),
+    p("sym_ng5_sepx", 0.0),
+    p("sym_ng5_sepy", 0.0),
+    p("sym_ng5_stepx", 0.0),
 ];
 
 const P_NG6: &[Param] = &[
-    p("sym_ng6_SepY", 0.1),
-    p("sym_ng6_SkewX", 1.0),
-    p("sym_ng6_SkewY", 1.0),
+    p("sym_ng6_sepy", 0.1),
+    p("sym_ng6_stepx", 1.0),
+    p("sym_ng6_stepy", 1.0),
 ];
 
 const P_NG7: &[Param] = &[p("sym_ng7_SepX", 0.0), p("sym_ng7_SepY", 0.0)];
@@ -551,35 +551,36 @@ const P_NG9: &[Param] = &[p("sym_ng9_sepx", 0.0), p("sym_ng9_sepy", 0.0)];
 
 const P_NG10: &[Param] = &[
     p("sym_ng10_space", 0.0),
-    p("sym_ng10_SpX", 0.0),
-    p("sym_ng10_SpY", 0.0),
+    p("sym_ng10_spacex", 0.0),
+    p("sym_ng10_spacey", 0.0),
 ];
 
 const P_NG11: &[Param] = &[
     p("sym_ng11_space", 0.0),
-    p("sym_ng11_SpX", 0.0),
-    p("sym_ng11_SpY", 0.0),
+    p("sym_ng11_spacex", 0.0),
+    p("sym_ng11_spacey", 0.0),
     p("sym_ng11_StepX", 1.5),
     p("sym_ng11_StepY", 1.5),
 ];
 
 const P_NG12: &[Param] = &[
     p("sym_ng12_space", 0.0),
-    p("sym_ng12_SpX", 0.0),
-    p("sym_ng12_SpY", 0.0),
+    p("sym_ng12_spacex", 0.0),
+    p("sym_ng12_spacey", 0.0),
 ];
 
-// JWildfire names the first parameter of sym_ng13 "Prop. Sep" and that of 14-17 "Prop. Sep."
-// (with a space, so a file carrying them is not well-formed XML); ugnis writes `prop_sep`.
-const P_NG13: &[Param] = sym_steps!("sym_ng13", p("sym_ng13_prop_sep", 0.0));
+// JWildfire 9 names the first parameter of sym_ng13 … sym_ng17 `radius`; earlier releases named
+// it "Prop. Sep" (with a space, so a file carrying it is not well-formed XML), which ugnis
+// wrote as `prop_sep` and still reads.
+const P_NG13: &[Param] = sym_steps!("sym_ng13", p("sym_ng13_radius", 0.0));
 
-const P_NG14: &[Param] = sym_steps!("sym_ng14", p("sym_ng14_prop_sep", 0.0));
+const P_NG14: &[Param] = sym_steps!("sym_ng14", p("sym_ng14_radius", 0.0));
 
-const P_NG15: &[Param] = sym_steps!("sym_ng15", p("sym_ng15_prop_sep", 0.0));
+const P_NG15: &[Param] = sym_steps!("sym_ng15", p("sym_ng15_radius", 0.0));
 
-const P_NG16: &[Param] = sym_steps!("sym_ng16", p("sym_ng16_prop_sep", 0.0));
+const P_NG16: &[Param] = sym_steps!("sym_ng16", p("sym_ng16_radius", 0.0));
 
-const P_NG17: &[Param] = sym_steps!("sym_ng17", p("sym_ng17_prop_sep", 0.0));
+const P_NG17: &[Param] = sym_steps!("sym_ng17", p("sym_ng17_radius", 0.0));
 
 const P_BG1: &[Param] = sym_steps!("sym_bg1");
 

@@ -86,6 +86,7 @@
 //! | `jwf_drawings` | drawings, curves and filled figures (`hilbert_js`, `tree_js`, `rose_wf`, `nsudoku`, …) |
 //! | `jwf_knots` | `knots3D` |
 //! | `jwf_maps` | `complex`, `rosoni`, `svensson_js`, `crop_stars`, `post_mirror_wf` |
+//! | `jwf_post_symmetry` | JWildfire's symmetries after the variations (`post_point_symmetry_wf`, `post_axis_symmetry_wf`) |
 //! | `jwf_prepost` | JWildfire's own `pre_`/`post_` classes and its prepost variations (`pre_affine3D`, `post_crosscrop`, `prepost_mobius`, `ringtile`, …) |
 //! | `jwf_symmetry` | the symmetry groups `sym_ng*` and `sym_bg*` |
 //! | `jwf_text` | `text_wf` |
@@ -148,6 +149,7 @@ mod jwf_direct_colour;
 mod jwf_drawings;
 mod jwf_knots;
 mod jwf_maps;
+mod jwf_post_symmetry;
 mod jwf_prepost;
 mod jwf_symmetry;
 #[cfg(test)]

@@ -16,8 +16,8 @@ use super::{
     flam3, fr_3d, fr_bipolar_elliptic, fr_blurs, fr_complex, fr_crops, fr_curves, fr_direct_colour,
     fr_distance_blurs, fr_grids, fr_hexagons, fr_hyperbolic, fr_inversions, fr_julias, fr_moves,
     fr_polynomial_maps, fr_quaternions, fr_radial, fr_synth, fr_trig, fr_truchet, fr_waves, jwf_3d,
-    jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_prepost, jwf_symmetry,
-    jwf_text,
+    jwf_dialect, jwf_direct_colour, jwf_drawings, jwf_knots, jwf_maps, jwf_post_symmetry,
+    jwf_prepost, jwf_symmetry, jwf_text,
 };
 // JWildfire variations, first set of files.
 use super::{
@@ -67,7 +67,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 47] = [
+const FILES: [&[VarDef]; 48] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -94,6 +94,7 @@ const FILES: [&[VarDef]; 47] = [
     jwf_drawings::DEFS,
     jwf_knots::DEFS,
     jwf_maps::DEFS,
+    jwf_post_symmetry::DEFS,
     jwf_prepost::DEFS,
     jwf_symmetry::DEFS,
     jwf_text::DEFS,
@@ -394,6 +395,9 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "prepost_circlize",
     "prepost_blob",
     "ringtile",
+    "post_point_symmetry_wf",
+    "post_axis_symmetry_wf",
+    "bwraps2",
 ];
 
 /// Every JWildfire variation's name in registry order.

@@ -7,6 +7,7 @@
 
 use std::f64::consts::{FRAC_2_PI, PI};
 
+use crate::flame::variations::util::mix;
 use crate::flame::variations::*;
 
 /// atanh(z) = ½·ln((1 + z)/(1 − z)), times the weight·2/π (Fractorium: weight/π).
@@ -108,4 +109,66 @@ pub(super) fn boarders(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) 
             0.0,
         ]
     }
+}
+
+/// sintrange: Fractorium's formula, but it replaces the x and y summed so far (JWildfire
+/// assigns them) in the regular form.
+pub(super) fn sintrange(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
+    let [k] = v.params();
+    let (xx, yy) = (t.x * t.x, t.y * t.y);
+    let m = (xx + yy) * k;
+    replace_sum(v, acc);
+    [
+        v.w * t.x.sin() * (xx + k - m),
+        v.w * t.y.sin() * (yy + k - m),
+        0.0,
+    ]
+}
+
+/// ennepers: Fractorium's formula, replacing the x and y summed so far in the regular form.
+pub(super) fn ennepers(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
+    let (x2, y2) = (t.x * t.x, t.y * t.y);
+    replace_sum(v, acc);
+    [
+        v.w * (t.x - ((x2 * t.x) / 3.0)) + t.x * y2,
+        v.w * (t.y - ((y2 * t.y) / 3.0)) + t.y * x2,
+        0.0,
+    ]
+}
+
+/// shredlin: Fractorium's strips (reading the registry's derived w·distances and gaps),
+/// replacing the x and y summed so far in the regular form; no z.
+pub(super) fn shredlin(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
+    let [xdistance, xwidth, ydistance, ywidth] = v.params();
+    let [xw, yw, gx, gy] = v.derived();
+    let strip = |c: f64, dist: f64, width: f64, gap: f64| {
+        let neg = if c < 0.0 { 1.0 } else { 0.0 };
+        let u = c / dist;
+        let i = u.trunc();
+        (u - i) * width + i + (0.5 - neg) * gap
+    };
+    replace_sum(v, acc);
+    [
+        xw * strip(t.x, xdistance, xwidth, gx),
+        yw * strip(t.y, ydistance, ywidth, gy),
+        0.0,
+    ]
+}
+
+/// In the regular form, clears the x and y summed so far (the formula assigns them).
+fn replace_sum(v: &Prepared, acc: &mut Acc) {
+    if v.form == Form::Regular {
+        acc.x = 0.0;
+        acc.y = 0.0;
+    }
+}
+
+/// sinusgrid: Fractorium's grid (reading the registry's derived 2π·frequencies), with z
+/// weighted as JWildfire always carries it.
+pub(super) fn sinusgrid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [ax, ay] = v.params();
+    let [fx, fy] = v.derived();
+    let sx = -(t.x * fx).cos();
+    let sy = -(t.y * fy).cos();
+    [v.w * mix(t.x, sx, ax), v.w * mix(t.y, sy, ay), v.w * t.z]
 }

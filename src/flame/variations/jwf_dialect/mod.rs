@@ -13,6 +13,10 @@ use super::*;
 
 mod classic;
 mod fractorium;
+mod origin;
+mod phases;
+mod quaternions;
+mod wider;
 
 /// JWildfire's `SMALL_EPSILON`, which it adds to radii and denominators.
 const SMALL_EPSILON: f64 = 1e-300;
@@ -26,11 +30,42 @@ fn jwf_sqrt(t: &VarIn) -> f64 {
 /// The twins, by file: each named as the attribute JWildfire writes (`NAME`, `pre_NAME`,
 /// `post_NAME`), with the parameters of the registry's variation of that name in its order
 /// (named as JWildfire names them), then those only JWildfire's formula has.
-pub(super) const TABLES: &[&[VarDef]] = &[classic::DEFS];
+pub(super) const TABLES: &[&[VarDef]] = &[classic::DEFS, wider::DEFS];
 
 /// Variations whose JWildfire twin is the registry's entry (parameters, derived values) with
 /// JWildfire's formula: name, formula, flags it drops, flags it adds.
 pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
+    ("bSwirl", origin::bswirl, 0, 0),
+    ("cardioid", origin::cardioid, 0, 0),
+    ("coshq", quaternions::coshq, 0, 0),
+    ("cosq", quaternions::cosq, 0, 0),
+    ("cot", origin::cot, 0, 0),
+    ("cothq", quaternions::tanhq, 0, 0),
+    ("cotq", quaternions::cotq, 0, 0),
+    ("cschq", quaternions::cschq, 0, 0),
+    ("cscq", quaternions::cscq, 0, 0),
+    ("estiq", quaternions::estiq, 0, 0),
+    ("foci_3D", origin::foci_3d, 0, 0),
+    ("glynnia", origin::glynnia, 0, 0),
+    ("loonie_3D", origin::loonie_3d, 0, 0),
+    ("post_curl", phases::post_curl, 0, 0),
+    ("post_flatten", phases::post_flatten, 0, 0),
+    ("pre_zscale", phases::pre_zscale, 0, 0),
+    ("loq", quaternions::loq, 0, 0),
+    ("rays1", origin::rays1, 0, 0),
+    ("rays2", origin::rays2, 0, 0),
+    ("roundspher", origin::roundspher, 0, 0),
+    ("scry_3D", origin::scry_3d, 0, 0),
+    ("sechq", quaternions::sechq, 0, 0),
+    ("secq", quaternions::secq, 0, 0),
+    ("sinhq", quaternions::sinhq, 0, 0),
+    ("sinq", quaternions::sinq, 0, 0),
+    ("sphericalN", origin::spherical_n, 0, 0),
+    ("spiralwing", origin::spiralwing, 0, 0),
+    ("swirl3", origin::swirl3, 0, 0),
+    ("tanhq", quaternions::tanhq, 0, 0),
+    ("tanq", quaternions::tanq, 0, 0),
+    ("wedge_sph", origin::wedge_sph, 0, 0),
     ("arctanh", fractorium::arctanh, 0, 0),
     ("boarders", fractorium::boarders, 0, 0),
     (
@@ -39,8 +74,12 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
         flag::WRITES_Z | flag::USES_Z,
         CROP,
     ),
+    ("ennepers", fractorium::ennepers, 0, flag::WRITES_ACC),
     ("hole", fractorium::hole, 0, 0),
     ("kaleidoscope", fractorium::kaleidoscope, 0, 0),
+    ("shredlin", fractorium::shredlin, 0, flag::WRITES_ACC),
+    ("sintrange", fractorium::sintrange, 0, flag::WRITES_ACC),
+    ("sinusgrid", fractorium::sinusgrid, 0, flag::WRITES_Z),
     (
         "post_crop",
         fractorium::crop,
@@ -114,7 +153,6 @@ pub(super) const FLAT: &[&str] = &[
     "separation",
     "shredlin",
     "shredrad",
-    "sinusgrid",
     "sinusoidal",
     "spherical",
     "square",

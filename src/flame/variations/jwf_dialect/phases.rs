@@ -1,0 +1,31 @@
+//! JWildfire's own `pre_`/`post_` classes for names that ugnis otherwise runs as the pre or post
+//! form of a regular variation: JWildfire gives them formulas of their own (unweighted,
+//! changing only some coordinates). Each returns the whole point its form replaces.
+//!
+//! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
+//! written anew.
+
+use super::SMALL_EPSILON;
+use crate::flame::variations::*;
+
+/// post_curl: the point divided by 1 + c1·z + c2·z² (c1, c2 scaled by the weight), the point
+/// itself not weighted; z kept.
+pub(super) fn post_curl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [c1, c2] = v.params();
+    let (c1, c2) = (c1 * v.w, c2 * v.w);
+    let (x, y) = (t.x, t.y);
+    let re = 1.0 + c1 * x + c2 * (x * x - y * y);
+    let im = c1 * y + 2.0 * c2 * x * y;
+    let r = re * re + im * im + SMALL_EPSILON;
+    [(x * re + y * im) / r, (y * re - x * im) / r, t.z]
+}
+
+/// post_flatten: z scaled by 1 − min(|w|, 1); x and y kept.
+pub(super) fn post_flatten(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    [t.x, t.y, t.z * (1.0 - v.w.abs().min(1.0))]
+}
+
+/// pre_zscale: z scaled by the weight; x and y kept.
+pub(super) fn pre_zscale(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    [t.x, t.y, t.z * v.w]
+}
