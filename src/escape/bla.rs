@@ -17,8 +17,14 @@
 use super::complex::C;
 use super::fx::{Cx, Fx};
 
-/// The relative size below which a non-linear term is dropped: f64's unit round-off.
-const EPSILON: f64 = 1.0 / (1u64 << 53) as f64;
+/// The relative size below which a non-linear term is dropped. f64's unit round-off (2^-53)
+/// drops nothing f64 would keep, but admits so few steps that half of the iterations of a
+/// seahorse-valley view at 1e-25 (30,000 iterations) are taken one by one; 2^-44 skips about
+/// half of those and keeps its continuous counts as close to exact iteration (97 % of pixels
+/// within 0.05) as 2^-53 does, where 2^-43 already loses a pixel. Larger values trade
+/// correctness for speed: 1e-10 agrees on 94 %, 1e-8 on 87 % and Fractalshades' default 1e-6
+/// on 78 % of that view's pixels.
+const EPSILON: f64 = 1.0 / (1u64 << 44) as f64;
 
 /// A merged step.
 #[derive(Clone, Copy, Debug)]
@@ -118,36 +124,41 @@ impl Bla {
 
     /// The longest step from reference index m admitting |δ| = `d` and at most `room`
     /// iterations.
+    ///
+    /// A merged radius is at most the radius of its first half, which starts at the same
+    /// index one level down, and its length is larger: the steps from m grow shorter-lived
+    /// level by level, so the search climbs from the single steps and stops at the first
+    /// that does not admit δ (most iterations that take no step cost one comparison).
     #[inline]
     pub fn find(&self, m: usize, d: Fx, room: u32) -> Option<&Step> {
         if m == 0 {
             return None;
         }
         let k0 = (m - 1).trailing_zeros() as usize;
-        for k in (0..self.levels.len().min(k0)).rev() {
-            let Some(st) = self.levels[k].get((m - 1) >> (k + 1)) else {
-                continue;
-            };
-            if st.len <= room && d.lt(st.r) {
-                return Some(st);
+        let mut best = None;
+        for k in 0..self.levels.len().min(k0) {
+            match self.levels[k].get((m - 1) >> (k + 1)) {
+                Some(st) if st.len <= room && d.lt(st.r) => best = Some(st),
+                _ => break,
             }
         }
-        None
+        best
     }
 
-    /// As [`Bla::find`] for a difference of size `d` in f64's range.
+    /// As [`Bla::find`] for a difference `d` in f64's range, measured by |re| + |im| (at most
+    /// √2 times |d|: no square root, and no underflow of |d|² for the smallest differences).
     #[inline]
-    pub fn find_f64(&self, m: usize, d: f64, room: u32) -> Option<&Step> {
+    pub fn find_f64(&self, m: usize, d: C, room: u32) -> Option<&Step> {
+        let d = d.re.abs() + d.im.abs();
         let k0 = (m - 1).trailing_zeros() as usize;
-        for k in (0..self.levels.len().min(k0)).rev() {
-            let Some(st) = self.levels[k].get((m - 1) >> (k + 1)) else {
-                continue;
-            };
-            if d < st.r64 && st.len <= room {
-                return Some(st);
+        let mut best = None;
+        for k in 0..self.levels.len().min(k0) {
+            match self.levels[k].get((m - 1) >> (k + 1)) {
+                Some(st) if d < st.r64 && st.len <= room => best = Some(st),
+                _ => break,
             }
         }
-        None
+        best
     }
 
     /// Number of steps stored.

@@ -289,9 +289,7 @@ impl Pixel<'_> {
             }
             let z = self.orbit.z[self.m];
             let step = if self.m > 0 {
-                self.orbit
-                    .bla
-                    .find_f64(self.m, d.norm2().sqrt(), s.max_iter - self.n)
+                self.orbit.bla.find_f64(self.m, d, s.max_iter - self.n)
             } else {
                 None
             };
