@@ -140,7 +140,7 @@ pub struct Timeline {
     /// The sound window's settings, when open.
     pub sound_dialog: Option<SoundDialog>,
     /// The sound being decoded for the sound window.
-    pub sound_job: Option<std::sync::Arc<SoundJob>>,
+    pub sound_job: Option<std::rc::Rc<SoundJob>>,
     play: Option<Play>,
     /// When the last frames were shown during playback (frames per second).
     shown_at: VecDeque<Instant>,

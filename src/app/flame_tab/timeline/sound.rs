@@ -3,7 +3,7 @@
 //! the command line), one undo step, then edited like any other curve.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::rc::Rc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use eframe::egui;
@@ -128,7 +128,7 @@ impl FlameTab {
         match self.sound_inputs(d) {
             Ok((target, path)) => {
                 let job = SoundJob::start(path, target, d.clone(), repaint_of(Some(ctx)));
-                self.timeline.sound_job = Some(Arc::new(job));
+                self.timeline.sound_job = Some(Rc::new(job));
                 if let Some(w) = &mut self.timeline.sound_dialog {
                     w.result = None;
                 }
