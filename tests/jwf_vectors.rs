@@ -17,8 +17,8 @@ mod common;
 use std::collections::{BTreeMap, HashMap};
 
 use common::vectors::{
-    Set, SetRows, Table, acc_in, compare_sequence, compare_stats, num, nums, print_all, same,
-    selected, sets,
+    Finite, Set, SetRows, Table, acc_in, compare_sequence, compare_stats, num, nums, print_all,
+    same, selected, sets,
 };
 use ugnis::flame::rng::FastRng;
 use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId};
@@ -39,8 +39,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("arctruchet", "not implemented"),
     ("asteria", "x differs"),
     ("blade3D", "statistics differ"),
-    ("boarders", "statistics differ"),
-    ("boarders2", "statistics differ"),
     ("brownian_js", "not implemented"),
     ("brush_stroke_wf", "not implemented"),
     ("bubbleT3D", "JWildfire's parameter 'exponent_z' is unknown"),
@@ -317,7 +315,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("iflames_wf", "not implemented"),
     ("intersection", "not implemented"),
     ("inversion", "not implemented"),
-    ("invtree_js", "statistics differ"),
     ("isosfplot3d_wf", "not implemented"),
     ("jac_asn", "not implemented"),
     ("jac_elk", "not implemented"),
@@ -398,7 +395,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("post_point_crop", "not implemented"),
     ("post_smartcrop", "color differs; statistics differ"),
     ("post_trig", "not implemented"),
-    ("pre_boarders2", "statistics differ"),
     ("pre_c_var", "not implemented"),
     ("pre_circlecrop", "hide flag differs; statistics differ"),
     ("pre_custom_wf", "not implemented"),
@@ -736,7 +732,7 @@ fn check_random(
                         let v = prepared(set);
                         let mut rng = FastRng::new(1000 + i as u64);
                         let draw = || variations::eval_prepared(&v, tx, acc, false, &mut rng);
-                        if let Err(e) = compare_stats(t, r, draw) {
+                        if let Err(e) = compare_stats(t, r, Finite::PerCoordinate, draw) {
                             f.add(var, format!("[{ps}] point {}: {e}", t.get(r, "point")));
                         }
                     }

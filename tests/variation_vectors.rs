@@ -11,8 +11,8 @@
 mod common;
 
 use common::vectors::{
-    Set, Table, acc_in, compare_sequence, compare_stats, num, print_all, same, selected, sets,
-    sets_by_name,
+    Finite, Set, Table, acc_in, compare_sequence, compare_stats, num, print_all, same, selected,
+    sets, sets_by_name,
 };
 use ugnis::flame::rng::FastRng;
 use ugnis::flame::variations::{self, Acc, Form, Prepared, VarId};
@@ -131,7 +131,7 @@ fn random_outputs_match_fractorium_statistically() {
         let mut rng = FastRng::new(1000 + i as u64);
         checked += 1;
         let draw = || variations::eval_prepared(&v, tx, acc, false, &mut rng);
-        if let Err(e) = compare_stats(&t, r, draw) {
+        if let Err(e) = compare_stats(&t, r, Finite::Whole, draw) {
             failures.push(format!("{var} [{ps}] point {}: {e}", t.get(r, "point")));
         }
     }

@@ -251,24 +251,49 @@ fn stat(t: &Table, r: &[String], col: &str) -> f64 {
     }
 }
 
+/// How a random-stats table leaves out non-finite outputs.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Finite {
+    /// An output with a non-finite x, y or z is left out of every statistic (Fractorium's
+    /// vectors).
+    Whole,
+    /// Each statistic skips only its own non-finite values, and an output counts as
+    /// non-finite when x, y, z or the colour is (JWildfire's vectors).
+    PerCoordinate,
+}
+
 /// Compare `n` outputs drawn from `draw` with the statistics of row `r` of a random-stats
 /// table: the share of non-finite outputs; a constant output exactly; the mean of an output
 /// taking few values; the deciles and median of any other.
-pub fn compare_stats(t: &Table, r: &[String], mut draw: impl FnMut() -> Acc) -> Result<(), String> {
+pub fn compare_stats(
+    t: &Table,
+    r: &[String],
+    finite: Finite,
+    mut draw: impl FnMut() -> Acc,
+) -> Result<(), String> {
     let n: usize = t.get(r, "n").parse().expect("a count");
     let mut comp: [Vec<f64>; 5] = Default::default();
     let mut nonfinite = 0usize;
     for _ in 0..n {
         let o = draw();
-        if !(o.x.is_finite() && o.y.is_finite() && o.z.is_finite()) {
-            nonfinite += 1;
-            continue;
+        let values = [o.x, o.y, o.z, o.x.hypot(o.y), o.color];
+        let whole = o.x.is_finite() && o.y.is_finite() && o.z.is_finite();
+        match finite {
+            Finite::Whole if !whole => nonfinite += 1,
+            Finite::Whole => {
+                for (c, v) in comp.iter_mut().zip(values) {
+                    c.push(v);
+                }
+            }
+            Finite::PerCoordinate => {
+                nonfinite += usize::from(!(whole && o.color.is_finite()));
+                for (c, v) in comp.iter_mut().zip(values) {
+                    if v.is_finite() {
+                        c.push(v);
+                    }
+                }
+            }
         }
-        comp[0].push(o.x);
-        comp[1].push(o.y);
-        comp[2].push(o.z);
-        comp[3].push(o.x.hypot(o.y));
-        comp[4].push(o.color);
     }
     let their_nonfinite: f64 = num(t.get(r, "n_nonfinite"));
     let nf = nonfinite as f64;
@@ -279,13 +304,14 @@ pub fn compare_stats(t: &Table, r: &[String], mut draw: impl FnMut() -> Acc) -> 
             "{nonfinite} non-finite outputs of {n}, want {their_nonfinite}"
         ));
     }
-    if comp[0].len() < 100 {
-        return Ok(());
-    }
     let their_distinct: f64 = num(t.get(r, "n_distinct"));
     let discrete = their_distinct <= 64.0;
     let mut bad = Vec::new();
     for (k, name) in ["x", "y", "z", "r", "color"].iter().enumerate() {
+        // Too few finite values to compare.
+        if comp[k].len() < 100 {
+            continue;
+        }
         let s = stats(&mut comp[k]);
         let g = |c: &str| stat(t, r, &format!("{c}_{name}"));
         let (mean, std) = (g("mean"), g("std"));
