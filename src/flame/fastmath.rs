@@ -138,6 +138,18 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     )
 }
 
+/// (sin x, cos x) for any x: [`sin_cos`] where it is accurate (|x| < 2²⁰, the arguments of
+/// nearly every formula), the standard library beyond. For scalar formulas (the test is a
+/// branch that is practically never taken); loops meant to vectorise call [`sin_cos`].
+#[inline(always)]
+pub fn sin_cos_any(x: f64) -> (f64, f64) {
+    if x.abs() < 1_048_576.0 {
+        sin_cos(x)
+    } else {
+        x.sin_cos()
+    }
+}
+
 #[inline(always)]
 pub fn sin(x: f64) -> f64 {
     sin_cos(x).0

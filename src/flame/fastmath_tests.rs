@@ -373,3 +373,26 @@ fn tan_atan_and_sin_cos_hold_over_a_million_inputs() {
         // Beyond 2⁵¹ the reduction has no bits left: sin and cos are unspecified there.
     }
 }
+
+/// `sin_cos_any` is `sin_cos` where that is accurate and the standard library's beyond, so
+/// huge arguments (a variation parameter of 10¹⁸ times an angle) keep meaningful values.
+#[test]
+fn sin_cos_any_holds_for_every_magnitude() {
+    let mut rng = FastRng::new(3);
+    for i in 0..100_000 {
+        let mag = [1.0, 1e5, 1e6, 2e6, 1e12, 1e18, 1e300][i % 7];
+        let x = rng.f11() * mag;
+        let (s, c) = sin_cos_any(x);
+        if x.abs() < 1_048_576.0 {
+            assert_eq!((s, c), sin_cos(x), "{x}");
+        } else {
+            assert_eq!((s, c), x.sin_cos(), "{x}");
+        }
+        assert!(
+            (s - x.sin()).abs() < 1e-9 && (c - x.cos()).abs() < 1e-9,
+            "{x}"
+        );
+    }
+    assert!(sin_cos_any(f64::NAN).0.is_nan());
+    assert!(sin_cos_any(f64::INFINITY).1.is_nan());
+}

@@ -9,6 +9,7 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 use super::util::{floor_f, floor_i64, rand_size, sign_nz, sqr, square_arc, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath;
 
 /// Most edges (and stripes) of nBlur's polygon: each evaluation steps through the sectors one
 /// by one, and a polygon of 1,000 edges is a circle to within a twentieth of a pixel at a
@@ -114,8 +115,8 @@ fn blur3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let azimuth = rng.f01() * TAU;
     let r = v.w * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
     let polar = rng.f01() * PI;
-    let (sa, ca) = azimuth.sin_cos();
-    let (sp, cp) = polar.sin_cos();
+    let (sa, ca) = fastmath::sin_cos(azimuth);
+    let (sp, cp) = fastmath::sin_cos(polar);
     [r * sp * ca, r * sp * sa, r * cp]
 }
 

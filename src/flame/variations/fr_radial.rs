@@ -11,6 +11,7 @@ use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_4, PI, SQRT_2, TAU};
 
 use super::util::{floor_f, sqr, square_arc, square_point, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath;
 
 /// The thirteen shape parameters of the w/x/y/z family, `PREFIX_hypergon` … `PREFIX_super_n3`,
 /// after any leading ones given.
@@ -299,8 +300,11 @@ fn flowerdb(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [split_petals] = v.derived();
     let th = t.atan_yx;
     let rad = v.w * t.sqrt;
-    let r2 = rad * ((spread + (petals * th).sin()) * (split_petals * th).cos()).abs();
-    [r2 * th.cos(), r2 * th.sin(), 0.0]
+    let petal = fastmath::sin_cos_any(petals * th).0;
+    let split = fastmath::sin_cos_any(split_petals * th).1;
+    let r2 = rad * ((spread + petal) * split).abs();
+    let (s, c) = fastmath::sin_cos(th);
+    [r2 * c, r2 * s, 0.0]
 }
 
 /// Opens a hole at the origin whose size varies with the polar angle (power `a`); with
