@@ -150,6 +150,32 @@ pub fn sin_cos_any(x: f64) -> (f64, f64) {
     }
 }
 
+/// Sine and cosine through [`sin_cos_any`] as methods, for scalar formulas written with the
+/// standard library's method syntax (`a.fsin_cos()` for `a.sin_cos()`).
+pub trait FastTrig {
+    /// [`sin_cos_any`].
+    fn fsin_cos(self) -> (f64, f64);
+    /// sin through [`sin_cos_any`].
+    fn fsin(self) -> f64;
+    /// cos through [`sin_cos_any`].
+    fn fcos(self) -> f64;
+}
+
+impl FastTrig for f64 {
+    #[inline(always)]
+    fn fsin_cos(self) -> (f64, f64) {
+        sin_cos_any(self)
+    }
+    #[inline(always)]
+    fn fsin(self) -> f64 {
+        sin_cos_any(self).0
+    }
+    #[inline(always)]
+    fn fcos(self) -> f64 {
+        sin_cos_any(self).1
+    }
+}
+
 #[inline(always)]
 pub fn sin(x: f64) -> f64 {
     sin_cos(x).0

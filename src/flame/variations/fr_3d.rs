@@ -11,6 +11,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{sign, sqr, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("barycentroid", barycentroid)
@@ -213,7 +214,7 @@ fn barycentroid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// 3-D blade: x drives all three coordinates through the sine and cosine of a random fraction
 /// of w·r.
 fn blade3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let (s, c) = (rng.f01() * v.w * t.sqrt).sin_cos();
+    let (s, c) = (rng.f01() * v.w * t.sqrt).fsin_cos();
     let wx = v.w * t.x;
     [wx * (c + s), wx * (c - s), v.w * t.z * (s - c)]
 }
@@ -234,7 +235,7 @@ fn blob2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         // Fractorium leaves z unset on this branch; the point keeps its default z.
         return [v.w * t.x, v.w * t.y, v.default_z(t)];
     }
-    let delta = ((t.atan_yx * n).sin() + sym) / help;
+    let delta = ((t.atan_yx * n).fsin() + sym) / help;
     let sgn = if delta < 0.0 { -1.0 } else { 1.0 };
     let amp = ((delta * sgn).ln() * pre).exp() * post;
     let delta = if mode != 0.0 { amp * mode } else { amp * sgn };
@@ -246,7 +247,7 @@ fn blob2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// same wave lifts the point in z.
 fn blob3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [low, high, waves] = v.params();
-    let wave = (waves * t.atan_xy).sin();
+    let wave = (waves * t.atan_xy).fsin();
     let r = t.sqrt * (low + (high - low) * (0.5 + 0.5 * wave));
     [v.w * t.ux * r, v.w * t.uy * r, v.w * wave * r]
 }
@@ -271,7 +272,7 @@ fn prep_bubble_t3d(v: &mut Prepared) {
     if abs_n != 0.0 {
         let strip = PI / abs_n;
         strip2 = 2.0 * strip;
-        (s, c) = strip.sin_cos();
+        (s, c) = strip.fsin_cos();
         ratio = ratio.clamp(0.01, 1.99);
         strip1 = zeps(ratio * strip);
     }
@@ -348,10 +349,10 @@ fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
                     (sin_ratio, cos_ratio)
                 } else if inv_stripes == 0.0 {
                     let f = (ang - strip1) / zeps(strip2 - strip1);
-                    (ang - f * strip1).sin_cos()
+                    (ang - f * strip1).fsin_cos()
                 } else {
                     let f = (ang - strip1) / strip1;
-                    (ang - f * (strip2 - strip1)).sin_cos()
+                    (ang - f * (strip2 - strip1)).fsin_cos()
                 };
                 (x, y) = rot(x, y, s, c);
             }
@@ -393,10 +394,10 @@ fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     if let Some(a) = bent {
         if squeeze {
             let b = ang_z - FRAC_PI_2;
-            let fac = a.cos() / b.cos();
+            let fac = a.fcos() / b.fcos();
             x *= fac;
             y *= fac;
-            z *= a.sin() / b.sin();
+            z *= a.fsin() / b.fsin();
         } else {
             x = 0.0;
             y = 0.0;
@@ -448,8 +449,8 @@ fn cubic3d_prepare(v: &mut Prepared) {
 fn cubic3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [ss, sfill, s1mfill, half_w] = v.derived();
     let node = rng.u32() & 7;
-    let ex = 1.0 - ss * (1.0 - t.x.atan2(t.z).cos());
-    let wy = 1.0 - ss * (1.0 - t.y.atan2(t.z).sin());
+    let ex = 1.0 - ss * (1.0 - t.x.atan2(t.z).fcos());
+    let wy = 1.0 - ss * (1.0 - t.y.atan2(t.z).fsin());
     let zn = if ss > 1.0 {
         1.0 - ss * (1.0 - ((ex + wy) / 2.0 * ss))
     } else {
@@ -476,8 +477,8 @@ fn cubic_lattice_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -
     let [fill] = v.derived();
     let node = rng.u32() & 7;
     let (ex, wy, zn) = if style == 2.0 {
-        let ex = t.x.atan2(t.z).cos();
-        let wy = t.y.atan2(t.z).sin();
+        let ex = t.x.atan2(t.z).fcos();
+        let wy = t.y.atan2(t.z).fsin();
         (ex, wy, (ex + wy) * 0.5)
     } else {
         (1.0, 1.0, 1.0)
@@ -510,9 +511,9 @@ fn depth(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 fn disc3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [pi] = v.params();
     let r = t.sqrt;
-    let (sr, cr) = (r * pi).sin_cos();
+    let (sr, cr) = (r * pi).fsin_cos();
     let k = v.w * t.atan_xy / zeps(pi);
-    [k * sr, k * cr, k * (r * t.z.cos())]
+    [k * sr, k * cr, k * (r * t.z.fcos())]
 }
 
 /// The plane projection of Enneper's minimal surface (weight applies to the cubic part only).
@@ -559,13 +560,13 @@ fn heat_prepare(v: &mut Prepared) {
 fn heat(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [at, bt, ct, ap, bp, cp, ar, br, cr] = v.derived();
     let mut r = (t.sumsq + t.z).abs().sqrt();
-    r += ar * br.mul_add(r, cr).sin();
+    r += ar * br.mul_add(r, cr).fsin();
     if r == 0.0 {
         r = f64::EPSILON;
     }
-    let (st, ct_) = at.mul_add(bt.mul_add(r, ct).sin(), t.atan_yx).sin_cos();
+    let (st, ct_) = at.mul_add(bt.mul_add(r, ct).fsin(), t.atan_yx).fsin_cos();
     let incl = (t.z / r).clamp(-1.0, 1.0).acos();
-    let (sp, cp_) = ap.mul_add(bp.mul_add(r, cp).sin(), incl).sin_cos();
+    let (sp, cp_) = ap.mul_add(bp.mul_add(r, cp).fsin(), incl).fsin_cos();
     [r * ct_ * sp, r * st * sp, r * cp_]
 }
 
@@ -574,7 +575,7 @@ fn helicoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [frequency] = v.params();
     let ang = t.z * (frequency * TAU) + t.atan_yx;
     let k = v.w * t.sqrt;
-    [k * ang.cos(), k * ang.sin(), v.w * t.z]
+    [k * ang.fcos(), k * ang.fsin(), v.w * t.z]
 }
 
 /// A helix: the point is shifted by a circle of radius `width` whose angle turns with z.
@@ -582,8 +583,8 @@ fn helix(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [frequency, width] = v.params();
     let ang = t.z * (frequency * TAU);
     [
-        v.w * (t.x + ang.cos() * width),
-        v.w * (t.y + ang.sin() * width),
+        v.w * (t.x + ang.fcos() * width),
+        v.w * (t.y + ang.fsin() * width),
         v.w * t.z,
     ]
 }
@@ -601,8 +602,8 @@ fn ho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (xx, yy, zz) = (t.x * t.x, t.y * t.y, t.z * t.z);
     let om_x = yy.atan2(zz);
     let om_y = xx.atan2(zz);
-    let (su, cu) = t.x.sin_cos();
-    let (sv, cv) = t.y.sin_cos();
+    let (su, cu) = t.x.fsin_cos();
+    let (sv, cv) = t.y.fsin_cos();
     let cucv = cu * cv;
     let sucv = su * cv;
     let x = cucv.abs().powf(px) + cucv * px + 0.25 * om_x;
@@ -614,7 +615,7 @@ fn ho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn prep_mobius_strip(v: &mut Prepared) {
     let [_, _, _, _, rotate_x, rotate_y] = v.params();
     let (rx, ry) = (rotate_x * TAU, rotate_y * TAU);
-    v.p.extend_from_slice(&[rx.sin(), rx.cos(), ry.sin(), ry.cos()]);
+    v.p.extend_from_slice(&[rx.fsin(), rx.fcos(), ry.fsin(), ry.fcos()]);
 }
 
 /// mobius_strip: wraps the rectangle [−rect_x, rect_x]×[−rect_y, rect_y] (tiled) onto a Möbius
@@ -634,10 +635,10 @@ fn mobius_strip(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
         let f = (t.y + rect_y) / (2.0 * rect_y);
         2.0 * width * (f - f.floor()) - width
     };
-    let half_c = (u / 2.0).cos();
-    let bx = (radius + s * half_c) * u.cos();
-    let by = (radius + s * half_c) * u.sin();
-    let bz = s * (u / 2.0).sin();
+    let half_c = (u / 2.0).fcos();
+    let bx = (radius + s * half_c) * u.fcos();
+    let by = (radius + s * half_c) * u.fsin();
+    let bz = s * (u / 2.0).fsin();
     let y1 = by * ry_cos + bz * ry_sin;
     let z1 = bz * ry_cos - by * ry_sin;
     let x2 = bx * rx_cos - z1 * rx_sin;
@@ -667,7 +668,7 @@ fn prep_popcorn2_3d(v: &mut Prepared) {
     let [_, _, _, c] = v.params();
     let w = v.w;
     let vv = if w.abs() <= 1.0 { w.abs() * w } else { w };
-    v.p.extend_from_slice(&[c.tan().sin(), w * 0.5, vv]);
+    v.p.extend_from_slice(&[c.tan().fsin(), w * 0.5, vv]);
 }
 
 /// popcorn2_3D: popcorn2 (x + px·sin tan(c·y), y + py·sin tan(c·x)), halved, with a z made
@@ -680,8 +681,8 @@ fn popcorn2_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3
     let other_z = if v.form == Form::Pre { t.z } else { acc.z };
     let lift = if other_z == 0.0 { from_angle } else { 0.0 };
     [
-        half_w * (t.x + px * (c * t.y).tan().sin()),
-        half_w * (t.y + py * (c * t.x).tan().sin()),
+        half_w * (t.x + px * (c * t.y).tan().fsin()),
+        half_w * (t.y + py * (c * t.x).tan().fsin()),
         lift + vv * (pz * sin_tan_c * z_in),
     ]
 }
@@ -727,25 +728,25 @@ fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let c3 = (rad - l * 0.5) / l;
     let c4 = c2 * c2;
     let th = t.atan_yx;
-    let (sth, cth) = th.sin_cos();
+    let (sth, cth) = th.fsin_cos();
     let lower = rng.f01() < 0.5;
 
     let wig = th / zeps(cycle) * freq * 0.5 + offset * cycle;
     // Radial waves: the sine terms of r/l, (r/l)² and (r/l)⁴, plus linear and curvature terms
     // (which of sin((r/l)²π) and cos((r/l - 1/2)π) goes where depends on the option's sign).
-    let curve_a = crvsc * 0.5 * (c2 * PI).sin();
-    let curve_b = crvsc * 0.5 * (c3 * PI).cos();
+    let curve_a = crvsc * 0.5 * (c2 * PI).fsin();
+    let curve_b = crvsc * 0.5 * (c3 * PI).fcos();
     let (first, last) = if dir < 0.0 {
         (curve_a, curve_b)
     } else {
         (curve_b, curve_a)
     };
     let lin = wagsc * 0.4 * rad;
-    let wag = (c1 * PI * abs_opt).sin() + lin + first;
+    let wag = (c1 * PI * abs_opt).fsin() + lin + first;
     let wag12 = if s12 <= 1.0 {
         wag
     } else {
-        let wag2 = (c2 * PI * abs_opt).sin() + lin + curve_b;
+        let wag2 = (c2 * PI * abs_opt).fsin() + lin + curve_b;
         if s12 <= 2.0 {
             wag2 * (1.0 - anti) + wag * anti
         } else {
@@ -755,14 +756,14 @@ fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let waggle = if s3 == 0.0 {
         wag12
     } else if s3 > 0.0 {
-        let wag3 = (c4 * PI * abs_opt).sin() + wagsc * (rad * rad) * 0.4 + last;
+        let wag3 = (c4 * PI * abs_opt).fsin() + wagsc * (rad * rad) * 0.4 + last;
         wag12 * (1.0 - s3) + wag3 * s3
     } else {
         0.0
     };
 
-    let petal = l * (petals * th + c).cos();
-    let swirl = sqr(rad * 0.5) * wig.sin() * wig_scale;
+    let petal = l * (petals * th + c).fcos();
+    let swirl = sqr(rad * 0.5) * wig.fsin() * wig_scale;
     let is_ghost = rng.f01() < ghost && lower;
     if is_ghost {
         let k = v.w * 0.5 * ref_sc;
@@ -830,8 +831,8 @@ fn prose3d_prep(v: &mut Prepared) {
 fn psphere(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [zscale] = v.params();
     let [k] = v.derived();
-    let (s0, c0) = (t.x * k).sin_cos();
-    let (s1, c1) = (t.y * k).sin_cos();
+    let (s0, c0) = (t.x * k).fsin_cos();
+    let (s1, c1) = (t.y * k).fsin_cos();
     [c0 * -s1, s0 * c1, c1 * zscale]
 }
 
@@ -843,9 +844,9 @@ fn psphere_prep(v: &mut Prepared) {
 /// sinusoidal in 3-D: sin x, sin y, and z from the angle of (x², y²) times cos z.
 fn sinusoidal3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [
-        v.w * t.x.sin(),
-        v.w * t.y.sin(),
-        v.w * ((t.x * t.x).atan2(t.y * t.y) * t.z.cos()),
+        v.w * t.x.fsin(),
+        v.w * t.y.fsin(),
+        v.w * ((t.x * t.x).atan2(t.y * t.y) * t.z.fcos()),
     ]
 }
 
@@ -864,9 +865,9 @@ fn splits3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// cos(n·y) (a 3-D output).
 fn svf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [n] = v.params();
-    let cn = (n * t.y).cos();
-    let (sx, cx) = t.x.sin_cos();
-    let (sy, cy) = t.y.sin_cos();
+    let cn = (n * t.y).fcos();
+    let (sx, cx) = t.x.fsin_cos();
+    let (sy, cy) = t.y.fsin_cos();
     [
         v.w * (cy * (cn * cx)),
         v.w * (cy * (cn * sx)),
@@ -885,9 +886,9 @@ fn taurus_prep(v: &mut Prepared) {
 fn taurus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [r, n, _, sor] = v.params();
     let [inv_r, one_minus_inv, one_minus_sor] = v.derived();
-    let (sx, cx) = t.x.sin_cos();
-    let (sy, cy) = t.y.sin_cos();
-    let ir = inv_r + (one_minus_inv * (r * (n * t.x).cos()));
+    let (sx, cx) = t.x.fsin_cos();
+    let (sy, cy) = t.y.fsin_cos();
+    let ir = inv_r + (one_minus_inv * (r * (n * t.x).fcos()));
     [
         v.w * (cx * (ir + sy)),
         v.w * (sx * (ir + sy)),

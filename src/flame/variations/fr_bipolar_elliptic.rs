@@ -13,6 +13,7 @@ use super::util::{
     zeps,
 };
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("bCollide", bcollide)
@@ -137,7 +138,7 @@ fn block(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// square into rounded blocks.
 fn blocky(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [sx, sy, mp] = v.params();
-    let r = v.w / zeps((t.x.cos() + t.y.cos()) / mp + 1.0);
+    let r = v.w / zeps((t.x.fcos() + t.y.fcos()) / mp + 1.0);
     let k = v.w / FRAC_PI_2;
     [
         k * sx * block_axis(t.x, t.sumsq) * r,
@@ -190,7 +191,7 @@ fn deltaa(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let y2 = t.y * t.y;
     let r = v.w * ((y2 + sqr(t.x + 1.0)).sqrt() / (y2 + sqr(t.x - 1.0)).sqrt());
     let a = (t.y.atan2(t.x - 1.0) - t.y.atan2(t.x + 1.0)) / 2.0;
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -214,7 +215,7 @@ fn e_collide(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
     if t.y <= 0.0 {
         nu = -nu;
     }
-    let (s, c) = nu.sin_cos();
+    let (s, c) = nu.fsin_cos();
     [
         v.w * xmax * c,
         v.w * (xmax - 1.0).sqrt() * (xmax + 1.0).sqrt() * s,
@@ -300,7 +301,7 @@ fn e_rotate(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         nu = -nu;
     }
     nu = (nu + rot + PI) % TAU - PI;
-    let (s, c) = nu.sin_cos();
+    let (s, c) = nu.fsin_cos();
     [v.w * xmax * c, v.w * (xmax * xmax - 1.0).sqrt() * s, 0.0]
 }
 
@@ -340,8 +341,8 @@ fn foci_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ex = t.x.exp() * 0.5;
     let enx = 0.25 / zeps(ex);
     let second = if t.z == 0.0 { t.atan_yx } else { t.z };
-    let k = v.w / zeps(ex + enx - t.y.cos() * second.cos());
-    [(ex - enx) * k, t.y.sin() * k, second.sin() * k]
+    let k = v.w / zeps(ex + enx - t.y.fcos() * second.fcos());
+    [(ex - enx) * k, t.y.fsin() * k, second.fsin() * k]
 }
 
 /// foci with adjustable weights `c1`, `c2` on eˣ and e⁻ˣ.
@@ -350,7 +351,7 @@ fn foci_p(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ex = zeps(t.x.exp());
     let a = ex * c1;
     let b = c2 / ex;
-    let (sy, cy) = t.y.sin_cos();
+    let (sy, cy) = t.y.fsin_cos();
     let k = v.w / zeps(a + b - cy);
     [(a - b) * k, sy * k, 0.0]
 }

@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 use super::util::{floor_f, floor_i64, rand_size, sign_nz, sqr, square_arc, trunc_i32, zeps};
 use super::*;
 use crate::flame::fastmath;
+use crate::flame::fastmath::FastTrig;
 
 /// Most edges (and stripes) of nBlur's polygon: each evaluation steps through the sectors one
 /// by one, and a polygon of 1,000 edges is a circle to within a twentieth of a pixel at a
@@ -127,7 +128,7 @@ fn blur_circle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let y = 2.0 * rng.f01() - 1.0;
     let (side, per) = square_arc(x, y);
     let r = v.w * side;
-    let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).sin_cos();
+    let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).fsin_cos();
     [r * c, r * s, v.w * t.z]
 }
 
@@ -152,7 +153,7 @@ fn blur_heart(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// Derived values: sin and cos of the angle.
 fn prep_blur_linear(v: &mut Prepared) {
     let [_, angle] = v.params();
-    let (s, c) = angle.sin_cos();
+    let (s, c) = angle.fsin_cos();
     v.p.push(s);
     v.p.push(c);
 }
@@ -196,7 +197,7 @@ fn blur_square(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A uniform random point of the disc of radius w.
 fn circleblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let rad = rng.f01().sqrt();
-    let (s, c) = (rng.f01() * TAU).sin_cos();
+    let (s, c) = (rng.f01() * TAU).fsin_cos();
     [v.w * c * rad, v.w * s * rad, 0.0]
 }
 
@@ -205,7 +206,7 @@ fn gaussian(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let ang = rng.f01() * TAU;
     let spread = rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0;
     let k = v.w * spread;
-    let (s, c) = ang.sin_cos();
+    let (s, c) = ang.fsin_cos();
     [k * c + t.x, k * s + t.y, 0.0]
 }
 
@@ -241,7 +242,7 @@ fn prep_nblur(v: &mut Prepared) {
         ratio_hole = 0.95;
     }
     let tan90m2 = (FRAC_PI_2 + mid / 2.0).tan();
-    let (sin_h, cos_h) = ((mid / 2.0).sin(), (mid / 2.0).cos());
+    let (sin_h, cos_h) = ((mid / 2.0).fsin(), (mid / 2.0).fcos());
     if highlight <= 0.1 {
         highlight = 0.1;
     }
@@ -251,7 +252,7 @@ fn prep_nblur(v: &mut Prepared) {
         } else {
             (edges / 2.0).floor()
         };
-        v.w / zeps((2.0 - 2.0 * (mid * steps).cos()).sqrt() / 2.0)
+        v.w / zeps((2.0 - 2.0 * (mid * steps).fcos()).sqrt() / 2.0)
     } else {
         v.w
     };
@@ -332,7 +333,7 @@ fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
         ((atan1 * (rng.f01() - 0.5)).atan() / atan2 + 0.5 + rand_size(rng, edges)) * mid
     };
     // Note: x takes the sine and y the cosine of the direction.
-    let (mut x, mut y) = (ang.sin(), ang.cos());
+    let (mut x, mut y) = (ang.fsin(), ang.fcos());
     let mut mem = ang;
     while ang > mid {
         ang -= mid;
@@ -373,7 +374,7 @@ fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
                 edge -= ang_stripes;
                 count -= 1;
             }
-            (x, y) = (mem.sin(), mem.cos());
+            (x, y) = (mem.fsin(), mem.fcos());
         }
         let rescaled = count & 1 != shifted;
         if rescaled && ratio > 1.0 {
@@ -383,7 +384,7 @@ fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
                 mem = mem - ang + edge - (edge - ang) / ang_start * ratio * ang_start;
             }
             ang = edge + (ang - edge) / ang_start * ratio * ang_start;
-            (x, y) = (mem.sin(), mem.cos());
+            (x, y) = (mem.fsin(), mem.fcos());
         }
         if rescaled && ratio < 1.0 {
             let squeeze_down = |ang: f64, edge: f64| {
@@ -395,13 +396,13 @@ fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
                     let num = (ang - (edge + speed)) * speed;
                     let k = num / (ang_start - speed);
                     let a = mem - ang + edge + k;
-                    (x, y) = (a.sin(), a.cos());
+                    (x, y) = (a.fsin(), a.fcos());
                     ang = edge + k;
                 }
                 if edge - ang > speed {
                     let k = squeeze_down(ang, edge);
                     let a = mem - ang + edge - k;
-                    (x, y) = (a.sin(), a.cos());
+                    (x, y) = (a.fsin(), a.fcos());
                     ang = edge - k;
                 }
             }
@@ -412,7 +413,7 @@ fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
                 if edge - ang > speed {
                     let k = squeeze_down(ang, edge);
                     let a = mem - ang + edge - k;
-                    (x, y) = (a.sin(), a.cos());
+                    (x, y) = (a.fsin(), a.fcos());
                     ang = edge - k;
                 }
             }
@@ -479,7 +480,7 @@ fn powered_unit(rng: &mut FastRng, pw: f64) -> f64 {
 /// reshapes the radial profile.
 fn sineblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power] = v.params();
-    let (s, c) = (rng.f01() * TAU).sin_cos();
+    let (s, c) = (rng.f01() * TAU).fsin_cos();
     let u = powered_unit(rng, power);
     let r = v.w * ((u * 2.0 - 1.0).acos() / PI);
     [r * c, r * s, 0.0]
@@ -493,8 +494,8 @@ fn sphereblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let polar = (rng.f01() * 2.0 - 1.0).acos();
     let u = powered_unit(rng, power);
     let r = v.w * (((u * 2.0 - 1.0).acos() / PI).ln() / 1.5).exp();
-    let (s, c) = ang.sin_cos();
-    let (sz, cz) = polar.sin_cos();
+    let (s, c) = ang.fsin_cos();
+    let (sz, cz) = polar.fsin_cos();
     [r * c * sz, r * s * sz, r * cz]
 }
 
@@ -524,15 +525,15 @@ fn starblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     };
     z *= rng.f01().sqrt();
     let a = angle - FRAC_PI_2;
-    [v.w * z * a.cos(), v.w * z * a.sin(), 0.0]
+    [v.w * z * a.fcos(), v.w * z * a.fsin(), 0.0]
 }
 
 fn starblur_prep(v: &mut Prepared) {
     let [power, range] = v.params();
     let half = PI / power;
-    let len = (1.0 + range * range - 2.0 * range * half.cos()).sqrt();
-    let alpha = (half.sin() * range / len).asin();
-    v.p.extend([len, TAU / power, alpha.sin(), alpha.cos()]);
+    let len = (1.0 + range * range - 2.0 * range * half.fcos()).sqrt();
+    let alpha = (half.fsin() * range / len).asin();
+    v.p.extend([len, TAU / power, alpha.fsin(), alpha.fcos()]);
 }
 
 /// starblur with a hole in the middle (`hole`) and each point's edge split into `stripes`
@@ -563,15 +564,15 @@ fn starblur2(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let sign = if odd { 1.0 } else { -1.0 };
     let angle = step * (wi / 2) as f64 + sign * (sin_a * x / z).asin() - FRAC_PI_2;
     let r = v.w * (z * (rng.f01() * fill2 + hole2).sqrt());
-    [angle.cos() * r, angle.sin() * r, 0.0]
+    [angle.fcos() * r, angle.fsin() * r, 0.0]
 }
 
 fn starblur2_prep(v: &mut Prepared) {
     let [power, range, hole, stripes] = v.params();
     let pz = zeps(power);
     let half = PI / pz;
-    let len = (1.0 + range * range - 2.0 * range * half.cos()).sqrt();
-    let alpha = (half.sin() * range / zeps(len)).asin();
+    let len = (1.0 + range * range - 2.0 * range * half.fcos()).sqrt();
+    let alpha = (half.fsin() * range / zeps(len)).asin();
     let hole2 = sqr(hole.abs().min(1.0));
     v.p.extend([
         len,
@@ -579,8 +580,8 @@ fn starblur2_prep(v: &mut Prepared) {
         1.0 - hole2,
         TAU / pz,
         power * 2.0,
-        alpha.sin(),
-        alpha.cos() * 2.0,
+        alpha.fsin(),
+        alpha.fcos() * 2.0,
         zeps(stripes.abs()),
     ]);
 }

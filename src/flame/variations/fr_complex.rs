@@ -10,6 +10,7 @@ use std::f64::consts::{E, FRAC_1_PI, FRAC_2_PI, PI, TAU};
 
 use super::util::{Cplx, crand, erf, jacobi_elliptic, ln_gamma, sqr, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("arcsech", arcsech).prepare(prep_arcsech),
@@ -177,8 +178,8 @@ fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn prep_cpow2(v: &mut Prepared) {
     let [r, a, div, spread] = v.params();
     let spread = zeps(spread);
-    let c = r * (PI / 2.0 * a).cos() / div;
-    let d = r * (PI / 2.0 * a).sin() / div;
+    let c = r * (PI / 2.0 * a).fcos() / div;
+    let d = r * (PI / 2.0 * a).fsin() / div;
     v.p.extend_from_slice(&[
         c,
         d,
@@ -207,13 +208,13 @@ fn cpow2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         n = n.wrapping_add(1);
     }
     a += TAU * n as f64;
-    if (a * inv_spread).cos() < rng.f11() {
+    if (a * inv_spread).fcos() < rng.f11() {
         a -= full_spread;
     }
     let lnr2 = t.sumsq.ln();
     let r = v.w * (half_c * lnr2 - d * a).exp();
     let th = c * a + half_d * lnr2 + ang * crand(rng);
-    let (s, c) = th.sin_cos();
+    let (s, c) = th.fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -222,7 +223,7 @@ fn prep_cpow3(v: &mut Prepared) {
     let div = zeps(div);
     let ld = if d < 0.0 { -(-d).ln() } else { d.ln() };
     let a = (ld * r).atan2(TAU);
-    let (sa, ca) = (a.sin(), a.cos());
+    let (sa, ca) = (a.fsin(), a.fcos());
     let pc = ca * r * ca / div;
     let pd = ca * r * sa / div;
     let coeff = if pd == 0.0 { 0.0 } else { -0.095 * spread / pd };
@@ -238,7 +239,7 @@ fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     if a < 0.0 {
         a += TAU;
     }
-    if (a / 2.0).cos() < rng.f11() {
+    if (a / 2.0).fcos() < rng.f11() {
         a -= TAU;
     }
     let turn = if rng.bit() { TAU } else { -TAU };
@@ -246,7 +247,7 @@ fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let lnr2 = t.sumsq.ln();
     let r = v.w * (half_c * lnr2 - d * a).exp();
     let th = c * a + half_d * lnr2 + ang * crand(rng);
-    let (s, c) = th.sin_cos();
+    let (s, c) = th.fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -257,7 +258,7 @@ fn dragonfire_prepare(v: &mut Prepared) {
     } else {
         let a = pos * PI;
         let trig = if mode < 3.0 {
-            a.cos()
+            a.fcos()
         } else if mode < 4.0 {
             a.tan()
         } else if mode < 5.0 {
@@ -277,28 +278,28 @@ fn dragonfire(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3
     let [val, one_m_val] = v.derived();
     let ex = t.x.exp() * c1;
     let enx = c2 / zeps(ex);
-    let (sy, cy) = t.y.sin_cos();
+    let (sy, cy) = t.y.fsin_cos();
     let r = v.w / zeps(ex + enx - cy);
     let fx = (ex - enx) * r;
     let fy = sy * r;
     if mode < 1.0 {
         return [fx, fy, 0.0];
     }
-    let zx = (scalar / zeps(fx.abs().ln())).cos();
-    let zy = (scalar / zeps(fy.abs().ln())).cos();
+    let zx = (scalar / zeps(fx.abs().ln())).fcos();
+    let zy = (scalar / zeps(fy.abs().ln())).fcos();
     let dir = |a: f64| if a < 0.0 { -radius } else { radius };
     let (nx, ny) = if mode < 2.0 {
         (fx + zx, fy + zy)
     } else if mode < 3.0 {
-        (fx * zx.sin(), fy * zy.sin())
+        (fx * zx.fsin(), fy * zy.fsin())
     } else if mode < 4.0 {
-        (fx * zx.sin().exp(), fy * zy.sin().exp())
+        (fx * zx.fsin().exp(), fy * zy.fsin().exp())
     } else if mode < 5.0 {
         (fx + dir(zx), fy + dir(zy))
     } else if mode < 6.0 {
         (fx + dir(zx).exp(), fy + dir(zy).exp())
     } else {
-        (fx + dir(zx).sin().exp(), fy + dir(zy).cos().exp())
+        (fx + dir(zx).fsin().exp(), fy + dir(zy).fcos().exp())
     };
     if interp < 1.0 {
         [nx, ny, 0.0]
@@ -323,7 +324,7 @@ fn excinis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let f = if func < 1.0 {
         r
     } else if func < 2.0 {
-        r.cos()
+        r.fcos()
     } else if func < 3.0 {
         r.exp()
     } else if func < 4.0 {
@@ -337,7 +338,7 @@ fn excinis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// The complex exponential of π·z.
 fn exp2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let k = v.w * (t.x * PI).exp();
-    let (s, c) = (t.y * PI).sin_cos();
+    let (s, c) = (t.y * PI).fsin_cos();
     [k * c, k * s, 0.0]
 }
 
@@ -352,7 +353,7 @@ fn expo_prepare(v: &mut Prepared) {
 fn expo(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [k, th] = v.derived();
     let m = (t.x * k - t.y * th).exp();
-    let (s, c) = (t.x * th + t.y * k).sin_cos();
+    let (s, c) = (t.x * th + t.y * k).fsin_cos();
     [v.w * m * c, v.w * m * s, 0.0]
 }
 
@@ -380,8 +381,8 @@ fn fibonacci2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 #[inline(always)]
 fn fib_common(w: f64, sc: f64, sc2: f64, lp: f64, t: &VarIn) -> V3 {
-    let (s1, c1) = (t.y * lp).sin_cos();
-    let (s2, c2) = (-(t.x * PI + t.y * lp)).sin_cos();
+    let (s1, c1) = (t.y * lp).fsin_cos();
+    let (s2, c2) = (-(t.x * PI + t.y * lp)).fsin_cos();
     let e1 = sc * (sc2 * (t.x * lp)).exp();
     let e2 = sc * (sc2 * -(t.x * lp - t.y * PI)).exp();
     [
@@ -480,7 +481,7 @@ fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let e = 4.0 * dist / power;
     let r = t.sqrt.powf(e);
     let ang = t.atan_yx * power;
-    let (x, y) = (r * ang.cos(), r * ang.sin());
+    let (x, y) = (r * ang.fcos(), r * ang.fsin());
     let re_u = re_a * x - im_a * y + re_b;
     let im_u = re_a * y + im_a * x + im_b;
     let re_v = re_c * x - im_c * y + re_d;
@@ -491,7 +492,7 @@ fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let r = (x * x + y * y).sqrt().powf(1.0 / e);
     let branch = (power * rng.f01()).floor();
     let ang = (y.atan2(x) + branch * TAU) / whole_power;
-    [v.w * r * ang.cos(), v.w * r * ang.sin(), 0.0]
+    [v.w * r * ang.fcos(), v.w * r * ang.fsin(), 0.0]
 }
 
 fn prep_murl(v: &mut Prepared) {
@@ -507,8 +508,8 @@ fn murl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [cp, half_power, scale] = v.derived();
     let ang = t.atan_yx * power;
     let r = cp * t.sumsq.powf(half_power);
-    let re = r * ang.cos() + 1.0;
-    let im = r * ang.sin();
+    let re = r * ang.fcos() + 1.0;
+    let im = r * ang.fsin();
     let k = scale / (re * re + im * im);
     [k * (t.x * re + t.y * im), k * (t.y * re - t.x * im), 0.0]
 }
@@ -529,11 +530,11 @@ fn murl2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [half_power, inv_p, two_inv_p, scale] = v.derived();
     let ang = t.atan_yx * power;
     let r = c * t.sumsq.powf(half_power);
-    let re = r * ang.cos() + 1.0;
-    let im = r * ang.sin();
+    let re = r * ang.fcos() + 1.0;
+    let im = r * ang.fsin();
     let rr = (re * re + im * im).powf(inv_p);
     let ang2 = im.atan2(re) * two_inv_p;
-    let (re, im) = (rr * ang2.cos(), rr * ang2.sin());
+    let (re, im) = (rr * ang2.fcos(), rr * ang2.fsin());
     let k = scale / (rr * rr);
     [k * (t.x * re + t.y * im), k * (t.y * re - t.x * im), 0.0]
 }

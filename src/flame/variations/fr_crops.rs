@@ -10,6 +10,7 @@ use std::f64::consts::{PI, TAU};
 
 use super::util::{mix, sqr, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("bcircle", bcircle)
@@ -152,7 +153,7 @@ fn bcircle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     if bw == 0.0 {
         return [0.0, 0.0, 0.0];
     }
-    let (s, c) = y.atan2(x).sin_cos();
+    let (s, c) = y.atan2(x).fsin_cos();
     let rad = v.w * (bw_fifth * rng.f01() + 1.0);
     [rad * c, rad * s, 0.0]
 }
@@ -176,7 +177,7 @@ fn circlecrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
             }
             [0.0, 0.0, z]
         } else {
-            let (s, c) = yi.atan2(xi).sin_cos();
+            let (s, c) = yi.atan2(xi).fsin_cos();
             [v.w * rdc * c + cx, v.w * rdc * s + cy, z]
         }
     } else {
@@ -202,7 +203,7 @@ fn circlecrop2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let r = t.sqrt;
     if r > hi || r < lo {
         if zero == 0.0 {
-            let (s, c) = (t.atan_yx.sin(), t.atan_yx.cos());
+            let (s, c) = (t.atan_yx.fsin(), t.atan_yx.fcos());
             [s * hi_w, c * hi_w, 0.0]
         } else {
             [0.0, 0.0, 0.0]
@@ -220,7 +221,7 @@ fn circlesplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         return [v.w * t.x, v.w * t.y, 0.0];
     }
     let len = t.sqrt + split;
-    let (s, c) = (t.atan_yx.sin(), t.atan_yx.cos());
+    let (s, c) = (t.atan_yx.fsin(), t.atan_yx.fcos());
     [v.w * (c * len), v.w * (s * len), 0.0]
 }
 
@@ -396,7 +397,7 @@ fn cropn(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     if v.compat {
         let mut a = (t.atan_yx + PI) / alpha;
         a = (a - a.trunc()) * alpha;
-        let c = (if a < half { a } else { alpha - a }).cos();
+        let c = (if a < half { a } else { alpha - a }).fcos();
         let edge = if c > 0.0 { radius / c } else { 1.0 };
         if (t.sqrt > edge) == (power > 0.0) {
             if zero == 1.0 {
@@ -411,7 +412,7 @@ fn cropn(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     } else {
         let r2 = t.sumsq;
         let a = (t.atan_yx + PI) % alpha;
-        let c = (if a < half { a } else { alpha - a }).cos();
+        let c = (if a < half { a } else { alpha - a }).fcos();
         let edge = if c > 0.0 { radius / zeps(c) } else { 1.0 };
         if (r2 > edge * edge) == (power > 0.0) {
             if zero == 0.0 {
@@ -605,7 +606,7 @@ fn prep_post_smartcrop(v: &mut Prepared) {
         work_power *= PI;
     } else {
         alpha = TAU / work_power;
-        round = roundstr / zeps((alpha / 2.0).sin()) / work_power * 2.0;
+        round = roundstr / zeps((alpha / 2.0).fsin()) / work_power * 2.0;
         work_rot = rotation * alpha;
     }
     v.p.extend_from_slice(&[
@@ -659,7 +660,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
         }
     };
     let placed = |r: f64, a: f64| -> V3 {
-        let o = [w * r * a.cos(), w * r * a.sin(), w * zi];
+        let o = [w * r * a.fcos(), w * r * a.fsin(), w * zi];
         if absolute {
             o
         } else {
@@ -688,7 +689,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
             let mut xang = (ang + PI) / alpha;
             xang -= xang.trunc();
             xang = if xang < 0.5 { xang } else { 1.0 - xang };
-            let mut k = 1.0 / (xang * alpha).cos();
+            let mut k = 1.0 / (xang * alpha).fcos();
             if roundstr != 0.0 {
                 let ww = if roundwidth != 1.0 {
                     ((xang * 2.0).ln() * roundwidth).exp()
@@ -776,8 +777,8 @@ fn vignette(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         px = 0.0;
         py = 0.0;
     } else {
-        px += blur_r * blur_a.cos();
-        py += blur_r * blur_a.sin();
+        px += blur_r * blur_a.fcos();
+        py += blur_r * blur_a.fsin();
     }
     [px * v.w, py * v.w, 0.0]
 }

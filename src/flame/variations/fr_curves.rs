@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_2_PI, PI, TAU};
 
 use super::util::{floor_f, floor_i64, rand_size, trunc_i32, wang_hash, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("concentric", concentric)
@@ -131,7 +132,7 @@ fn concentric(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     } else {
         0.0
     };
-    let (s, c) = angle.sin_cos();
+    let (s, c) = angle.fsin_cos();
     [r * c * v.w, r * s * v.w, (-level + zb) * v.w]
 }
 
@@ -140,16 +141,16 @@ fn concentric(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 fn coth_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
-    let den = zeps((a * s).cos() - s.cosh());
-    [v.w * (-s.sinh() / den), v.w * ((a * s).sin() / den), 0.0]
+    let den = zeps((a * s).fcos() - s.cosh());
+    [v.w * (-s.sinh() / den), v.w * ((a * s).fsin() / den), 0.0]
 }
 
 fn prep_line(v: &mut Prepared) {
     let [delta, phi] = v.params();
     let (delta, phi) = (delta * PI, phi * PI);
-    let ux = delta.cos() * phi.cos();
-    let uy = delta.sin() * phi.cos();
-    let uz = phi.sin();
+    let ux = delta.fcos() * phi.fcos();
+    let uy = delta.fsin() * phi.fcos();
+    let uz = phi.fsin();
     let len = (ux * ux + uy * uy + uz * uz).sqrt();
     v.p.extend_from_slice(&[ux / len, uy / len, uz / len]);
 }
@@ -168,8 +169,8 @@ fn lissajous(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
     let [tmin, tmax, a, b, c, d, e] = v.params();
     let s = (tmax - tmin) * rng.f01() + tmin;
     let thick = rng.f01() - 0.5;
-    let cx = (a * s + d).sin();
-    let cy = (b * s).sin();
+    let cx = (a * s + d).fsin();
+    let cy = (b * s).fsin();
     [
         v.w * (cx + c * s + e * thick),
         v.w * (cy + c * s + e * thick),
@@ -184,7 +185,7 @@ fn pie3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let slice = trunc_i32(rng.f01() * slices + 0.5) as f64;
     let ang = rotation + TAU * (slice + rng.f01() * thickness) / slices;
     let r = v.w * rng.f01();
-    [r * ang.cos(), r * ang.sin(), v.w * r.sin()]
+    [r * ang.fcos(), r * ang.fsin(), v.w * r.fsin()]
 }
 
 /// A random city of blocks: points land in random unit cells (spread exponentially around the
@@ -219,9 +220,9 @@ fn spirograph(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let off = (ymax - ymin) * rng.f01() + ymin;
     let ab = a + b;
     let inner = ab / b * tt;
-    let (st, ct) = tt.sin_cos();
-    let x1 = ab * ct - c1 * inner.cos();
-    let y1 = ab * st - c2 * inner.sin();
+    let (st, ct) = tt.fsin_cos();
+    let x1 = ab * ct - c1 * inner.fcos();
+    let y1 = ab * st - c2 * inner.fsin();
     [v.w * (x1 + d * ct + off), v.w * (y1 + d * st + off), 0.0]
 }
 
@@ -253,10 +254,10 @@ fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
     if rng.bit() {
         phi = -phi;
     }
-    let (sr, cr) = rho.sin_cos();
-    let (sp, cp) = phi.sin_cos();
-    let (msr, mcr) = (m4_1 * rho).sin_cos();
-    let (msp, mcp) = (m4_2 * phi).sin_cos();
+    let (sr, cr) = rho.fsin_cos();
+    let (sp, cp) = phi.fsin_cos();
+    let (msr, mcr) = (m4_1 * rho).fsin_cos();
+    let (msp, mcp) = (m4_2 * phi).fsin_cos();
     let pr1 = an2_1 * mcr.abs().powf(n2_1) + bn3_1 * msr.abs().powf(n3_1);
     let pr2 = an2_2 * mcp.abs().powf(n2_2) + bn3_2 * msp.abs().powf(n3_2);
     let r1 = pr1.abs().powf(n1_1) + spiral * rho;
@@ -293,14 +294,14 @@ fn super_shape3d_prep(v: &mut Prepared) {
 fn tanh_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
-    let den = zeps((a * s).cos() + s.cosh());
-    [v.w * (s.sinh() / den), v.w * ((a * s).sin() / den), 0.0]
+    let den = zeps((a * s).fcos() + s.cosh());
+    [v.w * (s.sinh() / den), v.w * ((a * s).fsin() / den), 0.0]
 }
 
 /// Derived values of waffle: weight·sin and weight·cos of the rotation.
 fn waffle_prep(v: &mut Prepared) {
     let [_, _, _, rotation] = v.params();
-    let (s, c) = rotation.sin_cos();
+    let (s, c) = rotation.fsin_cos();
     let w = v.w;
     v.p.extend_from_slice(&[w * s, w * c]);
 }

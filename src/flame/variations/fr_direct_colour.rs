@@ -10,6 +10,7 @@ use std::f64::consts::{PI, TAU};
 use super::noise::fractal_noise;
 use super::util::{lrint, sqr, trunc_i32, wang_hash, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("dc_bubble", dc_bubble)
@@ -180,7 +181,7 @@ fn dc_cube(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 fn dc_cylinder_prepare(v: &mut Prepared) {
     let [_, angle, scale] = v.params();
-    let (s, c) = angle.sin_cos();
+    let (s, c) = angle.fsin_cos();
     let l = dc_inv_scale(scale);
     v.p.extend_from_slice(&[s, c, l]);
 }
@@ -190,12 +191,12 @@ fn dc_cylinder_prepare(v: &mut Prepared) {
 fn dc_cylinder(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [offset, _, _, sx, sy, blur] = v.params();
     let [sina, cosa, ldcs] = v.derived();
-    let (sr, cr) = (rng.f01() * TAU).sin_cos();
+    let (sr, cr) = (rng.f01() * TAU).fsin_cos();
     let r = blur * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
     let o = [
-        v.w * (t.x + r * sr).sin() * sx,
+        v.w * (t.x + r * sr).fsin() * sx,
         r + t.y * sy,
-        v.w * (t.x + r * cr).cos(),
+        v.w * (t.x + r * cr).fcos(),
     ];
     let (px, py, _) = sum_or_input(v, t, acc);
     let (tx, ty) = (o[0] + px, o[1] + py);
@@ -237,7 +238,7 @@ fn dc_gridout(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 
 fn dc_linear_prepare(v: &mut Prepared) {
     let [_, angle, scale] = v.params();
     let l = dc_inv_scale(scale);
-    let (s, c) = angle.sin_cos();
+    let (s, c) = angle.fsin_cos();
     v.p.extend_from_slice(&[l, s, c]);
 }
 
@@ -306,13 +307,13 @@ fn dc_perlin(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
                     rr = 2.0 - rr;
                 }
                 r = rr * (1.0 + edge);
-                let (s, c) = (rng.f01() * TAU).sin_cos();
+                let (s, c) = (rng.f01() * TAU).fsin_cos();
                 vx = 0.5 * r * s;
                 vy = 0.5 * r * c;
             }
             _ => {
                 r = (1.0 + edge) * rng.f01();
-                let (s, c) = (rng.f01() * TAU).sin_cos();
+                let (s, c) = (rng.f01() * TAU).fsin_cos();
                 vx = 0.5 * r * s;
                 vy = 0.5 * r * c;
             }
@@ -458,8 +459,8 @@ pub(super) fn ztransl_by(v: &Prepared, t: &VarIn, color: f64) -> V3 {
 fn prep_pixel_flow(v: &mut Prepared) {
     let [angle] = v.params();
     let rad = angle * (PI / 180.0);
-    v.p.push(rad.cos());
-    v.p.push(rad.sin());
+    v.p.push(rad.fcos());
+    v.p.push(rad.fsin());
 }
 
 /// pixel_flow: streaks: a random displacement along the direction `angle`, of a length hashed

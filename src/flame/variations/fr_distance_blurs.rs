@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{sign_nz, sqr, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 /// The parameters of the anisotropic depth blurs (`NAME` = depth_blur2, depth_gaussian2, …):
 /// any leading ones given, then blur, radius, centre (x0, y0), distance multipliers and the
@@ -201,15 +202,15 @@ fn log_map(x: f64) -> f64 {
 /// Star-blur geometry shared by depth_blur and depth_blur2: (length, alpha).
 fn star_shape(power: f64, range: f64) -> (f64, f64) {
     let a0 = PI / zeps(power);
-    let length = (1.0 + range * range - 2.0 * range * a0.cos()).sqrt();
-    let alpha = (a0.sin() * range / zeps(length)).asin();
+    let length = (1.0 + range * range - 2.0 * range * a0.fcos()).sqrt();
+    let alpha = (a0.fsin() * range / zeps(length)).asin();
     (length, alpha)
 }
 
 fn depth_blur_prepare(v: &mut Prepared) {
     let [power, range, blur] = v.params();
     let (length, alpha) = star_shape(power, range);
-    let (s, c) = alpha.sin_cos();
+    let (s, c) = alpha.fsin_cos();
     v.p.extend_from_slice(&[length, blur / 10.0, power * 2.0, TAU / zeps(power), s, c]);
 }
 
@@ -240,7 +241,7 @@ fn star_offset(
         step * (arm / 2) as f64 - lean
     };
     z *= rng.f01().sqrt();
-    let (s, c) = (ang - FRAC_PI_2).sin_cos();
+    let (s, c) = (ang - FRAC_PI_2).fsin_cos();
     (z * c, z * s)
 }
 
@@ -287,7 +288,7 @@ fn depth_blur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
 fn depth_blur2_prepare(v: &mut Prepared) {
     let [power, range, blur, _, _, _, mx, my] = v.params();
     let (length, alpha) = star_shape(power, range);
-    let (s, c) = alpha.sin_cos();
+    let (s, c) = alpha.fsin_cos();
     v.p.extend_from_slice(&[
         length,
         blur / 10.0,
@@ -321,7 +322,7 @@ fn depth_blur2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
 #[inline(always)]
 fn gaussian_offset(rng: &mut FastRng) -> (f64, f64) {
     let r = (-2.0 * rng.f01().ln()).sqrt();
-    let (s, c) = (rng.f01() * TAU).sin_cos();
+    let (s, c) = (rng.f01() * TAU).fsin_cos();
     (r * c, r * s)
 }
 
@@ -359,8 +360,8 @@ fn polygon_offset(rng: &mut FastRng, side: f64, half: f64) -> (f64, f64) {
     if phi > half {
         phi -= side;
     }
-    let amp = 1.0 / zeps(phi.cos());
-    let (s, c) = ang.sin_cos();
+    let amp = 1.0 / zeps(phi.fcos());
+    let (s, c) = ang.fsin_cos();
     (amp * c, amp * s)
 }
 
@@ -424,7 +425,7 @@ fn sine_offset(rng: &mut FastRng, power: f64) -> (f64, f64) {
     } else {
         (((1.0 - rng.f01()).ln() * power).exp() * 2.0 - 1.0).acos() / PI
     };
-    let (s, c) = ang.sin_cos();
+    let (s, c) = ang.fsin_cos();
     (r * c, r * s)
 }
 
@@ -577,8 +578,8 @@ fn radial_falloff(t: &VarIn, w: f64, rin: f64, elevation: f64, dist: f64, r: V3,
     let rad = rin + m[0] * r[0] * dist;
     let phi = t.atan_yx + m[1] * r[1] * dist;
     let sigma = elevation.asin() + m[2] * r[2] * dist;
-    let (ss, sc) = sigma.sin_cos();
-    let (ps, pc) = phi.sin_cos();
+    let (ss, sc) = sigma.fsin_cos();
+    let (ps, pc) = phi.fsin_cos();
     let (ss, sc) = (ss * w, sc * w);
     [rad * sc * pc, rad * sc * ps, rad * ss]
 }
@@ -589,8 +590,8 @@ fn gaussian_falloff(t: &VarIn, w: f64, dist: f64, r: [f64; 3], m: [f64; 3]) -> V
     let sigma = dist * r[1] * TAU;
     let phi = dist * r[2] * PI;
     let rad = dist * r[0];
-    let (ss, sc) = sigma.sin_cos();
-    let (ps, pc) = phi.sin_cos();
+    let (ss, sc) = sigma.fsin_cos();
+    let (ps, pc) = phi.fsin_cos();
     [
         (t.x + m[0] * rad * sc * pc) * w,
         (t.y + m[1] * rad * sc * ps) * w,
@@ -664,8 +665,8 @@ fn farblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [sx, sy, sz, x0, y0, z0] = v.params();
     let d2 = sqr(t.x - x0) + sqr(t.y - y0) + sqr(t.z - z0);
     let r = v.w * d2 * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
-    let (su, cu) = (rng.f01() * TAU).sin_cos();
-    let (sv, cv) = (rng.f01() * TAU).sin_cos();
+    let (su, cu) = (rng.f01() * TAU).fsin_cos();
+    let (sv, cv) = (rng.f01() * TAU).fsin_cos();
     [sx * r * sv * cu, sy * r * sv * su, sz * r * cv]
 }
 

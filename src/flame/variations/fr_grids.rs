@@ -13,6 +13,7 @@ use super::util::{
     trunc_i32, zeps,
 };
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("boarders2", boarders2)
@@ -260,7 +261,7 @@ fn bwraps(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     lx *= r;
     ly *= r;
     let f = (lx * lx + ly * ly) / r2;
-    let (s, c) = (inner * (1.0 - f) + outer * f).sin_cos();
+    let (s, c) = (inner * (1.0 - f) + outer * f).fsin_cos();
     [
         v.w * (cx + c * lx + s * ly),
         v.w * (cy - s * lx + c * ly),
@@ -309,7 +310,7 @@ fn bwraps_rand(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (lx3, ly3) = (lx2 * r, ly2 * r);
     let f = (lx3 * lx3 + ly3 * ly3) / zeps(r2);
     let theta = inner * (1.0 - f) + outer * f;
-    let (st, ct) = (theta.sin(), theta.cos());
+    let (st, ct) = (theta.fsin(), theta.fcos());
     [
         (cx + ct * lx3 + st * ly3) * w,
         (cy - st * lx3 + ct * ly3) * w,
@@ -357,7 +358,7 @@ fn circle_rand_hash(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
         0.0
     };
     if ret > 0.0 {
-        let (s, c) = a.sin_cos();
+        let (s, c) = a.fsin_cos();
         [v.w * (c * ret + gx), v.w * (s * ret + gy), 0.0]
     } else {
         [0.0, 0.0, 0.0]
@@ -452,8 +453,8 @@ fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
         n = floor_i64(0.5 * py / sc);
         let alpha = TAU * rng.f01();
         let u = 0.3 + 0.7 * lattice_noise_2d(m.wrapping_add(10) as i32, n.wrapping_add(3) as i32);
-        x = u * alpha.cos();
-        y = u * alpha.sin();
+        x = u * alpha.fcos();
+        y = u * alpha.fsin();
         tries += 1;
         if tries > 10 || lattice_noise_2d(trunc_i32(m as f64 + seed), n as i32) <= dens {
             break;
@@ -532,7 +533,7 @@ fn crackle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [half] = v.derived();
     let blur = (rng.f01() + rng.f01()) / 2.0 + (rng.f01() - 0.5) / 4.0;
     let theta = TAU * rng.f01();
-    let u = [blur * theta.sin(), blur * theta.cos()];
+    let u = [blur * theta.fsin(), blur * theta.fcos()];
     let mut ci = floor_i64(u[0] / half) as i32;
     let mut cj = floor_i64(u[1] / half) as i32;
     // Re-centre the 3×3 block on the cell whose site is nearest.
@@ -618,7 +619,7 @@ fn dust(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let hy = sine_hash(cy, cx, 2.0);
     let a = (cx + hx * dist) * TAU;
     let r = ((cy + hy * dist).ln() * power).exp();
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     [v.w * c * r, v.w * s * r, 0.0]
 }
 
@@ -641,7 +642,7 @@ fn gnarly(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         let ly = y - cy;
         let d2 = lx * lx + ly * ly;
         if d2 <= rr {
-            let (s, c) = (twist * (d2 / rr).ln()).sin_cos();
+            let (s, c) = (twist * (d2 / rr).ln()).fsin_cos();
             x = cx + c * lx + s * ly;
             y = cy - s * lx + c * ly;
         }
@@ -774,7 +775,7 @@ fn squares(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     } else {
         level * FRAC_PI_2
     };
-    let (s, c) = angle.sin_cos();
+    let (s, c) = angle.fsin_cos();
     [
         (cx + lx * c - ly * s) * v.w,
         (cy + lx * s + ly * c) * v.w,
@@ -794,7 +795,11 @@ fn sschecks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     } else {
         (ox, oy + jitter * rng.f01())
     };
-    [v.w * (t.x.sin() * r + dx), v.w * (t.y.sin() * r + dy), 0.0]
+    [
+        v.w * (t.x.fsin() * r + dx),
+        v.w * (t.y.fsin() * r + dy),
+        0.0,
+    ]
 }
 
 fn sschecks_prep(v: &mut Prepared) {
@@ -819,7 +824,7 @@ fn tile_hlp(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let pos = x > 0.0;
     let k = trunc_i32(x) as f64;
     let frac = if pos { x - k } else { x + k };
-    let shift = if (frac * PI).cos() < rng.f11() {
+    let shift = if (frac * PI).fcos() < rng.f11() {
         if pos { -width_w } else { width_w }
     } else {
         0.0

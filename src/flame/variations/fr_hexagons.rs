@@ -9,6 +9,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{floor_f, floor_i64, rand_size, sine_hash, sqr, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hex_modulus", hex_modulus)
@@ -152,7 +153,11 @@ fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         let reach = edge * rng.f01().sqrt() * 1.154_700_538_379_251_5;
         let shrink = sine_hash(hx, hy, seed);
         let r = size * 0.5 * reach * shrink.powf(power);
-        [(ang.cos() * r + hx) * v.w, (ang.sin() * r + hy) * v.w, 0.0]
+        [
+            (ang.fcos() * r + hx) * v.w,
+            (ang.fsin() * r + hy) * v.w,
+            0.0,
+        ]
     } else {
         [0.0, 0.0, 0.0]
     }
@@ -173,7 +178,7 @@ fn hexaplay3d_prepare(v: &mut Prepared) {
     } else {
         (2.0, (majp - 1.0) * 0.5)
     };
-    let lift = (PI / 3.0).sin();
+    let lift = (PI / 3.0).fsin();
     let half_scale = scale * 0.5;
     v.p.extend_from_slice(&[plane, boost, lift, half_scale]);
     // Fractorium starts on the six-node walk two times in three (global random); start there.
@@ -246,7 +251,7 @@ fn hexaplay3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 fn hexes_prepare(v: &mut Prepared) {
     let [_, _, rotate] = v.params();
-    let (s, c) = (rotate * TAU).sin_cos();
+    let (s, c) = (rotate * TAU).fsin_cos();
     v.p.extend_from_slice(&[s, c]);
 }
 
@@ -364,9 +369,9 @@ fn hexnix3d_prepare(v: &mut Prepared) {
         0.0
     };
     let smooth = if v.w.abs() <= 0.5 { v.w * 2.0 } else { 1.0 };
-    let lift = (PI / 3.0).sin();
-    let c7 = (7.0 * PI / 6.0).cos();
-    let c11 = (11.0 * PI / 6.0).cos();
+    let lift = (PI / 3.0).fsin();
+    let c7 = (7.0 * PI / 6.0).fcos();
+    let c11 = (11.0 * PI / 6.0).fcos();
     v.p.extend_from_slice(&[smooth, plane, boost, gentle, lift, c7, c11]);
     // Fractorium picks the first walk from its global generator; start on the six-node walk.
     v.state.set(ST_SIXFOLD, 1.0);
@@ -445,10 +450,10 @@ fn xtrb_prep(v: &mut Prepared) {
     let br = 0.047 + a;
     let cr = 0.047 + b;
     let ar = PI - br - cr;
-    let (sa2, ca2) = (ar / 2.0).sin_cos();
-    let (sb2, cb2) = (br / 2.0).sin_cos();
-    let (sc2, cc2) = (cr / 2.0).sin_cos();
-    let (sinc, cosc) = cr.sin_cos();
+    let (sa2, ca2) = (ar / 2.0).fsin_cos();
+    let (sb2, cb2) = (br / 2.0).fsin_cos();
+    let (sc2, cc2) = (cr / 2.0).fsin_cos();
+    let (sinc, cosc) = cr.fsin_cos();
     let la = radius * (sc2 / cc2 + sb2 / cb2);
     let lb = radius * (sc2 / cc2 + sa2 / ca2);
     let lc = radius * (sb2 / cb2 + sa2 / ca2);
@@ -623,6 +628,6 @@ fn xtrb(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let iy = al - radius;
     let angle = (iy.atan2(ix) + TAU * rand_size(rng, roots)) / power;
     let r = v.w * (sqr(ix) + sqr(iy)).powf(cn);
-    let (s, c) = angle.sin_cos();
+    let (s, c) = angle.fsin_cos();
     [v.w * (r * c), v.w * (r * s), 0.0]
 }

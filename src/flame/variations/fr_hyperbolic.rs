@@ -9,6 +9,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{crand, floor_f, floor_i64, sqr, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hypercrop", hypercrop)
@@ -111,8 +112,8 @@ fn hypercrop_prepare(v: &mut Prepared) {
     let n = zeps(n);
     let coeff = zeps(n * 0.5 / PI);
     let a0 = PI / n;
-    let len = 1.0 / zeps(a0.cos());
-    let d = rad * a0.sin() * len;
+    let len = 1.0 / zeps(a0.fcos());
+    let d = rad * a0.fsin() * len;
     v.p.extend_from_slice(&[coeff, a0, len, d]);
 }
 
@@ -122,8 +123,8 @@ fn hypercrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, zero] = v.params();
     let [coeff, a0, len, d] = v.derived();
     let ang = floor_f(t.atan_yx * coeff) / coeff + a0;
-    let x0 = ang.cos() * len;
-    let y0 = ang.sin() * len;
+    let x0 = ang.fcos() * len;
+    let y0 = ang.fsin() * len;
     let (mut fx, mut fy, mut fz) = (t.x, t.y, t.z);
     if (sqr(t.x - x0) + sqr(t.y - y0)).sqrt() < d {
         fz = 0.0;
@@ -135,8 +136,8 @@ fn hypercrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
             fy = 0.0;
         } else {
             let ra = (t.y - y0).atan2(t.x - x0);
-            fx = x0 + ra.cos() * d;
-            fy = y0 + ra.sin() * d;
+            fx = x0 + ra.fcos() * d;
+            fy = y0 + ra.fsin() * d;
         }
     }
     [fx * v.w, fy * v.w, fz * v.w]
@@ -169,10 +170,10 @@ fn hypershift2_prepare(v: &mut Prepared) {
     let [p_, q_] = v.params();
     let pq = PI / q_;
     let pp = PI / p_;
-    let spq = pq.sin();
-    let spp = pp.sin();
-    let shift = (PI * 0.5 - pq - pp).sin() / (1.0 - sqr(spq) - sqr(spp)).sqrt();
-    let lean = (PI / 2.0 + pp).sin();
+    let spq = pq.fsin();
+    let spp = pp.fsin();
+    let shift = (PI * 0.5 - pq - pp).fsin() / (1.0 - sqr(spq) - sqr(spp)).sqrt();
+    let lean = (PI / 2.0 + pp).fsin();
     let scale2 = 1.0 / (sqr(lean) / sqr(spq) - 1.0).sqrt() * (lean / spq - 1.0);
     let scale = 1.0 - shift * shift;
     v.p.extend_from_slice(&[shift, scale, scale2]);
@@ -192,7 +193,7 @@ fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     let ang = floor_i64(rng.f01() * p_).wrapping_mul(2).wrapping_add(1) as f64 * PI / p_;
     let bx = k * x + shift;
     let by = k * y;
-    let (sa, ca) = ang.sin_cos();
+    let (sa, ca) = ang.fsin_cos();
     if v.compat && v.form == Form::Regular {
         *acc = Acc {
             color: acc.color,
@@ -205,11 +206,11 @@ fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
 fn hypertile_prepare(v: &mut Prepared) {
     let [p_, q_, n] = v.params();
     let pa = TAU / zeps(p_);
-    let cs = pa.cos();
-    let r2 = (1.0 - cs) / (cs + (TAU / zeps(q_)).cos()) + 1.0;
+    let cs = pa.fcos();
+    let r2 = (1.0 - cs) / (cs + (TAU / zeps(q_)).fcos()) + 1.0;
     let r = if r2 > 0.0 { 1.0 / r2.sqrt() } else { 1.0 };
     let a = n * pa;
-    v.p.extend_from_slice(&[r * a.cos(), r * a.sin()]);
+    v.p.extend_from_slice(&[r * a.fcos(), r * a.fsin()]);
 }
 
 /// A Möbius map of the Poincaré disc carrying the origin to the n-th vertex of the {p, q}
@@ -227,8 +228,8 @@ fn hypertile(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn hypertile12_prepare(v: &mut Prepared) {
     let [p_, q_] = v.params();
     let pa = TAU / zeps(p_);
-    let cs = pa.cos();
-    let r2 = 1.0 - (cs - 1.0) / (cs + (TAU / zeps(q_)).cos());
+    let cs = pa.fcos();
+    let r2 = 1.0 - (cs - 1.0) / (cs + (TAU / zeps(q_)).fcos());
     let r = if r2 > 0.0 { 1.0 / r2.sqrt() } else { 1.0 };
     let whole_p = trunc_i32(p_) as f64;
     v.p.extend_from_slice(&[pa, r, whole_p]);
@@ -242,7 +243,7 @@ fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     } else {
         floor_f(rng.f01() * whole_p) * pa
     };
-    let (sa, ca) = ang.sin_cos();
+    let (sa, ca) = ang.fsin_cos();
     let re = r * ca;
     let im = r * sa;
     let a = t.x + re;
@@ -264,7 +265,7 @@ fn hypertile2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = a * c + b * d;
     let y = b * c - a * d;
     let k = v.w / zeps(c * c + d * d);
-    let (sa, ca) = (crand(rng) * pa).sin_cos();
+    let (sa, ca) = (crand(rng) * pa).fsin_cos();
     [k * (x * ca + y * sa), k * (y * ca - x * sa), 0.0]
 }
 
@@ -273,7 +274,7 @@ fn hypertile2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 fn tile3d_radius(p_: f64, q_: f64) -> (f64, f64) {
     let pa = TAU / zeps(p_);
     let qa = TAU / zeps(q_);
-    let r = -(pa.cos() - 1.0) / zeps(pa.cos() + qa.cos());
+    let r = -(pa.fcos() - 1.0) / zeps(pa.fcos() + qa.fcos());
     let r = if r > 0.0 {
         1.0 / zeps((1.0 + r).sqrt())
     } else {
@@ -286,8 +287,8 @@ fn hypertile3d_prepare(v: &mut Prepared) {
     let [p, q, n] = v.params();
     let (r, pa) = tile3d_radius(p, q);
     let na = n * pa;
-    let cx = r * na.cos();
-    let cy = r * na.sin();
+    let cx = r * na.fcos();
+    let cy = r * na.fsin();
     let (cx2, cy2) = (cx * cx, cy * cy);
     v.p.extend_from_slice(&[
         cx,
@@ -325,7 +326,7 @@ fn hypertile3d12_prepare(v: &mut Prepared) {
 /// The 3-D hyperbolic tiling map towards a random vertex of the central polygon.
 fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pa, r, c2, s2z] = v.derived();
-    let (sa, ca) = (crand(rng) * pa).sin_cos();
+    let (sa, ca) = (crand(rng) * pa).fsin_cos();
     let cx = r * ca;
     let cy = r * sa;
     let s2x = 1.0 + cx * cx - cy * cy;
@@ -351,7 +352,7 @@ fn hypertile3d2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = t.x * s2x - cx * (-r2 - 1.0);
     let y = t.y * s2y;
     let k = v.w / (c2 * r2 + x2cx + 1.0);
-    let (sa, ca) = (crand(rng) * pa).sin_cos();
+    let (sa, ca) = (crand(rng) * pa).fsin_cos();
     [
         k * (x * ca + y * sa),
         k * (y * ca - x * sa),
@@ -367,7 +368,7 @@ fn ortho_step(x: f64, y: f64, xo: f64, turn: f64) -> (f64, f64) {
     let ro = ((x - xo) * (x - xo) + y * y).sqrt();
     let theta = 1.0f64.atan2(ro);
     let a = (turn * theta + y.atan2(xo - x) + theta) % (2.0 * theta) - theta;
-    (xo - a.cos() * ro, a.sin() * ro)
+    (xo - a.fcos() * ro, a.fsin() * ro)
 }
 
 /// ortho: moves points along circles orthogonal to the unit circle (by `in` inside the disc,
@@ -382,13 +383,13 @@ fn ortho(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
             let ro = ((t.x - xo) * (t.x - xo) + t.y * t.y).sqrt();
             let theta = 1.0f64.atan2(ro);
             let a = (turn_in * theta + t.y.atan2(xo - t.x) + theta) % (2.0 * theta) - theta;
-            [w * (xo - a.cos() * ro), w * a.sin() * ro, 0.0]
+            [w * (xo - a.fcos() * ro), w * a.fsin() * ro, 0.0]
         } else {
             let xo = -(r + 1.0) / (2.0 * t.x);
             let ro = ((-t.x - xo) * (-t.x - xo) + t.y * t.y).sqrt();
             let theta = 1.0f64.atan2(ro);
             let a = (turn_in * theta + t.y.atan2(xo + t.x) + theta) % (2.0 * theta) - theta;
-            [-(w * (xo - a.cos() * ro)), w * a.sin() * ro, 0.0]
+            [-(w * (xo - a.fcos() * ro)), w * a.fsin() * ro, 0.0]
         }
     } else {
         let inv = 1.0 / r.sqrt();
@@ -404,8 +405,8 @@ fn ortho(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         };
         let ang = ny.atan2(nx);
         let k = 1.0 / (nx * nx + ny * ny).sqrt();
-        let ox = w * k * ang.cos();
-        [if mirrored { -ox } else { ox }, w * k * ang.sin(), 0.0]
+        let ox = w * k * ang.fcos();
+        [if mirrored { -ox } else { ox }, w * k * ang.fsin(), 0.0]
     }
 }
 
@@ -414,7 +415,12 @@ fn prep_poincare(v: &mut Prepared) {
     let d1 = (1.0 + c1r * c1r).sqrt();
     let d2 = (1.0 + c2r * c2r).sqrt();
     let (a1, a2) = (c1a % PI, c2a % PI);
-    v.p.extend_from_slice(&[d1 * a1.cos(), d1 * a1.sin(), d2 * a2.cos(), d2 * a2.sin()]);
+    v.p.extend_from_slice(&[
+        d1 * a1.fcos(),
+        d1 * a1.fsin(),
+        d2 * a2.fcos(),
+        d2 * a2.fsin(),
+    ]);
 }
 
 /// poincare: two successive inversions in circles of radii c1r, c2r orthogonal to the unit
@@ -435,10 +441,10 @@ fn poincare(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 fn prep_poincare2(v: &mut Prepared) {
     let [pp, qq] = v.params();
     let a0 = TAU / pp;
-    let dist2 = 1.0 - (a0.cos() - 1.0) / (a0.cos() + (TAU / qq).cos());
+    let dist2 = 1.0 - (a0.fcos() - 1.0) / (a0.fcos() + (TAU / qq).fcos());
     let dist = if dist2 > 0.0 { 1.0 / dist2.sqrt() } else { 1.0 };
     let (cx, cy) = if 1.0 / pp + 1.0 / qq < 0.5 {
-        (a0.cos() * dist, a0.sin() * dist)
+        (a0.fcos() * dist, a0.fsin() * dist)
     } else {
         (0.0, 0.0)
     };
@@ -460,9 +466,9 @@ fn poincare2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 
 fn prep_poincare3d(v: &mut Prepared) {
     let [r, a, b] = v.params();
-    let cx = -r * (a * FRAC_PI_2).cos() * (b * FRAC_PI_2).cos();
-    let cy = r * (a * FRAC_PI_2).sin() * (b * FRAC_PI_2).cos();
-    let cz = -r * (b * FRAC_PI_2).sin();
+    let cx = -r * (a * FRAC_PI_2).fcos() * (b * FRAC_PI_2).fcos();
+    let cy = r * (a * FRAC_PI_2).fsin() * (b * FRAC_PI_2).fcos();
+    let cz = -r * (b * FRAC_PI_2).fsin();
     let (sx, sy, sz) = (cx * cx, cy * cy, cz * cz);
     v.p.extend_from_slice(&[
         cx,

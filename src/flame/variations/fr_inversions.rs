@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI, TAU};
 
 use super::util::{cpp_max, signed_pow_or_id, sqr, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("asteria", asteria)
@@ -181,7 +182,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// Derived values: sin πα, cos πα.
 fn prep_asteria(v: &mut Prepared) {
     let [alpha] = v.params();
-    let (s, c) = (PI * alpha).sin_cos();
+    let (s, c) = (PI * alpha).fsin_cos();
     v.p.push(s);
     v.p.push(c);
 }
@@ -383,14 +384,14 @@ fn glynnsim1_prepare(v: &mut Prepared) {
     let [radius, _, phi1, _, _, pow] = v.params();
     let ang = PI / 180.0 * phi1;
     let pow = pow.abs();
-    v.p.extend_from_slice(&[radius * ang.cos(), radius * ang.sin(), pow]);
+    v.p.extend_from_slice(&[radius * ang.fcos(), radius * ang.fsin(), pow]);
 }
 
 /// A random point of the ring of radius `radius1` (inner fraction `thickness`) around (cx, cy).
 #[inline(always)]
 fn glynn1_ring(radius1: f64, thickness: f64, cx: f64, cy: f64, rng: &mut FastRng) -> (f64, f64) {
     let r = radius1 * (thickness + (1.0 - thickness) * rng.f01());
-    let (s, c) = (TAU * rng.f01()).sin_cos();
+    let (s, c) = (TAU * rng.f01()).fsin_cos();
     (r * c + cx, r * s + cy)
 }
 
@@ -429,7 +430,7 @@ fn glynnsim2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pow, phi10, gam, delta] = v.derived();
     if t.sqrt < radius {
         let r = radius + thickness - gam * rng.f01();
-        let (s, c) = (phi10 + delta * rng.f01()).sin_cos();
+        let (s, c) = (phi10 + delta * rng.f01()).fsin_cos();
         [v.w * (r * c), v.w * (r * s), 0.0]
     } else {
         glynn_scaled(v.w, t, radius, contrast, pow, rng)
@@ -464,7 +465,7 @@ fn glynnsim3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     if t.sqrt < radius1 {
         // Fractorium draws a radius that the circle choice then overrides.
         let _ = rng.f01();
-        let (s, c) = (TAU * rng.f01()).sin_cos();
+        let (s, c) = (TAU * rng.f01()).fsin_cos();
         let r = if rng.f01() < gam { radius1 } else { radius2 };
         [v.w * (r * c), v.w * (r * s), 0.0]
     } else {
@@ -507,7 +508,7 @@ fn inkdrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let dy = t.y - cy;
     let d2 = dx * dx + dy * dy;
     let push = (d2 + r * r).sqrt() - d2.sqrt();
-    let (s, c) = dy.atan2(dx).sin_cos();
+    let (s, c) = dy.atan2(dx).fsin_cos();
     [v.w * (t.x + c * push), v.w * (t.y + s * push), 0.0]
 }
 
@@ -525,12 +526,12 @@ fn prep_loonie2(v: &mut Prepared) {
     let alpha = TAU / zeps(power);
     v.p.extend_from_slice(&[
         v.w * v.w,
-        a.sin(),
-        a.cos(),
-        s.sin(),
-        s.cos(),
-        c.sin(),
-        c.cos(),
+        a.fsin(),
+        a.fcos(),
+        s.fsin(),
+        s.fcos(),
+        c.fsin(),
+        c.fcos(),
         alpha,
         (alpha * 0.5).tan() * 2.0,
     ]);
@@ -592,10 +593,10 @@ fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
             (frac, whole, 1.0)
         };
         let local = (dist * tan_half2).atan() / alpha;
-        let stretch = 1.0 / zeps((local * alpha).cos());
+        let stretch = 1.0 / zeps((local * alpha).fcos());
         let ang = (index + dir * local) * alpha - PI;
         let r = w * stretch * rad;
-        [r * ang.cos(), r * ang.sin(), 0.0]
+        [r * ang.fcos(), r * ang.fsin(), 0.0]
     }
 }
 
@@ -670,8 +671,8 @@ fn roundspher(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// cos(r) if it is zero) is carried into the output z instead of being added to.
 fn roundspher3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let other = if v.form == Form::Pre { t.z } else { acc.z };
-    let tz = if t.z == 0.0 { t.sqrt.cos() } else { t.z };
-    let pz = if other == 0.0 { t.sqrt.cos() } else { other };
+    let tz = if t.z == 0.0 { t.sqrt.fcos() } else { t.z };
+    let pz = if other == 0.0 { t.sqrt.fcos() } else { other };
     if v.form != Form::Pre {
         acc.z = 0.0;
     }
@@ -723,7 +724,7 @@ fn spherivoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [radius] = v.params();
     let zr = (t.z * t.z + t.sqrt * t.sqrt).sqrt();
     let phi = clamp_nan_low(t.z / zr, -1.0, 1.0).acos();
-    let (ps, pc) = phi.sin_cos();
+    let (ps, pc) = phi.fsin_cos();
     let grow = zr + radius;
     [
         v.w * t.ux * ps * grow,
@@ -767,7 +768,7 @@ fn trade(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         if r <= r1 {
             r *= r2 / r1;
             let a = t.y.atan2(dx);
-            return [w * (r * a.cos() - c2), w * r * a.sin(), 0.0];
+            return [w * (r * a.fcos() - c2), w * r * a.fsin(), 0.0];
         }
     } else {
         let dx = -c2 - t.x;
@@ -775,7 +776,7 @@ fn trade(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         if r <= r2 {
             r *= r1 / r2;
             let a = t.y.atan2(dx);
-            return [w * (r * a.cos() + c1), w * r * a.sin(), 0.0];
+            return [w * (r * a.fcos() + c1), w * r * a.fsin(), 0.0];
         }
     }
     [w * t.x, w * t.y, 0.0]

@@ -10,6 +10,7 @@ use std::f64::consts::{PI, TAU};
 
 use super::util::{crand, floor_f, rand_size, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("julia3D", julia3d)
@@ -146,7 +147,7 @@ fn julia3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let r = v.w * (t.sumsq + z * z).powf(expo);
     let k = r * t.sqrt;
     let branch = rng.below(abs_n as u64) as f64;
-    let (sa, ca) = ((t.atan_yx + TAU * branch) / n).sin_cos();
+    let (sa, ca) = ((t.atan_yx + TAU * branch) / n).fsin_cos();
     [k * ca, k * sa, r * z]
 }
 
@@ -161,7 +162,7 @@ fn julia3dq_prepare(v: &mut Prepared) {
 fn julia3dq(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [inv, abs_inv, half_inv, step] = v.derived();
     let ang = t.atan_yx * inv + crand(rng) * step;
-    let (sa, ca) = ang.sin_cos();
+    let (sa, ca) = ang.fsin_cos();
     let z = t.z * abs_inv;
     let r = v.w * (t.sumsq + z * z).powf(half_inv);
     let k = r * t.sqrt;
@@ -183,8 +184,8 @@ fn julia3dz(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let branch = TAU * rand_size(rng, abs_n as u32 as f64);
     let ang = (t.atan_yx + branch) / n;
     [
-        radius * ang.cos(),
-        radius * ang.sin(),
+        radius * ang.fcos(),
+        radius * ang.fsin(),
         radius * t.z / zeps(t.sqrt * abs_n),
     ]
 }
@@ -205,8 +206,8 @@ fn juliac(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let ang = arg * re_inv + log_mod * im_scaled;
     let magnitude = (log_mod * re_inv - arg * im_scaled).exp();
     [
-        v.w * magnitude * ang.cos(),
-        v.w * magnitude * ang.sin(),
+        v.w * magnitude * ang.fcos(),
+        v.w * magnitude * ang.fsin(),
         0.0,
     ]
 }
@@ -237,7 +238,7 @@ fn julian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
         let branch = trunc_i32(abs_n * rng.f01()) as f64;
         (y.atan2(x) + branch * TAU) / power
     };
-    [radius * ang.cos(), radius * ang.sin(), 0.0]
+    [radius * ang.fcos(), radius * ang.fsin(), 0.0]
 }
 
 fn prep_julian3dx(v: &mut Prepared) {
@@ -258,7 +259,7 @@ fn julian3dx(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let branch = trunc_i32(rng.f01() * abs_n) as f64;
     let ang = (y.atan2(x) + TAU * branch) / power;
     let planar = radius * t.sqrt;
-    [planar * ang.cos(), planar * ang.sin(), radius * z]
+    [planar * ang.fcos(), planar * ang.fsin(), radius * z]
 }
 
 fn prep_julianab(v: &mut Prepared) {
@@ -280,7 +281,7 @@ fn julianab(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     if v.form == Form::Regular {
         acc.z = 0.0;
     }
-    [radius * ang.cos() + b, radius * ang.sin() + b, t.z]
+    [radius * ang.fcos() + b, radius * ang.fsin() + b, t.z]
 }
 
 fn prep_juliaq(v: &mut Prepared) {
@@ -295,7 +296,7 @@ fn juliaq(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [half_ratio, ratio, step] = v.derived();
     let ang = t.atan_yx * ratio + crand(rng) * step;
     let radius = v.w * t.sumsq.powf(half_ratio);
-    [radius * ang.cos(), radius * ang.sin(), 0.0]
+    [radius * ang.fcos(), radius * ang.fsin(), 0.0]
 }
 
 fn prep_npolar(v: &mut Prepared) {
@@ -323,7 +324,7 @@ fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
         if v.compat {
             r *= parity;
         }
-        (ang.cos() * r, ang.sin() * r)
+        (ang.fcos() * r, ang.fsin() * r)
     } else {
         let lx = vvar * t.atan_xy;
         let ly = vvar2 * t.sumsq.ln();
@@ -332,7 +333,7 @@ fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
         if !v.compat {
             r *= parity;
         }
-        let (s, c) = (ang.sin() * r, ang.cos() * r);
+        let (s, c) = (ang.fsin() * r, ang.fcos() * r);
         let x = if v.compat {
             vvar2 * (c * c + s * s).ln()
         } else {
@@ -360,11 +361,11 @@ fn phoenix_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> 
     let r = v.w * t.sumsq.powf(exponent);
     if v.compat {
         let ang = py.atan2(px) * inv_n + crand(rng) * step;
-        [r * ang.cos(), r * ang.sin(), v.w * t.z]
+        [r * ang.fcos(), r * ang.fsin(), v.w * t.z]
     } else {
         let root = trunc_i32(rng.f01() * power) as f64;
         let ang = py.atan2(px) * inv_n + root * step;
-        [r * ang.cos(), r * ang.sin(), v.default_z(t)]
+        [r * ang.fcos(), r * ang.fsin(), v.default_z(t)]
     }
 }
 
@@ -381,7 +382,7 @@ fn pow_block(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let r = t.sumsq.powf(power * 0.5) * v.w;
     let dz = zeps(den);
     let ang = (t.atan_yx / dz + (root * TAU * (rng.f01() * den).floor() / dz)) * num;
-    [r * ang.cos(), r * ang.sin(), 0.0]
+    [r * ang.fcos(), r * ang.fsin(), 0.0]
 }
 
 /// An inversion r → 1/r^dist copied into `power` random rotated sectors (x and y swapped with
@@ -392,7 +393,7 @@ fn spherical_n(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let r = zeps(t.sqrt.powf(dist));
     let n = floor_f(power * rng.f01());
     let alpha = t.atan_yx + n * TAU / step;
-    let (s, c) = alpha.sin_cos();
+    let (s, c) = alpha.fsin_cos();
     if v.compat {
         [v.w * c / r, v.w * s / r, 0.0]
     } else {
@@ -424,11 +425,11 @@ fn wavesn(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power, roots, cn] = v.derived();
     let angle = (t.atan_yx + TAU * rand_size(rng, roots)) / power;
     let r = v.w * t.sumsq.powf(cn);
-    let (sa, ca) = angle.sin_cos();
+    let (sa, ca) = angle.fsin_cos();
     let ux = r * ca;
     let uy = r * sa;
-    let sy = (freqx * uy).sin();
-    let sx = (freqy * ux).sin();
+    let sy = (freqx * uy).fsin();
+    let sx = (freqy * ux).fsin();
     let dx = ux + 0.5 * (scalex * sy + ux.abs() * incx * sy);
     let dy = uy + 0.5 * (scaley * sx + uy.abs() * incy * sx);
     [v.w * dx, v.w * dy, 0.0]

@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{signed_pow, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("extrude", extrude)
@@ -168,13 +169,13 @@ fn point_symmetry(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) ->
     let ang = (rng.f01() * order).floor() * step;
     let dx = (t.x - cx) * v.w;
     let dy = (t.y - cy) * v.w;
-    let (s, c) = (ang.sin(), ang.cos());
+    let (s, c) = (ang.fsin(), ang.fcos());
     [cx + dx * c + dy * s, cy + dy * c - dx * s, 0.0]
 }
 
 /// sin and cos of the angle `deg` given in degrees.
 fn degrees_sin_cos(deg: f64) -> (f64, f64) {
-    (deg / 180.0 * PI).sin_cos()
+    (deg / 180.0 * PI).fsin_cos()
 }
 
 /// A rotation of the plane by `angle` degrees.
@@ -197,7 +198,7 @@ fn shift_prep(v: &mut Prepared) {
 
 /// sin and cos of a quarter turn times the weight (the rotate_x/y/z angle).
 fn quarter_turns_prep(v: &mut Prepared) {
-    let (s, c) = (v.w * FRAC_PI_2).sin_cos();
+    let (s, c) = (v.w * FRAC_PI_2).fsin_cos();
     v.p.extend([s, c]);
 }
 

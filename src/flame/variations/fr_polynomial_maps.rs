@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_PI_4, PI, TAU};
 
 use super::util::{sign, sqr, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("fourth", fourth)
@@ -109,7 +110,7 @@ fn fourth(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         if r < w {
             let a = dy.atan2(dx) + spin + twist * (w - r);
             let rr = r * w;
-            [rr * a.cos() + cx, rr * a.sin() - cy, 0.0]
+            [rr * a.fcos() + cx, rr * a.fsin() - cy, 0.0]
         } else {
             let k = w * (1.0 + space / zeps(r));
             [k * dx + cx, k * dy - cy, 0.0]
@@ -219,7 +220,7 @@ fn unicorngaloshen(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 
         } else {
             (x.atan2(y), y.atan2(x))
         };
-        (1.0 + ax * (u * pi_fx).sin(), 2.0 + ay * (w * pi_fy).sin())
+        (1.0 + ax * (u * pi_fx).fsin(), 2.0 + ay * (w * pi_fy).fsin())
     };
     [fx * (x - y) * (x + my * y) * r, fy * x * y * r, 0.0]
 }
@@ -229,7 +230,7 @@ fn unicorngaloshen(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 
 fn xheart_prep(v: &mut Prepared) {
     let [angle, ratio] = v.params();
     let ang = FRAC_PI_4 + (0.5 * FRAC_PI_4 * angle);
-    let (s, c) = ang.sin_cos();
+    let (s, c) = ang.fsin_cos();
     let rat = 6.0 + 2.0 * ratio;
     v.p.extend_from_slice(&[c, s, rat]);
 }

@@ -10,6 +10,7 @@ use std::f64::consts::E;
 
 use super::util::{quat_mul_conj, sqr, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("coshq", coshq).flags(flag::USES_Z | flag::WRITES_Z),
@@ -62,7 +63,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// Quaternion hyperbolic cosine of (x, y, z) taken as x + y·i + z·j.
 fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = (t.y * t.y + t.z * t.z).sqrt();
-    let (s, c) = m.sin_cos();
+    let (s, c) = m.fsin_cos();
     let (sh, ch) = (t.x.sinh(), t.x.cosh());
     let d = v.w * sh * s / zeps(m);
     [v.w * c * ch, d * t.y, d * t.z]
@@ -71,7 +72,7 @@ fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Quaternion cosine of (x, y, z) taken as x + y·i + z·j.
 fn cosq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = (t.y * t.y + t.z * t.z).sqrt();
-    let (s, c) = t.x.sin_cos();
+    let (s, c) = t.x.fsin_cos();
     let (sh, ch) = (m.sinh(), m.cosh());
     let d = -v.w * s * sh / zeps(m);
     [v.w * c * ch, d * t.y, d * t.z]
@@ -83,7 +84,7 @@ fn cothq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz2 = t.y * t.y + t.z * t.z;
     let m = yz2.sqrt();
     let k = v.w / zeps(sqr(t.x * t.x + yz2));
-    let (s, c) = m.sin_cos();
+    let (s, c) = m.fsin_cos();
     let (sh, ch) = (t.x.sinh(), t.x.cosh());
     let d = ch * s / zeps(m);
     let b = sh * s / zeps(m);
@@ -96,7 +97,7 @@ fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz2 = t.y * t.y + t.z * t.z;
     let m = yz2.sqrt();
     let k = v.w / zeps(t.x * t.x + yz2);
-    let (s, c) = t.x.sin_cos();
+    let (s, c) = t.x.fsin_cos();
     let (sh, ch) = (m.sinh(), m.cosh());
     let d = c * sh / zeps(m);
     let b = -s * sh / zeps(m);
@@ -108,7 +109,7 @@ fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn cschq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
-    let (s, c) = av.sin_cos();
+    let (s, c) = av.fsin_cos();
     let (sh, ch) = (t.x.sinh(), t.x.cosh());
     let d = ni * ch * s / zeps(av);
     [sh * c * ni, -(d * t.y), -(d * t.z)]
@@ -118,7 +119,7 @@ fn cschq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 fn cscq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
-    let (s, c) = t.x.sin_cos();
+    let (s, c) = t.x.fsin_cos();
     let (sh, ch) = (av.sinh(), av.cosh());
     let d = ni * c * sh / zeps(av);
     [s * ch * ni, -(d * t.y), -(d * t.z)]
@@ -128,7 +129,7 @@ fn cscq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 fn estiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let e = t.x.exp();
-    let (s, c) = av.sin_cos();
+    let (s, c) = av.fsin_cos();
     let a = e * s / zeps(av);
     [v.w * e * c, v.w * a * t.y, v.w * a * t.z]
 }
@@ -195,7 +196,7 @@ fn imag_len(t: &VarIn) -> f64 {
 fn sechq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     let (sh, ch) = (t.x.sinh(), t.x.cosh());
     let d = ni * sh * s / zeps(a);
     [ch * c * ni, -(d * t.y), -(d * t.z)]
@@ -205,7 +206,7 @@ fn sechq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
-    let (s, c) = (-t.x).sin_cos();
+    let (s, c) = (-t.x).fsin_cos();
     let (sh, ch) = (a.sinh(), a.cosh());
     let d = ni * s * sh / zeps(a);
     [c * ch * ni, -(d * t.y), -(d * t.z)]
@@ -214,7 +215,7 @@ fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Quaternion hyperbolic sine of (x, y, z, 0).
 fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     let (sh, ch) = (t.x.sinh(), t.x.cosh());
     let d = v.w * ch * s / zeps(a);
     [v.w * sh * c, d * t.y, d * t.z]
@@ -223,7 +224,7 @@ fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Quaternion sine of (x, y, z, 0).
 fn sinq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
-    let (s, c) = t.x.sin_cos();
+    let (s, c) = t.x.fsin_cos();
     let (sh, ch) = (a.sinh(), a.cosh());
     let d = v.w * c * sh / zeps(a);
     [v.w * s * ch, d * t.y, d * t.z]
@@ -235,7 +236,7 @@ fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz_sq = sqr(y) + sqr(z);
     let yz_len = yz_sq.sqrt();
     let k = v.w / zeps(sqr(x) + yz_sq);
-    let (s, c) = yz_len.sin_cos();
+    let (s, c) = yz_len.fsin_cos();
     let sh = x.sinh();
     let ch = x.cosh();
     let d = ch * s / zeps(yz_len);
@@ -249,7 +250,7 @@ fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz_sq = sqr(y) + sqr(z);
     let yz_len = yz_sq.sqrt();
     let k = v.w / zeps(sqr(x) + yz_sq);
-    let (s, c) = x.sin_cos();
+    let (s, c) = x.fsin_cos();
     let sh = yz_len.sinh();
     let ch = yz_len.cosh();
     let d = c * sh / zeps(yz_len);

@@ -12,6 +12,7 @@ use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, FRAC_PI_4, PI, SQRT_2, TAU};
 use super::util::{floor_f, sqr, square_arc, square_point, trunc_i32, zeps};
 use super::*;
 use crate::flame::fastmath;
+use crate::flame::fastmath::FastTrig;
 
 /// The thirteen shape parameters of the w/x/y/z family, `PREFIX_hypergon` … `PREFIX_super_n3`,
 /// after any leading ones given.
@@ -187,7 +188,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// Cardioid-like radial warp: r ← √(r² + sin(a·θ) + 1), angle kept.
 fn cardioid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a] = v.params();
-    let r = v.w * (t.sumsq + (t.atan_yx * a).sin() + 1.0).sqrt();
+    let r = v.w * (t.sumsq + (t.atan_yx * a).fsin() + 1.0).sqrt();
     [r * t.ux, r * t.uy, 0.0]
 }
 
@@ -197,7 +198,7 @@ fn circlize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [hole] = v.params();
     let (side, per) = square_arc(t.x, t.y);
     let r = v.w / FRAC_PI_4 * side + hole;
-    let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).sin_cos();
+    let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -206,7 +207,7 @@ fn circlize2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [hole] = v.params();
     let (side, per) = square_arc(t.x, t.y);
     let r = v.w * (side + hole);
-    let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).sin_cos();
+    let (s, c) = (FRAC_PI_4 * per / side - FRAC_PI_4).fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -245,7 +246,7 @@ fn collideoscope(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         let shift = if sector & 1 == 1 { -a_n } else { a_n };
         -(sector as f64 * pi_n + (shift - a) % pi_n)
     };
-    [r * a.cos(), r * a.sin(), 0.0]
+    [r * a.fcos(), r * a.fsin(), 0.0]
 }
 
 /// Maps the point to (weight / r, angle): unweighted polar angle on y.
@@ -269,9 +270,9 @@ fn epispiral(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     } else {
         thick_w * rng.f01()
     };
-    let r = num / (n * theta).cos() - holes_w;
+    let r = num / (n * theta).fcos() - holes_w;
     if r.abs() != 0.0 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.fsin_cos();
         [r * c, r * s, 0.0]
     } else {
         [0.0, 0.0, 0.0]
@@ -283,7 +284,7 @@ fn epispiral(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 fn fdisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ang = TAU / (t.sqrt + 1.0);
     let rad = (t.atan_yx * FRAC_1_PI + 1.0) * 0.5;
-    let (s, c) = ang.sin_cos();
+    let (s, c) = ang.fsin_cos();
     [v.w * rad * c, v.w * rad * s, 0.0]
 }
 
@@ -322,7 +323,7 @@ fn hole(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// An inverted disc: the angle is π/(r + 1), the radius the polar angle over π.
 fn idisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (s, c) = (PI / (t.sqrt + 1.0)).sin_cos();
+    let (s, c) = (PI / (t.sqrt + 1.0)).fsin_cos();
     let r = t.atan_yx * (v.w * FRAC_1_PI);
     [r * c, r * s, 0.0]
 }
@@ -330,8 +331,8 @@ fn idisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn prep_kaleidoscope(v: &mut Prepared) {
     // 45° in radians as Fractorium forms it; its sine and cosine differ in the last bit.
     let quarter = 45.0 * (PI / 180.0);
-    v.p.push(quarter.sin());
-    v.p.push(quarter.cos());
+    v.p.push(quarter.fsin());
+    v.p.push(quarter.fcos());
 }
 
 /// Kaleidoscope: rotates the plane by 45° (scaling by `rotate`) and splits it along y = 0, the
@@ -354,7 +355,7 @@ fn prep_lazyjess(v: &mut Prepared) {
     let slice = TAU / zeps(n);
     v.p.extend_from_slice(&[
         vertex,
-        vertex.sin(),
+        vertex.fsin(),
         slice,
         slice / 2.0,
         (corner - 1.0) * slice,
@@ -377,30 +378,30 @@ fn lazyjess(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     // Distance from the centre to the polygon's edge in direction `ang` (ang includes +2π).
     let edge_at = |ang: f64| {
         let off = (ang + half_slice) % slice;
-        w * SQRT_2 * sin_vertex / zeps((PI - off - vertex).sin())
+        w * SQRT_2 * sin_vertex / zeps((PI - off - vertex).fsin())
     };
     if n == 2.0 {
         if x.abs() < w {
             let ang = y.atan2(x) + spin;
-            let (rx, ry) = (w * m * ang.cos(), w * m * ang.sin());
+            let (rx, ry) = (w * m * ang.fcos(), w * m * ang.fsin());
             if rx.abs() < w {
                 return [rx, ry, 0.0];
             }
             // A spun corner that left the band is mirrored back into place.
             let back = ry.atan2(rx) - spin + corner_turn;
-            return [w * m * back.cos(), -(w * m * back.sin()), 0.0];
+            return [w * m * back.fcos(), -(w * m * back.fsin()), 0.0];
         }
         return push_out();
     }
     if m < edge_at(y.atan2(x) + TAU) {
         let ang = y.atan2(x) + spin + TAU;
-        let (rx, ry) = (w * m * ang.cos(), w * m * ang.sin());
+        let (rx, ry) = (w * m * ang.fcos(), w * m * ang.fsin());
         let m2 = (rx * rx + ry * ry).sqrt();
         if m2 < edge_at(ang) {
             return [rx, ry, 0.0];
         }
         let back = ry.atan2(rx) - spin + corner_turn + TAU;
-        return [w * m2 * back.cos(), -(w * m2 * back.sin()), 0.0];
+        return [w * m2 * back.fcos(), -(w * m2 * back.fsin()), 0.0];
     }
     push_out()
 }
@@ -494,10 +495,10 @@ fn scry2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let rad = (nx * nx + ny * ny).sqrt();
     let (sector, sign, off) = polygon_sector(dang);
     let xang = (off * half_tan2).atan() / alpha;
-    let coeff = 1.0 / (xang * alpha).cos();
+    let coeff = 1.0 / (xang * alpha).fcos();
     let ang = (sector + sign * xang) * alpha - PI;
     let k = v.w * coeff * rad;
-    [k * ang.cos(), k * ang.sin(), 0.0]
+    [k * ang.fcos(), k * ang.fsin(), 0.0]
 }
 
 fn scry2_prep(v: &mut Prepared) {
@@ -515,7 +516,7 @@ fn shredrad(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let i = trunc_i32(a) as f64;
     let ang = ((a - i) * width + i) * alpha - PI - alpha / 2.0 * width;
     let k = v.w * t.sqrt;
-    [k * ang.cos(), k * ang.sin(), v.w * t.z]
+    [k * ang.fcos(), k * ang.fsin(), v.w * t.z]
 }
 
 fn shredrad_prep(v: &mut Prepared) {
@@ -540,7 +541,7 @@ fn smartshape(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let base = if distortion == 0.0 {
         1.0
     } else {
-        let c0 = 1.0 / (xang * alpha).cos();
+        let c0 = 1.0 / (xang * alpha).fcos();
         if roundstr != 0.0 {
             let ww = if roundwidth != 1.0 {
                 ((xang * 2.0).ln() * roundwidth).exp() * round_coeff
@@ -559,7 +560,7 @@ fn smartshape(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     };
     let ang = (sector + sign * xang) * alpha - PI;
     let k = v.w * coeff * t.sqrt;
-    [ang.cos() * k, ang.sin() * k, 0.0]
+    [ang.fcos() * k, ang.fsin() * k, 0.0]
 }
 
 fn smartshape_prep(v: &mut Prepared) {
@@ -568,7 +569,7 @@ fn smartshape_prep(v: &mut Prepared) {
     v.p[0] = power;
     let alpha = TAU / power;
     let alpha_coeff = (alpha * 0.5).tan() * 2.0;
-    let round_coeff = roundstr / (alpha * 0.5).sin() / power * 2.0;
+    let round_coeff = roundstr / (alpha * 0.5).fsin() / power * 2.0;
     let comp = if compensation <= 0.0 { 0.0 } else { 1.0 };
     v.p.extend([alpha, alpha_coeff, round_coeff, comp]);
 }
@@ -620,7 +621,7 @@ fn swirl3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [shift] = v.params();
     let r = t.sqrt;
     let ang = t.atan_yx + r.ln() * shift;
-    [v.w * r * ang.cos(), v.w * r * ang.sin(), 0.0]
+    [v.w * r * ang.fcos(), v.w * r * ang.fsin(), 0.0]
 }
 
 /// Derived values of swirl3r: the ordered radius band and the twists at its two edges.
@@ -646,7 +647,7 @@ fn swirl3r(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     } else {
         t.atan_yx + r.ln() * shift
     };
-    [v.w * r * ang.cos(), v.w * r * ang.sin(), 0.0]
+    [v.w * r * ang.fcos(), v.w * r * ang.fsin(), 0.0]
 }
 
 /// Derived value of the target family: half the ring width.
@@ -674,13 +675,13 @@ fn target_angle(a: f64, t: f64, v: &Prepared) -> f64 {
 /// (Fractorium's version ignores the weight).
 fn target(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = target_angle(t.atan_yx, t.sqrt.ln(), v);
-    [t.sqrt * a.cos(), t.sqrt * a.sin(), 0.0]
+    [t.sqrt * a.fcos(), t.sqrt * a.fsin(), 0.0]
 }
 
 /// target0: target, weighted.
 fn target0(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = target_angle(t.atan_yx, t.sqrt.ln(), v);
-    [t.sqrt * a.cos() * v.w, t.sqrt * a.sin() * v.w, 0.0]
+    [t.sqrt * a.fcos() * v.w, t.sqrt * a.fsin() * v.w, 0.0]
 }
 
 /// target2: target with spiral rings — the ring coordinate also grows with the angle, and
@@ -690,7 +691,7 @@ fn target2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let ring = tightness * t.sqrt.ln() + FRAC_1_PI * (a + PI);
     let a = target_angle(a, ring, v);
-    [t.sqrt * a.cos() * v.w, t.sqrt * a.sin() * v.w, 0.0]
+    [t.sqrt * a.fcos() * v.w, t.sqrt * a.fsin() * v.w, 0.0]
 }
 
 /// Derived value of unpolar: weight/(2π).
@@ -703,7 +704,7 @@ fn unpolar_prep(v: &mut Prepared) {
 fn unpolar(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.derived();
     let r = t.y.exp();
-    let (s, c) = t.x.sin_cos();
+    let (s, c) = t.x.fsin_cos();
     [k * r * s, k * r * c, 0.0]
 }
 
@@ -794,7 +795,7 @@ fn shape_total(shape: &ShapeParams, derived: [f64; 5], a: f64) -> f64 {
         sum += lituus * (a / PI + 1.0).abs().powf(lituus_exp);
     }
     if super_ != 0.0 {
-        let (s, c) = (a * super_m4).sin_cos();
+        let (s, c) = (a * super_m4).fsin_cos();
         sum += super_ * (c.abs().powf(super_n2) + s.abs().powf(super_n3)).powf(super_exp);
     }
     sum
@@ -818,7 +819,7 @@ fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     if r <= reach {
         let reach2 = shape_total(&shape, d, turned);
         let r = v.w * reach2 * r / reach;
-        let (s, c) = turned.sin_cos();
+        let (s, c) = turned.fsin_cos();
         [r * c, r * s, 0.0]
     } else {
         [v.w * t.x, v.w * t.y, 0.0]
@@ -830,7 +831,7 @@ fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * (t.sumsq + sqr(reach)).sqrt();
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -839,7 +840,7 @@ fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * sqr(reach) / t.sqrt;
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -848,7 +849,7 @@ fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * (t.sqrt + reach);
-    let (s, c) = a.sin_cos();
+    let (s, c) = a.fsin_cos();
     [r * c, r * s, 0.0]
 }
 
@@ -860,7 +861,7 @@ fn wdisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     if r > 0.0 {
         a = PI - a;
     }
-    [v.w * r * a.cos(), v.w * r * a.sin(), 0.0]
+    [v.w * r * a.fcos(), v.w * r * a.fsin(), 0.0]
 }
 
 const SHAPE_X: &[Param] = shape_params!("x");

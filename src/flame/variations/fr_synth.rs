@@ -9,6 +9,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{sqr, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 /// synth's parameters: five global ones, then six per wave layer (`synth_L`, `_type`, `_skew`,
 /// `_frq`, `_phs`, `_layer`) for the layers named.
@@ -63,8 +64,8 @@ fn synth_value(v: &Prepared, theta: f64) -> f64 {
             };
         }
         let wave = match kind {
-            0 => (u * TAU).sin(),
-            1 => (u * TAU).cos(),
+            0 => (u * TAU).fsin(),
+            1 => (u * TAU).fcos(),
             2 => {
                 if u > 0.5 {
                     1.0
@@ -85,12 +86,12 @@ fn synth_value(v: &Prepared, theta: f64) -> f64 {
             7 => {
                 // Polygon with `frq` sides.
                 let ang = (u - 0.5) * (TAU / frq);
-                1.0 / zeps(ang.cos()) - 1.0
+                1.0 / zeps(ang.fcos()) - 1.0
             }
             _ => {
                 // Inverted polygon.
                 let ang = (u - 0.5) * (TAU / frq);
-                let c = ang.cos();
+                let c = ang.fcos();
                 c / zeps(1.0 - c)
             }
         };
@@ -168,7 +169,7 @@ fn synth_lerp(x: f64, m: f64, smooth: i32) -> f64 {
 /// its deviation from 1 added (otherwise).
 fn synth_sin_cos(v: &Prepared, theta: f64, smooth: i32) -> (f64, f64) {
     let [_, _, _, mix] = v.params();
-    let (s, c) = theta.sin_cos();
+    let (s, c) = theta.fsin_cos();
     if smooth == 0 {
         (
             s * synth_value(v, theta),
@@ -191,7 +192,7 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let w = v.w;
     let (x, y) = (t.x, t.y);
     let polar = |radius: f64, theta: f64| -> V3 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = theta.fsin_cos();
         [w * radius * s, w * radius * c, 0.0]
     };
     match mode as i32 {
@@ -213,8 +214,8 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             // legacy blur
             let radius = (rng.f01() + rng.f01() + 0.002 * rng.f01()) / 2.002;
             let theta = TAU * rng.f01() - PI;
-            let vx = radius * theta.sin();
-            let vy = radius * theta.cos();
+            let vx = radius * theta.fsin();
+            let vy = radius * theta.fcos();
             let radius = zeps(radius * radius).powf(power / 2.0);
             let radius = w * synth_lerp(radius, synth_value(v, theta), smooth);
             [vx * radius, vy * radius, 0.0]
@@ -258,8 +259,8 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             // sinusoidal
             let k = 1.0 - mix;
             [
-                w * (synth_value(v, x) - 1.0 + k * x.sin()),
-                w * (synth_value(v, y) - 1.0 + k * y.sin()),
+                w * (synth_value(v, x) - 1.0 + k * x.fsin()),
+                w * (synth_value(v, y) - 1.0 + k * y.fsin()),
                 0.0,
             ]
         }
@@ -331,7 +332,7 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         23 => {
             // tangential shift
             let radius = zeps(t.sumsq).powf(power / 2.0);
-            let (s, c) = t.atan_xy.sin_cos();
+            let (s, c) = t.atan_xy.fsin_cos();
             let mu = synth_value(v, radius) - 1.0;
             [w * (x + mu * c), w * (y - mu * s), 0.0]
         }

@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_2_PI, PI, TAU};
 
 use super::util::zeps;
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("bisplit", bisplit),
@@ -41,12 +42,12 @@ pub(super) static DEFS: &[VarDef] = &[
 /// (w/10)·(cos y / tan x, −y / sin x): a field of split, mirrored bands.
 fn bisplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w * 0.1;
-    [k / t.x.tan() * t.y.cos(), k / t.x.sin() * -t.y, 0.0]
+    [k / t.x.tan() * t.y.fcos(), k / t.x.fsin() * -t.y, 0.0]
 }
 
 /// Crescents: (sin x, cos x) scaled by sin²x·(cosh y + 1).
 fn crescents(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (s, c) = t.x.sin_cos();
+    let (s, c) = t.x.fsin_cos();
     let k = (t.y.cosh() + 1.0) * (s * s);
     [v.w * s * k, v.w * c * k, 0.0]
 }
@@ -60,14 +61,14 @@ fn cylinder2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 /// where cos y vanishes.
 fn funnel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [effect] = v.params();
-    let k = 1.0 / zeps(t.y.cos()) + effect * PI;
+    let k = 1.0 / zeps(t.y.fcos()) + effect * PI;
     [v.w * (t.x.tanh() * k), v.w * (t.y.tanh() * k), 0.0]
 }
 
 /// mask: sin³x·(cosh y + 1) and sin²x·cos x·(cosh y + 1), divided by r².
 fn mask(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let d = v.w / zeps(t.sumsq);
-    let (sx, cx) = (t.x.sin(), t.x.cos());
+    let (sx, cx) = (t.x.fsin(), t.x.fcos());
     let sx2 = sx * sx;
     let ch = t.y.cosh() + 1.0;
     [d * sx * ch * sx2, d * cx * ch * sx2, 0.0]
@@ -75,8 +76,8 @@ fn mask(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// petal: cos x·(cos x·cos y)³ and cos x·(sin x·cos y)³.
 fn petal(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let (sx, cx) = (t.x.sin(), t.x.cos());
-    let cy = t.y.cos();
+    let (sx, cx) = (t.x.fsin(), t.x.fcos());
+    let cy = t.y.fcos();
     let a = cx * cy;
     let b = sx * cy;
     [v.w * cx * (a * a * a), v.w * cx * (b * b * b), 0.0]
@@ -104,7 +105,7 @@ fn rays1(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 /// weight. Replaces the x and y that earlier variations summed.
 fn rays2(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let r2 = t.sumsq;
-    let u = 1.0 / (r2 * (1.0 / zeps(r2)).tan()).cos();
+    let u = 1.0 / (r2 * (1.0 / zeps(r2)).tan()).fcos();
     if v.form == Form::Regular {
         acc.x = 0.0;
         acc.y = 0.0;
@@ -118,14 +119,14 @@ fn rays2(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 fn rays3(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let r2 = t.sumsq;
     let r4 = r2 * r2;
-    let u = 1.0 / (r4.sin() * (1.0 / zeps(r4)).sin()).cos().sqrt();
+    let u = 1.0 / (r4.fsin() * (1.0 / zeps(r4)).fsin()).fcos().sqrt();
     if v.form == Form::Regular {
         acc.x = 0.0;
         acc.y = 0.0;
     }
     let k = v.w / 10.0 * u;
     [
-        k * r2.cos() * r2 / zeps(t.x),
+        k * r2.fcos() * r2 / zeps(t.x),
         k * r2.tan() * r2 / zeps(t.y),
         v.w * t.z,
     ]
@@ -137,7 +138,7 @@ fn rippled(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let h = v.w / 2.0;
     [
         h * (d.tanh() * (2.0 * t.x)),
-        h * (d.cos() * (2.0 * t.y)),
+        h * (d.fcos() * (2.0 * t.y)),
         0.0,
     ]
 }
@@ -176,8 +177,8 @@ fn sintrange(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (xx, yy) = (t.x * t.x, t.y * t.y);
     let m = (xx + yy) * k;
     [
-        v.w * t.x.sin() * (xx + k - m),
-        v.w * t.y.sin() * (yy + k - m),
+        v.w * t.x.fsin() * (xx + k - m),
+        v.w * t.y.fsin() * (yy + k - m),
         0.0,
     ]
 }
@@ -187,8 +188,8 @@ fn spiralwing(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let inv = 1.0 / zeps(t.sumsq);
     let a = zeps(t.x * t.x);
     let b = zeps(t.y * t.y);
-    let (sa, ca) = a.sin_cos();
-    let sb = b.sin();
+    let (sa, ca) = a.fsin_cos();
+    let sb = b.fsin();
     [v.w * (inv * ca * sb), v.w * (inv * sa * sb), 0.0]
 }
 
@@ -196,7 +197,7 @@ fn spiralwing(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn squirrel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a, b] = v.params();
     let u = finite_non_negative(zeps(a) * (t.x * t.x) + zeps(b) * (t.y * t.y)).sqrt();
-    let (s, c) = u.sin_cos();
+    let (s, c) = u.fsin_cos();
     [c * t.x.tan() * v.w, s * t.y.tan() * v.w, 0.0]
 }
 
@@ -208,7 +209,7 @@ fn stwin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let y = t.y * v.w * 0.05;
     let (xx, yy) = (x * x, y * y);
     let sum2 = xx + yy;
-    let mut e = (xx - yy) * (TAU * distort * (x + y)).sin();
+    let mut e = (xx - yy) * (TAU * distort * (x + y)).fsin();
     e /= if sum2 != 0.0 { sum2 } else { 1.0 };
     [v.w * t.x + e, v.w * t.y + e, 0.0]
 }
@@ -219,7 +220,7 @@ fn tancos(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w / d;
     [
         k * (d.tanh() * (2.0 * t.x)),
-        k * (d.cos() * (2.0 * t.y)),
+        k * (d.fcos() * (2.0 * t.y)),
         0.0,
     ]
 }

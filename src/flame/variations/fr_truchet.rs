@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_1_PI, FRAC_PI_3, FRAC_PI_6, PI, TAU};
 
 use super::util::{floor_f, round_half_out, sine_hash, sqr, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hex_truchet", hex_truchet)
@@ -125,12 +126,12 @@ fn hex_truchet(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         TRUNCATED_60_DEG
     };
     let a = ang + 2.6179 - turn;
-    let (st, ct) = turn.sin_cos();
+    let (st, ct) = turn.fsin_cos();
     let cx = ox * ct + oy * st;
     let cy = -ox * st + oy * ct;
     [
-        (a.cos() * r + cx + hx) * v.w,
-        (a.sin() * r + cy + hy) * v.w,
+        (a.fcos() * r + cx + hx) * v.w,
+        (a.fsin() * r + cy + hy) * v.w,
         0.0,
     ]
 }
@@ -172,7 +173,7 @@ fn truchet_prep(v: &mut Prepared) {
     let abs_seed = seed.abs();
     let seed2 = zeps(abs_seed * 1.5).sqrt() / zeps(abs_seed * 0.5) * 0.25;
     let inv_rmax = 1.0 / (0.5 * (2f64.powf(inv_ex) - 1.0) * arc);
-    let scale = (rotation.cos() + rotation.sin()) / v.w;
+    let scale = (rotation.fcos() + rotation.fsin()) / v.w;
     v.p.extend_from_slice(&[exponent, inv_ex, abs_seed, seed2, inv_rmax, scale]);
 }
 
@@ -294,8 +295,8 @@ fn truchet_glyph_prep(v: &mut Prepared) {
         inv_n,
         rmax,
         scale,
-        rads.cos(),
-        rads.sin(),
+        rads.fcos(),
+        rads.fsin(),
         half_amp_max,
         amp,
     ]);
@@ -395,7 +396,7 @@ fn truchet_hex_crop(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
     let coef = 0.477464829275686; // 1.5/π
     let angle = fy.atan2(fx) + FRAC_PI_6 - add;
     let corner = (angle * coef).floor() / coef + FRAC_PI_6 + add;
-    let (y0, x0) = corner.sin_cos();
+    let (y0, x0) = corner.fsin_cos();
     let dist = (sqr(fx - x0) + sqr(fy - y0)).sqrt();
     let hit = if inv != 0.0 {
         dist > d1 || dist < d2
@@ -412,8 +413,8 @@ fn truchet_hex_crop(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
         } else {
             let a = (fy - y0).atan2(fx - x0);
             let d = if rng.f01() < 0.5 { d1 } else { d2 };
-            fx = x0 + a.cos() * d;
-            fy = y0 + a.sin() * d;
+            fx = x0 + a.fcos() * d;
+            fy = y0 + a.fsin() * d;
         }
     }
     [(fx + hx) * v.w, (fy + hy) * v.w, 0.0]
@@ -451,8 +452,8 @@ fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
     let xa = if flipx != 0.0 && !add { -t.x } else { t.x };
     let ang = ya * inv_n3 * PI + sector;
     let a = 1.0 + xa * inv_n3 * PI;
-    let fx = a * ang.cos();
-    let fy = a * ang.sin();
+    let fx = a * ang.fcos();
+    let fy = a * ang.fsin();
     // Which third of the circle: move that arc's centre to the origin.
     let mut th = fy.atan2(fx);
     if th < 0.0 {
@@ -460,8 +461,8 @@ fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
     }
     let third = (1.5 * th * FRAC_1_PI).floor();
     let ang = (PI + third * TAU) / 3.0;
-    let nx = fx - ang.cos() * 2.0;
-    let ny = fy - ang.sin() * 2.0;
+    let nx = fx - ang.fcos() * 2.0;
+    let ny = fy - ang.fsin() * 2.0;
     // Rotate by ±30° into the hexagon.
     let (fx, fy) = if add {
         (SQRT3_2 * nx - 0.5 * ny, 0.5 * nx + SQRT3_2 * ny)
@@ -479,7 +480,7 @@ fn truchet_inv_prep(v: &mut Prepared) {
     let seed2 = (seed * 1.5).sqrt() / zeps(seed * 0.5) * 0.25;
     let inv_n = 1.0 / zeps(n);
     let rmax = zeps(0.5 * (2f64.powf(inv_n) - 1.0) * width);
-    let scale = (rotation.cos() + rotation.sin()) / v.w;
+    let scale = (rotation.fcos() + rotation.fsin()) / v.w;
     v.p.extend_from_slice(&[n, inv_n, rmax, seed2, seed2 * 0.5, scale]);
 }
 

@@ -10,6 +10,7 @@ use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, PI, TAU};
 
 use super::util::{bessel_j1, fract, jacobi_sn, mix, sqr, trunc_i32, zeps};
 use super::*;
+use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("coswrap", coswrap)
@@ -218,8 +219,8 @@ fn prep_coswrap(v: &mut Prepared) {
     v.p.push(py);
     v.p.push(repeat.abs());
     v.p.push(2.0 * v.w);
-    v.p.push(0.5 - (ax + px).cos() * 0.5);
-    v.p.push(0.5 - (ay + py).cos() * 0.5);
+    v.p.push(0.5 - (ax + px).fcos() * 0.5);
+    v.p.push(0.5 - (ay + py).fcos() * 0.5);
 }
 
 /// One coordinate of `coswrap`: u = (c + 1)/2 blended towards a cosine wave of u and of the
@@ -228,7 +229,7 @@ fn prep_coswrap(v: &mut Prepared) {
 fn coswrap_axis(c: f64, phase: f64, repeat: f64, blend: f64, w2: f64) -> f64 {
     let u = 0.5 * c + 0.5;
     let b = (repeat * u).fract();
-    let wave = |q: f64| 0.5 - (q * 4.0 + phase).cos() * 0.5;
+    let wave = |q: f64| 0.5 - (q * 4.0 + phase).fcos() * 0.5;
     let first = u + (wave(u) - u) * blend;
     -1.0 + w2 * (first + (wave(b) - first) * blend)
 }
@@ -272,7 +273,7 @@ fn gd_wrap(a: f64) -> f64 {
 /// A cosine oscillation of `p·a` mapped into [0, 1).
 #[inline(always)]
 fn gd_osc(p: f64, a: f64) -> f64 {
-    gd_wrap((-(p * a * TAU).cos() + 1.0) / 2.0)
+    gd_wrap((-(p * a * TAU).fcos() + 1.0) / 2.0)
 }
 
 /// Gradient-domain offsets: each coordinate is blended with cosine oscillations of itself,
@@ -302,16 +303,16 @@ fn gdoffs(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 #[inline(always)]
 fn wave(kind: f64, a: f64, b: f64, c: f64, p_: f64, x: f64) -> f64 {
     if kind == 1.0 {
-        a * 2.0 * ((b * x + c - FRAC_PI_2).cos().asin().abs() * FRAC_1_PI).powf(p_)
+        a * 2.0 * ((b * x + c - FRAC_PI_2).fcos().asin().abs() * FRAC_1_PI).powf(p_)
     } else if kind == 2.0 {
-        let base = if (b * x + c).sin() < 0.0 {
+        let base = if (b * x + c).fsin() < 0.0 {
             f64::EPSILON
         } else {
             1.0
         };
         a * base.powf(p_)
     } else {
-        a * (b * x + c).sin().abs().powf(p_)
+        a * (b * x + c).fsin().abs().powf(p_)
     }
 }
 
@@ -335,11 +336,11 @@ fn prep_oscilloscope2(v: &mut Prepared) {
 fn oscilloscope2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [sep, _, _, amp, pert, damp] = v.params();
     let [kx, ky] = v.derived();
-    let wobble = pert * (ky * t.y).sin();
+    let wobble = pert * (ky * t.y).fsin();
     let band = if damp == 0.0 {
-        amp * (kx * t.x + wobble).cos() + sep
+        amp * (kx * t.x + wobble).fcos() + sep
     } else {
-        amp * (-t.x.abs() * damp).exp() * (kx * t.x + wobble).cos() + sep
+        amp * (-t.x.abs() * damp).exp() * (kx * t.x + wobble).fcos() + sep
     };
     if t.y.abs() <= band {
         [-(v.w * t.x), -(v.w * t.y), 0.0]
@@ -353,8 +354,8 @@ fn oscilloscope2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) ->
 fn pressure_wave(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [kx, ky, ikx, iky] = v.derived();
     [
-        v.w * (t.x + ikx * (kx * t.x).sin()),
-        v.w * (t.y + iky * (ky * t.y).sin()),
+        v.w * (t.x + ikx * (kx * t.x).fsin()),
+        v.w * (t.y + iky * (ky * t.y).fsin()),
         0.0,
     ]
 }
@@ -369,8 +370,8 @@ fn pressure_wave_prep(v: &mut Prepared) {
 fn pulse(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [freqx, freqy, scalex, scaley] = v.params();
     [
-        v.w * (t.x + scalex * (t.x * freqx).sin()),
-        v.w * (t.y + scaley * (t.y * freqy).sin()),
+        v.w * (t.x + scalex * (t.x * freqx).fsin()),
+        v.w * (t.y + scaley * (t.y * freqy).fsin()),
         0.0,
     ]
 }
@@ -386,7 +387,7 @@ fn ripple(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let dd = (x * x * (y * y)).sqrt();
     let d = if f64::EPSILON < dd { dd } else { f64::EPSILON };
     let (nx, ny) = (x / d, y / d);
-    let wave = (f * d - vxp).cos();
+    let wave = (f * d - vxp).fcos();
     let d1 = wave * pxa + d;
     let d2 = wave * pixa + d;
     let (u1, v1) = (cx + nx * d1, -cy + ny * d1);
@@ -406,8 +407,8 @@ fn ripple_prep(v: &mut Prepared) {
 fn sinusgrid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [ax, ay] = v.params();
     let [fx, fy] = v.derived();
-    let sx = -(t.x * fx).cos();
-    let sy = -(t.y * fy).cos();
+    let sx = -(t.x * fx).fcos();
+    let sy = -(t.y * fy).fcos();
     [v.w * mix(t.x, sx, ax), v.w * mix(t.y, sy, ay), 0.0]
 }
 
@@ -433,10 +434,10 @@ fn vibration_prep(v: &mut Prepared) {
     for (dir, angle, freq, phase) in [(dir, angle, freq, phase), (dir2, angle2, freq2, phase2)] {
         let tot = angle + dir;
         v.p.extend_from_slice(&[
-            dir.cos(),
-            dir.sin(),
-            tot.cos(),
-            tot.sin(),
+            dir.fcos(),
+            dir.fsin(),
+            tot.fcos(),
+            tot.fsin(),
             freq * TAU,
             TAU * phase / zeps(freq),
         ]);
@@ -451,7 +452,7 @@ fn vibration(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (mut x, mut y) = (t.x, t.y);
     for (amp, d) in [(amp, &waves[..6]), (amp2, &waves[6..12])] {
         let along = t.x * d[0] + t.y * d[1];
-        let a = amp * ((along * d[4]) + d[5]).sin();
+        let a = amp * ((along * d[4]) + d[5]).fsin();
         x += a * d[2];
         y += a * d[3];
     }
@@ -463,14 +464,14 @@ fn vibration(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn vibration2_prep(v: &mut Prepared) {
     let [dir, _, freq, _, phase, dir2, _, freq2, _, phase2] = v.params();
     for (dir, freq, phase) in [(dir, freq, phase), (dir2, freq2, phase2)] {
-        v.p.extend_from_slice(&[dir.cos(), dir.sin(), freq * TAU, TAU * phase / zeps(freq)]);
+        v.p.extend_from_slice(&[dir.fcos(), dir.fsin(), freq * TAU, TAU * phase / zeps(freq)]);
     }
 }
 
 /// amp·cos(2π·freq·x): vibration2's modulation of a wave parameter along the wave.
 #[inline(always)]
 fn modulate(amp: f64, freq: f64, x: f64) -> f64 {
-    amp * (x * freq * TAU).cos()
+    amp * (x * freq * TAU).fcos()
 }
 
 /// vibration2: vibration whose direction, displacement angle, frequency and amplitude are
@@ -535,11 +536,11 @@ fn vibration2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         let phase_m = modulate(m[4], m[5], along) / zeps(freq);
         let amp_m = amp + amp * modulate(m[6], m[7], along);
         let tilt_dir = tilt_m + dir_m;
-        let (sd, cd) = dir_m.sin_cos();
+        let (sd, cd) = dir_m.fsin_cos();
         let along = t.x * cd + t.y * sd;
-        let a = amp_m * ((along * d[2]) + phase_m + d[3]).sin();
-        x += a * tilt_dir.cos();
-        y += a * tilt_dir.sin();
+        let a = amp_m * ((along * d[2]) + phase_m + d[3]).fsin();
+        x += a * tilt_dir.fcos();
+        y += a * tilt_dir.fsin();
     }
     [v.w * x, v.w * y, 0.0]
 }
@@ -551,14 +552,14 @@ fn waves22(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let px = trunc_i32(powerx) as f64;
     let py = trunc_i32(powery) as f64;
     let sx = if modex < 0.5 {
-        (t.y * fx).sin()
+        (t.y * fx).fsin()
     } else {
-        0.5 * (1.0 + (t.y * fx).sin())
+        0.5 * (1.0 + (t.y * fx).fsin())
     };
     let sy = if modey < 0.5 {
-        (t.x * fy).sin()
+        (t.x * fy).fsin()
     } else {
-        0.5 * (1.0 + (t.x * fy).sin())
+        0.5 * (1.0 + (t.x * fy).fsin())
     };
     [
         v.w * (t.x + sx.powf(px) * scx),
@@ -592,9 +593,9 @@ fn waves2_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [freq, scale] = v.params();
     let avg = (t.x + t.y) * 0.5;
     [
-        v.w * (t.x + scale * (t.y * freq).sin()),
-        v.w * (t.y + scale * (t.x * freq).sin()),
-        v.w * (t.z + scale * (avg * freq).sin()),
+        v.w * (t.x + scale * (t.y * freq).fsin()),
+        v.w * (t.y + scale * (t.x * freq).fsin()),
+        v.w * (t.z + scale * (avg * freq).fsin()),
     ]
 }
 
@@ -612,8 +613,8 @@ fn waves2_radial(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         k = 0.0;
     }
     [
-        v.w * (t.x + k * (t.y * fx).sin() * sx),
-        v.w * (t.y + k * (t.x * fy).sin() * sy),
+        v.w * (t.x + k * (t.y * fx).fsin() * sx),
+        v.w * (t.y + k * (t.x * fy).fsin() * sy),
         0.0,
     ]
 }
@@ -638,7 +639,7 @@ fn waves2b(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         } else if pw < 0.0 && pw > -1e-4 {
             bessel_j1(u * freq)
         } else {
-            (util::sign_nz(u) * zeps(u.abs()).powf(pw) * freq).sin()
+            (util::sign_nz(u) * zeps(u.abs()).powf(pw) * freq).fsin()
         }
     };
     [
@@ -659,11 +660,11 @@ fn waves3_prep(v: &mut Prepared) {
 fn waves3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, freqx, freqy, sx_freq, sy_freq] = v.params();
     let [half_sx, half_sy] = v.derived();
-    let scx = half_sx * (1.0 + (t.y * sx_freq).sin());
-    let scy = half_sy * (1.0 + (t.x * sy_freq).sin());
+    let scx = half_sx * (1.0 + (t.y * sx_freq).fsin());
+    let scy = half_sy * (1.0 + (t.x * sy_freq).fsin());
     [
-        v.w * (t.x + (t.y * freqx).sin() * scx),
-        v.w * (t.y + (t.x * freqy).sin() * scy),
+        v.w * (t.x + (t.y * freqx).fsin() * scx),
+        v.w * (t.y + (t.x * freqy).fsin() * scy),
         0.0,
     ]
 }
@@ -679,7 +680,7 @@ fn waves4_prep(v: &mut Prepared) {
 /// (binarised when `cont` is 1).
 #[inline(always)]
 fn band_amp(band: f64, y: f64, yfact: f64, cont: f64) -> f64 {
-    let h = (band * 12.9898 + band * 78.233 + 1.0 + y * yfact).sin() * 43758.5453;
+    let h = (band * 12.9898 + band * 78.233 + 1.0 + y * yfact).fsin() * 43758.5453;
     let h = h - trunc_i32(h) as f64;
     if cont == 1.0 {
         if h > 0.5 { 1.0 } else { 0.0 }
@@ -695,8 +696,8 @@ fn waves4(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let band = (t.y * freqx / TAU).floor();
     let ax = band_amp(band, t.y, yfact, cont);
     [
-        v.w * (t.x + (t.y * freqx).sin() * ax * ax * scalex),
-        v.w * (t.y + (t.x * freqy).sin() * scaley),
+        v.w * (t.x + (t.y * freqx).fsin() * ax * ax * scalex),
+        v.w * (t.y + (t.x * freqy).fsin() * scaley),
         0.0,
     ]
 }
@@ -708,8 +709,8 @@ fn waves42(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let band = (t.y * freqx2).floor();
     let ax = band_amp(band, t.y, yfact, cont);
     [
-        v.w * (t.x + (t.y * freqx).sin() * ax * ax * scalex),
-        v.w * (t.y + (t.x * freqy).sin() * scaley),
+        v.w * (t.x + (t.y * freqx).fsin() * ax * ax * scalex),
+        v.w * (t.y + (t.x * freqy).fsin() * scaley),
         0.0,
     ]
 }
