@@ -362,24 +362,35 @@ fn crop_prepare(v: &mut Prepared) {
 fn crop(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, _, zero] = v.params();
     let [x0, y0, x1, y1, w, h] = v.derived();
-    let (mut x, mut y) = (t.x, t.y);
+    let (x, y) = (t.x, t.y);
     let outside = x < x0 || x > x1 || y < y0 || y > y1;
-    if outside && zero != 0.0 {
-        x = 0.0;
-        y = 0.0;
+    let (x, y) = if outside && zero != 0.0 {
+        (0.0, 0.0)
     } else {
-        if x < x0 {
-            x = x0 + rng.f01() * w;
-        } else if x > x1 {
-            x = x1 - rng.f01() * w;
-        }
-        if y < y0 {
-            y = y0 + rng.f01() * h;
-        } else if y > y1 {
-            y = y1 - rng.f01() * h;
-        }
-    }
+        pull_inside(x, y, [x0, y0, x1, y1, w, h], rng)
+    };
     [v.w * x, v.w * y, v.w * t.z]
+}
+
+/// A point outside the rectangle `[x0, y0, x1, y1]` pulled back inside, scattered over a band
+/// of width `w` (x) or `h` (y) along each violated edge; x's draw comes before y's.
+pub(super) fn pull_inside(
+    mut x: f64,
+    mut y: f64,
+    [x0, y0, x1, y1, w, h]: [f64; 6],
+    rng: &mut FastRng,
+) -> (f64, f64) {
+    if x < x0 {
+        x = x0 + rng.f01() * w;
+    } else if x > x1 {
+        x = x1 - rng.f01() * w;
+    }
+    if y < y0 {
+        y = y0 + rng.f01() * h;
+    } else if y > y1 {
+        y = y1 - rng.f01() * h;
+    }
+    (x, y)
 }
 
 fn cropn_prepare(v: &mut Prepared) {

@@ -338,8 +338,14 @@ fn prep_kaleidoscope(v: &mut Prepared) {
 /// Kaleidoscope: rotates the plane by 45° (scaling by `rotate`) and splits it along y = 0, the
 /// two halves being pushed apart by `pull` and shifted by `line_up`; the weight is not used.
 fn kaleidoscope(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
-    let [pull, rotate, line_up, sx, sy] = v.params();
     let [s45, c45] = v.derived();
+    kaleidoscope_turned(v, t, s45, c45)
+}
+
+/// [`kaleidoscope`] with the sine and cosine of its turn given (the programs form the angle
+/// differently).
+pub(super) fn kaleidoscope_turned(v: &Prepared, t: &VarIn, s45: f64, c45: f64) -> V3 {
+    let [pull, rotate, line_up, sx, sy] = v.params();
     let x = ((rotate * t.x) * c45 - t.y * s45 + line_up) + sx;
     let y = if t.y > 0.0 {
         ((rotate * t.y) * c45 + t.x * s45 + pull + line_up) + sy

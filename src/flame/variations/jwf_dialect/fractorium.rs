@@ -9,6 +9,7 @@ use std::f64::consts::{FRAC_2_PI, PI};
 
 use crate::flame::variations::util::mix;
 use crate::flame::variations::*;
+use crate::flame::variations::{fr_crops, fr_radial};
 
 /// atanh(z) = ½·ln((1 + z)/(1 − z)), times the weight·2/π (Fractorium: weight/π).
 pub(super) fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
@@ -28,7 +29,7 @@ pub(super) fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> 
 pub(super) fn crop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, _, zero] = v.params();
     let [x0, y0, x1, y1, w, h] = v.derived();
-    let (mut x, mut y) = (t.x, t.y);
+    let (x, y) = (t.x, t.y);
     acc.x = 0.0;
     acc.y = 0.0;
     if (x < x0 || x > x1 || y < y0 || y > y1) && zero != 0.0 {
@@ -36,16 +37,7 @@ pub(super) fn crop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) ->
         return [0.0; 3];
     }
     acc.hide = false;
-    if x < x0 {
-        x = x0 + rng.f01() * w;
-    } else if x > x1 {
-        x = x1 - rng.f01() * w;
-    }
-    if y < y0 {
-        y = y0 + rng.f01() * h;
-    } else if y > y1 {
-        y = y1 - rng.f01() * h;
-    }
+    let (x, y) = fr_crops::pull_inside(x, y, [x0, y0, x1, y1, w, h], rng);
     [v.w * x, v.w * y, 0.0]
 }
 
@@ -66,15 +58,8 @@ pub(super) fn hole(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 
 
 /// Will Evans's kaleidoscope with JWildfire's angle: 45 radians (not degrees).
 pub(super) fn kaleidoscope(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [pull, rotate, line_up, sx, sy] = v.params();
     let (s45, c45) = 45f64.sin_cos();
-    let x = ((rotate * t.x) * c45 - t.y * s45 + line_up) + sx;
-    let y = if t.y > 0.0 {
-        ((rotate * t.y) * c45 + t.x * s45 + pull + line_up) + sy
-    } else {
-        (rotate * t.y) * c45 + t.x * s45 - pull - line_up
-    };
-    [x, y, 0.0]
+    fr_radial::kaleidoscope_turned(v, t, s45, c45)
 }
 
 /// Zy0rg's tile_log with Java's rounding (⌊x + ½⌋) and the weighted z carried along.
