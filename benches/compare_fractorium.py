@@ -10,7 +10,7 @@ and the ugnis/Fractorium ratio (same samples per pixel, same size and thread cou
 
 Flames come from flame files given on the command line (every <flame> of each, up to --per-file)
 and, with --generated N, from N flames made here of Fractorium-only variations with their
-default parameters (seeded: repeatable).
+default parameters (seeded: repeatable), marked as written by Fractorium.
 
 Needs: Fractorium's renderer built with ../shared/tools/ember/build.sh (EMBER_HOME, default
 /tmp/ember), python3 with numpy and pillow, and a release build of ugnis (cargo build --release).
@@ -112,7 +112,9 @@ def generated(n, seed, folder):
                           f'linear="{rng.uniform(0.2, 0.8):.3f}" {v}="{rng.uniform(0.2, 0.8):.3f}" '
                           f'coefs="{" ".join(f"{x:.5f}" for x in a)}"/>')
         pal = "".join(f"{int(127 + 127 * np.sin(j / 40)):02X}{j:02X}{255 - j:02X}" for j in range(256))
-        text = (f'<flame name="gen{k}" size="400 300" center="0 0" scale="80" quality="50" '
+        # Marked as Fractorium marks what it writes, so that ugnis draws them by Fractorium's
+        # rules (palette index, tone scale) as it does Fractorium's own files.
+        text = (f'<flame version="EMBER-25.25.12.1" name="gen{k}" size="400 300" center="0 0" scale="80" quality="50" '
                 f'gamma="4" brightness="4" vibrancy="1">\n' + "\n".join(xforms) +
                 f'\n<palette count="256" format="RGB">{pal}</palette>\n</flame>\n')
         p = os.path.join(folder, f"gen{k:03d}.flame")
