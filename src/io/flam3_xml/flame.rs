@@ -29,6 +29,7 @@ struct Pending {
     palette_index: Option<PaletteIndex>,
     version_index: PaletteIndex,
     palette_mode_seen: bool,
+    highlight_power_seen: bool,
     smooth_gradient: Option<(String, usize)>,
     /// JWildfire's picture settings.
     jwf: super::jwf_look::Pending,
@@ -69,6 +70,7 @@ pub(super) fn read_flame(
         palette_index: None,
         version_index: PaletteIndex::Flam3,
         palette_mode_seen: false,
+        highlight_power_seen: false,
         smooth_gradient: None,
         jwf: Default::default(),
         preserve_z: None,
@@ -238,7 +240,10 @@ fn tone_attr(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, a: &Attr) -> R<bool>
         }
         "gamma_threshold" => f.gamma_threshold = cx.num(a)?,
         "vibrancy" => f.vibrancy = cx.num(a)?,
-        "highlight_power" => f.highlight_power = cx.num(a)?,
+        "highlight_power" => {
+            f.highlight_power = cx.num(a)?;
+            st.highlight_power_seen = true;
+        }
         "estimator_radius" => st.est.0 = cx.num(a)?,
         "estimator_minimum" => st.est.1 = cx.num(a)?,
         "estimator_curve" => {
@@ -428,6 +433,16 @@ fn settle_attrs(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, start: usize) -> 
         f.rotate = -ang.to_degrees();
     }
     f.palette_index = st.palette_index.unwrap_or(st.version_index);
+    // Fractorium's defaults for what its file leaves out differ from flam3's: a linear
+    // palette and highlight power 1.
+    if f.palette_index == PaletteIndex::Fractorium {
+        if !st.palette_mode_seen {
+            f.palette_mode = PaletteMode::Linear;
+        }
+        if !st.highlight_power_seen {
+            f.highlight_power = 1.0;
+        }
+    }
     super::jwf_look::settle(cx, f, std::mem::take(&mut st.jwf));
     // JWildfire reads `new_linear` as its "preserve Z" (after `preserve_z`); for flam3 it says
     // that linear is 2-D, as ugnis' linear is.

@@ -129,6 +129,17 @@ fn palette_rule_follows_the_writing_program() {
             PaletteIndex::Fractorium,
             PaletteMode::Linear,
         ),
+        // Fractorium's own defaults where its file is silent.
+        (
+            "version=\"EMBER-25.25.12.1\"",
+            PaletteIndex::Fractorium,
+            PaletteMode::Linear,
+        ),
+        (
+            "version=\"EMBER-25.25.12.1\" palette_mode=\"step\"",
+            PaletteIndex::Fractorium,
+            PaletteMode::Step,
+        ),
         (
             "version=\"JWildfire V5.60 (07.05.2020)\" smooth_gradient=\"0\"",
             PaletteIndex::JWildfire,
@@ -171,6 +182,13 @@ fn palette_rule_follows_the_writing_program() {
         let back = read(&text, &opts()).unwrap().value.flames[0].clone();
         assert_eq!(back, f, "{head}");
     }
+    // Highlight power: Fractorium's default 1, flam3's −1, a written value kept.
+    assert_eq!(one("version=\"EMBER-25.25.12.1\"").highlight_power, 1.0);
+    assert_eq!(
+        one("version=\"EMBER-25.25.12.1\" highlight_power=\"-1\"").highlight_power,
+        -1.0
+    );
+    assert_eq!(one("version=\"FLAM3-LNX-3.1.1\"").highlight_power, -1.0);
     let e = read(&flame("ugnis_palette_index=\"xaos\""), &opts()).unwrap_err();
     assert!(
         e.to_string()
