@@ -49,10 +49,10 @@ for run in range(2):
     f.zoom(precision=digits, x=x, y=y, dx=dx, nx=nx, xy_ratio=nx / ny, theta_deg=0.0)
     f.calc_std_div(calc_name="bench", subset=None, max_iter=max_iter, M_divergence=256.0,
                    epsilon_stationnary=1e-3, calc_dzndc=False)
-    t = time.time()
+    t, p = time.time(), time.process_time()
     f.calc_raw("bench")
-    times.append(time.time() - t)
-print(times[1])
+    times.append((time.time() - t, time.process_time() - p))
+print(times[1][0], times[1][1])
 """
 
 
@@ -63,12 +63,14 @@ def time_ugnis(exe, view, size, threads):
         cmd = [exe, "escape", "mandelbrot", "--center", f"{x},{y}", "--width", width,
                "--size", size, "--max-iter", str(max_iter), "--threads", str(threads),
                "-o", out]
-        t = time.time()
+        t, before = time.time(), os.times()
         r = subprocess.run(cmd, capture_output=True, text=True)
-        dt = time.time() - t
+        dt, after = time.time() - t, os.times()
         if r.returncode != 0:
             return None, r.stderr.strip()
-        return dt, ""
+        cpu = (after.children_user - before.children_user
+               + after.children_system - before.children_system)
+        return (dt, cpu), ""
 
 
 def time_fractalshades(py, view, size, threads):
@@ -78,7 +80,8 @@ def time_fractalshades(py, view, size, threads):
                        capture_output=True, text=True)
     if r.returncode != 0:
         return None, r.stderr.strip().splitlines()[-1:]
-    return float(r.stdout.strip().splitlines()[-1]), ""
+    wall, cpu = r.stdout.strip().splitlines()[-1].split()
+    return (float(wall), float(cpu)), ""
 
 
 def main():
@@ -89,7 +92,10 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--only", default=None, help="run views whose name contains this")
     a = ap.parse_args()
-    print(f"{'view':24} {'size':>8} {'iters':>6} {'ugnis s':>9} {'Fractalshades s':>16} {'ratio':>6}")
+    # On a machine other jobs load, wall times stretch with the load; CPU times (all threads)
+    # do much less, so both are shown.
+    print(f"{'view':24} {'size':>8} {'iters':>6} {'ugnis s':>9} {'Fractalshades s':>16} "
+          f"{'ratio':>6} {'CPU s':>7} {'FS CPU s':>9} {'ratio':>6}")
     for v in VIEWS:
         if a.only and a.only not in v[0]:
             continue
@@ -99,10 +105,14 @@ def main():
             tf, ferr = time_fractalshades(a.fs_python, v, a.size, a.threads)
             if tf is None:
                 print(f"  Fractalshades failed: {ferr}", file=sys.stderr)
-        ratio = f"{tu / tf:.2f}" if tu and tf else "-"
-        tu_s = f"{tu:.2f}" if tu else f"failed: {err}"
-        tf_s = f"{tf:.2f}" if tf else "-"
-        print(f"{v[0]:24} {a.size:>8} {v[4]:>6} {tu_s:>9} {tf_s:>16} {ratio:>6}", flush=True)
+        if tu is None:
+            print(f"{v[0]:24} {a.size:>8} {v[4]:>6} failed: {err}", flush=True)
+            continue
+        cols = [f"{tu[0]:.2f}", f"{tf[0]:.2f}" if tf else "-",
+                f"{tu[0] / tf[0]:.2f}" if tf else "-", f"{tu[1]:.2f}",
+                f"{tf[1]:.2f}" if tf else "-", f"{tu[1] / tf[1]:.2f}" if tf else "-"]
+        print(f"{v[0]:24} {a.size:>8} {v[4]:>6} {cols[0]:>9} {cols[1]:>16} {cols[2]:>6} "
+              f"{cols[3]:>7} {cols[4]:>9} {cols[5]:>6}", flush=True)
 
 
 if __name__ == "__main__":

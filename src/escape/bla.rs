@@ -43,6 +43,13 @@ pub struct Step {
 pub struct Bla {
     /// levels[k − 1][j]: the step of up to 2^k iterations from m = 1 + j·2^k.
     levels: Vec<Vec<Step>>,
+    /// The same steps in f64 for the plain loop: per level the radii (0 where A or B leave
+    /// f64's range, so that no difference is admitted) apart from the coefficients, so that
+    /// the test most iterations make touches 8 bytes.
+    radii: Vec<Vec<f64>>,
+    coeffs: Vec<Vec<[C; 2]>>,
+    /// The orbit's last index (steps end there).
+    last: usize,
 }
 
 fn merge(x: &Step, y: &Step, dc_max: Fx) -> Step {
@@ -65,9 +72,10 @@ fn merge(x: &Step, y: &Step, dc_max: Fx) -> Step {
     }
 }
 
-/// Bytes the table of an orbit of `len` points takes (about one merged step per point).
+/// Bytes the table of an orbit of `len` points takes (about one merged step per point, and
+/// its f64 copy).
 pub fn table_bytes(len: u64) -> u64 {
-    len * std::mem::size_of::<Step>() as u64
+    len * (std::mem::size_of::<Step>() + std::mem::size_of::<[C; 2]>() + 8) as u64
 }
 
 impl Bla {
@@ -119,7 +127,31 @@ impl Bla {
             prev = next;
         }
         levels.push(prev);
-        Bla { levels }
+        let in_f64 = |c: &Cx| c.is_zero() || (-1000..1000).contains(&c.e);
+        let radii = levels
+            .iter()
+            .map(|l| {
+                l.iter()
+                    .map(|st| {
+                        if in_f64(&st.a) && in_f64(&st.b) {
+                            st.r64
+                        } else {
+                            0.0
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let coeffs = levels
+            .iter()
+            .map(|l| l.iter().map(|st| [st.a.to_c(), st.b.to_c()]).collect())
+            .collect();
+        Bla {
+            levels,
+            radii,
+            coeffs,
+            last,
+        }
     }
 
     /// The longest step from reference index m admitting |δ| = `d` and at most `room`
@@ -159,6 +191,27 @@ impl Bla {
             }
         }
         best
+    }
+
+    /// As [`Bla::find_f64`] with the coefficients in f64: (A, B, length). `m` must be odd
+    /// (the steps start at m = 1 + j·2^k) and `d1` is |re| + |im| of the difference.
+    #[inline(always)]
+    pub fn find_plain(&self, m: usize, d1: f64, room: u32) -> Option<(C, C, u32)> {
+        let k0 = ((m - 1).trailing_zeros() as usize).min(self.radii.len());
+        let mut found = None;
+        for k in 0..k0 {
+            let j = (m - 1) >> (k + 1);
+            let admits = matches!(self.radii[k].get(j), Some(&r) if d1 < r);
+            let len = (2usize << k).min(self.last - m) as u32;
+            if !admits || len > room {
+                break;
+            }
+            found = Some((k, j, len));
+        }
+        found.map(|(k, j, len)| {
+            let [a, b] = self.coeffs[k][j];
+            (a, b, len)
+        })
     }
 
     /// Number of steps stored.

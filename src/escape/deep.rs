@@ -26,6 +26,7 @@ use dashu_int::IBig;
 use super::bla::Bla;
 use super::centre::{Centre, ibig_to_fx};
 use super::complex::C;
+use super::deep_plain;
 use super::family::{IterSettings, Sample, smooth_count};
 use super::fx::{Cx, Fx, ldexp};
 
@@ -351,6 +352,47 @@ pub fn iterate(r: &Reference, dc: Cx, s: &IterSettings, pixel: Fx) -> Sample {
         d0.to_c()
     };
     p.run_f64(d, s, pixel)
+}
+
+/// The pixels at offsets `dcs` (as for [`iterate`]): those that need neither derivatives nor
+/// extended exponents in the interleaved plain-f64 loop ([`deep_plain`]), the others one by
+/// one.
+pub fn iterate_many(r: &Reference, dcs: &[Cx], s: &IterSettings, pixel: Fx) -> Vec<Sample> {
+    let mut out = vec![Sample::default(); dcs.len()];
+    let julia = r.is_julia();
+    let plain = |dc: &Cx| !s.want_de && (dc.is_zero() || dc.e > F64_FROM);
+    for (k, dc) in dcs.iter().enumerate() {
+        if !plain(dc) {
+            out[k] = iterate(r, *dc, s, pixel);
+        }
+    }
+    let base = r.critical.as_ref().unwrap_or(&r.main);
+    let orbits = deep_plain::Orbits {
+        main: (&r.main.z, &r.main.bla),
+        base: (&base.z, &base.bla),
+    };
+    let mut todo = dcs.iter().enumerate().filter(|(_, dc)| plain(dc));
+    let next = || {
+        todo.next().map(|(k, dc)| {
+            let dc = dc.to_c();
+            let lane = deep_plain::Lane {
+                m: 0,
+                n: 0,
+                on_base: false,
+                d: if julia { dc } else { C::ZERO },
+                dc: if julia { C::ZERO } else { dc },
+            };
+            (k, lane)
+        })
+    };
+    let deg = r.degree as f64;
+    deep_plain::run(&orbits, r.degree == 3, s, next, |k, end| {
+        out[k] = match end {
+            deep_plain::End::Escaped { n, z, r2 } => s.escape_sample(n, z, r2, C::ONE, deg),
+            deep_plain::End::Inside => Sample::inside(s.max_iter),
+        }
+    });
+    out
 }
 
 #[cfg(test)]

@@ -175,9 +175,30 @@ impl Job {
         self.params.family.is_quadratic() && !self.settings.want_de && self.reference.is_none()
     }
 
+    /// Deep zoom: the pixels `pts` (several at once).
+    fn deep_pixels(
+        &self,
+        r: &deep::Reference,
+        pts: impl Iterator<Item = (u32, u32)>,
+    ) -> Vec<Sample> {
+        let dcs: Vec<_> = pts
+            .map(|(i, j)| {
+                self.view
+                    .offset_from_pixel_fx(i as f64, j as f64, self.w, self.h)
+            })
+            .collect();
+        deep::iterate_many(r, &dcs, &self.settings, self.view.pixel_size_fx(self.h))
+    }
+
     /// Compute the listed columns of row j into `row`.
     pub(super) fn compute_row(&self, j: u32, cols: impl Iterator<Item = u32>, row: &mut [Sample]) {
-        if self.uses_lanes() {
+        if let Some(r) = &self.reference {
+            let cols: Vec<u32> = cols.collect();
+            let samples = self.deep_pixels(r, cols.iter().map(|&i| (i, j)));
+            for (i, s) in cols.into_iter().zip(samples) {
+                row[i as usize] = s;
+            }
+        } else if self.uses_lanes() {
             lanes::run(
                 &self.settings,
                 cols,
@@ -193,6 +214,9 @@ impl Job {
 
     /// Compute a list of (i, j) pixels, returning their samples in order.
     pub(super) fn compute_list(&self, pts: &[(u32, u32)]) -> Vec<Sample> {
+        if let Some(r) = &self.reference {
+            return self.deep_pixels(r, pts.iter().copied());
+        }
         let mut out = vec![Sample::default(); pts.len()];
         if self.uses_lanes() {
             lanes::run(

@@ -13,6 +13,7 @@ mod color;
 mod complex;
 pub(crate) mod dd;
 mod deep;
+mod deep_plain;
 mod doc;
 pub(crate) mod family;
 pub mod fx;
