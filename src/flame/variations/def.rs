@@ -206,14 +206,14 @@ impl VarDef {
 /// State carried between calls by the few stateful variations (shared by the threads of a
 /// render; relaxed atomics, as the state only decorrelates successive calls).
 #[derive(Debug, Default)]
-pub struct VarState([AtomicU64; 4]);
+pub struct VarState([AtomicU64; 8]);
 
 impl VarState {
-    /// The value in slot `i` (0–3).
+    /// The value in slot `i` (0–7).
     pub fn get(&self, i: usize) -> f64 {
         f64::from_bits(self.0[i].load(Ordering::Relaxed))
     }
-    /// Store `v` in slot `i` (0–3).
+    /// Store `v` in slot `i` (0–7).
     pub fn set(&self, i: usize, v: f64) {
         self.0[i].store(v.to_bits(), Ordering::Relaxed);
     }
@@ -222,7 +222,7 @@ impl VarState {
 impl Clone for VarState {
     fn clone(&self) -> Self {
         let s = VarState::default();
-        for i in 0..4 {
+        for i in 0..self.0.len() {
             s.set(i, self.get(i));
         }
         s

@@ -750,13 +750,13 @@ fn shape_derived(shape: &ShapeParams) -> [f64; 5] {
 }
 
 /// Derived values of x, y and z (see [`shape_derived`]).
-fn shape_prep(v: &mut Prepared) {
+pub(super) fn shape_prep(v: &mut Prepared) {
     let shape = v.params();
     v.p.extend(shape_derived(&shape));
 }
 
 /// Derived values of w, whose shape parameters follow its angle (see [`shape_derived`]).
-fn shape_prep_w(v: &mut Prepared) {
+pub(super) fn shape_prep_w(v: &mut Prepared) {
     let [_angle, shape @ ..] = v.params::<14>();
     v.p.extend(shape_derived(&shape));
 }
@@ -809,7 +809,7 @@ fn shape_total(shape: &ShapeParams, derived: [f64; 5], a: f64) -> f64 {
 
 /// w: points inside the shape profile (the profile at their own angle) are rotated by
 /// `w_angle` and rescaled to the profile at the new angle; points outside pass through.
-fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+pub(super) fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [angle, shape @ ..] = v.params::<14>();
     let d = v.derived();
     let a = t.atan_yx;
@@ -833,7 +833,7 @@ fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// x: the radius pushed out to √(r² + profile²) along each ray.
-fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+pub(super) fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * (t.sumsq + sqr(reach)).sqrt();
@@ -842,7 +842,7 @@ fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// y: inversion in the shape profile — radius profile²/r along each ray.
-fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+pub(super) fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * sqr(reach) / t.sqrt;
@@ -851,7 +851,7 @@ fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// z: the radius increased by the shape profile along each ray.
-fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+pub(super) fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
     let r = v.w * (t.sqrt + reach);

@@ -149,7 +149,7 @@ fn star_layer(x: f64, y: f64, zdistance: f64) -> f64 {
 
 /// dc_starsfield's grey level at (x, y): eleven rotated, zooming layers of stars (the loop
 /// steps 0.1 to below 1 in floating point, as JWildfire's does) plus a glow hash.
-fn starsfield_grey(x: f64, y: f64, time: f64, zdistance: f64, glow: f64) -> f64 {
+pub(super) fn starsfield_grey(x: f64, y: f64, time: f64, zdistance: f64, glow: f64) -> f64 {
     let (mut ux, mut uy) = rot(x, y, time);
     ux += time.cos() * 2.0;
     uy += time.sin() * 2.0;

@@ -3,15 +3,15 @@
 //! them by a pattern.
 //!
 //! JWildfire paints the pattern's RGB directly (`Gradient` 0), the nearest palette colour (1)
-//! or uses the colour's luminance as the palette index (2). ugnis colours through the palette
-//! only, so the dc_ variations set the palette index to the luminance for all three (exact for
-//! 2, a stand-in for 0 and 1), as `jwf_direct_colour` does.
+//! or uses the colour's luminance as the palette index (2), as `jwf_direct_colour` describes;
+//! glsl_hoshi paints the RGB (0) or takes red·green as the palette index (1).
 //!
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
 //! written anew. Random numbers are drawn in the order JWildfire draws them.
 
-use super::jwf_direct_colour::{DC_FLAGS, dc_bytes, dc_common, dc_luma, dc_tail, gmod};
-use super::util::fract;
+use super::jwf_c_glsl::{GLSL_RES_Y, GlslIndex, glsl_frame};
+use super::jwf_direct_colour::{DC_FLAGS, dc_common, dc_tail, gmod};
+use super::util::{atan2_approx, fract};
 use super::*;
 
 pub(super) static DEFS: &[VarDef] = &[
@@ -87,25 +87,32 @@ fn dc_acrilic(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         tail @ ..,
     ] = v.params::<18>();
     dc_common(v, tail, t, acc, rng, 0.5, |x, y| {
-        let (mut px, mut py) = (zoom * x, zoom * y);
-        let mut col = [0.0; 3];
-        for (j, c) in col.iter_mut().enumerate() {
-            let jf = j as f64;
-            for i in 1..(steps as i64) {
-                let i = i as f64;
-                px += 0.1 / (i + jf)
-                    * (i * p1 * py + time + ((time / (p2 * i)) * i + jf).cos()).sin();
-                py += 0.1 / (i + jf)
-                    * (i * p3 * px + time + ((time / (p4 * i)) * i + jf).sin()).cos();
-            }
-            *c = (p5 * px * px).sin() + (p6 * py * py).sin();
-        }
-        [
-            (col[0] * fr).cos(),
-            (col[1] * fg).cos(),
-            (col[2] * fb).cos(),
-        ]
+        let p = [p1, p2, p3, p4, p5, p6];
+        acrilic_rgb(zoom * x, zoom * y, time, steps, p, [fr, fg, fb])
     })
+}
+
+/// The acrylic pattern's colour at (px, py): the point pushed along sine waves `steps` times
+/// per channel (p1…p4 their frequencies), each channel cos(f·(sin(p5·x²) + sin(p6·y²))).
+pub(super) fn acrilic_rgb(
+    mut px: f64,
+    mut py: f64,
+    time: f64,
+    steps: f64,
+    [p1, p2, p3, p4, p5, p6]: [f64; 6],
+    f: [f64; 3],
+) -> [f64; 3] {
+    let mut col = [0.0; 3];
+    for (j, c) in col.iter_mut().enumerate() {
+        let jf = j as f64;
+        for i in 1..(steps as i64) {
+            let i = i as f64;
+            px += 0.1 / (i + jf) * (i * p1 * py + time + ((time / (p2 * i)) * i + jf).cos()).sin();
+            py += 0.1 / (i + jf) * (i * p3 * px + time + ((time / (p4 * i)) * i + jf).sin()).cos();
+        }
+        *c = (p5 * px * px).sin() + (p6 * py * py).sin();
+    }
+    [0, 1, 2].map(|k| (col[k] * f[k]).cos())
 }
 
 const P_VORTEX: &[Param] = &{
@@ -224,13 +231,18 @@ fn dc_portal(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 const HOSHI_PI: f64 = 3.14159;
 
 /// glsl_hoshi: a star-like folding fractal (iterated fold, scale, translate and rotate), its
-/// colour a hue from the final angle. A pixel of a `Density Pixels`² grid is drawn at random;
-/// the palette index is the colour's luminance (`Gradient` 0) or red·green (1).
+/// colour a hue from the final angle, drawn on a random pixel (see [`glsl_frame`]).
 fn glsl_hoshi(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [res, _, time, steps, scale, translate, gradient] = v.params();
-    let i = (rng.f01() * res).trunc();
-    let j = (rng.f01() * res).trunc();
-    let (mut px, mut py) = ((2.0 * i / res - 1.0) * 0.182, (2.0 * j / res - 1.0) * 0.182);
+    glsl_frame(v, res, gradient, acc, rng, GlslIndex::RedGreen, |i, j| {
+        let (px, py) = (2.0 * i / res - 1.0, 2.0 * j / GLSL_RES_Y - 1.0);
+        hoshi_rgb(px, py, time, steps, scale, translate)
+    })
+}
+
+/// glsl_hoshi's colour at (px, py) of [-1, 1]².
+fn hoshi_rgb(px: f64, py: f64, time: f64, steps: f64, scale: f64, translate: f64) -> [f64; 3] {
+    let (mut px, mut py) = (px * 0.182, py * 0.182);
     let x = py;
     px = (gmod(px, 4.0) - 2.0).abs();
     py = (gmod(py, 4.0) - 2.0).abs();
@@ -250,18 +262,12 @@ fn glsl_hoshi(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
         (px, py) = (px * c - py * s, px * s + py * c);
         k -= 1;
     }
-    let ii = x * x + py.atan2(px) + time * 0.02;
+    let ii = x * x + atan2_approx(py, px) + time * 0.02;
     let mut h = (ii * 4.0).floor() / 8.0 + 1.107;
     h += smoothstep(-0.1, 0.8, gmod(ii * 2.0 / 5.0, 1.0 / 4.0) * 900.0) / 0.010 - 0.5;
     let val = smoothstep(-3.0, 3.0, (px * px + py * py).sqrt());
-    let hue = [3.0, 2.0, 1.0].map(|o: f64| {
+    [3.0, 2.0, 1.0].map(|o: f64| {
         let c = (fract((o + h) / 3.0) * 6.0 - 3.0).abs() - 1.0;
         c.clamp(0.0, 1.0) * val
-    });
-    acc.color = if gradient == 0.0 {
-        dc_luma(dc_bytes(hue))
-    } else {
-        hue[0] * hue[1]
-    };
-    [v.w * (i / res - 0.5), v.w * (j / res - 0.5), 0.0]
+    })
 }

@@ -4,8 +4,9 @@
 //!
 //! The dc_ variations compute an RGB colour. JWildfire either paints that RGB directly
 //! (`Gradient` 0), paints the nearest palette colour (1) or uses the colour's luminance as the
-//! palette index (2). ugnis colours through the palette only, so all three set the palette
-//! index to the luminance (exact for 2, a stand-in for 0 and 1).
+//! palette index (2). The first two give the point its own colour ([`Acc::rgb`]; for 1 marked
+//! so that the renderer, which knows the palette, draws the nearest key), the third sets the
+//! palette index.
 //!
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
 //! written anew. JWildfire's conventions are kept: `atan_xy` is its `getPrecalcAtan`
@@ -119,9 +120,9 @@ pub(super) fn dc_luma(c: [i64; 3]) -> f64 {
 
 /// The part all dc_ variations share. The point is the input (ColorOnly = 1) or uniform in a
 /// square of half-side `half` (1 or 0.5); its pattern colour, quantised to bytes, is the
-/// point's own colour (Gradient = 0, JWildfire's default; 1, the gradient's nearest key, is
-/// taken as 0: a variation does not see the gradient) or, by its luminance, the palette
-/// index (Gradient = 2); the luminance, scaled and offset, gives z (which replaces the running
+/// point's own colour (Gradient = 0, JWildfire's default), the gradient's colour nearest to
+/// it (1: marked for the renderer, which knows the gradient, see [`Acc::rgb`]) or, by its
+/// luminance, the palette index (Gradient = 2); the luminance, scaled and offset, gives z (which replaces the running
 /// z when reset_z is 1). `tail` holds the five shared parameters, which come last (see
 /// `dc_tail!`).
 #[inline(always)]
@@ -146,8 +147,11 @@ pub(super) fn dc_common(
     };
     let bytes = dc_bytes(pattern(x, y));
     let luma = dc_luma(bytes);
-    if trunc_i(gradient) < 2 {
-        acc.rgb = Some(bytes.map(|c| c as f64));
+    let gradient = trunc_i(gradient);
+    if gradient < 2 {
+        // Gradient 1 asks the renderer for the palette colour nearest to the pattern's.
+        let lower = if gradient == 1 { Acc::NEAREST_KEY } else { 0.0 };
+        acc.rgb = Some(bytes.map(|c| c as f64 - lower));
     } else {
         acc.color = luma;
     }
@@ -174,8 +178,8 @@ const MANDALA_INV_PI: f64 = 0.318309886183791;
 
 /// dc_mandala's colour: a doubly folded kaleidoscope, an optional modular tiling, then an
 /// absolute-value inversion map iterated up to 73 times on a 3-vector that becomes RGB.
-fn mandala_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
-    let [mx, my, scale, sides, multiply, loops, inv_r, inv_g, inv_b] = v.params();
+pub(super) fn mandala_rgb(q: [f64; 9], x: f64, y: f64) -> [f64; 3] {
+    let [mx, my, scale, sides, multiply, loops, inv_r, inv_g, inv_b] = q;
     let zoom = 5.5 - scale;
     let k = PI / sides.floor();
     let s = kaleido(zoom * x, zoom * y, k);
@@ -214,7 +218,9 @@ fn mandala_rgb(v: &Prepared, x: f64, y: f64) -> [f64; 3] {
 /// name).
 fn dc_mandala(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, _, _, _, _, _, tail @ ..] = v.params::<14>();
-    dc_common(v, tail, t, acc, rng, 1.0, |x, y| mandala_rgb(v, x, y))
+    dc_common(v, tail, t, acc, rng, 1.0, |x, y| {
+        mandala_rgb(v.params(), x, y)
+    })
 }
 
 const P_DC_MANDALA: &[Param] = &{

@@ -26,6 +26,8 @@ use super::{
 };
 // JWildfire variations, second part.
 use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
+// JWildfire variations, third part.
+use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -67,7 +69,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 48] = [
+const FILES: [&[VarDef]; 51] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -118,6 +120,10 @@ const FILES: [&[VarDef]; 48] = [
     jwf_a_cuts::DEFS,
     jwf_a_fractals::DEFS,
     jwf_a_dc::DEFS,
+    // JWildfire variations, third part.
+    jwf_c_escape::DEFS,
+    jwf_c_glsl::DEFS,
+    jwf_c_orbits::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -398,6 +404,31 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "post_point_symmetry_wf",
     "post_axis_symmetry_wf",
     "bwraps2",
+    // JWildfire variations, third part.
+    "fract_julia_wf",
+    "fract_mandelbrot_wf",
+    "fract_dragon_wf",
+    "fract_meteors_wf",
+    "fract_pearls_wf",
+    "fract_salamander_wf",
+    "glsl_acrilic",
+    "glsl_starsfield",
+    "glsl_mandelbox2D",
+    "glsl_apollonian",
+    "glsl_kaliset",
+    "glsl_kaliset2",
+    "glsl_squares",
+    "glsl_circlesblue",
+    "glsl_grid3D",
+    "glsl_hyperbolictile",
+    "glsl_mandala",
+    "glsl_kaleidoscopic",
+    "glsl_kaleidocomplex",
+    "glsl_fractaldots",
+    "macmillan",
+    "hopalong",
+    "threeply",
+    "curliecue2",
 ];
 
 /// Every JWildfire variation's name in registry order.

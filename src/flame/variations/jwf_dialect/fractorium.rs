@@ -157,3 +157,93 @@ pub(super) fn sinusgrid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -
     let sy = -(t.y * fy).cos();
     [v.w * mix(t.x, sx, ax), v.w * mix(t.y, sy, ay), v.w * t.z]
 }
+
+/// erf: the error function of x and y in JWildfire's approximation (Numerical Recipes').
+pub(super) fn erf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    use crate::flame::variations::jwf_a_surfaces::erf_nr;
+    [erf_nr(t.x) * v.w, erf_nr(t.y) * v.w, 0.0]
+}
+
+/// xerf: each coordinate's error function (JWildfire's approximation) below 2 in size, the
+/// coordinate over r² (r² at least 1e-300) from 2 on.
+pub(super) fn xerf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    use crate::flame::variations::jwf_a_surfaces::erf_nr;
+    let r2 = (t.x * t.x + t.y * t.y + t.z * t.z).max(super::SMALL_EPSILON);
+    let f = |c: f64| if c.abs() >= 2.0 { c / r2 } else { erf_nr(c) };
+    [f(t.x) * v.w, f(t.y) * v.w, f(t.z) * v.w]
+}
+
+/// waves2b: Fractorium's waves2b with JWildfire's numbers: the power taken of |u| + 1e-10
+/// (sign +1 at 0), the fall-off's quotient inverted below 1e-10, and its faster Jacobi sn
+/// (at most 8 Landen steps, tolerance 3e-4).
+pub(super) fn waves2b(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [freqx, freqy, pwx, pwy, _, sinfx, _, sinfy, unity, jacok] = v.params();
+    let [six, siy] = v.derived();
+    let safediv = |q: f64, r: f64| if r < 1e-10 { 1.0 / r } else { q / r };
+    let csx = safediv(unity, unity + t.x * t.x) * six + sinfx;
+    let csy = safediv(unity, unity + t.y * t.y) * siy + sinfy;
+    let wave = |u: f64, pw: f64, freq: f64| -> f64 {
+        if (0.0..1e-4).contains(&pw) {
+            jacobi_sn_fast(u * freq, jacok)
+        } else if pw < 0.0 && pw > -1e-4 {
+            crate::flame::variations::util::bessel_j1(u * freq)
+        } else {
+            let sgn = if u < 0.0 { -1.0 } else { 1.0 };
+            (sgn * (u.abs() + 1e-10).powf(pw) * freq).sin()
+        }
+    };
+    [
+        v.w * (t.x + csx * wave(t.y, pwx, freqx)),
+        v.w * (t.y + csy * wave(t.x, pwy, freqy)),
+        0.0,
+    ]
+}
+
+/// The Jacobi elliptic function sn(u | 1 − emc) by descending Landen transformations, cut
+/// short as JWildfire's waves2b does (8 steps, relative tolerance 3e-4); tanh u for emc = 0.
+fn jacobi_sn_fast(u: f64, emc: f64) -> f64 {
+    const CA: f64 = 0.0003;
+    if emc == 0.0 {
+        return u.tanh();
+    }
+    let (mut emc, mut u) = (emc, u);
+    let neg = emc < 0.0;
+    let mut d = 0.0;
+    if neg {
+        d = 1.0 - emc;
+        emc = -emc / d;
+        d = d.sqrt();
+        u *= d;
+    }
+    let (mut em, mut en) = ([0.0; 8], [0.0; 8]);
+    let (mut a, mut c, mut dn) = (1.0, 0.0, 1.0);
+    let mut l = 0;
+    for i in 0..8 {
+        l = i;
+        em[i] = a;
+        emc = emc.sqrt();
+        en[i] = emc;
+        c = 0.5 * (a + emc);
+        if (a - emc).abs() <= CA * a {
+            break;
+        }
+        emc *= a;
+        a = c;
+    }
+    u *= c;
+    let mut sn = u.sin();
+    if sn != 0.0 {
+        let mut a = u.cos() / sn;
+        c *= a;
+        for ii in (0..=l).rev() {
+            let b = em[ii];
+            a *= c;
+            c *= dn;
+            dn = (en[ii] + a) / (b + a);
+            a = c / b;
+        }
+        let a = 1.0 / (c * c + 1.0).sqrt();
+        sn = if sn < 0.0 { -a } else { a };
+    }
+    if neg { sn / d } else { sn }
+}

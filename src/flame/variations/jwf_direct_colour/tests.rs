@@ -64,7 +64,7 @@ const DC_POINTS: [[f64; 2]; 6] = [
 
 fn dc_rgb_of(name: &str, v: &Prepared, x: f64, y: f64, glow: &mut f64) -> [f64; 3] {
     match name {
-        "dc_mandala" => mandala_rgb(v, x, y),
+        "dc_mandala" => mandala_rgb(v.params(), x, y),
         "dc_inversion" => inversion_rgb(v, x, y),
         "dc_poincaredisc" => poincare_rgb(v, x, y),
         "dc_turbulence" => turbulence_rgb(v, x, y),
