@@ -440,7 +440,11 @@ fn jwildfire_pre_variation_of_priority_zero_does_nothing() {
     let text = r#"<flame version="JWildfire V7.30"><xform weight="1" pre_blur="1.18" pre_blur_fx_priority="0" bubble="0.2" bubble_fx_priority="0" coefs="1 0 0 1 0 0"/><xform weight="1" pre_blur="0.5" pre_blur_fx_priority="-1" coefs="1 0 0 1 0 0"/></flame>"#;
     let f = read(text, &opts()).unwrap().value.flames.remove(0);
     let forms = |i: usize| -> Vec<(Form, f64)> {
-        f.xforms[i].vars.iter().map(|v| (v.form, v.weight)).collect()
+        f.xforms[i]
+            .vars
+            .iter()
+            .map(|v| (v.form, v.weight))
+            .collect()
     };
     assert_eq!(forms(0), [(Form::Regular, 0.2)]);
     assert_eq!(forms(1), [(Form::Pre, 0.5)]);
