@@ -119,8 +119,9 @@ pub(super) fn dc_luma(c: [i64; 3]) -> f64 {
 
 /// The part all dc_ variations share. The point is the input (ColorOnly = 1) or uniform in a
 /// square of half-side `half` (1 or 0.5); its pattern colour, quantised to bytes, is the
-/// point's own colour (Gradient = 0, JWildfire's default; 1, the gradient's nearest key, is
-/// taken as 0: a variation does not see the gradient) or, by its luminance, the palette
+/// point's own colour (Gradient = 0, JWildfire's default), the gradient's colour nearest to it
+/// (1: marked with [`Acc::NEAREST_KEY`]; the renderer, which knows the gradient, looks it up)
+/// or, by its luminance, the palette
 /// index (Gradient = 2); the luminance, scaled and offset, gives z (which replaces the running
 /// z when reset_z is 1). `tail` holds the five shared parameters, which come last (see
 /// `dc_tail!`).
@@ -146,7 +147,9 @@ pub(super) fn dc_common(
     };
     let bytes = dc_bytes(pattern(x, y));
     let luma = dc_luma(bytes);
-    if trunc_i(gradient) < 2 {
+    if trunc_i(gradient) == 1 {
+        acc.rgb = Some(bytes.map(|c| c as f64 - Acc::NEAREST_KEY));
+    } else if trunc_i(gradient) < 2 {
         acc.rgb = Some(bytes.map(|c| c as f64));
     } else {
         acc.color = luma;
