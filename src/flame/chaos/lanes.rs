@@ -57,7 +57,9 @@ pub struct Lanes {
     /// then needs neither the retry counters nor the step counters.
     pub(super) clean: bool,
     /// Steps taken since the orbits were made or restored (the clock of JWildfire's checks
-    /// for bad values).
+    /// for bad values). A saved render state does not keep it: a resumed render of a flame
+    /// JWildfire's renderer draws restarts its waiting orbits on a clock of its own, so it
+    /// matches an uninterrupted one only while no orbit waits.
     pub(super) steps: u64,
     // Scratch space.
     pub(super) choice: [u16; LANES],
