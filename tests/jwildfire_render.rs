@@ -7,8 +7,10 @@
 //! its tone-map settings with a gradient background and saturation, a smoothing kernel with
 //! strong antialiasing and a final xform that keeps the colour, three layers, the 3-D camera
 //! (bank, perspective, depth of field, rotation about the origin), motion curves with
-//! motion blur, and points drawn in colours of their own (direct colour: two patterns' colours
-//! as they are, kept through a final xform).
+//! motion blur, points drawn in colours of their own (direct colour: two patterns' colours
+//! as they are, kept through a final xform), and bad values as JWildfire meets them (an orbit
+//! gone to NaN draws nothing until JWildfire's next check restarts it; a pre_blur marked with
+//! priority 0 does nothing).
 //!
 //! Tolerance: JWildfire itself at quality 300 (another seed) against the reference, the number
 //! in the table; ugnis at quality 300 must reach it minus 2.5 dB. Drawn by flam3's rules these
@@ -28,6 +30,7 @@ const FIXTURES: &[(&str, f64)] = &[
     ("camera", 43.61),
     ("motion", 43.99),
     ("direct", 43.19),
+    ("broken", 32.91),
 ];
 
 fn fixture(name: &str) -> std::path::PathBuf {

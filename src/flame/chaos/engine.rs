@@ -4,9 +4,9 @@
 //! each xform to its group as one array computation. Then bad values are retried, fused orbits
 //! counted, and the samples go through the final xform and the camera to the plot callback.
 
-use super::lanes::{Lanes, Orbits};
+use super::lanes::{Lanes, Orbits, WAITING};
 use super::xform::within;
-use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, LANES};
+use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, JWF_CHECK_STEPS, LANES};
 use crate::flame::rng::FastRng;
 
 /// Mask of a lane index: indices masked by it are provably in range.
@@ -52,6 +52,12 @@ impl Chaos {
         let mut bad = 0u64;
         let direct = self.final_xform.is_none() && self.projection.is_none();
         while plotted < n {
+            if self.jwf_bad_values {
+                if ln.steps.is_multiple_of(JWF_CHECK_STEPS) {
+                    self.restart_waiting(ln, rng);
+                }
+                ln.steps += 1;
+            }
             match (&self.affine, ln.clean) {
                 (Some(rows), true) => self.step_in_place(rows, ln, rng),
                 _ => self.step_grouped(ln, rng),
@@ -114,6 +120,20 @@ impl Chaos {
             (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
             (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
             o.rgb[l] = 0;
+        }
+    }
+
+    /// JWildfire's check for bad values: every orbit that met one since the last check starts
+    /// again at a random point, fused.
+    fn restart_waiting(&self, ln: &mut Lanes, rng: &mut FastRng) {
+        let o = &mut ln.sets[ln.cur & 1];
+        for l in 0..LANES {
+            if o.consec[l] == WAITING {
+                let (p, last) = self.fused_start(rng);
+                (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
+                (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
+                o.rgb[l] = 0;
+            }
         }
     }
 
@@ -327,6 +347,18 @@ impl Chaos {
         let (mut nf, mut took, mut bad) = (0usize, 0u64, 0u64);
         for p in 0..LANES {
             ln.vis[p] = -1.0;
+            if self.jwf_bad_values && (ln.bad[p] || dst.consec[p] == WAITING) {
+                // JWildfire's rule: the orbit's steps count, and draw nothing, until its
+                // next check restarts it.
+                if dst.consec[p] != WAITING {
+                    dst.consec[p] = WAITING;
+                    bad += 1;
+                }
+                if dst.step[p] >= 0 && took < left {
+                    took += 1;
+                }
+                continue;
+            }
             if ln.bad[p] {
                 dst.consec[p] += 1;
                 bad += 1;
@@ -397,8 +429,16 @@ impl Chaos {
                         }
                     }
                 }
+                if self.jwf_bad_values {
+                    // JWildfire draws nothing of a sample its final xform makes bad.
+                    for (v, &b) in ln.fin_vis[..m].iter_mut().zip(&ln.g.bad[..m]) {
+                        if b {
+                            *v = -1.0;
+                        }
+                    }
+                }
             } else {
-                Self::final_by_opacity(f, ln, m, self.rgb, rng);
+                Self::final_by_opacity(f, ln, m, self.rgb, self.jwf_bad_values, rng);
             }
         }
         if let Some(pr) = &self.projection {
@@ -417,6 +457,7 @@ impl Chaos {
         ln: &mut Lanes,
         m: usize,
         own_rgb: bool,
+        drop_bad: bool,
         rng: &mut FastRng,
     ) {
         ln.chosen.clear();
@@ -444,11 +485,12 @@ impl Chaos {
             &mut ln.g,
             rng,
         );
-        if f.hides {
-            for (k, &j) in ln.chosen.iter().enumerate() {
-                if ln.g.hide[k & M] {
-                    ln.fin_vis[j & M] = 0.0;
-                }
+        for (k, &j) in ln.chosen.iter().enumerate() {
+            if f.hides && ln.g.hide[k & M] {
+                ln.fin_vis[j & M] = 0.0;
+            }
+            if drop_bad && ln.g.bad[k & M] {
+                ln.fin_vis[j & M] = -1.0;
             }
         }
         for (k, &j) in ln.chosen.iter().enumerate() {

@@ -7,7 +7,8 @@ use super::{FUSE, LANES};
 /// The state of [`LANES`] orbits: position, colour coordinate, own colour (see
 /// [`crate::flame::variations::own_rgb`]; carried only for flames that have them), the xform
 /// applied last (xaos row; `u16::MAX` before the first), consecutive bad values, and steps
-/// done (an orbit plots once this is ≥ 0; it starts at −FUSE).
+/// done (an orbit plots once this is ≥ 0; it starts at −FUSE). Under JWildfire's rule for bad
+/// values an orbit waiting for its restart has [`WAITING`] consecutive bad values.
 #[derive(Clone, Debug)]
 pub(super) struct Orbits {
     pub(super) x: [f64; LANES],
@@ -19,6 +20,10 @@ pub(super) struct Orbits {
     pub(super) consec: [u8; LANES],
     pub(super) step: [i32; LANES],
 }
+
+/// The consecutive bad values of an orbit that met one under JWildfire's rule and waits for
+/// its restart (its steps count as samples that draw nothing).
+pub(super) const WAITING: u8 = u8::MAX;
 
 impl Orbits {
     fn new() -> Orbits {
@@ -51,6 +56,11 @@ pub struct Lanes {
     /// Every orbit is past its fuse and none is retrying a bad value, in both sets: a step
     /// then needs neither the retry counters nor the step counters.
     pub(super) clean: bool,
+    /// Steps taken since the orbits were made or restored (the clock of JWildfire's checks
+    /// for bad values). A saved render state does not keep it: a resumed render of a flame
+    /// JWildfire's renderer draws restarts its waiting orbits on a clock of its own, so it
+    /// matches an uninterrupted one only while no orbit waits.
+    pub(super) steps: u64,
     // Scratch space.
     pub(super) choice: [u16; LANES],
     pub(super) order: [u16; LANES],
@@ -163,6 +173,7 @@ impl Lanes {
             cur: 0,
             started: false,
             clean: false,
+            steps: 0,
             choice: [0; LANES],
             order: [0; LANES],
             group: [0; LANES],

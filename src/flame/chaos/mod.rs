@@ -86,7 +86,16 @@ pub struct Chaos {
     /// Every xform is an affine map times `linear` (no post-affine), with no final xform,
     /// camera or xaos: orbits then need no grouping by xform (see [`AffineStep`]).
     affine: Option<Vec<AffineStep>>,
+    /// JWildfire's rule for bad values (a flame its renderer draws): only NaN and infinity are
+    /// bad; an orbit that meets one keeps counting samples that draw nothing until its next
+    /// check (every [`JWF_CHECK_STEPS`] steps) restarts it; a final xform's bad value is a
+    /// sample that draws nothing.
+    jwf_bad_values: bool,
 }
+
+/// JWildfire checks each orbit for NaN and infinity once every this many iterations
+/// (`DefaultRenderThread`); in between a broken orbit's iterations count but draw nothing.
+pub const JWF_CHECK_STEPS: u64 = 1000;
 
 /// One linear-only xform as a table row, for stepping orbits in place: the chosen row of each
 /// orbit is read, no orbit moves. The arithmetic is the general path's, in its order.
@@ -193,8 +202,8 @@ impl Chaos {
             .map(|f| CompiledXform::new(f, f.opacity, rules));
         let final_xform = finals.next();
         let more_finals: Vec<CompiledXform> = finals.collect();
-        // flam3 resets points beyond 1e10; Fractorium only NaN. Flames that use a variation
-        // flam3 does not have follow Fractorium.
+        // flam3 resets points beyond 1e10; Fractorium and JWildfire only NaN (and infinity).
+        // Flames that use a variation flam3 does not have follow Fractorium.
         let fractorium = flame
             .xforms
             .iter()
@@ -204,7 +213,8 @@ impl Chaos {
         let mut xforms = xforms;
         let mut final_xform = final_xform;
         let mut more_finals = more_finals;
-        if fractorium {
+        let jwf_bad_values = flame.renders_as_jwildfire();
+        if fractorium || jwf_bad_values {
             for x in xforms
                 .iter_mut()
                 .chain(final_xform.as_mut())
@@ -269,6 +279,7 @@ impl Chaos {
             projection: Projection::of(flame),
             tables,
             xaos,
+            jwf_bad_values,
         })
     }
 

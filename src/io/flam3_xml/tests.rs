@@ -450,6 +450,32 @@ fn jwildfire_variation_used_twice() {
     assert_eq!(back.xforms[0].vars, x.vars);
 }
 
+/// A `pre_` variation JWildfire's file marks with priority 0 runs among the regular ones on a
+/// copy JWildfire then throws away: it draws nothing, so it is no variation here, and it is
+/// written back as it was read. Marked -1, it stays a pre_ variation.
+#[test]
+fn jwildfire_pre_variation_of_priority_zero_does_nothing() {
+    let text = r#"<flame version="JWildfire V7.30"><xform weight="1" pre_blur="1.18" pre_blur_fx_priority="0" bubble="0.2" bubble_fx_priority="0" coefs="1 0 0 1 0 0"/><xform weight="1" pre_blur="0.5" pre_blur_fx_priority="-1" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let forms = |i: usize| -> Vec<(Form, f64)> {
+        f.xforms[i]
+            .vars
+            .iter()
+            .map(|v| (v.form, v.weight))
+            .collect()
+    };
+    assert_eq!(forms(0), [(Form::Regular, 0.2)]);
+    assert_eq!(forms(1), [(Form::Pre, 0.5)]);
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f.clone()],
+    });
+    assert!(out.contains("pre_blur=\"1.18\""), "{out}");
+    assert!(out.contains("pre_blur_fx_priority=\"0\""), "{out}");
+    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
+}
+
 #[test]
 fn a_second_curve_for_one_target_is_skipped_with_a_warning() {
     use crate::flame::keyframes::{FlameParam, Key, Target};

@@ -317,11 +317,31 @@ fn variation_attr(
 
 /// JWildfire marks a variation used before (< 0) or after (> 0) the others with
 /// NAME_fx_priority (NAME#k#_fx_priority for a further use): the variation and its
-/// parameters change form.
+/// parameters change form. A `pre_` variation marked 0 runs among the regular ones, where
+/// JWildfire hands it a copy of the sum so far as the point to change and keeps nothing of
+/// what it changes there: it draws nothing, so it is kept as an attribute, not a variation
+/// (and written back as it was read).
 fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending) {
     for a in attrs {
         let (base, instance) = split_jwf_index(a.name).unwrap_or((a.name.to_string(), 0));
         if let Some(name) = base.strip_suffix("_fx_priority")
+            && let Ok(p) = parse_number(a.value.trim())
+            && p == 0.0
+            && let Some((id, Form::Pre)) = variations::parse_name(name)
+        {
+            let weight_name = a.name.strip_suffix("_fx_priority").unwrap_or(name);
+            let at = (0..x.vars.len()).find(|&i| {
+                x.vars[i].id == id && x.vars[i].form == Form::Pre && st.instances[i] == instance
+            });
+            if let Some(i) = at
+                && let Some(w) = attrs.iter().find(|b| b.name == weight_name)
+            {
+                x.vars.remove(i);
+                st.instances.remove(i);
+                x.extra_attrs
+                    .push((weight_name.to_string(), w.value.to_string()));
+            }
+        } else if let Some(name) = base.strip_suffix("_fx_priority")
             && let Ok(p) = parse_number(a.value.trim())
             && p != 0.0
             && let Some((id, Form::Regular)) = variations::parse_name(name)
