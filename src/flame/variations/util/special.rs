@@ -1,6 +1,8 @@
 //! Special functions: the error function, ln Γ, the Bessel function J₁, Jacobi's elliptic
 //! functions (with Fractorium's coarse tolerance) and an accurate acosh.
 
+#![allow(clippy::excessive_precision)] // fdlibm's published erf coefficients, kept verbatim
+
 use crate::flame::fastmath;
 use std::f64::consts::{LN_2, PI, TAU};
 
