@@ -15,6 +15,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("barycentroid", barycentroid)
+        .batch(super::inline_batch!(barycentroid))
         .params(&[
             p("barycentroid_a", 1.0),
             p("barycentroid_b", 0.0),
@@ -23,9 +24,11 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("blade3D", blade3d)
+        .batch(super::inline_batch!(blade3d))
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
     VarDef::new("blob2", blob2)
+        .batch(super::inline_batch!(blob2))
         .params(&[
             p("blob2_mode", 0.5),
             p("blob2_n", 1.0),
@@ -39,6 +42,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_blob2),
     VarDef::new("blob3D", blob3d)
+        .batch(super::inline_batch!(blob3d))
         .params(&[
             p("blob3D_low", 0.0),
             p("blob3D_high", 1.0),
@@ -56,6 +60,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("bubbleT3D", bubble_t3d)
+        .batch(super::inline_batch!(bubble_t3d))
         .params(&[
             // Each evaluation walks the stripes one by one.
             p_int("bubbleT3D_number_of_stripes", 0.0, -1000.0, 1000.0).limited(),
@@ -69,10 +74,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::WRITES_Z)
         .prepare(prep_bubble_t3d),
     VarDef::new("cubic3D", cubic3d)
+        .batch(super::inline_batch!(cubic3d))
         .params(&[p("cubic3D_xpand", 0.25), p("cubic3D_style", 0.0)])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(cubic3d_prepare),
     VarDef::new("cubicLattice_3D", cubic_lattice_3d)
+        .batch(super::inline_batch!(cubic_lattice_3d))
         .params(&[
             p("cubicLattice_3D_xpand", 0.2),
             p_int("cubicLattice_3D_style", 1.0, 1.0, 2.0),
@@ -80,14 +87,17 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(cubic_lattice_3d_prepare),
     VarDef::new("depth", depth)
+        .batch(super::inline_batch!(depth))
         .params(&[p("depth_power", 1.0)])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("disc3d", disc3d)
+        .batch(super::inline_batch!(disc3d))
         .params(&[p("disc3d_pi", PI)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("ennepers", ennepers),
+    VarDef::new("ennepers", ennepers).batch(super::inline_batch!(ennepers)),
     VarDef::new("heat", heat)
+        .batch(super::inline_batch!(heat))
         .params(&[
             p("heat_theta_period", 1.0),
             p("heat_theta_phase", 0.0),
@@ -103,10 +113,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(heat_prepare),
     VarDef::new("helicoid", helicoid)
+        .batch(super::inline_batch!(helicoid))
         .params(&[p("helicoid_frequency", 1.0)])
         .needs(need::SQRT | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("helix", helix)
+        .batch(super::inline_batch!(helix))
         .params(&[p("helix_frequency", 1.0), p("helix_width", 0.5)])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("hemisphere", hemisphere)
@@ -114,9 +126,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::WRITES_Z),
     VarDef::new("ho", ho)
+        .batch(super::inline_batch!(ho))
         .params(&[p("ho_xpow", 3.0), p("ho_ypow", 3.0), p("ho_zpow", 3.0)])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("mobius_strip", mobius_strip)
+        .batch(super::inline_batch!(mobius_strip))
         .params(&[
             p("mobius_strip_radius", 2.0),
             p("mobius_strip_width", 1.0),
@@ -127,6 +141,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(prep_mobius_strip),
     VarDef::new("octagon", octagon)
+        .batch(super::inline_batch!(octagon))
         .params(&[
             p("octagon_x", 0.0),
             p("octagon_y", 0.0),
@@ -134,6 +149,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("popcorn2_3D", popcorn2_3d)
+        .batch(super::inline_batch!(popcorn2_3d))
         .params(&[
             p("popcorn2_3D_x", 0.1),
             p("popcorn2_3D_y", 0.1),
@@ -144,6 +160,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(prep_popcorn2_3d),
     VarDef::new("pRose3D", prose3d)
+        .batch(super::inline_batch!(prose3d))
         .params(&[
             p_nonzero("pRose3D_l", 1.0, -INF, INF),
             p("pRose3D_k", 3.0),
@@ -166,6 +183,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::WRITES_Z)
         .prepare(prose3d_prep),
     VarDef::new("psphere", psphere)
+        .batch(super::inline_batch!(psphere))
         .params(&[p("psphere_zscale", 0.0)])
         .flags(flag::WRITES_Z)
         .prepare(psphere_prep),
@@ -181,9 +199,11 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
     VarDef::new("svf", svf)
+        .batch(super::inline_batch!(svf))
         .params(&[p("svf_n", 2.0)])
         .flags(flag::WRITES_Z),
     VarDef::new("taurus", taurus)
+        .batch(super::inline_batch!(taurus))
         .params(&[
             p("taurus_r", 3.0),
             p("taurus_n", 5.0),

@@ -27,6 +27,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .sum(),
     VarDef::new("blur_heart", blur_heart)
+        .batch(super::inline_batch!(blur_heart))
         .params(&[
             p("blur_heart_p", 0.5),
             p("blur_heart_a", -0.6),
@@ -43,6 +44,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_blur_linear),
     VarDef::new("blur_pixelize", blur_pixelize)
+        .batch(super::inline_batch!(blur_pixelize))
         .params(&[
             p_range("blur_pixelize_size", 0.1, f64::EPSILON, f64::INFINITY),
             p("blur_pixelize_scale", 1.0),
@@ -50,9 +52,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_blur_pixelize),
     VarDef::new("blur_square", blur_square)
+        .batch(super::inline_batch!(blur_square))
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("circleblur", circleblur)
+        .batch(super::inline_batch!(circleblur))
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("gaussian", gaussian)
@@ -79,10 +83,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("sphereblur", sphereblur)
+        .batch(super::inline_batch!(sphereblur))
         .params(&[p_range("sphereblur_power", 1.0, 0.0, INF)])
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
     VarDef::new("square3D", square3d)
+        .batch(super::inline_batch!(square3d))
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
     VarDef::new("starblur", starblur)
@@ -95,6 +101,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(starblur_prep)
         .sum(),
     VarDef::new("starblur2", starblur2)
+        .batch(super::inline_batch!(starblur2))
         .params(&[
             p("starblur2_power", 5.0),
             p("starblur2_range", 0.401_622_831_772_454_56),

@@ -14,6 +14,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("bcircle", bcircle)
+        .batch(super::inline_batch!(bcircle))
         .params(&[p("bcircle_scale", 1.0), p("bcircle_borderwidth", 0.0)])
         .flags(flag::RANDOM)
         .prepare(prep_bcircle),
@@ -28,6 +29,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC | flag::COMPAT),
     VarDef::new("circlecrop2", circlecrop2)
+        .batch(super::inline_batch!(circlecrop2))
         .params(&[
             p("circlecrop2_inner", 0.5),
             p("circlecrop2_outer", 1.0),
@@ -36,9 +38,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(prep_circlecrop2),
     VarDef::new("circlesplit", circlesplit)
+        .batch(super::inline_batch!(circlesplit))
         .params(&[p("circlesplit_radius", 1.0), p("circlesplit_split", 0.5)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
     VarDef::new("crob", crob)
+        .batch(super::inline_batch!(crob))
         .params(&[
             p("crob_top", -1.0),
             p("crob_bottom", 1.0),
@@ -63,6 +67,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(crop_prepare),
     VarDef::new("cropn", cropn)
+        .batch(super::inline_batch!(cropn))
         .params(&[
             p("cropn_power", 5.0),
             p("cropn_radius", 1.0),
@@ -73,6 +78,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(cropn_prepare),
     VarDef::new("hexcrop", hexcrop)
+        .batch(super::inline_batch!(hexcrop))
         .params(&[
             p("hexcrop_scale_x", 1.0),
             p("hexcrop_scale_y", 1.0),
@@ -83,6 +89,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_ACC | flag::WRITES_ACC)
         .prepare(hexcrop_prepare),
     VarDef::new("octapol", octapol)
+        .batch(super::inline_batch!(octapol))
         .params(&[
             p("octapol_polarweight", 0.0),
             p("octapol_radius", 1.0),
@@ -92,6 +99,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(prep_octapol),
     VarDef::new("post_smartcrop", post_smartcrop)
+        .batch(super::inline_batch!(post_smartcrop))
         .params(&[
             p("post_smartcrop_power", 4.0),
             p("post_smartcrop_radius", 1.0),
@@ -116,6 +124,7 @@ pub(super) static DEFS: &[VarDef] = &[
         )
         .prepare(prep_post_smartcrop),
     VarDef::new("vignette", vignette)
+        .batch(super::inline_batch!(vignette))
         .params(&[
             p("vignette_posx", 0.0),
             p("vignette_posy", 0.0),

@@ -14,6 +14,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("concentric", concentric)
+        .batch(super::inline_batch!(concentric))
         .params(&[
             p("concentric_radius", 1.0),
             p_nonzero("concentric_density", 10.0, f64::NEG_INFINITY, f64::INFINITY),
@@ -23,14 +24,17 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z | flag::WRITES_ACC)
         .sum(),
     VarDef::new("coth_spiral", coth_spiral)
+        .batch(super::inline_batch!(coth_spiral))
         .params(&[p("coth_spiral_a", 4.0)])
         .flags(flag::RANDOM),
     VarDef::new("line", line)
+        .batch(super::inline_batch!(line))
         .params(&[p("line_delta", 0.0), p("line_phi", 0.0)])
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum()
         .prepare(prep_line),
     VarDef::new("Lissajous", lissajous)
+        .batch(super::inline_batch!(lissajous))
         .params(&[
             p("Lissajous_tmin", -PI),
             p("Lissajous_tmax", PI),
@@ -43,6 +47,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("pie3D", pie3d)
+        .batch(super::inline_batch!(pie3d))
         .params(&[
             p_int_nonzero("pie3D_slices", 6.0, 1.0, INF),
             p_cyclic("pie3D_rotation", 0.5, 0.0, TAU),
@@ -51,6 +56,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
     VarDef::new("randCubes", rand_cubes)
+        .batch(super::inline_batch!(rand_cubes))
         .params(&[
             p("randCubes_blockSize", 1.0),
             p("randCubes_blockHeight", 1.0),
@@ -61,6 +67,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::WRITES_ACC)
         .sum(),
     VarDef::new("Spirograph", spirograph)
+        .batch(super::inline_batch!(spirograph))
         .params(&[
             p("Spirograph_a", 3.0),
             p("Spirograph_b", 2.0),
@@ -75,6 +82,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("SuperShape3D", super_shape3d)
+        .batch(super::inline_batch!(super_shape3d))
         .params(&[
             p("SuperShape3D_rho", 9.9),
             p("SuperShape3D_phi", 2.5),
@@ -97,9 +105,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(super_shape3d_prep)
         .sum(),
     VarDef::new("tanh_spiral", tanh_spiral)
+        .batch(super::inline_batch!(tanh_spiral))
         .params(&[p("tanh_spiral_a", 4.0)])
         .flags(flag::RANDOM),
     VarDef::new("waffle", waffle)
+        .batch(super::inline_batch!(waffle))
         .params(&[
             p_nonzero("waffle_slices", 6.0, f64::NEG_INFINITY, f64::INFINITY),
             p("waffle_xthickness", 0.5),

@@ -40,6 +40,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
     VarDef::new("depth_blur", depth_blur)
+        .batch(super::inline_batch!(depth_blur))
         .params(&[
             p("depth_blur_power", 5.0),
             p("depth_blur_range", 0.401623),
@@ -50,6 +51,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(depth_blur_prepare),
     VarDef::new("depth_blur2", depth_blur2)
+        .batch(super::inline_batch!(depth_blur2))
         .params(depth2_params!(
             "depth_blur2",
             p("depth_blur2_power", 5.0),
@@ -58,6 +60,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(depth_blur2_prepare),
     VarDef::new("depth_gaussian", depth_gaussian)
+        .batch(super::inline_batch!(depth_gaussian))
         .params(&[
             p("depth_gaussian_blur", 1.0),
             p("depth_gaussian_radius", 1.0),
@@ -65,10 +68,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM),
     VarDef::new("depth_gaussian2", depth_gaussian2)
+        .batch(super::inline_batch!(depth_gaussian2))
         .params(depth2_params!("depth_gaussian2"))
         .flags(flag::RANDOM)
         .prepare(depth_gaussian2_prepare),
     VarDef::new("depth_ngon", depth_ngon)
+        .batch(super::inline_batch!(depth_ngon))
         .params(&[
             p("depth_ngon_power", 5.0),
             p("depth_ngon_blur", 1.0),
@@ -78,11 +83,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(depth_ngon_prepare),
     VarDef::new("depth_ngon2", depth_ngon2)
+        .batch(super::inline_batch!(depth_ngon2))
         .params(depth2_params!("depth_ngon2", p("depth_ngon2_power", 5.0)))
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(depth_ngon2_prepare),
     VarDef::new("depth_sine", depth_sine)
+        .batch(super::inline_batch!(depth_sine))
         .params(&[
             p_range("depth_sine_power", 1.0, 0.0, INF),
             p("depth_sine_blur", 1.0),
@@ -91,6 +98,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM),
     VarDef::new("depth_sine2", depth_sine2)
+        .batch(super::inline_batch!(depth_sine2))
         .params(depth2_params!(
             "depth_sine2",
             p_range("depth_sine2_power", 1.0, 0.0, INF)
@@ -98,6 +106,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(depth_sine2_prepare),
     VarDef::new("falloff", falloff)
+        .batch(super::inline_batch!(falloff))
         .params(&[
             p_range("falloff_scatter", 1.0, f64::EPSILON, INF),
             p_range("falloff_mindist", 0.5, 0.0, INF),
@@ -131,6 +140,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR),
     VarDef::new("falloff3", falloff3)
+        .batch(super::inline_batch!(falloff3))
         .params(&[
             p_int("falloff3_blur_type", 0.0, 0.0, 3.0),
             p_int("falloff3_blur_shape", 0.0, 0.0, 1.0),
@@ -149,6 +159,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR),
     VarDef::new("farblur", farblur)
+        .batch(super::inline_batch!(farblur))
         .params(&[
             p("farblur_x", 1.0),
             p("farblur_y", 1.0),
@@ -159,6 +170,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
     VarDef::new("rblur", rblur)
+        .batch(super::inline_batch!(rblur))
         .params(&[
             p("rblur_strength", 1.0),
             p("rblur_offset", 1.0),

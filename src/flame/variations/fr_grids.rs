@@ -17,6 +17,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("boarders2", boarders2)
+        .batch(super::inline_batch!(boarders2))
         .params(&[
             p("boarders2_c", 0.5),
             p("boarders2_left", 0.5),
@@ -36,6 +37,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_bwraps),
     VarDef::new("bwraps_rand", bwraps_rand)
+        .batch(super::inline_batch!(bwraps_rand))
         .params(&[
             p("bwraps_rand_cellsize", 1.0),
             p("bwraps_rand_space", 0.0),
@@ -47,6 +49,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(prep_bwraps_rand),
     VarDef::new("checks", checks)
+        .batch(super::inline_batch!(checks))
         .params(&[
             p("checks_x", 0.5),
             p("checks_y", 0.5),
@@ -56,6 +59,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_checks),
     VarDef::new("Circle_Rand", circle_rand_hash)
+        .batch(super::inline_batch!(circle_rand_hash))
         .params(&[
             p("Circle_Rand_X", 10.0),
             p("Circle_Rand_Y", 10.0),
@@ -65,17 +69,20 @@ pub(super) static DEFS: &[VarDef] = &[
             p("Circle_Rand_seed", 1.0),
         ])
         .flags(flag::RANDOM),
-    VarDef::new("CircleLinear", circle_linear).params(&[
-        p_nonzero("CircleLinear_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
-        p("CircleLinear_K", 0.5),
-        p("CircleLinear_Dens1", 0.5),
-        p("CircleLinear_Dens2", 0.5),
-        p("CircleLinear_Reverse", 1.0),
-        p("CircleLinear_X", 10.0),
-        p("CircleLinear_Y", 10.0),
-        p_int("CircleLinear_Seed", 0.0, f64::NEG_INFINITY, f64::INFINITY),
-    ]),
+    VarDef::new("CircleLinear", circle_linear)
+        .batch(super::inline_batch!(circle_linear))
+        .params(&[
+            p_nonzero("CircleLinear_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
+            p("CircleLinear_K", 0.5),
+            p("CircleLinear_Dens1", 0.5),
+            p("CircleLinear_Dens2", 0.5),
+            p("CircleLinear_Reverse", 1.0),
+            p("CircleLinear_X", 10.0),
+            p("CircleLinear_Y", 10.0),
+            p_int("CircleLinear_Seed", 0.0, f64::NEG_INFINITY, f64::INFINITY),
+        ]),
     VarDef::new("CircleRand", circle_rand)
+        .batch(super::inline_batch!(circle_rand))
         .params(&[
             p_nonzero("CircleRand_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
             p("CircleRand_Dens", 0.5),
@@ -86,6 +93,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .sum(),
     VarDef::new("CircleTrans1", circle_trans1)
+        .batch(super::inline_batch!(circle_trans1))
         .params(&[
             p_nonzero("CircleTrans1_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
             p("CircleTrans1_Dens", 0.5),
@@ -106,17 +114,21 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_crackle),
     VarDef::new("crackle2", crackle2)
+        .batch(super::inline_batch!(crackle2))
         .params(&[p_range("crackle2_cellsize", 1.0, 0.0001, f64::INFINITY)])
         .flags(flag::RANDOM),
-    VarDef::new("dust", dust).params(&[
-        p_nonzero("dust_density", 5.0, NEG_INF, INF),
-        p("dust_distortion", 1.0),
-        p("dust_power", 1.0),
-    ]),
+    VarDef::new("dust", dust)
+        .batch(super::inline_batch!(dust))
+        .params(&[
+            p_nonzero("dust_density", 5.0, NEG_INF, INF),
+            p("dust_distortion", 1.0),
+            p("dust_power", 1.0),
+        ]),
     VarDef::new("gnarly", gnarly)
+        .batch(super::inline_batch!(gnarly))
         .params(&[p("gnarly_cellsize", 1.0), p("gnarly_twist", 1.0)])
         .prepare(gnarly_prepare),
-    VarDef::new("gridout", gridout),
+    VarDef::new("gridout", gridout).batch(super::inline_batch!(gridout)),
     VarDef::new("modulusx", modulus::<0>)
         .params(&[p("modulusx_x", 1.0), p("modulusx_shift", 0.0)])
         .prepare(prep_modulus),
@@ -134,6 +146,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(shredlin_prep),
     VarDef::new("SplitBrdr", split_brdr)
+        .batch(super::inline_batch!(split_brdr))
         .params(&[
             p("SplitBrdr_x", 0.25),
             p("SplitBrdr_y", 0.25),
@@ -142,16 +155,19 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ)
         .flags(flag::RANDOM),
-    VarDef::new("squares", squares).params(&[
-        p("squares_cellsize", 0.0),
-        p_range("squares_min", 0.0, 0.0, INF),
-        p_range("squares_max", 10.0, 0.0, INF),
-        p("squares_num", 10.0),
-        p("squares_seed", 1.0),
-        p("squares_zero", 0.5),
-        p("squares_zero_seed", 1.0),
-    ]),
+    VarDef::new("squares", squares)
+        .batch(super::inline_batch!(squares))
+        .params(&[
+            p("squares_cellsize", 0.0),
+            p_range("squares_min", 0.0, 0.0, INF),
+            p_range("squares_max", 10.0, 0.0, INF),
+            p("squares_num", 10.0),
+            p("squares_seed", 1.0),
+            p("squares_zero", 0.5),
+            p("squares_zero_seed", 1.0),
+        ]),
     VarDef::new("sschecks", sschecks)
+        .batch(super::inline_batch!(sschecks))
         .params(&[
             p("sschecks_x", 0.5),
             p("sschecks_y", 0.5),
@@ -175,13 +191,15 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(super::inline_batch!(tile_log))
         .params(&[p("tile_log_spread", 1.0)])
         .flags(flag::RANDOM),
-    VarDef::new("Voron", voron).params(&[
-        p("Voron_K", 0.99),
-        p_nonzero("Voron_Step", 0.25, f64::NEG_INFINITY, f64::INFINITY),
-        p_int("Voron_Num", 1.0, 1.0, 25.0),
-        p_int("Voron_XSeed", 3.0, f64::NEG_INFINITY, f64::INFINITY),
-        p_int("Voron_YSeed", 7.0, f64::NEG_INFINITY, f64::INFINITY),
-    ]),
+    VarDef::new("Voron", voron)
+        .batch(super::inline_batch!(voron))
+        .params(&[
+            p("Voron_K", 0.99),
+            p_nonzero("Voron_Step", 0.25, f64::NEG_INFINITY, f64::INFINITY),
+            p_int("Voron_Num", 1.0, 1.0, 25.0),
+            p_int("Voron_XSeed", 3.0, f64::NEG_INFINITY, f64::INFINITY),
+            p_int("Voron_YSeed", 7.0, f64::NEG_INFINITY, f64::INFINITY),
+        ]),
 ];
 
 /// Derived values: |c|, |c|·|left|, |c| + |c|·|right| (zeros replaced by ε).

@@ -13,9 +13,11 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hex_modulus", hex_modulus)
+        .batch(super::inline_batch!(hex_modulus))
         .params(&[p("hex_modulus_size", 1.0)])
         .prepare(hex_modulus_prepare),
     VarDef::new("hex_rand", hex_rand)
+        .batch(super::inline_batch!(hex_rand))
         .params(&[
             p("hex_rand_x", 10.0),
             p("hex_rand_y", 10.0),
@@ -26,6 +28,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM),
     VarDef::new("hexaplay3D", hexaplay3d)
+        .batch(super::inline_batch!(hexaplay3d))
         .params(&[
             p("hexaplay3D_majp", 1.0),
             p("hexaplay3D_scale", 0.25),
@@ -50,6 +53,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(hexes_prepare),
     VarDef::new("hexnix3D", hexnix3d)
+        .batch(super::inline_batch!(hexnix3d))
         .params(&[
             p("hexnix3D_majp", 1.0),
             p("hexnix3D_scale", 0.25),
@@ -68,6 +72,7 @@ pub(super) static DEFS: &[VarDef] = &[
         )
         .prepare(hexnix3d_prepare),
     VarDef::new("xtrb", xtrb)
+        .batch(super::inline_batch!(xtrb))
         .params(&[
             p_int_nonzero("xtrb_power", 2.0, f64::NEG_INFINITY, f64::INFINITY),
             p("xtrb_radius", 1.0),

@@ -13,6 +13,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hypercrop", hypercrop)
+        .batch(super::inline_batch!(hypercrop))
         .params(&[
             p("hypercrop_n", 4.0),
             p("hypercrop_rad", 1.0),
@@ -22,11 +23,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(hypercrop_prepare),
     VarDef::new("hypershift", hypershift)
+        .batch(super::inline_batch!(hypershift))
         .params(&[p("hypershift_shift", 0.01)])
         .needs(need::SUMSQ)
         .flags(flag::WRITES_ACC | flag::COMPAT)
         .prepare(hypershift_prepare),
     VarDef::new("hypershift2", hypershift2)
+        .batch(super::inline_batch!(hypershift2))
         .params(&[
             p_range("hypershift2_p", 3.0, 2.0, INF),
             p_range("hypershift2_q", 7.0, 2.0, INF),
@@ -34,6 +37,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC | flag::COMPAT)
         .prepare(hypershift2_prepare),
     VarDef::new("hypertile", hypertile)
+        .batch(super::inline_batch!(hypertile))
         .params(&[
             p("hypertile_p", 3.0),
             p("hypertile_q", 7.0),
@@ -41,6 +45,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(hypertile_prepare),
     VarDef::new("hypertile1", hypertile1)
+        .batch(super::inline_batch!(hypertile1))
         .params(&[p("hypertile1_p", 3.0), p("hypertile1_q", 7.0)])
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(hypertile12_prepare),
@@ -50,6 +55,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(hypertile12_prepare),
     VarDef::new("hypertile3D", hypertile3d)
+        .batch(super::inline_batch!(hypertile3d))
         .params(&[
             p_int("hypertile3D_p", 3.0, 3.0, I32_MAX),
             p_int("hypertile3D_q", 7.0, 3.0, I32_MAX),
@@ -59,6 +65,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(hypertile3d_prepare),
     VarDef::new("hypertile3D1", hypertile3d1)
+        .batch(super::inline_batch!(hypertile3d1))
         .params(&[
             p_int("hypertile3D1_p", 3.0, 3.0, I32_MAX),
             p_int("hypertile3D1_q", 7.0, 3.0, I32_MAX),
@@ -67,6 +74,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(hypertile3d12_prepare),
     VarDef::new("hypertile3D2", hypertile3d2)
+        .batch(super::inline_batch!(hypertile3d2))
         .params(&[
             p_int("hypertile3D2_p", 3.0, 3.0, I32_MAX),
             p_int("hypertile3D2_q", 7.0, 3.0, I32_MAX),
@@ -91,9 +99,11 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(prep_poincare),
     VarDef::new("poincare2", poincare2)
+        .batch(super::inline_batch!(poincare2))
         .params(&[p("poincare2_p", 3.0), p("poincare2_q", 7.0)])
         .prepare(prep_poincare2),
     VarDef::new("poincare3D", poincare3d)
+        .batch(super::inline_batch!(poincare3d))
         .params(&[
             p("poincare3D_r", 0.0),
             p("poincare3D_a", 0.0),

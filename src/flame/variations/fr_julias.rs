@@ -20,6 +20,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(julia3d_prepare),
     VarDef::new("julia3Dq", julia3dq)
+        .batch(super::inline_batch!(julia3dq))
         .params(&[
             p_int_nonzero("julia3Dq_power", 3.0, NEG_INF, INF),
             p_int_nonzero("julia3Dq_divisor", 2.0, NEG_INF, INF),
@@ -34,6 +35,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_julia3dz),
     VarDef::new("Juliac", juliac)
+        .batch(super::inline_batch!(juliac))
         .params(&[
             p("Juliac_re", 2.0),
             p("Juliac_im", 1.0),
@@ -43,6 +45,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_juliac),
     VarDef::new("julian2", julian2)
+        .batch(super::inline_batch!(julian2))
         .params(&[
             p("julian2_a", 1.0),
             p("julian2_b", 0.0),
@@ -56,6 +59,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(prep_julian2),
     VarDef::new("julian3Dx", julian3dx)
+        .batch(super::inline_batch!(julian3dx))
         .params(&[
             p("julian3Dx_dist", 1.0),
             p_int_nonzero("julian3Dx_power", 2.0, NEG_INF, INF),
@@ -70,6 +74,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_julian3dx),
     VarDef::new("juliaNab", julianab)
+        .batch(super::inline_batch!(julianab))
         .params(&[
             p("juliaNab_n", 1.0),
             p("juliaNab_a", 1.0),
@@ -80,6 +85,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(prep_julianab),
     VarDef::new("juliaq", juliaq)
+        .batch(super::inline_batch!(juliaq))
         .params(&[
             p_nonzero("juliaq_power", 3.0, NEG_INF, INF),
             p_nonzero("juliaq_divisor", 2.0, NEG_INF, INF),
@@ -88,11 +94,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_juliaq),
     VarDef::new("npolar", npolar)
+        .batch(super::inline_batch!(npolar))
         .params(&[p("npolar_parity", 0.0), p("npolar_n", 1.0)])
         .needs(need::SUMSQ | need::ATAN_XY | need::ATAN_YX)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(prep_npolar),
     VarDef::new("phoenix_julia", phoenix_julia)
+        .batch(super::inline_batch!(phoenix_julia))
         .params(&[
             p("phoenix_julia_power", 2.0),
             p("phoenix_julia_dist", 1.0),
@@ -103,6 +111,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::COMPAT)
         .prepare(prep_phoenix_julia),
     VarDef::new("pow_block", pow_block)
+        .batch(super::inline_batch!(pow_block))
         .params(&[
             p("pow_block_numerator", 3.0),
             p("pow_block_denominator", 2.0),
@@ -114,11 +123,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(prep_pow_block),
     VarDef::new("SphericalN", spherical_n)
+        .batch(super::inline_batch!(spherical_n))
         .params(&[p("SphericalN_Power", 1.0), p("SphericalN_Dist", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(spherical_n_prep),
     VarDef::new("wavesn", wavesn)
+        .batch(super::inline_batch!(wavesn))
         .params(&[
             p("wavesn_freqx", 2.0),
             p("wavesn_freqy", 2.0),

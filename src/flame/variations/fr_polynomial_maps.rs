@@ -14,6 +14,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("fourth", fourth)
+        .batch(super::inline_batch!(fourth))
         .params(&[
             p_cyclic("fourth_spin", PI, 0.0, TAU),
             p("fourth_space", 0.0),
@@ -22,9 +23,14 @@ pub(super) static DEFS: &[VarDef] = &[
             p("fourth_y", 0.0),
         ])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES),
-    VarDef::new("henon", henon).params(&[p("henon_a", 0.5), p("henon_b", 1.0)]),
-    VarDef::new("lozi", lozi).params(&[p("lozi_a", 0.5), p("lozi_b", 1.0)]),
+    VarDef::new("henon", henon)
+        .batch(super::inline_batch!(henon))
+        .params(&[p("henon_a", 0.5), p("henon_b", 1.0)]),
+    VarDef::new("lozi", lozi)
+        .batch(super::inline_batch!(lozi))
+        .params(&[p("lozi_a", 0.5), p("lozi_b", 1.0)]),
     VarDef::new("mcarpet", mcarpet)
+        .batch(super::inline_batch!(mcarpet))
         .params(&[
             p("mcarpet_x", 0.0),
             p("mcarpet_y", 0.0),
@@ -33,6 +39,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ),
     VarDef::new("polynomial", polynomial)
+        .batch(super::inline_batch!(polynomial))
         .params(&[
             p("polynomial_powx", 1.0),
             p("polynomial_powy", 1.0),
@@ -42,32 +49,37 @@ pub(super) static DEFS: &[VarDef] = &[
             p("polynomial_scy", 0.0),
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("projective", projective).params(&[
-        p("projective_A", 0.0),
-        p("projective_B", 0.0),
-        p("projective_C", 1.0),
-        p("projective_A1", 1.0),
-        p("projective_B1", 0.0),
-        p("projective_C1", 0.0),
-        p("projective_A2", 0.0),
-        p("projective_B2", 1.0),
-        p("projective_C2", 0.0),
-    ]),
-    VarDef::new("q_ode", q_ode).params(&[
-        p("q_ode01", 1.0),
-        p("q_ode02", -1.0),
-        p("q_ode03", 0.0),
-        p("q_ode04", 0.0),
-        p("q_ode05", 0.0),
-        p("q_ode06", 0.0),
-        p("q_ode07", 1.0),
-        p("q_ode08", 0.0),
-        p("q_ode09", 0.0),
-        p("q_ode10", 0.0),
-        p("q_ode11", 0.0),
-        p("q_ode12", 0.0),
-    ]),
+    VarDef::new("projective", projective)
+        .batch(super::inline_batch!(projective))
+        .params(&[
+            p("projective_A", 0.0),
+            p("projective_B", 0.0),
+            p("projective_C", 1.0),
+            p("projective_A1", 1.0),
+            p("projective_B1", 0.0),
+            p("projective_C1", 0.0),
+            p("projective_A2", 0.0),
+            p("projective_B2", 1.0),
+            p("projective_C2", 0.0),
+        ]),
+    VarDef::new("q_ode", q_ode)
+        .batch(super::inline_batch!(q_ode))
+        .params(&[
+            p("q_ode01", 1.0),
+            p("q_ode02", -1.0),
+            p("q_ode03", 0.0),
+            p("q_ode04", 0.0),
+            p("q_ode05", 0.0),
+            p("q_ode06", 0.0),
+            p("q_ode07", 1.0),
+            p("q_ode08", 0.0),
+            p("q_ode09", 0.0),
+            p("q_ode10", 0.0),
+            p("q_ode11", 0.0),
+            p("q_ode12", 0.0),
+        ]),
     VarDef::new("unicorngaloshen", unicorngaloshen)
+        .batch(super::inline_batch!(unicorngaloshen))
         .params(&[
             p("unicorngaloshen_mult_x", 1.0),
             p("unicorngaloshen_mult_y", 1.0),
@@ -80,6 +92,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(unicorngaloshen_prep),
     VarDef::new("xheart", xheart)
+        .batch(super::inline_batch!(xheart))
         .params(&[p("xheart_angle", 0.0), p("xheart_ratio", 0.0)])
         .needs(need::SUMSQ)
         .prepare(xheart_prep),

@@ -39,18 +39,27 @@ macro_rules! shape_params {
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("cardioid", cardioid)
+        .batch(super::inline_batch!(cardioid))
         .params(&[p("cardioid_a", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES | need::ATAN_YX),
-    VarDef::new("circlize", circlize).params(&[p("circlize_hole", 0.0)]),
-    VarDef::new("circlize2", circlize2).params(&[p("circlize2_hole", 0.0)]),
+    VarDef::new("circlize", circlize)
+        .batch(super::inline_batch!(circlize))
+        .params(&[p("circlize_hole", 0.0)]),
+    VarDef::new("circlize2", circlize2)
+        .batch(super::inline_batch!(circlize2))
+        .params(&[p("circlize2_hole", 0.0)]),
     VarDef::new("circus", circus)
+        .batch(super::inline_batch!(circus))
         .params(&[p("circus_scale", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES),
     VarDef::new("collideoscope", collideoscope)
+        .batch(super::inline_batch!(collideoscope))
         .params(&[p("collideoscope_a", 0.0), p("collideoscope_num", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(prep_collideoscope),
-    VarDef::new("curvature", curvature).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
+    VarDef::new("curvature", curvature)
+        .batch(super::inline_batch!(curvature))
+        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
     VarDef::new("epispiral", epispiral)
         .batch(super::inline_batch!(epispiral))
         .params(&[
@@ -61,8 +70,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(epispiral_prepare),
-    VarDef::new("fdisc", fdisc).needs(need::SQRT | need::ATAN_YX),
+    VarDef::new("fdisc", fdisc)
+        .batch(super::inline_batch!(fdisc))
+        .needs(need::SQRT | need::ATAN_YX),
     VarDef::new("flowerdb", flowerdb)
+        .batch(super::inline_batch!(flowerdb))
         .params(&[
             p("flowerdb_petals", 6.0),
             p("flowerdb_petal_split", 0.0),
@@ -74,8 +86,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .batch(super::inline_batch!(hole))
         .params(&[p("hole_a", 1.0), p_int("hole_inside", 0.0, 0.0, 1.0)])
         .needs(need::SQRT | need::ANGLES | need::ATAN_YX),
-    VarDef::new("idisc", idisc).needs(need::SQRT | need::ATAN_YX),
+    VarDef::new("idisc", idisc)
+        .batch(super::inline_batch!(idisc))
+        .needs(need::SQRT | need::ATAN_YX),
     VarDef::new("Kaleidoscope", kaleidoscope)
+        .batch(super::inline_batch!(kaleidoscope))
         .params(&[
             p("Kaleidoscope_pull", 0.0),
             p("Kaleidoscope_rotate", 1.0),
@@ -85,6 +100,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(prep_kaleidoscope),
     VarDef::new("lazyjess", lazyjess)
+        .batch(super::inline_batch!(lazyjess))
         .params(&[
             p_nonzero("lazyjess_n", 4.0, 2.0, INF),
             p("lazyjess_spin", PI),
@@ -94,6 +110,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .prepare(prep_lazyjess),
     VarDef::new("lazyTravis", lazytravis)
+        .batch(super::inline_batch!(lazytravis))
         .params(&[
             p_cyclic("lazyTravis_spin_in", 1.0, 0.0, 2.0),
             p_cyclic("lazyTravis_spin_out", 0.0, 0.0, 2.0),
@@ -103,10 +120,12 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("panorama1", panorama::<false>).needs(need::SUMSQ),
     VarDef::new("panorama2", panorama::<true>).needs(need::SUMSQ | need::SQRT),
     VarDef::new("scry2", scry2)
+        .batch(super::inline_batch!(scry2))
         .params(&[p("scry2_power", 4.0)])
         .needs(need::SUMSQ)
         .prepare(scry2_prep),
     VarDef::new("shredrad", shredrad)
+        .batch(super::inline_batch!(shredrad))
         .params(&[
             p_nonzero("shredrad_n", 4.0, -INF, INF),
             p_range("shredrad_width", 0.5, -1.0, 1.0),
@@ -115,6 +134,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(shredrad_prep),
     VarDef::new("smartshape", smartshape)
+        .batch(super::inline_batch!(smartshape))
         .params(&[
             p_range("smartshape_power", 4.0, 2.0, INF),
             p("smartshape_roundstr", 0.0),
@@ -124,15 +144,20 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(smartshape_prep),
-    VarDef::new("squarize", squarize).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
+    VarDef::new("squarize", squarize)
+        .batch(super::inline_batch!(squarize))
+        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
     VarDef::new("squish", squish)
+        .batch(super::inline_batch!(squish))
         .params(&[p_nonzero("squish_power", 2.0, 2.0, INF)])
         .flags(flag::RANDOM)
         .prepare(squish_prep),
     VarDef::new("swirl3", swirl3)
+        .batch(super::inline_batch!(swirl3))
         .params(&[p("swirl3_shift", 0.5)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
     VarDef::new("swirl3r", swirl3r)
+        .batch(super::inline_batch!(swirl3r))
         .params(&[
             p("swirl3r_shift", 0.5),
             p_range("swirl3r_min", 0.5, 0.0, f64::INFINITY),
@@ -141,6 +166,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(swirl3r_prep),
     VarDef::new("target", target)
+        .batch(super::inline_batch!(target))
         .params(&[
             p_cyclic("target_even", 0.0, 0.0, TAU),
             p_cyclic("target_odd", 0.0, 0.0, TAU),
@@ -149,6 +175,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(target_prep),
     VarDef::new("target0", target0)
+        .batch(super::inline_batch!(target0))
         .params(&[
             p_cyclic("target0_even", 0.0, 0.0, TAU),
             p_cyclic("target0_odd", 0.0, 0.0, TAU),
@@ -157,6 +184,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(target_prep),
     VarDef::new("target2", target2)
+        .batch(super::inline_batch!(target2))
         .params(&[
             p_cyclic("target2_even", 0.0, 0.0, TAU),
             p_cyclic("target2_odd", 0.0, 0.0, TAU),
@@ -165,21 +193,29 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(target_prep),
-    VarDef::new("unpolar", unpolar).prepare(unpolar_prep),
+    VarDef::new("unpolar", unpolar)
+        .batch(super::inline_batch!(unpolar))
+        .prepare(unpolar_prep),
     VarDef::new("w", w_var)
+        .batch(super::inline_batch!(w_var))
         .params(SHAPE_W)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(shape_prep_w),
-    VarDef::new("wdisc", wdisc).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
+    VarDef::new("wdisc", wdisc)
+        .batch(super::inline_batch!(wdisc))
+        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
     VarDef::new("x", x_var)
+        .batch(super::inline_batch!(x_var))
         .params(SHAPE_X)
         .needs(need::SUMSQ | need::ATAN_YX)
         .prepare(shape_prep),
     VarDef::new("y", y_var)
+        .batch(super::inline_batch!(y_var))
         .params(SHAPE_Y)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(shape_prep),
     VarDef::new("z", z_var)
+        .batch(super::inline_batch!(z_var))
         .params(SHAPE_Z)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(shape_prep),

@@ -14,6 +14,7 @@ use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("hex_truchet", hex_truchet)
+        .batch(super::inline_batch!(hex_truchet))
         .params(&[
             p_range("hex_truchet_size", 1.0, -1.0, 1.0),
             p("hex_truchet_side", 1.0),
@@ -22,6 +23,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(hex_truchet_prepare),
     VarDef::new("Truchet", truchet)
+        .batch(super::inline_batch!(truchet))
         .params(&[
             p("Truchet_extended", 1.0),
             p_nonzero("Truchet_exponent", 2.0, f64::EPSILON, 2.0),
@@ -33,6 +35,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::COMPAT)
         .prepare(truchet_prep),
     VarDef::new("Truchet_fill", truchet_fill)
+        .batch(super::inline_batch!(truchet_fill))
         .params(&[
             p_cyclic("Truchet_fill_exponent", 2.0, 0.001, 2.0),
             p_cyclic("Truchet_fill_arc_width", 0.5, 0.001, 1.0),
@@ -40,6 +43,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(truchet_fill_prep),
     VarDef::new("Truchet_glyph", truchet_glyph)
+        .batch(super::inline_batch!(truchet_glyph))
         .params(&[
             p_range("Truchet_glyph_exponent", 2.0, 0.0, 2.0),
             p("Truchet_glyph_arc_width", 0.5),
@@ -50,6 +54,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(truchet_glyph_prep),
     VarDef::new("Truchet_hex_crop", truchet_hex_crop)
+        .batch(super::inline_batch!(truchet_hex_crop))
         .params(&[
             p_range("Truchet_hex_crop_wd", 0.2, 0.0, 5.0),
             p_int("Truchet_hex_crop_mode", 0.0, 0.0, 2.0),
@@ -63,6 +68,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .prepare(truchet_hex_crop_prep),
     VarDef::new("Truchet_hex_fill", truchet_hex_fill)
+        .batch(super::inline_batch!(truchet_hex_fill))
         .params(&[
             p_int("Truchet_hex_fill_n", 3.0, f64::NEG_INFINITY, f64::INFINITY),
             p_int("Truchet_hex_fill_flipx", 1.0, 0.0, 1.0),
@@ -79,6 +85,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(truchet_hex_fill_prep),
     VarDef::new("Truchet_inv", truchet_inv)
+        .batch(super::inline_batch!(truchet_inv))
         .params(&[
             p_range("Truchet_inv_exponent", 2.0, 0.0, 2.0),
             p("Truchet_inv_arc_width", 0.5),
@@ -87,7 +94,9 @@ pub(super) static DEFS: &[VarDef] = &[
             p("Truchet_inv_seed", 1.0),
         ])
         .prepare(truchet_inv_prep),
-    VarDef::new("truchet_knot", truchet_knot).flags(flag::RANDOM),
+    VarDef::new("truchet_knot", truchet_knot)
+        .batch(super::inline_batch!(truchet_knot))
+        .flags(flag::RANDOM),
 ];
 
 /// The tile rotation of hex_truchet: 60° as Fractorium writes it, to four decimals (not π/3).
