@@ -85,6 +85,15 @@ macro_rules! inline_batch {
 }
 pub(crate) use inline_batch;
 
+/// `VarDef::new(name, f)` with [`inline_batch!`]`(f)` as its batch loop.
+macro_rules! inlined {
+    ($name:expr, $f:ident) => {
+        $crate::flame::variations::VarDef::new($name, $f)
+            .batch($crate::flame::variations::inline_batch!($f))
+    };
+}
+pub(crate) use inlined;
+
 /// The batch inputs of the points `pts` (their derived quantities computed as the chaos loop
 /// computes them), as owned columns: x, y, z, r², r, x/r, y/r, atan2(x, y), atan2(y, x),
 /// colour.

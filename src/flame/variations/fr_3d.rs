@@ -14,8 +14,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("barycentroid", barycentroid)
-        .batch(super::inline_batch!(barycentroid))
+    super::inlined!("barycentroid", barycentroid)
         .params(&[
             p("barycentroid_a", 1.0),
             p("barycentroid_b", 0.0),
@@ -23,12 +22,10 @@ pub(super) static DEFS: &[VarDef] = &[
             p("barycentroid_d", 1.0),
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("blade3D", blade3d)
-        .batch(super::inline_batch!(blade3d))
+    super::inlined!("blade3D", blade3d)
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("blob2", blob2)
-        .batch(super::inline_batch!(blob2))
+    super::inlined!("blob2", blob2)
         .params(&[
             p("blob2_mode", 0.5),
             p("blob2_n", 1.0),
@@ -41,8 +38,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ANGLES | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_blob2),
-    VarDef::new("blob3D", blob3d)
-        .batch(super::inline_batch!(blob3d))
+    super::inlined!("blob3D", blob3d)
         .params(&[
             p("blob3D_low", 0.0),
             p("blob3D_high", 1.0),
@@ -50,8 +46,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES | need::ATAN_XY)
         .flags(flag::WRITES_Z),
-    VarDef::new("bubble2", bubble2)
-        .batch(super::inline_batch!(bubble2))
+    super::inlined!("bubble2", bubble2)
         .params(&[
             p("bubble2_x", 1.0),
             p("bubble2_y", 1.0),
@@ -59,8 +54,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("bubbleT3D", bubble_t3d)
-        .batch(super::inline_batch!(bubble_t3d))
+    super::inlined!("bubbleT3D", bubble_t3d)
         .params(&[
             // Each evaluation walks the stripes one by one.
             p_int("bubbleT3D_number_of_stripes", 0.0, -1000.0, 1000.0).limited(),
@@ -73,31 +67,26 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::WRITES_Z)
         .prepare(prep_bubble_t3d),
-    VarDef::new("cubic3D", cubic3d)
-        .batch(super::inline_batch!(cubic3d))
+    super::inlined!("cubic3D", cubic3d)
         .params(&[p("cubic3D_xpand", 0.25), p("cubic3D_style", 0.0)])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(cubic3d_prepare),
-    VarDef::new("cubicLattice_3D", cubic_lattice_3d)
-        .batch(super::inline_batch!(cubic_lattice_3d))
+    super::inlined!("cubicLattice_3D", cubic_lattice_3d)
         .params(&[
             p("cubicLattice_3D_xpand", 0.2),
             p_int("cubicLattice_3D_style", 1.0, 1.0, 2.0),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(cubic_lattice_3d_prepare),
-    VarDef::new("depth", depth)
-        .batch(super::inline_batch!(depth))
+    super::inlined!("depth", depth)
         .params(&[p("depth_power", 1.0)])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("disc3d", disc3d)
-        .batch(super::inline_batch!(disc3d))
+    super::inlined!("disc3d", disc3d)
         .params(&[p("disc3d_pi", PI)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("ennepers", ennepers).batch(super::inline_batch!(ennepers)),
-    VarDef::new("heat", heat)
-        .batch(super::inline_batch!(heat))
+    super::inlined!("ennepers", ennepers),
+    super::inlined!("heat", heat)
         .params(&[
             p("heat_theta_period", 1.0),
             p("heat_theta_phase", 0.0),
@@ -112,25 +101,20 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(heat_prepare),
-    VarDef::new("helicoid", helicoid)
-        .batch(super::inline_batch!(helicoid))
+    super::inlined!("helicoid", helicoid)
         .params(&[p("helicoid_frequency", 1.0)])
         .needs(need::SQRT | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("helix", helix)
-        .batch(super::inline_batch!(helix))
+    super::inlined!("helix", helix)
         .params(&[p("helix_frequency", 1.0), p("helix_width", 0.5)])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("hemisphere", hemisphere)
-        .batch(super::inline_batch!(hemisphere))
+    super::inlined!("hemisphere", hemisphere)
         .needs(need::SUMSQ)
         .flags(flag::WRITES_Z),
-    VarDef::new("ho", ho)
-        .batch(super::inline_batch!(ho))
+    super::inlined!("ho", ho)
         .params(&[p("ho_xpow", 3.0), p("ho_ypow", 3.0), p("ho_zpow", 3.0)])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("mobius_strip", mobius_strip)
-        .batch(super::inline_batch!(mobius_strip))
+    super::inlined!("mobius_strip", mobius_strip)
         .params(&[
             p("mobius_strip_radius", 2.0),
             p("mobius_strip_width", 1.0),
@@ -140,16 +124,14 @@ pub(super) static DEFS: &[VarDef] = &[
             p("mobius_strip_rotate_y", 0.0),
         ])
         .prepare(prep_mobius_strip),
-    VarDef::new("octagon", octagon)
-        .batch(super::inline_batch!(octagon))
+    super::inlined!("octagon", octagon)
         .params(&[
             p("octagon_x", 0.0),
             p("octagon_y", 0.0),
             p("octagon_z", 0.0),
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("popcorn2_3D", popcorn2_3d)
-        .batch(super::inline_batch!(popcorn2_3d))
+    super::inlined!("popcorn2_3D", popcorn2_3d)
         .params(&[
             p("popcorn2_3D_x", 0.1),
             p("popcorn2_3D_y", 0.1),
@@ -159,8 +141,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_ACC)
         .prepare(prep_popcorn2_3d),
-    VarDef::new("pRose3D", prose3d)
-        .batch(super::inline_batch!(prose3d))
+    super::inlined!("pRose3D", prose3d)
         .params(&[
             p_nonzero("pRose3D_l", 1.0, -INF, INF),
             p("pRose3D_k", 3.0),
@@ -182,28 +163,22 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::WRITES_Z)
         .prepare(prose3d_prep),
-    VarDef::new("psphere", psphere)
-        .batch(super::inline_batch!(psphere))
+    super::inlined!("psphere", psphere)
         .params(&[p("psphere_zscale", 0.0)])
         .flags(flag::WRITES_Z)
         .prepare(psphere_prep),
-    VarDef::new("sinusoidal3D", sinusoidal3d)
-        .batch(super::inline_batch!(sinusoidal3d))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("splits3D", splits3d)
-        .batch(super::inline_batch!(splits3d))
+    super::inlined!("sinusoidal3D", sinusoidal3d).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("splits3D", splits3d)
         .params(&[
             p("splits3D_x", 0.0),
             p("splits3D_y", 0.0),
             p("splits3D_z", 0.0),
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("svf", svf)
-        .batch(super::inline_batch!(svf))
+    super::inlined!("svf", svf)
         .params(&[p("svf_n", 2.0)])
         .flags(flag::WRITES_Z),
-    VarDef::new("taurus", taurus)
-        .batch(super::inline_batch!(taurus))
+    super::inlined!("taurus", taurus)
         .params(&[
             p("taurus_r", 3.0),
             p("taurus_n", 5.0),

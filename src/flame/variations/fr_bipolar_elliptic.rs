@@ -16,99 +16,78 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("bCollide", bcollide)
-        .batch(super::inline_batch!(bcollide))
+    super::inlined!("bCollide", bcollide)
         .params(&[
             p_cyclic("bCollide_a", 0.0, -1.0, 1.0),
             p_range("bCollide_num", 1.0, f64::EPSILON, 2147483647.0),
         ])
         .prepare(prep_bcollide),
-    VarDef::new("block", block)
-        .batch(super::inline_batch!(block))
-        .needs(need::SUMSQ),
-    VarDef::new("blocky", blocky)
-        .batch(super::inline_batch!(blocky))
+    super::inlined!("block", block).needs(need::SUMSQ),
+    super::inlined!("blocky", blocky)
         .params(&[
             p("blocky_x", 1.0),
             p("blocky_y", 1.0),
             p_nonzero("blocky_mp", 4.0, f64::NEG_INFINITY, f64::INFINITY),
         ])
         .needs(need::SUMSQ),
-    VarDef::new("bMod", bmod)
-        .batch(super::inline_batch!(bmod))
-        .params(&[
-            p_range("bMod_radius", 1.0, 0.0, f64::INFINITY),
-            p_cyclic("bMod_distance", 0.0, 0.0, 2.0),
-        ]),
-    VarDef::new("bSwirl", bswirl)
-        .batch(super::inline_batch!(bswirl))
-        .params(&[p("bSwirl_in", 0.0), p("bSwirl_out", 0.0)]),
-    VarDef::new("bTransform", btransform)
-        .batch(super::inline_batch!(btransform))
-        .params(&[
-            p("bTransform_rotate", 0.0),
-            p_nonzero("bTransform_power", 0.0, 1.0, 2147483647.0),
-            p("bTransform_move", 0.0),
-            p("bTransform_split", 0.0),
-        ]),
-    VarDef::new("deltaa", deltaa).batch(super::inline_batch!(deltaa)),
-    VarDef::new("eCollide", e_collide)
-        .batch(super::inline_batch!(e_collide))
+    super::inlined!("bMod", bmod).params(&[
+        p_range("bMod_radius", 1.0, 0.0, f64::INFINITY),
+        p_cyclic("bMod_distance", 0.0, 0.0, 2.0),
+    ]),
+    super::inlined!("bSwirl", bswirl).params(&[p("bSwirl_in", 0.0), p("bSwirl_out", 0.0)]),
+    super::inlined!("bTransform", btransform).params(&[
+        p("bTransform_rotate", 0.0),
+        p_nonzero("bTransform_power", 0.0, 1.0, 2147483647.0),
+        p("bTransform_move", 0.0),
+        p("bTransform_split", 0.0),
+    ]),
+    super::inlined!("deltaa", deltaa),
+    super::inlined!("eCollide", e_collide)
         .params(&[
             p_cyclic("eCollide_a", 0.0, 0.0, 1.0),
             p_int("eCollide_num", 1.0, 1.0, 2147483647.0),
         ])
         .needs(need::SUMSQ)
         .prepare(e_collide_prepare),
-    VarDef::new("eJulia", e_julia)
-        .batch(super::inline_batch!(e_julia))
+    super::inlined!("eJulia", e_julia)
         .params(&[p_int_nonzero("eJulia_power", 2.0, NEG_INF, INF)])
         .needs(need::SUMSQ)
         .flags(flag::RANDOM),
-    VarDef::new("eMod", e_mod)
-        .batch(super::inline_batch!(e_mod))
+    super::inlined!("eMod", e_mod)
         .params(&[
             p_range("eMod_radius", 1.0, 0.0, INF),
             p_cyclic("eMod_distance", 0.0, 0.0, 2.0),
         ])
         .needs(need::SUMSQ),
-    VarDef::new("eMotion", e_motion)
-        .batch(super::inline_batch!(e_motion))
+    super::inlined!("eMotion", e_motion)
         .params(&[
             p("eMotion_move", 0.0),
             p_cyclic("eMotion_rotate", 0.0, 0.0, TAU),
         ])
         .needs(need::SUMSQ),
-    VarDef::new("ePush", e_push)
-        .batch(super::inline_batch!(e_push))
+    super::inlined!("ePush", e_push)
         .params(&[
             p("ePush_push", 0.0),
             p("ePush_dist", 1.0),
             p_cyclic("ePush_rotate", 0.0, -PI, PI),
         ])
         .needs(need::SUMSQ),
-    VarDef::new("eRotate", e_rotate)
-        .batch(super::inline_batch!(e_rotate))
+    super::inlined!("eRotate", e_rotate)
         .params(&[p_cyclic("eRotate_rotate", 0.0, -PI, PI)])
         .needs(need::SUMSQ),
-    VarDef::new("eScale", e_scale)
-        .batch(super::inline_batch!(e_scale))
+    super::inlined!("eScale", e_scale)
         .params(&[
             p_nonzero("eScale_scale", 1.0, 0.0, 1.0),
             p_cyclic("eScale_angle", 0.0, 0.0, TAU),
         ])
         .needs(need::SUMSQ),
-    VarDef::new("eSwirl", e_swirl)
-        .batch(super::inline_batch!(e_swirl))
+    super::inlined!("eSwirl", e_swirl)
         .params(&[p("eSwirl_in", 0.0), p("eSwirl_out", 0.0)])
         .needs(need::SUMSQ),
-    VarDef::new("foci_3D", foci_3d)
-        .batch(super::inline_batch!(foci_3d))
+    super::inlined!("foci_3D", foci_3d)
         .needs(need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("foci_p", foci_p)
-        .batch(super::inline_batch!(foci_p))
-        .params(&[p("foci_p_c1", 0.5), p("foci_p_c2", 0.5)]),
+    super::inlined!("foci_p", foci_p).params(&[p("foci_p_c1", 0.5), p("foci_p_c2", 0.5)]),
 ];
 
 /// Derived values: num/π, π/num, π·a/num.

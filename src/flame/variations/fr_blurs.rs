@@ -18,16 +18,13 @@ use crate::flame::fastmath::FastTrig;
 const NBLUR_MAX: f64 = 1000.0;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("blur3D", blur3d)
-        .batch(super::inline_batch!(blur3d))
+    super::inlined!("blur3D", blur3d)
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
-    VarDef::new("blur_circle", blur_circle)
-        .batch(super::inline_batch!(blur_circle))
+    super::inlined!("blur_circle", blur_circle)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .sum(),
-    VarDef::new("blur_heart", blur_heart)
-        .batch(super::inline_batch!(blur_heart))
+    super::inlined!("blur_heart", blur_heart)
         .params(&[
             p("blur_heart_p", 0.5),
             p("blur_heart_a", -0.6),
@@ -35,35 +32,28 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("blur_linear", blur_linear)
-        .batch(super::inline_batch!(blur_linear))
+    super::inlined!("blur_linear", blur_linear)
         .params(&[
             p("blur_linear_length", 0.0),
             p_cyclic("blur_linear_angle", 0.0, 0.0, TAU),
         ])
         .flags(flag::RANDOM)
         .prepare(prep_blur_linear),
-    VarDef::new("blur_pixelize", blur_pixelize)
-        .batch(super::inline_batch!(blur_pixelize))
+    super::inlined!("blur_pixelize", blur_pixelize)
         .params(&[
             p_range("blur_pixelize_size", 0.1, f64::EPSILON, f64::INFINITY),
             p("blur_pixelize_scale", 1.0),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_blur_pixelize),
-    VarDef::new("blur_square", blur_square)
-        .batch(super::inline_batch!(blur_square))
+    super::inlined!("blur_square", blur_square)
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("circleblur", circleblur)
-        .batch(super::inline_batch!(circleblur))
+    super::inlined!("circleblur", circleblur)
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("gaussian", gaussian)
-        .batch(super::inline_batch!(gaussian))
-        .flags(flag::RANDOM),
-    VarDef::new("nBlur", nblur)
-        .batch(super::inline_batch!(nblur))
+    super::inlined!("gaussian", gaussian).flags(flag::RANDOM),
+    super::inlined!("nBlur", nblur)
         .params(&[
             p_int("nBlur_numEdges", 3.0, -NBLUR_MAX, NBLUR_MAX).limited(),
             p_int("nBlur_numStripes", 0.0, -NBLUR_MAX, NBLUR_MAX).limited(),
@@ -77,22 +67,18 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(prep_nblur),
-    VarDef::new("sineblur", sineblur)
-        .batch(super::inline_batch!(sineblur))
+    super::inlined!("sineblur", sineblur)
         .params(&[p_range("sineblur_power", 1.0, 0.0, INF)])
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("sphereblur", sphereblur)
-        .batch(super::inline_batch!(sphereblur))
+    super::inlined!("sphereblur", sphereblur)
         .params(&[p_range("sphereblur_power", 1.0, 0.0, INF)])
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
-    VarDef::new("square3D", square3d)
-        .batch(super::inline_batch!(square3d))
+    super::inlined!("square3D", square3d)
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
-    VarDef::new("starblur", starblur)
-        .batch(super::inline_batch!(starblur))
+    super::inlined!("starblur", starblur)
         .params(&[
             p("starblur_power", 5.0),
             p("starblur_range", 0.401_622_831_7),
@@ -100,8 +86,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM)
         .prepare(starblur_prep)
         .sum(),
-    VarDef::new("starblur2", starblur2)
-        .batch(super::inline_batch!(starblur2))
+    super::inlined!("starblur2", starblur2)
         .params(&[
             p("starblur2_power", 5.0),
             p("starblur2_range", 0.401_622_831_772_454_56),
@@ -111,8 +96,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(starblur2_prep),
-    VarDef::new("zblur", zblur)
-        .batch(super::inline_batch!(zblur))
+    super::inlined!("zblur", zblur)
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
 ];

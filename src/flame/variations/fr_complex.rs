@@ -13,20 +13,11 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("arcsech", arcsech)
-        .batch(super::inline_batch!(arcsech))
-        .prepare(prep_arcsech),
-    VarDef::new("arcsech2", arcsech2)
-        .batch(super::inline_batch!(arcsech2))
-        .prepare(prep_arcsech2),
-    VarDef::new("arcsinh", arcsinh)
-        .batch(super::inline_batch!(arcsinh))
-        .prepare(prep_arcsinh),
-    VarDef::new("arctanh", arctanh)
-        .batch(super::inline_batch!(arctanh))
-        .prepare(prep_arcsech),
-    VarDef::new("cpow2", cpow2)
-        .batch(super::inline_batch!(cpow2))
+    super::inlined!("arcsech", arcsech).prepare(prep_arcsech),
+    super::inlined!("arcsech2", arcsech2).prepare(prep_arcsech2),
+    super::inlined!("arcsinh", arcsinh).prepare(prep_arcsinh),
+    super::inlined!("arctanh", arctanh).prepare(prep_arcsech),
+    super::inlined!("cpow2", cpow2)
         .params(&[
             p("cpow2_r", 1.0),
             p("cpow2_a", 0.0),
@@ -36,8 +27,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_cpow2),
-    VarDef::new("cpow3", cpow3)
-        .batch(super::inline_batch!(cpow3))
+    super::inlined!("cpow3", cpow3)
         .params(&[
             p("cpow3_r", 1.0),
             p_nonzero("cpow3_d", 1.0, f64::NEG_INFINITY, f64::INFINITY),
@@ -47,8 +37,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_cpow3),
-    VarDef::new("dragonfire", dragonfire)
-        .batch(super::inline_batch!(dragonfire))
+    super::inlined!("dragonfire", dragonfire)
         .params(&[
             p("dragonfire_c1", 0.5),
             p("dragonfire_c2", 0.25),
@@ -60,48 +49,33 @@ pub(super) static DEFS: &[VarDef] = &[
             p("dragonfire_adjustedFuzzyScalar", 0.5),
         ])
         .prepare(dragonfire_prepare),
-    VarDef::new("erf", erf_var).batch(super::inline_batch!(erf_var)),
-    VarDef::new("excinis", excinis)
-        .batch(super::inline_batch!(excinis))
+    super::inlined!("erf", erf_var),
+    super::inlined!("excinis", excinis)
         .params(&[
             p("excinis_lengthscalar", 1.0),
             p_range("excinis_radiusFunc", 0.0, 0.0, 5.0),
             p("excinis_eps", 0.1),
         ])
         .needs(need::SUMSQ | need::SQRT),
-    VarDef::new("exp2", exp2).batch(super::inline_batch!(exp2)),
-    VarDef::new("expo", expo)
-        .batch(super::inline_batch!(expo))
+    super::inlined!("exp2", exp2),
+    super::inlined!("expo", expo)
         .params(&[p("expo_real", -1.0), p("expo_imaginary", 1.0)])
         .prepare(expo_prepare),
-    VarDef::new("fibonacci", fibonacci)
-        .batch(super::inline_batch!(fibonacci))
-        .prepare(fib_prepare),
-    VarDef::new("fibonacci2", fibonacci2)
-        .batch(super::inline_batch!(fibonacci2))
+    super::inlined!("fibonacci", fibonacci).prepare(fib_prepare),
+    super::inlined!("fibonacci2", fibonacci2)
         .params(&[p("fibonacci2_sc", 1.0), p("fibonacci2_sc2", 1.0)])
         .prepare(fib_prepare),
-    VarDef::new("gamma", gamma)
-        .batch(super::inline_batch!(gamma))
-        .needs(need::SQRT | need::ATAN_YX),
-    VarDef::new("jac_cn", jac_cn)
-        .batch(super::inline_batch!(jac_cn))
-        .params(&[p_range("jac_cn_k", 0.5, -1.0, 1.0)]),
-    VarDef::new("jac_dn", jac_dn)
-        .batch(super::inline_batch!(jac_dn))
-        .params(&[p_range("jac_dn_k", 0.5, -1.0, 1.0)]),
-    VarDef::new("jac_sn", jac_sn)
-        .batch(super::inline_batch!(jac_sn))
-        .params(&[p_range("jac_sn_k", 0.5, -1.0, 1.0)]),
-    VarDef::new("lens", lens).batch(super::inline_batch!(lens)),
-    VarDef::new("log_db", log_db)
-        .batch(super::inline_batch!(log_db))
+    super::inlined!("gamma", gamma).needs(need::SQRT | need::ATAN_YX),
+    super::inlined!("jac_cn", jac_cn).params(&[p_range("jac_cn_k", 0.5, -1.0, 1.0)]),
+    super::inlined!("jac_dn", jac_dn).params(&[p_range("jac_dn_k", 0.5, -1.0, 1.0)]),
+    super::inlined!("jac_sn", jac_sn).params(&[p_range("jac_sn_k", 0.5, -1.0, 1.0)]),
+    super::inlined!("lens", lens),
+    super::inlined!("log_db", log_db)
         .params(&[p("log_db_base", 1.0), p("log_db_fix_period", 1.0)])
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_log_db),
-    VarDef::new("MobiusN", mobius_n)
-        .batch(super::inline_batch!(mobius_n))
+    super::inlined!("MobiusN", mobius_n)
         .params(&[
             p("MobiusNRe_A", 1.0),
             p("MobiusNIm_A", 0.0),
@@ -117,30 +91,25 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_mobius_n),
-    VarDef::new("murl", murl)
-        .batch(super::inline_batch!(murl))
+    super::inlined!("murl", murl)
         .params(&[p("murl_c", 0.0), p_range("murl_power", 2.0, 2.0, INF)])
         .needs(need::SUMSQ | need::ATAN_YX)
         .prepare(prep_murl),
-    VarDef::new("murl2", murl2)
-        .batch(super::inline_batch!(murl2))
+    super::inlined!("murl2", murl2)
         .params(&[p_range("murl2_c", 0.0, -1.0, 1.0), p("murl2_power", 1.0)])
         .needs(need::SUMSQ | need::ATAN_YX)
         .prepare(prep_murl2),
-    VarDef::new("rational3", rational3)
-        .batch(super::inline_batch!(rational3))
-        .params(&[
-            p("rational3_t3", 1.0),
-            p("rational3_t2", 0.0),
-            p("rational3_t1", 0.0),
-            p("rational3_tc", 1.0),
-            p("rational3_b3", 0.0),
-            p("rational3_b2", 1.0),
-            p("rational3_b1", 0.0),
-            p("rational3_bc", 1.0),
-        ]),
-    VarDef::new("xerf", xerf)
-        .batch(super::inline_batch!(xerf))
+    super::inlined!("rational3", rational3).params(&[
+        p("rational3_t3", 1.0),
+        p("rational3_t2", 0.0),
+        p("rational3_t1", 0.0),
+        p("rational3_tc", 1.0),
+        p("rational3_b3", 0.0),
+        p("rational3_b2", 1.0),
+        p("rational3_b1", 0.0),
+        p("rational3_bc", 1.0),
+    ]),
+    super::inlined!("xerf", xerf)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
 ];

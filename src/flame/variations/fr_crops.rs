@@ -13,13 +13,11 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("bcircle", bcircle)
-        .batch(super::inline_batch!(bcircle))
+    super::inlined!("bcircle", bcircle)
         .params(&[p("bcircle_scale", 1.0), p("bcircle_borderwidth", 0.0)])
         .flags(flag::RANDOM)
         .prepare(prep_bcircle),
-    VarDef::new("circlecrop", circlecrop)
-        .batch(super::inline_batch!(circlecrop))
+    super::inlined!("circlecrop", circlecrop)
         .params(&[
             p("circlecrop_radius", 1.0),
             p("circlecrop_x", 0.0),
@@ -28,8 +26,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_range("circlecrop_zero", 1.0, 0.0, 1.0),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC | flag::COMPAT),
-    VarDef::new("circlecrop2", circlecrop2)
-        .batch(super::inline_batch!(circlecrop2))
+    super::inlined!("circlecrop2", circlecrop2)
         .params(&[
             p("circlecrop2_inner", 0.5),
             p("circlecrop2_outer", 1.0),
@@ -37,12 +34,10 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(prep_circlecrop2),
-    VarDef::new("circlesplit", circlesplit)
-        .batch(super::inline_batch!(circlesplit))
+    super::inlined!("circlesplit", circlesplit)
         .params(&[p("circlesplit_radius", 1.0), p("circlesplit_split", 0.5)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
-    VarDef::new("crob", crob)
-        .batch(super::inline_batch!(crob))
+    super::inlined!("crob", crob)
         .params(&[
             p("crob_top", -1.0),
             p("crob_bottom", 1.0),
@@ -54,8 +49,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(crob_prepare),
-    VarDef::new("crop", crop)
-        .batch(super::inline_batch!(crop))
+    super::inlined!("crop", crop)
         .params(&[
             p("crop_left", -1.0),
             p("crop_top", -1.0),
@@ -66,8 +60,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(crop_prepare),
-    VarDef::new("cropn", cropn)
-        .batch(super::inline_batch!(cropn))
+    super::inlined!("cropn", cropn)
         .params(&[
             p("cropn_power", 5.0),
             p("cropn_radius", 1.0),
@@ -77,8 +70,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ANGLES | need::ATAN_YX)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(cropn_prepare),
-    VarDef::new("hexcrop", hexcrop)
-        .batch(super::inline_batch!(hexcrop))
+    super::inlined!("hexcrop", hexcrop)
         .params(&[
             p("hexcrop_scale_x", 1.0),
             p("hexcrop_scale_y", 1.0),
@@ -88,8 +80,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_ACC | flag::WRITES_ACC)
         .prepare(hexcrop_prepare),
-    VarDef::new("octapol", octapol)
-        .batch(super::inline_batch!(octapol))
+    super::inlined!("octapol", octapol)
         .params(&[
             p("octapol_polarweight", 0.0),
             p("octapol_radius", 1.0),
@@ -98,8 +89,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(prep_octapol),
-    VarDef::new("post_smartcrop", post_smartcrop)
-        .batch(super::inline_batch!(post_smartcrop))
+    super::inlined!("post_smartcrop", post_smartcrop)
         .params(&[
             p("post_smartcrop_power", 4.0),
             p("post_smartcrop_radius", 1.0),
@@ -123,8 +113,7 @@ pub(super) static DEFS: &[VarDef] = &[
                 | flag::USES_COLOR,
         )
         .prepare(prep_post_smartcrop),
-    VarDef::new("vignette", vignette)
-        .batch(super::inline_batch!(vignette))
+    super::inlined!("vignette", vignette)
         .params(&[
             p("vignette_posx", 0.0),
             p("vignette_posy", 0.0),

@@ -13,8 +13,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("concentric", concentric)
-        .batch(super::inline_batch!(concentric))
+    super::inlined!("concentric", concentric)
         .params(&[
             p("concentric_radius", 1.0),
             p_nonzero("concentric_density", 10.0, f64::NEG_INFINITY, f64::INFINITY),
@@ -23,18 +22,15 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::WRITES_Z | flag::WRITES_ACC)
         .sum(),
-    VarDef::new("coth_spiral", coth_spiral)
-        .batch(super::inline_batch!(coth_spiral))
+    super::inlined!("coth_spiral", coth_spiral)
         .params(&[p("coth_spiral_a", 4.0)])
         .flags(flag::RANDOM),
-    VarDef::new("line", line)
-        .batch(super::inline_batch!(line))
+    super::inlined!("line", line)
         .params(&[p("line_delta", 0.0), p("line_phi", 0.0)])
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum()
         .prepare(prep_line),
-    VarDef::new("Lissajous", lissajous)
-        .batch(super::inline_batch!(lissajous))
+    super::inlined!("Lissajous", lissajous)
         .params(&[
             p("Lissajous_tmin", -PI),
             p("Lissajous_tmax", PI),
@@ -46,8 +42,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("pie3D", pie3d)
-        .batch(super::inline_batch!(pie3d))
+    super::inlined!("pie3D", pie3d)
         .params(&[
             p_int_nonzero("pie3D_slices", 6.0, 1.0, INF),
             p_cyclic("pie3D_rotation", 0.5, 0.0, TAU),
@@ -55,8 +50,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
-    VarDef::new("randCubes", rand_cubes)
-        .batch(super::inline_batch!(rand_cubes))
+    super::inlined!("randCubes", rand_cubes)
         .params(&[
             p("randCubes_blockSize", 1.0),
             p("randCubes_blockHeight", 1.0),
@@ -66,8 +60,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::WRITES_ACC)
         .sum(),
-    VarDef::new("Spirograph", spirograph)
-        .batch(super::inline_batch!(spirograph))
+    super::inlined!("Spirograph", spirograph)
         .params(&[
             p("Spirograph_a", 3.0),
             p("Spirograph_b", 2.0),
@@ -81,8 +74,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("SuperShape3D", super_shape3d)
-        .batch(super::inline_batch!(super_shape3d))
+    super::inlined!("SuperShape3D", super_shape3d)
         .params(&[
             p("SuperShape3D_rho", 9.9),
             p("SuperShape3D_phi", 2.5),
@@ -104,12 +96,10 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z)
         .prepare(super_shape3d_prep)
         .sum(),
-    VarDef::new("tanh_spiral", tanh_spiral)
-        .batch(super::inline_batch!(tanh_spiral))
+    super::inlined!("tanh_spiral", tanh_spiral)
         .params(&[p("tanh_spiral_a", 4.0)])
         .flags(flag::RANDOM),
-    VarDef::new("waffle", waffle)
-        .batch(super::inline_batch!(waffle))
+    super::inlined!("waffle", waffle)
         .params(&[
             p_nonzero("waffle_slices", 6.0, f64::NEG_INFINITY, f64::INFINITY),
             p("waffle_xthickness", 0.5),

@@ -13,8 +13,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("dc_bubble", dc_bubble)
-        .batch(super::inline_batch!(dc_bubble))
+    super::inlined!("dc_bubble", dc_bubble)
         .params(&[
             p("dc_bubble_centerx", 0.0),
             p("dc_bubble_centery", 0.0),
@@ -23,12 +22,10 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC)
         .prepare(dc_bubble_prepare),
-    VarDef::new("dc_carpet", dc_carpet)
-        .batch(super::inline_batch!(dc_carpet))
+    super::inlined!("dc_carpet", dc_carpet)
         .params(&[p("dc_carpet_origin", 0.0)])
         .flags(flag::RANDOM | flag::USES_AFFINE | flag::SETS_COLOR),
-    VarDef::new("dc_cube", dc_cube)
-        .batch(super::inline_batch!(dc_cube))
+    super::inlined!("dc_cube", dc_cube)
         .params(&[
             p("dc_cube_c1", 0.0),
             p("dc_cube_c2", 0.0),
@@ -43,8 +40,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR)
         .sum()
         .prepare(dc_cube_prepare),
-    VarDef::new("dc_cylinder", dc_cylinder)
-        .batch(super::inline_batch!(dc_cylinder))
+    super::inlined!("dc_cylinder", dc_cylinder)
         .params(&[
             p("dc_cylinder_offset", 0.0),
             p("dc_cylinder_angle", 0.0),
@@ -55,11 +51,8 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC)
         .prepare(dc_cylinder_prepare),
-    VarDef::new("dc_gridout", dc_gridout)
-        .batch(super::inline_batch!(dc_gridout))
-        .flags(flag::SETS_COLOR),
-    VarDef::new("dc_linear", dc_linear)
-        .batch(super::inline_batch!(dc_linear))
+    super::inlined!("dc_gridout", dc_gridout).flags(flag::SETS_COLOR),
+    super::inlined!("dc_linear", dc_linear)
         .params(&[
             p("dc_linear_offset", 0.0),
             p("dc_linear_angle", 0.0),
@@ -67,8 +60,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC)
         .prepare(dc_linear_prepare),
-    VarDef::new("dc_perlin", dc_perlin)
-        .batch(super::inline_batch!(dc_perlin))
+    super::inlined!("dc_perlin", dc_perlin)
         .params(&[
             p_int("dc_perlin_shape", 0.0, 0.0, 2.0),
             p_int("dc_perlin_map", 0.0, 0.0, 5.0),
@@ -87,15 +79,13 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::SETS_COLOR)
         .prepare(dc_perlin_prepare),
-    VarDef::new("dc_triangle", dc_triangle)
-        .batch(super::inline_batch!(dc_triangle))
+    super::inlined!("dc_triangle", dc_triangle)
         .params(&[
             p_range("dc_triangle_scatter_area", 0.0, -1.0, 1.0),
             p_int("dc_triangle_zero_edges", 0.0, 0.0, 1.0),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::USES_AFFINE | flag::SETS_COLOR),
-    VarDef::new("dc_ztransl", dc_ztransl)
-        .batch(super::inline_batch!(dc_ztransl))
+    super::inlined!("dc_ztransl", dc_ztransl)
         .params(&[
             p_range("dc_ztransl_x0", 0.0, 0.0, 1.0),
             p_range("dc_ztransl_x1", 1.0, 0.0, 1.0),
@@ -105,8 +95,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z | flag::USES_COLOR)
         .prepare(dc_ztransl_prepare),
-    VarDef::new("pixel_flow", pixel_flow)
-        .batch(super::inline_batch!(pixel_flow))
+    super::inlined!("pixel_flow", pixel_flow)
         .params(&[
             p("pixel_flow_angle", 90.0),
             p("pixel_flow_len", 0.1),

@@ -31,16 +31,14 @@ macro_rules! depth2_params {
 }
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("blur_zoom", blur_zoom)
-        .batch(super::inline_batch!(blur_zoom))
+    super::inlined!("blur_zoom", blur_zoom)
         .params(&[
             p("blur_zoom_length", 0.0),
             p("blur_zoom_x", 0.0),
             p("blur_zoom_y", 0.0),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("depth_blur", depth_blur)
-        .batch(super::inline_batch!(depth_blur))
+    super::inlined!("depth_blur", depth_blur)
         .params(&[
             p("depth_blur_power", 5.0),
             p("depth_blur_range", 0.401623),
@@ -50,8 +48,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM)
         .prepare(depth_blur_prepare),
-    VarDef::new("depth_blur2", depth_blur2)
-        .batch(super::inline_batch!(depth_blur2))
+    super::inlined!("depth_blur2", depth_blur2)
         .params(depth2_params!(
             "depth_blur2",
             p("depth_blur2_power", 5.0),
@@ -59,21 +56,18 @@ pub(super) static DEFS: &[VarDef] = &[
         ))
         .flags(flag::RANDOM)
         .prepare(depth_blur2_prepare),
-    VarDef::new("depth_gaussian", depth_gaussian)
-        .batch(super::inline_batch!(depth_gaussian))
+    super::inlined!("depth_gaussian", depth_gaussian)
         .params(&[
             p("depth_gaussian_blur", 1.0),
             p("depth_gaussian_radius", 1.0),
         ])
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM),
-    VarDef::new("depth_gaussian2", depth_gaussian2)
-        .batch(super::inline_batch!(depth_gaussian2))
+    super::inlined!("depth_gaussian2", depth_gaussian2)
         .params(depth2_params!("depth_gaussian2"))
         .flags(flag::RANDOM)
         .prepare(depth_gaussian2_prepare),
-    VarDef::new("depth_ngon", depth_ngon)
-        .batch(super::inline_batch!(depth_ngon))
+    super::inlined!("depth_ngon", depth_ngon)
         .params(&[
             p("depth_ngon_power", 5.0),
             p("depth_ngon_blur", 1.0),
@@ -82,14 +76,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM)
         .prepare(depth_ngon_prepare),
-    VarDef::new("depth_ngon2", depth_ngon2)
-        .batch(super::inline_batch!(depth_ngon2))
+    super::inlined!("depth_ngon2", depth_ngon2)
         .params(depth2_params!("depth_ngon2", p("depth_ngon2_power", 5.0)))
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(depth_ngon2_prepare),
-    VarDef::new("depth_sine", depth_sine)
-        .batch(super::inline_batch!(depth_sine))
+    super::inlined!("depth_sine", depth_sine)
         .params(&[
             p_range("depth_sine_power", 1.0, 0.0, INF),
             p("depth_sine_blur", 1.0),
@@ -97,16 +89,14 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM),
-    VarDef::new("depth_sine2", depth_sine2)
-        .batch(super::inline_batch!(depth_sine2))
+    super::inlined!("depth_sine2", depth_sine2)
         .params(depth2_params!(
             "depth_sine2",
             p_range("depth_sine2_power", 1.0, 0.0, INF)
         ))
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(depth_sine2_prepare),
-    VarDef::new("falloff", falloff)
-        .batch(super::inline_batch!(falloff))
+    super::inlined!("falloff", falloff)
         .params(&[
             p_range("falloff_scatter", 1.0, f64::EPSILON, INF),
             p_range("falloff_mindist", 0.5, 0.0, INF),
@@ -122,8 +112,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("falloff2", falloff2)
-        .batch(super::inline_batch!(falloff2))
+    super::inlined!("falloff2", falloff2)
         .params(&[
             p("falloff2_scatter", 1.0),
             p("falloff2_mindist", 0.5),
@@ -139,8 +128,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR),
-    VarDef::new("falloff3", falloff3)
-        .batch(super::inline_batch!(falloff3))
+    super::inlined!("falloff3", falloff3)
         .params(&[
             p_int("falloff3_blur_type", 0.0, 0.0, 3.0),
             p_int("falloff3_blur_shape", 0.0, 0.0, 1.0),
@@ -158,8 +146,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR),
-    VarDef::new("farblur", farblur)
-        .batch(super::inline_batch!(farblur))
+    super::inlined!("farblur", farblur)
         .params(&[
             p("farblur_x", 1.0),
             p("farblur_y", 1.0),
@@ -169,8 +156,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("farblur_z_origin", 0.0),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("rblur", rblur)
-        .batch(super::inline_batch!(rblur))
+    super::inlined!("rblur", rblur)
         .params(&[
             p("rblur_strength", 1.0),
             p("rblur_offset", 1.0),

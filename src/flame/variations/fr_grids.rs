@@ -16,8 +16,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("boarders2", boarders2)
-        .batch(super::inline_batch!(boarders2))
+    super::inlined!("boarders2", boarders2)
         .params(&[
             p("boarders2_c", 0.5),
             p("boarders2_left", 0.5),
@@ -25,8 +24,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(prep_boarders2),
-    VarDef::new("bwraps", bwraps)
-        .batch(super::inline_batch!(bwraps))
+    super::inlined!("bwraps", bwraps)
         .params(&[
             p("bwraps_cellsize", 1.0),
             p("bwraps_space", 0.0),
@@ -36,8 +34,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_bwraps),
-    VarDef::new("bwraps_rand", bwraps_rand)
-        .batch(super::inline_batch!(bwraps_rand))
+    super::inlined!("bwraps_rand", bwraps_rand)
         .params(&[
             p("bwraps_rand_cellsize", 1.0),
             p("bwraps_rand_space", 0.0),
@@ -48,8 +45,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("bwraps_rand_seed", 1.0),
         ])
         .prepare(prep_bwraps_rand),
-    VarDef::new("checks", checks)
-        .batch(super::inline_batch!(checks))
+    super::inlined!("checks", checks)
         .params(&[
             p("checks_x", 0.5),
             p("checks_y", 0.5),
@@ -58,8 +54,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_checks),
-    VarDef::new("Circle_Rand", circle_rand_hash)
-        .batch(super::inline_batch!(circle_rand_hash))
+    super::inlined!("Circle_Rand", circle_rand_hash)
         .params(&[
             p("Circle_Rand_X", 10.0),
             p("Circle_Rand_Y", 10.0),
@@ -69,20 +64,17 @@ pub(super) static DEFS: &[VarDef] = &[
             p("Circle_Rand_seed", 1.0),
         ])
         .flags(flag::RANDOM),
-    VarDef::new("CircleLinear", circle_linear)
-        .batch(super::inline_batch!(circle_linear))
-        .params(&[
-            p_nonzero("CircleLinear_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
-            p("CircleLinear_K", 0.5),
-            p("CircleLinear_Dens1", 0.5),
-            p("CircleLinear_Dens2", 0.5),
-            p("CircleLinear_Reverse", 1.0),
-            p("CircleLinear_X", 10.0),
-            p("CircleLinear_Y", 10.0),
-            p_int("CircleLinear_Seed", 0.0, f64::NEG_INFINITY, f64::INFINITY),
-        ]),
-    VarDef::new("CircleRand", circle_rand)
-        .batch(super::inline_batch!(circle_rand))
+    super::inlined!("CircleLinear", circle_linear).params(&[
+        p_nonzero("CircleLinear_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
+        p("CircleLinear_K", 0.5),
+        p("CircleLinear_Dens1", 0.5),
+        p("CircleLinear_Dens2", 0.5),
+        p("CircleLinear_Reverse", 1.0),
+        p("CircleLinear_X", 10.0),
+        p("CircleLinear_Y", 10.0),
+        p_int("CircleLinear_Seed", 0.0, f64::NEG_INFINITY, f64::INFINITY),
+    ]),
+    super::inlined!("CircleRand", circle_rand)
         .params(&[
             p_nonzero("CircleRand_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
             p("CircleRand_Dens", 0.5),
@@ -92,8 +84,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .sum(),
-    VarDef::new("CircleTrans1", circle_trans1)
-        .batch(super::inline_batch!(circle_trans1))
+    super::inlined!("CircleTrans1", circle_trans1)
         .params(&[
             p_nonzero("CircleTrans1_Sc", 1.0, f64::NEG_INFINITY, f64::INFINITY),
             p("CircleTrans1_Dens", 0.5),
@@ -102,8 +93,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_int("CircleTrans1_Seed", 0.0, f64::NEG_INFINITY, f64::INFINITY),
         ])
         .flags(flag::RANDOM),
-    VarDef::new("crackle", crackle)
-        .batch(super::inline_batch!(crackle))
+    super::inlined!("crackle", crackle)
         .params(&[
             p_range("crackle_cellsize", 1.0, 0.0001, f64::INFINITY),
             p("crackle_power", 0.2),
@@ -113,30 +103,25 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(prep_crackle),
-    VarDef::new("crackle2", crackle2)
-        .batch(super::inline_batch!(crackle2))
+    super::inlined!("crackle2", crackle2)
         .params(&[p_range("crackle2_cellsize", 1.0, 0.0001, f64::INFINITY)])
         .flags(flag::RANDOM),
-    VarDef::new("dust", dust)
-        .batch(super::inline_batch!(dust))
-        .params(&[
-            p_nonzero("dust_density", 5.0, NEG_INF, INF),
-            p("dust_distortion", 1.0),
-            p("dust_power", 1.0),
-        ]),
-    VarDef::new("gnarly", gnarly)
-        .batch(super::inline_batch!(gnarly))
+    super::inlined!("dust", dust).params(&[
+        p_nonzero("dust_density", 5.0, NEG_INF, INF),
+        p("dust_distortion", 1.0),
+        p("dust_power", 1.0),
+    ]),
+    super::inlined!("gnarly", gnarly)
         .params(&[p("gnarly_cellsize", 1.0), p("gnarly_twist", 1.0)])
         .prepare(gnarly_prepare),
-    VarDef::new("gridout", gridout).batch(super::inline_batch!(gridout)),
+    super::inlined!("gridout", gridout),
     VarDef::new("modulusx", modulus::<0>)
         .params(&[p("modulusx_x", 1.0), p("modulusx_shift", 0.0)])
         .prepare(prep_modulus),
     VarDef::new("modulusy", modulus::<1>)
         .params(&[p("modulusy_y", 1.0), p("modulusy_shift", 0.0)])
         .prepare(prep_modulus),
-    VarDef::new("shredlin", shredlin)
-        .batch(super::inline_batch!(shredlin))
+    super::inlined!("shredlin", shredlin)
         .params(&[
             p_nonzero("shredlin_xdistance", 1.0, -INF, INF),
             p_range("shredlin_xwidth", 0.5, -1.0, 1.0),
@@ -145,8 +130,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(shredlin_prep),
-    VarDef::new("SplitBrdr", split_brdr)
-        .batch(super::inline_batch!(split_brdr))
+    super::inlined!("SplitBrdr", split_brdr)
         .params(&[
             p("SplitBrdr_x", 0.25),
             p("SplitBrdr_y", 0.25),
@@ -155,19 +139,16 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ)
         .flags(flag::RANDOM),
-    VarDef::new("squares", squares)
-        .batch(super::inline_batch!(squares))
-        .params(&[
-            p("squares_cellsize", 0.0),
-            p_range("squares_min", 0.0, 0.0, INF),
-            p_range("squares_max", 10.0, 0.0, INF),
-            p("squares_num", 10.0),
-            p("squares_seed", 1.0),
-            p("squares_zero", 0.5),
-            p("squares_zero_seed", 1.0),
-        ]),
-    VarDef::new("sschecks", sschecks)
-        .batch(super::inline_batch!(sschecks))
+    super::inlined!("squares", squares).params(&[
+        p("squares_cellsize", 0.0),
+        p_range("squares_min", 0.0, 0.0, INF),
+        p_range("squares_max", 10.0, 0.0, INF),
+        p("squares_num", 10.0),
+        p("squares_seed", 1.0),
+        p("squares_zero", 0.5),
+        p("squares_zero_seed", 1.0),
+    ]),
+    super::inlined!("sschecks", sschecks)
         .params(&[
             p("sschecks_x", 0.5),
             p("sschecks_y", 0.5),
@@ -177,8 +158,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::RANDOM)
         .prepare(sschecks_prep),
-    VarDef::new("tile_hlp", tile_hlp)
-        .batch(super::inline_batch!(tile_hlp))
+    super::inlined!("tile_hlp", tile_hlp)
         .params(&[p_nonzero(
             "tile_hlp_width",
             1.0,
@@ -187,19 +167,16 @@ pub(super) static DEFS: &[VarDef] = &[
         )])
         .flags(flag::RANDOM)
         .prepare(tile_hlp_prep),
-    VarDef::new("tile_log", tile_log)
-        .batch(super::inline_batch!(tile_log))
+    super::inlined!("tile_log", tile_log)
         .params(&[p("tile_log_spread", 1.0)])
         .flags(flag::RANDOM),
-    VarDef::new("Voron", voron)
-        .batch(super::inline_batch!(voron))
-        .params(&[
-            p("Voron_K", 0.99),
-            p_nonzero("Voron_Step", 0.25, f64::NEG_INFINITY, f64::INFINITY),
-            p_int("Voron_Num", 1.0, 1.0, 25.0),
-            p_int("Voron_XSeed", 3.0, f64::NEG_INFINITY, f64::INFINITY),
-            p_int("Voron_YSeed", 7.0, f64::NEG_INFINITY, f64::INFINITY),
-        ]),
+    super::inlined!("Voron", voron).params(&[
+        p("Voron_K", 0.99),
+        p_nonzero("Voron_Step", 0.25, f64::NEG_INFINITY, f64::INFINITY),
+        p_int("Voron_Num", 1.0, 1.0, 25.0),
+        p_int("Voron_XSeed", 3.0, f64::NEG_INFINITY, f64::INFINITY),
+        p_int("Voron_YSeed", 7.0, f64::NEG_INFINITY, f64::INFINITY),
+    ]),
 ];
 
 /// Derived values: |c|, |c|·|left|, |c| + |c|·|right| (zeros replaced by ε).

@@ -12,12 +12,10 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("hex_modulus", hex_modulus)
-        .batch(super::inline_batch!(hex_modulus))
+    super::inlined!("hex_modulus", hex_modulus)
         .params(&[p("hex_modulus_size", 1.0)])
         .prepare(hex_modulus_prepare),
-    VarDef::new("hex_rand", hex_rand)
-        .batch(super::inline_batch!(hex_rand))
+    super::inlined!("hex_rand", hex_rand)
         .params(&[
             p("hex_rand_x", 10.0),
             p("hex_rand_y", 10.0),
@@ -27,8 +25,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("hex_rand_seed", 1.0),
         ])
         .flags(flag::RANDOM),
-    VarDef::new("hexaplay3D", hexaplay3d)
-        .batch(super::inline_batch!(hexaplay3d))
+    super::inlined!("hexaplay3D", hexaplay3d)
         .params(&[
             p("hexaplay3D_majp", 1.0),
             p("hexaplay3D_scale", 0.25),
@@ -43,8 +40,7 @@ pub(super) static DEFS: &[VarDef] = &[
                 | flag::WRITES_ACC,
         )
         .prepare(hexaplay3d_prepare),
-    VarDef::new("hexes", hexes)
-        .batch(super::inline_batch!(hexes))
+    super::inlined!("hexes", hexes)
         .params(&[
             p("hexes_cellsize", 1.0),
             p("hexes_power", 1.0),
@@ -52,8 +48,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("hexes_scale", 1.0),
         ])
         .prepare(hexes_prepare),
-    VarDef::new("hexnix3D", hexnix3d)
-        .batch(super::inline_batch!(hexnix3d))
+    super::inlined!("hexnix3D", hexnix3d)
         .params(&[
             p("hexnix3D_majp", 1.0),
             p("hexnix3D_scale", 0.25),
@@ -71,8 +66,7 @@ pub(super) static DEFS: &[VarDef] = &[
                 | flag::WRITES_ACC,
         )
         .prepare(hexnix3d_prepare),
-    VarDef::new("xtrb", xtrb)
-        .batch(super::inline_batch!(xtrb))
+    super::inlined!("xtrb", xtrb)
         .params(&[
             p_int_nonzero("xtrb_power", 2.0, f64::NEG_INFINITY, f64::INFINITY),
             p("xtrb_radius", 1.0),

@@ -12,8 +12,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("hypercrop", hypercrop)
-        .batch(super::inline_batch!(hypercrop))
+    super::inlined!("hypercrop", hypercrop)
         .params(&[
             p("hypercrop_n", 4.0),
             p("hypercrop_rad", 1.0),
@@ -22,40 +21,34 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(hypercrop_prepare),
-    VarDef::new("hypershift", hypershift)
-        .batch(super::inline_batch!(hypershift))
+    super::inlined!("hypershift", hypershift)
         .params(&[p("hypershift_shift", 0.01)])
         .needs(need::SUMSQ)
         .flags(flag::WRITES_ACC | flag::COMPAT)
         .prepare(hypershift_prepare),
-    VarDef::new("hypershift2", hypershift2)
-        .batch(super::inline_batch!(hypershift2))
+    super::inlined!("hypershift2", hypershift2)
         .params(&[
             p_range("hypershift2_p", 3.0, 2.0, INF),
             p_range("hypershift2_q", 7.0, 2.0, INF),
         ])
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC | flag::COMPAT)
         .prepare(hypershift2_prepare),
-    VarDef::new("hypertile", hypertile)
-        .batch(super::inline_batch!(hypertile))
+    super::inlined!("hypertile", hypertile)
         .params(&[
             p("hypertile_p", 3.0),
             p("hypertile_q", 7.0),
             p("hypertile_n", 0.0),
         ])
         .prepare(hypertile_prepare),
-    VarDef::new("hypertile1", hypertile1)
-        .batch(super::inline_batch!(hypertile1))
+    super::inlined!("hypertile1", hypertile1)
         .params(&[p("hypertile1_p", 3.0), p("hypertile1_q", 7.0)])
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(hypertile12_prepare),
-    VarDef::new("hypertile2", hypertile2)
-        .batch(super::inline_batch!(hypertile2))
+    super::inlined!("hypertile2", hypertile2)
         .params(&[p("hypertile2_p", 3.0), p("hypertile2_q", 7.0)])
         .flags(flag::RANDOM)
         .prepare(hypertile12_prepare),
-    VarDef::new("hypertile3D", hypertile3d)
-        .batch(super::inline_batch!(hypertile3d))
+    super::inlined!("hypertile3D", hypertile3d)
         .params(&[
             p_int("hypertile3D_p", 3.0, 3.0, I32_MAX),
             p_int("hypertile3D_q", 7.0, 3.0, I32_MAX),
@@ -64,8 +57,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(hypertile3d_prepare),
-    VarDef::new("hypertile3D1", hypertile3d1)
-        .batch(super::inline_batch!(hypertile3d1))
+    super::inlined!("hypertile3D1", hypertile3d1)
         .params(&[
             p_int("hypertile3D1_p", 3.0, 3.0, I32_MAX),
             p_int("hypertile3D1_q", 7.0, 3.0, I32_MAX),
@@ -73,8 +65,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(hypertile3d12_prepare),
-    VarDef::new("hypertile3D2", hypertile3d2)
-        .batch(super::inline_batch!(hypertile3d2))
+    super::inlined!("hypertile3D2", hypertile3d2)
         .params(&[
             p_int("hypertile3D2_p", 3.0, 3.0, I32_MAX),
             p_int("hypertile3D2_q", 7.0, 3.0, I32_MAX),
@@ -82,15 +73,13 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(hypertile3d12_prepare),
-    VarDef::new("ortho", ortho)
-        .batch(super::inline_batch!(ortho))
+    super::inlined!("ortho", ortho)
         .params(&[
             p_cyclic("ortho_in", 0.0, -PI, PI),
             p_cyclic("ortho_out", 0.0, -PI, PI),
         ])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES),
-    VarDef::new("poincare", poincare)
-        .batch(super::inline_batch!(poincare))
+    super::inlined!("poincare", poincare)
         .params(&[
             p("poincare_c1r", 1.0),
             p_cyclic("poincare_c1a", -1.0, -PI, PI),
@@ -98,12 +87,10 @@ pub(super) static DEFS: &[VarDef] = &[
             p_cyclic("poincare_c2a", 1.0, -PI, PI),
         ])
         .prepare(prep_poincare),
-    VarDef::new("poincare2", poincare2)
-        .batch(super::inline_batch!(poincare2))
+    super::inlined!("poincare2", poincare2)
         .params(&[p("poincare2_p", 3.0), p("poincare2_q", 7.0)])
         .prepare(prep_poincare2),
-    VarDef::new("poincare3D", poincare3d)
-        .batch(super::inline_batch!(poincare3d))
+    super::inlined!("poincare3D", poincare3d)
         .params(&[
             p("poincare3D_r", 0.0),
             p("poincare3D_a", 0.0),

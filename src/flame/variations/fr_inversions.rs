@@ -13,13 +13,11 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("asteria", asteria)
-        .batch(super::inline_batch!(asteria))
+    super::inlined!("asteria", asteria)
         .params(&[p_cyclic("asteria_alpha", 0.0, 0.0, 1.0)])
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(prep_asteria),
-    VarDef::new("curl3D", curl3d)
-        .batch(super::inline_batch!(curl3d))
+    super::inlined!("curl3D", curl3d)
         .params(&[
             p("curl3D_cx", 0.0),
             p("curl3D_cy", 0.0),
@@ -28,8 +26,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(curl3d_prepare),
-    VarDef::new("curl_sp", curl_sp)
-        .batch(super::inline_batch!(curl_sp))
+    super::inlined!("curl_sp", curl_sp)
         .params(&[
             p_nonzero("curl_sp_pow", 1.0, NEG_INF, INF),
             p("curl_sp_c1", 0.0),
@@ -40,29 +37,21 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR | flag::COMPAT)
         .prepare(curl_sp_prepare),
-    VarDef::new("d_spherical", d_spherical)
-        .batch(super::inline_batch!(d_spherical))
+    super::inlined!("d_spherical", d_spherical)
         .params(&[p("d_spherical_weight", 0.5)])
         .needs(need::SUMSQ)
         .flags(flag::RANDOM),
-    VarDef::new("eclipse", eclipse)
-        .batch(super::inline_batch!(eclipse))
-        .params(&[p_cyclic("eclipse_shift", 0.0, -2.0, 2.0)]),
-    VarDef::new("flipcircle", flipcircle)
-        .batch(super::inline_batch!(flipcircle))
-        .needs(need::SUMSQ),
-    VarDef::new("glynnia", glynnia)
-        .batch(super::inline_batch!(glynnia))
+    super::inlined!("eclipse", eclipse).params(&[p_cyclic("eclipse_shift", 0.0, -2.0, 2.0)]),
+    super::inlined!("flipcircle", flipcircle).needs(need::SUMSQ),
+    super::inlined!("glynnia", glynnia)
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(glynnia_prepare),
-    VarDef::new("glynnia2", glynnia2)
-        .batch(super::inline_batch!(glynnia2))
+    super::inlined!("glynnia2", glynnia2)
         .needs(need::SQRT)
         .flags(flag::RANDOM)
         .prepare(glynnia2_prepare),
-    VarDef::new("GlynnSim1", glynnsim1)
-        .batch(super::inline_batch!(glynnsim1))
+    super::inlined!("GlynnSim1", glynnsim1)
         .params(&[
             p("GlynnSim1_radius", 1.0),
             p("GlynnSim1_radius1", 0.1),
@@ -74,8 +63,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SQRT)
         .flags(flag::RANDOM)
         .prepare(glynnsim1_prepare),
-    VarDef::new("GlynnSim2", glynnsim2)
-        .batch(super::inline_batch!(glynnsim2))
+    super::inlined!("GlynnSim2", glynnsim2)
         .params(&[
             p_range("GlynnSim2_radius", 1.0, 0.0, INF),
             p_range("GlynnSim2_thickness", 0.1, 0.0, 1.0),
@@ -87,8 +75,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SQRT)
         .flags(flag::RANDOM)
         .prepare(glynnsim2_prepare),
-    VarDef::new("GlynnSim3", glynnsim3)
-        .batch(super::inline_batch!(glynnsim3))
+    super::inlined!("GlynnSim3", glynnsim3)
         .params(&[
             p("GlynnSim3_radius", 1.0),
             p("GlynnSim3_thickness", 0.1),
@@ -99,8 +86,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SQRT)
         .flags(flag::RANDOM)
         .prepare(glynnsim3_prepare),
-    VarDef::new("GlynnSim4", glynnsim4)
-        .batch(super::inline_batch!(glynnsim4))
+    super::inlined!("GlynnSim4", glynnsim4)
         .params(&[
             p("GlynnSim4_radius", 1.0),
             p_range("GlynnSim4_contrast", 0.5, 0.0, 1.0),
@@ -110,8 +96,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SQRT)
         .flags(flag::RANDOM),
-    VarDef::new("GlynnSim5", glynnsim5)
-        .batch(super::inline_batch!(glynnsim5))
+    super::inlined!("GlynnSim5", glynnsim5)
         .params(&[
             p("GlynnSim5_radius", 1.0),
             p("GlynnSim5_thickness", 0.1),
@@ -120,15 +105,12 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SQRT)
         .flags(flag::RANDOM),
-    VarDef::new("inkdrop", inkdrop)
-        .batch(super::inline_batch!(inkdrop))
-        .params(&[
-            p_range("inkdrop_r", 0.5, 0.0, INF),
-            p("inkdrop_x", 0.0),
-            p("inkdrop_y", 0.0),
-        ]),
-    VarDef::new("loonie2", loonie2)
-        .batch(super::inline_batch!(loonie2))
+    super::inlined!("inkdrop", inkdrop).params(&[
+        p_range("inkdrop_r", 0.5, 0.0, INF),
+        p("inkdrop_x", 0.0),
+        p("inkdrop_y", 0.0),
+    ]),
+    super::inlined!("loonie2", loonie2)
         .params(&[
             p_int("loonie2_sides", 4.0, 1.0, 50.0),
             p_range("loonie2_star", 0.0, -1.0, 1.0),
@@ -138,21 +120,17 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::COMPAT)
         .prepare(prep_loonie2),
-    VarDef::new("loonie3", loonie3)
-        .batch(super::inline_batch!(loonie3))
+    super::inlined!("loonie3", loonie3)
         .needs(need::SUMSQ)
         .prepare(prep_weight_squared),
-    VarDef::new("loonie_3D", loonie_3d)
-        .batch(super::inline_batch!(loonie_3d))
+    super::inlined!("loonie_3D", loonie_3d)
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_weight_squared),
-    VarDef::new("ovoid", ovoid)
-        .batch(super::inline_batch!(ovoid))
+    super::inlined!("ovoid", ovoid)
         .params(&[p("ovoid_x", 1.0), p("ovoid_y", 1.0)])
         .needs(need::SUMSQ),
-    VarDef::new("ovoid3d", ovoid3d)
-        .batch(super::inline_batch!(ovoid3d))
+    super::inlined!("ovoid3d", ovoid3d)
         .params(&[
             p("ovoid3d_x", 1.0),
             p("ovoid3d_y", 1.0),
@@ -160,33 +138,25 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("roundspher", roundspher)
-        .batch(super::inline_batch!(roundspher))
-        .needs(need::SUMSQ),
-    VarDef::new("roundspher3D", roundspher3d)
-        .batch(super::inline_batch!(roundspher3d))
+    super::inlined!("roundspher", roundspher).needs(need::SUMSQ),
+    super::inlined!("roundspher3D", roundspher3d)
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_ACC | flag::WRITES_ACC),
-    VarDef::new("scry_3D", scry_3d)
-        .batch(super::inline_batch!(scry_3d))
+    super::inlined!("scry_3D", scry_3d)
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(inv_weight_prep),
-    VarDef::new("spher", spher)
-        .batch(super::inline_batch!(spher))
+    super::inlined!("spher", spher)
         .needs(need::SUMSQ)
         .flags(flag::RANDOM),
-    VarDef::new("Spherical3D", spherical3d)
-        .batch(super::inline_batch!(spherical3d))
+    super::inlined!("Spherical3D", spherical3d)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("spherivoid", spherivoid)
-        .batch(super::inline_batch!(spherivoid))
+    super::inlined!("spherivoid", spherivoid)
         .params(&[p("spherivoid_radius", 0.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("sphyp3D", sphyp3d)
-        .batch(super::inline_batch!(sphyp3d))
+    super::inlined!("sphyp3D", sphyp3d)
         .params(&[
             p("sphyp3D_stretchX", 1.0),
             p("sphyp3D_stretchY", 1.0),
@@ -195,8 +165,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("trade", trade)
-        .batch(super::inline_batch!(trade))
+    super::inlined!("trade", trade)
         .params(&[
             p_range("trade_r1", 1.0, f64::EPSILON, f64::INFINITY),
             p_range("trade_d1", 1.0, 0.0, f64::INFINITY),
@@ -204,9 +173,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_range("trade_d2", 1.0, 0.0, f64::INFINITY),
         ])
         .prepare(trade_prep),
-    VarDef::new("twoface", twoface)
-        .batch(super::inline_batch!(twoface))
-        .needs(need::SUMSQ),
+    super::inlined!("twoface", twoface).needs(need::SUMSQ),
 ];
 
 /// Derived values: sin πα, cos πα.

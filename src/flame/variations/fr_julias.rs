@@ -13,14 +13,12 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("julia3D", julia3d)
-        .batch(super::inline_batch!(julia3d))
+    super::inlined!("julia3D", julia3d)
         .params(&[p_int_nonzero("julia3D_power", 2.0, NEG_INF, INF)])
         .needs(need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(julia3d_prepare),
-    VarDef::new("julia3Dq", julia3dq)
-        .batch(super::inline_batch!(julia3dq))
+    super::inlined!("julia3Dq", julia3dq)
         .params(&[
             p_int_nonzero("julia3Dq_power", 3.0, NEG_INF, INF),
             p_int_nonzero("julia3Dq_divisor", 2.0, NEG_INF, INF),
@@ -28,14 +26,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(julia3dq_prepare),
-    VarDef::new("julia3Dz", julia3dz)
-        .batch(super::inline_batch!(julia3dz))
+    super::inlined!("julia3Dz", julia3dz)
         .params(&[p_int_nonzero("julia3Dz_power", 2.0, NEG_INF, INF)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_julia3dz),
-    VarDef::new("Juliac", juliac)
-        .batch(super::inline_batch!(juliac))
+    super::inlined!("Juliac", juliac)
         .params(&[
             p("Juliac_re", 2.0),
             p("Juliac_im", 1.0),
@@ -44,8 +40,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_juliac),
-    VarDef::new("julian2", julian2)
-        .batch(super::inline_batch!(julian2))
+    super::inlined!("julian2", julian2)
         .params(&[
             p("julian2_a", 1.0),
             p("julian2_b", 0.0),
@@ -58,8 +53,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(prep_julian2),
-    VarDef::new("julian3Dx", julian3dx)
-        .batch(super::inline_batch!(julian3dx))
+    super::inlined!("julian3Dx", julian3dx)
         .params(&[
             p("julian3Dx_dist", 1.0),
             p_int_nonzero("julian3Dx_power", 2.0, NEG_INF, INF),
@@ -73,8 +67,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_julian3dx),
-    VarDef::new("juliaNab", julianab)
-        .batch(super::inline_batch!(julianab))
+    super::inlined!("juliaNab", julianab)
         .params(&[
             p("juliaNab_n", 1.0),
             p("juliaNab_a", 1.0),
@@ -84,8 +77,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(prep_julianab),
-    VarDef::new("juliaq", juliaq)
-        .batch(super::inline_batch!(juliaq))
+    super::inlined!("juliaq", juliaq)
         .params(&[
             p_nonzero("juliaq_power", 3.0, NEG_INF, INF),
             p_nonzero("juliaq_divisor", 2.0, NEG_INF, INF),
@@ -93,14 +85,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_juliaq),
-    VarDef::new("npolar", npolar)
-        .batch(super::inline_batch!(npolar))
+    super::inlined!("npolar", npolar)
         .params(&[p("npolar_parity", 0.0), p("npolar_n", 1.0)])
         .needs(need::SUMSQ | need::ATAN_XY | need::ATAN_YX)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(prep_npolar),
-    VarDef::new("phoenix_julia", phoenix_julia)
-        .batch(super::inline_batch!(phoenix_julia))
+    super::inlined!("phoenix_julia", phoenix_julia)
         .params(&[
             p("phoenix_julia_power", 2.0),
             p("phoenix_julia_dist", 1.0),
@@ -110,8 +100,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::COMPAT)
         .prepare(prep_phoenix_julia),
-    VarDef::new("pow_block", pow_block)
-        .batch(super::inline_batch!(pow_block))
+    super::inlined!("pow_block", pow_block)
         .params(&[
             p("pow_block_numerator", 3.0),
             p("pow_block_denominator", 2.0),
@@ -122,14 +111,12 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_pow_block),
-    VarDef::new("SphericalN", spherical_n)
-        .batch(super::inline_batch!(spherical_n))
+    super::inlined!("SphericalN", spherical_n)
         .params(&[p("SphericalN_Power", 1.0), p("SphericalN_Dist", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(spherical_n_prep),
-    VarDef::new("wavesn", wavesn)
-        .batch(super::inline_batch!(wavesn))
+    super::inlined!("wavesn", wavesn)
         .params(&[
             p("wavesn_freqx", 2.0),
             p("wavesn_freqy", 2.0),

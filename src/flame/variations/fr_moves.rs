@@ -13,23 +13,15 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("extrude", extrude)
-        .batch(super::inline_batch!(extrude))
+    super::inlined!("extrude", extrude)
         .params(&[p("extrude_root_face", 0.5)])
         .flags(flag::RANDOM | flag::WRITES_Z | flag::WRITES_ACC),
-    VarDef::new("flatten", flatten)
-        .batch(super::inline_batch!(flatten))
-        .flags(flag::WRITES_ACC | flag::WRITES_Z),
-    VarDef::new("flipx", flipx).batch(super::inline_batch!(flipx)),
-    VarDef::new("flipy", flipy).batch(super::inline_batch!(flipy)),
-    VarDef::new("linear3D", linear3d)
-        .batch(super::inline_batch!(linear3d))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("linearT", linear_t)
-        .batch(super::inline_batch!(linear_t))
-        .params(&[p("linearT_powX", 1.0), p("linearT_powY", 1.0)]),
-    VarDef::new("linearT3D", linear_t3d)
-        .batch(super::inline_batch!(linear_t3d))
+    super::inlined!("flatten", flatten).flags(flag::WRITES_ACC | flag::WRITES_Z),
+    super::inlined!("flipx", flipx),
+    super::inlined!("flipy", flipy),
+    super::inlined!("linear3D", linear3d).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("linearT", linear_t).params(&[p("linearT_powX", 1.0), p("linearT_powY", 1.0)]),
+    super::inlined!("linearT3D", linear_t3d)
         .params(&[
             p("linearT3D_powX", 1.0),
             p("linearT3D_powY", 1.0),
@@ -39,8 +31,7 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("mirror_x", mirror::<0>).flags(MIRROR_FLAGS),
     VarDef::new("mirror_y", mirror::<1>).flags(MIRROR_FLAGS),
     VarDef::new("mirror_z", mirror::<2>).flags(MIRROR_FLAGS),
-    VarDef::new("point_symmetry", point_symmetry)
-        .batch(super::inline_batch!(point_symmetry))
+    super::inlined!("point_symmetry", point_symmetry)
         .params(&[
             p("point_symmetry_centre_x", 0.15),
             p("point_symmetry_centre_y", 0.5),
@@ -48,35 +39,26 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(prep_point_symmetry),
-    VarDef::new("rotate", rotate)
-        .batch(super::inline_batch!(rotate))
+    super::inlined!("rotate", rotate)
         .params(&[p("rotate_angle", 0.0)])
         .prepare(rotate_prep),
-    VarDef::new("rotate_x", rotate_x)
-        .batch(super::inline_batch!(rotate_x))
+    super::inlined!("rotate_x", rotate_x)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(quarter_turns_prep),
-    VarDef::new("rotate_y", rotate_y)
-        .batch(super::inline_batch!(rotate_y))
+    super::inlined!("rotate_y", rotate_y)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(quarter_turns_prep),
-    VarDef::new("rotate_z", rotate_z)
-        .batch(super::inline_batch!(rotate_z))
+    super::inlined!("rotate_z", rotate_z)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC)
         .prepare(quarter_turns_prep),
-    VarDef::new("shift", shift)
-        .batch(super::inline_batch!(shift))
+    super::inlined!("shift", shift)
         .params(&[p("shift_x", 0.0), p("shift_y", 0.0), p("shift_angle", 0.0)])
         .prepare(shift_prep),
-    VarDef::new("zcone", zcone)
-        .batch(super::inline_batch!(zcone))
+    super::inlined!("zcone", zcone)
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::WRITES_Z),
-    VarDef::new("zscale", zscale)
-        .batch(super::inline_batch!(zscale))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("ztranslate", ztranslate)
-        .batch(super::inline_batch!(ztranslate))
+    super::inlined!("zscale", zscale).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("ztranslate", ztranslate)
         .flags(flag::WRITES_Z)
         .sum(),
 ];

@@ -13,8 +13,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("fourth", fourth)
-        .batch(super::inline_batch!(fourth))
+    super::inlined!("fourth", fourth)
         .params(&[
             p_cyclic("fourth_spin", PI, 0.0, TAU),
             p("fourth_space", 0.0),
@@ -23,14 +22,9 @@ pub(super) static DEFS: &[VarDef] = &[
             p("fourth_y", 0.0),
         ])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES),
-    VarDef::new("henon", henon)
-        .batch(super::inline_batch!(henon))
-        .params(&[p("henon_a", 0.5), p("henon_b", 1.0)]),
-    VarDef::new("lozi", lozi)
-        .batch(super::inline_batch!(lozi))
-        .params(&[p("lozi_a", 0.5), p("lozi_b", 1.0)]),
-    VarDef::new("mcarpet", mcarpet)
-        .batch(super::inline_batch!(mcarpet))
+    super::inlined!("henon", henon).params(&[p("henon_a", 0.5), p("henon_b", 1.0)]),
+    super::inlined!("lozi", lozi).params(&[p("lozi_a", 0.5), p("lozi_b", 1.0)]),
+    super::inlined!("mcarpet", mcarpet)
         .params(&[
             p("mcarpet_x", 0.0),
             p("mcarpet_y", 0.0),
@@ -38,8 +32,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("mcarpet_tilt", 0.0),
         ])
         .needs(need::SUMSQ),
-    VarDef::new("polynomial", polynomial)
-        .batch(super::inline_batch!(polynomial))
+    super::inlined!("polynomial", polynomial)
         .params(&[
             p("polynomial_powx", 1.0),
             p("polynomial_powy", 1.0),
@@ -49,37 +42,32 @@ pub(super) static DEFS: &[VarDef] = &[
             p("polynomial_scy", 0.0),
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("projective", projective)
-        .batch(super::inline_batch!(projective))
-        .params(&[
-            p("projective_A", 0.0),
-            p("projective_B", 0.0),
-            p("projective_C", 1.0),
-            p("projective_A1", 1.0),
-            p("projective_B1", 0.0),
-            p("projective_C1", 0.0),
-            p("projective_A2", 0.0),
-            p("projective_B2", 1.0),
-            p("projective_C2", 0.0),
-        ]),
-    VarDef::new("q_ode", q_ode)
-        .batch(super::inline_batch!(q_ode))
-        .params(&[
-            p("q_ode01", 1.0),
-            p("q_ode02", -1.0),
-            p("q_ode03", 0.0),
-            p("q_ode04", 0.0),
-            p("q_ode05", 0.0),
-            p("q_ode06", 0.0),
-            p("q_ode07", 1.0),
-            p("q_ode08", 0.0),
-            p("q_ode09", 0.0),
-            p("q_ode10", 0.0),
-            p("q_ode11", 0.0),
-            p("q_ode12", 0.0),
-        ]),
-    VarDef::new("unicorngaloshen", unicorngaloshen)
-        .batch(super::inline_batch!(unicorngaloshen))
+    super::inlined!("projective", projective).params(&[
+        p("projective_A", 0.0),
+        p("projective_B", 0.0),
+        p("projective_C", 1.0),
+        p("projective_A1", 1.0),
+        p("projective_B1", 0.0),
+        p("projective_C1", 0.0),
+        p("projective_A2", 0.0),
+        p("projective_B2", 1.0),
+        p("projective_C2", 0.0),
+    ]),
+    super::inlined!("q_ode", q_ode).params(&[
+        p("q_ode01", 1.0),
+        p("q_ode02", -1.0),
+        p("q_ode03", 0.0),
+        p("q_ode04", 0.0),
+        p("q_ode05", 0.0),
+        p("q_ode06", 0.0),
+        p("q_ode07", 1.0),
+        p("q_ode08", 0.0),
+        p("q_ode09", 0.0),
+        p("q_ode10", 0.0),
+        p("q_ode11", 0.0),
+        p("q_ode12", 0.0),
+    ]),
+    super::inlined!("unicorngaloshen", unicorngaloshen)
         .params(&[
             p("unicorngaloshen_mult_x", 1.0),
             p("unicorngaloshen_mult_y", 1.0),
@@ -91,8 +79,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_range("unicorngaloshen_mode", 0.0, 0.0, 4.0),
         ])
         .prepare(unicorngaloshen_prep),
-    VarDef::new("xheart", xheart)
-        .batch(super::inline_batch!(xheart))
+    super::inlined!("xheart", xheart)
         .params(&[p("xheart_angle", 0.0), p("xheart_ratio", 0.0)])
         .needs(need::SUMSQ)
         .prepare(xheart_prep),

@@ -13,36 +13,22 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("coshq", coshq)
-        .batch(super::inline_batch!(coshq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("cosq", cosq)
-        .batch(super::inline_batch!(cosq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("cothq", cothq)
-        .batch(super::inline_batch!(cothq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("cotq", cotq)
-        .batch(super::inline_batch!(cotq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("cschq", cschq)
-        .batch(super::inline_batch!(cschq))
+    super::inlined!("coshq", coshq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("cosq", cosq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("cothq", cothq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("cotq", cotq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("cschq", cschq)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("cscq", cscq)
-        .batch(super::inline_batch!(cscq))
+    super::inlined!("cscq", cscq)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("estiq", estiq)
-        .batch(super::inline_batch!(estiq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("loq", loq)
-        .batch(super::inline_batch!(loq))
+    super::inlined!("estiq", estiq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("loq", loq)
         .params(&[p_range("loq_base", E, f64::EPSILON, INF)])
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_loq),
-    VarDef::new("mobiq", mobiq)
-        .batch(super::inline_batch!(mobiq))
+    super::inlined!("mobiq", mobiq)
         .params(&[
             p("mobiq_at", 1.0),
             p("mobiq_ax", 0.0),
@@ -62,26 +48,16 @@ pub(super) static DEFS: &[VarDef] = &[
             p("mobiq_dz", 0.0),
         ])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("sechq", sechq)
-        .batch(super::inline_batch!(sechq))
+    super::inlined!("sechq", sechq)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("secq", secq)
-        .batch(super::inline_batch!(secq))
+    super::inlined!("secq", secq)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("sinhq", sinhq)
-        .batch(super::inline_batch!(sinhq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("sinq", sinq)
-        .batch(super::inline_batch!(sinq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("tanhq", tanhq)
-        .batch(super::inline_batch!(tanhq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("tanq", tanq)
-        .batch(super::inline_batch!(tanq))
-        .flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("sinhq", sinhq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("sinq", sinq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("tanhq", tanhq).flags(flag::USES_Z | flag::WRITES_Z),
+    super::inlined!("tanq", tanq).flags(flag::USES_Z | flag::WRITES_Z),
 ];
 
 /// Quaternion hyperbolic cosine of (x, y, z) taken as x + y·i + z·j.

@@ -38,30 +38,20 @@ macro_rules! shape_params {
 }
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("cardioid", cardioid)
-        .batch(super::inline_batch!(cardioid))
+    super::inlined!("cardioid", cardioid)
         .params(&[p("cardioid_a", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES | need::ATAN_YX),
-    VarDef::new("circlize", circlize)
-        .batch(super::inline_batch!(circlize))
-        .params(&[p("circlize_hole", 0.0)]),
-    VarDef::new("circlize2", circlize2)
-        .batch(super::inline_batch!(circlize2))
-        .params(&[p("circlize2_hole", 0.0)]),
-    VarDef::new("circus", circus)
-        .batch(super::inline_batch!(circus))
+    super::inlined!("circlize", circlize).params(&[p("circlize_hole", 0.0)]),
+    super::inlined!("circlize2", circlize2).params(&[p("circlize2_hole", 0.0)]),
+    super::inlined!("circus", circus)
         .params(&[p("circus_scale", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ANGLES),
-    VarDef::new("collideoscope", collideoscope)
-        .batch(super::inline_batch!(collideoscope))
+    super::inlined!("collideoscope", collideoscope)
         .params(&[p("collideoscope_a", 0.0), p("collideoscope_num", 1.0)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(prep_collideoscope),
-    VarDef::new("curvature", curvature)
-        .batch(super::inline_batch!(curvature))
-        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
-    VarDef::new("epispiral", epispiral)
-        .batch(super::inline_batch!(epispiral))
+    super::inlined!("curvature", curvature).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
+    super::inlined!("epispiral", epispiral)
         .params(&[
             p("epispiral_n", 6.0),
             p("epispiral_thickness", 0.0),
@@ -70,11 +60,8 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(epispiral_prepare),
-    VarDef::new("fdisc", fdisc)
-        .batch(super::inline_batch!(fdisc))
-        .needs(need::SQRT | need::ATAN_YX),
-    VarDef::new("flowerdb", flowerdb)
-        .batch(super::inline_batch!(flowerdb))
+    super::inlined!("fdisc", fdisc).needs(need::SQRT | need::ATAN_YX),
+    super::inlined!("flowerdb", flowerdb)
         .params(&[
             p("flowerdb_petals", 6.0),
             p("flowerdb_petal_split", 0.0),
@@ -82,15 +69,11 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SQRT | need::ATAN_YX)
         .prepare(flowerdb_prepare),
-    VarDef::new("hole", hole)
-        .batch(super::inline_batch!(hole))
+    super::inlined!("hole", hole)
         .params(&[p("hole_a", 1.0), p_int("hole_inside", 0.0, 0.0, 1.0)])
         .needs(need::SQRT | need::ANGLES | need::ATAN_YX),
-    VarDef::new("idisc", idisc)
-        .batch(super::inline_batch!(idisc))
-        .needs(need::SQRT | need::ATAN_YX),
-    VarDef::new("Kaleidoscope", kaleidoscope)
-        .batch(super::inline_batch!(kaleidoscope))
+    super::inlined!("idisc", idisc).needs(need::SQRT | need::ATAN_YX),
+    super::inlined!("Kaleidoscope", kaleidoscope)
         .params(&[
             p("Kaleidoscope_pull", 0.0),
             p("Kaleidoscope_rotate", 1.0),
@@ -99,8 +82,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("Kaleidoscope_y", 0.0),
         ])
         .prepare(prep_kaleidoscope),
-    VarDef::new("lazyjess", lazyjess)
-        .batch(super::inline_batch!(lazyjess))
+    super::inlined!("lazyjess", lazyjess)
         .params(&[
             p_nonzero("lazyjess_n", 4.0, 2.0, INF),
             p("lazyjess_spin", PI),
@@ -109,8 +91,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT)
         .prepare(prep_lazyjess),
-    VarDef::new("lazyTravis", lazytravis)
-        .batch(super::inline_batch!(lazytravis))
+    super::inlined!("lazyTravis", lazytravis)
         .params(&[
             p_cyclic("lazyTravis_spin_in", 1.0, 0.0, 2.0),
             p_cyclic("lazyTravis_spin_out", 0.0, 0.0, 2.0),
@@ -119,13 +100,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(prep_lazytravis),
     VarDef::new("panorama1", panorama::<false>).needs(need::SUMSQ),
     VarDef::new("panorama2", panorama::<true>).needs(need::SUMSQ | need::SQRT),
-    VarDef::new("scry2", scry2)
-        .batch(super::inline_batch!(scry2))
+    super::inlined!("scry2", scry2)
         .params(&[p("scry2_power", 4.0)])
         .needs(need::SUMSQ)
         .prepare(scry2_prep),
-    VarDef::new("shredrad", shredrad)
-        .batch(super::inline_batch!(shredrad))
+    super::inlined!("shredrad", shredrad)
         .params(&[
             p_nonzero("shredrad_n", 4.0, -INF, INF),
             p_range("shredrad_width", 0.5, -1.0, 1.0),
@@ -133,8 +112,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(shredrad_prep),
-    VarDef::new("smartshape", smartshape)
-        .batch(super::inline_batch!(smartshape))
+    super::inlined!("smartshape", smartshape)
         .params(&[
             p_range("smartshape_power", 4.0, 2.0, INF),
             p("smartshape_roundstr", 0.0),
@@ -144,20 +122,15 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(smartshape_prep),
-    VarDef::new("squarize", squarize)
-        .batch(super::inline_batch!(squarize))
-        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
-    VarDef::new("squish", squish)
-        .batch(super::inline_batch!(squish))
+    super::inlined!("squarize", squarize).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
+    super::inlined!("squish", squish)
         .params(&[p_nonzero("squish_power", 2.0, 2.0, INF)])
         .flags(flag::RANDOM)
         .prepare(squish_prep),
-    VarDef::new("swirl3", swirl3)
-        .batch(super::inline_batch!(swirl3))
+    super::inlined!("swirl3", swirl3)
         .params(&[p("swirl3_shift", 0.5)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
-    VarDef::new("swirl3r", swirl3r)
-        .batch(super::inline_batch!(swirl3r))
+    super::inlined!("swirl3r", swirl3r)
         .params(&[
             p("swirl3r_shift", 0.5),
             p_range("swirl3r_min", 0.5, 0.0, f64::INFINITY),
@@ -165,8 +138,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(swirl3r_prep),
-    VarDef::new("target", target)
-        .batch(super::inline_batch!(target))
+    super::inlined!("target", target)
         .params(&[
             p_cyclic("target_even", 0.0, 0.0, TAU),
             p_cyclic("target_odd", 0.0, 0.0, TAU),
@@ -174,8 +146,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(target_prep),
-    VarDef::new("target0", target0)
-        .batch(super::inline_batch!(target0))
+    super::inlined!("target0", target0)
         .params(&[
             p_cyclic("target0_even", 0.0, 0.0, TAU),
             p_cyclic("target0_odd", 0.0, 0.0, TAU),
@@ -183,8 +154,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(target_prep),
-    VarDef::new("target2", target2)
-        .batch(super::inline_batch!(target2))
+    super::inlined!("target2", target2)
         .params(&[
             p_cyclic("target2_even", 0.0, 0.0, TAU),
             p_cyclic("target2_odd", 0.0, 0.0, TAU),
@@ -193,29 +163,21 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(target_prep),
-    VarDef::new("unpolar", unpolar)
-        .batch(super::inline_batch!(unpolar))
-        .prepare(unpolar_prep),
-    VarDef::new("w", w_var)
-        .batch(super::inline_batch!(w_var))
+    super::inlined!("unpolar", unpolar).prepare(unpolar_prep),
+    super::inlined!("w", w_var)
         .params(SHAPE_W)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(shape_prep_w),
-    VarDef::new("wdisc", wdisc)
-        .batch(super::inline_batch!(wdisc))
-        .needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
-    VarDef::new("x", x_var)
-        .batch(super::inline_batch!(x_var))
+    super::inlined!("wdisc", wdisc).needs(need::SUMSQ | need::SQRT | need::ATAN_YX),
+    super::inlined!("x", x_var)
         .params(SHAPE_X)
         .needs(need::SUMSQ | need::ATAN_YX)
         .prepare(shape_prep),
-    VarDef::new("y", y_var)
-        .batch(super::inline_batch!(y_var))
+    super::inlined!("y", y_var)
         .params(SHAPE_Y)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(shape_prep),
-    VarDef::new("z", z_var)
-        .batch(super::inline_batch!(z_var))
+    super::inlined!("z", z_var)
         .params(SHAPE_Z)
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(shape_prep),

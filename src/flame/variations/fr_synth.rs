@@ -33,8 +33,7 @@ macro_rules! synth_params {
     };
 }
 
-pub(super) static DEFS: &[VarDef] = &[VarDef::new("synth", synth)
-    .batch(super::inline_batch!(synth))
+pub(super) static DEFS: &[VarDef] = &[super::inlined!("synth", synth)
     .params(SYNTH_PARAMS)
     .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
     .flags(flag::RANDOM)];

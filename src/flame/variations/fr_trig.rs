@@ -13,50 +13,30 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("bisplit", bisplit).batch(super::inline_batch!(bisplit)),
-    VarDef::new("crescents", crescents).batch(super::inline_batch!(crescents)),
-    VarDef::new("cylinder2", cylinder2).batch(super::inline_batch!(cylinder2)),
-    VarDef::new("funnel", funnel)
-        .batch(super::inline_batch!(funnel))
-        .params(&[p_int("funnel_effect", 8.0, NEG_INF, INF)]),
-    VarDef::new("mask", mask)
-        .batch(super::inline_batch!(mask))
-        .needs(need::SUMSQ),
-    VarDef::new("petal", petal).batch(super::inline_batch!(petal)),
-    VarDef::new("rays1", rays1)
-        .batch(super::inline_batch!(rays1))
+    super::inlined!("bisplit", bisplit),
+    super::inlined!("crescents", crescents),
+    super::inlined!("cylinder2", cylinder2),
+    super::inlined!("funnel", funnel).params(&[p_int("funnel_effect", 8.0, NEG_INF, INF)]),
+    super::inlined!("mask", mask).needs(need::SUMSQ),
+    super::inlined!("petal", petal),
+    super::inlined!("rays1", rays1)
         .needs(need::SUMSQ | need::SQRT)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC),
-    VarDef::new("rays2", rays2)
-        .batch(super::inline_batch!(rays2))
+    super::inlined!("rays2", rays2)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC),
-    VarDef::new("rays3", rays3)
-        .batch(super::inline_batch!(rays3))
+    super::inlined!("rays3", rays3)
         .needs(need::SUMSQ)
         .flags(flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC),
-    VarDef::new("rippled", rippled)
-        .batch(super::inline_batch!(rippled))
-        .needs(need::SUMSQ),
-    VarDef::new("sigmoid", sigmoid)
-        .batch(super::inline_batch!(sigmoid))
+    super::inlined!("rippled", rippled).needs(need::SUMSQ),
+    super::inlined!("sigmoid", sigmoid)
         .params(&[p("sigmoid_shiftx", 1.0), p("sigmoid_shifty", 1.0)])
         .prepare(sigmoid_prep),
-    VarDef::new("sintrange", sintrange)
-        .batch(super::inline_batch!(sintrange))
-        .params(&[p("sintrange_w", 1.0)]),
-    VarDef::new("spiralwing", spiralwing)
-        .batch(super::inline_batch!(spiralwing))
-        .needs(need::SUMSQ),
-    VarDef::new("squirrel", squirrel)
-        .batch(super::inline_batch!(squirrel))
-        .params(&[p("squirrel_a", 1.0), p("squirrel_b", 1.0)]),
-    VarDef::new("stwin", stwin)
-        .batch(super::inline_batch!(stwin))
-        .params(&[p("stwin_distort", 1.0)]),
-    VarDef::new("tancos", tancos)
-        .batch(super::inline_batch!(tancos))
-        .needs(need::SUMSQ),
+    super::inlined!("sintrange", sintrange).params(&[p("sintrange_w", 1.0)]),
+    super::inlined!("spiralwing", spiralwing).needs(need::SUMSQ),
+    super::inlined!("squirrel", squirrel).params(&[p("squirrel_a", 1.0), p("squirrel_b", 1.0)]),
+    super::inlined!("stwin", stwin).params(&[p("stwin_distort", 1.0)]),
+    super::inlined!("tancos", tancos).needs(need::SUMSQ),
 ];
 
 /// (w/10)·(cos y / tan x, −y / sin x): a field of split, mirrored bands.

@@ -13,8 +13,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("hex_truchet", hex_truchet)
-        .batch(super::inline_batch!(hex_truchet))
+    super::inlined!("hex_truchet", hex_truchet)
         .params(&[
             p_range("hex_truchet_size", 1.0, -1.0, 1.0),
             p("hex_truchet_side", 1.0),
@@ -22,8 +21,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(hex_truchet_prepare),
-    VarDef::new("Truchet", truchet)
-        .batch(super::inline_batch!(truchet))
+    super::inlined!("Truchet", truchet)
         .params(&[
             p("Truchet_extended", 1.0),
             p_nonzero("Truchet_exponent", 2.0, f64::EPSILON, 2.0),
@@ -34,16 +32,14 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::COMPAT)
         .prepare(truchet_prep),
-    VarDef::new("Truchet_fill", truchet_fill)
-        .batch(super::inline_batch!(truchet_fill))
+    super::inlined!("Truchet_fill", truchet_fill)
         .params(&[
             p_cyclic("Truchet_fill_exponent", 2.0, 0.001, 2.0),
             p_cyclic("Truchet_fill_arc_width", 0.5, 0.001, 1.0),
             p("Truchet_fill_seed", 0.0),
         ])
         .prepare(truchet_fill_prep),
-    VarDef::new("Truchet_glyph", truchet_glyph)
-        .batch(super::inline_batch!(truchet_glyph))
+    super::inlined!("Truchet_glyph", truchet_glyph)
         .params(&[
             p_range("Truchet_glyph_exponent", 2.0, 0.0, 2.0),
             p("Truchet_glyph_arc_width", 0.5),
@@ -53,8 +49,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("Truchet_glyph_seed", 1.0),
         ])
         .prepare(truchet_glyph_prep),
-    VarDef::new("Truchet_hex_crop", truchet_hex_crop)
-        .batch(super::inline_batch!(truchet_hex_crop))
+    super::inlined!("Truchet_hex_crop", truchet_hex_crop)
         .params(&[
             p_range("Truchet_hex_crop_wd", 0.2, 0.0, 5.0),
             p_int("Truchet_hex_crop_mode", 0.0, 0.0, 2.0),
@@ -67,8 +62,7 @@ pub(super) static DEFS: &[VarDef] = &[
             ),
         ])
         .prepare(truchet_hex_crop_prep),
-    VarDef::new("Truchet_hex_fill", truchet_hex_fill)
-        .batch(super::inline_batch!(truchet_hex_fill))
+    super::inlined!("Truchet_hex_fill", truchet_hex_fill)
         .params(&[
             p_int("Truchet_hex_fill_n", 3.0, f64::NEG_INFINITY, f64::INFINITY),
             p_int("Truchet_hex_fill_flipx", 1.0, 0.0, 1.0),
@@ -84,8 +78,7 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::RANDOM)
         .prepare(truchet_hex_fill_prep),
-    VarDef::new("Truchet_inv", truchet_inv)
-        .batch(super::inline_batch!(truchet_inv))
+    super::inlined!("Truchet_inv", truchet_inv)
         .params(&[
             p_range("Truchet_inv_exponent", 2.0, 0.0, 2.0),
             p("Truchet_inv_arc_width", 0.5),
@@ -94,9 +87,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("Truchet_inv_seed", 1.0),
         ])
         .prepare(truchet_inv_prep),
-    VarDef::new("truchet_knot", truchet_knot)
-        .batch(super::inline_batch!(truchet_knot))
-        .flags(flag::RANDOM),
+    super::inlined!("truchet_knot", truchet_knot).flags(flag::RANDOM),
 ];
 
 /// The tile rotation of hex_truchet: 60° as Fractorium writes it, to four decimals (not π/3).

@@ -13,8 +13,7 @@ use super::*;
 use crate::flame::fastmath::FastTrig;
 
 pub(super) static DEFS: &[VarDef] = &[
-    VarDef::new("coswrap", coswrap)
-        .batch(super::inline_batch!(coswrap))
+    super::inlined!("coswrap", coswrap)
         .params(&[
             p_int_nonzero("coswrap_repeat", 1.0, f64::NEG_INFINITY, f64::INFINITY),
             p("coswrap_amount_x", 0.0),
@@ -23,8 +22,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_cyclic("coswrap_phase_y", 0.0, -1.0, 1.0),
         ])
         .prepare(prep_coswrap),
-    VarDef::new("gdoffs", gdoffs)
-        .batch(super::inline_batch!(gdoffs))
+    super::inlined!("gdoffs", gdoffs)
         .params(&[
             p_range("gdoffs_delta_x", 0.0, 0.0, 16.0),
             p_range("gdoffs_delta_y", 0.0, 0.0, 16.0),
@@ -37,22 +35,19 @@ pub(super) static DEFS: &[VarDef] = &[
         ])
         .flags(flag::USES_Z | flag::WRITES_Z)
         .prepare(gdoffs_prepare),
-    VarDef::new("interference2", interference2)
-        .batch(super::inline_batch!(interference2))
-        .params(&[
-            p("interference2_a1", 1.0),
-            p("interference2_b1", 1.0),
-            p("interference2_c1", 0.0),
-            p("interference2_p1", 1.0),
-            p_int("interference2_t1", 0.0, 0.0, 2.0),
-            p("interference2_a2", 1.0),
-            p("interference2_b2", 1.0),
-            p("interference2_c2", 0.0),
-            p("interference2_p2", 1.0),
-            p_int("interference2_t2", 0.0, 0.0, 2.0),
-        ]),
-    VarDef::new("oscilloscope2", oscilloscope2)
-        .batch(super::inline_batch!(oscilloscope2))
+    super::inlined!("interference2", interference2).params(&[
+        p("interference2_a1", 1.0),
+        p("interference2_b1", 1.0),
+        p("interference2_c1", 0.0),
+        p("interference2_p1", 1.0),
+        p_int("interference2_t1", 0.0, 0.0, 2.0),
+        p("interference2_a2", 1.0),
+        p("interference2_b2", 1.0),
+        p("interference2_c2", 0.0),
+        p("interference2_p2", 1.0),
+        p_int("interference2_t2", 0.0, 0.0, 2.0),
+    ]),
+    super::inlined!("oscilloscope2", oscilloscope2)
         .params(&[
             p_range("oscilloscope2_separation", 1.0, 0.0, INF),
             p("oscilloscope2_frequencyx", PI),
@@ -62,23 +57,19 @@ pub(super) static DEFS: &[VarDef] = &[
             p("oscilloscope2_damping", 0.0),
         ])
         .prepare(prep_oscilloscope2),
-    VarDef::new("pressure_wave", pressure_wave)
-        .batch(super::inline_batch!(pressure_wave))
+    super::inlined!("pressure_wave", pressure_wave)
         .params(&[
             p("pressure_wave_x_freq", 1.0),
             p("pressure_wave_y_freq", 1.0),
         ])
         .prepare(pressure_wave_prep),
-    VarDef::new("pulse", pulse)
-        .batch(super::inline_batch!(pulse))
-        .params(&[
-            p("pulse_freqx", 2.0),
-            p("pulse_freqy", 2.0),
-            p("pulse_scalex", 1.0),
-            p("pulse_scaley", 1.0),
-        ]),
-    VarDef::new("ripple", ripple)
-        .batch(super::inline_batch!(ripple))
+    super::inlined!("pulse", pulse).params(&[
+        p("pulse_freqx", 2.0),
+        p("pulse_freqy", 2.0),
+        p("pulse_scalex", 1.0),
+        p("pulse_scaley", 1.0),
+    ]),
+    super::inlined!("ripple", ripple)
         .params(&[
             p("ripple_frequency", 2.0),
             p("ripple_velocity", 1.0),
@@ -89,8 +80,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("ripple_scale", 1.0),
         ])
         .prepare(ripple_prep),
-    VarDef::new("sinusgrid", sinusgrid)
-        .batch(super::inline_batch!(sinusgrid))
+    super::inlined!("sinusgrid", sinusgrid)
         .params(&[
             p("sinusgrid_ampx", 0.5),
             p("sinusgrid_ampy", 0.5),
@@ -98,8 +88,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("sinusgrid_freqy", 1.0),
         ])
         .prepare(sinusgrid_prep),
-    VarDef::new("vibration", vibration)
-        .batch(super::inline_batch!(vibration))
+    super::inlined!("vibration", vibration)
         .params(&[
             p_cyclic("vibration_dir", 0.0, 0.0, TAU),
             p_cyclic("vibration_angle", FRAC_PI_2, 0.0, TAU),
@@ -113,8 +102,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_cyclic("vibration_phase2", 0.0, 0.0, 1.0),
         ])
         .prepare(vibration_prep),
-    VarDef::new("vibration2", vibration2)
-        .batch(super::inline_batch!(vibration2))
+    super::inlined!("vibration2", vibration2)
         .params(&[
             p("vibration2_dir", 0.0),
             p("vibration2_angle", FRAC_PI_2),
@@ -144,20 +132,17 @@ pub(super) static DEFS: &[VarDef] = &[
             p("vibration2_amfreq2", 0.0),
         ])
         .prepare(vibration2_prep),
-    VarDef::new("waves22", waves22)
-        .batch(super::inline_batch!(waves22))
-        .params(&[
-            p("waves22_scalex", 0.05),
-            p("waves22_scaley", 0.05),
-            p("waves22_freqx", 7.0),
-            p("waves22_freqy", 13.0),
-            p_int("waves22_modex", 0.0, 0.0, 1.0),
-            p_int("waves22_modey", 0.0, 0.0, 1.0),
-            p("waves22_powerx", 2.0),
-            p("waves22_powery", 2.0),
-        ]),
-    VarDef::new("waves23", waves23)
-        .batch(super::inline_batch!(waves23))
+    super::inlined!("waves22", waves22).params(&[
+        p("waves22_scalex", 0.05),
+        p("waves22_scaley", 0.05),
+        p("waves22_freqx", 7.0),
+        p("waves22_freqy", 13.0),
+        p_int("waves22_modex", 0.0, 0.0, 1.0),
+        p_int("waves22_modey", 0.0, 0.0, 1.0),
+        p("waves22_powerx", 2.0),
+        p("waves22_powery", 2.0),
+    ]),
+    super::inlined!("waves23", waves23)
         .params(&[
             p("waves23_scalex", 0.05),
             p("waves23_scaley", 0.05),
@@ -165,12 +150,10 @@ pub(super) static DEFS: &[VarDef] = &[
             p("waves23_freqy", 13.0),
         ])
         .prepare(waves23_prep),
-    VarDef::new("waves2_3D", waves2_3d)
-        .batch(super::inline_batch!(waves2_3d))
+    super::inlined!("waves2_3D", waves2_3d)
         .params(&[p("waves2_3D_freq", 2.0), p("waves2_3D_scale", 1.0)])
         .flags(flag::USES_Z | flag::WRITES_Z),
-    VarDef::new("waves2_radial", waves2_radial)
-        .batch(super::inline_batch!(waves2_radial))
+    super::inlined!("waves2_radial", waves2_radial)
         .params(&[
             p("waves2_radial_freqx", 7.0),
             p("waves2_radial_scalex", 0.1),
@@ -180,8 +163,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("waves2_radial_distance", 10.0),
         ])
         .needs(need::SUMSQ | need::SQRT),
-    VarDef::new("waves2b", waves2b)
-        .batch(super::inline_batch!(waves2b))
+    super::inlined!("waves2b", waves2b)
         .params(&[
             p("waves2b_freqx", 2.0),
             p("waves2b_freqy", 2.0),
@@ -195,8 +177,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p_range("waves2b_jacok", 0.25, -1.0, 1.0),
         ])
         .prepare(waves2b_prep),
-    VarDef::new("waves3", waves3)
-        .batch(super::inline_batch!(waves3))
+    super::inlined!("waves3", waves3)
         .params(&[
             p("waves3_scalex", 0.05),
             p("waves3_scaley", 0.05),
@@ -206,8 +187,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("waves3_sy_freq", 2.0),
         ])
         .prepare(waves3_prep),
-    VarDef::new("waves4", waves4)
-        .batch(super::inline_batch!(waves4))
+    super::inlined!("waves4", waves4)
         .params(&[
             p("waves4_scalex", 0.05),
             p("waves4_scaley", 0.05),
@@ -217,8 +197,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("waves4_yfact", 0.1),
         ])
         .prepare(waves4_prep),
-    VarDef::new("waves42", waves42)
-        .batch(super::inline_batch!(waves42))
+    super::inlined!("waves42", waves42)
         .params(&[
             p("waves42_scalex", 0.05),
             p("waves42_scaley", 0.05),

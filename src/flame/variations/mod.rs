@@ -163,9 +163,9 @@ mod shared;
 pub(crate) mod util;
 
 pub use crate::flame::fastmath::Simd;
-pub(crate) use batch::inline_batch;
 pub use batch::time_batches;
 pub(crate) use batch::{batch_with, generic_batch};
+pub(crate) use batch::{inline_batch, inlined};
 pub use def::{
     Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, Rules, VarDef, VarState, ZRule,
     flag,
