@@ -265,6 +265,11 @@ impl Keyframes {
     /// The flame at `frame` (fractional frames for motion blur): `base` with every curve's value
     /// at that frame set. Targets the flame lacks are skipped.
     pub fn apply(&self, base: &Flame, frame: f64) -> Flame {
+        self.apply_where(base, frame, |_| true)
+    }
+
+    /// As [`Keyframes::apply`], playing only the curves whose target `keep` accepts.
+    pub fn apply_where(&self, base: &Flame, frame: f64, keep: impl Fn(&Target) -> bool) -> Flame {
         let mut f = base.clone();
         let wrap = self.wrap.then_some(self.frames as f64);
         // Values set as they stand first (position, coefficients), then scales, then turns,
@@ -275,7 +280,7 @@ impl Keyframes {
             Target::Xform(_, XformParam::Rotate | XformParam::PostRotate) => 2,
             _ => 0,
         };
-        let mut curves: Vec<&Curve> = self.curves.iter().collect();
+        let mut curves: Vec<&Curve> = self.curves.iter().filter(|c| keep(&c.target)).collect();
         curves.sort_by_key(order);
         for c in &curves {
             if let Some(v) = c.eval(frame, wrap) {

@@ -92,7 +92,7 @@ impl Flame {
             let f = if self.keys.is_empty() {
                 self.clone()
             } else {
-                self.keys.apply(self, time - 1.0)
+                self.at_jwildfire_time(time)
             };
             for mut s in f.layer_sources() {
                 s.weight *= fade;

@@ -138,10 +138,27 @@ impl crate::flame::model::Flame {
     pub fn at_jwildfire_frame(&self) -> crate::flame::model::Flame {
         let blurred = self.jwildfire_motion_blur().len() > 1;
         if self.renders_as_jwildfire() && !self.keys.is_empty() && !blurred {
-            self.keys.apply(self, self.jwf.frame - 1.0)
+            self.at_jwildfire_time(self.jwf.frame)
         } else {
             self.clone()
         }
+    }
+
+    /// The flame JWildfire's final render draws at `time` (counted from 1): its motion curves
+    /// played twice. JWildfire's render command (and its batch and command-line renders)
+    /// plays the curves at the frame shown on a copy of the flame that keeps its curves, and
+    /// its renderer plays them again, at that frame and at each time of the motion blur. A
+    /// curve that sets a value (a coefficient, a weight, a variation's parameter) ends at its
+    /// value at `time`; a turn or a scale of an affine map turns or scales the map it finds,
+    /// so the map ends turned by the curve's value at the frame shown plus its value at
+    /// `time` (unless a coefficient curve reset the map in between). JWildfire's palette
+    /// shift sets the shift, so it is played once.
+    pub fn at_jwildfire_time(&self, time: f64) -> crate::flame::model::Flame {
+        use crate::flame::keyframes::Target;
+        let once = self.keys.apply_where(self, self.jwf.frame - 1.0, |t| {
+            !matches!(t, Target::PaletteRotate | Target::PaletteHue)
+        });
+        self.keys.apply(&once, time - 1.0)
     }
 
     /// JWildfire's motion blur: the times of the flames drawn for the frame shown (from 1),
