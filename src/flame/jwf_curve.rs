@@ -264,4 +264,29 @@ mod tests {
         let m = eval(&x, &y, JwfInterp::Bezier, 21.0).unwrap();
         assert!(m > 2.5 && m < 10.0, "{m}");
     }
+
+    /// A turn of thousands of degrees whose first point lies before frame 1 and whose last
+    /// lies past the frame count (JWildfire's example206), against values worked out by hand
+    /// from JWildfire's rules: 1.6 × 2158 = 3453 samples per span, the sample frames rounded
+    /// half away from zero, the value on the line through the two samples around the frame.
+    #[test]
+    fn a_spline_of_wide_spans_matches_jwildfires_envelope() {
+        let x = [-157.0, 710.0, 2868.0, 4329.0];
+        let y = [
+            -292.55319148936206,
+            1934.8404255319147,
+            4195.478723404255,
+            4976.728723404255,
+        ];
+        for (t, want) in [
+            (575.0, 1714.8653022498656),
+            (573.05, 1711.3847335940889),
+            (576.95, 1718.336599436264),
+            (1.0, 218.77771201397397),
+            (100.0, 549.1228815505198),
+        ] {
+            let v = eval(&x, &y, JwfInterp::Spline, t).unwrap();
+            assert!((v - want).abs() < 1e-9, "{t}: {v} against {want}");
+        }
+    }
 }

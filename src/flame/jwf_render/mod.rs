@@ -151,12 +151,13 @@ impl crate::flame::model::Flame {
     /// curve that sets a value (a coefficient, a weight, a variation's parameter) ends at its
     /// value at `time`; a turn or a scale of an affine map turns or scales the map it finds,
     /// so the map ends turned by the curve's value at the frame shown plus its value at
-    /// `time` (unless a coefficient curve reset the map in between). JWildfire's palette
-    /// shift sets the shift, so it is played once.
+    /// `time` (unless a coefficient curve reset the map in between). Only the maps' curves
+    /// are played the first time: every other curve sets its value, which the second time
+    /// sets anew (JWildfire's palette shift too, which ugnis' palette turn would add up).
     pub fn at_jwildfire_time(&self, time: f64) -> crate::flame::model::Flame {
         use crate::flame::keyframes::Target;
         let once = self.keys.apply_where(self, self.jwf.frame - 1.0, |t| {
-            !matches!(t, Target::PaletteRotate | Target::PaletteHue)
+            matches!(t, Target::Xform(..))
         });
         self.keys.apply(&once, time - 1.0)
     }
@@ -178,5 +179,73 @@ impl crate::flame::model::Flame {
             out.push((l.frame + half - p * l.motion_blur_timestep, fade.max(0.01)));
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::flame::PaletteIndex;
+    use crate::flame::jwf_curve::JwfInterp;
+    use crate::flame::keyframes::{CurveStyle, Key, Target, XformParam, XformRef};
+    use crate::flame::model::{Affine, Flame, Xform};
+
+    /// A JWildfire flame of one map, shown at frame 31, whose turn runs linearly from 0° at
+    /// frame 1 to 100° at frame 101 (so its value at frame t is t − 1), whose x move runs
+    /// from 0 to 1 over the same frames, and whose palette is shifted by 3 entries.
+    fn turning() -> Flame {
+        let mut f = Flame {
+            xforms: vec![Xform::linear(
+                Affine::new(0.5, 0.1, -0.2, 0.7, 0.3, 0.0),
+                1.0,
+                0.0,
+            )],
+            palette_index: PaletteIndex::JWildfire,
+            ..Flame::default()
+        };
+        f.jwf.frame = 31.0;
+        let linear = |f: &mut Flame, t: Target, keys: [(f64, f64); 2]| {
+            let c = f.keys.curve_mut(t);
+            c.set_style(CurveStyle::JWildfire(JwfInterp::Linear))
+                .unwrap();
+            for (frame, value) in keys {
+                c.insert(Key::new(frame, value)).unwrap();
+            }
+        };
+        let rotate = Target::Xform(XformRef::Index(0), XformParam::Rotate);
+        linear(&mut f, rotate, [(0.0, 0.0), (100.0, 100.0)]);
+        let move_x = Target::Xform(XformRef::Index(0), XformParam::MoveX);
+        linear(&mut f, move_x, [(0.0, 0.0), (100.0, 1.0)]);
+        linear(&mut f, Target::PaletteRotate, [(0.0, 3.0), (100.0, 3.0)]);
+        f
+    }
+
+    /// JWildfire's final render plays the curves at the frame shown and again at the time
+    /// drawn: a turn adds up, a set value and the palette shift do not.
+    #[test]
+    fn a_turn_curve_counts_the_frame_shown_and_the_time_drawn() {
+        let f = turning();
+        let base = f.xforms[0].coefs;
+        for (time, turn) in [(31.0, 60.0), (21.0, 50.0), (31.5, 60.5)] {
+            let g = f.at_jwildfire_time(time);
+            let m = g.xforms[0].coefs;
+            let (s, c) = f64::to_radians(turn).sin_cos();
+            let want = [
+                c * base.a - s * base.c,
+                c * base.b - s * base.d,
+                s * base.a + c * base.c,
+                s * base.b + c * base.d,
+            ];
+            for (got, want) in [m.a, m.b, m.c, m.d].into_iter().zip(want) {
+                assert!((got - want).abs() < 1e-12, "{time}: {m:?}");
+            }
+            assert!((m.e - (time - 1.0) / 100.0).abs() < 1e-12, "{time}: {m:?}");
+            assert_eq!(m.f, base.f);
+            let mut shifted = f.palette.colors.clone();
+            shifted.rotate_right(3);
+            assert_ne!(shifted, f.palette.colors, "the palette shift shows");
+            assert_eq!(g.palette.colors, shifted, "{time}");
+        }
+        // Without motion blur the picture shows the flame at the frame shown.
+        assert_eq!(f.at_jwildfire_frame(), f.at_jwildfire_time(31.0));
     }
 }
