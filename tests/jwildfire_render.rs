@@ -6,9 +6,10 @@
 //! with the density through a Gaussian, white level, low-density brightness, antialiasing),
 //! its tone-map settings with a gradient background and saturation, a smoothing kernel with
 //! strong antialiasing and a final xform that keeps the colour, three layers, the 3-D camera
-//! (bank, perspective, depth of field, rotation about the origin), motion curves with
-//! motion blur (a move; turns and scales, which JWildfire's render plays twice), points drawn in colours of their own (direct colour: two patterns' colours
-//! as they are, kept through a final xform), and bad values as JWildfire meets them (an orbit
+//! (bank, perspective, depth of field, rotation about the origin), motion curves with motion
+//! blur (a move; turns and scales, which JWildfire's render plays twice), points drawn in
+//! colours of their own (direct colour: two patterns' colours as they are, kept through a
+//! final xform), and bad values as JWildfire meets them (an orbit
 //! gone to NaN draws nothing until JWildfire's next check restarts it; a pre_blur marked with
 //! priority 0 does nothing).
 //!
