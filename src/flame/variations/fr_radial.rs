@@ -15,9 +15,21 @@ use crate::flame::fastmath;
 use crate::flame::fastmath::FastTrig;
 
 /// The thirteen shape parameters of the w/x/y/z family, `PREFIX_hypergon` … `PREFIX_super_n3`,
-/// after any leading ones given.
+/// after any leading ones given. Fractorium keeps the star slope below π/2 and n3 at 1 by
+/// default; the `jwildfire` form takes the slope as it stands and n3 at 0, as JWildfire does.
 macro_rules! shape_params {
+    (jwildfire $pre:literal $(, $lead:expr)*) => {
+        $crate::flame::variations::fr_radial::shape_params!(@ $pre, p(concat!($pre, "_star_slope"), 2.0), 0.0 $(, $lead)*)
+    };
     ($pre:literal $(, $lead:expr)*) => {
+        $crate::flame::variations::fr_radial::shape_params!(
+            @ $pre,
+            p_range(concat!($pre, "_star_slope"), 2.0, f64::EPSILON, ::std::f64::consts::FRAC_PI_2),
+            1.0
+            $(, $lead)*
+        )
+    };
+    (@ $pre:literal, $slope:expr, $n3:expr $(, $lead:expr)*) => {
         &[
             $($lead,)*
             p(concat!($pre, "_hypergon"), 0.0),
@@ -25,17 +37,18 @@ macro_rules! shape_params {
             p(concat!($pre, "_hypergon_r"), 1.0),
             p(concat!($pre, "_star"), 0.0),
             p_int(concat!($pre, "_star_n"), 5.0, 3.0, f64::INFINITY),
-            p_range(concat!($pre, "_star_slope"), 2.0, f64::EPSILON, FRAC_PI_2),
+            $slope,
             p(concat!($pre, "_lituus"), 0.0),
             p(concat!($pre, "_lituus_a"), 1.0),
             p(concat!($pre, "_super"), 0.0),
             p(concat!($pre, "_super_m"), 1.0),
             p(concat!($pre, "_super_n1"), 1.0),
             p(concat!($pre, "_super_n2"), 1.0),
-            p(concat!($pre, "_super_n3"), 1.0),
+            p(concat!($pre, "_super_n3"), $n3),
         ]
     };
 }
+pub(super) use shape_params;
 
 pub(super) static DEFS: &[VarDef] = &[
     super::inlined!("cardioid", cardioid)

@@ -21,29 +21,6 @@ use crate::flame::variations::*;
 #[allow(clippy::approx_constant)]
 const ROUNDED_HALF_PI: f64 = 1.5708;
 
-/// The shape parameters of Michael Faber's x, y, z and w as JWildfire keeps them (after
-/// `lead`): whole polygon and star counts from 3, every other value as it stands.
-macro_rules! faber_shape {
-    ($pre:literal $(, $lead:expr)*) => {
-        &[
-            $($lead,)*
-            p(concat!($pre, "_hypergon"), 0.0),
-            p_int(concat!($pre, "_hypergon_n"), 4.0, 3.0, f64::INFINITY),
-            p(concat!($pre, "_hypergon_r"), 1.0),
-            p(concat!($pre, "_star"), 0.0),
-            p_int(concat!($pre, "_star_n"), 5.0, 3.0, f64::INFINITY),
-            p(concat!($pre, "_star_slope"), 2.0),
-            p(concat!($pre, "_lituus"), 0.0),
-            p(concat!($pre, "_lituus_a"), 1.0),
-            p(concat!($pre, "_super"), 0.0),
-            p(concat!($pre, "_super_m"), 1.0),
-            p(concat!($pre, "_super_n1"), 1.0),
-            p(concat!($pre, "_super_n2"), 1.0),
-            p(concat!($pre, "_super_n3"), 0.0),
-        ]
-    };
-}
-
 pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
     VarDef::new("henon", henon).params(&[p("henon_a", 0.5), p("henon_b", 1.0), p("henon_c", 1.0)]),
     VarDef::new("lozi", lozi).params(&[p("lozi_a", 0.5), p("lozi_b", 1.0), p("lozi_c", 1.0)]),
@@ -172,19 +149,19 @@ pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
         ])
         .flags(flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC),
     VarDef::new("x", fr_radial::x_var)
-        .params(faber_shape!("x"))
+        .params(fr_radial::shape_params!(jwildfire "x"))
         .needs(need::SUMSQ | need::ATAN_YX)
         .prepare(fr_radial::shape_prep),
     VarDef::new("y", fr_radial::y_var)
-        .params(faber_shape!("y"))
+        .params(fr_radial::shape_params!(jwildfire "y"))
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(fr_radial::shape_prep),
     VarDef::new("z", fr_radial::z_var)
-        .params(faber_shape!("z"))
+        .params(fr_radial::shape_params!(jwildfire "z"))
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(fr_radial::shape_prep),
     VarDef::new("w", fr_radial::w_var)
-        .params(faber_shape!("w", p("w_angle", 0.0)))
+        .params(fr_radial::shape_params!(jwildfire "w", p("w_angle", 0.0)))
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
         .prepare(fr_radial::shape_prep_w),
 ];
