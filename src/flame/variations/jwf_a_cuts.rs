@@ -205,7 +205,14 @@ fn hash2(x: f64, y: f64) -> f64 {
 
 /// The common end of the cut variations: the point (x, y), shifted by −centre, kept or hidden
 /// (then at −centre) by `set` and `invert`; replaces the sum so far.
-fn cut_end(v: &Prepared, acc: &mut Acc, set: bool, invert: f64, pt: (f64, f64), c: f64) -> V3 {
+pub(super) fn cut_end(
+    v: &Prepared,
+    acc: &mut Acc,
+    set: bool,
+    invert: f64,
+    pt: (f64, f64),
+    c: f64,
+) -> V3 {
     let hide = if invert == 0.0 { set } else { !set };
     let (x, y) = if hide { (0.0, 0.0) } else { pt };
     acc.hide = hide;
@@ -218,7 +225,7 @@ fn cut_end(v: &Prepared, acc: &mut Acc, set: bool, invert: f64, pt: (f64, f64), 
 
 /// The point a cut variation tests: the input (mode 0, centre 0) or a uniform point of
 /// [lo, lo + span]² (mode 1; two draws) with the centre `c` the variation subtracts then.
-fn cut_point(
+pub(super) fn cut_point(
     mode: f64,
     t: &VarIn,
     rng: &mut FastRng,
@@ -236,7 +243,7 @@ fn cut_point(
 }
 
 /// Flags of the cut variations.
-const CUT: u32 = flag::JWILDFIRE | flag::RANDOM | flag::WRITES_ACC | flag::HIDES;
+pub(super) const CUT: u32 = flag::JWILDFIRE | flag::RANDOM | flag::WRITES_ACC | flag::HIDES;
 
 /// A pattern's offset (x0, y0) = seed × two draws of Java's generator seeded with `seed`.
 pub(super) fn seed_offset(v: &mut Prepared, seed: f64) {

@@ -96,7 +96,12 @@ pub(super) static DEFS: &[VarDef] = &[
 
 /// Up to 50 uniform draws in [−½, ½]³ until `sd` is negative: that point times the weight,
 /// shown; else hidden (nothing added).
-fn fill_solid(v: &Prepared, acc: &mut Acc, rng: &mut FastRng, sd: impl Fn(V3) -> f64) -> V3 {
+pub(super) fn fill_solid(
+    v: &Prepared,
+    acc: &mut Acc,
+    rng: &mut FastRng,
+    sd: impl Fn(V3) -> f64,
+) -> V3 {
     for _ in 0..50 {
         let x = rng.f01() - 0.5;
         let y = rng.f01() - 0.5;
@@ -110,20 +115,20 @@ fn fill_solid(v: &Prepared, acc: &mut Acc, rng: &mut FastRng, sd: impl Fn(V3) ->
     [0.0; 3]
 }
 
-fn len3(p: V3) -> f64 {
+pub(super) fn len3(p: V3) -> f64 {
     (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()
 }
 
-fn dot3(a: V3, b: V3) -> f64 {
+pub(super) fn dot3(a: V3, b: V3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn sub3(a: V3, b: V3) -> V3 {
+pub(super) fn sub3(a: V3, b: V3) -> V3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 /// Distance to a box of half-sides b (negative inside), from |p| − b.
-fn sd_box_q(q: V3) -> f64 {
+pub(super) fn sd_box_q(q: V3) -> f64 {
     len3(q.map(|c| c.max(0.0))) + q[0].max(q[1].max(q[2])).min(0.0)
 }
 

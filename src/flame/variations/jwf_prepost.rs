@@ -101,6 +101,14 @@ pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("post_c_symmetry", c_symmetry)
         .params(&[p("post_c_symmetry_p1", 3.0), p("post_c_symmetry_p2", 3.0)])
         .flags(POST),
+    VarDef::new("pre_rect_wf", rect_wf)
+        .params(&[
+            p("pre_rect_wf_x0", -0.5),
+            p("pre_rect_wf_x1", 0.5),
+            p("pre_rect_wf_y0", -0.5),
+            p("pre_rect_wf_y1", 0.5),
+        ])
+        .flags(PRE | flag::RANDOM),
     VarDef::new("post_crosscrop", crosscrop)
         .params(&[
             p("post_crosscrop_x", 1.0),
@@ -286,6 +294,15 @@ fn c_symmetry(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let r = (t.x * t.x + t.y * t.y).sqrt().powf(p2);
     let (s, c) = a.sin_cos();
     [v.w * c * r, v.w * s * r, t.z]
+}
+
+/// pre_rect_wf: a uniform point of the rectangle [x0, x1] × [y0, y1] (times the weight) in
+/// place of the affine point; z is kept.
+fn rect_wf(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [x0, x1, y0, y1] = v.params();
+    let x = v.w * (x0 + (x1 - x0) * rng.f01());
+    let y = v.w * (y0 + (y1 - y0) * rng.f01());
+    [x, y, t.z]
 }
 
 /// Whittaker Courtney's cross: keeps (weighted) the points within the cross of half-widths x

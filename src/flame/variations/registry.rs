@@ -28,6 +28,8 @@ use super::{
 use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 // JWildfire variations, third part.
 use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
+// JWildfire variations, fourth part.
+use super::{jwf_d_crops, jwf_d_cuts, jwf_d_plane, jwf_d_solids};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -69,7 +71,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 51] = [
+const FILES: [&[VarDef]; 55] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -124,6 +126,11 @@ const FILES: [&[VarDef]; 51] = [
     jwf_c_escape::DEFS,
     jwf_c_glsl::DEFS,
     jwf_c_orbits::DEFS,
+    // JWildfire variations, fourth part.
+    jwf_d_crops::DEFS,
+    jwf_d_cuts::DEFS,
+    jwf_d_plane::DEFS,
+    jwf_d_solids::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -429,6 +436,36 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "hopalong",
     "threeply",
     "curliecue2",
+    // JWildfire variations, fourth part.
+    "cone3D",
+    "torus3D",
+    "cylinder3D",
+    "capsule3D",
+    "cappedcone3D",
+    "rhombus3D",
+    "triprism3D",
+    "octahedron3D",
+    "octogonprism3D",
+    "rbox3D",
+    "hourglass3D",
+    "gridout3D",
+    "post_benesi_crop",
+    "post_bristorbrot_crop",
+    "post_coastalbrot_crop",
+    "post_aexion_crop",
+    "post_mandelbox3d_crop",
+    "pre_rect_wf",
+    "cut_spiral",
+    "cut_wood",
+    "cut_metaballs",
+    "cut_vasarely",
+    "cut_apollonian",
+    "cut_spots",
+    "cut_celtic",
+    "cut_truchet",
+    "de_stijl",
+    "pointgrid_wf",
+    "pointgrid3d_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.

@@ -1,0 +1,313 @@
+//! More of JWildfire's "cut" variations (Jesus Sosa's ports of shader patterns; see
+//! `jwf_a_cuts` for how a cut keeps or hides a point): `cut_spiral` (bands of a turning
+//! spiral), `cut_wood` (wood grain: lines twisted by value noise), `cut_metaballs` (a
+//! Worley-style field of blobs), `cut_vasarely` (Vasarely's bulging stripes),
+//! `cut_apollonian` (an Apollonian gasket), `cut_spots` (fractal-noise spots),
+//! `cut_celtic` (interlaced celtic rings) and `cut_truchet` (random Truchet tiles).
+//!
+//! The formulas follow JWildfire's (LGPL-2.1) code, written anew.
+
+use super::jwf_a_cuts::{CUT, cut_end, cut_point, seed_offset};
+use super::util::{atan2_approx, fract, mix, smoothstep};
+use super::*;
+
+pub(super) static DEFS: &[VarDef] = &[
+    VarDef::new("cut_spiral", cut_spiral)
+        .params(&[
+            p("cut_spiral_time", 0.0),
+            p_int("cut_spiral_mode", 1.0, 0.0, 1.0),
+            p("cut_spiral_zoom", 2.5),
+            p_int("cut_spiral_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_wood", cut_wood)
+        .params(&[
+            p("cut_wood_shiftX", 0.0),
+            p("cut_wood_shiftY", 0.0),
+            p_range("cut_wood_freq", 1.8, 0.1, 2.0),
+            p_range("cut_wood_smooth", 1.0, 0.0, 1.0),
+            p_range("cut_wood_LineCount", 20.0, 1.0, 50.0),
+            p_range("cut_wood_LineWidth", 0.2, 0.1, 0.5),
+            p_int("cut_wood_mode", 1.0, 0.0, 1.0),
+            p("cut_wood_zoom", 2.5),
+            p_int("cut_wood_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_metaballs", cut_metaballs)
+        .params(&[
+            p_int("cut_metaballs_mode", 1.0, 0.0, 1.0),
+            p("cut_metaballs_zoom", 7.0),
+            p_int("cut_metaballs_invert", 0.0, 0.0, 1.0),
+            p("cut_metaballs_time", 0.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_vasarely", cut_vasarely)
+        .params(&[
+            p_int("cut_vasarely_mode", 1.0, 0.0, 1.0),
+            p("cut_vasarely_zoom", 1.0),
+            p_int("cut_vasarely_invert", 0.0, 0.0, 1.0),
+            p("cut_vasarely_size", 0.5),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_apollonian", cut_apollonian)
+        .params(&[
+            p_int("cut_apollonian_mode", 1.0, 0.0, 1.0),
+            p_int("cut_apollonian_levels", 4.0, 1.0, 10.0),
+            p_range("cut_apollonian_zoom", 2.0, 0.1, 50.0),
+            p_int("cut_apollonian_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_spots", cut_spots)
+        .params(&[
+            p_int("cut_spots_mode", 1.0, 0.0, 1.0),
+            p_int("cut_spots_seed", 0.0, NEG_INF, INF),
+            p("cut_spots_zoom", 0.3),
+            p_int("cut_spots_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT)
+        .prepare(cut_spots_prepare),
+    VarDef::new("cut_celtic", cut_celtic)
+        .params(&[
+            p_int("cut_celtic_mode", 1.0, 0.0, 1.0),
+            p("cut_celtic_zoom", 5.0),
+            p_int("cut_celtic_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_truchet", cut_truchet)
+        .params(&[
+            p_int("cut_truchet_mode", 1.0, 0.0, 1.0),
+            p_int("cut_truchet_type", 0.0, 0.0, 2.0),
+            p_int("cut_truchet_seed", 1000.0, NEG_INF, INF),
+            p("cut_truchet_zoom", 10.0),
+            p_int("cut_truchet_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+];
+
+/// The shader hash fract(sin(12.9898·x + 78.233·y)·43758.5453123).
+fn hash(x: f64, y: f64) -> f64 {
+    fract((x * 12.9898 + y * 78.233).sin() * 43758.5453123)
+}
+
+/// The shader's two-component hash of a cell.
+fn hash2v(x: f64, y: f64) -> (f64, f64) {
+    let a = (x * 127.1 + y * 311.7).sin() * 43758.5453;
+    let b = (x * 269.5 + y * 183.3).sin() * 43758.5453;
+    (fract(a), fract(b))
+}
+
+/// cut_spiral: the point turned and grown by 1.1 until it leaves y ≤ 1 (at most 64 times);
+/// an odd count of turns cuts.
+fn cut_spiral(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [time, mode, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -1.0, 2.0, 0.0);
+    let (s, c) = time.sin_cos();
+    let (a00, a10, a01, a11) = (1.1 * s, 1.1 * c, -1.1 * c, 1.1 * s);
+    let (mut ux, mut uy) = (x * zoom, y * zoom);
+    let mut l = 0;
+    for _ in 0..64 {
+        (ux, uy) = (a00 * ux + a01 * uy, a10 * ux + a11 * uy);
+        if uy > 1.0 {
+            break;
+        }
+        l ^= 1;
+    }
+    cut_end(v, acc, l > 0, invert, (x, y), 0.0)
+}
+
+/// Smoothly interpolated value noise of the cell hashes at `density` cells per unit.
+fn value_noise(x: f64, y: f64, density: f64) -> f64 {
+    let (cx, cy) = (x * density, y * density);
+    let (fx, fy) = (fract(cx), fract(cy));
+    let (ix, iy) = (cx.floor(), cy.floor());
+    let (bl, br) = (hash(ix, iy), hash(ix + 1.0, iy));
+    let (tl, tr) = (hash(ix, iy + 1.0), hash(ix + 1.0, iy + 1.0));
+    let (ux, uy) = (smoothstep(0.0, 1.0, fx), smoothstep(0.0, 1.0, fy));
+    mix(mix(bl, br, ux), mix(tl, tr, ux), uy)
+}
+
+/// cut_wood: `LineCount` lines per unit of width `LineWidth`, each region turned about
+/// (½, ½) by its noise (raised to `smooth`).
+fn cut_wood(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [x0, y0, freq, smooth, count, width, mode, zoom, invert] = v.params();
+    let (x, y, c) = cut_point(mode, t, rng, 0.0, 1.0, 0.5);
+    let (sx, sy) = (x * zoom + x0, y * zoom + y0);
+    let angle = value_noise(sx, sy, freq).powf(smooth);
+    let (s, co) = angle.sin_cos();
+    let (dx, dy) = (sx - 0.5, sy - 0.5);
+    let ty = s * dx + co * dy + 0.5;
+    let cy = fract(ty * count);
+    let line = smoothstep(0.5 - width, 0.5 - width + 0.04, cy)
+        - smoothstep(0.5 + width - 0.04, 0.5 + width, cy);
+    cut_end(v, acc, line > 0.0, invert, (x, y), c)
+}
+
+/// cut_metaballs: the product of the distances to the moving points of the 3 × 3 cells
+/// around; cuts where it falls below 0.06.
+fn cut_metaballs(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [mode, zoom, invert, time] = v.params();
+    let (x, y, c) = cut_point(mode, t, rng, 0.0, 1.0, 0.5);
+    let (sx, sy) = (x * zoom, y * zoom);
+    let (ix, iy, fx, fy) = (sx.floor(), sy.floor(), fract(sx), fract(sy));
+    let mut m: f64 = 1.0;
+    for j in -1..=1 {
+        for i in -1..=1 {
+            let (nx, ny) = (i as f64, j as f64);
+            let (ox, oy) = hash2v(ix + nx, iy + ny);
+            let ox = (ox * 6.2831 + time).sin() * 0.5 + 0.5;
+            let oy = (oy * 6.2831 + time).sin() * 0.5 + 0.5;
+            let (px, py) = (nx + ox - fx, ny + oy - fy);
+            m = m.min(m * (px * px + py * py).sqrt());
+        }
+    }
+    cut_end(v, acc, m < 0.06, invert, (x, y), c)
+}
+
+/// cut_vasarely: stripes sin(150·r·sin(θ + 1.57 + 4b²)) within |x| < 1, bulging where
+/// b = max(0, 2 − r/size) is positive.
+fn cut_vasarely(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [mode, zoom, invert, size] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -1.0, 2.0, 0.0);
+    let (ux, uy) = (x * zoom, y * zoom);
+    let l = (ux * ux + uy * uy).sqrt();
+    let b = (2.0 - l / size).max(0.0);
+    let color = if ux.abs() < 1.0 {
+        let s = (l * (atan2_approx(uy, ux) + 1.57 + 4.0 * b * b).sin() * 150.0).sin();
+        let c1 = 0.0 - 0.5 - s;
+        c1 - (c1 - 0.5 - s)
+    } else {
+        0.0
+    };
+    cut_end(v, acc, color < 0.1, invert, (x, y), 0.0)
+}
+
+/// cut_apollonian: `levels` folds and inversions of an Apollonian gasket; cuts off the thin
+/// band around the final |y|.
+fn cut_apollonian(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [mode, levels, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -0.5, 1.0, 0.0);
+    let (mut px, mut py) = (x * zoom, y * zoom);
+    let mut scale = 1.0;
+    for _ in 0..levels as i32 {
+        px = fract(px * 0.5 + 0.5) * 2.0 - 1.0;
+        py = fract(py * 0.5 + 0.5) * 2.0 - 1.0;
+        let k = 1.34 / (px * px + py * py);
+        px *= k;
+        py *= k;
+        scale *= k;
+    }
+    let d = smoothstep(0.001, 0.002, 0.25 * py.abs() / scale);
+    cut_end(v, acc, d > 0.0, invert, (x, y), 0.0)
+}
+
+fn cut_spots_prepare(v: &mut Prepared) {
+    let [_, seed, _, _] = v.params();
+    seed_offset(v, seed);
+}
+
+/// Value noise with the cubic fade, as the spots' fractal noise sums it.
+fn fade_noise(x: f64, y: f64) -> f64 {
+    let (ix, iy, fx, fy) = (x.floor(), y.floor(), fract(x), fract(y));
+    let a = hash(ix, iy);
+    let b = hash(ix + 1.0, iy);
+    let c = hash(ix, iy + 1.0);
+    let d = hash(ix + 1.0, iy + 1.0);
+    let ux = fx * fx * (3.0 - fx * 2.0);
+    let uy = fy * fy * (3.0 - fy * 2.0);
+    mix(a, b, ux) + (c - a) * uy * (1.0 - ux) + (d - b) * ux * uy
+}
+
+/// Six octaves of [`fade_noise`].
+fn fbm(mut x: f64, mut y: f64) -> f64 {
+    let (mut value, mut amplitude) = (0.0, 0.5);
+    for _ in 0..6 {
+        value += amplitude * fade_noise(x, y);
+        x *= 2.0;
+        y *= 2.0;
+        amplitude *= 0.5;
+    }
+    value
+}
+
+/// cut_spots: keeps where the fractal noise is below 0.4 (the spots), cuts elsewhere.
+fn cut_spots(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [mode, _, zoom, invert] = v.params();
+    let [x0, y0] = v.derived();
+    let (x, y, _) = cut_point(mode, t, rng, -1.0, 2.0, 0.0);
+    let (ux, uy) = (x * zoom * 43.0 + x0, y * zoom * 43.0 + y0);
+    let color = if fbm(ux, uy) < 0.4 { 1.0 } else { 0.0 };
+    cut_end(v, acc, color == 0.0, invert, (x, y), 0.0)
+}
+
+/// A celtic knot cell: the ring of radii 0.38–0.45 less three neighbouring discs.
+fn celtic_cell(x: f64, y: f64) -> f64 {
+    let circ = |ux: f64, uy: f64, r: f64| {
+        let d = (ux * ux + uy * uy).sqrt();
+        smoothstep(d, d + 0.02, r)
+    };
+    let c1 = circ(x, y, 0.38);
+    let c5 = circ(x, y, 0.45);
+    let c2 = circ(x + 0.5, y - 0.288675, 0.45);
+    let c3 = circ(x - 0.5, y - 0.288675, 0.45);
+    let c4 = circ(x, y + 0.57735, 0.45);
+    mix(0.0, c5 - c2 - c3 - c4, c1)
+}
+
+/// One of the celtic pattern's three shifted hexagonal layers at (ux, uy) (already zoomed).
+fn celtic_layer(ux: f64, uy: f64) -> f64 {
+    let m = uy - 2.0 * (uy / 2.0).floor();
+    let ux = ux + if m < 1.0 { 0.0 } else { 0.5 };
+    let (fx, fy) = (fract(ux), fract(uy));
+    celtic_cell(fx - 1.155 / 2.0, fy / 1.155 - 0.5)
+}
+
+/// cut_celtic: three interlaced hexagonal layers of celtic rings.
+fn cut_celtic(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [mode, zoom, invert] = v.params();
+    let (x, y, c) = cut_point(mode, t, rng, 0.0, 1.0, 0.5);
+    let (ux, uy) = (x * zoom, y * 1.155 * zoom);
+    let f = celtic_layer(ux, uy);
+    let g = celtic_layer(ux - 0.5, uy - 0.288675);
+    let h = celtic_layer(ux + 1.0, uy - 0.65);
+    cut_end(v, acc, f + g + h > 0.0, invert, (x, y), c)
+}
+
+/// cut_truchet: Truchet tiles (diagonal bands, arcs or triangles by `type`) chosen by a hash
+/// of each cell, the grid shifted by `seed`.
+fn cut_truchet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [mode, kind, seed, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -0.5, 1.0, 0.0);
+    let h = (7.0 * seed).floor();
+    let (rx, ry) = hash2v(h, h);
+    let (sx, sy) = (x * zoom + h * rx, y * zoom + h * ry);
+    let (ix, iy) = (sx.floor(), sy.floor());
+    let (mut tx, mut ty) = (fract(sx), fract(sy));
+    let index = fract((hash(ix, iy) - 0.5) * 2.0);
+    if index > 0.75 {
+        (tx, ty) = (1.0 - tx, 1.0 - ty);
+    } else if index > 0.5 {
+        tx = 1.0 - tx;
+    } else if index > 0.25 {
+        (tx, ty) = (1.0 - (1.0 - tx), 1.0 - ty);
+    }
+    // GLSL's step(l, r) - step(l, r'): 1 on the ring r' < l <= r.
+    let ring = |l: f64| {
+        let inside = |r: f64| if r < l { 0.0 } else { 1.0 };
+        inside(0.6) - inside(0.4)
+    };
+    let color = match kind as i32 {
+        0 => smoothstep(tx - 0.3, tx, ty) - smoothstep(tx, tx + 0.3, ty),
+        1 => {
+            ring((tx * tx + ty * ty).sqrt())
+                + ring(((tx - 1.0).powi(2) + (ty - 1.0).powi(2)).sqrt())
+        }
+        _ => {
+            if ty < tx {
+                0.0
+            } else {
+                1.0
+            }
+        }
+    };
+    cut_end(v, acc, color == 0.0, invert, (x, y), 0.0)
+}
