@@ -9,9 +9,10 @@
 //! (bank, perspective, depth of field, rotation about the origin), motion curves with motion
 //! blur (a move; turns and scales, which JWildfire's render plays twice), points drawn in
 //! colours of their own (direct colour: two patterns' colours as they are, kept through a
-//! final xform), and bad values as JWildfire meets them (an orbit
+//! final xform), bad values as JWildfire meets them (an orbit
 //! gone to NaN draws nothing until JWildfire's next check restarts it; a pre_blur marked with
-//! priority 0 does nothing).
+//! priority 0 does nothing), and the colour type DISTANCE (the palette entry of how far an
+//! xform moved the point).
 //!
 //! Tolerance: JWildfire itself at quality 300 (another seed) against the reference, the number
 //! in the table; ugnis at quality 300 must reach it minus 2.5 dB. Drawn by flam3's rules these
@@ -33,6 +34,7 @@ const FIXTURES: &[(&str, f64)] = &[
     ("turns", 44.64),
     ("direct", 43.19),
     ("broken", 32.91),
+    ("distance", 41.07),
 ];
 
 fn fixture(name: &str) -> std::path::PathBuf {

@@ -25,6 +25,8 @@ pub(super) struct Scratch {
     pub(super) bad: [bool; LANES],
     /// A variation hid the point (see [`crate::flame::variations::flag::HIDES`]).
     pub(super) hide: [bool; LANES],
+    /// The points as they came in, for an xform that colours by distance.
+    pub(super) old: [[f64; LANES]; 3],
 }
 impl Scratch {
     pub(super) fn new() -> Scratch {
@@ -41,6 +43,7 @@ impl Scratch {
             pc: [0.0; LANES],
             bad: [false; LANES],
             hide: [false; LANES],
+            old: [[0.0; LANES]; 3],
         }
     }
 }
@@ -110,6 +113,12 @@ impl CompiledXform {
         if self.hides {
             g.hide[..n].fill(false);
         }
+        let distance = self.distance.filter(|_| rgb.is_some());
+        if distance.is_some() {
+            g.old[0][..n].copy_from_slice(x);
+            g.old[1][..n].copy_from_slice(y);
+            g.old[2][..n].copy_from_slice(z);
+        }
         self.blend_and_map(x, y, c);
         if let Some(w) = self.linear_only {
             self.linear_and_post(w, x, y, z);
@@ -128,8 +137,12 @@ impl CompiledXform {
             g.py[..n].fill(0.0);
             g.pz[..n].fill(0.0);
         }
-        self.post_forms(c, rgb, g, rng);
+        self.post_forms(c, rgb.as_deref_mut(), g, rng);
         self.finish_group(x, y, z, c, g, rng);
+        if let (Some(d), Some(r)) = (distance, rgb) {
+            let old = [&g.old[0][..n], &g.old[1][..n], &g.old[2][..n]];
+            d.paint(old, [x, y, z], r);
+        }
     }
 
     /// Blend the colours towards the xform's colour and apply the affine map to the points.

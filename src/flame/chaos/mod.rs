@@ -23,6 +23,7 @@ pub use lanes::{LaneState, Lanes};
 pub use projection::Projection;
 pub use xform::{BAD_LIMIT_WIDE, CompiledXform};
 
+use crate::flame::jwf_render::colour_type::DistanceColour;
 use crate::flame::model::Flame;
 use crate::flame::rng::FastRng;
 use crate::flame::variations;
@@ -145,6 +146,25 @@ fn keeps_own_colour(x: &crate::flame::model::Xform, is_final: bool) -> bool {
     }
 }
 
+/// The xforms of JWildfire's colour type DISTANCE: they keep the gradient position, carry
+/// own colours, and take the general path (which colours them).
+fn colour_by_distance(
+    flame: &Flame,
+    xforms: &mut [CompiledXform],
+    final_xform: &mut Option<CompiledXform>,
+    more_finals: &mut [CompiledXform],
+) {
+    let compiled = xforms.iter_mut().chain(final_xform).chain(more_finals);
+    for (c, x) in compiled.zip(flame.xforms.iter().chain(flame.finals())) {
+        if let Some(d) = DistanceColour::of(x) {
+            c.distance = Some(d);
+            c.color_speed = 0.0;
+            c.own_rgb = true;
+            c.linear_only = None;
+        }
+    }
+}
+
 impl Chaos {
     /// Compile `flame`; fails when it has no xforms, no positive weight, a weight or xaos
     /// value that is negative or not finite, or an xaos row that reaches no xform.
@@ -222,6 +242,9 @@ impl Chaos {
             {
                 x.bad_limit = BAD_LIMIT_WIDE;
             }
+        }
+        if flame.renders_as_jwildfire() {
+            colour_by_distance(flame, &mut xforms, &mut final_xform, &mut more_finals);
         }
         let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();
         let affine = (final_xform.is_none() && !xaos && Projection::of(flame).is_none())

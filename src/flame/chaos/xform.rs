@@ -3,6 +3,7 @@
 //! application to one point.
 
 use super::{BAD_LIMIT, Pt};
+use crate::flame::jwf_render::colour_type::DistanceColour;
 use crate::flame::model::{Affine, Xform};
 use crate::flame::rng::FastRng;
 use crate::flame::variations::{self, Acc, Form, Prepared, Rules, VarIn, ZRule};
@@ -43,6 +44,9 @@ pub struct CompiledXform {
     /// A point keeps the own colour it came with unless a variation here sets one (an xform
     /// of JWildfire's colour type NONE: it does not look the palette up).
     pub keeps_rgb: bool,
+    /// JWildfire's colour type DISTANCE: the point gets the palette entry of the distance
+    /// the xform moved it (set for flames JWildfire's renderer draws).
+    pub distance: Option<DistanceColour>,
 }
 
 /// |v| ≤ limit; false for NaN (which fails every comparison).
@@ -123,6 +127,7 @@ impl CompiledXform {
             hides,
             own_rgb,
             keeps_rgb: false,
+            distance: None,
             coefs: x.coefs,
             post: if x.post.is_identity() {
                 None

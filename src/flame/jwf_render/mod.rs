@@ -4,13 +4,15 @@
 //! radial 2-D filter over the scaled buckets (sharpening kernels take the colour through the
 //! kernel and the density through a small Gaussian), and its tone map (white level, gamma
 //! threshold, vibrancy, colour balance, saturation, foreground opacity, gradient backgrounds);
-//! and the plot of points that carry a colour of their own ([`own_colour`]).
+//! the plot of points that carry a colour of their own ([`own_colour`]), and its colour type
+//! DISTANCE ([`colour_type`]).
 //!
 //! Which renderer draws a flame follows the program that wrote it, as the palette rule does
 //! ([`crate::flame::PaletteIndex::JWildfire`]). The facts come from JWildfire 9.00's
 //! `FlameRenderer`, `LogDensityFilter`, `LogScaleCalculator`, `GammaCorrectionFilter`,
 //! `FilterHolder` and its filter kernels.
 
+pub(crate) mod colour_type;
 pub(crate) mod develop;
 pub mod kernel;
 pub(crate) mod own_colour;

@@ -4,7 +4,8 @@
 //! red, green and blue, the first of equals winning). The facts come from JWildfire 9.00's
 //! `DefaultRenderIterationState` (the plotted colour is the point's red, green and blue,
 //! whichever set them), `RenderColor` (palette colours scaled to 200 for 255) and the
-//! `findKey` of its `dc_` variations.
+//! `findKey` of its `dc_` variations. A point may also carry a palette entry of its own
+//! (JWildfire's colour type DISTANCE, [`super::colour_type`]), drawn as the palette draws it.
 
 use super::develop::PALETTE_WHITE;
 use crate::flame::histogram::{Histogram, PlotPalette};
@@ -67,7 +68,17 @@ pub(crate) fn accumulate_own(pal: &PlotPalette, hist: &mut Histogram, buf: &[Own
         return;
     }
     let mut near = NearestKey::new(pal);
+    let top = pal.colors.len().saturating_sub(1);
     for &(idx, p, v) in buf {
+        if p & own_rgb::INDEX != 0 {
+            // A palette entry, added as the palette's colours are.
+            let c = pal.colors[(p as usize & 0xff).min(top)];
+            let b = &mut hist.data[idx as usize];
+            for k in 0..4 {
+                b[k] += c[k] * v;
+            }
+            continue;
+        }
         let rgb = if p & own_rgb::NEAREST != 0 {
             near.find(p)
         } else {

@@ -108,12 +108,14 @@ pub struct Acc {
 
 /// A point's own colour as the renderer carries it beside the point: 0 for the palette's
 /// colour, else [`own_rgb::OWN`] or [`own_rgb::NEAREST`] with red, green and blue in the
-/// low 24 bits.
+/// low 24 bits, or [`own_rgb::INDEX`] with a palette entry in the low 8 bits.
 pub mod own_rgb {
     /// The low 24 bits are the colour to draw.
     pub const OWN: u32 = 1 << 24;
     /// The low 24 bits are a colour whose nearest palette colour is drawn.
     pub const NEAREST: u32 = 1 << 25;
+    /// The low 8 bits are the palette entry to draw (as a palette colour is drawn).
+    pub const INDEX: u32 = 1 << 26;
 
     /// Red, green and blue of a packed colour.
     #[inline]

@@ -25,6 +25,9 @@ pub(super) struct Ctx<'t, 'o> {
     /// Warnings per code so far; past [`MAX_WARNINGS_PER_CODE`] they are only counted.
     pub(super) warn_counts: HashMap<&'static str, usize>,
     pub(super) opts: &'o ReadOptions<'o>,
+    /// The flame being read was written by JWildfire, which reads a variation's parameters by
+    /// their exact names (letter case included).
+    pub(super) jwildfire_names: bool,
     pub(super) library: OnceCell<Result<PaletteLibrary, String>>,
 }
 
@@ -48,6 +51,7 @@ impl<'t, 'o: 't> Ctx<'t, 'o> {
             ignored_set: HashSet::new(),
             warn_counts: Default::default(),
             opts,
+            jwildfire_names: false,
             library: OnceCell::new(),
         }
     }

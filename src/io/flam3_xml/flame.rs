@@ -94,7 +94,10 @@ pub(super) fn read_flame(
     let mut pal = PaletteData::new();
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
-        read_flame_children(cx, cur, text, &mut f, &mut pal)?;
+        cx.jwildfire_names = st.version_index == PaletteIndex::JWildfire;
+        let read = read_flame_children(cx, cur, text, &mut f, &mut pal);
+        cx.jwildfire_names = false;
+        read?;
     }
     cut_xaos_rows(cx, &mut f, start);
     if st.version_index == PaletteIndex::JWildfire && st.palette_index.is_none() {

@@ -521,3 +521,27 @@ fn parameters_only_jwildfires_formula_has_are_read() {
     assert!(v.params.len() > 2 && v.params.contains(&0.3) && v.params.contains(&0.4));
     crate::flame::render(&f, &crate::flame::RenderOptions::default()).unwrap();
 }
+
+/// JWildfire reads a variation's parameters by their exact names: a name written with other
+/// letter case (as older JWildfire versions wrote `dc_starsfield_Glow`) keeps the default and
+/// is kept as an attribute; flam3-style files still match names in any case.
+#[test]
+fn jwildfire_parameter_names_are_case_sensitive() {
+    let xform =
+        r#"<xform weight="1" julian="0.5" julian_Power="5" julian_dist="2" coefs="1 0 0 1 0 0"/>"#;
+    let jwf = format!(r#"<flame version="JWildfire V9.00">{xform}</flame>"#);
+    let f = read(&jwf, &opts()).unwrap().value.flames.remove(0);
+    let x = &f.xforms[0];
+    let julian = variations::parse_name("julian").unwrap().0;
+    let power = variations::info(julian).params[0].default;
+    assert_eq!(x.vars[0].params[..2], [power, 2.0]);
+    assert!(x.extra_attrs.contains(&("julian_Power".into(), "5".into())));
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f.clone()],
+    });
+    assert!(out.contains("julian_Power=\"5\""), "{out}");
+    let flam3 = format!(r#"<flame>{xform}</flame>"#);
+    let f = read(&flam3, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(f.xforms[0].vars[0].params[..2], [5.0, 2.0]);
+}

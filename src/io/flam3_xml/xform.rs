@@ -259,7 +259,9 @@ fn variation_attr(
     if let Some((id, form)) = variations::parse_name(base) {
         let w = cx.num(a)?;
         set_var(x, st, id, form, instance, w);
-    } else if let Some((id, form, index)) = variations::param_of(base) {
+    } else if let Some((id, form, index)) = variations::param_of(base)
+        && !(cx.jwildfire_names && case_differs(base, id, form, index))
+    {
         let value = cx.num(a)?;
         // A parameter only the variation's JWildfire formula has lies beyond the registry's
         // list: it has no limit to check here.
@@ -313,6 +315,30 @@ fn variation_attr(
         x.extra_attrs.push((name.to_string(), a.value.to_string()));
     }
     Ok(())
+}
+
+/// Whether attribute `base`, found as parameter `index` of variation `id` used in `form`,
+/// spells that parameter's JWildfire name with another letter case (`dc_starsfield_Glow` for
+/// `dc_starsfield_glow`, as older JWildfire versions wrote): JWildfire, which looks parameters
+/// up by their exact names, does not read it. Names reached through an alias are not
+/// affected.
+fn case_differs(base: &str, id: VarId, form: Form, index: usize) -> bool {
+    let def = variations::def_in(variations::Dialect::JWildfire, id, form);
+    let Some(exact) = def
+        .params
+        .get(index)
+        .or(variations::info(id).params.get(index))
+    else {
+        return false;
+    };
+    let exact = exact.name;
+    let cut = base.len().wrapping_sub(exact.len());
+    match base.get(cut..) {
+        Some(tail) if base.len() >= exact.len() => {
+            tail != exact && tail.eq_ignore_ascii_case(exact)
+        }
+        _ => false,
+    }
 }
 
 /// JWildfire marks a variation used before (< 0) or after (> 0) the others with
