@@ -28,6 +28,11 @@ use super::{
 use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_ifs, jwf_b_shapes};
 // JWildfire variations, third part.
 use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
+// JWildfire variations, from the end of the alphabet.
+use super::{
+    jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
+    jwf_z_solids, jwf_z_warps,
+};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -69,7 +74,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 51] = [
+const FILES: [&[VarDef]; 60] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -124,6 +129,16 @@ const FILES: [&[VarDef]; 51] = [
     jwf_c_escape::DEFS,
     jwf_c_glsl::DEFS,
     jwf_c_orbits::DEFS,
+    // JWildfire variations, from the end of the alphabet.
+    jwf_z_plane::DEFS,
+    jwf_z_3d::DEFS,
+    jwf_z_warps::DEFS,
+    jwf_z_flora::DEFS,
+    jwf_z_noise::DEFS,
+    jwf_z_drawings::DEFS,
+    jwf_z_solids::DEFS,
+    jwf_z_orbits::DEFS,
+    jwf_z_figures::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
