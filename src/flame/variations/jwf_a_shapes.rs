@@ -369,7 +369,13 @@ fn parallel(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// `contrast`, whose inner disc of radius radius1 at angle phi1 holds `figure`, a point of the
 /// disc's figure already scaled into it; a negative radius1 draws a random ring instead).
 /// `q` = [radius, radius1, thickness, phi1, pow, contrast].
-fn glynn_common(v: &Prepared, t: &VarIn, rng: &mut FastRng, q: [f64; 6], figure: (f64, f64)) -> V3 {
+pub(super) fn glynn_common(
+    v: &Prepared,
+    t: &VarIn,
+    rng: &mut FastRng,
+    q: [f64; 6],
+    figure: (f64, f64),
+) -> V3 {
     let [radius, radius1, thickness, phi1, pw, contrast] = q;
     let (s1, c1) = (PI * phi1 / 180.0).sin_cos();
     let (x1, y1) = (radius * c1, radius * s1);

@@ -538,7 +538,7 @@ const LA_HEAD: usize = 4;
 
 /// Appends the thresholds that split the draws between segments and end-point dots (from the
 /// truncated show_lines / show_points weights) and the thicknesses.
-fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64) {
+pub(super) fn la_store(v: &mut Prepared, lines: f64, lt: f64, points: f64, pt: f64) {
     let lines = lines.trunc();
     let points = points.trunc();
     let total = lines + points;
@@ -595,7 +595,7 @@ fn la_sample<R: Draw>(d: [f64; LA_HEAD], segs: &[f64], seg: usize, r: &mut R) ->
 /// A uniformly chosen segment of the drawing, sampled (JWildfire walks the segments in order,
 /// one per call; over many calls both cover every segment equally).
 #[inline]
-fn la_eval(v: &Prepared, rng: &mut FastRng) -> (f64, f64) {
+pub(super) fn la_eval(v: &Prepared, rng: &mut FastRng) -> (f64, f64) {
     let segs = v.data();
     let count = segs.len() / 4;
     if count == 0 {

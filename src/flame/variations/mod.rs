@@ -94,6 +94,15 @@
 //! | `jwf_prepost` | JWildfire's own `pre_`/`post_` classes and its prepost variations (`pre_affine3D`, `post_crosscrop`, `prepost_mobius`, `ringtile`, …) |
 //! | `jwf_symmetry` | the symmetry groups `sym_ng*` and `sym_bg*` |
 //! | `jwf_text` | `text_wf` |
+//! | `jwf_z_3d` | JWildfire's 3-D curves and maps (`spirograph3D`, `mobiqN`, `hypertile3Db`, `juliascope3Db`, `checkerboard_wf`, …) |
+//! | `jwf_z_solids` | JWildfire's 3-D figures (`mobius_dragon_3D`, `polySurf`, `primitives_wf`, `glynnSim2B`) |
+//! | `jwf_z_warps` | JWildfire's warps by cells and shapes (`shape_warp`, `drunken_tiles`, `bwrands`, `de_stijl`, `glitchy2`) |
+//! | `jwf_z_drawings` | Jesus Sosa's line drawings (`htree_js`, `koch_js`, `dragon_js`, `gosperisland_js`, `brownian_js`) |
+//! | `jwf_z_flora` | `flora` (25 leaves and flowers) |
+//! | `jwf_z_noise` | noise and shader patterns (`camouflage`, `truchetflow`, `kaplan`) |
+//! | `jwf_z_plane` | JWildfire's plane maps and point sets (`jac_elk`, `jac_asn`, `pointgrid_wf`, `intersection`, `glynnspiro`, `juliascopePlus`) |
+//! | `jwf_z_orbits` | orbits and curves of the plane (`gumowski_mira`, `starfractal`, `sphtiling3v2`, `iconattractor_js`, `harmonograph_js`) |
+//! | `jwf_z_figures` | figures and mirrors (`meeple`, `tqmirror`, `rhodonea`) |
 
 pub use crate::flame::affine::Affine;
 
@@ -166,6 +175,16 @@ mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;
 mod jwf_text;
+// JWildfire variations, from the end of the alphabet.
+mod jwf_z_3d;
+mod jwf_z_drawings;
+mod jwf_z_figures;
+mod jwf_z_flora;
+mod jwf_z_noise;
+mod jwf_z_orbits;
+mod jwf_z_plane;
+mod jwf_z_solids;
+mod jwf_z_warps;
 mod noise;
 mod shared;
 pub(crate) mod util;

@@ -30,6 +30,11 @@ use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_if
 use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
 // JWildfire variations, fourth part.
 use super::{jwf_d_crops, jwf_d_cuts, jwf_d_plane, jwf_d_solids};
+// JWildfire variations, from the end of the alphabet.
+use super::{
+    jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
+    jwf_z_solids, jwf_z_warps,
+};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -71,7 +76,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 55] = [
+const FILES: [&[VarDef]; 64] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -131,6 +136,16 @@ const FILES: [&[VarDef]; 55] = [
     jwf_d_cuts::DEFS,
     jwf_d_plane::DEFS,
     jwf_d_solids::DEFS,
+    // JWildfire variations, from the end of the alphabet.
+    jwf_z_plane::DEFS,
+    jwf_z_3d::DEFS,
+    jwf_z_warps::DEFS,
+    jwf_z_flora::DEFS,
+    jwf_z_noise::DEFS,
+    jwf_z_drawings::DEFS,
+    jwf_z_solids::DEFS,
+    jwf_z_orbits::DEFS,
+    jwf_z_figures::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
