@@ -146,7 +146,7 @@ fn starfractal(v: &Prepared, _: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let c = (g.next_i32().unsigned_abs() % (2 * m as u32)) as usize;
     g.store(v);
     let i = (c / 2) as f64;
-    let (a, b) = if c % 2 == 0 {
+    let (a, b) = if c.is_multiple_of(2) {
         let ang = 2.0 * PI * (i + 1.0) / m;
         (ang.cos(), ang.sin())
     } else {

@@ -23,7 +23,8 @@ pub(super) static DEFS: &[VarDef] = &[
             p("mobius_dragon_3D_z_spread", 0.0),
             p("mobius_dragon_3D_x_add", 0.0),
             p("mobius_dragon_3D_y_add", 0.0),
-            p("mobius_dragon_3D_log_spread", 2.71828),
+            // JWildfire's default: e to five decimals (not e itself).
+            p("mobius_dragon_3D_log_spread", 271_828.0 / 100_000.0),
             p_int("mobius_dragon_3D_line_enable", 1.0, NEG_INF, INF),
             p("mobius_dragon_3D_line_weight", 0.125),
             p("mobius_dragon_3D_line_color_shift", 0.1),
