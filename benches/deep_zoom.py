@@ -1,6 +1,11 @@
 #!/usr/bin/env python3
-"""Deep-zoom speed of `ugnis escape` against Fractalshades (its perturbation Mandelbrot with
-bilinear approximation), same view, size and iterations, on the same threads.
+"""Deep-zoom speed of `ugnis escape` against Fractalshades (its perturbation Mandelbrot and
+Burning Ship with bilinear approximation), same view, size and iterations, on the same threads.
+Neither side detects the interior early (Fractalshades' `interior_detect` is off, its default;
+ugnis has none in deep zoom): interior pixels run to the iteration limit on both.
+
+Fractalshades' Burning Ship iterates y ← 2|xy| − b, the mirror image of ugnis'
+(|Re z| + i|Im z|)² + c: its view is given the negated imaginary part.
 
 Fractalshades runs each view twice in one process and its second run is timed, so that
 numba's compilation does not count. It needs `pip install fractalshades gmpy2` (and Debian's
@@ -19,17 +24,28 @@ import sys
 import tempfile
 import time
 
+# A preperiodic point of the Burning Ship (0 → c → … lands on a repelling fixed point after
+# four steps), from Newton's method to 205 digits: its structure repeats at every depth.
+SHIP_X = ("-1.135970435068669382740841251730673933311924870876766725685875127621889688"
+          "767121405072274975276750023921156479446428973090212757396385213938417834756"
+          "849637107266137647023656531165227992031188066647728934534")
+SHIP_Y = ("-0.620043386399648200978028882876077721013041924053031614563946013305331487"
+          "942996783102213960061646547603087438578052911231800480602098334794794166210"
+          "898372624575163846941793646094380205244377968751786864654")
+
 VIEWS = [
-    # name, x, y, width, max_iter
+    # name, x, y, width, max_iter, kind
     (
         "seahorse 1e-25",
         "-0.743643887037158704752191506114774",
         "0.131825904205311970493132056385139",
         "1e-25",
         30000,
+        "mandelbrot",
     ),
-    ("misiurewicz i 1e-100", "0", "1", "1e-100", 5000),
-    ("misiurewicz i 1e-1000", "0", "1", "1e-1000", 20000),
+    ("misiurewicz i 1e-100", "0", "1", "1e-100", 5000, "mandelbrot"),
+    ("misiurewicz i 1e-1000", "0", "1", "1e-1000", 20000, "mandelbrot"),
+    ("burning ship 1e-100", SHIP_X, SHIP_Y, "1e-100", 5000, "burning-ship"),
 ]
 
 FS_SCRIPT = r"""
@@ -40,15 +56,24 @@ import fractalshades as fs
 import fractalshades.models as fsm
 
 x, y, dx, max_iter, size = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5]
+ship = sys.argv[7] == "burning-ship"
+if ship:
+    y = y[1:] if y.startswith("-") else "-" + y
 nx, ny = (int(v) for v in size.split("x"))
 digits = max(20, int(-mpmath.log10(mpmath.mpf(dx))) + 10)
 times = []
 for run in range(2):
     d = tempfile.mkdtemp()
-    f = fsm.Perturbation_mandelbrot(d)
-    f.zoom(precision=digits, x=x, y=y, dx=dx, nx=nx, xy_ratio=nx / ny, theta_deg=0.0)
-    f.calc_std_div(calc_name="bench", subset=None, max_iter=max_iter, M_divergence=256.0,
-                   epsilon_stationnary=1e-3, calc_dzndc=False)
+    if ship:
+        f = fsm.Perturbation_burning_ship(d, flavor="Burning ship")
+        f.zoom(precision=digits, x=x, y=y, dx=dx, nx=nx, xy_ratio=nx / ny, theta_deg=0.0)
+        f.calc_std_div(calc_name="bench", subset=None, max_iter=max_iter, M_divergence=256.0,
+                       calc_hessian=False)
+    else:
+        f = fsm.Perturbation_mandelbrot(d)
+        f.zoom(precision=digits, x=x, y=y, dx=dx, nx=nx, xy_ratio=nx / ny, theta_deg=0.0)
+        f.calc_std_div(calc_name="bench", subset=None, max_iter=max_iter, M_divergence=256.0,
+                       epsilon_stationnary=1e-3, calc_dzndc=False)
     t, p = time.time(), time.process_time()
     f.calc_raw("bench")
     times.append((time.time() - t, time.process_time() - p))
@@ -57,10 +82,10 @@ print(times[1][0], times[1][1])
 
 
 def time_ugnis(exe, view, size, threads):
-    name, x, y, width, max_iter = view
+    name, x, y, width, max_iter, kind = view
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "deep.png")
-        cmd = [exe, "escape", "mandelbrot", "--center", f"{x},{y}", "--width", width,
+        cmd = [exe, "escape", kind, "--center", f"{x},{y}", "--width", width,
                "--size", size, "--max-iter", str(max_iter), "--threads", str(threads),
                "-o", out]
         t, before = time.time(), os.times()
@@ -74,9 +99,10 @@ def time_ugnis(exe, view, size, threads):
 
 
 def time_fractalshades(py, view, size, threads):
-    name, x, y, width, max_iter = view
+    name, x, y, width, max_iter, kind = view
     # Fractalshades' dx is the view's width.
-    r = subprocess.run([py, "-c", FS_SCRIPT, x, y, width, str(max_iter), size, str(threads)],
+    r = subprocess.run([py, "-c", FS_SCRIPT, x, y, width, str(max_iter), size, str(threads),
+                        kind],
                        capture_output=True, text=True)
     if r.returncode != 0:
         return None, r.stderr.strip().splitlines()[-1:]

@@ -13,7 +13,8 @@ use ugnis::noise::Fbm;
 
 #[derive(Args, Debug)]
 pub struct EscapeArgs {
-    /// mandelbrot, julia, multibrot, newton, logistic, cubic or warped-julia (optional with --view)
+    /// mandelbrot, julia, multibrot, burning-ship, newton, logistic, cubic or warped-julia
+    /// (optional with --view)
     pub kind: Option<String>,
     /// Start from a saved view file (.esc); the other options override it
     #[arg(long)]
@@ -131,7 +132,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
             doc
         }
         (None, Some(k)) => EscapeDoc::new(family_from_name(k).with_context(|| {
-            format!("unknown kind '{k}': expected mandelbrot, julia, multibrot, newton, logistic, cubic or warped-julia")
+            format!("unknown kind '{k}': expected mandelbrot, julia, multibrot, burning-ship, newton, logistic, cubic or warped-julia")
         })?),
         (None, None) => bail!("give a KIND (e.g. mandelbrot) or --view FILE"),
     };
@@ -175,6 +176,7 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
                 *p = v;
             }
         }
+        Family::BurningShip => {}
         Family::WarpedJulia(w) => {
             let sampling = if a.polar {
                 Sampling::Polar { radius: 1.0 }

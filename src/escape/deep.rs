@@ -1,4 +1,5 @@
-//! Deep zoom by perturbation for z² + c (the Mandelbrot set and its Julia sets) and z³ + c.
+//! Deep zoom by perturbation for z² + c (the Mandelbrot set and its Julia sets), z³ + c and
+//! the Burning Ship.
 //!
 //! One reference orbit Z at the view centre is computed in big binary fixed point at the
 //! precision the zoom needs ([`orbit`]) and stored as f64; every pixel then iterates only its
@@ -9,7 +10,8 @@
 //! ```
 //!
 //! (δc the pixel's offset from the centre for the Mandelbrot kind, 0 for Julia sets, which
-//! start at δ(0) = the offset instead). δ stays accurate because it is small where Z is not.
+//! start at δ(0) = the offset instead). The Burning Ship's fold is perturbed with Kalles
+//! Fraktaler's diffabs form ([`deep_plain::ship_step`]). δ stays accurate because it is small where Z is not.
 //! Where δ is too small for f64 (offsets below about 1e-300) it is kept as an extended-
 //! exponent number ([`Cx`]) until it has grown into f64's range.
 //!
@@ -27,11 +29,32 @@ use super::bla::Bla;
 use super::centre::{Centre, ibig_to_fx};
 use super::complex::C;
 use super::deep_plain;
-use super::family::{IterSettings, Sample, smooth_count};
+use super::family::{IterSettings, Sample, ship_fold, smooth_count};
 use super::fx::{Cx, Fx, ldexp};
 
 /// Exponent (base 2) above which a difference is kept in f64.
 const F64_FROM: i32 = -900;
+
+/// The map a deep view iterates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Map {
+    /// z² + c.
+    Square,
+    /// z³ + c.
+    Cube,
+    /// The Burning Ship (|Re z| + i·|Im z|)² + c.
+    Ship,
+}
+
+impl Map {
+    /// The degree (for smooth colouring).
+    pub fn degree(self) -> u32 {
+        match self {
+            Map::Cube => 3,
+            Map::Square | Map::Ship => 2,
+        }
+    }
+}
 
 /// What the pixels of a deep view iterate around: an orbit and its bilinear table.
 #[derive(Clone, Debug)]
@@ -44,10 +67,10 @@ pub struct Orbit {
 /// The reference of a deep view.
 #[derive(Clone, Debug)]
 pub struct Reference {
-    /// The degree of the map (2 or 3).
-    pub degree: u32,
+    /// The map iterated.
+    pub map: Map,
     /// The orbit of the view centre: for the Mandelbrot kind the orbit of 0 under
-    /// z^d + C (C the centre), for a Julia set the orbit of the centre under z^d + c.
+    /// the map with C the centre, for a Julia set the orbit of the centre under z^d + c.
     pub main: Orbit,
     /// Julia sets: the orbit of 0 under the same map, where pixels rebase.
     pub critical: Option<Orbit>,
@@ -68,11 +91,11 @@ fn fix_to_f64(v: &IBig, bits: u32) -> f64 {
     ldexp(f.m, f.e - bits as i32)
 }
 
-/// The orbit of z0 under z^degree + c in binary fixed point with `bits` fraction bits, stored
+/// The orbit of z0 under the map with parameter c in binary fixed point with `bits` fraction bits, stored
 /// as f64, until it escapes past the bailout or reaches the iteration limit (None when
 /// cancelled). Always at least two entries.
 pub fn orbit(
-    degree: u32,
+    map: Map,
     z0: [IBig; 2],
     c: [IBig; 2],
     bits: u32,
@@ -85,19 +108,9 @@ pub fn orbit(
     let mut out = Vec::with_capacity(s.max_iter.min(1 << 20) as usize + 1);
     out.push(C::new(fix_to_f64(&x, bits), fix_to_f64(&y, bits)));
     for k in 0..s.max_iter {
-        if degree == 3 {
-            let xx = (&x * &x) >> b;
-            let yy = (&y * &y) >> b;
-            let nx = ((&x * (&xx - IBig::from(3u8) * &yy)) >> b) + &cx;
-            let ny = ((&y * (IBig::from(3u8) * &xx - &yy)) >> b) + &cy;
-            (x, y) = (nx, ny);
-        } else {
-            let xx = (&x * &x) >> b;
-            let yy = (&y * &y) >> b;
-            let xy = (&x * &y) >> (b - 1);
-            x = xx - yy + &cx;
-            y = xy + &cy;
-        }
+        (x, y) = big_step(map, &x, &y, b);
+        x += &cx;
+        y += &cy;
         let z = C::new(fix_to_f64(&x, bits), fix_to_f64(&y, bits));
         out.push(z);
         if !(z.norm2() <= s.bailout2) {
@@ -112,6 +125,25 @@ pub fn orbit(
     }
     progress.done.store(out.len() as u64, Ordering::Relaxed);
     Some(out)
+}
+
+/// One step of the map without its parameter, on binary fixed point numbers with `b`
+/// fraction bits (truncated): the new x and y.
+pub fn big_step(map: Map, x: &IBig, y: &IBig, b: usize) -> (IBig, IBig) {
+    let xx = (x * x) >> b;
+    let yy = (y * y) >> b;
+    match map {
+        Map::Cube => (
+            (x * (&xx - IBig::from(3u8) * &yy)) >> b,
+            (y * (IBig::from(3u8) * &xx - &yy)) >> b,
+        ),
+        Map::Square => (xx - yy, (x * y) >> (b - 1)),
+        Map::Ship => {
+            let xy = x * y;
+            let xy = if xy < IBig::ZERO { -xy } else { xy };
+            (xx - yy, xy >> (b - 1))
+        }
+    }
 }
 
 /// Fraction bits the reference of a view needs: its pixel size, 64 more for the orbit's
@@ -129,7 +161,7 @@ impl Reference {
     /// The reference for a view centred on `centre` whose pixels lie within `radius` of it:
     /// the Mandelbrot kind (`julia` None) or the Julia set of `julia`.
     pub fn new(
-        degree: u32,
+        map: Map,
         centre: &Centre,
         julia: Option<C>,
         pixel: Fx,
@@ -143,24 +175,32 @@ impl Reference {
         let c0 = centre.to_binary(bits);
         let zero = || [IBig::ZERO, IBig::ZERO];
         let table = |z: Vec<C>, with_c: bool| Orbit {
-            bla: Bla::new(&z, degree, if with_c { radius } else { Fx::ZERO }, with_c),
+            bla: match map {
+                Map::Ship => Bla::default(),
+                _ => Bla::new(
+                    &z,
+                    map.degree(),
+                    if with_c { radius } else { Fx::ZERO },
+                    with_c,
+                ),
+            },
             z,
         };
         match julia {
             None => {
-                let z = orbit(degree, zero(), c0, bits, s, progress)?;
+                let z = orbit(map, zero(), c0, bits, s, progress)?;
                 Some(Reference {
-                    degree,
+                    map,
                     main: table(z, true),
                     critical: None,
                 })
             }
             Some(c) => {
                 let cb = Centre::from_f64_exact([c.re, c.im]).to_binary(bits);
-                let z = orbit(degree, c0, cb.clone(), bits, s, progress)?;
-                let k = orbit(degree, zero(), cb, bits, s, progress)?;
+                let z = orbit(map, c0, cb.clone(), bits, s, progress)?;
+                let k = orbit(map, zero(), cb, bits, s, progress)?;
                 Some(Reference {
-                    degree,
+                    map,
                     main: table(z, false),
                     critical: Some(table(k, false)),
                 })
@@ -185,8 +225,11 @@ struct Pixel<'a> {
     /// The pixel's offset as the δc added each step (0 for Julia sets).
     dc: Cx,
     dc64: C,
-    /// dz/dc (Mandelbrot kind) or dz/dz₀ (Julia), only when distance estimates are wanted.
+    /// dz/dc (Mandelbrot kind) or dz/dz₀ (Julia), only when distance estimates are wanted;
+    /// for the Burning Ship, whose dz/dc is a real 2×2 matrix, its first column ∂z/∂Re c.
     der: Cx,
+    /// The Burning Ship: the second column ∂z/∂Im c.
+    der_im: Cx,
 }
 
 /// How a stretch of iterations ended.
@@ -204,15 +247,23 @@ impl Pixel<'_> {
     /// The derivative through one exact step at full value z.
     #[inline]
     fn der_step(&mut self, z: C, s: &IterSettings) {
-        if s.want_de {
-            let k = if self.r.degree == 3 {
-                z * z * 3.0
-            } else {
-                z * 2.0
-            };
-            let one = if self.r.is_julia() { 0.0 } else { 1.0 };
-            self.der = self.der.mul_c(k).add(Cx::new(one, 0.0, 0));
+        if !s.want_de {
+            return;
         }
+        if self.r.map == Map::Ship {
+            let (f, sx, sy) = ship_fold(z);
+            let step = |v: Cx, e: Cx| Cx::new(v.re * sx, v.im * sy, v.e).mul_c(f * 2.0).add(e);
+            self.der = step(self.der, Cx::new(1.0, 0.0, 0));
+            self.der_im = step(self.der_im, Cx::new(0.0, 1.0, 0));
+            return;
+        }
+        let k = if self.r.map == Map::Cube {
+            z * z * 3.0
+        } else {
+            z * 2.0
+        };
+        let one = if self.r.is_julia() { 0.0 } else { 1.0 };
+        self.der = self.der.mul_c(k).add(Cx::new(one, 0.0, 0));
     }
 
     /// Rebase onto the orbit that starts at 0.
@@ -224,15 +275,19 @@ impl Pixel<'_> {
     }
 
     fn escaped(&self, n: u32, z: C, r2: f64, s: &IterSettings, pixel: Fx) -> Sample {
-        let deg = self.r.degree as f64;
+        let deg = self.r.map.degree() as f64;
         let mut out = s.escape_sample(n, z, r2, C::ONE, deg);
         out.nu = smooth_count(n, r2, deg);
         out.de = if s.want_de {
             // b = 2|z| ln|z| / |dz|, in pixels.
             let a = r2.sqrt();
-            Fx::from_f64(2.0 * a * a.ln())
-                .div(self.der.abs().mul(pixel))
-                .to_f64() as f32
+            let size = if self.r.map == Map::Ship {
+                // The Jacobian's Frobenius norm over √2 (see `jacobian_size`).
+                self.der.norm2().add(self.der_im.norm2()).scale(0.5).sqrt()
+            } else {
+                self.der.abs()
+            };
+            Fx::from_f64(2.0 * a * a.ln()).div(size.mul(pixel)).to_f64() as f32
         } else {
             0.0
         };
@@ -255,14 +310,15 @@ impl Pixel<'_> {
                 self.n += st.len;
             } else {
                 self.der_step(z + d.to_c(), s);
-                let lin = if self.r.degree == 3 {
-                    d.mul_c(z * z * 3.0)
+                d = match self.r.map {
+                    Map::Cube => d
+                        .mul_c(z * z * 3.0)
                         .add(d.mul(d).mul_c(z * 3.0))
                         .add(d.mul(d).mul(d))
-                } else {
-                    d.mul_c(z * 2.0).add(d.mul(d))
+                        .add(self.dc),
+                    Map::Square => d.mul_c(z * 2.0).add(d.mul(d)).add(self.dc),
+                    Map::Ship => ship_step_extended(z, d, self.dc),
                 };
-                d = lin.add(self.dc);
                 self.m += 1;
                 self.n += 1;
             }
@@ -283,7 +339,7 @@ impl Pixel<'_> {
 
     /// Iterate in f64 from difference d to the end.
     fn run_f64(&mut self, mut d: C, s: &IterSettings, pixel: Fx) -> Sample {
-        let cube = self.r.degree == 3;
+        let map = self.r.map;
         loop {
             if self.n >= s.max_iter {
                 return Sample::inside(s.max_iter);
@@ -303,10 +359,10 @@ impl Pixel<'_> {
                 self.n += st.len;
             } else {
                 self.der_step(z + d, s);
-                d = if cube {
-                    d * (z * z * 3.0 + d * (z * 3.0 + d)) + self.dc64
-                } else {
-                    d * (z * 2.0 + d) + self.dc64
+                d = match map {
+                    Map::Cube => d * (z * z * 3.0 + d * (z * 3.0 + d)) + self.dc64,
+                    Map::Square => d * (z * 2.0 + d) + self.dc64,
+                    Map::Ship => deep_plain::ship_step(z, d, self.dc64),
                 };
                 self.m += 1;
                 self.n += 1;
@@ -322,6 +378,31 @@ impl Pixel<'_> {
             }
         }
     }
+}
+
+/// |a + b| − |a| where b is an extended number (see [`deep_plain::diffabs`]).
+fn diffabs_extended(a: f64, b: Fx) -> Fx {
+    let sum = Fx::from_f64(a).add(b);
+    let twice = Fx::from_f64(2.0 * a).add(b);
+    if a >= 0.0 {
+        if sum.m >= 0.0 { b } else { Fx::ZERO.sub(twice) }
+    } else if sum.m > 0.0 {
+        twice
+    } else {
+        Fx::ZERO.sub(b)
+    }
+}
+
+/// [`deep_plain::ship_step`] for an extended difference.
+fn ship_step_extended(z: C, d: Cx, dc: Cx) -> Cx {
+    let (x, y) = (Fx::new(d.re, d.e), Fx::new(d.im, d.e));
+    let re = x
+        .scale(2.0 * z.re)
+        .add(x.mul(x))
+        .sub(y.scale(2.0 * z.im).add(y.mul(y)));
+    let t = y.scale(z.re).add(x.mul(Fx::from_f64(z.im).add(y)));
+    let im = diffabs_extended(z.re * z.im, t).scale(2.0);
+    Cx::from_parts(re, im).add(dc)
 }
 
 /// One pixel at offset `dc` from the reference point (the parameter offset for the
@@ -341,6 +422,7 @@ pub fn iterate(r: &Reference, dc: Cx, s: &IterSettings, pixel: Fx) -> Sample {
         } else {
             Cx::ZERO
         },
+        der_im: Cx::ZERO,
     };
     let d0 = if julia { dc } else { Cx::ZERO };
     let d = if d0.e <= F64_FROM && !d0.is_zero() || dc.e <= F64_FROM {
@@ -385,8 +467,8 @@ pub fn iterate_many(r: &Reference, dcs: &[Cx], s: &IterSettings, pixel: Fx) -> V
             (k, lane)
         })
     };
-    let deg = r.degree as f64;
-    deep_plain::run(&orbits, r.degree == 3, s, next, |k, end| {
+    let deg = r.map.degree() as f64;
+    deep_plain::run(&orbits, r.map, s, next, |k, end| {
         out[k] = match end {
             deep_plain::End::Escaped { n, z, r2 } => s.escape_sample(n, z, r2, C::ONE, deg),
             deep_plain::End::Inside => Sample::inside(s.max_iter),

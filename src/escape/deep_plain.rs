@@ -9,6 +9,7 @@
 
 use super::bla::Bla;
 use super::complex::C;
+use super::deep::Map;
 use super::family::IterSettings;
 
 /// Pixels iterated side by side.
@@ -40,9 +41,45 @@ pub enum End {
     Inside,
 }
 
+/// |a + b| − |a| computed without cancellation when b is much smaller than a (Kalles
+/// Fraktaler's "diffabs").
+#[inline(always)]
+pub fn diffabs(a: f64, b: f64) -> f64 {
+    if a >= 0.0 {
+        if a + b >= 0.0 { b } else { -(2.0 * a + b) }
+    } else if a + b > 0.0 {
+        2.0 * a + b
+    } else {
+        -b
+    }
+}
+
+/// One perturbed step of the Burning Ship around the reference point Z = X + iY: the
+/// difference d = x + iy becomes
+///
+/// ```text
+/// Re: (2X + x)·x − (2Y + y)·y + Re δc,
+/// Im: 2·diffabs(XY, X·y + x·(Y + y)) + Im δc,
+/// ```
+///
+/// since 2|X + x||Y + y| − 2|X||Y| = 2(|XY + t| − |XY|) with t = (X + x)(Y + y) − XY.
+#[inline(always)]
+pub fn ship_step(z: C, d: C, dc: C) -> C {
+    let (x, y) = (d.re, d.im);
+    C::new(
+        (2.0 * z.re + x) * x - (2.0 * z.im + y) * y + dc.re,
+        2.0 * diffabs(z.re * z.im, z.re * y + x * (z.im + y)) + dc.im,
+    )
+}
+
+/// The maps as const-generic parameters.
+const SQUARE: u8 = 0;
+const CUBE: u8 = 1;
+const SHIP: u8 = 2;
+
 /// One step (bilinear or single) of a lane; Some when the pixel has ended.
 #[inline(always)]
-fn step<const CUBE: bool>(o: &Orbits, l: &mut Lane, s: &IterSettings) -> Option<End> {
+fn step<const MAP: u8>(o: &Orbits, l: &mut Lane, s: &IterSettings) -> Option<End> {
     if l.n >= s.max_iter {
         return Some(End::Inside);
     }
@@ -61,10 +98,10 @@ fn step<const CUBE: bool>(o: &Orbits, l: &mut Lane, s: &IterSettings) -> Option<
         None => {
             let zm = z[l.m];
             l.n += 1;
-            let d = if CUBE {
-                d * (zm * zm * 3.0 + d * (zm * 3.0 + d)) + l.dc
-            } else {
-                d * (zm * 2.0 + d) + l.dc
+            let d = match MAP {
+                CUBE => d * (zm * zm * 3.0 + d * (zm * 3.0 + d)) + l.dc,
+                SHIP => ship_step(zm, d, l.dc),
+                _ => d * (zm * 2.0 + d) + l.dc,
             };
             (d, l.m + 1)
         }
@@ -93,19 +130,19 @@ fn step<const CUBE: bool>(o: &Orbits, l: &mut Lane, s: &IterSettings) -> Option<
 /// receives each (in the order they end).
 pub fn run<T: Copy>(
     o: &Orbits,
-    cube: bool,
+    map: Map,
     s: &IterSettings,
     next: impl FnMut() -> Option<(T, Lane)>,
     done: impl FnMut(T, End),
 ) {
-    if cube {
-        run_lanes::<T, true>(o, s, next, done)
-    } else {
-        run_lanes::<T, false>(o, s, next, done)
+    match map {
+        Map::Square => run_lanes::<T, SQUARE>(o, s, next, done),
+        Map::Cube => run_lanes::<T, CUBE>(o, s, next, done),
+        Map::Ship => run_lanes::<T, SHIP>(o, s, next, done),
     }
 }
 
-fn run_lanes<T: Copy, const CUBE: bool>(
+fn run_lanes<T: Copy, const MAP: u8>(
     o: &Orbits,
     s: &IterSettings,
     mut next: impl FnMut() -> Option<(T, Lane)>,
@@ -119,16 +156,16 @@ fn run_lanes<T: Copy, const CUBE: bool>(
         // All lanes full: step them in turn until one ends, then refill it.
         if let [Some(a), Some(b), Some(c), Some(d)] = &mut lanes {
             let (k, id, e) = loop {
-                if let Some(e) = step::<CUBE>(o, &mut a.1, s) {
+                if let Some(e) = step::<MAP>(o, &mut a.1, s) {
                     break (0, a.0, e);
                 }
-                if let Some(e) = step::<CUBE>(o, &mut b.1, s) {
+                if let Some(e) = step::<MAP>(o, &mut b.1, s) {
                     break (1, b.0, e);
                 }
-                if let Some(e) = step::<CUBE>(o, &mut c.1, s) {
+                if let Some(e) = step::<MAP>(o, &mut c.1, s) {
                     break (2, c.0, e);
                 }
-                if let Some(e) = step::<CUBE>(o, &mut d.1, s) {
+                if let Some(e) = step::<MAP>(o, &mut d.1, s) {
                     break (3, d.0, e);
                 }
             };
@@ -139,7 +176,7 @@ fn run_lanes<T: Copy, const CUBE: bool>(
         // The last few pixels.
         for slot in lanes.iter_mut() {
             if let Some((id, lane)) = slot
-                && let Some(e) = step::<CUBE>(o, lane, s)
+                && let Some(e) = step::<MAP>(o, lane, s)
             {
                 done(*id, e);
                 *slot = next();

@@ -16,41 +16,28 @@ fn settings(max_iter: u32, want_de: bool) -> IterSettings {
     }
 }
 
-/// The escape count and continuous count of z0 under z^degree + c, directly in fixed point.
-fn exact(
-    degree: u32,
-    z0: [IBig; 2],
-    c: [IBig; 2],
-    bits: u32,
-    s: &IterSettings,
-) -> (u32, f64, bool) {
+/// The escape count and continuous count of z0 under the map with parameter c, directly in
+/// fixed point.
+fn exact(map: Map, z0: [IBig; 2], c: [IBig; 2], bits: u32, s: &IterSettings) -> (u32, f64, bool) {
     let b = bits as usize;
     let [mut x, mut y] = z0;
     let to = |v: &IBig| fix_to_f64(v, bits);
     for n in 1..=s.max_iter {
-        let (xx, yy) = ((&x * &x) >> b, (&y * &y) >> b);
-        let (nx, ny) = if degree == 3 {
-            (
-                (&x * (&xx - IBig::from(3u8) * &yy)) >> b,
-                (&y * (IBig::from(3u8) * &xx - &yy)) >> b,
-            )
-        } else {
-            (&xx - &yy, (&x * &y) >> (b - 1))
-        };
+        let (nx, ny) = big_step(map, &x, &y, b);
         x = nx + &c[0];
         y = ny + &c[1];
         let r2 = to(&x).powi(2) + to(&y).powi(2);
         if !(r2 <= s.bailout2) {
-            return (n, smooth_count(n, r2, degree as f64), false);
+            return (n, smooth_count(n, r2, map.degree() as f64), false);
         }
     }
     (s.max_iter, s.max_iter as f64, true)
 }
 
 /// The reference orbit of a `w`×`h` grid of `view` (at its centre, covering its corners) for
-/// `z^degree + c` (or the Julia set of `julia`), and the grid's pixel size.
+/// `map` (or the Julia set of `julia`), and the grid's pixel size.
 fn reference_of(
-    degree: u32,
+    map: Map,
     julia: Option<C>,
     view: &View,
     w: u32,
@@ -60,7 +47,7 @@ fn reference_of(
     let pixel = view.pixel_size_fx(h);
     let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
     let r = Reference::new(
-        degree,
+        map,
         view.centre(),
         julia,
         pixel,
@@ -74,12 +61,14 @@ fn reference_of(
 /// Render a `w`×`h` grid of `view` by perturbation and directly; the fraction of pixels
 /// whose continuous counts agree within 0.05, and the number of distinct integer counts.
 fn agreement(family: &Family, view: &View, w: u32, h: u32, s: &IterSettings) -> (f64, usize) {
-    let (degree, julia) = match *family {
-        Family::Mandelbrot { power } => (power, None),
-        Family::Julia { power, c } => (power, Some(c)),
+    let map = |power| if power == 3 { Map::Cube } else { Map::Square };
+    let (map, julia) = match *family {
+        Family::Mandelbrot { power } => (map(power), None),
+        Family::Julia { power, c } => (map(power), Some(c)),
+        Family::BurningShip => (Map::Ship, None),
         _ => unreachable!(),
     };
-    let (r, pixel) = reference_of(degree, julia, view, w, h, s);
+    let (r, pixel) = reference_of(map, julia, view, w, h, s);
     // The truth with twice the digits the reference gets.
     let bits = bits_for(pixel) * if julia.is_some() { 4 } else { 2 };
     let (mut good, mut counts) = (0, Vec::new());
@@ -99,10 +88,10 @@ fn agreement(family: &Family, view: &View, w: u32, h: u32, s: &IterSettings) -> 
                 .shifted(Fx::new(dc.re, dc.e), Fx::new(dc.im, dc.e))
                 .to_binary(bits);
             let (n, nu, inside) = match julia {
-                None => exact(degree, [IBig::ZERO, IBig::ZERO], p, bits, s),
+                None => exact(map, [IBig::ZERO, IBig::ZERO], p, bits, s),
                 Some(c) => {
                     let cb = Centre::from_f64_exact([c.re, c.im]).to_binary(bits);
-                    exact(degree, p, cb, bits, s)
+                    exact(map, p, cb, bits, s)
                 }
             };
             counts.push(n);
@@ -185,13 +174,42 @@ fn julia_sets_and_the_cubic_zoom_deep_too() {
 }
 
 #[test]
+fn burning_ship_agrees_with_exact_iteration() {
+    // A point c ≈ −1.136 − 0.620i where 0 → c → … lands after four steps on the fixed point
+    // z ≈ 1.705 + 0.257i (solved by Newton's method to 205 digits), which the ship's
+    // Jacobian (2|z| times a rotation or reflection) repels by 3.45: its structure repeats at
+    // every depth. The orbit stays off the axes, so the fold's signs are those of the
+    // reference and the difference terms must not cancel (the diffabs form). The digits
+    // keep the reference on the cycle (and bounded) longer than the pixels take to escape:
+    // pixels that outlive their reference restart from its start with a full-size value and
+    // keep f64's absolute accuracy only. At 1e-100, 3 of the 192 pixels leave the cycle's
+    // neighbourhood at a full-size distance from the reference and wander near it for another
+    // 50–100 iterations: the rounding of their f64 differences (a few ulps at the departure)
+    // grows ten orders there and they end up to 20 iterations off, as they would in any
+    // program that keeps differences in f64.
+    let x = "-1.135970435068669382740841251730673933311924870876766725685875127621889688\
+             767121405072274975276750023921156479446428973090212757396385213938417834756\
+             849637107266137647023656531165227992031188066647728934534";
+    let y = "-0.620043386399648200978028882876077721013041924053031614563946013305331487\
+             942996783102213960061646547603087438578052911231800480602098334794794166210\
+             898372624575163846941793646094380205244377968751786864654";
+    let s = settings(6000, false);
+    for half in ["1e-40", "1e-100"] {
+        let view = deep_view(x, y, half);
+        let (frac, distinct) = agreement(&Family::BurningShip, &view, 16, 12, &s);
+        assert!(distinct >= 10, "{half}: {distinct} counts");
+        assert!(frac >= 0.98, "{half}: {frac}");
+    }
+}
+
+#[test]
 fn bilinear_steps_skip_most_iterations() {
     // At 1e-100 near i, pixels escape after about 270 iterations; the table covers them in
     // a few dozen steps.
     let s = settings(6000, false);
     let view = deep_view("0", "1", "1e-100");
     let (w, h) = (8, 6);
-    let (r, pixel) = reference_of(2, None, &view, w, h, &s);
+    let (r, pixel) = reference_of(Map::Square, None, &view, w, h, &s);
     assert_eq!(r.main.z.len(), 6001, "the reference at i never escapes");
     assert!(r.main.bla.len() > 5000);
     let dc = view.offset_from_pixel_fx(1.0, 1.0, w, h);
@@ -222,7 +240,7 @@ fn distance_estimates_are_in_pixels_at_any_depth() {
     for half in ["1e-30", "1e-400"] {
         let view = deep_view("0", "1", half);
         let (w, h) = (8, 6);
-        let (r, pixel) = reference_of(2, None, &view, w, h, &s);
+        let (r, pixel) = reference_of(Map::Square, None, &view, w, h, &s);
         let des: Vec<f32> = (0..w)
             .map(|i| {
                 iterate(

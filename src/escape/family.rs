@@ -32,6 +32,9 @@ pub enum Family {
         /// Iterate Köse's λz(z − 1) instead of λz(1 − z).
         kose: bool,
     },
+    /// The Burning Ship (Michelitsch and Rössler): z₀ = 0, z ← (|Re z| + i·|Im z|)² + c,
+    /// c = pixel.
+    BurningShip,
     /// Julia set of z³ + z + p.
     Cubic {
         /// The parameter p.
@@ -43,12 +46,13 @@ pub enum Family {
 
 impl Family {
     /// The family's name as written in view files: "mandelbrot" (power 2), "multibrot", "julia",
-    /// "newton", "logistic", "cubic" or "warped-julia".
+    /// "burning-ship", "newton", "logistic", "cubic" or "warped-julia".
     pub fn name(&self) -> &'static str {
         match self {
             Family::Mandelbrot { power: 2 } => "mandelbrot",
             Family::Mandelbrot { .. } => "multibrot",
             Family::Julia { .. } => "julia",
+            Family::BurningShip => "burning-ship",
             Family::Newton { .. } => "newton",
             Family::Logistic { .. } => "logistic",
             Family::Cubic { .. } => "cubic",
@@ -61,7 +65,7 @@ impl Family {
         match self {
             Family::Mandelbrot { power } | Family::Julia { power, .. } => *power as f64,
             Family::Newton { coeffs } => (coeffs.len().max(2) - 1) as f64,
-            Family::Logistic { .. } | Family::WarpedJulia(_) => 2.0,
+            Family::Logistic { .. } | Family::WarpedJulia(_) | Family::BurningShip => 2.0,
             Family::Cubic { .. } => 3.0,
         }
     }
@@ -93,6 +97,7 @@ impl Family {
             Family::Mandelbrot { power: 2 } => ([-0.7, 0.0], 1.25),
             Family::Mandelbrot { .. } => ([0.0, 0.0], 1.4),
             Family::Julia { .. } => ([0.0, 0.0], 1.5),
+            Family::BurningShip => ([-0.4, -0.55], 1.25),
             Family::Newton { .. } => ([0.0, 0.0], 2.0),
             Family::Logistic { kose: false, .. } => ([1.0, 0.0], 2.0),
             Family::Logistic { kose: true, .. } => ([0.085, 1.073], 1.5),
@@ -335,6 +340,37 @@ pub fn in_cardioid_or_bulb(x: f64, y: f64) -> bool {
     q * (q + xq) <= 0.25 * y * y || (x + 1.0) * (x + 1.0) + y * y <= 0.0625
 }
 
+/// Periodicity checking (Brent's): the orbit is saved at iterations 2, 4, 8, …, and a later
+/// point within `tol` of the saved one in both parts means a cycle.
+struct Cycle {
+    saved: C,
+    next_save: u32,
+}
+
+impl Cycle {
+    fn new(z: C) -> Cycle {
+        Cycle {
+            saved: z,
+            next_save: 2,
+        }
+    }
+
+    /// After iteration n reached z: has the orbit been found to cycle?
+    #[inline]
+    fn found(&mut self, n: u32, z: C, tol: f64) -> bool {
+        if tol <= 0.0 {
+            return false;
+        }
+        if n == self.next_save {
+            self.saved = z;
+            self.next_save = self.next_save.saturating_mul(2);
+            false
+        } else {
+            (z.re - self.saved.re).abs() < tol && (z.im - self.saved.im).abs() < tol
+        }
+    }
+}
+
 /// Iterate one point of a polynomial family (everything except Newton) in scalar code:
 /// returns the sample. `z0`, `c` as the family defines them; `deg` for smooth colouring.
 /// `step` maps (z, c) → z′ and `dstep` (z, dz, c) → dz′ for distance estimation.
@@ -347,7 +383,7 @@ fn iterate_poly(
     step: impl Fn(C, C) -> C,
     dstep: impl Fn(C, C) -> C,
 ) -> Sample {
-    let (mut saved, mut next_save) = (z, 2u32);
+    let mut cycle = Cycle::new(z);
     for n in 1..=s.max_iter {
         if s.want_de {
             dz = dstep(z, dz);
@@ -357,15 +393,58 @@ fn iterate_poly(
         if s.escaped(r2) {
             return s.escape_sample(n, z, r2, dz, deg);
         }
-        if s.period_tol > 0.0 {
-            if n == next_save {
-                saved = z;
-                next_save = next_save.saturating_mul(2);
-            } else if (z.re - saved.re).abs() < s.period_tol
-                && (z.im - saved.im).abs() < s.period_tol
-            {
-                return Sample::inside(s.max_iter);
-            }
+        if cycle.found(n, z, s.period_tol) {
+            return Sample::inside(s.max_iter);
+        }
+    }
+    Sample::inside(s.max_iter)
+}
+
+/// The Burning Ship's fold: (|Re z|, |Im z|) and the signs of the parts (the fold's
+/// Jacobian, diagonal).
+#[inline]
+pub fn ship_fold(z: C) -> (C, f64, f64) {
+    (
+        C::new(z.re.abs(), z.im.abs()),
+        1f64.copysign(z.re),
+        1f64.copysign(z.im),
+    )
+}
+
+/// One step of a column v of the Burning Ship's Jacobian ∂z/∂c: v ← 2·F(z)·(sx·v.re,
+/// sy·v.im) + e, with F the fold and e the column's unit vector. The map is not holomorphic,
+/// so dz/dc is a real 2×2 matrix, carried as its two columns.
+#[inline]
+pub fn ship_jacobian_step(v: C, z: C, e: C) -> C {
+    let (f, sx, sy) = ship_fold(z);
+    f * 2.0 * C::new(sx * v.re, sy * v.im) + e
+}
+
+/// The size of a Jacobian with columns a and b that stands for |dz/dc| in the distance
+/// estimate: its Frobenius norm over √2, which is |dz/dc| for a holomorphic map.
+pub fn jacobian_size(a: f64, b: f64) -> f64 {
+    ((a * a + b * b) * 0.5).sqrt()
+}
+
+/// The Burning Ship at c, from z₀ = 0; distance estimates from the Jacobian.
+fn iterate_ship(s: &IterSettings, c: C) -> Sample {
+    let mut z = C::ZERO;
+    let (mut jx, mut jy) = (C::ZERO, C::ZERO);
+    let mut cycle = Cycle::new(z);
+    for n in 1..=s.max_iter {
+        if s.want_de {
+            jx = ship_jacobian_step(jx, z, C::ONE);
+            jy = ship_jacobian_step(jy, z, C::new(0.0, 1.0));
+        }
+        let f = ship_fold(z).0;
+        z = C::new(f.re * f.re - f.im * f.im + c.re, 2.0 * f.re * f.im + c.im);
+        let r2 = z.norm2();
+        if s.escaped(r2) {
+            let size = jacobian_size(jx.abs(), jy.abs());
+            return s.escape_sample(n, z, r2, C::new(size, 0.0), 2.0);
+        }
+        if cycle.found(n, z, s.period_tol) {
+            return Sample::inside(s.max_iter);
         }
     }
     Sample::inside(s.max_iter)
@@ -411,6 +490,7 @@ pub fn iterate_point(family: &Family, point: C, s: &IterSettings) -> Sample {
                 |z, dz| pow(z, m - 1) * dz * m as f64,
             )
         }
+        Family::BurningShip => iterate_ship(s, point),
         Family::Logistic { z0, kose } => {
             let sign = if *kose { -1.0 } else { 1.0 };
             // f = s·λ z (1 − z); d/dλ: dz′ = s·(z(1 − z) + λ(1 − 2z) dz).
@@ -610,6 +690,45 @@ mod tests {
             let b = iterate_point(&m4, p * rot, &settings(200, 2.0));
             assert_eq!(a.n, b.n, "{p:?}");
         }
+    }
+
+    #[test]
+    fn burning_ship_oracles() {
+        let ship = Family::BurningShip;
+        let esc = |re, im| {
+            let s = iterate_point(&ship, C::new(re, im), &settings(10_000, 2.0));
+            (!s.inside).then_some(s.n)
+        };
+        // −i: 0 → −i → −1 − i → i → −1 − i, a cycle; +i: i → −1 + i → 3i escapes.
+        assert_eq!(esc(0.0, -1.0), None);
+        assert_eq!(esc(0.0, 1.0), Some(3));
+        // The fold matters off the real axis: −0.5 + 0.5i escapes at the 4th iteration for
+        // the ship but is bounded for z² + c.
+        assert_eq!(esc(-0.5, 0.5), Some(4));
+        let m = iterate_point(
+            &Family::Mandelbrot { power: 2 },
+            C::new(-0.5, 0.5),
+            &settings(10_000, 2.0),
+        );
+        assert!(m.inside);
+        // On the real axis the ship is z² + c; where the orbit stays positive the fold is the
+        // identity and the Jacobian conformal: the same distance estimates too.
+        let s = IterSettings {
+            want_de: true,
+            ..settings(10_000, 1e10)
+        };
+        for c in [C::new(2.0, 0.0), C::new(1.0, 0.0), C::new(0.3, 0.0)] {
+            let a = iterate_point(&ship, c, &s);
+            let b = iterate_point(&Family::Mandelbrot { power: 2 }, c, &s);
+            assert_eq!((a.n, a.nu), (b.n, b.nu), "{c:?}");
+            assert!(
+                (a.de - b.de).abs() <= 1e-6 * b.de,
+                "{c:?}: {} {}",
+                a.de,
+                b.de
+            );
+        }
+        assert_eq!(esc(-1.75, 0.0), None, "the period-3 window");
     }
 
     #[test]

@@ -4,7 +4,7 @@
 
 use super::color::Coloring;
 use super::complex::C;
-use super::deep;
+use super::deep::{self, Map};
 use super::family::{
     Family, IterSettings, NewtonSystem, Sample, in_cardioid_or_bulb, iterate_point,
     iterate_quadratic_scalar,
@@ -99,15 +99,17 @@ impl Job {
         settings: &IterSettings,
         progress: &deep::OrbitProgress,
     ) -> Option<deep::Reference> {
-        let (degree, julia) = match params.family {
-            Family::Julia { power, c } => (power, Some(c)),
-            Family::Mandelbrot { power } => (power, None),
-            _ => unreachable!("deep zoom only for z^2 + c and z^3 + c"),
+        let map = |power| if power == 3 { Map::Cube } else { Map::Square };
+        let (map, julia) = match params.family {
+            Family::Julia { power, c } => (map(power), Some(c)),
+            Family::Mandelbrot { power } => (map(power), None),
+            Family::BurningShip => (Map::Ship, None),
+            _ => unreachable!("deep zoom only for z^2 + c, z^3 + c and the Burning Ship"),
         };
         // The largest offset of a pixel from the centre: a corner.
         let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
         deep::Reference::new(
-            degree,
+            map,
             view.centre(),
             julia,
             view.pixel_size_fx(h),

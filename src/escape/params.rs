@@ -91,7 +91,7 @@ pub enum EscapeError {
     /// The pixel is too small for f64 arithmetic at this centre.
     #[error(
         "zoomed in to the limit of 64-bit floating point (pixel {pixel:.3e} at |centre| {scale:.3e}); \
-         zoom out (deep zoom is available for z² + c: the Mandelbrot set and its Julia sets)"
+         zoom out (deep zoom is available for z² + c, z³ + c, their Julia sets and the Burning Ship)"
     )]
     PrecisionLimit {
         /// Pixel size in world units.
@@ -196,7 +196,9 @@ pub fn check_view(view: &View, w: u32, h: u32) -> Result<(), EscapeError> {
 pub fn supports_deep_zoom(family: &Family) -> bool {
     matches!(
         family,
-        Family::Mandelbrot { power: 2 | 3 } | Family::Julia { power: 2 | 3, .. }
+        Family::Mandelbrot { power: 2 | 3 }
+            | Family::Julia { power: 2 | 3, .. }
+            | Family::BurningShip
     )
 }
 

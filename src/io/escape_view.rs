@@ -31,6 +31,7 @@ pub fn family_from_name(name: &str) -> Option<Family> {
     Some(match name.trim().to_ascii_lowercase().as_str() {
         "mandelbrot" => Family::Mandelbrot { power: 2 },
         "multibrot" => Family::Mandelbrot { power: 3 },
+        "burning-ship" | "burningship" | "burning_ship" => Family::BurningShip,
         "julia" => Family::Julia {
             power: 2,
             c: C::new(-0.8, 0.156),
@@ -186,6 +187,7 @@ pub fn write(doc: &EscapeDoc) -> String {
         Family::Cubic { p } => {
             let _ = writeln!(s, "p = {}", fmt_c(*p));
         }
+        Family::BurningShip => {}
         Family::WarpedJulia(w) => {
             let _ = writeln!(
                 s,
@@ -601,7 +603,7 @@ pub fn parse(text: &str, name: &str, base: Option<&Path>) -> Result<Parsed<Escap
         kind.err(
             "ESC002",
             format!(
-                "unknown kind '{}': expected mandelbrot, multibrot, julia, newton, logistic, cubic or warped-julia",
+                "unknown kind '{}': expected mandelbrot, multibrot, burning-ship, julia, newton, logistic, cubic or warped-julia",
                 kind.value
             ),
         )

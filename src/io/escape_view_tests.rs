@@ -7,6 +7,7 @@ fn round_trip_every_kind() {
     for kind in [
         "mandelbrot",
         "multibrot",
+        "burning-ship",
         "julia",
         "newton",
         "logistic",

@@ -190,6 +190,7 @@ impl EscapeTab {
                 ui.end_row();
             }
             Family::Cubic { p } => complex_row(ui, "p", p),
+            Family::BurningShip => {}
             Family::WarpedJulia(w) => self.warp_params(ui, w),
         }
     }

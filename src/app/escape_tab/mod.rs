@@ -84,10 +84,11 @@ impl Default for EscapeTab {
 }
 
 /// The families, by file name and menu label.
-pub(crate) const KINDS: [(&str, &str); 7] = [
+pub(crate) const KINDS: [(&str, &str); 8] = [
     ("mandelbrot", "Mandelbrot"),
     ("julia", "Julia"),
     ("multibrot", "z^m + c"),
+    ("burning-ship", "Burning Ship"),
     ("newton", "Newton"),
     ("logistic", "Logistic λz(1−z)"),
     ("cubic", "Cubic z³ + z + p"),

@@ -186,7 +186,41 @@ fn synth_sin_cos(v: &Prepared, theta: f64, smooth: i32) -> (f64, f64) {
 /// synth: one of 27 classic shapes (spherical, bubble, blurs, shifts, swirl, julia, …) whose
 /// radius or angle is reshaped by a configurable sum of periodic waves.
 fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [_, mode, power, mix, smooth] = v.params();
+    let [_, mode] = v.params();
+    synth_shape(v, t, rng, mode as i32)
+}
+
+/// synth in a flame JWildfire wrote: JWildfire numbers the shapes from 12 on otherwise
+/// (blurred ring 12, thin ring 13, shift-and-stretch 14, tangent shift 15, angle shift 16 (the
+/// radius as it was), the mirrors 17 and 18, powered spherical 19; the sinusoidal to cylinder
+/// shapes as 1001–1007) and draws nothing for a number it does not know (JWildfire 9.00's
+/// `SynthFunc`).
+pub(super) fn synth_jwildfire(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, mode, power] = v.params();
+    let shape = match mode as i32 {
+        m @ 0..=11 => m,
+        12 => 19,
+        13 => 20,
+        14 => 22,
+        15 => 23,
+        16 => {
+            let radius = zeps(t.sumsq).powf(power / 2.0);
+            let theta = t.atan_xy - 1.0 + synth_value(v, radius);
+            let (s, c) = theta.fsin_cos();
+            return [v.w * t.sqrt * s, v.w * t.sqrt * c, 0.0];
+        }
+        17 => 24,
+        18 => 25,
+        19 => 26,
+        m @ 1001..=1007 => m - 989,
+        _ => return [0.0; 3],
+    };
+    synth_shape(v, t, rng, shape)
+}
+
+/// synth's shape `mode` in Fractorium's numbering.
+fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
+    let [_, _, power, mix, smooth] = v.params();
     let smooth = smooth as i32;
     let w = v.w;
     let (x, y) = (t.x, t.y);
@@ -194,7 +228,7 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         let (s, c) = theta.fsin_cos();
         [w * radius * s, w * radius * c, 0.0]
     };
-    match mode as i32 {
+    match mode {
         0 => {
             // spherical
             let radius = zeps(t.sumsq).powf((power + 1.0) / 2.0);

@@ -524,7 +524,8 @@ fn parameters_only_jwildfires_formula_has_are_read() {
 
 /// JWildfire reads a variation's parameters by their exact names: a name written with other
 /// letter case (as older JWildfire versions wrote `dc_starsfield_Glow`) keeps the default and
-/// is kept as an attribute; flam3-style files still match names in any case.
+/// is kept as an attribute; flam3-style files still match names in any case, and so do names
+/// the registry spells with capitals.
 #[test]
 fn jwildfire_parameter_names_are_case_sensitive() {
     let xform =
@@ -544,4 +545,8 @@ fn jwildfire_parameter_names_are_case_sensitive() {
     let flam3 = format!(r#"<flame>{xform}</flame>"#);
     let f = read(&flam3, &opts()).unwrap().value.flames.remove(0);
     assert_eq!(f.xforms[0].vars[0].params[..2], [5.0, 2.0]);
+    // A name the registry spells with capitals (sym_bg5_StepX) is JWildfire's sym_bg5_stepx.
+    let sym = r#"<flame version="JWildfire V9.00"><xform weight="1" sym_bg5="1" sym_bg5_stepx="0.375" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(sym, &opts()).unwrap().value.flames.remove(0);
+    assert!(f.xforms[0].vars[0].params.contains(&0.375));
 }

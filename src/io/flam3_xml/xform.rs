@@ -318,27 +318,34 @@ fn variation_attr(
 }
 
 /// Whether attribute `base`, found as parameter `index` of variation `id` used in `form`,
-/// spells that parameter's JWildfire name with another letter case (`dc_starsfield_Glow` for
+/// spells that parameter with other letter case than JWildfire does (`dc_starsfield_Glow` for
 /// `dc_starsfield_glow`, as older JWildfire versions wrote): JWildfire, which looks parameters
-/// up by their exact names, does not read it. Names reached through an alias are not
-/// affected.
+/// up by their exact names, does not read it. Only the part after the variation's name
+/// counts, and only where the registry spells it in lower case, which is JWildfire's spelling
+/// of every such name; names with capitals (some follow Fractorium's or Apophysis' spelling)
+/// and names reached through an alias match in any case.
 fn case_differs(base: &str, id: VarId, form: Form, index: usize) -> bool {
     let def = variations::def_in(variations::Dialect::JWildfire, id, form);
-    let Some(exact) = def
+    let Some(p) = def
         .params
         .get(index)
         .or(variations::info(id).params.get(index))
     else {
         return false;
     };
-    let exact = exact.name;
-    let cut = base.len().wrapping_sub(exact.len());
-    match base.get(cut..) {
-        Some(tail) if base.len() >= exact.len() => {
-            tail != exact && tail.eq_ignore_ascii_case(exact)
-        }
-        _ => false,
-    }
+    let var = variations::info(id).name;
+    let part = match p.name.get(..var.len()) {
+        Some(head) if head.eq_ignore_ascii_case(var) => p.name[var.len()..].strip_prefix('_'),
+        _ => None,
+    };
+    let Some(part) = part.filter(|q| !q.bytes().any(|b| b.is_ascii_uppercase())) else {
+        return false;
+    };
+    let tail = base
+        .len()
+        .checked_sub(part.len())
+        .and_then(|cut| base.get(cut..));
+    tail.is_some_and(|t| t != part && t.eq_ignore_ascii_case(part))
 }
 
 /// JWildfire marks a variation used before (< 0) or after (> 0) the others with

@@ -83,6 +83,7 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("shredlin", fractorium::shredlin, 0, flag::WRITES_ACC),
     ("sintrange", fractorium::sintrange, 0, flag::WRITES_ACC),
     ("sinusgrid", fractorium::sinusgrid, 0, flag::WRITES_Z),
+    ("synth", super::fr_synth::synth_jwildfire, 0, 0),
     (
         "post_crop",
         fractorium::crop,
