@@ -29,7 +29,7 @@ use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_if
 // JWildfire variations, third part.
 use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
 // JWildfire variations, fourth part.
-use super::{jwf_d_crops, jwf_d_cuts, jwf_d_plane, jwf_d_solids};
+use super::{jwf_d_crops, jwf_d_cuts, jwf_d_cvar, jwf_d_plane, jwf_d_shapes, jwf_d_solids};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -71,7 +71,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 55] = [
+const FILES: [&[VarDef]; 57] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -129,7 +129,9 @@ const FILES: [&[VarDef]; 55] = [
     // JWildfire variations, fourth part.
     jwf_d_crops::DEFS,
     jwf_d_cuts::DEFS,
+    jwf_d_cvar::DEFS,
     jwf_d_plane::DEFS,
+    jwf_d_shapes::DEFS,
     jwf_d_solids::DEFS,
 ];
 
@@ -466,6 +468,20 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "de_stijl",
     "pointgrid_wf",
     "pointgrid3d_wf",
+    "cut_jigsaw",
+    "cut_circdes",
+    "cut_pattern",
+    "cut_swarp",
+    "cut_kaleido",
+    "meeple",
+    "waveblur_wf",
+    "conicalSpiral",
+    "intersection",
+    "c_var",
+    "pre_c_var",
+    "post_c_var",
+    "cut_c",
+    "spirograph3D",
 ];
 
 /// Every JWildfire variation's name in registry order.
