@@ -3,12 +3,17 @@
 //! spiral), `cut_wood` (wood grain: lines twisted by value noise), `cut_metaballs` (a
 //! Worley-style field of blobs), `cut_vasarely` (Vasarely's bulging stripes),
 //! `cut_apollonian` (an Apollonian gasket), `cut_spots` (fractal-noise spots),
-//! `cut_celtic` (interlaced celtic rings) and `cut_truchet` (random Truchet tiles).
+//! `cut_celtic` (interlaced celtic rings), `cut_truchet` (random Truchet tiles),
+//! `cut_jigsaw` (jigsaw pieces), `cut_circdes` (nested circles), `cut_pattern` (turned tiles
+//! of sine waves), `cut_swarp` (warped rings of circles, squares, hexagons or octagons) and
+//! `cut_kaleido` (interference of n circular waves).
 //!
 //! The formulas follow JWildfire's (LGPL-2.1) code, written anew.
 
 use super::jwf_a_cuts::{CUT, cut_end, cut_point, seed_offset};
 use super::util::{atan2_approx, fract, mix, smoothstep};
+use std::f64::consts::PI;
+
 use super::*;
 
 pub(super) static DEFS: &[VarDef] = &[
@@ -80,6 +85,53 @@ pub(super) static DEFS: &[VarDef] = &[
             p_int("cut_truchet_seed", 1000.0, NEG_INF, INF),
             p("cut_truchet_zoom", 10.0),
             p_int("cut_truchet_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_jigsaw", cut_jigsaw)
+        .params(&[
+            p_int("cut_jigsaw_seed", 1000.0, NEG_INF, INF),
+            p("cut_jigsaw_time", 0.0),
+            p_int("cut_jigsaw_mode", 1.0, 0.0, 1.0),
+            p("cut_jigsaw_zoom", 4.0),
+            p_int("cut_jigsaw_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_circdes", cut_circdes)
+        .params(&[
+            p_int("cut_circdes_seed", 1000.0, NEG_INF, INF),
+            p_int("cut_circdes_mode", 1.0, 0.0, 1.0),
+            p("cut_circdes_time", 0.0),
+            p("cut_circdes_zoom", 10.0),
+            p_int("cut_circdes_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_pattern", cut_pattern)
+        .params(&[
+            p_int("cut_pattern_seed", 1000.0, NEG_INF, INF),
+            p_int("cut_pattern_mode", 1.0, 0.0, 1.0),
+            p("cut_pattern_time", 0.9),
+            p("cut_pattern_zoom", 0.5),
+            p_int("cut_pattern_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_swarp", cut_swarp)
+        .params(&[
+            p_int("cut_swarp_seed", 1000.0, NEG_INF, INF),
+            p_int("cut_swarp_mode", 1.0, 0.0, 1.0),
+            p("cut_swarp_time", 0.0),
+            p_int("cut_swarp_type", 0.0, 0.0, 3.0),
+            p("cut_swarp_zoom", 1.0),
+            p_int("cut_swarp_invert", 0.0, 0.0, 1.0),
+        ])
+        .flags(CUT),
+    VarDef::new("cut_kaleido", cut_kaleido)
+        .params(&[
+            p_int("cut_kaleido_seed", 1000.0, NEG_INF, INF),
+            p_int("cut_kaleido_mode", 1.0, 0.0, 1.0),
+            p("cut_kaleido_time", 0.0),
+            p_int("cut_kaleido_n", 6.0, 2.0, 20.0),
+            p("cut_kaleido_zoom", 0.5),
+            p_int("cut_kaleido_invert", 0.0, 0.0, 1.0),
         ])
         .flags(CUT),
 ];
@@ -310,4 +362,134 @@ fn cut_truchet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
         }
     };
     cut_end(v, acc, color == 0.0, invert, (x, y), 0.0)
+}
+
+/// cut_jigsaw: jigsaw pieces with round tabs (the tab direction hashed per cell); `time`
+/// slides the pattern along x.
+fn cut_jigsaw(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, time, mode, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -0.5, 1.0, 0.0);
+    let (ux, uy) = (x * zoom + time, y * zoom);
+    let (ix, iy) = (ux.ceil(), uy.ceil());
+    let gm = |a: f64| a - 2.0 * (a / 2.0).floor() - 0.5;
+    let (mx, my) = (gm(ix), gm(iy));
+    let (ux, uy) = (ux - (ix - 0.5), uy - (iy - 0.5));
+    let (dx, dy) = if mx * ux + my * uy < 0.0 {
+        (-mx, -my)
+    } else {
+        (mx, my)
+    };
+    let f = ((ux - dx).abs() + (uy - dy).abs()) * 0.7 - 0.65;
+    let c = ((ux - dx * 0.2).powi(2) + (uy - dy * 0.2).powi(2)).sqrt() - 0.2;
+    let d = (ix * 27.0 + iy * 57.0).sin() * 1e5;
+    let tab = if (fract(d) - 0.5) * dx < 0.0 {
+        f.max(0.1 - c)
+    } else {
+        f
+    };
+    let color = 1.0 - tab.min(c) * 1e4 / 8.0;
+    cut_end(v, acc, color > 0.0, invert, (x, y), 0.0)
+}
+
+/// cut_circdes: per cell, a disc of radius 0.8 with nine rings of four discs each taken
+/// away and added in turn (their radii shrinking with `time`).
+fn cut_circdes(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, mode, time, zoom, invert] = v.params();
+    let (x, y, c) = cut_point(mode, t, rng, 0.0, 1.0, 0.5);
+    let (ux, uy) = (fract(x * zoom) - 0.5, fract(y * zoom) - 0.5);
+    let inside = |px: f64, py: f64, r: f64| {
+        if r < (px * px + py * py).sqrt() {
+            0.0
+        } else {
+            1.0
+        }
+    };
+    let mut r = 0.8;
+    let mut d = inside(ux, uy, r);
+    for i in 0..9 {
+        r *= 0.5 + 0.1 * (i as f64 + time).sin();
+        let ring = inside(ux, uy + r, r)
+            + inside(ux + r, uy, r)
+            + inside(ux, uy - r, r)
+            + inside(ux - r, uy, r);
+        // GLSL adds the four one step at a time; the order does not change integers.
+        d += if i % 2 == 0 { -ring } else { ring };
+    }
+    cut_end(v, acc, d > 0.5, invert, (x, y), c)
+}
+
+/// A point of the unit tile turned by `a` about (½, ½).
+fn turn_tile(x: f64, y: f64, a: f64) -> (f64, f64) {
+    let (s, c) = a.sin_cos();
+    let (x, y) = (x - 0.5, y - 0.5);
+    (c * x + s * y + 0.5, -s * x + c * y + 0.5)
+}
+
+/// cut_pattern: tiles of a sine-wave pattern, each quarter tile turned by a quarter or three
+/// quarters of a turn.
+fn cut_pattern(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, mode, time, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -0.5, 1.0, 0.0);
+    let (sx, sy) = (fract(x * zoom) * 2.0, fract(y * zoom) * 2.0);
+    let gm = |a: f64| a - 2.0 * (a / 2.0).floor();
+    let index = (if gm(sx) < 1.0 { 0.0 } else { 1.0 }) + (if gm(sy) < 1.0 { 0.0 } else { 2.0 });
+    let quarter = if index == 0.0 || index == 2.0 {
+        PI * 2.0 * 1.0 / 4.0
+    } else {
+        PI * 2.0 * 3.0 / 4.0
+    };
+    let (ux, uy) = turn_tile(fract(sx), fract(sy), quarter);
+    let (px, py) = (0.0 - ux, 5.0 - uy);
+    let radius = (px * px + py * py).sqrt();
+    let inner = ((ux * PI * 3.0).sin() * PI * 2.0 + (uy * PI * 15.0).sin()).cos();
+    let r = (radius
+        * (uy * PI * 5.0 + time + inner).sin()
+        * 1.0
+        * (uy * PI + (ux * PI * 5.0).sin()).sin())
+    .sin();
+    let b = (r * PI * 2.0 + PI * 2.0).cos() * 0.9 + (r * PI * 2.0 + PI * 2.0).sin() * 0.7;
+    cut_end(v, acc, b > 0.0, invert, (x, y), 0.0)
+}
+
+/// cut_swarp: the point warped by sines, then rings of the distance of `type` (circle,
+/// square, hexagon, octagon), the two halves x ≤ 0 and x > 0 shifted apart.
+fn cut_swarp(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, mode, time, kind, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -0.5, 1.0, 0.0);
+    let (mut ux, mut uy) = (x * zoom, y * zoom);
+    let v0x = ux * 5.0 + (ux * 11.0 + time).cos() + time;
+    let v0y = uy * 5.0 + (uy * 11.0 + time).cos() + time;
+    let t0 = v0x.sin() * 0.5 + v0y.sin() * 0.5;
+    ux += t0 * 0.02;
+    uy += t0 * 0.02;
+    uy += (ux * 7.0 + (ux * 4.0 + time * 2.0).cos() * 1.0 + time).sin() * 0.05;
+    let s = ux.ceil() * 2.0 - 1.0;
+    let m = 6.0;
+    uy += s / m;
+    let (ax, ay) = (ux.abs(), uy.abs());
+    let dist = match kind as i32 {
+        0 => (ux * ux + uy * uy).sqrt(),
+        1 => ax.max(ay),
+        2 => (ax * 0.8660254 + ay * 0.5).max(ay),
+        _ => ax.max(ay).max((ax + ay) * 0.7071),
+    };
+    let k = (s * 3.14159 / 2.0 + dist * 5.0 * m * 3.14159 / 2.0).sin();
+    cut_end(v, acc, k.max(0.0).sqrt() > 0.5, invert, (x, y), 0.0)
+}
+
+/// cut_kaleido: the mean of sin(k·distance) to n points on a circle of radius ½, through
+/// −cos(13·mean); `time` turns the points and changes k.
+fn cut_kaleido(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, mode, time, n, zoom, invert] = v.params();
+    let (x, y, _) = cut_point(mode, t, rng, -0.5, 1.0, 0.0);
+    let (ux, uy) = (x * zoom, y * zoom);
+    let k = 100.0 + 10.0 * (time / 5.0).sin();
+    let mut d = 1.0;
+    for i in 0..n as i32 {
+        let fi = 2.0 * 3.14 * (i as f64 + 0.02 * time) / n;
+        let (cx, cy) = (0.5 * fi.sin(), 0.5 * fi.cos());
+        d += (k * ((ux - cx).powi(2) + (uy - cy).powi(2)).sqrt()).sin();
+    }
+    let color = 0.0 - (d / n * 13.0).cos();
+    cut_end(v, acc, color > 0.0, invert, (x, y), 0.0)
 }

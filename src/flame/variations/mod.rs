@@ -82,7 +82,8 @@
 //! | `jwf_a_warps` | JWildfire's warps of the plane (`bwraps7`, `rings3`, `waves3_wf`, `pTransform`, `spligon`, `chunk`, …) |
 //! | `jwf_d_crops` | JWildfire's escape-time crops of the summed point (`post_benesi_crop`, `post_aexion_crop`, `post_mandelbox3d_crop`, …) |
 //! | `jwf_d_cuts` | more cuts along shader patterns (`cut_spiral`, `cut_wood`, `cut_metaballs`, `cut_truchet`, …) |
-//! | `jwf_d_plane` | colourings of the plane by cells (`de_stijl`) |
+//! | `jwf_d_cvar` | a complex function with JWildfire's default code (`c_var`, `pre_c_var`, `post_c_var`, `cut_c`) |
+//! | `jwf_d_plane` | cells of the plane (`de_stijl`, `pointgrid_wf`, `pointgrid3d_wf`) |
 //! | `jwf_d_solids` | more solids filled at random (`cone3D`, `torus3D`, `capsule3D`, `rbox3D`, …), `hourglass3D`, `gridout3D` |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
 //! | `jwf_dialect` | JWildfire's own formulas for names the others also use (`polar`, `rings`, …), for the flames JWildfire wrote |
@@ -162,6 +163,7 @@ mod jwf_c_glsl;
 mod jwf_c_orbits;
 mod jwf_d_crops;
 mod jwf_d_cuts;
+mod jwf_d_cvar;
 mod jwf_d_plane;
 mod jwf_d_solids;
 mod jwf_dialect;

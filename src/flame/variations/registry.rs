@@ -29,7 +29,7 @@ use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_if
 // JWildfire variations, third part.
 use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
 // JWildfire variations, fourth part.
-use super::{jwf_d_crops, jwf_d_cuts, jwf_d_plane, jwf_d_solids};
+use super::{jwf_d_crops, jwf_d_cuts, jwf_d_cvar, jwf_d_plane, jwf_d_solids};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -76,7 +76,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 64] = [
+const FILES: [&[VarDef]; 65] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -134,6 +134,7 @@ const FILES: [&[VarDef]; 64] = [
     // JWildfire variations, fourth part.
     jwf_d_crops::DEFS,
     jwf_d_cuts::DEFS,
+    jwf_d_cvar::DEFS,
     jwf_d_plane::DEFS,
     jwf_d_solids::DEFS,
     // JWildfire variations, from the end of the alphabet.
@@ -481,6 +482,20 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "de_stijl",
     "pointgrid_wf",
     "pointgrid3d_wf",
+    "cut_jigsaw",
+    "cut_circdes",
+    "cut_pattern",
+    "cut_swarp",
+    "cut_kaleido",
+    "meeple",
+    "waveblur_wf",
+    "conicalSpiral",
+    "intersection",
+    "c_var",
+    "pre_c_var",
+    "post_c_var",
+    "cut_c",
+    "spirograph3D",
 ];
 
 /// Every JWildfire variation's name in registry order.
