@@ -16,6 +16,16 @@ use std::f64::consts::PI;
 
 use super::*;
 
+// The shaders' rounded constants, kept as JWildfire has them.
+#[allow(clippy::approx_constant)]
+const ROUNDED_TAU: f64 = 6.2831;
+#[allow(clippy::approx_constant)]
+const ROUNDED_PI: f64 = 3.14159;
+#[allow(clippy::approx_constant)]
+const COARSE_PI: f64 = 3.14;
+#[allow(clippy::approx_constant)]
+const ROUNDED_SQRT_HALF: f64 = 0.7071;
+
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("cut_spiral", cut_spiral)
         .params(&[
@@ -206,8 +216,8 @@ fn cut_metaballs(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
         for i in -1..=1 {
             let (nx, ny) = (i as f64, j as f64);
             let (ox, oy) = hash2v(ix + nx, iy + ny);
-            let ox = (ox * 6.2831 + time).sin() * 0.5 + 0.5;
-            let oy = (oy * 6.2831 + time).sin() * 0.5 + 0.5;
+            let ox = (ox * ROUNDED_TAU + time).sin() * 0.5 + 0.5;
+            let oy = (oy * ROUNDED_TAU + time).sin() * 0.5 + 0.5;
             let (px, py) = (nx + ox - fx, ny + oy - fy);
             m = m.min(m * (px * px + py * py).sqrt());
         }
@@ -471,9 +481,9 @@ fn cut_swarp(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         0 => (ux * ux + uy * uy).sqrt(),
         1 => ax.max(ay),
         2 => (ax * 0.8660254 + ay * 0.5).max(ay),
-        _ => ax.max(ay).max((ax + ay) * 0.7071),
+        _ => ax.max(ay).max((ax + ay) * ROUNDED_SQRT_HALF),
     };
-    let k = (s * 3.14159 / 2.0 + dist * 5.0 * m * 3.14159 / 2.0).sin();
+    let k = (s * ROUNDED_PI / 2.0 + dist * 5.0 * m * ROUNDED_PI / 2.0).sin();
     cut_end(v, acc, k.max(0.0).sqrt() > 0.5, invert, (x, y), 0.0)
 }
 
@@ -486,7 +496,7 @@ fn cut_kaleido(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     let k = 100.0 + 10.0 * (time / 5.0).sin();
     let mut d = 1.0;
     for i in 0..n as i32 {
-        let fi = 2.0 * 3.14 * (i as f64 + 0.02 * time) / n;
+        let fi = 2.0 * COARSE_PI * (i as f64 + 0.02 * time) / n;
         let (cx, cy) = (0.5 * fi.sin(), 0.5 * fi.cos());
         d += (k * ((ux - cx).powi(2) + (uy - cy).powi(2)).sqrt()).sin();
     }

@@ -247,3 +247,93 @@ fn jacobi_sn_fast(u: f64, emc: f64) -> f64 {
     }
     if neg { sn / d } else { sn }
 }
+
+/// JWildfire's crob: points inside the rectangle (less the blur band) are kept as they are,
+/// those outside vanish (no blur) or are thrown onto the band along the rectangle's inner
+/// edge; the sides are chosen by JWildfire's probabilities and intervals (|right − left|).
+/// Unweighted, as in JWildfire.
+pub(super) fn crob(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, _, _, _, _, ratio] = v.params();
+    let [_, _, _, _, top, bottom, left, right, blur, direct] = v.derived();
+    let (xint, yint) = ((right - left).abs(), (bottom - top).abs());
+    let (xint2, yint2) = (xint / 2.0, yint / 2.0);
+    let minint2 = if xint2 > yint2 { yint2 } else { xint2 };
+    let (x0, y0) = (right - xint2, top + yint2);
+    let (x0c, y0c) = if xint2 > yint2 {
+        (right - minint2, y0)
+    } else if xint2 < yint2 {
+        (x0, top + minint2)
+    } else {
+        (x0, y0)
+    };
+    let m = if blur == 0.0 { 0.0 } else { minint2 * ratio };
+    if !(t.x < left + m || t.x > right - m || t.y < top + m || t.y > bottom - m) {
+        return [t.x, t.y, 0.0];
+    }
+    if blur == 0.0 {
+        return [0.0; 3];
+    }
+    let prob = yint / (xint + yint);
+    let comp = 1.0 - prob;
+    let sec = rng.f01();
+    let (mut x, mut y);
+    // The cap only guards against degenerate rectangles.
+    let mut tries = 0;
+    if sec < prob {
+        loop {
+            y = top + rng.f01() * yint2;
+            x = right - rng.f01().powf(direct) * ratio * minint2;
+            tries += 1;
+            if (y - y0c) / (x - x0c) >= -1.0 || tries > 100_000 {
+                break;
+            }
+        }
+        if sec < 0.5 * prob {
+            x = left + right - x;
+        }
+        if sec > 0.25 * prob && sec < 0.75 * prob {
+            y = bottom + top - y;
+        }
+    } else {
+        loop {
+            x = right - rng.f01() * xint2;
+            y = top + rng.f01().powf(direct) * ratio * minint2;
+            let grad = (y - y0c) / (x - x0c);
+            tries += 1;
+            if !(grad <= 0.0 && grad > -1.0) || tries > 100_000 {
+                break;
+            }
+        }
+        if sec > prob + 0.5 * comp {
+            y = bottom + top - y;
+        }
+        if sec > prob + 0.25 * comp && sec < prob + 0.75 * comp {
+            x = left + right - x;
+        }
+    }
+    [x, y, 0.0]
+}
+
+/// JWildfire's funnel: each coordinate c through tanh(c)·(1/cos c + effect·π) — its own
+/// cosine for each (Fractorium's uses cos y for both), unguarded.
+pub(super) fn funnel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [effect] = v.params();
+    let f = |c: f64| c.tanh() * (1.0 / c.cos() + effect * PI);
+    [v.w * f(t.x), v.w * f(t.y), 0.0]
+}
+
+/// JWildfire's ho: the powers of cos u·cos v, sin u·cos v and sin v taken as they stand
+/// (negative bases keep their sign for whole exponents, NaN otherwise), where Fractorium's
+/// take them of the absolute values.
+pub(super) fn ho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [px, py, pz] = v.params();
+    let om_x = (t.y * t.y).atan2(t.z * t.z);
+    let om_y = (t.x * t.x).atan2(t.z * t.z);
+    let (su, cu) = t.x.sin_cos();
+    let (sv, cv) = t.y.sin_cos();
+    let (cucv, sucv) = (cu * cv, su * cv);
+    let x = cucv.powf(px) + cucv * px + 0.25 * om_x;
+    let y = sucv.powf(py) + sucv * py + 0.25 * om_y;
+    let z = sv.powf(pz) + sv * pz;
+    [v.w * x, v.w * y, v.w * z]
+}

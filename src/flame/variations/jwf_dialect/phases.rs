@@ -1,6 +1,7 @@
 //! JWildfire's own `pre_`/`post_` classes for names that ugnis otherwise runs as the pre or post
 //! form of a regular variation: JWildfire gives them formulas of their own (unweighted,
-//! changing only some coordinates). Each returns the whole point its form replaces.
+//! changing only some coordinates, or scaling their parameters by it). Each returns the
+//! whole point its form replaces.
 //!
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
 //! written anew.
@@ -28,4 +29,19 @@ pub(super) fn post_flatten(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng
 /// pre_zscale: z scaled by the weight; x and y kept.
 pub(super) fn pre_zscale(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [t.x, t.y, t.z * v.w]
+}
+
+/// post_curl3D: the point divided by 1 + 2c·p (y's term negated, as JWildfire has it) +
+/// |c|²·|p|², plus c·|p|² (c scaled by the weight), the point itself not weighted.
+pub(super) fn post_curl3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [cx, cy, cz] = v.params();
+    let (cx, cy, cz) = (cx * v.w, cy * v.w, cz * v.w);
+    let c2 = cx * cx + cy * cy + cz * cz;
+    let r2 = t.x * t.x + t.y * t.y + t.z * t.z;
+    let r = 1.0 / (r2 * c2 + 2.0 * cx * t.x - 2.0 * cy * t.y + 2.0 * cz * t.z + 1.0);
+    [
+        r * (t.x + cx * r2),
+        r * (t.y + cy * r2),
+        r * (t.z + cz * r2),
+    ]
 }

@@ -5,7 +5,8 @@
 //! and those whose parameters JWildfire names or counts its own way: `cpow2`'s `range`,
 //! `rational3`'s coefficients `a`…`h`, `scry2`'s `sides`, `star` and `circle`, `vibration2`'s
 //! second modulations `d2m`…`a2mfreq`, `ripple`'s `fixed_dist_calc`, `octagon`'s `mode`, `truchet`'s `direct_color` (and its defaults, clamps and
-//! unweighted tiles), `dc_bubble`'s `invert`; and Michael Faber's `x`, `y`, `z` and `w`, whose
+//! unweighted tiles), `dc_bubble`'s `invert`, `murl`'s power (any whole number, 1 by
+//! default, where Fractorium's is at least 2); and Michael Faber's `x`, `y`, `z` and `w`, whose
 //! star slope JWildfire takes as it stands (Fractorium keeps it below π/2).
 //!
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
@@ -22,6 +23,9 @@ use crate::flame::variations::*;
 const ROUNDED_HALF_PI: f64 = 1.5708;
 
 pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
+    VarDef::new("murl", murl)
+        .params(&[p("murl_c", 0.0), p_int("murl_power", 1.0, NEG_INF, INF)])
+        .needs(need::SUMSQ | need::ATAN_YX),
     VarDef::new("henon", henon).params(&[p("henon_a", 0.5), p("henon_b", 1.0), p("henon_c", 1.0)]),
     VarDef::new("lozi", lozi).params(&[p("lozi_a", 0.5), p("lozi_b", 1.0), p("lozi_c", 1.0)]),
     VarDef::new("hypershift", hypershift)
@@ -510,4 +514,18 @@ fn dc_bubble(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let (x, y) = (sx + o[0] + cx, sy + o[1] + cy);
     acc.color = (bdcs * (x * x + y * y)).abs() % 1.0;
     o
+}
+
+/// murl: the point divided by 1 + c'·z^power (c' = c/(power − 1), c itself for power 1),
+/// scaled by weight·(c' + 1).
+fn murl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [c, power] = v.params();
+    let cp = if power != 1.0 { c / (power - 1.0) } else { c };
+    let vp = v.w * (cp + 1.0);
+    let a = t.atan_yx * power;
+    let r = cp * t.sumsq.powf(power / 2.0);
+    let re = r * a.cos() + 1.0;
+    let im = r * a.sin();
+    let rl = vp / (re * re + im * im);
+    [rl * (t.x * re + t.y * im), rl * (t.y * re - t.x * im), 0.0]
 }
