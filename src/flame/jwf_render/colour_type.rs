@@ -22,7 +22,7 @@ impl DistanceColour {
     /// The distance colouring of `x`, if its file names the colour type DISTANCE.
     pub fn of(x: &Xform) -> Option<DistanceColour> {
         let kind = x.extra_attrs.iter().find(|(k, _)| k == "color_type")?;
-        (kind.1.trim() == "DISTANCE").then(|| DistanceColour {
+        (kind.1.trim() == "DISTANCE").then_some(DistanceColour {
             color: x.color,
             mult: 2.0 - 2.0 * x.color_speed,
         })

@@ -12,7 +12,7 @@
 use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
 
 use super::util::zeps;
-use super::{Acc, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, flag, need, p, p_range};
+use super::{Acc, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, ZRule, flag, need, p, p_range};
 #[cfg(target_arch = "x86_64")]
 use crate::flame::fastmath::Simd;
 use crate::flame::rng::FastRng;
@@ -597,6 +597,10 @@ fn batch_span<const ID: u16, F: SpanFormula<ID>>(
     let (ux, uy) = (&s.ux[r.clone()], &s.uy[r.clone()]);
     let (atan_xy, atan_yx) = (&s.atan_xy[r.clone()], &s.atan_yx[r.clone()]);
     let (z, az) = (&s.z[r.clone()], &mut acc.z[r]);
+    // The formula's own z, or the framework's where the flame's program gives the variation
+    // none (JWildfire's 2-D twins: 0, or the weighted z with "preserve Z").
+    let own_z = writes_z(ID) && v.def.flags & flag::WRITES_Z != 0;
+    let weighted_z = !own_z && v.zrule == ZRule::Weighted;
     for i in 0..m {
         let t = VarIn {
             x: x[i],
@@ -613,8 +617,10 @@ fn batch_span<const ID: u16, F: SpanFormula<ID>>(
         let (dx, dy) = f.at(i, &t);
         ax[i] += dx;
         ay[i] += dy;
-        if writes_z(ID) {
+        if own_z {
             az[i] += z_out(ID, v, &t);
+        } else if weighted_z {
+            az[i] += v.w * t.z;
         }
     }
 }
