@@ -79,6 +79,15 @@ fn own_colour_batch(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rgb: &mut [u32], 
     }
 }
 
+/// Whether every form of `forms` has a batch loop ([`variations::FormBatchFn`]: formulas
+/// that touch nothing but the point). They then run one after the other over the whole group
+/// instead of point by point: the same points, the random numbers drawn in another order
+/// when two of the forms draw any (the same stream, so renders stay reproducible).
+#[inline(always)]
+fn batched_forms(forms: &[Prepared]) -> bool {
+    forms.iter().all(|v| v.def.form_batch.is_some())
+}
+
 // The steps of `apply_soa` take the group as slices of one length (at most `LANES`).
 impl CompiledXform {
     /// Apply to the points `x, y, z, c` (at most [`LANES`]; in place; `g.bad` flags set; a
@@ -179,8 +188,10 @@ impl CompiledXform {
         }
     }
 
-    /// The `pre_` forms, point by point: each replaces (or moves) the point; the colour they
-    /// set goes to `g.pc` (the blended colour when there are none), an own colour to `rgb`.
+    /// The `pre_` forms: each replaces (or moves) the point; the colour they set goes to
+    /// `g.pc` (the blended colour when there are none), an own colour to `rgb`. When every
+    /// form has a batch loop ([`batched_forms`]) each runs over the whole group in turn,
+    /// otherwise the forms run point by point.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn pre_forms(
@@ -194,7 +205,13 @@ impl CompiledXform {
         rng: &mut FastRng,
     ) {
         let n = x.len();
-        if self.pre_vars.is_empty() {
+        if self.pre_vars.is_empty() || batched_forms(&self.pre_vars) {
+            let (y, z) = (&mut y[..n], &mut z[..n]);
+            for v in &self.pre_vars {
+                if let Some(f) = v.def.form_batch {
+                    f(v, x, y, z, rng);
+                }
+            }
             g.pc[..n].copy_from_slice(&c[..n]);
             return;
         }
@@ -301,8 +318,8 @@ impl CompiledXform {
         }
     }
 
-    /// The `post_` forms, point by point, on the summed points in `g` (own colours into
-    /// `rgb`).
+    /// The `post_` forms on the summed points in `g` (own colours into `rgb`): each over the
+    /// whole group when all have batch loops ([`batched_forms`]), else point by point.
     #[inline(always)]
     fn post_forms(
         &self,
@@ -313,6 +330,15 @@ impl CompiledXform {
     ) {
         let n = c.len();
         if self.post_vars.is_empty() {
+            return;
+        }
+        if batched_forms(&self.post_vars) {
+            let (x, y, z) = (&mut g.px[..n], &mut g.py[..n], &mut g.pz[..n]);
+            for v in &self.post_vars {
+                if let Some(f) = v.def.form_batch {
+                    f(v, x, y, z, rng);
+                }
+            }
             return;
         }
         for (j, &cj) in c[..n].iter().enumerate() {

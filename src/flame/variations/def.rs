@@ -96,6 +96,13 @@ pub type PrepareFn = fn(v: &mut Prepared);
 /// A regular variation applied to a batch: adds its outputs to `acc`.
 pub type BatchFn = fn(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng);
 
+/// A `pre_`/`post_` form applied to a batch of points in place (`x`, `y`, `z` of one length),
+/// giving the bits [`Prepared::apply_pre`] / [`Prepared::apply_post`] give point by point with
+/// the same generator: for the variations whose formula reads and writes nothing but the
+/// point (no colour, no running sum, no hiding).
+pub type FormBatchFn =
+    fn(v: &Prepared, x: &mut [f64], y: &mut [f64], z: &mut [f64], rng: &mut FastRng);
+
 /// One registry entry.
 #[derive(Clone, Copy)]
 pub struct VarDef {
@@ -121,6 +128,8 @@ pub struct VarDef {
     /// A specialised batch version of a regular use (optional; the generic loop is used
     /// otherwise).
     pub batch: Option<BatchFn>,
+    /// A batch loop of the `pre_`/`post_` forms (optional; point by point otherwise).
+    pub form_batch: Option<FormBatchFn>,
 }
 
 impl std::fmt::Debug for VarDef {
@@ -143,6 +152,7 @@ impl VarDef {
             prepare: None,
             shared: None,
             batch: None,
+            form_batch: None,
         }
     }
     /// Set the numeric parameters.
@@ -184,6 +194,12 @@ impl VarDef {
     /// Set a specialised batch loop for the regular form.
     pub const fn batch(mut self, f: BatchFn) -> VarDef {
         self.batch = Some(f);
+        self
+    }
+
+    /// Set a batch loop for the `pre_`/`post_` forms.
+    pub const fn form_batch(mut self, f: FormBatchFn) -> VarDef {
+        self.form_batch = Some(f);
         self
     }
 

@@ -10,7 +10,7 @@ use std::f64::consts::{E, FRAC_1_PI, FRAC_2_PI, PI, TAU};
 
 use super::util::{Cplx, crand, erf, jacobi_elliptic, ln_gamma, sqr, zeps};
 use super::*;
-use crate::flame::fastmath::FastTrig;
+use crate::flame::fastmath::{self as fm, FastTrig};
 
 pub(super) static DEFS: &[VarDef] = &[
     super::inlined!("arcsech", arcsech).prepare(prep_arcsech),
@@ -262,7 +262,7 @@ fn dragonfire_prepare(v: &mut Prepared) {
         } else if mode < 4.0 {
             a.tan()
         } else if mode < 5.0 {
-            a.sinh()
+            fm::sinh(a)
         } else {
             a.asinh()
         };

@@ -10,7 +10,7 @@ use std::f64::consts::{FRAC_2_PI, PI, TAU};
 
 use super::util::{floor_f, floor_i64, rand_size, trunc_i32, wang_hash, zeps};
 use super::*;
-use crate::flame::fastmath::FastTrig;
+use crate::flame::fastmath::{self as fm, FastTrig};
 
 pub(super) static DEFS: &[VarDef] = &[
     super::inlined!("concentric", concentric)
@@ -141,8 +141,12 @@ fn concentric(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 fn coth_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
-    let den = zeps((a * s).fcos() - s.cosh());
-    [v.w * (-s.sinh() / den), v.w * ((a * s).fsin() / den), 0.0]
+    let den = zeps((a * s).fcos() - fm::cosh(s));
+    [
+        v.w * (-fm::sinh(s) / den),
+        v.w * ((a * s).fsin() / den),
+        0.0,
+    ]
 }
 
 fn prep_line(v: &mut Prepared) {
@@ -294,8 +298,8 @@ fn super_shape3d_prep(v: &mut Prepared) {
 fn tanh_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
-    let den = zeps((a * s).fcos() + s.cosh());
-    [v.w * (s.sinh() / den), v.w * ((a * s).fsin() / den), 0.0]
+    let den = zeps((a * s).fcos() + fm::cosh(s));
+    [v.w * (fm::sinh(s) / den), v.w * ((a * s).fsin() / den), 0.0]
 }
 
 /// Derived values of waffle: weight·sin and weight·cos of the rotation.

@@ -10,7 +10,7 @@ use std::f64::consts::E;
 
 use super::util::{quat_mul_conj, sqr, zeps};
 use super::*;
-use crate::flame::fastmath::FastTrig;
+use crate::flame::fastmath::{self as fm, FastTrig};
 
 pub(super) static DEFS: &[VarDef] = &[
     super::inlined!("coshq", coshq).flags(flag::USES_Z | flag::WRITES_Z),
@@ -64,7 +64,7 @@ pub(super) static DEFS: &[VarDef] = &[
 fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = (t.y * t.y + t.z * t.z).sqrt();
     let (s, c) = m.fsin_cos();
-    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let (sh, ch) = (fm::sinh(t.x), fm::cosh(t.x));
     let d = v.w * sh * s / zeps(m);
     [v.w * c * ch, d * t.y, d * t.z]
 }
@@ -73,7 +73,7 @@ fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn cosq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = (t.y * t.y + t.z * t.z).sqrt();
     let (s, c) = t.x.fsin_cos();
-    let (sh, ch) = (m.sinh(), m.cosh());
+    let (sh, ch) = (fm::sinh(m), fm::cosh(m));
     let d = -v.w * s * sh / zeps(m);
     [v.w * c * ch, d * t.y, d * t.z]
 }
@@ -85,7 +85,7 @@ fn cothq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = yz2.sqrt();
     let k = v.w / zeps(sqr(t.x * t.x + yz2));
     let (s, c) = m.fsin_cos();
-    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let (sh, ch) = (fm::sinh(t.x), fm::cosh(t.x));
     let d = ch * s / zeps(m);
     let b = sh * s / zeps(m);
     quat_mul_conj(sh * c, d, ch * c, b, t.y, t.z, k)
@@ -98,7 +98,7 @@ fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = yz2.sqrt();
     let k = v.w / zeps(t.x * t.x + yz2);
     let (s, c) = t.x.fsin_cos();
-    let (sh, ch) = (m.sinh(), m.cosh());
+    let (sh, ch) = (fm::sinh(m), fm::cosh(m));
     let d = c * sh / zeps(m);
     let b = -s * sh / zeps(m);
     let [x, y, z] = quat_mul_conj(s * ch, d, c * ch, b, t.y, t.z, k);
@@ -110,7 +110,7 @@ fn cschq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
     let (s, c) = av.fsin_cos();
-    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let (sh, ch) = (fm::sinh(t.x), fm::cosh(t.x));
     let d = ni * ch * s / zeps(av);
     [sh * c * ni, -(d * t.y), -(d * t.z)]
 }
@@ -120,7 +120,7 @@ fn cscq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
     let (s, c) = t.x.fsin_cos();
-    let (sh, ch) = (av.sinh(), av.cosh());
+    let (sh, ch) = (fm::sinh(av), fm::cosh(av));
     let d = ni * c * sh / zeps(av);
     [s * ch * ni, -(d * t.y), -(d * t.z)]
 }
@@ -197,7 +197,7 @@ fn sechq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
     let (s, c) = a.fsin_cos();
-    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let (sh, ch) = (fm::sinh(t.x), fm::cosh(t.x));
     let d = ni * sh * s / zeps(a);
     [ch * c * ni, -(d * t.y), -(d * t.z)]
 }
@@ -207,7 +207,7 @@ fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
     let (s, c) = (-t.x).fsin_cos();
-    let (sh, ch) = (a.sinh(), a.cosh());
+    let (sh, ch) = (fm::sinh(a), fm::cosh(a));
     let d = ni * s * sh / zeps(a);
     [c * ch * ni, -(d * t.y), -(d * t.z)]
 }
@@ -216,7 +216,7 @@ fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let (s, c) = a.fsin_cos();
-    let (sh, ch) = (t.x.sinh(), t.x.cosh());
+    let (sh, ch) = (fm::sinh(t.x), fm::cosh(t.x));
     let d = v.w * ch * s / zeps(a);
     [v.w * sh * c, d * t.y, d * t.z]
 }
@@ -225,7 +225,7 @@ fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 fn sinq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let (s, c) = t.x.fsin_cos();
-    let (sh, ch) = (a.sinh(), a.cosh());
+    let (sh, ch) = (fm::sinh(a), fm::cosh(a));
     let d = v.w * c * sh / zeps(a);
     [v.w * s * ch, d * t.y, d * t.z]
 }
@@ -237,8 +237,8 @@ fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz_len = yz_sq.sqrt();
     let k = v.w / zeps(sqr(x) + yz_sq);
     let (s, c) = yz_len.fsin_cos();
-    let sh = x.sinh();
-    let ch = x.cosh();
+    let sh = fm::sinh(x);
+    let ch = fm::cosh(x);
     let d = ch * s / zeps(yz_len);
     let b = sh * s / zeps(yz_len);
     quat_mul_conj(sh * c, d, c * ch, b, y, z, k)
@@ -251,8 +251,8 @@ fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz_len = yz_sq.sqrt();
     let k = v.w / zeps(sqr(x) + yz_sq);
     let (s, c) = x.fsin_cos();
-    let sh = yz_len.sinh();
-    let ch = yz_len.cosh();
+    let sh = fm::sinh(yz_len);
+    let ch = fm::cosh(yz_len);
     let d = c * sh / zeps(yz_len);
     let b = -s * sh / zeps(yz_len);
     quat_mul_conj(s * ch, d, c * ch, b, y, z, k)

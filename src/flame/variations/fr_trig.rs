@@ -10,7 +10,7 @@ use std::f64::consts::{FRAC_2_PI, PI, TAU};
 
 use super::util::zeps;
 use super::*;
-use crate::flame::fastmath::FastTrig;
+use crate::flame::fastmath::{self as fm, FastTrig};
 
 pub(super) static DEFS: &[VarDef] = &[
     super::inlined!("bisplit", bisplit),
@@ -48,7 +48,7 @@ fn bisplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Crescents: (sin x, cos x) scaled by sin²x·(cosh y + 1).
 fn crescents(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (s, c) = t.x.fsin_cos();
-    let k = (t.y.cosh() + 1.0) * (s * s);
+    let k = (fm::cosh(t.y) + 1.0) * (s * s);
     [v.w * s * k, v.w * c * k, 0.0]
 }
 
@@ -70,7 +70,7 @@ fn mask(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let d = v.w / zeps(t.sumsq);
     let (sx, cx) = (t.x.fsin(), t.x.fcos());
     let sx2 = sx * sx;
-    let ch = t.y.cosh() + 1.0;
+    let ch = fm::cosh(t.y) + 1.0;
     [d * sx * ch * sx2, d * cx * ch * sx2, 0.0]
 }
 

@@ -196,8 +196,8 @@ pub use batch::time_batches;
 pub(crate) use batch::{batch_with, generic_batch};
 pub(crate) use batch::{inline_batch, inlined};
 pub use def::{
-    Assign, BatchFn, Dialect, EvalFn, Form, PrepareFn, Prepared, Rules, VarDef, VarState, ZRule,
-    flag,
+    Assign, BatchFn, Dialect, EvalFn, Form, FormBatchFn, PrepareFn, Prepared, Rules, VarDef,
+    VarState, ZRule, flag,
 };
 pub use flam3::*;
 pub use names::{

@@ -562,6 +562,7 @@ fn twins(
             eval: eval.unwrap_or(d.eval),
             // A batch loop inlines the registry's formula.
             batch: if eval.is_some() { None } else { d.batch },
+            form_batch: if eval.is_some() { None } else { d.form_batch },
             ..*d
         }));
         out.insert(key, twin);

@@ -287,7 +287,7 @@ pub(super) fn formula(
         COSINE => {
             let a = x * PI;
             let (s, c) = sincos(a);
-            (w * c * y.cosh(), -w * s * y.sinh())
+            (w * c * fm::cosh(y), -w * s * fm::sinh(y))
         }
         RINGS => {
             let dx = zeps(aff.e * aff.e);
@@ -669,8 +669,8 @@ pub(super) fn formula(
             };
             let ww = w / 11.57034632;
             let (mut snv, csv) = sincos(a1);
-            let snhu = a2.sinh();
-            let cshu = a2.cosh();
+            let snhu = fm::sinh(a2);
+            let cshu = fm::cosh(a2);
             if y > 0.0 {
                 snv = -snv;
             }
@@ -900,7 +900,7 @@ pub(super) fn formula(
                 (x * FRAC_PI_2, y * FRAC_PI_2)
             };
             let (s, c) = sincos(x);
-            (w * s * y.cosh(), w * c * y.sinh())
+            (w * s * fm::cosh(y), w * c * fm::sinh(y))
         }
         COS => {
             let (x, y) = if compat {
@@ -909,48 +909,48 @@ pub(super) fn formula(
                 (x * FRAC_PI_2, y * FRAC_PI_2)
             };
             let (s, c) = sincos(x);
-            (w * c * y.cosh(), -(w * s * y.sinh()))
+            (w * c * fm::cosh(y), -(w * s * fm::sinh(y)))
         }
         TAN => {
             if compat {
                 let (s, c) = sincos(2.0 * x);
-                let den = 1.0 / zeps(c + (2.0 * y).cosh());
-                (w * den * s, w * den * (2.0 * y).sinh())
+                let den = 1.0 / zeps(c + fm::cosh(2.0 * y));
+                (w * den * s, w * den * fm::sinh(2.0 * y))
             } else {
                 let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
-                let den = w / zeps(fm::cos(x) + y.cosh());
-                (fm::sin(x) * den, y.sinh() * den)
+                let den = w / zeps(fm::cos(x) + fm::cosh(y));
+                (fm::sin(x) * den, fm::sinh(y) * den)
             }
         }
         SEC => {
             let (x, y) = if compat { (x, y) } else { (x * PI, y * PI) };
             let (s, c) = sincos(x);
-            let den = w * (2.0 / zeps(fm::cos(2.0 * x) + (2.0 * y).cosh()));
-            (den * c * y.cosh(), den * s * y.sinh())
+            let den = w * (2.0 / zeps(fm::cos(2.0 * x) + fm::cosh(2.0 * y)));
+            (den * c * fm::cosh(y), den * s * fm::sinh(y))
         }
         CSC => {
             if compat {
                 let (s, c) = sincos(x);
-                let den = 2.0 / zeps((2.0 * y).cosh() - fm::cos(2.0 * x));
-                (w * den * s * y.cosh(), -(w * den * c * y.sinh()))
+                let den = 2.0 / zeps(fm::cosh(2.0 * y) - fm::cos(2.0 * x));
+                (w * den * s * fm::cosh(y), -(w * den * c * fm::sinh(y)))
             } else {
                 let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
                 let (s, c) = sincos(x);
-                let sh = y.sinh();
+                let sh = fm::sinh(y);
                 let den = 2.0 * w / (1.0 + 2.0 * sh * sh - fm::cos(2.0 * x));
-                (den * s * y.cosh(), den * c * sh)
+                (den * s * fm::cosh(y), den * c * sh)
             }
         }
         COT => {
             if compat {
                 let (s, c) = sincos(2.0 * x);
-                let den = 1.0 / zeps((2.0 * y).cosh() - c);
-                (w * den * s, w * den * -(2.0 * y).sinh())
+                let den = 1.0 / zeps(fm::cosh(2.0 * y) - c);
+                (w * den * s, w * den * -fm::sinh(2.0 * y))
             } else {
                 let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
                 let (s, c) = sincos(x);
-                let den = w / zeps(y.cosh() - c);
-                (den * s, den * y.sinh())
+                let den = w / zeps(fm::cosh(y) - c);
+                (den * s, den * fm::sinh(y))
             }
         }
         SINH => {
@@ -960,7 +960,7 @@ pub(super) fn formula(
                 (x * FRAC_PI_4, y * FRAC_PI_4)
             };
             let (s, c) = sincos(y);
-            (w * x.sinh() * c, w * x.cosh() * s)
+            (w * fm::sinh(x) * c, w * fm::cosh(x) * s)
         }
         COSH => {
             let (x, y) = if compat {
@@ -969,54 +969,54 @@ pub(super) fn formula(
                 (x * FRAC_PI_2, y * FRAC_PI_2)
             };
             let (s, c) = sincos(y);
-            (w * x.cosh() * c, w * x.sinh() * s)
+            (w * fm::cosh(x) * c, w * fm::sinh(x) * s)
         }
         TANH => {
             if compat {
                 let (s, c) = sincos(2.0 * y);
-                let den = 1.0 / zeps(c + (2.0 * x).cosh());
-                (w * den * (2.0 * x).sinh(), w * den * s)
+                let den = 1.0 / zeps(c + fm::cosh(2.0 * x));
+                (w * den * fm::sinh(2.0 * x), w * den * s)
             } else {
                 let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
                 let (s, c) = sincos(y);
-                let den = w / zeps(c + x.cosh());
-                (den * x.sinh(), den * s)
+                let den = w / zeps(c + fm::cosh(x));
+                (den * fm::sinh(x), den * s)
             }
         }
         SECH => {
             if compat {
                 let (s, c) = sincos(y);
-                let den = 2.0 / zeps(fm::cos(2.0 * y) + (2.0 * x).cosh());
-                (w * den * c * x.cosh(), -(w * den * s * x.sinh()))
+                let den = 2.0 / zeps(fm::cos(2.0 * y) + fm::cosh(2.0 * x));
+                (w * den * c * fm::cosh(x), -(w * den * s * fm::sinh(x)))
             } else {
                 let (x, y) = (x * FRAC_PI_4, y * FRAC_PI_4);
                 let (s, c) = sincos(y);
-                let den = w * (2.0 / zeps(fm::cos(y * 2.0) + (x * 2.0).cosh()));
-                (den * c * x.cosh(), den * s * x.sinh())
+                let den = w * (2.0 / zeps(fm::cos(y * 2.0) + fm::cosh(x * 2.0)));
+                (den * c * fm::cosh(x), den * s * fm::sinh(x))
             }
         }
         CSCH => {
             if compat {
                 let (s, c) = sincos(y);
-                let den = 2.0 / zeps((2.0 * x).cosh() - fm::cos(2.0 * y));
-                (w * den * x.sinh() * c, -(w * den * x.cosh() * s))
+                let den = 2.0 / zeps(fm::cosh(2.0 * x) - fm::cos(2.0 * y));
+                (w * den * fm::sinh(x) * c, -(w * den * fm::cosh(x) * s))
             } else {
                 let (x, y) = (x * FRAC_PI_4, y * FRAC_PI_4);
                 let (s, c) = sincos(y);
-                let den = w * (2.0 / zeps((2.0 * x).cosh() - fm::cos(2.0 * y)));
-                (den * x.sinh() * c, den * x.cosh() * s)
+                let den = w * (2.0 / zeps(fm::cosh(2.0 * x) - fm::cos(2.0 * y)));
+                (den * fm::sinh(x) * c, den * fm::cosh(x) * s)
             }
         }
         COTH => {
             if compat {
                 let (s, c) = sincos(2.0 * y);
-                let den = 1.0 / zeps((2.0 * x).cosh() - c);
-                (w * den * (2.0 * x).sinh(), w * den * s)
+                let den = 1.0 / zeps(fm::cosh(2.0 * x) - c);
+                (w * den * fm::sinh(2.0 * x), w * den * s)
             } else {
                 let (x, y) = (x * FRAC_PI_2, y * FRAC_PI_2);
                 let (s, c) = sincos(y);
-                let den = w / zeps(x.cosh() - c);
-                (den * x.sinh(), den * s)
+                let den = w / zeps(fm::cosh(x) - c);
+                (den * fm::sinh(x), den * s)
             }
         }
         AUGER => {

@@ -7,7 +7,8 @@
 //! `loonie`, `lazysusan`, `scry`, `flux`).
 //!
 //! By file: `ids` (the variations' ids, in flam3's order), `formulas` (one match arm per
-//! variation) and this one (the registry table, derived values, z and the batch loops).
+//! variation), `forms` (the batch loops of the `pre_`/`post_` forms) and this one (the
+//! registry table, derived values, z and the batch loops).
 
 use std::f64::consts::{FRAC_1_SQRT_2, FRAC_PI_2, PI};
 
@@ -18,6 +19,7 @@ use crate::flame::fastmath::Simd;
 use crate::flame::rng::FastRng;
 use formulas::{Drawn, MAX_DRAWS, draws, formula, z_out};
 
+mod forms;
 mod formulas;
 mod fresh;
 mod ids;
@@ -40,6 +42,7 @@ const fn classic<const ID: u16>(name: &'static str, needs: u8, extra: u32) -> Va
         .flags(zf(ID) | flag::FLAM3 | extra)
         .prepare(prepare)
         .batch(batch::<ID>)
+        .form_batch(forms::form_batch::<ID>)
 }
 
 pub(super) static DEFS: &[VarDef] = &[

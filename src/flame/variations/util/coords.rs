@@ -2,6 +2,7 @@
 //! of the square-to-circle maps, and the quaternion quotient of the quaternion trigonometric
 //! variations.
 
+use crate::flame::fastmath as fm;
 use std::f64::consts::PI;
 
 use super::arith::{safe_sqrt, zeps};
@@ -20,8 +21,8 @@ pub fn bipolar(x: f64, y: f64) -> (f64, f64) {
 /// w·(sinh τ, sin σ) / (cosh τ − cos σ), the denominator guarded against 0.
 #[inline(always)]
 pub fn from_bipolar(w: f64, tau: f64, sigma: f64) -> (f64, f64) {
-    let den = zeps(tau.cosh() - sigma.cos());
-    (w * tau.sinh() / den, w * sigma.sin() / den)
+    let den = zeps(fm::cosh(tau) - sigma.cos());
+    (w * fm::sinh(tau) / den, w * sigma.sin() / den)
 }
 
 /// Elliptic coordinates of (x, y) with foci (±1, 0), from x and x² + y²: returns (ξ, ν) where
@@ -44,7 +45,7 @@ pub fn elliptic(x: f64, sumsq: f64, floor_one: bool) -> (f64, f64) {
 #[inline(always)]
 pub fn from_elliptic(w: f64, mu: f64, nu: f64) -> [f64; 3] {
     let (s, c) = nu.sin_cos();
-    [w * mu.cosh() * c, w * mu.sinh() * s, 0.0]
+    [w * fm::cosh(mu) * c, w * fm::sinh(mu) * s, 0.0]
 }
 
 /// Where (x, y) lies on the boundary of its square ring: returns (s, p) with s = max(|x|, |y|)
