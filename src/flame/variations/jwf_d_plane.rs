@@ -92,7 +92,7 @@ fn de_stijl(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 /// JWildfire's `random(n)`: ⌊u·n⌋ for a uniform u, at most n − 1.
 fn index_below(rng: &mut FastRng, n: i32) -> i32 {
     let k = (rng.f01() * n as f64) as i32;
-    if k < n { k } else { n - 1 }
+    if k < n { k } else { n.wrapping_sub(1) }
 }
 
 /// The fixed offset of a grid node along one axis: (½ − the first number of JWildfire's

@@ -76,7 +76,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("mobiqN_power", 2.0),
             p("mobiqN_dist", 1.0),
             p_int("mobiqN_colorMode", 0.0, NEG_INF, INF),
-            p_int("mobiqN_iterations", 1.0, NEG_INF, 10_000.0).limited(),
+            p_int("mobiqN_iterations", 1.0, NEG_INF, 1000.0).limited(),
             p_int("mobiqN_spaceType", 0.0, NEG_INF, INF),
         ])
         .flags(DRAWN_3D | flag::USES_Z),
@@ -544,7 +544,7 @@ fn ftoi(x: f64) -> i64 {
 /// JWildfire's bounded draw `random(n)`: ⌊u·n⌋, or n − 1 where that is not below n.
 pub(super) fn draw_below(rng: &mut FastRng, n: i64) -> i64 {
     let k = (rng.f01() * n as f64) as i64;
-    if k < n { k } else { n - 1 }
+    if k < n { k } else { n.wrapping_sub(1) }
 }
 
 /// juliascope3Db: juliascope in space (Brad Stefanov's form): a random root of the angle,
@@ -564,7 +564,7 @@ fn juliascope3db(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
         wave1,
         wave2,
     ] = v.params();
-    let abs_power = ftoi(power).abs();
+    let abs_power = ftoi(power).wrapping_abs();
     let c_power = dist / power * 0.5;
     let z = t.z / abs_power as f64 + warp;
     let r2d = t.x * t.x * za + t.y * t.y * zb;
@@ -625,11 +625,11 @@ fn checkerboard_wf(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) ->
         if max_checks > 0 && rng.f01() < side_prob {
             acc.color = side_color;
             let (x, y) = if rng.f01() < 0.5 {
-                let x = draw_below(rng, max_checks + 1) as f64 * cs;
+                let x = draw_below(rng, max_checks.wrapping_add(1)) as f64 * cs;
                 (x, rng.f01())
             } else {
                 let x = rng.f01();
-                (x, draw_below(rng, max_checks + 1) as f64 * cs)
+                (x, draw_below(rng, max_checks.wrapping_add(1)) as f64 * cs)
             };
             (x, y, displ * rng.f01())
         } else {

@@ -90,7 +90,13 @@ fn value_noise(x: f64, y: f64, z: f64) -> f64 {
     let (ix, iy, iz) = (x.floor() as i32, y.floor() as i32, z.floor() as i32);
     let s = |f: f64| f * f * (3.0 - 2.0 * f);
     let (u, v, w) = (s(x - ix as f64), s(y - iy as f64), s(z - iz as f64));
-    let n = |dx: i32, dy: i32, dz: i32| lattice(ix + dx, iy + dy, iz + dz);
+    let n = |dx: i32, dy: i32, dz: i32| {
+        lattice(
+            ix.wrapping_add(dx),
+            iy.wrapping_add(dy),
+            iz.wrapping_add(dz),
+        )
+    };
     let x00 = lerp(n(0, 0, 0), n(1, 0, 0), u);
     let x10 = lerp(n(0, 1, 0), n(1, 1, 0), u);
     let x01 = lerp(n(0, 0, 1), n(1, 0, 1), u);
@@ -106,7 +112,11 @@ fn cellular_noise(x: f64, y: f64, z: f64) -> f64 {
     for dz in -1..=1 {
         for dy in -1..=1 {
             for dx in -1..=1 {
-                let (cx, cy, cz) = (ix + dx, iy + dy, iz + dz);
+                let (cx, cy, cz) = (
+                    ix.wrapping_add(dx),
+                    iy.wrapping_add(dy),
+                    iz.wrapping_add(dz),
+                );
                 let px = cx as f64 + 0.5 * (1.0 + lattice(cx, cy, cz));
                 let py = cy as f64 + 0.5 * (1.0 + lattice(cy, cz, cx));
                 let pz = cz as f64 + 0.5 * (1.0 + lattice(cz, cx, cy));

@@ -30,7 +30,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("mobius_dragon_3D_line_color_shift", 0.1),
             p_int("mobius_dragon_3D_mag_color", 1.0, NEG_INF, INF),
             p("mobius_dragon_3D_mag_color_scale", 0.5),
-            p_int("mobius_dragon_3D_iterations", 1.0, 0.0, 10_000.0).limited(),
+            p_int("mobius_dragon_3D_iterations", 1.0, 0.0, 1000.0).limited(),
         ])
         .flags(DRAWN_3D | flag::USES_Z | flag::WRITES_ACC),
     VarDef::new("polySurf", poly_surf)

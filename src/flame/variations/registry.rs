@@ -151,7 +151,7 @@ const FILES: [&[VarDef]; 65] = [
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
 /// variation missing here comes after these, in the order of [`FILES`].
-const JWILDFIRE_ORDER: [&str; 131] = [
+const JWILDFIRE_ORDER: [&str; 164] = [
     "rose_wf",
     "chrysanthemum",
     "complex",
@@ -284,6 +284,39 @@ const JWILDFIRE_ORDER: [&str; 131] = [
     "glynnia3",
     "vortex",
     "oak_leaf",
+    "jac_elk",
+    "jac_asn",
+    "glynnspiro",
+    "juliascopePlus",
+    "mobiqN",
+    "mobius3D_with_inverse",
+    "hypertile3Db",
+    "juliascope3Db",
+    "checkerboard_wf",
+    "shape_warp",
+    "drunken_tiles",
+    "bwrands",
+    "glitchy2",
+    "flora",
+    "camouflage",
+    "truchetflow",
+    "kaplan",
+    "htree_js",
+    "koch_js",
+    "dragon_js",
+    "gosperisland_js",
+    "brownian_js",
+    "mobius_dragon_3D",
+    "polySurf",
+    "primitives_wf",
+    "glynnSim2B",
+    "gumowski_mira",
+    "starfractal",
+    "iconattractor_js",
+    "sphtiling3v2",
+    "harmonograph_js",
+    "tqmirror",
+    "rhodonea",
 ];
 
 /// The JWildfire variations added with the first set of files, in the order ugnis took them in
