@@ -20,6 +20,7 @@ pub mod fx;
 mod guess;
 mod job;
 mod lanes;
+mod newton;
 mod params;
 pub(crate) mod render;
 mod view;

@@ -151,6 +151,16 @@ fn loq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// mobiq: a quaternion Möbius map (A·q + B)(C·q + D)⁻¹ of q = x + y·i + z·j, each coefficient a
 /// quaternion (t, x, y, z).
 fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+    let (n, d2) = mobius_quotient(&v.params(), [t.x, t.y, t.z]);
+    let inv = v.w / d2;
+    [n[0] * inv, n[1] * inv, n[2] * inv]
+}
+
+/// The quaternion Möbius map (A·q + B)(C·q + D)⁻¹ of q = (p₀, p₁, p₂, 0), coefficients
+/// A, B, C, D as (t, x, y, z) in `q`, before the division: (A·q + B)·conj(C·q + D) and
+/// |C·q + D|².
+#[inline(always)]
+pub(super) fn mobius_quotient(q: &[f64; 16], p: [f64; 3]) -> ([f64; 4], f64) {
     let [
         at,
         ax,
@@ -168,8 +178,8 @@ fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
         dx,
         dy,
         dz,
-    ] = v.params();
-    let (p0, p1, p2) = (t.x, t.y, t.z);
+    ] = *q;
+    let [p0, p1, p2] = p;
     let nt = at * p0 - ax * p1 - ay * p2 + bt;
     let nx = at * p1 + ax * p0 - az * p2 + bx;
     let ny = at * p2 + ay * p0 + az * p1 + by;
@@ -178,12 +188,15 @@ fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let ex = ct * p1 + cx * p0 - cz * p2 + dx;
     let ey = ct * p2 + cy * p0 + cz * p1 + dy;
     let ez = cz * p0 + cx * p2 - cy * p1 + dz;
-    let inv = v.w / (et * et + ex * ex + ey * ey + ez * ez);
-    [
-        (nt * et + nx * ex + ny * ey + nz * ez) * inv,
-        (nx * et - nt * ex - ny * ez + nz * ey) * inv,
-        (ny * et - nt * ey - nz * ex + nx * ez) * inv,
-    ]
+    (
+        [
+            nt * et + nx * ex + ny * ey + nz * ez,
+            nx * et - nt * ex - ny * ez + nz * ey,
+            ny * et - nt * ey - nz * ex + nx * ez,
+            nz * et - nx * ey + ny * ex - nt * ez,
+        ],
+        et * et + ex * ex + ey * ey + ez * ez,
+    )
 }
 
 /// |(y, z)|, the length of the "imaginary" part of the quaternion (x, y, z).

@@ -10,6 +10,7 @@
 
 use std::f64::consts::{PI, TAU};
 
+use super::fr_quaternions::mobius_quotient;
 use super::*;
 
 pub(super) const DRAWN_3D: u32 = flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR;
@@ -325,45 +326,12 @@ fn from_spherical(rho: f64, theta: f64, phi: f64) -> [f64; 3] {
 /// One step of the quaternion Möbius map (a·q + b)/(c·q + d) on q = (x, y, z, 0) read as
 /// (t, x, y): the new (t, x, y, z) and |c·q + d|².
 fn mobiq_step(q: &[f64; 16], p: [f64; 3]) -> ([f64; 4], f64) {
-    let [
-        at,
-        ax,
-        ay,
-        az,
-        bt,
-        bx,
-        by,
-        bz,
-        ct,
-        cx,
-        cy,
-        cz,
-        dt,
-        dx,
-        dy,
-        dz,
-    ] = *q;
-    let [t2, x2, y2] = p;
-    let nt = at * t2 - ax * x2 - ay * y2 + bt;
-    let nx = at * x2 + ax * t2 - az * y2 + bx;
-    let ny = at * y2 + ay * t2 + az * x2 + by;
-    let nz = az * t2 + ax * y2 - ay * x2 + bz;
-    let et = ct * t2 - cx * x2 - cy * y2 + dt;
-    let ex = ct * x2 + cx * t2 - cz * y2 + dx;
-    let ey = ct * y2 + cy * t2 + cz * x2 + dy;
-    let ez = cz * t2 + cx * y2 - cy * x2 + dz;
-    let d2 = et * et + ex * ex + ey * ey + ez * ez;
+    let (n, d2) = mobius_quotient(q, p);
     if d2 == 0.0 {
         return ([0.0; 4], d2);
     }
     let inv = 1.0 / d2;
-    let r = [
-        (nt * et + nx * ex + ny * ey + nz * ez) * inv,
-        (nx * et - nt * ex - ny * ez + nz * ey) * inv,
-        (ny * et - nt * ey - nz * ex + nx * ez) * inv,
-        (nz * et - nx * ey + ny * ex - nt * ez) * inv,
-    ];
-    (r, d2)
+    (n.map(|c| c * inv), d2)
 }
 
 /// mobiqN: the quaternion Möbius map between an n-th power and a random n-th root in
