@@ -1,10 +1,13 @@
 //! Unit tests of flam3's in-betweens on hand-made flames (the comparisons with flam3's own
 //! output are in tests/animation.rs).
 
+use std::f64::consts::PI;
+
 use super::*;
 use crate::flame::loops::{loop_frame, rotate, sequence};
 use crate::flame::model::Motion;
 use crate::flame::sequence::MotionFunction;
+use crate::flame::sequence::PaletteInterpolation;
 
 fn flame_at(time: f64, xforms: Vec<Xform>) -> Flame {
     let mut f = Flame {
