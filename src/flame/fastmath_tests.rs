@@ -380,25 +380,48 @@ fn tan_atan_and_sin_cos_hold_over_a_million_inputs() {
     }
 }
 
-/// `sin_cos_any` is `sin_cos` where that is accurate and the standard library's beyond, so
-/// huge arguments (a variation parameter of 10¹⁸ times an angle) keep meaningful values.
+/// `sin_cos_any` is `sin_cos` where that is accurate and within 3 ulp of the standard
+/// library's beyond (its own reduction by π/2), so huge arguments (a variation parameter of
+/// 10¹⁸ times an angle) keep meaningful values: every exponent from 2²⁰ to the largest finite
+/// doubles, random mantissas and signs, and the arguments closest to multiples of π/2.
 #[test]
 fn sin_cos_any_holds_for_every_magnitude() {
     let mut rng = FastRng::new(3);
-    for i in 0..100_000 {
-        let mag = [1.0, 1e5, 1e6, 2e6, 1e12, 1e18, 1e300][i % 7];
-        let x = rng.f11() * mag;
+    let mut worst = 0f64;
+    for i in 0..400_000 {
+        let x = if i % 2 == 0 {
+            let mag = [1.0, 1e5, 1e6, 2e6, 1e12, 1e18, 1e300][i / 2 % 7];
+            rng.f11() * mag
+        } else {
+            // A uniform exponent of 2^20 … 2^1023, random mantissa and sign.
+            let e = 1043 + (rng.f01() * 981.0) as u64;
+            let m = (rng.f01() * 4_503_599_627_370_496.0) as u64;
+            f64::from_bits((e << 52) | m | if rng.f01() < 0.5 { 1 << 63 } else { 0 })
+        };
         let (s, c) = sin_cos_any(x);
         if x.abs() < 1_048_576.0 {
-            assert_eq!((s, c), sin_cos(x), "{x}");
-        } else {
-            assert_eq!((s, c), x.sin_cos(), "{x}");
+            assert_eq!((s.to_bits(), c.to_bits()), (sin(x).to_bits(), cos(x).to_bits()));
+            continue;
         }
-        assert!(
-            (s - x.sin()).abs() < 1e-9 && (c - x.cos()).abs() < 1e-9,
-            "{x}"
-        );
+        let (ws, wc) = x.sin_cos();
+        // Relative to the value, or 2⁻⁷⁰ absolute next to a zero.
+        for (got, want) in [(s, ws), (c, wc)] {
+            let err = (got - want).abs() / (want.abs() * f64::EPSILON);
+            assert!(err <= 3.0 || (got - want).abs() < 1e-21, "{x:e}: {got} vs {want}");
+            worst = worst.max(err);
+        }
     }
+    // The double nearest a multiple of π/2 (Kahan and McDonald's worst case: sin is about
+    // 4.7·10⁻¹⁹) and its neighbours: the residue is exact to about 2⁻⁷⁵ absolute.
+    let x = 6_381_956_970_095_103.0 * 2f64.powi(797);
+    for d in -2i64..=2 {
+        let x = f64::from_bits((x.to_bits() as i64 + d) as u64);
+        let (s, c) = sin_cos_any(x);
+        assert!((s - x.sin()).abs() < 1e-21, "{x:e}: {s:e} vs {:e}", x.sin());
+        assert!((c - x.cos()).abs() <= 3.0 * f64::EPSILON, "{x:e}");
+    }
+    assert!(worst <= 3.0, "{worst}");
     assert!(sin_cos_any(f64::NAN).0.is_nan());
     assert!(sin_cos_any(f64::INFINITY).1.is_nan());
+    assert!(sin_cos_any(f64::NEG_INFINITY).0.is_nan());
 }
