@@ -482,7 +482,7 @@ fn crackle_site(i: i32, j: i32, z: f64, s: f64, distort: f64) -> [f64; 2] {
 }
 
 /// Derived values: half cell size, then the sites of the cells within the cache.
-fn prep_crackle(v: &mut Prepared) {
+pub(super) fn prep_crackle(v: &mut Prepared) {
     let [cell, _, distort, _, z] = v.params();
     let half = zeps(cell.abs() / 2.0);
     v.p.push(half);
@@ -524,6 +524,12 @@ fn crackle_block(v: &Prepared, ci: i32, cj: i32) -> [[f64; 2]; 9] {
 /// its distance to the cell's edge (in the Voronoi ratio) raised to `power` and scaled; the
 /// input point is not used.
 fn crackle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let (x, y, _) = crackle_cell(v, rng);
+    [v.w * x, v.w * y, 0.0]
+}
+
+/// The crackle map before the weight, with the Voronoi ratio it used.
+pub(super) fn crackle_cell(v: &Prepared, rng: &mut FastRng) -> (f64, f64, f64) {
     let [_, power, _, scale] = v.params();
     let [half] = v.derived();
     let blur = (rng.f01() + rng.f01()) / 2.0 + (rng.f01() - 0.5) / 4.0;
@@ -562,11 +568,11 @@ fn crackle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     }
     let target = zeps(l).abs().powf(power) * scale;
     let r = target / zeps(l);
-    [
-        v.w * ((u[0] - centre[0]) * r + centre[0]),
-        v.w * ((u[1] - centre[1]) * r + centre[1]),
-        0.0,
-    ]
+    (
+        (u[0] - centre[0]) * r + centre[0],
+        (u[1] - centre[1]) * r + centre[1],
+        l,
+    )
 }
 
 /// A random point on a segment from the jittered site of the input's unit cell to the site of

@@ -248,7 +248,7 @@ fn hexaplay3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     ]
 }
 
-fn hexes_prepare(v: &mut Prepared) {
+pub(super) fn hexes_prepare(v: &mut Prepared) {
     let [_, _, rotate] = v.params();
     let (s, c) = (rotate * TAU).fsin_cos();
     v.p.extend_from_slice(&[s, c]);
@@ -295,6 +295,15 @@ fn cell_ratio(pts: &[(f64, f64)], centre: usize, u: (f64, f64)) -> f64 {
 /// Hexagonal cells: each point is rotated about the centre of its hexagon and its distance
 /// to the centre remapped by a power law, smoothly blended near the cell edges.
 fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    match hexes_cell(v, t) {
+        Some((x, y, _)) => [v.w * x, v.w * y, 0.0],
+        None => [0.0, 0.0, 0.0],
+    }
+}
+
+/// The hexes map of the input before the weight, with the cell ratio it used (the larger
+/// of the point's and its turned image's); `None` for a cell size of 0.
+pub(super) fn hexes_cell(v: &Prepared, t: &VarIn) -> Option<(f64, f64, f64)> {
     let [s, power, _, scale] = v.params();
     let [rs, rc] = v.derived();
     const HX_X: f64 = 1.0 / 3.0;
@@ -306,7 +315,7 @@ fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     const OY_H: f64 = SQRT3 / 2.0;
     const OY_K: f64 = SQRT3 / 2.0;
     if s == 0.0 {
-        return [0.0, 0.0, 0.0];
+        return None;
     }
     let u = (t.x, t.y);
     let mut h = floor_f((HX_X * u.0 + HX_Y * u.1) / s);
@@ -345,7 +354,7 @@ fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     } else {
         ((target / l1) * (0.8 - l) + (target / l2) * (l - 0.5)) / 0.3
     };
-    [v.w * (rx * f + ox), v.w * (ry * f + oy), 0.0]
+    Some((rx * f + ox, ry * f + oy, l))
 }
 
 fn hexnix3d_prepare(v: &mut Prepared) {

@@ -104,7 +104,7 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 /// (x, y)·R(a) for GLSL's row-vector product with the rotation matrix mat2(c, s, −s, c).
-fn rot(x: f64, y: f64, a: f64) -> (f64, f64) {
+pub(super) fn rot(x: f64, y: f64, a: f64) -> (f64, f64) {
     let (s, c) = a.sin_cos();
     (c * x + s * y, -s * x + c * y)
 }

@@ -241,7 +241,14 @@ fn glsl_hoshi(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 /// glsl_hoshi's colour at (px, py) of [-1, 1]².
-fn hoshi_rgb(px: f64, py: f64, time: f64, steps: f64, scale: f64, translate: f64) -> [f64; 3] {
+pub(super) fn hoshi_rgb(
+    px: f64,
+    py: f64,
+    time: f64,
+    steps: f64,
+    scale: f64,
+    translate: f64,
+) -> [f64; 3] {
     let (mut px, mut py) = (px * 0.182, py * 0.182);
     let x = py;
     px = (gmod(px, 4.0) - 2.0).abs();

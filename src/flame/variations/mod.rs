@@ -84,6 +84,15 @@
 //! | `jwf_d_cuts` | more cuts along shader patterns (`cut_spiral`, `cut_wood`, `cut_metaballs`, `cut_truchet`, …) |
 //! | `jwf_d_cvar` | a complex function with JWildfire's default code (`c_var`, `pre_c_var`, `post_c_var`, `cut_c`) |
 //! | `jwf_d_plane` | cells of the plane (`de_stijl`, `pointgrid_wf`, `pointgrid3d_wf`) |
+//! | `jwf_dc_cells` | crackle and hexes coloured by their cell ratio (`dc_crackle_wf`, `dc_cracklep_wf`, `dc_hexes_wf`) |
+//! | `jwf_dc_fields` | JWildfire's iterated-field `dc_*` stamps (`dc_layers`, `dc_tree`, `dc_tesla`, `dc_rotations`) |
+//! | `jwf_dc_folds` | JWildfire's folding and noise `dc_*` stamps (`dc_ducks`, `dc_mandbrot`, `dc_spacefold`, `dc_warping`, `dc_fractcolor`, `dc_butterflies`) |
+//! | `jwf_dc_mandel` | JWildfire's generalised Mandelbrot stamp (`dc_gmandelbroot`) |
+//! | `jwf_dc_maps` | JWildfire's direct-colour maps of the plane (`dc_cylinder2`, `dc_dmodulus`, `dc_kaleidotile`, `dc_carpet3D`, `dc_gnarly`) |
+//! | `jwf_dc_maths` | GLSL's small functions as JWildfire's shader ports compute them (`step`, the sine hash, the Truchet flip) |
+//! | `jwf_dc_patterns` | JWildfire's pattern `dc_*` stamps (`dc_sunflower`, `dc_hexagons`, `dc_fingerprint`, `dc_quadtree`) |
+//! | `jwf_dc_tiles` | JWildfire's tiling `dc_*` stamps (`dc_truchet`, `dc_worley`, `dc_pentatiles`, `dc_cairotiles`) |
+//! | `jwf_dc_twins` | JWildfire's `dc_*` stamps drawing the patterns of its `glsl_*` ones (`dc_apollonian`, `dc_kaliset`, `dc_squares`, …) |
 //! | `jwf_d_solids` | more solids filled at random (`cone3D`, `torus3D`, `capsule3D`, `rbox3D`, …), `hourglass3D`, `gridout3D` |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
 //! | `jwf_dialect` | JWildfire's own formulas for names the others also use (`polar`, `rings`, …), for the flames JWildfire wrote |
@@ -166,6 +175,15 @@ mod jwf_d_cuts;
 mod jwf_d_cvar;
 mod jwf_d_plane;
 mod jwf_d_solids;
+mod jwf_dc_cells;
+mod jwf_dc_fields;
+mod jwf_dc_folds;
+mod jwf_dc_mandel;
+mod jwf_dc_maps;
+mod jwf_dc_maths;
+mod jwf_dc_patterns;
+mod jwf_dc_tiles;
+mod jwf_dc_twins;
 mod jwf_dialect;
 mod jwf_direct_colour;
 mod jwf_drawings;

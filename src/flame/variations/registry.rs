@@ -30,6 +30,11 @@ use super::{jwf_b_3d, jwf_b_complex, jwf_b_crops, jwf_b_cuts, jwf_b_dc, jwf_b_if
 use super::{jwf_c_escape, jwf_c_glsl, jwf_c_orbits};
 // JWildfire variations, fourth part.
 use super::{jwf_d_crops, jwf_d_cuts, jwf_d_cvar, jwf_d_plane, jwf_d_solids};
+// JWildfire's direct-colour stamps.
+use super::{
+    jwf_dc_cells, jwf_dc_fields, jwf_dc_folds, jwf_dc_mandel, jwf_dc_maps, jwf_dc_patterns,
+    jwf_dc_tiles, jwf_dc_twins,
+};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -76,7 +81,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 65] = [
+const FILES: [&[VarDef]; 73] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -147,6 +152,15 @@ const FILES: [&[VarDef]; 65] = [
     jwf_z_solids::DEFS,
     jwf_z_orbits::DEFS,
     jwf_z_figures::DEFS,
+    // JWildfire's direct-colour stamps.
+    jwf_dc_twins::DEFS,
+    jwf_dc_tiles::DEFS,
+    jwf_dc_patterns::DEFS,
+    jwf_dc_fields::DEFS,
+    jwf_dc_folds::DEFS,
+    jwf_dc_cells::DEFS,
+    jwf_dc_maps::DEFS,
+    jwf_dc_mandel::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -529,6 +543,46 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "post_c_var",
     "cut_c",
     "spirograph3D",
+    // JWildfire's direct-colour stamps.
+    "dc_apollonian",
+    "dc_circlesblue",
+    "dc_fractaldots",
+    "dc_grid3D",
+    "dc_hoshi",
+    "dc_hyperbolictile",
+    "dc_kaleidocomplex",
+    "dc_kaleidoscopic",
+    "dc_kaliset",
+    "dc_kaliset2",
+    "dc_mandelbox2D",
+    "dc_squares",
+    "dc_truchet",
+    "dc_worley",
+    "dc_pentatiles",
+    "dc_cairotiles",
+    "dc_sunflower",
+    "dc_hexagons",
+    "dc_fingerprint",
+    "dc_quadtree",
+    "dc_layers",
+    "dc_tree",
+    "dc_tesla",
+    "dc_rotations",
+    "dc_ducks",
+    "dc_mandbrot",
+    "dc_spacefold",
+    "dc_warping",
+    "dc_fractcolor",
+    "dc_butterflies",
+    "dc_crackle_wf",
+    "dc_cracklep_wf",
+    "dc_hexes_wf",
+    "dc_cylinder2",
+    "dc_dmodulus",
+    "dc_kaleidotile",
+    "dc_carpet3D",
+    "dc_gnarly",
+    "dc_gmandelbroot",
 ];
 
 /// Every JWildfire variation's name in registry order.
