@@ -161,9 +161,22 @@ pub fn sin_cos_any(x: f64) -> (f64, f64) {
     let (rs, qs) = reduce_small(x);
     let (rh, qh) = huge::reduce(x);
     let a = x.abs();
-    let big = a >= 1_048_576.0 && a < f64::INFINITY;
+    let big = (1_048_576.0..f64::INFINITY).contains(&a);
     let (r, q) = if big { (rh, qh) } else { (rs, qs) };
     sin_cos_reduced(r, q)
+}
+
+/// (sin x, cos x) for any x, for a formula whose loop stays scalar (one that draws random
+/// numbers point by point): [`sin_cos`] for |x| < 2²⁰, the standard library beyond. A branch
+/// that is practically never taken costs such a loop less than [`sin_cos_any`]'s long
+/// reduction, which that function computes on every call so that loops vectorise.
+#[inline(always)]
+pub fn sin_cos_scalar(x: f64) -> (f64, f64) {
+    if x.abs() < 1_048_576.0 {
+        sin_cos(x)
+    } else {
+        x.sin_cos()
+    }
 }
 
 /// Sine and cosine through [`sin_cos_any`] as methods, for scalar formulas written with the

@@ -400,14 +400,20 @@ fn sin_cos_any_holds_for_every_magnitude() {
         };
         let (s, c) = sin_cos_any(x);
         if x.abs() < 1_048_576.0 {
-            assert_eq!((s.to_bits(), c.to_bits()), (sin(x).to_bits(), cos(x).to_bits()));
+            assert_eq!(
+                (s.to_bits(), c.to_bits()),
+                (sin(x).to_bits(), cos(x).to_bits())
+            );
             continue;
         }
         let (ws, wc) = x.sin_cos();
         // Relative to the value, or 2⁻⁷⁰ absolute next to a zero.
         for (got, want) in [(s, ws), (c, wc)] {
             let err = (got - want).abs() / (want.abs() * f64::EPSILON);
-            assert!(err <= 3.0 || (got - want).abs() < 1e-21, "{x:e}: {got} vs {want}");
+            assert!(
+                err <= 3.0 || (got - want).abs() < 1e-21,
+                "{x:e}: {got} vs {want}"
+            );
             worst = worst.max(err);
         }
     }

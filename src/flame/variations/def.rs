@@ -385,6 +385,20 @@ impl Prepared {
         }
     }
 
+    /// [`Prepared::default_z`] decided once, for a loop over points: a `match` inside the loop
+    /// is a switch the vectoriser cannot take.
+    #[inline(always)]
+    pub fn default_z_rule(&self) -> DefaultZ {
+        DefaultZ {
+            zero: self.zrule == ZRule::Zero,
+            factor: if self.zrule == ZRule::Weighted {
+                self.w
+            } else {
+                1.0
+            },
+        }
+    }
+
     /// Evaluate the formula: the weighted output for input `t`.
     #[inline(always)]
     pub fn eval(&self, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
@@ -443,6 +457,22 @@ impl Prepared {
         let mut p = [acc.x, acc.y, acc.z];
         self.assign(&mut p, o);
         [acc.x, acc.y, acc.z] = p;
+    }
+}
+
+/// [`Prepared::default_z`] as a rule fixed for a loop: 0, or a factor times the input z (1 for
+/// the input z itself: the same bits).
+#[derive(Clone, Copy, Debug)]
+pub struct DefaultZ {
+    zero: bool,
+    factor: f64,
+}
+
+impl DefaultZ {
+    /// The output z for the input z `z`.
+    #[inline(always)]
+    pub fn of(self, z: f64) -> f64 {
+        if self.zero { 0.0 } else { self.factor * z }
     }
 }
 

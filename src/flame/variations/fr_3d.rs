@@ -11,7 +11,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use super::util::{sign, sqr, zeps};
 use super::*;
-use crate::flame::fastmath::FastTrig;
+use crate::flame::fastmath::{self as fm, FastTrig};
 
 pub(super) static DEFS: &[VarDef] = &[
     super::inlined!("barycentroid", barycentroid)
@@ -191,6 +191,7 @@ pub(super) static DEFS: &[VarDef] = &[
 
 /// Barycentric coordinates (u, v) of the point in the basis (a, b), (c, d), each combined
 /// in quadrature with the matching input coordinate (keeping the sign of u or v); z is scaled.
+#[inline(always)]
 fn barycentroid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a, b, c, d] = v.params();
     let g00 = a * a + b * b;
@@ -208,6 +209,7 @@ fn barycentroid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// 3-D blade: x drives all three coordinates through the sine and cosine of a random fraction
 /// of w·r.
+#[inline(always)]
 fn blade3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (s, c) = (rng.f01() * v.w * t.sqrt).fsin_cos();
     let wx = v.w * t.x;
@@ -223,6 +225,7 @@ fn prep_blob2(v: &mut Prepared) {
 
 /// Blob with a hole: inside `radius` the point is kept; outside, its distance beyond the radius
 /// is modulated by a power of the angular wave sin(n·θ) + symmetry.
+#[inline(always)]
 fn blob2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [mode, n, radius, pre, post, sym, _comp] = v.params();
     let [help] = v.derived();
@@ -240,6 +243,7 @@ fn blob2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// 3-D blob: the radius oscillates between `low` and `high` with the angle atan2(x, y), and the
 /// same wave lifts the point in z.
+#[inline(always)]
 fn blob3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [low, high, waves] = v.params();
     let wave = (waves * t.atan_xy).fsin();
@@ -248,6 +252,7 @@ fn blob3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// 3-D bubble with per-axis scales; z is pushed away from the plane by `z` as well.
+#[inline(always)]
 fn bubble2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [sx, sy, sz] = v.params();
     let r = v.w / zeps(0.25 * (t.sumsq + t.z * t.z) + 1.0);
@@ -311,6 +316,7 @@ fn rot(x: f64, y: f64, s: f64, c: f64) -> (f64, f64) {
 /// The bubble lifted onto a sphere, with optional stripes cut out of it (or, in blur mode,
 /// rotated onto their neighbours) and a hole of a given angle at the pole (or at both poles
 /// with z-symmetry), which blur mode squeezes the cap into instead of cutting.
+#[inline(always)]
 fn bubble_t3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, exp_z, sym_z, blur] = v.params();
     let [abs_n, inv_stripes, strip1, strip2, sin_ratio, cos_ratio] = v.derived();
@@ -441,6 +447,7 @@ fn cubic3d_prepare(v: &mut Prepared) {
 
 /// Copies the point to a random corner of a cube lattice, blending between the running sum and
 /// the input (the blend is shaped by the point's direction with `cubic3D_style`).
+#[inline(always)]
 fn cubic3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [ss, sfill, s1mfill, half_w] = v.derived();
     let node = rng.u32() & 7;
@@ -467,6 +474,7 @@ fn cubic_lattice_3d_prepare(v: &mut Prepared) {
 
 /// Copies the point (plus the running sum, scaled) to a random corner of a cube lattice of
 /// half-size `weight`; style 2 shapes the copy by the point's direction.
+#[inline(always)]
 fn cubic_lattice_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, style] = v.params();
     let [fill] = v.derived();
@@ -489,6 +497,7 @@ fn cubic_lattice_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -
 /// Adds to the point a copy scaled by |z|^power: a perspective-like depth push. (Fractorium
 /// reads the affine-transformed point for the first term; it equals the input unless a `pre_`
 /// variation moved it.)
+#[inline(always)]
 fn depth(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [power] = v.params();
     let mut k = t.z.abs();
@@ -503,6 +512,7 @@ fn depth(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// disc with an adjustable "π" and a z from the radius and cos z.
+#[inline(always)]
 fn disc3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [pi] = v.params();
     let r = t.sqrt;
@@ -512,6 +522,7 @@ fn disc3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// The plane projection of Enneper's minimal surface (weight applies to the cubic part only).
+#[inline(always)]
 fn ennepers(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let (x2, y2) = (t.x * t.x, t.y * t.y);
     [
@@ -552,6 +563,7 @@ fn heat_prepare(v: &mut Prepared) {
 
 /// Spherical coordinates made wavy: the radius, azimuth and inclination each get a sine
 /// ripple (period, phase, amplitude) driven by the radius.
+#[inline(always)]
 fn heat(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [at, bt, ct, ap, bp, cp, ar, br, cr] = v.derived();
     let mut r = (t.sumsq + t.z).abs().sqrt();
@@ -566,6 +578,7 @@ fn heat(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// A helicoid: the polar angle is advanced by 2π·frequency·z, the radius kept, z scaled.
+#[inline(always)]
 fn helicoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [frequency] = v.params();
     let ang = t.z * (frequency * TAU) + t.atan_yx;
@@ -574,6 +587,7 @@ fn helicoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// A helix: the point is shifted by a circle of radius `width` whose angle turns with z.
+#[inline(always)]
 fn helix(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [frequency, width] = v.params();
     let ang = t.z * (frequency * TAU);
@@ -585,6 +599,7 @@ fn helix(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Projects the plane onto the upper unit hemisphere: (x, y, 1)/√(r² + 1).
+#[inline(always)]
 fn hemisphere(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w / (t.sumsq + 1.0).sqrt();
     [t.x * k, t.y * k, k]
@@ -592,6 +607,7 @@ fn hemisphere(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// "ho": x, y and z become powers of products of sines and cosines of the input plus small
 /// arctangent terms (a knotted 3-D surface).
+#[inline(always)]
 fn ho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [px, py, pz] = v.params();
     let (xx, yy, zz) = (t.x * t.x, t.y * t.y, t.z * t.z);
@@ -615,6 +631,7 @@ fn prep_mobius_strip(v: &mut Prepared) {
 
 /// mobius_strip: wraps the rectangle [−rect_x, rect_x]×[−rect_y, rect_y] (tiled) onto a Möbius
 /// band of the given radius and width, rotates it about x then y and projects onto the plane.
+#[inline(always)]
 fn mobius_strip(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [radius, width, rect_x, rect_y] = v.params();
     let [rx_sin, rx_cos, ry_sin, ry_cos] = v.derived();
@@ -642,6 +659,7 @@ fn mobius_strip(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
 
 /// octagon: a 3-D inversion in the "octagonal" norm x⁴ + y⁴ + 2z² where it is strong (factor
 /// below 2); elsewhere the point is scaled and pushed away from the axes by (x, y, z).
+#[inline(always)]
 fn octagon(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [ox, oy, oz] = v.params();
     let (x2, y2, z2) = (t.x * t.x, t.y * t.y, t.z * t.z);
@@ -668,6 +686,7 @@ fn prep_popcorn2_3d(v: &mut Prepared) {
 
 /// popcorn2_3D: popcorn2 (x + px·sin tan(c·y), y + py·sin tan(c·x)), halved, with a z made
 /// from the input z (or the angle when z is 0) and, when the running z is still 0, the angle.
+#[inline(always)]
 fn popcorn2_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [px, py, pz, c] = v.params();
     let [sin_tan_c, half_w, vv] = v.derived();
@@ -685,6 +704,7 @@ fn popcorn2_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3
 /// A polar rose r = l·cos(kθ + c) lifted into 3-D: the height is a blend of radial waves
 /// ("wag"), a spiral wiggle and an offset; with a negative option a random half of the points
 /// form a scaled, mirrored "ghost" copy below.
+#[inline(always)]
 pub(super) fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         l,
@@ -723,25 +743,25 @@ pub(super) fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -
     let c3 = (rad - l * 0.5) / l;
     let c4 = c2 * c2;
     let th = t.atan_yx;
-    let (sth, cth) = th.fsin_cos();
+    let (sth, cth) = fm::sin_cos_scalar(th);
     let lower = rng.f01() < 0.5;
 
     let wig = th / zeps(cycle) * freq * 0.5 + offset * cycle;
     // Radial waves: the sine terms of r/l, (r/l)² and (r/l)⁴, plus linear and curvature terms
     // (which of sin((r/l)²π) and cos((r/l - 1/2)π) goes where depends on the option's sign).
-    let curve_a = crvsc * 0.5 * (c2 * PI).fsin();
-    let curve_b = crvsc * 0.5 * (c3 * PI).fcos();
+    let curve_a = crvsc * 0.5 * fm::sin_cos_scalar(c2 * PI).0;
+    let curve_b = crvsc * 0.5 * fm::sin_cos_scalar(c3 * PI).1;
     let (first, last) = if dir < 0.0 {
         (curve_a, curve_b)
     } else {
         (curve_b, curve_a)
     };
     let lin = wagsc * 0.4 * rad;
-    let wag = (c1 * PI * abs_opt).fsin() + lin + first;
+    let wag = fm::sin_cos_scalar(c1 * PI * abs_opt).0 + lin + first;
     let wag12 = if s12 <= 1.0 {
         wag
     } else {
-        let wag2 = (c2 * PI * abs_opt).fsin() + lin + curve_b;
+        let wag2 = fm::sin_cos_scalar(c2 * PI * abs_opt).0 + lin + curve_b;
         if s12 <= 2.0 {
             wag2 * (1.0 - anti) + wag * anti
         } else {
@@ -751,14 +771,14 @@ pub(super) fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -
     let waggle = if s3 == 0.0 {
         wag12
     } else if s3 > 0.0 {
-        let wag3 = (c4 * PI * abs_opt).fsin() + wagsc * (rad * rad) * 0.4 + last;
+        let wag3 = fm::sin_cos_scalar(c4 * PI * abs_opt).0 + wagsc * (rad * rad) * 0.4 + last;
         wag12 * (1.0 - s3) + wag3 * s3
     } else {
         0.0
     };
 
-    let petal = l * (petals * th + c).fcos();
-    let swirl = sqr(rad * 0.5) * wig.fsin() * wig_scale;
+    let petal = l * fm::sin_cos_scalar(petals * th + c).1;
+    let swirl = sqr(rad * 0.5) * fm::sin_cos_scalar(wig).0 * wig_scale;
     let is_ghost = rng.f01() < ghost && lower;
     if is_ghost {
         let k = v.w * 0.5 * ref_sc;
@@ -823,6 +843,7 @@ pub(super) fn prose3d_prep(v: &mut Prepared) {
 
 /// Wraps the plane around a sphere: x and y become longitude and latitude (scaled by w·π),
 /// z the height scaled by `zscale`.
+#[inline(always)]
 fn psphere(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [zscale] = v.params();
     let [k] = v.derived();
@@ -837,6 +858,7 @@ fn psphere_prep(v: &mut Prepared) {
 }
 
 /// sinusoidal in 3-D: sin x, sin y, and z from the angle of (x², y²) times cos z.
+#[inline(always)]
 fn sinusoidal3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [
         v.w * t.x.fsin(),
@@ -846,6 +868,7 @@ fn sinusoidal3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// splits in 3-D: each octant is moved away from the coordinate planes by (x, y, z).
+#[inline(always)]
 fn splits3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [dx, dy, dz] = v.params();
     let away = |c: f64, d: f64| if c >= 0.0 { c + d } else { c - d };
@@ -858,6 +881,7 @@ fn splits3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// svf: the plane wrapped onto a sphere-like surface whose latitude bands are modulated by
 /// cos(n·y) (a 3-D output).
+#[inline(always)]
 fn svf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [n] = v.params();
     let cn = (n * t.y).fcos();
@@ -878,6 +902,7 @@ fn taurus_prep(v: &mut Prepared) {
 
 /// taurus: the plane wrapped onto a torus-like surface whose tube radius ripples n times
 /// around (`inv` blends toward a plain torus, `sor` toward a surface of revolution).
+#[inline(always)]
 fn taurus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [r, n, _, sor] = v.params();
     let [inv_r, one_minus_inv, one_minus_sor] = v.derived();

@@ -101,6 +101,7 @@ fn prep_bcollide(v: &mut Prepared) {
 
 /// Bipolar coordinates: the angle σ is cut into `num` sectors, alternately rotated by ±πa/num
 /// (modulo the sector), which makes the circles through the foci collide and interleave.
+#[inline(always)]
 fn bcollide(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [n_pi, pi_n, a_n] = v.derived();
     let (tau, sigma) = bipolar(t.x, t.y);
@@ -123,6 +124,7 @@ fn block_axis(c: f64, sumsq: f64) -> f64 {
 
 /// Maps the plane into a square: each coordinate becomes the arcsine of its elliptic
 /// coordinate, scaled by 2w/π.
+#[inline(always)]
 fn block(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w * FRAC_2_PI;
     [
@@ -134,6 +136,7 @@ fn block(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// `block` with independent x/y scales, divided by 1 + (cos x + cos y)/mp, which bulges the
 /// square into rounded blocks.
+#[inline(always)]
 fn blocky(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [sx, sy, mp] = v.params();
     let r = v.w / zeps((t.x.fcos() + t.y.fcos()) / mp + 1.0);
@@ -147,6 +150,7 @@ fn blocky(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Bipolar coordinates: inside the band |τ| < radius, τ is shifted by distance·radius and
 /// wrapped back into the band, sliding the circles around the foci.
+#[inline(always)]
 fn bmod(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [radius, dist] = v.params();
     let (mut tau, sigma) = bipolar(t.x, t.y);
@@ -158,6 +162,7 @@ fn bmod(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Bipolar swirl: the angle σ turns by out·τ + in/τ, twisting near the foci and far away.
+#[inline(always)]
 fn bswirl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [in_, out] = v.params();
     let (tau, sigma) = bipolar(t.x, t.y);
@@ -168,6 +173,7 @@ fn bswirl(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Bipolar transform: τ is divided by `power` and moved, σ rotated and divided by `power`
 /// (one of `power` random copies), and the two half-planes are split apart along τ.
+#[inline(always)]
 fn btransform(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [rotate, power, mv, split] = v.params();
     let (tau, sigma) = bipolar(t.x, t.y);
@@ -185,6 +191,7 @@ fn btransform(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Half the angle and the ratio of distances as seen from the points (−1, 0) and (1, 0):
 /// a bipolar-coordinate map.
+#[inline(always)]
 fn deltaa(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let y2 = t.y * t.y;
     let r = v.w * ((y2 + sqr(t.x + 1.0)).sqrt() / (y2 + sqr(t.x - 1.0)).sqrt());
@@ -201,6 +208,7 @@ fn e_collide_prepare(v: &mut Prepared) {
 
 /// Elliptic coordinates: the angle ν is cut into `num` sectors and shifted within each,
 /// alternately forwards and backwards, like balls colliding.
+#[inline(always)]
 fn e_collide(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [cn_pi, pi_cn, ca_cn] = v.derived();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
@@ -223,6 +231,7 @@ fn e_collide(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 
 /// An elliptic-coordinate analogue of julian: μ divided by the power, ν divided and rotated to a
 /// random one of `power` branches (inverted first for negative powers).
+#[inline(always)]
 fn e_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power] = v.params();
     let mut r2 = t.sumsq;
@@ -242,6 +251,7 @@ fn e_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// Elliptic coordinates with μ wrapped into [−radius, radius) after a shift of `distance`·radius.
+#[inline(always)]
 fn e_mod(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [radius, distance] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
@@ -261,6 +271,7 @@ fn e_mod(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Elliptic coordinates: μ moved by `move` (towards or away from the focal segment depending
 /// on the side), reflected through the segment when it crosses it, then ν rotated.
+#[inline(always)]
 fn e_motion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [mv, rot] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
@@ -281,6 +292,7 @@ fn e_motion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Elliptic coordinates: μ scaled by `dist` and pushed by `push`, ν rotated.
+#[inline(always)]
 fn e_push(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [push, dist, rot] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
@@ -292,6 +304,7 @@ fn e_push(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Elliptic coordinates: rotates ν (wrapped to [−π, π)), keeping the confocal ellipse.
+#[inline(always)]
 fn e_rotate(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [rot] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
@@ -304,6 +317,7 @@ fn e_rotate(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Elliptic coordinates: μ and ν scaled by `scale` (ν about the angle `angle`, wrapped).
+#[inline(always)]
 fn e_scale(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [scale, angle] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, true);
@@ -322,6 +336,7 @@ fn e_scale(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Elliptic coordinates: ν twisted by `out`·μ + `in`/μ (a swirl about the focal segment).
+#[inline(always)]
 fn e_swirl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [win, wout] = v.params();
     let (xmax, mut nu) = elliptic(t.x, t.sumsq, false);
@@ -335,6 +350,7 @@ fn e_swirl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// 3-D foci: elliptic-like coordinates where the input z (or the polar angle when z is 0)
 /// plays the role of a second angle.
+#[inline(always)]
 fn foci_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ex = t.x.exp() * 0.5;
     let enx = 0.25 / zeps(ex);
@@ -344,6 +360,7 @@ fn foci_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// foci with adjustable weights `c1`, `c2` on eˣ and e⁻ˣ.
+#[inline(always)]
 fn foci_p(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [c1, c2] = v.params();
     let ex = zeps(t.x.exp());

@@ -103,6 +103,7 @@ pub(super) static DEFS: &[VarDef] = &[
 
 /// A random point of the ball of radius 2w (the sum of four uniforms sets the radius, two
 /// random angles the direction).
+#[inline(always)]
 fn blur3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let azimuth = rng.f01() * TAU;
     let r = v.w * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
@@ -114,6 +115,7 @@ fn blur3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A uniform point of the square [−1, 1]² mapped onto the disc of radius w (squares of
 /// half-side s go to circles of radius s); z is scaled.
+#[inline(always)]
 fn blur_circle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = 2.0 * rng.f01() - 1.0;
     let y = 2.0 * rng.f01() - 1.0;
@@ -124,6 +126,7 @@ fn blur_circle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// A random point inside a heart-shaped outline |x|^p, ±√(1 − x²) (scaled by a and b).
+#[inline(always)]
 fn blur_heart(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pw, a, b] = v.params();
     let x = (rng.f01() - 0.5) * 2.0;
@@ -150,6 +153,7 @@ fn prep_blur_linear(v: &mut Prepared) {
 }
 
 /// Motion blur: the point is pushed a random distance up to `length` along a fixed direction.
+#[inline(always)]
 fn blur_linear(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [length] = v.params();
     let [s, c] = v.derived();
@@ -167,6 +171,7 @@ fn prep_blur_pixelize(v: &mut Prepared) {
 
 /// Pixelation: the point goes to a random spot of the grid cell (of side `size`) it falls in,
 /// the spot's spread set by `scale`.
+#[inline(always)]
 fn blur_pixelize(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, sc] = v.params();
     let [k, inv] = v.derived();
@@ -180,12 +185,14 @@ fn blur_pixelize(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
 }
 
 /// A uniform point of the square [−w, w]².
+#[inline(always)]
 fn blur_square(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let k = 2.0 * v.w;
     [k * (rng.f01() - 0.5), k * (rng.f01() - 0.5), 0.0]
 }
 
 /// A uniform random point of the disc of radius w.
+#[inline(always)]
 fn circleblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let rad = rng.f01().sqrt();
     let (s, c) = (rng.f01() * TAU).fsin_cos();
@@ -193,6 +200,7 @@ fn circleblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// Adds a roughly Gaussian offset (sum of four uniforms) in a random direction to the point.
+#[inline(always)]
 fn gaussian(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let ang = rng.f01() * TAU;
     let spread = rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0;
@@ -443,6 +451,7 @@ fn nblur_sample(v: &Prepared, rng: &mut FastRng) -> NbSample {
 
 /// nBlur: a blur filling a regular polygon (optionally striped, with a central hole,
 /// highlighted edges, or its circumcircle), turned by half a sector.
+#[inline(always)]
 fn nblur(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [exact, circum, sn, cs, weight] = v.derived();
     let mut s = nblur_sample(v, rng);
@@ -469,6 +478,7 @@ fn powered_unit(rng: &mut FastRng, pw: f64) -> f64 {
 
 /// A disc of radius w filled with a density that follows acos (denser at the rim); `power`
 /// reshapes the radial profile.
+#[inline(always)]
 fn sineblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power] = v.params();
     let (s, c) = (rng.f01() * TAU).fsin_cos();
@@ -479,6 +489,7 @@ fn sineblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A solid ball of radius w in 3-D, random direction, with an acos radial profile shaped by
 /// `power`.
+#[inline(always)]
 fn sphereblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power] = v.params();
     let ang = rng.f01() * TAU;
@@ -491,6 +502,7 @@ fn sphereblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// A uniformly filled cube of side w centred on the origin.
+#[inline(always)]
 fn square3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let x = v.w * (rng.f01() - 0.5);
     let y = v.w * (rng.f01() - 0.5);
@@ -500,6 +512,7 @@ fn square3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A filled star with `power` points (`range` sets how deep the notches are), drawn
 /// independently of the input.
+#[inline(always)]
 fn starblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power] = v.params();
     let [len, step, sin_a, cos_a] = v.derived();
@@ -529,6 +542,7 @@ fn starblur_prep(v: &mut Prepared) {
 
 /// starblur with a hole in the middle (`hole`) and each point's edge split into `stripes`
 /// stripes of relative `width`.
+#[inline(always)]
 fn starblur2(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, width] = v.params();
     let [len, hole2, fill2, step, power2, sin_a, cos_a2, stripes] = v.derived();
@@ -578,6 +592,7 @@ fn starblur2_prep(v: &mut Prepared) {
 }
 
 /// zblur: a random z offset (sum of four uniforms, bell-shaped in [−2, 2]·weight).
+#[inline(always)]
 fn zblur(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let s = rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0;
     [0.0, 0.0, v.w * s]

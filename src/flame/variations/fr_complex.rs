@@ -141,6 +141,7 @@ fn arcsech_raw(t: &VarIn) -> Cplx {
 }
 
 /// Inverse hyperbolic secant, scaled by w/π: the plane maps into the strip |y| ≤ w.
+#[inline(always)]
 fn arcsech(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.derived();
     let r = arcsech_raw(t).scale(k);
@@ -149,6 +150,7 @@ fn arcsech(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Inverse hyperbolic secant scaled by 2w/π, with the two halves of the strip swapped and
 /// mirrored so that they tile around the real axis.
+#[inline(always)]
 fn arcsech2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.derived();
     let r = arcsech_raw(t).scale(k);
@@ -160,6 +162,7 @@ fn arcsech2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Inverse hyperbolic sine ln(z + √(z² + 1)), scaled by 2w/π: a strip again.
+#[inline(always)]
 fn arcsinh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.derived();
     let z = Cplx::new(t.x, t.y);
@@ -168,6 +171,7 @@ fn arcsinh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Twice the inverse hyperbolic tangent, ln((1 + z)/(1 − z)), scaled by w/π.
+#[inline(always)]
 fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.derived();
     let z = Cplx::new(t.x, t.y);
@@ -195,6 +199,7 @@ fn prep_cpow2(v: &mut Prepared) {
 
 /// Complex power z^((r/divisor)·e^(iπa/2)) with a random choice among the branches of the
 /// logarithm (about `spread` of them, favouring the principal one) and of the divisor's roots.
+#[inline(always)]
 fn cpow2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [c, d, half_c, half_d, ang, inv_spread, full_spread, branches] = v.derived();
     let mut a = t.atan_yx;
@@ -233,6 +238,7 @@ fn prep_cpow3(v: &mut Prepared) {
 /// Complex power along a logarithmic spiral (exponent set by r and d), with random branches of
 /// the logarithm drawn from a geometric-like law whose width is `spread`, and random roots of
 /// the divisor.
+#[inline(always)]
 fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [c, d, half_c, half_d, ang, coeff] = v.derived();
     let mut a = t.atan_yx;
@@ -273,6 +279,7 @@ fn dragonfire_prepare(v: &mut Prepared) {
 
 /// With u = c1·eˣ and v = c2/u: (u − v, sin y)/(u + v − cos y), a coth-like map, with optional
 /// "fuzzy" perturbations driven by the logarithm of the result, blended in by a chosen curve.
+#[inline(always)]
 fn dragonfire(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [c1, c2, mode, radius, interp, _, scalar] = v.params();
     let [val, one_m_val] = v.derived();
@@ -309,12 +316,14 @@ fn dragonfire(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3
 }
 
 /// The error function applied to each coordinate.
+#[inline(always)]
 fn erf_var(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [v.w * erf(t.x), v.w * erf(t.y), 0.0]
 }
 
 /// Squares the point as a complex number and scales by a function of 1/r (kept away from the
 /// pole by `eps`): identity, cos, exp, log or reciprocal by `radiusFunc`.
+#[inline(always)]
 fn excinis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [ls, func, eps] = v.params();
     let rp = t.sqrt * ls;
@@ -336,6 +345,7 @@ fn excinis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// The complex exponential of π·z.
+#[inline(always)]
 fn exp2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let k = v.w * (t.x * PI).exp();
     let (s, c) = (t.y * PI).fsin_cos();
@@ -350,6 +360,7 @@ fn expo_prepare(v: &mut Prepared) {
 }
 
 /// The complex power c^z for a fixed complex base c = real + i·imaginary.
+#[inline(always)]
 fn expo(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [k, th] = v.derived();
     let m = (t.x * k - t.y * th).exp();
@@ -367,12 +378,14 @@ const INV_SQRT5: f64 = 1.0 / 2.236_067_977_499_79;
 
 /// Binet's formula for the Fibonacci numbers extended to the complex plane:
 /// (φ^z − φ^(−z)·e^(iπz)) / √5 with z = x + iy.
+#[inline(always)]
 fn fibonacci(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [ln_phi] = v.derived();
     fib_common(v.w, 1.0, 1.0, ln_phi, t)
 }
 
 /// [`fibonacci`] with both powers scaled by `sc` and their exponents by `sc2`.
+#[inline(always)]
 fn fibonacci2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [sc, sc2] = v.params();
     let [ln_phi] = v.derived();
@@ -393,6 +406,7 @@ fn fib_common(w: f64, sc: f64, sc2: f64, lp: f64, t: &VarIn) -> V3 {
 }
 
 /// Polar coordinates remapped: x = ln Γ(r), y = θ.
+#[inline(always)]
 fn gamma(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [v.w * ln_gamma(t.sqrt), v.w * t.atan_yx, 0.0]
 }
@@ -408,6 +422,7 @@ fn jac_parts(t: &VarIn, k: f64) -> ((f64, f64, f64), (f64, f64, f64), f64) {
 }
 
 /// The Jacobi elliptic function cn of the complex number x + iy.
+#[inline(always)]
 fn jac_cn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [m] = v.params();
     let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, m);
@@ -416,6 +431,7 @@ fn jac_cn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// The Jacobi elliptic function dn of the complex number x + iy.
+#[inline(always)]
 fn jac_dn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [m] = v.params();
     let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, m);
@@ -424,6 +440,7 @@ fn jac_dn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// The Jacobi elliptic function sn of the complex number x + iy.
+#[inline(always)]
 fn jac_sn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [m] = v.params();
     let ((snx, cnx, dnx), (sny, cny, dny), den) = jac_parts(t, m);
@@ -432,6 +449,7 @@ fn jac_sn(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// lens: half the complex square, ((x² − y²)/2, x·y).
+#[inline(always)]
 fn lens(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [0.5 * (t.x * t.x - t.y * t.y) * v.w, t.x * t.y * v.w, 0.0]
 }
@@ -453,6 +471,7 @@ fn prep_log_db(v: &mut Prepared) {
 
 /// log_db: the complex logarithm in base e·base, with the angle shifted by a random small
 /// multiple of π·fix_period (the sum of seven draws in −2..=2); z is scaled.
+#[inline(always)]
 fn log_db(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [scale, period] = v.derived();
     let mut turns = 0i32;
@@ -475,6 +494,7 @@ fn prep_mobius_n(v: &mut Prepared) {
 
 /// MobiusN: conjugates a Möbius map (A·z + B)/(C·z + D) by z ↦ z^power: the input is raised to
 /// the power, mapped, then one of the power-th roots is taken at random.
+#[inline(always)]
 fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [re_a, im_a, re_b, im_b, re_c, im_c, re_d, im_d, _, dist] = v.params();
     let [power, whole_power] = v.derived();
@@ -503,6 +523,7 @@ fn prep_murl(v: &mut Prepared) {
 
 /// murl: divides the point by 1 + c'·z^power (c' = c/(power − 1)), normalised so that the
 /// map is the identity scaled by the weight at c = 0.
+#[inline(always)]
 fn murl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [_, power] = v.params();
     let [cp, half_power, scale] = v.derived();
@@ -525,6 +546,7 @@ fn prep_murl2(v: &mut Prepared) {
 }
 
 /// murl2: like murl but divides by the (2/power)-th power of 1 + c·z^power.
+#[inline(always)]
 fn murl2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [c, power] = v.params();
     let [half_power, inv_p, two_inv_p, scale] = v.derived();
@@ -540,6 +562,7 @@ fn murl2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// A rational function of z = x + iy: (t3 z³ + t2 z² + t1 z + tc) / (b3 z³ + b2 z² + b1 z + bc).
+#[inline(always)]
 fn rational3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [t3, t2, t1, tc, b3, b2, b1, bc] = v.params();
     let (x, y) = (t.x, t.y);
@@ -563,6 +586,7 @@ fn rational3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// xerf: the error function applied to each coordinate (3-D); coordinates of magnitude ≥ 2
 /// are inverted in the unit sphere instead.
+#[inline(always)]
 fn xerf(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let r2 = sqr((t.sumsq + sqr(t.z)).sqrt());
     let f = |u: f64| if u.abs() >= 2.0 { u / r2 } else { erf(u) };

@@ -141,6 +141,7 @@ fn prep_bcircle(v: &mut Prepared) {
 
 /// Keeps the scaled point inside the unit disc; outside it, the point goes to a random radius
 /// in a thin ring just beyond the circle (or to the origin when the ring has no width).
+#[inline(always)]
 fn bcircle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [scale] = v.params();
     let [bw, bw_fifth] = v.derived();
@@ -158,6 +159,7 @@ fn bcircle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Crops to the disc of `radius` about (x₀, y₀): points outside go to the origin (`zero` = 1)
 /// or onto a thin random ring just outside the rim.
+#[inline(always)]
 fn circlecrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, cx, cy, scatter, zero] = v.params();
     let (xi, yi) = (t.x - cx, t.y - cy);
@@ -195,6 +197,7 @@ fn prep_circlecrop2(v: &mut Prepared) {
 /// Keeps the annulus between the two radii; points outside it go to the origin, or
 /// (zero = 0) onto the outer circle, mirrored across the diagonal (sine of their angle in x,
 /// cosine in y).
+#[inline(always)]
 fn circlecrop2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, zero] = v.params();
     let [lo, hi, hi_w] = v.derived();
@@ -213,6 +216,7 @@ fn circlecrop2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Splits the disc of `radius − split` from the rest of the plane, pushing outer points out by
 /// `split`.
+#[inline(always)]
 fn circlesplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [radius, split] = v.params();
     if t.sqrt < radius - split {
@@ -274,6 +278,7 @@ fn crob_prepare(v: &mut Prepared) {
 
 /// Crops to a rectangle: points inside vanish (0), points outside are thrown back onto a band
 /// along the rectangle's inner edge (or to 0 without blur). Unweighted.
+#[inline(always)]
 fn crob(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, _, ratio] = v.params();
     let [
@@ -357,6 +362,7 @@ fn crop_prepare(v: &mut Prepared) {
 
 /// Crops to a rectangle: outside points are zeroed (`crop_zero`) or pulled back inside, scattered
 /// over a band of relative width `crop_scatter_area` along the violated edge.
+#[inline(always)]
 fn crop(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, _, zero] = v.params();
     let [x0, y0, x1, y1, w, h] = v.derived();
@@ -399,6 +405,7 @@ fn cropn_prepare(v: &mut Prepared) {
 
 /// Crops to a regular polygon of `cropn_power` sides (outside it for a negative power): points
 /// beyond the edge go to the edge (optionally scattered outwards) or to 0.
+#[inline(always)]
 fn cropn(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power, radius, scatter, zero] = v.params();
     let [alpha, half] = v.derived();
@@ -449,6 +456,7 @@ fn hexcrop_prepare(v: &mut Prepared) {
 /// Crops to a hexagon (scaled by scale_x/scale_y, shifted by the centre): points inside are
 /// kept, the others sent to the far `dropoff` point. As a regular variation the xform's running
 /// sum is carried along inside the hexagon and dropped outside.
+#[inline(always)]
 fn hexcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, cx, cy, drop] = v.params();
     let (xs, ys) = v.table(0).split_at(6);
@@ -529,6 +537,7 @@ fn prep_octapol(v: &mut Prepared) {
 /// octapol: keeps the points of an octagon-like shape built from rectangles and triangles
 /// (sizes s and t), with a polar-warped disc in its centre; points elsewhere are removed from
 /// the running sum. The output adds a scaled copy of the (shrunken) input.
+#[inline(always)]
 fn octapol(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [pw] = v.params();
     let [rad, st] = v.derived();
@@ -637,6 +646,7 @@ fn prep_post_smartcrop(v: &mut Prepared) {
 /// the crop edge (scattered), or replaced by the last kept point. Fractorium's `static` modes
 /// ≤ 1 read the xform's pre-variation point, which this framework does not pass to post_
 /// variations: the summed point is used instead.
+#[inline(always)]
 fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         _power,
@@ -762,6 +772,7 @@ fn vignette_prep(v: &mut Prepared) {
 /// vignette: keeps the disc around (posx, posy) and randomly thins and blurs the points
 /// beyond it over the fade distance (a negative fade radius inverts the fade; a negative
 /// inner radius empties the disc).
+#[inline(always)]
 fn vignette(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [posx, posy, inner, fade_r, _, blur] = v.params();
     let [inner_abs, fade_abs, pow_inv] = v.derived();

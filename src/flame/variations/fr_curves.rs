@@ -114,6 +114,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// Random concentric rings: a random ring index k < density sets the radius k/density·radius
 /// (optionally blurred) and the depth −k/density (optionally blurred); in regular use it
 /// replaces what earlier variations summed.
+#[inline(always)]
 fn concentric(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, density, r_blur, z_blur] = v.params();
     let level = floor_i64(rng.f01() * density) as f64 / zeps(density);
@@ -138,6 +139,7 @@ fn concentric(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A random point of the spiral curve (−sinh s, sin(a·s)) / (cos(a·s) − cosh s), s uniform in
 /// [−π, π): the hyperbolic cotangent of a line through the origin.
+#[inline(always)]
 fn coth_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
@@ -161,6 +163,7 @@ fn prep_line(v: &mut Prepared) {
 
 /// line: a random point on a segment of length `weight` from the origin, in the 3-D direction
 /// given by the angles `delta` (azimuth) and `phi` (elevation), in half turns.
+#[inline(always)]
 fn line(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [ux, uy, uz] = v.derived();
     let r = rng.f01() * v.w;
@@ -169,6 +172,7 @@ fn line(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Lissajous: a random point of the Lissajous curve (sin(a·s + d), sin(b·s)) for s in
 /// [tmin, tmax], drifted along the diagonal by c·s and thickened by e.
+#[inline(always)]
 fn lissajous(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [tmin, tmax, a, b, c, d, e] = v.params();
     let s = (tmax - tmin) * rng.f01() + tmin;
@@ -184,6 +188,7 @@ fn lissajous(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 
 
 /// pie3D: a random point in one of `slices` pie wedges (rotated, of angular `thickness`), of
 /// radius r up to the weight, lifted to z = weight·sin r.
+#[inline(always)]
 fn pie3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [slices, rotation, thickness] = v.params();
     let slice = trunc_i32(rng.f01() * slices + 0.5) as f64;
@@ -195,6 +200,7 @@ fn pie3d(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A random city of blocks: points land in random unit cells (spread exponentially around the
 /// origin), each cell raised to a hashed height that also picks the colour. Replaces what the
 /// xform's earlier variations summed.
+#[inline(always)]
 fn rand_cubes(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [size, height, spread, seed, density] = v.params();
     let mut cell = || {
@@ -218,6 +224,7 @@ fn rand_cubes(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Draws a spirograph (epitrochoid) curve independently of the input: a random curve
 /// parameter in [tmin, tmax) and a random offset in [ymin, ymax) added to both coordinates.
+#[inline(always)]
 fn spirograph(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a, b, d, tmin, ymin, tmax, ymax, c1, c2] = v.params();
     let tt = (tmax - tmin) * rng.f01() + tmin;
@@ -233,6 +240,7 @@ fn spirograph(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A random point on a 3-D superformula surface (Gielis): two superformula radii for the
 /// latitude and longitude, spherical or toroidal, with an optional spiral; independent of the
 /// input.
+#[inline(always)]
 fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         _,
@@ -295,6 +303,7 @@ fn super_shape3d_prep(v: &mut Prepared) {
 
 /// tanh_spiral: a random point on the curve (sinh t, sin(a·t)) / (cos(a·t) + cosh t),
 /// t uniform in [−π, π] — a spiral-armed figure independent of the input.
+#[inline(always)]
 fn tanh_spiral(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a] = v.params();
     let s = (rng.f01() - 0.5) * TAU;
@@ -312,6 +321,7 @@ fn waffle_prep(v: &mut Prepared) {
 
 /// waffle: random points on a rotated grid of `slices`×`slices` bars in the unit square
 /// (bar thickness `xthickness`, `ythickness`), independent of the input.
+#[inline(always)]
 fn waffle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [slices, xt, yt] = v.params();
     let [sinr, cosr] = v.derived();

@@ -121,6 +121,7 @@ fn dc_bubble_prepare(v: &mut Prepared) {
 
 /// bubble (inverse stereographic projection onto a sphere), coloured by the squared distance of
 /// the new running sum from a centre.
+#[inline(always)]
 fn dc_bubble(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [cx, cy] = v.params();
     let [bdcs] = v.derived();
@@ -134,6 +135,7 @@ fn dc_bubble(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Moves the point to one of four quadrant copies (±1, ±1) through the xform's own affine map,
 /// colouring the copies with a carpet pattern.
+#[inline(always)]
 fn dc_carpet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [origin] = v.params();
     let h = 0.1 * origin;
@@ -160,6 +162,7 @@ fn dc_cube_prepare(v: &mut Prepared) {
 
 /// A random point on the surface of the cube [−1, 1]³ (scaled per axis), each face with its
 /// own colour.
+#[inline(always)]
 fn dc_cube(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, _, _, _, scale_x, scale_y, scale_z] = v.params();
     let w = v.w;
@@ -187,6 +190,7 @@ fn dc_cylinder_prepare(v: &mut Prepared) {
 
 /// A blurred cylinder: x wraps around a circle (sin/cos into x and z), y passes scaled, with a
 /// random radial blur; coloured by a linear gradient across the new running sum.
+#[inline(always)]
 fn dc_cylinder(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [offset, _, _, sx, sy, blur] = v.params();
     let [sina, cosa, ldcs] = v.derived();
@@ -205,6 +209,7 @@ fn dc_cylinder(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
 
 /// Steps the point one unit along a square spiral grid (which way depends on the nearest grid
 /// point's octant), adding 1/4 or 3/4 to the colour.
+#[inline(always)]
 fn dc_gridout(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let x = lrint(t.x);
     let y = lrint(t.y);
@@ -242,6 +247,7 @@ fn dc_linear_prepare(v: &mut Prepared) {
 }
 
 /// linear (3-D), coloured by a linear gradient (angle, scale, offset) across the new running sum.
+#[inline(always)]
 fn dc_linear(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [offset] = v.params();
     let [ldcs, sina, cosa] = v.derived();
@@ -267,6 +273,7 @@ pub(super) fn dc_perlin_prepare(v: &mut Prepared) {
 
 /// A blur (square, disc or radial) whose samples are kept when a 3-D simplex-noise field,
 /// read through one of six mappings of the sample, falls in a band; the noise sets the colour.
+#[inline(always)]
 fn dc_perlin(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         shape,
@@ -376,6 +383,7 @@ fn onto_far_edge(u: f64, v: f64) -> (f64, f64) {
 /// Projects the point onto the triangle spanned by the xform's affine map (barycentric
 /// coordinates clamped to the triangle, outside points optionally scattered inwards or zeroed);
 /// colour = u + v.
+#[inline(always)]
 fn dc_triangle(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [scatter, zero_edges] = v.params();
     let a = &v.aff;
@@ -433,6 +441,7 @@ fn dc_ztransl_prepare(v: &mut Prepared) {
 }
 
 /// linear in x and y; z set from (or scaled by) the colour coordinate mapped from [x0, x1].
+#[inline(always)]
 fn dc_ztransl(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     ztransl_by(v, t, acc.color)
 }
@@ -465,6 +474,7 @@ fn prep_pixel_flow(v: &mut Prepared) {
 /// pixel_flow: streaks: a random displacement along the direction `angle`, of a length hashed
 /// from the pixel block (of size 1/width) the point falls in; optionally sets the colour to the
 /// random fade.
+#[inline(always)]
 fn pixel_flow(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, len, width, seed, dc] = v.params();
     let [dir_x, dir_y] = v.derived();

@@ -167,6 +167,7 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 /// Zoom blur: a random enlargement (1 to 1 + length) about the centre (x₀, −y₀).
+#[inline(always)]
 fn blur_zoom(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [len, cx, cy] = v.params();
     let z = 1.0 + len * rng.f01();
@@ -268,6 +269,7 @@ fn depth_push(
 
 /// Blurs points beyond `radius` with a star-shaped kernel whose size grows linearly with the
 /// distance past the radius.
+#[inline(always)]
 fn depth_blur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, radius] = v.params();
     let [length, blur10, power2, step, sa, ca] = v.derived();
@@ -301,6 +303,7 @@ fn depth_blur2_prepare(v: &mut Prepared) {
 
 /// depth_blur around (x0, y0) with an elliptic distance (mulx, muly) and a kernel growing as a
 /// power (`exp`) of the distance past the radius.
+#[inline(always)]
 fn depth_blur2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, _, radius, x0, y0, _, _, ex] = v.params();
     let [length, blur10, power2, step, sa, ca, imx, imy] = v.derived();
@@ -325,6 +328,7 @@ fn gaussian_offset(rng: &mut FastRng) -> (f64, f64) {
 }
 
 /// Gaussian blur of the points beyond `radius`, its width growing with the distance past it.
+#[inline(always)]
 fn depth_gaussian(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [blur, radius] = v.params();
     let rad = t.sqrt;
@@ -340,6 +344,7 @@ fn depth_gaussian2_prepare(v: &mut Prepared) {
 
 /// depth_gaussian around (x0, y0) with an anisotropic distance and a width growing as a power
 /// (`exp`) of the distance past the radius.
+#[inline(always)]
 fn depth_gaussian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, radius, x0, y0, _, _, ex] = v.params();
     let [blur10, kx, ky] = v.derived();
@@ -371,6 +376,7 @@ fn depth_ngon_prepare(v: &mut Prepared) {
 
 /// Blurs the points beyond `radius` onto the outline of a regular polygon whose size grows with
 /// the distance past the radius.
+#[inline(always)]
 fn depth_ngon(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, radius] = v.params();
     let [side, half, blur10] = v.derived();
@@ -400,6 +406,7 @@ fn depth_ngon2_prepare(v: &mut Prepared) {
 
 /// depth_ngon around (x0, y0), anisotropic, with a size growing as a power (`exp`) of the
 /// distance past the radius (in flam3-compatibility mode: plain depth_ngon).
+#[inline(always)]
 fn depth_ngon2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, radius, x0, y0, _, _, ex] = v.params();
     let [side, half, blur10, kx, ky] = v.derived();
@@ -429,6 +436,7 @@ fn sine_offset(rng: &mut FastRng, power: f64) -> (f64, f64) {
 
 /// Blurs the points beyond `radius` with a disc kernel of sine-shaped radial profile, its size
 /// growing with the distance past the radius.
+#[inline(always)]
 fn depth_sine(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power, blur, radius] = v.params();
     let rad = t.sqrt;
@@ -451,6 +459,7 @@ fn depth_sine2_prepare(v: &mut Prepared) {
 
 /// depth_sine around (x0, y0), anisotropic, with a size growing as a power (`exp`) of the
 /// distance past the radius.
+#[inline(always)]
 fn depth_sine2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power, _, radius, x0, y0, mx, my, ex] = v.params();
     let [blur10, kx, ky] = v.derived();
@@ -478,6 +487,7 @@ fn centred(rng: &mut FastRng) -> f64 {
 
 /// A 3-D blur whose strength grows with the distance from a centre beyond `mindist`: uniform
 /// box jitter, radial/angular jitter, or snapping towards a grid whose cell grows with distance.
+#[inline(always)]
 fn falloff(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         scatter,
@@ -522,6 +532,7 @@ fn falloff(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Distance-dependent blur after falloff, in three styles (box, radial, Gaussian-like), that
 /// can also jitter the colour (`mul_c`).
+#[inline(always)]
 fn falloff2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [scatter, mindist, mx, my, mz, mc, x0, y0, z0, invert, kind] = v.params();
     let rx = centred(rng);
@@ -598,6 +609,7 @@ fn gaussian_falloff(t: &VarIn, w: f64, dist: f64, r: [f64; 3], m: [f64; 3]) -> V
 }
 
 /// falloff2 with a round or square distance and a logarithmic style (blend `alpha`).
+#[inline(always)]
 fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         kind,
@@ -659,6 +671,7 @@ fn falloff3(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A 3-D blur along a random direction whose size grows with the squared distance from an
 /// origin (per-axis scales).
+#[inline(always)]
 fn farblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [sx, sy, sz, x0, y0, z0] = v.params();
     let d2 = sqr(t.x - x0) + sqr(t.y - y0) + sqr(t.z - z0);
@@ -676,6 +689,7 @@ fn non_negative(x: f64) -> f64 {
 
 /// A blur whose size grows with the distance from a centre (beyond an offset): sharp near the
 /// centre, smeared further out.
+#[inline(always)]
 fn rblur(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [strength, offset, center_x, center_y] = v.params();
     let (dx, dy) = (t.x - center_x, t.y - center_y);

@@ -193,6 +193,7 @@ fn prep_boarders2(v: &mut Prepared) {
 /// Tiles of the integer grid shrunk by c about their centres; with probability set by
 /// `right`, a point is instead pushed out towards the tile's border (by `left`), along the
 /// axis of its larger offset, drawing the gaps between tiles.
+#[inline(always)]
 fn boarders2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [c, cl, cr] = v.derived();
     let rx = if t.x >= 0.0 {
@@ -237,6 +238,7 @@ fn prep_bwraps(v: &mut Prepared) {
 
 /// Bubble wrap: each grid cell holds a bubble; points inside it are magnified like `bubble`
 /// and twisted (inner twist at the centre, outer twist at the rim).
+#[inline(always)]
 fn bwraps(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [cell, _, _, inner, outer] = v.params();
     let [g2, r2, rfactor] = v.derived();
@@ -274,6 +276,7 @@ fn prep_bwraps_rand(v: &mut Prepared) {
 
 /// `bwraps` with a bubble of random size in each cell (a hash of the cell's centre, or of its
 /// square for symmetric layouts).
+#[inline(always)]
 fn bwraps_rand(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [cell, _, _, inner, outer, symm, seed] = v.params();
     let [g2, inv_cell, half] = v.derived();
@@ -322,6 +325,7 @@ fn prep_checks(v: &mut Prepared) {
 
 /// Checkerboard: points in light squares (of side `size`) shift by (x, y) plus a random jitter
 /// in y, points in dark squares by −(x, y) plus a jitter in x; z is scaled.
+#[inline(always)]
 fn checks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [ox, oy, _, rnd] = v.params();
     let [inv] = v.derived();
@@ -340,6 +344,7 @@ fn checks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// kept with probability `density` (by a hash of the node), and a uniform point of a disc of
 /// hashed radius around it is returned. Rejected draws give the origin (Fractorium leaves the
 /// output unset there).
+#[inline(always)]
 fn circle_rand_hash(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [nx, ny, size, power, dens, seed] = v.params();
     let (half_x, half_y) = (nx * 0.5, ny * 0.5);
@@ -363,6 +368,7 @@ fn circle_rand_hash(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
 /// Circles on a grid of spacing 2·Sc, present where the lattice noise is below `Dens1`, each of
 /// noisy radius: points inside are pulled towards the circle's centre, by a constant factor K
 /// or linearly in the distance (which of the two is chosen by `Dens2` and `Reverse`).
+#[inline(always)]
 fn circle_linear(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [sc, k, dens1, dens2, reverse, _, _, seed] = v.params();
     let m = floor_i64(0.5 * t.x / sc) as i32;
@@ -402,6 +408,7 @@ fn circle_cell_rejects(m: i64, n: i64, x: f64, y: f64, sc: f64, dens: f64, seed:
 
 /// A random point of one of the circles of the `CircleLinear` layout, within [−X, X]×[−Y, Y]
 /// (rejection sampling, at most 11 draws).
+#[inline(always)]
 fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [sc, dens, ax, ay, seed] = v.params();
     let mut tries = 0;
@@ -427,6 +434,7 @@ fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// The plane halved towards (X, Y); points that land inside a circle of the `CircleLinear`
 /// layout are replaced by a random point of a random circle of the layout.
+#[inline(always)]
 fn circle_trans1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [sc, dens, ax, ay, seed] = v.params();
     let sc = zeps(sc);
@@ -523,6 +531,7 @@ fn crackle_block(v: &Prepared, ci: i32, cj: i32) -> [[f64; 2]; 9] {
 /// Crackle: a random point near the origin is moved relative to the site of its Voronoi cell,
 /// its distance to the cell's edge (in the Voronoi ratio) raised to `power` and scaled; the
 /// input point is not used.
+#[inline(always)]
 fn crackle(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let (x, y, _) = crackle_cell(v, rng);
     [v.w * x, v.w * y, 0.0]
@@ -577,6 +586,7 @@ pub(super) fn crackle_cell(v: &Prepared, rng: &mut FastRng) -> (f64, f64, f64) {
 
 /// A random point on a segment from the jittered site of the input's unit cell to the site of
 /// one of its four neighbours, scaled by the cell size (the weight is not applied).
+#[inline(always)]
 fn crackle2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [cell] = v.params();
     const SEED: f64 = 34554.0;
@@ -611,6 +621,7 @@ fn crackle2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Scatters each unit cell of the plane to a pseudo-random point of a polar "dust" pattern
 /// (the cell's index modulo `density` picks the angle and radius).
+#[inline(always)]
 fn dust(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [dens, dist, power] = v.params();
     let dens = zeps(dens);
@@ -632,6 +643,7 @@ fn gnarly_prepare(v: &mut Prepared) {
 
 /// Cuts the plane into square cells and twists the disc inscribed in each cell by an angle
 /// growing with the logarithm of the distance to the cell centre.
+#[inline(always)]
 fn gnarly(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [cell, twist] = v.params();
     let [rr] = v.derived();
@@ -653,6 +665,7 @@ fn gnarly(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Pushes each point one unit out of its grid square, towards the square's nearest side
 /// (a square spiral away from the origin).
+#[inline(always)]
 fn gridout(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let gx = lrint(t.x);
     let gy = lrint(t.y);
@@ -701,6 +714,7 @@ fn modulus<const AXIS: usize>(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mu
 
 /// Shreds the plane into parallel strips: each cell of size `distance` along an axis is
 /// squeezed to `width` of itself, leaving gaps between the strips; z is scaled.
+#[inline(always)]
 fn shredlin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [xdistance, xwidth, ydistance, ywidth] = v.params();
     let [xw, yw, gx, gy] = v.derived();
@@ -724,6 +738,7 @@ fn shredlin_prep(v: &mut Prepared) {
 
 /// A bubble-like contraction plus a grid of unit cells, each cell's content halved toward its
 /// centre and, three times in four, pushed out toward the nearest cell border.
+#[inline(always)]
 fn split_brdr(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [bx, by, px, py] = v.params();
     let w = v.w;
@@ -757,6 +772,7 @@ fn split_brdr(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A grid of square cells; inside each cell, concentric square rings are rotated by quarter
 /// turns according to their level, with hashed per-cell limits and hashed cells left still.
+#[inline(always)]
 fn squares(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [cell, lo, hi, num, seed, zero, zero_seed] = v.params();
     if cell == 0.0 {
@@ -786,6 +802,7 @@ fn squares(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Checkerboard-shifted spherical sines: sin(p)/r² plus an offset that depends on the colour
 /// of the checkerboard square the point falls in, with optional random jitter.
+#[inline(always)]
 fn sschecks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [ox, oy, _, jitter] = v.params();
     let [inv_size] = v.derived();
@@ -818,6 +835,7 @@ fn tile_hlp_prep(v: &mut Prepared) {
 
 /// tile_hlp: copies the plane and randomly shifts points by one tile width along x, with a
 /// probability that fades smoothly across each tile (a soft half-plane tiling).
+#[inline(always)]
 fn tile_hlp(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [width] = v.params();
     let [width_w] = v.derived();
@@ -835,6 +853,7 @@ fn tile_hlp(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// tile_log: copies the plane at integer x offsets drawn from a two-sided, geometrically
 /// decaying distribution (`spread` its scale).
+#[inline(always)]
 fn tile_log(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [spread] = v.params();
     let l = rng.f01().ln();
@@ -844,6 +863,7 @@ fn tile_log(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Voron: Voronoi cells of hashed seed points (1 … `Num` per grid square of side `Step`);
 /// each point is pulled toward its cell's seed, keeping the fraction K of its offset.
+#[inline(always)]
 fn voron(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k, step, num, xseed, yseed] = v.params();
     let m = trunc_i32((t.x / step).floor());

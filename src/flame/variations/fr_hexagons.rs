@@ -108,6 +108,7 @@ fn hex_modulus_prepare(v: &mut Prepared) {
 
 /// The plane modulo a hexagonal lattice: each point is replaced by its offset from the centre
 /// of its hexagon (cube-coordinate rounding).
+#[inline(always)]
 fn hex_modulus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [hsize, wk] = v.derived();
     let px = t.x * hsize;
@@ -133,6 +134,7 @@ fn hex_modulus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Random hexagons: a random cell of a (2x+1)·(2y+1) hexagonal grid is kept with probability
 /// `density` (by a hash of the cell), and a random point of its hexagon is drawn, shrunk by
 /// hash^power.
+#[inline(always)]
 fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [gx, gy, size, power, density, seed] = v.params();
     let k = rng.f01() * 6.0;
@@ -220,6 +222,7 @@ fn hex_walk_advance(v: &Prepared, six: bool) {
 /// A hexagon chaos game: each call halves the (running sum + point) and adds the next vertex of
 /// a hexagon (or of a triangle, 120° steps), vertices taken in order; with |majp| > 1 the copies
 /// are stacked above and below the plane.
+#[inline(always)]
 fn hexaplay3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, _, zlift] = v.params();
     let [plane, boost, lift, half_scale] = v.derived();
@@ -294,6 +297,7 @@ fn cell_ratio(pts: &[(f64, f64)], centre: usize, u: (f64, f64)) -> f64 {
 
 /// Hexagonal cells: each point is rotated about the centre of its hexagon and its distance
 /// to the centre remapped by a power law, smoothly blended near the cell edges.
+#[inline(always)]
 fn hexes(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     match hexes_cell(v, t) {
         Some((x, y, _)) => [v.w * x, v.w * y, 0.0],
@@ -390,6 +394,7 @@ fn hexnix3d_prepare(v: &mut Prepared) {
 /// A hexagon/triangle chaos game in 3-D: each call rotates and scales the (running sum and)
 /// point about a random vertex of a hexagon (or a triangle) and moves towards it; `majp` stacks
 /// copies above and below the plane, `zlift` scales z. Weights below 0.5 blend with the input.
+#[inline(always)]
 fn hexnix3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [majp, scale, zlift, side3] = v.params();
     let [smooth, plane, boost, gentle, lift, c7, c11] = v.derived();
@@ -581,6 +586,7 @@ fn xtrb_hex(hex: &[f64; 16], al: f64, be: f64, ga: f64, rng: &mut FastRng) -> (f
 
 /// xtrb: a triangular tiling (in trilinear coordinates) with hexagonal bands in each
 /// triangle, followed by a random root of a power map (as julian, n = `power`).
+#[inline(always)]
 fn xtrb(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, radius, width] = v.params();
     let [

@@ -116,6 +116,7 @@ fn hypercrop_prepare(v: &mut Prepared) {
 
 /// Crops the discs of a hyperbolic n-gon tiling: points inside the disc around one of the n
 /// polygon vertices are pushed to its edge (or to the vertex, or to the origin, by `zero`).
+#[inline(always)]
 fn hypercrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, zero] = v.params();
     let [coeff, a0, len, d] = v.derived();
@@ -147,6 +148,7 @@ fn hypershift_prepare(v: &mut Prepared) {
     v.p.push(1.0 - shift * shift);
 }
 
+#[inline(always)]
 fn hypershift(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let [shift] = v.params();
     let [scale] = v.derived();
@@ -178,6 +180,7 @@ fn hypershift2_prepare(v: &mut Prepared) {
 
 /// A hyperbolic {p, q} tiling step: a hyperbolic shift of the scaled point, then a rotation by
 /// a random odd multiple of π/p; z is scaled like the point.
+#[inline(always)]
 fn hypershift2(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [p_] = v.params();
     let [shift, scale, scale2] = v.derived();
@@ -212,6 +215,7 @@ fn hypertile_prepare(v: &mut Prepared) {
 
 /// A Möbius map of the Poincaré disc carrying the origin to the n-th vertex of the {p, q}
 /// hyperbolic tiling's central polygon.
+#[inline(always)]
 fn hypertile(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [re, im] = v.derived();
     let a = t.x + re;
@@ -233,6 +237,7 @@ fn hypertile12_prepare(v: &mut Prepared) {
 }
 
 /// The {p, q} tiling map of `hypertile` towards a random vertex of the central polygon.
+#[inline(always)]
 fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pa, r, whole_p] = v.derived();
     let ang = if v.compat {
@@ -253,6 +258,7 @@ fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// The {p, q} tiling map towards the first vertex, followed by a rotation by a random multiple
 /// of 2π/p.
+#[inline(always)]
 fn hypertile2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pa, r] = v.derived();
     let a = t.x + r;
@@ -300,6 +306,7 @@ fn hypertile3d_prepare(v: &mut Prepared) {
 }
 
 /// The hyperbolic tiling map of `hypertile` extended to 3-D (a Möbius map of the ball).
+#[inline(always)]
 fn hypertile3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [cx, cy, c2, c2x, c2y, s2x, s2y, s2z] = v.derived();
     let r2 = t.sumsq + t.z;
@@ -321,6 +328,7 @@ fn hypertile3d12_prepare(v: &mut Prepared) {
 }
 
 /// The 3-D hyperbolic tiling map towards a random vertex of the central polygon.
+#[inline(always)]
 fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pa, r, c2, s2z] = v.derived();
     let (sa, ca) = (crand(rng) * pa).fsin_cos();
@@ -341,6 +349,7 @@ fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// The 3-D hyperbolic tiling map towards the first vertex, then a random rotation by a
 /// multiple of 2π/p about the z axis.
+#[inline(always)]
 fn hypertile3d2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [pa, cx, c2, s2z, c2x, s2x] = v.derived();
     let s2y = s2z;
@@ -370,6 +379,7 @@ fn ortho_step(x: f64, y: f64, xo: f64, turn: f64) -> (f64, f64) {
 
 /// ortho: moves points along circles orthogonal to the unit circle (by `in` inside the disc,
 /// by `out` for the inverted image of outside points).
+#[inline(always)]
 fn ortho(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [turn_in, turn_out] = v.params();
     let w = v.w;
@@ -422,6 +432,7 @@ fn prep_poincare(v: &mut Prepared) {
 
 /// poincare: two successive inversions in circles of radii c1r, c2r orthogonal to the unit
 /// circle, centred in the directions c1a, c2a (weight not used).
+#[inline(always)]
 fn poincare(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [c1r, _, c2r] = v.params();
     let [c1x, c1y, c2x, c2y] = v.derived();
@@ -451,6 +462,7 @@ fn prep_poincare2(v: &mut Prepared) {
 
 /// poincare2: the hyperbolic translation of the Poincaré disc (z − c)/(1 − c̄·z) that moves the
 /// centre c of a neighbouring tile of the {p, q} tiling to the origin.
+#[inline(always)]
 fn poincare2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [cx, cy] = v.derived();
     let a = t.x - cx;
@@ -483,6 +495,7 @@ fn prep_poincare3d(v: &mut Prepared) {
 
 /// poincare3D: the 3-D Möbius translation of the unit ball moving the point c (of length r,
 /// direction given by the angles a and b) to the origin.
+#[inline(always)]
 fn poincare3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [cx, cy, cz, c2, c2x, c2y, c2z, s2x, s2y, s2z] = v.derived();
     let r2 = t.sumsq + t.z * t.z;

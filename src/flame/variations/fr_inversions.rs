@@ -187,6 +187,7 @@ fn prep_asteria(v: &mut Prepared) {
 /// A four-pointed star: points inside the unit disc but outside the four unit discs centred
 /// on (±1, ±1) stay (65 % of the time, the other points always move); the others are pushed
 /// along a rotated axis onto the star's arms.
+#[inline(always)]
 fn asteria(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [s, c] = v.derived();
     let (x0, y0) = (v.w * t.x, v.w * t.y);
@@ -223,6 +224,7 @@ fn curl3d_prepare(v: &mut Prepared) {
 }
 
 /// The 3-D Möbius-like curl: x ↦ (x + c·r²) / (1 + 2c·x + |c|² r²), with y's term reversed.
+#[inline(always)]
 fn curl3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [cx, cy, cz] = v.params();
     let [c2, c2x, c2y, c2z] = v.derived();
@@ -244,6 +246,7 @@ fn curl_sp_prepare(v: &mut Prepared) {
 
 /// curl with each coordinate first raised to a signed power and the denominator's terms
 /// spread by `sx`/`sy`; also shifts the colour by the denominator (`curl_sp_dc`).
+#[inline(always)]
 fn curl_sp(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [power, c1, c2, sx, sy] = v.params();
     let [c2x2, dc_adjust, power_inv] = v.derived();
@@ -262,6 +265,7 @@ fn curl_sp(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Randomly either spherical inversion (with probability `d_spherical_weight`) or linear.
+#[inline(always)]
 fn d_spherical(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [weight] = v.params();
     if rng.f01() < weight {
@@ -274,6 +278,7 @@ fn d_spherical(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
 
 /// Inside the disc of radius `weight`, shifts each horizontal chord by `shift`·weight, mirroring
 /// points pushed past the chord's end; outside, linear.
+#[inline(always)]
 fn eclipse(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [shift] = v.params();
     let w = v.w;
@@ -293,6 +298,7 @@ fn eclipse(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// Mirrors the inside of the circle of radius |weight| top to bottom (y → −y); outside the
 /// circle the point is only scaled.
+#[inline(always)]
 fn flipcircle(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let y = if t.sumsq > v.w * v.w {
         v.w * t.y
@@ -341,6 +347,7 @@ fn glynnia_maps(w: f64, v2: f64, t: &VarIn, outer: bool, rng: &mut FastRng) -> V
 
 /// A random choice between two square-root–like maps of the plane (Glynn's "glynnia"), with
 /// different branches inside and outside the unit circle.
+#[inline(always)]
 fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [v2] = v.derived();
     if v.compat {
@@ -359,6 +366,7 @@ fn glynnia(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// glynnia with the branch chosen by the upper half-plane (y > 0) instead of the unit circle.
+#[inline(always)]
 fn glynnia2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [v2] = v.derived();
     glynnia_maps(v.w, v2, t, t.sqrt > 0.0 && t.y > 0.0, rng)
@@ -395,6 +403,7 @@ fn glynn1_ring(radius1: f64, thickness: f64, cx: f64, cy: f64, rng: &mut FastRng
 /// Glynn's "GlynnSim1": points inside the circle of radius `radius` become a small ring centred
 /// on that circle at angle `phi1`; outside points are randomly pulled inwards, and those that
 /// land in the small ring are replaced by ring points.
+#[inline(always)]
 fn glynnsim1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, radius1, _, thickness, contrast] = v.params();
     let [cx, cy, pow] = v.derived();
@@ -422,6 +431,7 @@ fn glynnsim2_prepare(v: &mut Prepared) {
 
 /// Glynn's "GlynnSim2": points inside the circle of radius `radius` become an arc (from `Phi1`
 /// to `Phi2` degrees) of a ring just outside it; outside points are randomly pulled inwards.
+#[inline(always)]
 fn glynnsim2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, thickness, contrast] = v.params();
     let [pow, phi10, gam, delta] = v.derived();
@@ -456,6 +466,7 @@ fn glynnsim3_prepare(v: &mut Prepared) {
 
 /// Glynn's "GlynnSim3": points inside radius + thickness land on one of two circles (radii
 /// radius + thickness and radius²/(radius + thickness)); outside points are randomly pulled in.
+#[inline(always)]
 fn glynnsim3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, _, _, contrast, pow] = v.params();
     let [radius1, radius2, gam] = v.derived();
@@ -472,6 +483,7 @@ fn glynnsim3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Glynn's "GlynnSim4": points inside the circle collapse onto the point (X, Y); outside points
 /// are randomly pulled in.
+#[inline(always)]
 fn glynnsim4(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, contrast, pow, px, py] = v.params();
     if t.sqrt < radius {
@@ -483,6 +495,7 @@ fn glynnsim4(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Glynn's "GlynnSim5": points inside radius + thickness go to the origin; outside points are
 /// either kept or sent to the diagonal point (α², α²).
+#[inline(always)]
 fn glynnsim5(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [radius, thickness, contrast, pow] = v.params();
     if t.sqrt < radius + thickness {
@@ -499,6 +512,7 @@ fn glynnsim5(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A drop of ink at (x, y) with radius `r`: every point is pushed radially away from the drop
 /// centre so that the drop's area is inserted (√(d² + r²) − d).
+#[inline(always)]
 fn inkdrop(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [r, cx, cy] = v.params();
     let dx = t.x - cx;
@@ -537,6 +551,7 @@ fn prep_loonie2(v: &mut Prepared) {
 /// loonie2: loonie with a polygon/star/circle-shaped hole (compatible mode): points inside the
 /// shape of "radius" weight are pushed outwards. With the compatibility switch off: a
 /// polygonal inversion that maps the unit disc's inside out onto a `power`-gon.
+#[inline(always)]
 fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [sides] = v.params();
     let [
@@ -599,6 +614,7 @@ fn loonie2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// loonie3: loonie with a hole bounded by the circle through the origin tangent to the y axis
 /// (|r²/x| < weight): points inside are pushed out, the others only scaled.
+#[inline(always)]
 fn loonie3(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [w2] = v.derived();
     let r2 = if t.x > f64::EPSILON {
@@ -615,6 +631,7 @@ fn loonie3(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// loonie_3D: loonie in 3-D; a zero z is replaced by the point's angle, and z comes out halved.
+#[inline(always)]
 fn loonie_3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [w2] = v.derived();
     let z = if t.z == 0.0 { t.atan_yx } else { t.z };
@@ -628,6 +645,7 @@ fn loonie_3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 
 }
 
 /// ovoid: spherical inversion with separate x and y stretches.
+#[inline(always)]
 fn ovoid(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [scale_x, scale_y] = v.params();
     let k = v.w / zeps(t.sumsq);
@@ -635,6 +653,7 @@ fn ovoid(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// ovoid3d: 3-D spherical inversion with separate x, y and z stretches.
+#[inline(always)]
 fn ovoid3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [scale_x, scale_y, scale_z] = v.params();
     let k = v.w / zeps(t.sumsq + t.z * t.z);
@@ -657,6 +676,7 @@ fn clamp_nan_low(x: f64, lo: f64, hi: f64) -> f64 {
 
 /// An inversion softened near the origin: w²·p / (r²·(1/r² + (2/π)²)), i.e. the spherical
 /// map with its blow-up at the centre rounded off.
+#[inline(always)]
 fn roundspher(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let r2 = zeps(t.sumsq);
     let e = 1.0 / r2 + FRAC_2_PI * FRAC_2_PI;
@@ -666,6 +686,7 @@ fn roundspher(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// The 3-D rounded inversion; a zero z is replaced by cos(r), and the z summed so far (or
 /// cos(r) if it is zero) is carried into the output z instead of being added to.
+#[inline(always)]
 fn roundspher3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let other = if v.form == Form::Pre { t.z } else { acc.z };
     let tz = if t.z == 0.0 { t.sqrt.fcos() } else { t.z };
@@ -684,6 +705,7 @@ fn roundspher3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// scry in 3-D: p / (|p|·(|p|² + 1/w)); a zero z is replaced by the polar angle.
+#[inline(always)]
 fn scry_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [inv_w] = v.derived();
     let d2 = t.sumsq + t.z * t.z;
@@ -699,6 +721,7 @@ fn inv_weight_prep(v: &mut Prepared) {
 
 /// Outside the unit circle, randomly either the spherical inversion p/r² or the identity;
 /// inside it, the origin.
+#[inline(always)]
 fn spher(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let r2 = zeps(t.sumsq);
     if r2 > 1.0 {
@@ -710,6 +733,7 @@ fn spher(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// Spherical inversion in 3-D: p / |p|².
+#[inline(always)]
 fn spherical3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w / zeps(t.sumsq + t.z * t.z);
     [k * t.x, k * t.y, k * t.z]
@@ -717,6 +741,7 @@ fn spherical3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Pushes every point of 3-D space `radius` further from the origin (along its direction),
 /// hollowing out a spherical void.
+#[inline(always)]
 fn spherivoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [radius] = v.params();
     let zr = (t.z * t.z + t.sqrt * t.sqrt).sqrt();
@@ -732,6 +757,7 @@ fn spherivoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A 3-D spherical inversion with a separate power of |p|² per axis; z only when `zOn` is 1
 /// (otherwise 0).
+#[inline(always)]
 fn sphyp3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [stretch_x, stretch_y, stretch_z, z_on] = v.params();
     let d = zeps(t.sumsq + t.z * t.z);
@@ -755,6 +781,7 @@ fn trade_prep(v: &mut Prepared) {
 
 /// trade: swaps two discs — points inside the disc right of the y axis (radius r1) move,
 /// rescaled and mirrored, into the disc left of it (radius r2), and vice versa.
+#[inline(always)]
 fn trade(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [r1, _, r2] = v.params();
     let [c1, c2] = v.derived();
@@ -780,6 +807,7 @@ fn trade(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// twoface: the right half-plane inverted (divided by r²), the left half passed through.
+#[inline(always)]
 fn twoface(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let mut r = v.w;
     if t.x > 0.0 {

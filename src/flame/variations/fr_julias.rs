@@ -138,6 +138,7 @@ fn julia3d_prepare(v: &mut Prepared) {
     v.p.extend_from_slice(&[n.abs(), (1.0 / n - 1.0) / 2.0]);
 }
 
+#[inline(always)]
 fn julia3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [n] = v.params();
     let [abs_n, expo] = v.derived();
@@ -157,6 +158,7 @@ fn julia3dq_prepare(v: &mut Prepared) {
 
 /// julia3D with a rational power divisor/power and Fractorium's wide random branch choice
 /// (any multiple of 2π/power).
+#[inline(always)]
 fn julia3dq(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [inv, abs_inv, half_inv, step] = v.derived();
     let ang = t.atan_yx * inv + crand(rng) * step;
@@ -175,6 +177,7 @@ fn prep_julia3dz(v: &mut Prepared) {
 
 /// julia3Dz: the n-th root julia map in the plane (one of |n| branches at random); z is scaled by
 /// the same radial factor over the input radius, making a 3-D cone of julia sheets.
+#[inline(always)]
 fn julia3dz(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [n] = v.params();
     let [abs_n, exponent] = v.derived();
@@ -196,6 +199,7 @@ fn prep_juliac(v: &mut Prepared) {
 
 /// Juliac: a complex power z^(1/(re + i·im/100)) with a random integer winding; the imaginary
 /// part of the exponent spirals the branches.
+#[inline(always)]
 fn juliac(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [half_dist, re_inv, period, im_scaled] = v.derived();
     let turn = (rng.u32() as f64) % period;
@@ -224,6 +228,7 @@ fn prep_julian2(v: &mut Prepared) {
 
 /// julian2: julian (the power-th root with a random branch) applied after its own affine map
 /// (a b c d e f) of the input point.
+#[inline(always)]
 fn julian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [a, b, c, d, e, f] = v.params();
     let [power, abs_n, exponent] = v.derived();
@@ -247,6 +252,7 @@ fn prep_julian3dx(v: &mut Prepared) {
 
 /// julian3Dx: a 3-D julian whose planar angle comes from an affine-transformed copy of the
 /// point; the radius combines the planar radius and z scaled by 1/|power|.
+#[inline(always)]
 fn julian3dx(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, power, a, b, c, d, e, f] = v.params();
     let [abs_n, exponent] = v.derived();
@@ -269,6 +275,7 @@ fn prep_julianab(v: &mut Prepared) {
 
 /// juliaNab: a julia-like root whose angle is taken from (|x|^separ, y), with an exponent scaled
 /// by `a` and both outputs shifted by `b`; z passes through (and the running z is reset).
+#[inline(always)]
 fn julianab(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [n, a, b, separ] = v.params();
     let [abs_n, exponent] = v.derived();
@@ -290,6 +297,7 @@ fn prep_juliaq(v: &mut Prepared) {
 
 /// juliaq: the rational power z^(divisor/power), with a random multiple of 2π/power added to
 /// the angle.
+#[inline(always)]
 fn juliaq(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [half_ratio, ratio, step] = v.derived();
     let ang = t.atan_yx * ratio + crand(rng) * step;
@@ -313,6 +321,7 @@ fn prep_npolar(v: &mut Prepared) {
 
 /// npolar: with odd parity a julian-style n-th root; with even parity the same root taken of
 /// the point's log-polar image, the result mapped back through the log-polar map.
+#[inline(always)]
 fn npolar(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [parity] = v.params();
     let [nnz, vvar, vvar2, abs_n, exponent, odd] = v.derived();
@@ -351,6 +360,7 @@ fn prep_phoenix_julia(v: &mut Prepared) {
 
 /// phoenix_julia: a julia-style root whose angle is taken from the point stretched by
 /// (1 + x_distort, 1 + y_distort); z is scaled in compatible mode.
+#[inline(always)]
 fn phoenix_julia(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power, _, xd, yd] = v.params();
     let [inv_n, step, exponent] = v.derived();
@@ -374,6 +384,7 @@ fn prep_pow_block(v: &mut Prepared) {
 
 /// pow_block: the power z^(numerator/denominator·corrections) with a random root branch
 /// (scaled by `root`), the angle taken as numerator·(θ + 2π·k·root)/denominator.
+#[inline(always)]
 fn pow_block(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [num, den, root] = v.params();
     let [power] = v.derived();
@@ -385,6 +396,7 @@ fn pow_block(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// An inversion r → 1/r^dist copied into `power` random rotated sectors (x and y swapped with
 /// flam3 compatibility off).
+#[inline(always)]
 fn spherical_n(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power, dist] = v.params();
     let [step] = v.derived();
@@ -418,6 +430,7 @@ fn wavesn_prep(v: &mut Prepared) {
 
 /// wavesn: a random n-th root (julian-like, n = `power`) followed by waves whose amplitude
 /// can grow with distance (`incx`, `incy`).
+#[inline(always)]
 fn wavesn(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [freqx, freqy, scalex, scaley, incx, incy] = v.params();
     let [power, roots, cn] = v.derived();

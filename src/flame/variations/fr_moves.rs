@@ -66,6 +66,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// Gives the point a random depth: z = max(weight, 0) with probability `root_face`, else uniform
 /// in [0, weight). As a regular variation it contributes nothing to x, y and overwrites the
 /// running z; as pre_/post_ it keeps x, y.
+#[inline(always)]
 fn extrude(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [root_face] = v.params();
     let z = if rng.f01() < root_face {
@@ -83,6 +84,7 @@ fn extrude(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// Drops the z coordinate: as a regular variation it zeroes the xform's running z and adds
 /// nothing; as pre_/post_ it keeps x and y and sets z to 0.
+#[inline(always)]
 fn flatten(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     if v.form == Form::Regular {
         acc.z = 0.0;
@@ -93,12 +95,14 @@ fn flatten(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Mirrors the lower half-plane (y > 0) left to right.
+#[inline(always)]
 fn flipx(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let x = if t.y > 0.0 { -(v.w * t.x) } else { v.w * t.x };
     [x, v.w * t.y, 0.0]
 }
 
 /// Mirrors the right half-plane (x > 0) top to bottom.
+#[inline(always)]
 fn flipy(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let y = if t.x > 0.0 { -(v.w * t.y) } else { v.w * t.y };
     [v.w * t.x, y, 0.0]
@@ -107,11 +111,13 @@ fn flipy(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 const MIRROR_FLAGS: u32 = flag::RANDOM | flag::USES_Z | flag::WRITES_Z | flag::WRITES_ACC;
 
 /// linear3D: the identity in 3-D, scaled by the weight.
+#[inline(always)]
 fn linear3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [v.w * t.x, v.w * t.y, v.w * t.z]
 }
 
 /// linearT: each coordinate raised to its own power, keeping its sign.
+#[inline(always)]
 fn linear_t(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [pow_x, pow_y] = v.params();
     [
@@ -122,6 +128,7 @@ fn linear_t(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// linearT3D: linearT in 3-D (z with its own power).
+#[inline(always)]
 fn linear_t3d(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [pow_x, pow_y, pow_z] = v.params();
     [
@@ -155,6 +162,7 @@ fn prep_point_symmetry(v: &mut Prepared) {
 
 /// point_symmetry: rotates the point (scaled by the weight about the centre) about the centre
 /// by a random multiple of 2π/order.
+#[inline(always)]
 fn point_symmetry(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [cx, cy, order] = v.params();
     let [step] = v.derived();
@@ -171,6 +179,7 @@ fn degrees_sin_cos(deg: f64) -> (f64, f64) {
 }
 
 /// A rotation of the plane by `angle` degrees.
+#[inline(always)]
 fn rotate(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [s, c] = v.derived();
     [v.w * (t.x * c - t.y * s), v.w * (t.x * s + t.y * c), 0.0]
@@ -196,6 +205,7 @@ fn quarter_turns_prep(v: &mut Prepared) {
 
 /// A 3-D rotation about the x axis by w quarter turns (the weight is the angle). x passes
 /// through unweighted, replacing the x that earlier variations summed.
+#[inline(always)]
 fn rotate_x(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let [s, c] = v.derived();
     if v.form == Form::Regular {
@@ -206,6 +216,7 @@ fn rotate_x(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A 3-D rotation about the y axis by w quarter turns (the weight is the angle). y passes
 /// through unweighted, replacing the y that earlier variations summed.
+#[inline(always)]
 fn rotate_y(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let [s, c] = v.derived();
     let y = if v.form == Form::Regular {
@@ -219,6 +230,7 @@ fn rotate_y(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A rotation about the z axis by w quarter turns (the weight is the angle). z passes through
 /// unweighted, replacing the z that earlier variations summed.
+#[inline(always)]
 fn rotate_z(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let [s, c] = v.derived();
     if v.form == Form::Regular {
@@ -228,6 +240,7 @@ fn rotate_z(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// A translation by (x, y) rotated by `angle` degrees (the y offset mirrored).
+#[inline(always)]
 fn shift(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [dx, dy] = v.params();
     let [s, c] = v.derived();
@@ -240,6 +253,7 @@ fn shift(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// zcone: z set to the distance from the z axis (a cone); as a pre_/post_ form x and y pass
 /// through.
+#[inline(always)]
 fn zcone(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let z = v.w * t.sqrt;
     if v.form == Form::Regular {
@@ -250,11 +264,13 @@ fn zcone(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// zscale: z scaled by the weight (x, y contribute nothing).
+#[inline(always)]
 fn zscale(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [0.0, 0.0, v.w * t.z]
 }
 
 /// ztranslate: z shifted by the weight.
+#[inline(always)]
 fn ztranslate(v: &Prepared, _: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     [0.0, 0.0, v.w]
 }

@@ -88,6 +88,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// A different map in each quadrant: spherical where x, y > 0, loonie where x > 0 > y,
 /// a lazysusan-like swirl (centre (x, −y) params, `spin`, `twist`, `space`) where x < 0 < y,
 /// linear elsewhere.
+#[inline(always)]
 fn fourth(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [spin, space, twist, cx, cy] = v.params();
     let w = v.w;
@@ -121,12 +122,14 @@ fn fourth(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// One step of the Hénon map: (1 − a·x² + y, b·x).
+#[inline(always)]
 fn henon(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a, b] = v.params();
     [(1.0 - a * (t.x * t.x) + t.y) * v.w, b * t.x * v.w, 0.0]
 }
 
 /// lozi: the Lozi map (1 − a·|x| + y, b·x).
+#[inline(always)]
 fn lozi(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [a, b] = v.params();
     [(1.0 - (a * t.x.abs()) + t.y) * v.w, b * t.x * v.w, 0.0]
@@ -134,6 +137,7 @@ fn lozi(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// mcarpet: a damped scaling x·r·(x, y)/(1 + r²/4) plus a Lozi/Hénon-like term
 /// (1 − twist·x² + y, tilt·x).
+#[inline(always)]
 fn mcarpet(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [sx, sy, twist, tilt] = v.params();
     let k = v.w / (t.sumsq * 0.25 + 1.0);
@@ -144,6 +148,7 @@ fn mcarpet(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// polynomial: per coordinate a signed power of |weight·u| plus a linear term lc·u and a
 /// constant sc; z is scaled by the weight.
+#[inline(always)]
 fn polynomial(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [powx, powy, lcx, lcy, scx, scy] = v.params();
     let aw = v.w.abs();
@@ -157,6 +162,7 @@ fn polynomial(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3
 }
 
 /// A projective (homographic) map of the plane: two affine forms divided by a third.
+#[inline(always)]
 fn projective(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a, b, c, a1, b1, c1, a2, b2, c2] = v.params();
     let s = v.w / zeps(a * t.x + b * t.y + c);
@@ -169,6 +175,7 @@ fn projective(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// One step of a quadratic planar ODE: each output coordinate is a general quadratic
 /// polynomial of x and y (the weight scales only the x term of x' and the y term of y').
+#[inline(always)]
 fn q_ode(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [
         q_ode01,
@@ -201,6 +208,7 @@ fn unicorngaloshen_prep(v: &mut Prepared) {
 
 /// unicorngaloshen: a quadratic map (x − y)(x + m_y·y), x·y divided by an elliptic radius,
 /// with optional sine modulation of its two factors (by x, y, e⁻ˣ, 1/x, log|x| or angles).
+#[inline(always)]
 fn unicorngaloshen(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [mx, my, sine, ax, _, ay, _, mode] = v.params();
     let [pi_fx, pi_fy] = v.derived();
@@ -237,6 +245,7 @@ fn xheart_prep(v: &mut Prepared) {
 
 /// xheart: a heart shape — the point is shrunk by 1/(r² + 4), stretched, rotated by 45°
 /// (adjustable), and its left half mirrored in x.
+#[inline(always)]
 fn xheart(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [c, s, rat] = v.derived();
     let mut den = t.sumsq + 4.0;

@@ -61,6 +61,7 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 /// Quaternion hyperbolic cosine of (x, y, z) taken as x + y·i + z·j.
+#[inline(always)]
 fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = (t.y * t.y + t.z * t.z).sqrt();
     let (s, c) = m.fsin_cos();
@@ -70,6 +71,7 @@ fn coshq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Quaternion cosine of (x, y, z) taken as x + y·i + z·j.
+#[inline(always)]
 fn cosq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let m = (t.y * t.y + t.z * t.z).sqrt();
     let (s, c) = t.x.fsin_cos();
@@ -80,6 +82,7 @@ fn cosq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Quaternion hyperbolic cotangent of (x, y, z) taken as x + y·i + z·j (Fractorium's form, whose
 /// normalisation divides by |q|⁴).
+#[inline(always)]
 fn cothq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz2 = t.y * t.y + t.z * t.z;
     let m = yz2.sqrt();
@@ -93,6 +96,7 @@ fn cothq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Quaternion cotangent of (x, y, z) taken as x + y·i + z·j (Fractorium's form, normalised by
 /// |q|²).
+#[inline(always)]
 fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let yz2 = t.y * t.y + t.z * t.z;
     let m = yz2.sqrt();
@@ -106,6 +110,7 @@ fn cotq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Hyperbolic cosecant of the quaternion x + (y, z): 1/sinh(q).
+#[inline(always)]
 fn cschq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
@@ -116,6 +121,7 @@ fn cschq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Cosecant of the quaternion x + (y, z): 1/sin(q).
+#[inline(always)]
 fn cscq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
@@ -126,6 +132,7 @@ fn cscq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// Exponential of the quaternion x + (y, z).
+#[inline(always)]
 fn estiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let av = (t.y * t.y + t.z * t.z).sqrt();
     let e = t.x.exp();
@@ -141,6 +148,7 @@ fn prep_loq(v: &mut Prepared) {
 
 /// loq: the quaternion logarithm of (x, y, z) in base `base`: log of the norm on x, the unit
 /// imaginary part times the angle on (y, z).
+#[inline(always)]
 fn loq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [scale] = v.derived();
     let im = (t.y * t.y + t.z * t.z).sqrt();
@@ -150,6 +158,7 @@ fn loq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 
 /// mobiq: a quaternion Möbius map (A·q + B)(C·q + D)⁻¹ of q = x + y·i + z·j, each coefficient a
 /// quaternion (t, x, y, z).
+#[inline(always)]
 fn mobiq(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let (n, d2) = mobius_quotient(&v.params(), [t.x, t.y, t.z]);
     let inv = v.w / d2;
@@ -206,6 +215,7 @@ fn imag_len(t: &VarIn) -> f64 {
 }
 
 /// Quaternion hyperbolic secant of (x, y, z, 0): 1/cosh q.
+#[inline(always)]
 fn sechq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
@@ -216,6 +226,7 @@ fn sechq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Quaternion secant of (x, y, z, 0): 1/cos q.
+#[inline(always)]
 fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let ni = v.w / zeps(t.sumsq + t.z * t.z);
@@ -226,6 +237,7 @@ fn secq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Quaternion hyperbolic sine of (x, y, z, 0).
+#[inline(always)]
 fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let (s, c) = a.fsin_cos();
@@ -235,6 +247,7 @@ fn sinhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Quaternion sine of (x, y, z, 0).
+#[inline(always)]
 fn sinq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = imag_len(t);
     let (s, c) = t.x.fsin_cos();
@@ -244,6 +257,7 @@ fn sinq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// tanhq: the hyperbolic tangent of the quaternion (x, y, z, 0).
+#[inline(always)]
 fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (x, y, z) = (t.x, t.y, t.z);
     let yz_sq = sqr(y) + sqr(z);
@@ -258,6 +272,7 @@ fn tanhq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// tanq: the tangent of the quaternion (x, y, z, 0).
+#[inline(always)]
 fn tanq(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (x, y, z) = (t.x, t.y, t.z);
     let yz_sq = sqr(y) + sqr(z);

@@ -197,6 +197,7 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 /// Cardioid-like radial warp: r ← √(r² + sin(a·θ) + 1), angle kept.
+#[inline(always)]
 fn cardioid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a] = v.params();
     let r = v.w * (t.sumsq + (t.atan_yx * a).fsin() + 1.0).sqrt();
@@ -205,6 +206,7 @@ fn cardioid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Squares to circles: the square of half-side s becomes the circle of radius (4w/π)·s + hole,
 /// the position along the square's perimeter becoming the angle.
+#[inline(always)]
 fn circlize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [hole] = v.params();
     let (side, per) = square_arc(t.x, t.y);
@@ -214,6 +216,7 @@ fn circlize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// `circlize` with the hole inside the weight: radius w·(s + hole).
+#[inline(always)]
 fn circlize2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [hole] = v.params();
     let (side, per) = square_arc(t.x, t.y);
@@ -223,6 +226,7 @@ fn circlize2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Radial scaling by `scale` inside the unit circle and by 1/scale outside it.
+#[inline(always)]
 fn circus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [scale] = v.params();
     let r = if t.sqrt <= 1.0 {
@@ -244,6 +248,7 @@ fn prep_collideoscope(v: &mut Prepared) {
 
 /// Kaleidoscope of `num` sectors per half-turn: alternate sectors are rotated by ±πa/num
 /// (modulo the sector), mirrored between the upper and lower half-planes.
+#[inline(always)]
 fn collideoscope(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [n_pi, pi_n, a_n] = v.derived();
     let a = t.atan_yx;
@@ -261,6 +266,7 @@ fn collideoscope(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Maps the point to (weight / r, angle): unweighted polar angle on y.
+#[inline(always)]
 fn curvature(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [v.w / zeps(t.sqrt), t.atan_yx, 0.0]
 }
@@ -272,6 +278,7 @@ fn epispiral_prepare(v: &mut Prepared) {
 
 /// Maps the point's direction θ onto the epispiral r = 1/cos(nθ), shifted by `holes` and
 /// randomly thickened.
+#[inline(always)]
 fn epispiral(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [n] = v.params();
     let [thick_w, holes_w] = v.derived();
@@ -292,6 +299,7 @@ fn epispiral(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 /// A disc folded the other way: the distance from the origin picks the angle 2π/(r+1) and the
 /// polar angle picks the radius (from 0 at angle −π to 1 at π).
+#[inline(always)]
 fn fdisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let ang = TAU / (t.sqrt + 1.0);
     let rad = (t.atan_yx * FRAC_1_PI + 1.0) * 0.5;
@@ -307,6 +315,7 @@ fn flowerdb_prepare(v: &mut Prepared) {
 
 /// A rose: the radius is scaled by |(spread + sin(petals·θ))·cos(petals·split·θ)|, giving
 /// `petals` lobes, each split in two when `split` is non-zero.
+#[inline(always)]
 fn flowerdb(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [petals, _, spread] = v.params();
     let [split_petals] = v.derived();
@@ -321,6 +330,7 @@ fn flowerdb(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Opens a hole at the origin whose size varies with the polar angle (power `a`); with
 /// `inside` the plane is squeezed into the hole instead.
+#[inline(always)]
 fn hole(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a, inside] = v.params();
     let delta = (t.atan_yx / PI + 1.0).powf(a);
@@ -333,6 +343,7 @@ fn hole(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// An inverted disc: the angle is π/(r + 1), the radius the polar angle over π.
+#[inline(always)]
 fn idisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (s, c) = (PI / (t.sqrt + 1.0)).fsin_cos();
     let r = t.atan_yx * (v.w * FRAC_1_PI);
@@ -348,6 +359,7 @@ fn prep_kaleidoscope(v: &mut Prepared) {
 
 /// Kaleidoscope: rotates the plane by 45° (scaling by `rotate`) and splits it along y = 0, the
 /// two halves being pushed apart by `pull` and shifted by `line_up`; the weight is not used.
+#[inline(always)]
 fn kaleidoscope(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [s45, c45] = v.derived();
     kaleidoscope_turned(v, t, s45, c45)
@@ -382,6 +394,7 @@ fn prep_lazyjess(v: &mut Prepared) {
 /// lazyjess: inside a regular n-gon (of circumradius tied to the weight) points are spun by
 /// `spin`; spun corners that leave the polygon are mirrored back; outside points are pushed out
 /// by `space`.
+#[inline(always)]
 fn lazyjess(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [n, spin, space] = v.params();
     let [vertex, sin_vertex, slice, half_slice, corner_turn] = v.derived();
@@ -432,6 +445,7 @@ fn prep_lazytravis(v: &mut Prepared) {
 /// lazyTravis: each point's square ring (max(|x|, |y|)) is treated as a loop of perimeter 8s
 /// and the point is slid along it (by `spin_in` inside the weight square, `spin_out` outside,
 /// where the rings are also spaced out by `space`).
+#[inline(always)]
 fn lazytravis(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [_, _, space] = v.params();
     let [turn_in, turn_out] = v.derived();
@@ -503,6 +517,7 @@ fn polygon_sector(dang: f64) -> (f64, f64, f64) {
 
 /// scry's inversion followed by a map that turns circles into regular polygons with `power`
 /// sides.
+#[inline(always)]
 fn scry2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [alpha, half_tan2] = v.derived();
     let r2 = t.sumsq;
@@ -526,6 +541,7 @@ fn scry2_prep(v: &mut Prepared) {
 
 /// Shreds the plane into `n` angular wedges, each squeezed to `width` of its angle, leaving
 /// empty spokes between them; z is scaled.
+#[inline(always)]
 fn shredrad(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, width] = v.params();
     let [alpha] = v.derived();
@@ -545,6 +561,7 @@ fn shredrad_prep(v: &mut Prepared) {
 /// Turns circles around the origin into regular polygons with `power` sides; corners can be
 /// rounded (`roundstr`, `roundwidth`), the effect strengthened or inverted (`distortion`), and
 /// the angular spacing compensated.
+#[inline(always)]
 fn smartshape(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, roundstr, roundwidth, distortion] = v.params();
     let [alpha, alpha_coeff, round_coeff, comp] = v.derived();
@@ -593,6 +610,7 @@ fn smartshape_prep(v: &mut Prepared) {
 
 /// Maps the plane onto squares: the circle of radius r becomes the square of half-side r, the
 /// angle becoming the arc length along its boundary.
+#[inline(always)]
 fn squarize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let r = t.sqrt;
     let a = if t.atan_yx < 0.0 {
@@ -607,6 +625,7 @@ fn squarize(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Squares are squished into a random one of `power` portions of the square ring they lie on:
 /// the arc length along the square boundary is divided by `power` and shifted by a random
 /// number of full turns.
+#[inline(always)]
 fn squish(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [power] = v.params();
     let [inv] = v.derived();
@@ -634,6 +653,7 @@ fn squish_prep(v: &mut Prepared) {
 }
 
 /// swirl3: a logarithmic spiral twist — each point turns by `shift`·ln r.
+#[inline(always)]
 fn swirl3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [shift] = v.params();
     let r = t.sqrt;
@@ -653,6 +673,7 @@ fn swirl3r_prep(v: &mut Prepared) {
 
 /// swirl3r: swirl3's logarithmic twist restricted to a radius band; inside and outside the
 /// band the twist stays at its value on the nearer edge (rigid rotation).
+#[inline(always)]
 fn swirl3r(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [shift] = v.params();
     let [lo, hi, twist_lo, twist_hi] = v.derived();
@@ -690,12 +711,14 @@ fn target_angle(a: f64, t: f64, v: &Prepared) -> f64 {
 
 /// target: concentric rings of equal width in log r, alternately rotated by two angles
 /// (Fractorium's version ignores the weight).
+#[inline(always)]
 fn target(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = target_angle(t.atan_yx, t.sqrt.ln(), v);
     [t.sqrt * a.fcos(), t.sqrt * a.fsin(), 0.0]
 }
 
 /// target0: target, weighted.
+#[inline(always)]
 fn target0(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = target_angle(t.atan_yx, t.sqrt.ln(), v);
     [t.sqrt * a.fcos() * v.w, t.sqrt * a.fsin() * v.w, 0.0]
@@ -703,6 +726,7 @@ fn target0(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// target2: target with spiral rings — the ring coordinate also grows with the angle, and
 /// `thightness` scales log r.
+#[inline(always)]
 fn target2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, tightness] = v.params();
     let a = t.atan_yx;
@@ -718,6 +742,7 @@ fn unpolar_prep(v: &mut Prepared) {
 }
 
 /// unpolar: the inverse of polar — x read as an angle and y as log-radius.
+#[inline(always)]
 fn unpolar(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.derived();
     let r = t.y.exp();
@@ -820,6 +845,7 @@ fn shape_total(shape: &ShapeParams, derived: [f64; 5], a: f64) -> f64 {
 
 /// w: points inside the shape profile (the profile at their own angle) are rotated by
 /// `w_angle` and rescaled to the profile at the new angle; points outside pass through.
+#[inline(always)]
 pub(super) fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [angle, shape @ ..] = v.params::<14>();
     let d = v.derived();
@@ -844,6 +870,7 @@ pub(super) fn w_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3
 }
 
 /// x: the radius pushed out to √(r² + profile²) along each ray.
+#[inline(always)]
 pub(super) fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
@@ -853,6 +880,7 @@ pub(super) fn x_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3
 }
 
 /// y: inversion in the shape profile — radius profile²/r along each ray.
+#[inline(always)]
 pub(super) fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
@@ -862,6 +890,7 @@ pub(super) fn y_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3
 }
 
 /// z: the radius increased by the shape profile along each ray.
+#[inline(always)]
 pub(super) fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let a = t.atan_yx;
     let reach = shape_total(&v.params(), v.derived(), a);
@@ -872,6 +901,7 @@ pub(super) fn z_var(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3
 
 /// wdisc: a disc-like map — the angle/π becomes the radius and the radius bends the
 /// direction (mirrored for positive angles).
+#[inline(always)]
 fn wdisc(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let mut a = PI / (t.sqrt + 1.0);
     let r = t.atan_yx * FRAC_1_PI;

@@ -185,6 +185,7 @@ fn synth_sin_cos(v: &Prepared, theta: f64, smooth: i32) -> (f64, f64) {
 
 /// synth: one of 27 classic shapes (spherical, bubble, blurs, shifts, swirl, julia, …) whose
 /// radius or angle is reshaped by a configurable sum of periodic waves.
+#[inline(always)]
 fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, mode] = v.params();
     synth_shape(v, t, rng, mode as i32)

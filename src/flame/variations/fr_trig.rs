@@ -40,12 +40,14 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 /// (w/10)·(cos y / tan x, −y / sin x): a field of split, mirrored bands.
+#[inline(always)]
 fn bisplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w * 0.1;
     [k / t.x.tan() * t.y.fcos(), k / t.x.fsin() * -t.y, 0.0]
 }
 
 /// Crescents: (sin x, cos x) scaled by sin²x·(cosh y + 1).
+#[inline(always)]
 fn crescents(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let (s, c) = t.x.fsin_cos();
     let k = (fm::cosh(t.y) + 1.0) * (s * s);
@@ -53,12 +55,14 @@ fn crescents(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Squeezes x into (−1, 1) by x/√(x²+1); y unchanged.
+#[inline(always)]
 fn cylinder2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     [v.w * (t.x / zeps((t.x * t.x + 1.0).sqrt())), v.w * t.y, 0.0]
 }
 
 /// tanh of each coordinate, scaled by sec(y) + effect·π: a funnel opening along the bands
 /// where cos y vanishes.
+#[inline(always)]
 fn funnel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [effect] = v.params();
     let k = 1.0 / zeps(t.y.fcos()) + effect * PI;
@@ -66,6 +70,7 @@ fn funnel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// mask: sin³x·(cosh y + 1) and sin²x·cos x·(cosh y + 1), divided by r².
+#[inline(always)]
 fn mask(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let d = v.w / zeps(t.sumsq);
     let (sx, cx) = (t.x.fsin(), t.x.fcos());
@@ -75,6 +80,7 @@ fn mask(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 }
 
 /// petal: cos x·(cos x·cos y)³ and cos x·(sin x·cos y)³.
+#[inline(always)]
 fn petal(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let (sx, cx) = (t.x.fsin(), t.x.fcos());
     let cy = t.y.fcos();
@@ -91,6 +97,7 @@ fn finite_non_negative(x: f64) -> f64 {
 
 /// Rays from the axes: r²/x and r²/y scaled by 1/tan(r) (plus a weight-dependent constant),
 /// z scaled by the weight. Replaces the x and y that earlier variations summed.
+#[inline(always)]
 fn rays1(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let u = 1.0 / zeps(t.sqrt.tan()) + v.w * (FRAC_2_PI * FRAC_2_PI);
     if v.form == Form::Regular {
@@ -103,6 +110,7 @@ fn rays1(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Rays from the axes: r²/x and r²/y scaled by sec(r²·tan(1/r²)) and w/10, z scaled by the
 /// weight. Replaces the x and y that earlier variations summed.
+#[inline(always)]
 fn rays2(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let r2 = t.sumsq;
     let u = 1.0 / (r2 * (1.0 / zeps(r2)).tan()).fcos();
@@ -116,6 +124,7 @@ fn rays2(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Rays from the axes: r²/x and r²/y modulated by cos(r²) and tan(r²) and a factor built from
 /// r⁴, z scaled by the weight. Replaces the x and y that earlier variations summed.
+#[inline(always)]
 fn rays3(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let r2 = t.sumsq;
     let r4 = r2 * r2;
@@ -133,6 +142,7 @@ fn rays3(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// x scaled by tanh(r²), y by cos(r²): horizontal saturation and vertical rippling.
+#[inline(always)]
 fn rippled(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let d = zeps(t.sumsq);
     let h = v.w / 2.0;
@@ -145,6 +155,7 @@ fn rippled(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// A logistic squashing of each axis into (-|w|, |w|); |shift| < 1 uses the reciprocal
 /// steepness and flips by the shift's sign.
+#[inline(always)]
 fn sigmoid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [sx, sy, ax, ay, vv] = v.derived();
     let c0 = ax / zeps(1.0 + (sx * t.x).exp());
@@ -172,6 +183,7 @@ fn sigmoid_prep(v: &mut Prepared) {
 }
 
 /// sin of each coordinate times a quadratic "range" factor (its square plus w, minus w·r²).
+#[inline(always)]
 fn sintrange(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [k] = v.params();
     let (xx, yy) = (t.x * t.x, t.y * t.y);
@@ -184,6 +196,7 @@ fn sintrange(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Wing-like spirals: (cos x², sin x²)·sin y² / r².
+#[inline(always)]
 fn spiralwing(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let inv = 1.0 / zeps(t.sumsq);
     let a = zeps(t.x * t.x);
@@ -194,6 +207,7 @@ fn spiralwing(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// (cos u·tan x, sin u·tan y) with u = √(a x² + b y²).
+#[inline(always)]
 fn squirrel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a, b] = v.params();
     let u = finite_non_negative(zeps(a) * (t.x * t.x) + zeps(b) * (t.y * t.y)).sqrt();
@@ -203,6 +217,7 @@ fn squirrel(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// Twin interference: w·p plus (x² − y²)/(x² + y²)·sin(2π·distort·(x + y)) of the scaled
 /// point, added to both coordinates.
+#[inline(always)]
 fn stwin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [distort] = v.params();
     let x = t.x * v.w * 0.05;
@@ -215,6 +230,7 @@ fn stwin(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// tancos: x scaled by tanh(r²)/r² and y by cos(r²)/r² (doubled).
+#[inline(always)]
 fn tancos(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let d = zeps(t.sumsq);
     let k = v.w / d;

@@ -104,6 +104,7 @@ fn hex_truchet_prepare(v: &mut Prepared) {
 
 /// Hexagonal Truchet tiles: random points on the three arcs of a random hexagon of the grid,
 /// the tile rotated by 60° or not according to a hash of its cell.
+#[inline(always)]
 fn hex_truchet(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, side, seed] = v.params();
     let [lo, span, cells] = v.derived();
@@ -180,6 +181,7 @@ fn truchet_prep(v: &mut Prepared) {
 /// Truchet: the plane (scaled by 1/weight) kept only on Truchet tiles — two quarter-circle
 /// (superellipse) bands per unit cell, with the tile orientation chosen per cell by a
 /// seeded hash (`extended` 0 or flam3-compatibility off: a slower iterated hash).
+#[inline(always)]
 fn truchet(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [extended, _, _, _, size] = v.params();
     let [exponent, inv_ex, abs_seed, seed2, inv_rmax, scale] = v.derived();
@@ -245,6 +247,7 @@ pub(super) fn truchet_fill_prep(v: &mut Prepared) {
 /// Truchet_fill: the complement-style Truchet map — points of the (1/weight-scaled) plane
 /// are sent to twice their cell position on each arc band they lie in, minus the input,
 /// filling the tile pattern.
+#[inline(always)]
 pub(super) fn truchet_fill(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, seed] = v.params();
     let [ex, inv_ex, seed2, rmax, scale] = v.derived();
@@ -304,6 +307,7 @@ fn truchet_glyph_prep(v: &mut Prepared) {
 
 /// Truchet_glyph: Truchet_fill (hash-chosen tiles) applied only inside rotated squares
 /// ("glyphs") centred on an `amp`-spaced grid; elsewhere the input passes unchanged.
+#[inline(always)]
 fn truchet_glyph(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, _, _, seed] = v.params();
     let [n, inv_n, rmax, scale, cost, sint, half_amp_max, amp] = v.derived();
@@ -378,6 +382,7 @@ fn hex_centre(x: f64, y: f64) -> (f64, f64, f64, f64) {
 /// Truchet_hex_crop: hexagonal Truchet tiles of three arcs each — points on the arc bands
 /// (width 2·`wd`) are removed (collapsed to the origin, to the arc's corner, or pushed to the
 /// band's edges, by `mode`), or, with `inv`, the points off the bands are.
+#[inline(always)]
 fn truchet_hex_crop(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, mode, inv, seed] = v.params();
     let [d1, d2] = v.derived();
@@ -430,6 +435,7 @@ fn truchet_hex_fill_prep(v: &mut Prepared) {
 /// Truchet_hex_fill: fills random hexagons (geometrically spread around the origin) with
 /// three-arc Truchet tiles — the input, wrapped around a ring in one of 3n sectors, is
 /// split into the three arcs of a hexagon.
+#[inline(always)]
 fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, flipx, flipy, sx, sy, seed] = v.params();
     let [n3, inv_n3] = v.derived();
@@ -486,6 +492,7 @@ fn truchet_inv_prep(v: &mut Prepared) {
 
 /// Truchet_inv: the negative of Truchet — the (1/weight-scaled) plane kept only off both arc
 /// bands of each tile.
+#[inline(always)]
 fn truchet_inv(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, size, seed] = v.params();
     let [n, inv_n, rmax, seed2, seed2_half, scale] = v.derived();
@@ -515,6 +522,7 @@ fn truchet_inv(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// truchet_knot: random points on short strokes centred in each unit cell, horizontal or
 /// vertical in a checkerboard pattern (a woven-knot look).
+#[inline(always)]
 fn truchet_knot(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     const WIDTH: f64 = 0.5;
     const SPACE: f64 = 0.1;

@@ -236,6 +236,7 @@ fn coswrap_axis(c: f64, phase: f64, repeat: f64, blend: f64, w2: f64) -> f64 {
 
 /// Wraps the plane onto cosine waves: each coordinate is blended with a cosine of itself and of
 /// its repeated fractional part (phase and amount per axis), mapped back to [−1, −1 + 2w].
+#[inline(always)]
 fn coswrap(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [px, py, rep, w2, bx, by] = v.derived();
     [
@@ -278,6 +279,7 @@ fn gd_osc(p: f64, a: f64) -> f64 {
 
 /// Gradient-domain offsets: each coordinate is blended with cosine oscillations of itself,
 /// giving a rippled, folded copy of the plane; z is scaled.
+#[inline(always)]
 fn gdoffs(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, _, _, _, _, square] = v.params();
     let [dx, dy, cx, cy, b] = v.derived();
@@ -318,6 +320,7 @@ fn wave(kind: f64, a: f64, b: f64, c: f64, p_: f64, x: f64) -> f64 {
 
 /// The sum of two periodic waves (sine, triangle or square, each with amplitude, frequency,
 /// phase and power) applied to each coordinate.
+#[inline(always)]
 fn interference2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [a1, b1, c1, p1, k1, a2, b2, c2, p2, k2] = v.params();
     let x = wave(k1, a1, b1, c1, p1, t.x) + wave(k2, a2, b2, c2, p2, t.x);
@@ -333,6 +336,7 @@ fn prep_oscilloscope2(v: &mut Prepared) {
 
 /// oscilloscope2: points inside a (damped, y-perturbed) cosine band around the x axis are
 /// reflected through the origin, the others kept.
+#[inline(always)]
 fn oscilloscope2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [sep, _, _, amp, pert, damp] = v.params();
     let [kx, ky] = v.derived();
@@ -351,6 +355,7 @@ fn oscilloscope2(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) ->
 
 /// Each coordinate is pushed along its own axis by a sine wave of that coordinate: bands of
 /// compression and rarefaction, like a sound wave.
+#[inline(always)]
 fn pressure_wave(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [kx, ky, ikx, iky] = v.derived();
     [
@@ -367,6 +372,7 @@ fn pressure_wave_prep(v: &mut Prepared) {
 }
 
 /// Adds a sine of each coordinate to itself: a regular pulsing of the grid along both axes.
+#[inline(always)]
 fn pulse(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [freqx, freqy, scalex, scaley] = v.params();
     [
@@ -379,6 +385,7 @@ fn pulse(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 /// Circular ripples around a centre: the distance is displaced by a cosine wave, the two wave
 /// offsets (phase and its complement) blended by the phase. (The "distance" is √(x²·y²), as in
 /// the original plugin.)
+#[inline(always)]
 fn ripple(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, cx, cy] = v.params();
     let [f, ph, s, is, vxp, pxa, pixa] = v.derived();
@@ -404,6 +411,7 @@ fn ripple_prep(v: &mut Prepared) {
 }
 
 /// Blends each coordinate toward -cos(2π·freq·coordinate): a grid of sine-shaped cells.
+#[inline(always)]
 fn sinusgrid(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [ax, ay] = v.params();
     let [fx, fy] = v.derived();
@@ -446,6 +454,7 @@ fn vibration_prep(v: &mut Prepared) {
 
 /// vibration: two superposed plane waves, each displacing points by amp·sin(phase along its
 /// direction) along its own displacement angle.
+#[inline(always)]
 fn vibration(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, amp, _, _, _, _, amp2] = v.params();
     let waves = v.table(0);
@@ -476,6 +485,7 @@ fn modulate(amp: f64, freq: f64, x: f64) -> f64 {
 
 /// vibration2: vibration whose direction, displacement angle, frequency and amplitude are
 /// themselves modulated along each wave.
+#[inline(always)]
 fn vibration2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [
         dir,
@@ -547,6 +557,7 @@ fn vibration2(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// waves22: each coordinate displaced by a power of a sine wave of the other (or of a
 /// raised sine, by mode).
+#[inline(always)]
 fn waves22(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [scx, scy, fx, fy, modex, modey, powerx, powery] = v.params();
     let px = trunc_i32(powerx) as f64;
@@ -575,6 +586,7 @@ fn waves23_prep(v: &mut Prepared) {
 }
 
 /// waves23: each coordinate displaced by a sawtooth-like wave of the other.
+#[inline(always)]
 fn waves23(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [scalex, scaley] = v.params();
     let [freqx, freqy] = v.derived();
@@ -589,6 +601,7 @@ fn waves23(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// waves2_3D: waves2 in 3-D — x and y displaced by sines of each other, z by a sine of
 /// their mean.
+#[inline(always)]
 fn waves2_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [freq, scale] = v.params();
     let avg = (t.x + t.y) * 0.5;
@@ -601,6 +614,7 @@ fn waves2_3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 
 /// waves2_radial: waves2 whose amplitude grows linearly with r from 0 at `null` to full at
 /// `distance`.
+#[inline(always)]
 fn waves2_radial(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [fx, sx, fy, sy, null, dist] = v.params();
     let r = t.sqrt;
@@ -628,6 +642,7 @@ fn waves2b_prep(v: &mut Prepared) {
 /// waves2b: waves2 with a wave amplitude falling off with distance (from `scale` near the
 /// axis to `scaleinf` far away) and a power-warped wave argument; an exponent near 0 uses
 /// a Jacobi sn wave (≥ 0) or the Bessel function J1 (< 0) instead of the sine.
+#[inline(always)]
 fn waves2b(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [freqx, freqy, pwx, pwy, _, sinfx, _, sinfy, unity, jacok] = v.params();
     let [six, siy] = v.derived();
@@ -657,6 +672,7 @@ fn waves3_prep(v: &mut Prepared) {
 
 /// waves3: waves2 whose amplitudes are themselves sine-modulated (frequencies `sx_freq`,
 /// `sy_freq`).
+#[inline(always)]
 fn waves3(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, freqx, freqy, sx_freq, sy_freq] = v.params();
     let [half_sx, half_sy] = v.derived();
@@ -690,6 +706,7 @@ fn band_amp(band: f64, y: f64, yfact: f64, cont: f64) -> f64 {
 }
 
 /// waves4: waves2 whose x amplitude is random per wave period (horizontal bands).
+#[inline(always)]
 fn waves4(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [scalex, scaley, freqx, freqy, cont] = v.params();
     let [yfact] = v.derived();
@@ -703,6 +720,7 @@ fn waves4(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// waves42: waves4 with the band width set independently (`freqx2`).
+#[inline(always)]
 fn waves42(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [scalex, scaley, freqx, freqy, cont, _, freqx2] = v.params();
     let [yfact] = v.derived();

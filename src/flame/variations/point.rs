@@ -181,7 +181,25 @@ pub struct SoaIn<'a> {
     pub color: &'a [f64],
 }
 
-impl SoaIn<'_> {
+impl<'a> SoaIn<'a> {
+    /// The points `r` (every column cut to one length, so that a loop over them indexes
+    /// without a bounds test — a test the vectoriser cannot take).
+    #[inline(always)]
+    pub fn range(&self, r: std::ops::Range<usize>) -> SoaIn<'a> {
+        SoaIn {
+            x: &self.x[r.clone()],
+            y: &self.y[r.clone()],
+            z: &self.z[r.clone()],
+            sumsq: &self.sumsq[r.clone()],
+            sqrt: &self.sqrt[r.clone()],
+            ux: &self.ux[r.clone()],
+            uy: &self.uy[r.clone()],
+            atan_xy: &self.atan_xy[r.clone()],
+            atan_yx: &self.atan_yx[r.clone()],
+            color: &self.color[r],
+        }
+    }
+
     /// The input of point `j`.
     #[inline(always)]
     pub fn at(&self, j: usize) -> VarIn {

@@ -10,7 +10,7 @@ use super::{
 #[cfg(target_arch = "x86_64")]
 use crate::flame::fastmath::Simd;
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{Prepared, VarIn, flag, need};
+use crate::flame::variations::{Assign, Prepared, VarIn, flag, need};
 
 /// flam3's variation `ID` as a `pre_`/`post_` form over the points `x`, `y`, `z` (in place):
 /// a [`crate::flame::variations::FormBatchFn`].
@@ -154,6 +154,10 @@ fn span<const ID: u16, F: SpanFormula<ID>>(
     f: &mut F,
 ) {
     let writes_z = v.def.has(flag::WRITES_Z);
+    // The framework's z and the way the output joins the point, decided once: a `match` in
+    // the loop (a switch on a value the compiler does not see as fixed) keeps it scalar.
+    let default_z = v.default_z_rule();
+    let adds = v.def.assign == Assign::Sum;
     let n = x.len().min(y.len()).min(z.len());
     let (x, y, z) = (&mut x[..n], &mut y[..n], &mut z[..n]);
     for i in 0..n {
@@ -162,11 +166,15 @@ fn span<const ID: u16, F: SpanFormula<ID>>(
         let fz = if writes_z {
             z_out(ID, v, &t)
         } else {
-            v.default_z(&t)
+            default_z.of(t.z)
         };
-        let mut p = [x[i], y[i], z[i]];
-        v.assign(&mut p, [fx, fy, fz]);
-        [x[i], y[i], z[i]] = p;
+        if adds {
+            x[i] += fx;
+            y[i] += fy;
+            z[i] += fz;
+        } else {
+            [x[i], y[i], z[i]] = [fx, fy, fz];
+        }
     }
 }
 
