@@ -81,13 +81,15 @@ print(times[1][0], times[1][1])
 """
 
 
-def time_ugnis(exe, view, size, threads):
+def time_ugnis(exe, view, size, threads, tolerance=None):
     name, x, y, width, max_iter, kind = view
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "deep.png")
         cmd = [exe, "escape", kind, "--center", f"{x},{y}", "--width", width,
                "--size", size, "--max-iter", str(max_iter), "--threads", str(threads),
                "-o", out]
+        if tolerance is not None:
+            cmd += ["--bla-tolerance", str(tolerance)]
         t, before = time.time(), os.times()
         r = subprocess.run(cmd, capture_output=True, text=True)
         dt, after = time.time() - t, os.times()
@@ -117,6 +119,9 @@ def main():
     ap.add_argument("--size", default="640x480")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--only", default=None, help="run views whose name contains this")
+    ap.add_argument("--fs-tolerance", action="store_true",
+                    help="also time ugnis with Fractalshades' bilinear tolerance (1e-6, "
+                         "--bla-tolerance): the same skipping, less exact than ugnis' default")
     a = ap.parse_args()
     # On a machine other jobs load, wall times stretch with the load; CPU times (all threads)
     # do much less, so both are shown.
@@ -139,6 +144,15 @@ def main():
                 f"{tf[1]:.2f}" if tf else "-", f"{tu[1] / tf[1]:.2f}" if tf else "-"]
         print(f"{v[0]:24} {a.size:>8} {v[4]:>6} {cols[0]:>9} {cols[1]:>16} {cols[2]:>6} "
               f"{cols[3]:>7} {cols[4]:>9} {cols[5]:>6}", flush=True)
+        if a.fs_tolerance:
+            te, err = time_ugnis(a.ugnis, v, a.size, a.threads, 1e-6)
+            if te is None:
+                print(f"  ugnis --bla-tolerance 1e-6 failed: {err}", file=sys.stderr)
+                continue
+            cols = [f"{te[0]:.2f}", f"{te[0] / tf[0]:.2f}" if tf else "-", f"{te[1]:.2f}",
+                    f"{te[1] / tf[1]:.2f}" if tf else "-"]
+            print(f"{'  at tolerance 1e-6':24} {a.size:>8} {v[4]:>6} {cols[0]:>9} {'':>16} "
+                  f"{cols[1]:>6} {cols[2]:>7} {'':>9} {cols[3]:>6}", flush=True)
 
 
 if __name__ == "__main__":

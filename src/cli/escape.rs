@@ -46,6 +46,10 @@ pub struct EscapeArgs {
     /// Maximum iterations
     #[arg(long)]
     pub max_iter: Option<u32>,
+    /// Deep zoom: relative size of the non-linear terms a bilinear step may drop (default
+    /// 2^-44 ≈ 5.7e-14; Fractalshades' default is 1e-6: faster, less exact), 1.1e-16 to 0.001
+    #[arg(long, value_parser = super::finite)]
+    pub bla_tolerance: Option<f64>,
     /// smooth, bands, distance, histogram or basins
     #[arg(long)]
     pub coloring: Option<String>,
@@ -212,6 +216,9 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
     }
     if let Some(n) = a.max_iter {
         doc.params.max_iter = n;
+    }
+    if let Some(e) = a.bla_tolerance {
+        doc.params.bla_eps = e;
     }
     if let Some(s) = &a.coloring {
         doc.params.coloring = Coloring::from_name(s).with_context(|| {

@@ -157,18 +157,34 @@ pub fn bits_for(pixel: Fx) -> u32 {
     }
 }
 
+/// The extent of a deep view and the tolerance of its bilinear steps.
+#[derive(Clone, Copy, Debug)]
+pub struct Extent {
+    /// A pixel's size.
+    pub pixel: Fx,
+    /// The largest offset of a pixel from the centre.
+    pub radius: Fx,
+    /// The relative size of the non-linear terms the bilinear steps drop ([`super::bla::EPSILON`]
+    /// by default).
+    pub bla_eps: f64,
+}
+
 impl Reference {
-    /// The reference for a view centred on `centre` whose pixels lie within `radius` of it:
-    /// the Mandelbrot kind (`julia` None) or the Julia set of `julia`.
+    /// The reference for a view centred on `centre` whose pixels lie within `x.radius` of
+    /// it: the Mandelbrot kind (`julia` None) or the Julia set of `julia`.
     pub fn new(
         map: Map,
         centre: &Centre,
         julia: Option<C>,
-        pixel: Fx,
-        radius: Fx,
+        x: Extent,
         s: &IterSettings,
         progress: &OrbitProgress,
     ) -> Option<Reference> {
+        let Extent {
+            pixel,
+            radius,
+            bla_eps,
+        } = x;
         // A Julia set's pixels pass by the critical point, where the map squares their offsets:
         // twice the digits.
         let bits = bits_for(pixel) * if julia.is_some() { 2 } else { 1 };
@@ -182,6 +198,7 @@ impl Reference {
                     map.degree(),
                     if with_c { radius } else { Fx::ZERO },
                     with_c,
+                    bla_eps,
                 ),
             },
             z,

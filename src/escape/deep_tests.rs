@@ -46,15 +46,12 @@ fn reference_of(
 ) -> (Reference, Fx) {
     let pixel = view.pixel_size_fx(h);
     let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
-    let r = Reference::new(
-        map,
-        view.centre(),
-        julia,
+    let extent = Extent {
         pixel,
         radius,
-        s,
-        &Default::default(),
-    );
+        bla_eps: crate::escape::bla::EPSILON,
+    };
+    let r = Reference::new(map, view.centre(), julia, extent, s, &Default::default());
     (r.unwrap(), pixel)
 }
 

@@ -108,15 +108,12 @@ impl Job {
         };
         // The largest offset of a pixel from the centre: a corner.
         let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs();
-        deep::Reference::new(
-            map,
-            view.centre(),
-            julia,
-            view.pixel_size_fx(h),
+        let extent = deep::Extent {
+            pixel: view.pixel_size_fx(h),
             radius,
-            settings,
-            progress,
-        )
+            bla_eps: params.bla_eps,
+        };
+        deep::Reference::new(map, view.centre(), julia, extent, settings, progress)
     }
 
     fn point(&self, i: u32, j: u32) -> C {

@@ -44,6 +44,9 @@ pub struct EscapeParams {
     pub fill: Fill,
     /// Gradient, offset, repeat and inside colour.
     pub palette: Palette,
+    /// Deep zoom: the relative size of the non-linear terms a bilinear step may drop (see
+    /// [`super::bla::EPSILON`]); larger skips more iterations and is less exact.
+    pub bla_eps: f64,
 }
 
 impl EscapeParams {
@@ -70,6 +73,7 @@ impl EscapeParams {
             coloring,
             bailout: None,
             periodicity: true,
+            bla_eps: super::bla::EPSILON,
             fill: Fill::Exact,
             palette: Palette {
                 repeat,
@@ -233,6 +237,12 @@ fn view_scale(view: &View) -> f64 {
 }
 
 pub(super) fn check_params(p: &EscapeParams) -> Result<(), EscapeError> {
+    if !super::bla::EPSILON_RANGE.contains(&p.bla_eps) {
+        return Err(EscapeError::Settings(format!(
+            "bilinear tolerance {} must be between 2^-53 (1.1e-16) and 0.001",
+            p.bla_eps
+        )));
+    }
     if p.max_iter == 0 || p.max_iter > 100_000_000 {
         return Err(EscapeError::Settings(format!(
             "max iterations {} must be between 1 and 100000000",

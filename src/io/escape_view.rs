@@ -234,6 +234,9 @@ pub fn write(doc: &EscapeDoc) -> String {
     if let Some(b) = p.bailout {
         let _ = writeln!(s, "bailout = {b}");
     }
+    if p.bla_eps != crate::escape::bla::EPSILON {
+        let _ = writeln!(s, "bla_tolerance = {:e}", p.bla_eps);
+    }
     s
 }
 
@@ -565,6 +568,17 @@ const VIEW_KEYS: &[Key<ViewDraft>] = &[
     }),
     key("bailout", |v, s| {
         v.doc.params.bailout = Some(s.positive()?);
+        Ok(())
+    }),
+    key("bla_tolerance", |v, s| {
+        let e = s.positive()?;
+        if !crate::escape::bla::EPSILON_RANGE.contains(&e) {
+            return Err(s.err(
+                "ESC004",
+                format!("{} {e} must be between 1.1e-16 and 0.001", s.key),
+            ));
+        }
+        v.doc.params.bla_eps = e;
         Ok(())
     }),
     key("periodicity", |v, s| {

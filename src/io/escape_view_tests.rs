@@ -52,6 +52,16 @@ fn deep_zoom_views_keep_every_digit() {
     assert!((b.view.half_height() / 3e-21 - 1.0).abs() < 1e-12);
     // Writing again gives the same text.
     assert_eq!(write(&b), text);
+    // The default bilinear tolerance is not written; another one round-trips.
+    assert!(!text.contains("bla_tolerance"), "{text}");
+    let mut t = d.clone();
+    t.params.bla_eps = 1e-6;
+    let loose = write(&t);
+    assert!(loose.contains("bla_tolerance = 1e-6"), "{loose}");
+    assert_eq!(
+        parse(&loose, "deep.esc", None).unwrap().value.params,
+        t.params
+    );
     // A shallow view is written as before (shortest f64).
     let mut s = d.clone();
     s.view.set_half_height(0.5);
@@ -112,6 +122,8 @@ fn bad_files_say_where() {
         ),
         ("kind = newton\npoly = 1\n", 2, "ESC003"),
         ("kind = mandelbrot\nsize = 0x10\n", 2, "ESC004"),
+        ("kind = mandelbrot\nbla_tolerance = 0.5\n", 2, "ESC004"),
+        ("kind = mandelbrot\nbla_tolerance = nan\n", 2, "ESC003"),
     ];
     for (text, line, code) in cases {
         let e = parse(text, "v.esc", None)
