@@ -176,7 +176,7 @@ pub(super) static DEFS: &[VarDef] = &[
 
 /// Java's `java.util.Random`: the 48-bit linear congruential generator, seeded and drawn as
 /// Java does, so that a seed gives JWildfire's pattern.
-pub(super) struct JavaRandom(u64);
+pub(super) struct JavaRandom(pub(super) u64);
 
 impl JavaRandom {
     const MULT: u64 = 0x5_DEEC_E66D;

@@ -73,7 +73,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// The point kept through `iterations` steps of an escape-time map: each step returns the
 /// radius it reached; a step within `bailout` scales the point by the weight and sets the
 /// colour to sin(radius)·`pcolor`, one beyond it zeroes the point.
-fn crop_steps(
+pub(super) fn crop_steps(
     v: &Prepared,
     t: &VarIn,
     acc: &mut Acc,

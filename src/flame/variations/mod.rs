@@ -94,6 +94,18 @@
 //! | `jwf_dc_tiles` | JWildfire's tiling `dc_*` stamps (`dc_truchet`, `dc_worley`, `dc_pentatiles`, `dc_cairotiles`) |
 //! | `jwf_dc_twins` | JWildfire's `dc_*` stamps drawing the patterns of its `glsl_*` ones (`dc_apollonian`, `dc_kaliset`, `dc_squares`, …) |
 //! | `jwf_d_solids` | more solids filled at random (`cone3D`, `torus3D`, `capsule3D`, `rbox3D`, …), `hourglass3D`, `gridout3D` |
+//! | `jwf_m_crops` | escape-time crops of the summed point (`post_asurf_crop`, `post_mandelbulb3d_crop`) |
+//! | `jwf_m_cuts` | still more cuts along shader patterns (`cut_2ewangtile`, `cut_fingerprint`, `cut_kleinian`, …) |
+//! | `jwf_m_curves` | curves drawn at random (`maurer_rose`) |
+//! | `jwf_m_tilecuts` | cuts along tilings (`cut_hextruchetflow`, `cut_truchetweaving`, `cut_tstruchet`, `cut_triantess`, …) |
+//! | `jwf_m_draw` | drawings of many figures, one drawn at random per call (`sunflower`) |
+//! | `jwf_m_foam` | points pushed out of random bubbles (`natural_foam`) |
+//! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
+//! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
+//! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
+//! | `jwf_m_stabilize` | restarts from fixed points (`pre_stabilize`) |
+//! | `jwf_m_tiles` | tilings drawn at random (`arctruchet`) |
+//! | `jwf_m_trig` | sums of complex functions before or after the variations (`pre_recip`, `post_trig`) |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
 //! | `jwf_dialect` | JWildfire's own formulas for names the others also use (`polar`, `rings`, …), for the flames JWildfire wrote |
 //! | `jwf_direct_colour` | JWildfire's `dc_*` stamps and `julian2dc` |
@@ -188,6 +200,18 @@ mod jwf_dialect;
 mod jwf_direct_colour;
 mod jwf_drawings;
 mod jwf_knots;
+mod jwf_m_crops;
+mod jwf_m_curves;
+mod jwf_m_cuts;
+mod jwf_m_draw;
+mod jwf_m_foam;
+mod jwf_m_ifs3d;
+mod jwf_m_polylog;
+mod jwf_m_quaternion;
+mod jwf_m_stabilize;
+mod jwf_m_tilecuts;
+mod jwf_m_tiles;
+mod jwf_m_trig;
 mod jwf_maps;
 mod jwf_post_symmetry;
 mod jwf_prepost;

@@ -35,6 +35,11 @@ use super::{
     jwf_dc_cells, jwf_dc_fields, jwf_dc_folds, jwf_dc_mandel, jwf_dc_maps, jwf_dc_patterns,
     jwf_dc_tiles, jwf_dc_twins,
 };
+// JWildfire variations, the cut and single-formula ones added last.
+use super::{
+    jwf_m_crops, jwf_m_curves, jwf_m_cuts, jwf_m_draw, jwf_m_foam, jwf_m_ifs3d, jwf_m_polylog,
+    jwf_m_quaternion, jwf_m_stabilize, jwf_m_tilecuts, jwf_m_tiles, jwf_m_trig,
+};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -81,7 +86,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 73] = [
+const FILES: [&[VarDef]; 85] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -161,6 +166,19 @@ const FILES: [&[VarDef]; 73] = [
     jwf_dc_cells::DEFS,
     jwf_dc_maps::DEFS,
     jwf_dc_mandel::DEFS,
+    // JWildfire variations, the cut and single-formula ones added last.
+    jwf_m_trig::DEFS,
+    jwf_m_crops::DEFS,
+    jwf_m_cuts::DEFS,
+    jwf_m_draw::DEFS,
+    jwf_m_tiles::DEFS,
+    jwf_m_curves::DEFS,
+    jwf_m_polylog::DEFS,
+    jwf_m_stabilize::DEFS,
+    jwf_m_quaternion::DEFS,
+    jwf_m_tilecuts::DEFS,
+    jwf_m_ifs3d::DEFS,
+    jwf_m_foam::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -585,9 +603,43 @@ const JWILDFIRE_ORDER_A: &[&str] = &[
     "dc_gmandelbroot",
 ];
 
+/// The JWildfire variations added with the cut and single-formula files, in the order ugnis
+/// took them in (after [`JWILDFIRE_ORDER_A`]).
+const JWILDFIRE_ORDER_M: &[&str] = &[
+    "pre_recip",
+    "post_trig",
+    "post_asurf_crop",
+    "post_mandelbulb3d_crop",
+    "cut_2ewangtile",
+    "cut_alientext",
+    "cut_fingerprint",
+    "cut_kleinian",
+    "cut_magfield",
+    "sunflower",
+    "arctruchet",
+    "maurer_rose",
+    "butterfly_fay",
+    "polylogarithm",
+    "pre_stabilize",
+    "quaternion",
+    "cut_hextruchetflow",
+    "cut_mandala",
+    "cut_truchetweaving",
+    "cut_randomtile",
+    "cut_tstruchet",
+    "cut_triantess",
+    "_slice_indicator_wf",
+    "geometricPrimitives",
+    "chaosCubes",
+    "romanesco",
+    "natural_foam",
+];
+
 /// Every JWildfire variation's name in registry order.
 fn jwildfire_order() -> impl Iterator<Item = &'static str> {
-    JWILDFIRE_ORDER.iter().chain(JWILDFIRE_ORDER_A).copied()
+    (JWILDFIRE_ORDER.iter().chain(JWILDFIRE_ORDER_A))
+        .chain(JWILDFIRE_ORDER_M)
+        .copied()
 }
 
 /// Every variation in registry order (see the module documentation).
