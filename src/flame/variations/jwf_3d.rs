@@ -257,12 +257,12 @@ const POLAR_VARS: &[&str] = &[
 ];
 
 /// polarplot3d_wf's own formula compiled ([`formula::compile`]) after a leading 1; `[0]` when
-/// it does not compile (JWildfire refuses it and the variation draws nothing); empty without
+/// it does not compile (JWildfire refuses it and the variation draws nothing); `[2]` without
 /// one (the stock formula of the preset id applies).
 fn polar_formula(_p: &[f64], texts: &[String]) -> Vec<f64> {
     let text = texts.first().map_or("", |t| t.trim());
     if text.is_empty() {
-        return Vec::new();
+        return vec![2.0];
     }
     match formula::compile(text, POLAR_VARS) {
         Ok(code) => std::iter::once(1.0).chain(code).collect(),
@@ -318,7 +318,7 @@ fn polarplot3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) ->
     let t = tmin + rt * dt;
     let u = umin + ru * du;
     let r = match v.data() {
-        [] => polar_preset(preset_id, t, u, param_a, param_b, param_c),
+        [2.0] => polar_preset(preset_id, t, u, param_a, param_b, param_c),
         [1.0, code @ ..] => {
             let vars = [
                 t, u, PI, param_a, param_b, param_c, param_d, param_e, param_f,
