@@ -245,7 +245,7 @@ fn warp_map(px: f64, py: f64) -> [f64; 3] {
     let a = warp_fbm2(px * 4.0, py * 4.0);
     let b = warp_fbm2((px + a.0) * 2.0, (py + a.1) * 2.0);
     let c = warp_fbm2(px + b.0, py + b.1);
-    let f = c.0 * 1.0 + c.1 * -1.0;
+    let f = c.0 - c.1;
     let bl = smoothstep(-0.8, 0.8, f);
     let ti = smoothstep(-1.0, 1.0, warp_fbm(px, py));
     mix3(

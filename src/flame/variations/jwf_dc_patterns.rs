@@ -79,6 +79,10 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(DC_FLAGS),
 ];
 
+/// The sunflower shader's 2π to 3 digits (kept).
+#[allow(clippy::approx_constant)]
+const SUNFLOWER_TAU: f64 = 6.28;
+
 /// Distance from p to the segment a–b.
 fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
     let (px, py) = (p.0 - a.0, p.1 - a.1);
@@ -102,8 +106,8 @@ fn dc_sunflower(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3
         let soft = |d: f64, w: f64| smoothstep(w, 0.0, d);
         let (ux, uy) = (x * zoom, y * zoom);
         let l = length2(ux, uy);
-        let jx = l * 6.28;
-        let mut u = (atan2_approx(uy, ux) / 6.28 * n, l * n);
+        let jx = l * SUNFLOWER_TAU;
+        let mut u = (atan2_approx(uy, ux) / SUNFLOWER_TAU * n, l * n);
         let w = 0.1;
         u.0 += r * (u.1 + 0.5).floor();
         let mut o = [0.0; 3];

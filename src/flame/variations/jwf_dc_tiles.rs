@@ -203,7 +203,7 @@ fn dc_cairotiles(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
             a = 1.0 - a;
         }
         let side = (px.abs() - py.abs()) * signum_java(fract(th / PI) - 0.5);
-        if (flip && a < 0.5 && side > 0.0) || (!flip && a < 0.5 && gmod(cx + cy, 2.0) - 0.5 > 0.0) {
+        if a < 0.5 && ((flip && side > 0.0) || (!flip && gmod(cx + cy, 2.0) - 0.5 > 0.0)) {
             a = 0.4;
         }
         [a.powf(1.0 / 2.2); 3]
