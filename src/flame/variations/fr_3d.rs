@@ -685,7 +685,7 @@ fn popcorn2_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3
 /// A polar rose r = l·cos(kθ + c) lifted into 3-D: the height is a blend of radial waves
 /// ("wag"), a spiral wiggle and an offset; with a negative option a random half of the points
 /// form a scaled, mirrored "ghost" copy below.
-fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+pub(super) fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         l,
         _k,
@@ -777,7 +777,7 @@ fn prose3d(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     }
 }
 
-fn prose3d_prep(v: &mut Prepared) {
+pub(super) fn prose3d_prep(v: &mut Prepared) {
     let [
         _l,
         k,

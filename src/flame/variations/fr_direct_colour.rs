@@ -252,7 +252,7 @@ fn dc_linear(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     o
 }
 
-fn dc_perlin_prepare(v: &mut Prepared) {
+pub(super) fn dc_perlin_prepare(v: &mut Prepared) {
     let [_, _, centre, range] = v.params();
     let mut bottom = centre - range;
     if bottom > 0.75 {

@@ -232,7 +232,7 @@ fn truchet(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
 }
 
 /// Derived values of Truchet_fill.
-fn truchet_fill_prep(v: &mut Prepared) {
+pub(super) fn truchet_fill_prep(v: &mut Prepared) {
     let [exponent, arc_width, seed] = v.params();
     let ex = exponent.clamp(0.001, 2.0);
     let inv_ex = 1.0 / ex;
@@ -245,7 +245,7 @@ fn truchet_fill_prep(v: &mut Prepared) {
 /// Truchet_fill: the complement-style Truchet map — points of the (1/weight-scaled) plane
 /// are sent to twice their cell position on each arc band they lie in, minus the input,
 /// filling the tile pattern.
-fn truchet_fill(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+pub(super) fn truchet_fill(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, seed] = v.params();
     let [ex, inv_ex, seed2, rmax, scale] = v.derived();
     let x0 = t.x * scale;

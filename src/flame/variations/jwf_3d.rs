@@ -11,7 +11,7 @@
 use std::collections::HashMap;
 use std::f64::consts::{PI, TAU};
 
-use super::util::{Draw, Mwc, wang_hash};
+use super::util::{Draw, Mwc, formula, wang_hash};
 use super::*;
 
 pub(super) static DEFS: &[VarDef] = &[
@@ -87,7 +87,9 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(
             flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::USES_COLOR,
         )
-        .prepare(polarplot_prepare),
+        .texts(POLAR_TEXTS)
+        .prepare(polarplot_prepare)
+        .shared(&[], polar_formula),
     VarDef::new("dla3d_wf", dla3d_wf)
         .params(P_DLA)
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::HIDES)
@@ -243,6 +245,31 @@ fn polarplot_prepare(v: &mut Prepared) {
     v.p.extend_from_slice(&[tmin, dt, umin, du, rmin, dr]);
 }
 
+const POLAR_TEXTS: &[TextParam] = &[TextParam {
+    name: "polarplot3d_wf_formula",
+    default: "",
+    max_len: 4000,
+}];
+
+/// The names a polarplot3d_wf formula reads, in the order [`polarplot3d_wf`] passes them.
+const POLAR_VARS: &[&str] = &[
+    "t", "u", "pi", "param_a", "param_b", "param_c", "param_d", "param_e", "param_f",
+];
+
+/// polarplot3d_wf's own formula compiled ([`formula::compile`]) after a leading 1; `[0]` when
+/// it does not compile (JWildfire refuses it and the variation draws nothing); empty without
+/// one (the stock formula of the preset id applies).
+fn polar_formula(_p: &[f64], texts: &[String]) -> Vec<f64> {
+    let text = texts.first().map_or("", |t| t.trim());
+    if text.is_empty() {
+        return Vec::new();
+    }
+    match formula::compile(text, POLAR_VARS) {
+        Ok(code) => std::iter::once(1.0).chain(code).collect(),
+        Err(_) => vec![0.0],
+    }
+}
+
 /// The radius r(t, u) of polarplot3d_wf's stock formula `preset` (JWildfire's presets 0–9) with
 /// parameters a, b, c; `None` for other ids (custom formulas, which ugnis cannot read).
 fn polar_preset(preset: f64, t: f64, u: f64, a: f64, b: f64, c: f64) -> Option<f64> {
@@ -261,7 +288,8 @@ fn polar_preset(preset: f64, t: f64, u: f64, a: f64, b: f64, c: f64) -> Option<f
 
 /// polarplot3d_wf: a surface r = f(t, u) in spherical coordinates (t the azimuth, u the polar
 /// angle) or cylindrical ones (r·cos t, r·sin t, u), sampled at uniformly random (t, u); the
-/// colour can follow t, u, r or t·u. Only JWildfire's stock formulas (by preset id) are known.
+/// colour can follow t, u, r or t·u. The formula is the flame's own text (a Java expression over
+/// t, u, pi and param_a…param_f) or, without one, the stock formula of the preset id.
 fn polarplot3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
         preset_id,
@@ -280,13 +308,26 @@ fn polarplot3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) ->
         param_a,
         param_b,
         param_c,
+        param_d,
+        param_e,
+        param_f,
     ] = v.params();
     let [tmin, dt, umin, du, rmin, dr] = v.derived();
     let rt = rng.f01();
     let ru = rng.f01();
     let t = tmin + rt * dt;
     let u = umin + ru * du;
-    let Some(r) = polar_preset(preset_id, t, u, param_a, param_b, param_c) else {
+    let r = match v.data() {
+        [] => polar_preset(preset_id, t, u, param_a, param_b, param_c),
+        [1.0, code @ ..] => {
+            let vars = [
+                t, u, PI, param_a, param_b, param_c, param_d, param_e, param_f,
+            ];
+            Some(formula::run(code, &vars))
+        }
+        _ => None,
+    };
+    let Some(r) = r else {
         return [0.0; 3];
     };
     let (st, ct) = t.sin_cos();

@@ -118,7 +118,7 @@ fn epispiral_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> 
 }
 
 /// chrysanthemum: Paul Bourke's chrysanthemum curve, a point at a random parameter
-/// u ∈ [0, 21π) (the input point is ignored).
+/// u ∈ [0, 21π), at a tenth of the weight (the input point is ignored).
 fn chrysanthemum(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let u = 21.0 * PI * rng.f01();
     let s4 = (17.0 * u / 3.0).sin();
@@ -127,7 +127,7 @@ fn chrysanthemum(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) ->
     let s8_2 = s8 * s8;
     let s8_4 = s8_2 * s8_2;
     let r = 5.0 * (1.0 + (11.0 * u / 5.0).sin()) - 4.0 * (s4_2 * s4_2) * (s8_4 * s8_4);
-    let r = r * v.w;
+    let r = r * v.w * 0.1;
     let (s, c) = u.sin_cos();
     [r * c, r * s, 0.0]
 }

@@ -22,11 +22,17 @@ const UNSKEW: f64 = 0.1666666;
 /// gives 0 (no corner is close enough to contribute).
 #[inline]
 pub fn simplex_noise3(p: [f64; 3]) -> f64 {
-    let s = (p[0] + p[1] + p[2]) * SKEW;
+    simplex_noise3_skewed(p, SKEW, UNSKEW)
+}
+
+/// [`simplex_noise3`] with the skew factors `skew` (≈ 1/3) and `unskew` (≈ 1/6).
+#[inline(always)]
+fn simplex_noise3_skewed(p: [f64; 3], skew: f64, unskew: f64) -> f64 {
+    let s = (p[0] + p[1] + p[2]) * skew;
     let i = (p[0] + s).floor() as i64;
     let j = (p[1] + s).floor() as i64;
     let k = (p[2] + s).floor() as i64;
-    let u = i.wrapping_add(j).wrapping_add(k) as f64 * UNSKEW;
+    let u = i.wrapping_add(j).wrapping_add(k) as f64 * unskew;
     let c0 = [
         p[0] - (i as f64 - u),
         p[1] - (j as f64 - u),
@@ -58,9 +64,9 @@ pub fn simplex_noise3(p: [f64; 3]) -> f64 {
     };
     let cs = [
         c0,
-        corner(o1, UNSKEW),
-        corner(o2, 2.0 * UNSKEW),
-        corner([1, 1, 1], 3.0 * UNSKEW),
+        corner(o1, unskew),
+        corner(o2, 2.0 * unskew),
+        corner([1, 1, 1], 3.0 * unskew),
     ];
     let (ii, jj, kk) = (
         (i & 1023) as usize,
@@ -95,6 +101,21 @@ pub fn fractal_noise(p: [f64; 3], amps: f64, freqs: f64, octaves: i32) -> f64 {
         u[0] *= freqs;
         u[1] *= freqs;
         u[0] *= freqs;
+    }
+    n
+}
+
+/// JWildfire's fractal noise (its `perlinNoise3D`): the same tables with the exact skew
+/// factors 1/3 and 1/6; layer k divided by `amps`ᵏ as it is (no zero replaced), and the
+/// frequency step applied to every coordinate.
+#[inline]
+pub fn jwf_fractal_noise(p: [f64; 3], amps: f64, freqs: f64, octaves: i32) -> f64 {
+    let (mut n, mut a) = (0.0, 1.0);
+    let mut u = p;
+    for _ in 0..octaves {
+        n += simplex_noise3_skewed(u, 1.0 / 3.0, 1.0 / 6.0) / a;
+        a *= amps;
+        u = u.map(|c| c * freqs);
     }
     n
 }

@@ -121,9 +121,41 @@ fn polarplot3d_wf_matches_jwildfire() {
             want,
         );
     }
-    // A custom formula (unknown preset) draws nothing.
+    // An unknown preset without a formula draws nothing.
     let v = make("polarplot3d_wf", &[("polarplot3d_wf_preset_id", -1.0)], 1.0);
     assert_eq!(run(&v, pts, 0.37, &mut rng), vec![[0.0, 0.0, 0.0, 0.37]; 3]);
+}
+
+/// The flame's own formula text (as JWildfire writes preset 3's after an edit, with the preset
+/// id -1) draws what the preset draws; a formula JWildfire would refuse draws nothing.
+#[test]
+fn polarplot3d_wf_reads_its_formula_text() {
+    let params = [
+        0.0, 1.5, -2.0, 0.2, 2.9, 1.0, -1.5, 0.0, 1.0, 3.0, 1.0, 0.1, 1.0,
+    ];
+    let extra = [1.3, 0.7, 0.4, 0.25, -0.5, 2.0];
+    let vals: Vec<f64> = params.iter().chain(&extra).copied().collect();
+    let (id, form) = parse_name("polarplot3d_wf").unwrap();
+    let with = |preset: f64, text: &str| {
+        let mut p = vals.clone();
+        p[0] = preset;
+        let texts = [text.to_string()];
+        Prepared::with_texts(id, form, 0.9, &p, &texts, Affine::default(), true)
+    };
+    let draw = |v: &Prepared| run(v, &PTS[..4], 0.37, &mut FastRng::new(SEED));
+    let preset = draw(&with(3.0, ""));
+    let text = draw(&with(-1.0, "(sin(param_a*t) + cos(param_b*u)) + param_c"));
+    for (a, b) in preset.iter().zip(&text) {
+        for k in 0..4 {
+            assert!((a[k] - b[k]).abs() <= 1e-12, "{preset:?} vs {text:?}");
+        }
+    }
+    // param_d…param_f and pi reach the formula.
+    let v = with(-1.0, "param_d + param_e*param_f + 0*pi");
+    let want = with(-1.0, "-0.75");
+    assert_eq!(draw(&v), draw(&want));
+    let bad = with(3.0, "sin(t");
+    assert_eq!(draw(&bad), vec![[0.0, 0.0, 0.0, 0.37]; 4]);
 }
 
 // exblur default w1.2 state .11 .52 .83 .27 (used 22)

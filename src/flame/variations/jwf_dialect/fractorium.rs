@@ -5,7 +5,7 @@
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
 //! written anew.
 
-use std::f64::consts::{FRAC_2_PI, PI};
+use std::f64::consts::{FRAC_2_PI, PI, TAU};
 
 use crate::flame::variations::util::mix;
 use crate::flame::variations::*;
@@ -21,6 +21,148 @@ pub(super) fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> 
     let (qr, qi) = ((nr * dr + ni * di) / d, (ni * dr - nr * di) / d);
     let k = v.w * FRAC_2_PI;
     [k * 0.5 * (qr * qr + qi * qi).ln(), k * qi.atan2(qr), 0.0]
+}
+
+/// Zueuk's cpow3 as JWildfire computes it: the root of the divisor is ⌊divisor·ξ⌋ (Fractorium
+/// draws an integer below 32767), the branch of the logarithm rounds as Java does (⌊x + ½⌋).
+/// Reads the registry's derived values.
+pub(super) fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, _, divisor, _] = v.params();
+    let [c, d, half_c, half_d, ang, coeff] = v.derived();
+    let mut a = t.atan_yx;
+    if a < 0.0 {
+        a += TAU;
+    }
+    if (a / 2.0).cos() < rng.f01() * 2.0 - 1.0 {
+        a -= TAU;
+    }
+    let turn = if rng.f01() < 0.5 { TAU } else { -TAU };
+    a += turn * (rng.f01().ln() * coeff + 0.5).floor();
+    let lnr2 = t.sumsq.ln();
+    let r = v.w * (half_c * lnr2 - d * a).exp();
+    let th = c * a + half_d * lnr2 + ang * (divisor * rng.f01()).floor();
+    let (s, c) = th.sin_cos();
+    [r * c, r * s, 0.0]
+}
+
+/// JWildfire's `lgamma`: Numerical Recipes' `gammln` series evaluated at x itself (not at
+/// x − 1), so it is ln Γ(x + 1), with the series' ~1e-10 accuracy.
+fn jwf_lgamma(x: f64) -> f64 {
+    let tmp = (x - 0.5) * (x + 4.5).ln() - (x + 4.5);
+    let ser = 1.0 + 76.18009173 / x - 86.50532033 / (x + 1.0) + 24.01409822 / (x + 2.0)
+        - 1.231739516 / (x + 3.0)
+        + 0.00120858003 / (x + 4.0)
+        - 0.00000536382 / (x + 5.0);
+    tmp + (ser * (2.0 * PI).sqrt()).ln()
+}
+
+/// zephyrtronium's gamma as JWildfire computes it: (lgamma(r), θ) with JWildfire's `lgamma`
+/// (ln Γ(r + 1), see [`jwf_lgamma`]).
+pub(super) fn gamma(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let r = t.y.hypot(t.x);
+    [v.w * jwf_lgamma(r), v.w * t.y.atan2(t.x), 0.0]
+}
+
+/// Raykoid666's squirrel as JWildfire computes it: 1e-8 added to a and b, and the x and y
+/// summed so far replaced (the formula assigns them).
+pub(super) fn squirrel(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
+    let [a, b] = v.params();
+    const EPSILON: f64 = 1e-8;
+    let u = ((a + EPSILON) * (t.x * t.x) + (b + EPSILON) * (t.y * t.y)).sqrt();
+    replace_sum(v, acc);
+    [u.cos() * t.x.tan() * v.w, u.sin() * t.y.tan() * v.w, 0.0]
+}
+
+/// Keeps' and Xyrus02's checks as JWildfire computes it: cells of side size + 1e-8, the even
+/// cells (of the sum of the rounded cell indices, rounded half to even as Java's `rint`)
+/// moved by −(x, y) and a random jitter in x, the odd ones by (x, y) and a jitter in y; no z.
+pub(super) fn checks(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [ox, oy, size, rnd] = v.params();
+    let cs = 1.0 / (size + 1e-8);
+    // Java's (int) of rint: saturating, NaN to 0.
+    let cell = |c: f64| (c * cs).round_ties_even() as i32;
+    let parity = cell(t.x).wrapping_add(cell(t.y));
+    let jx = rnd * rng.f01();
+    let jy = rnd * rng.f01();
+    let (dx, dy) = if parity % 2 == 0 {
+        (-ox + jx, -oy)
+    } else {
+        (ox, oy + jy)
+    };
+    [v.w * (t.x + dx), v.w * (t.y + dy), 0.0]
+}
+
+/// Xyrus02's julian3Dx as JWildfire computes it: its "z" is the input x over |power| (not the
+/// input z). Reads the registry's derived |power| and exponent.
+pub(super) fn julian3dx(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [_, power, a, b, c, d, e, f] = v.params();
+    let [abs_n, exponent] = v.derived();
+    let z = t.x / abs_n;
+    let r2 = t.x * t.x + t.y * t.y;
+    let radius = v.w * (r2 + z * z).powf(exponent);
+    let x = a * t.x + b * t.y + e;
+    let y = c * t.x + d * t.y + f;
+    let branch = ((rng.f01() * abs_n) as i32) as f64;
+    let ang = (y.atan2(x) + TAU * branch) / power;
+    let planar = radius * r2.sqrt();
+    [planar * ang.cos(), planar * ang.sin(), radius * z]
+}
+
+/// JWildfire's `random(Integer.MAX_VALUE)`: a whole number below 2³¹ − 1.
+fn jwf_random_int(rng: &mut FastRng) -> f64 {
+    const MAX: f64 = i32::MAX as f64;
+    (rng.f01() * MAX).trunc().min(MAX - 1.0)
+}
+
+/// The hyperbolic tiling map of the ball towards (cx, cy), as Zueuk's hypertile3D family
+/// computes it in JWildfire: r² of the three coordinates (Fractorium's hypertile3D adds z, not
+/// z²), no guard on the denominator.
+#[inline(always)]
+fn hypertile3d_map(w: f64, t: &VarIn, c: [f64; 2], c2: f64, s2: [f64; 3]) -> V3 {
+    let [cx, cy] = c;
+    let r2 = t.x * t.x + t.y * t.y + t.z * t.z;
+    let x2cx = 2.0 * cx * t.x;
+    let y2cy = 2.0 * cy * t.y;
+    let d = w / (c2 * r2 + x2cx - y2cy + 1.0);
+    [
+        d * (t.x * s2[0] - cx * (y2cy - r2 - 1.0)),
+        d * (t.y * s2[1] + cy * (-x2cx - r2 - 1.0)),
+        d * (t.z * s2[2]),
+    ]
+}
+
+/// hypertile3D as JWildfire computes it (see [`hypertile3d_map`]). Reads the registry's
+/// derived centre and factors.
+pub(super) fn hypertile3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [cx, cy, c2, _, _, s2x, s2y, s2z] = v.derived();
+    hypertile3d_map(v.w, t, [cx, cy], c2, [s2x, s2y, s2z])
+}
+
+/// hypertile3D1 as JWildfire computes it: towards the vertex at angle k·2π/p for a whole k
+/// below 2³¹ − 1, as JWildfire draws it (so the angle carries the rounding of a large k).
+pub(super) fn hypertile3d1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [pa, r, c2, s2z] = v.derived();
+    let (sa, ca) = (jwf_random_int(rng) * pa).sin_cos();
+    let (cx, cy) = (r * ca, r * sa);
+    let s2x = 1.0 + cx * cx - cy * cy;
+    let s2y = 1.0 + cy * cy - cx * cx;
+    hypertile3d_map(v.w, t, [cx, cy], c2, [s2x, s2y, s2z])
+}
+
+/// hypertile3D2 as JWildfire computes it: towards the first vertex, then turned by k·2π/p for
+/// a whole k below 2³¹ − 1 (drawn after the map, as JWildfire does).
+pub(super) fn hypertile3d2(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let [pa, cx, c2, s2z, c2x, s2x] = v.derived();
+    let r2 = t.x * t.x + t.y * t.y + t.z * t.z;
+    let x = t.x * s2x - cx * (-r2 - 1.0);
+    let y = t.y * s2z;
+    let k = v.w / (c2 * r2 + c2x * t.x + 1.0);
+    let (sa, ca) = (jwf_random_int(rng) * pa).sin_cos();
+    [
+        k * (x * ca + y * sa),
+        k * (y * ca - x * sa),
+        k * (t.z * s2z),
+    ]
 }
 
 /// Xyrus02's crop as JWildfire computes it: the point replaces the sum so far (rather than

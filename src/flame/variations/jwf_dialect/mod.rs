@@ -11,11 +11,15 @@
 
 use super::*;
 
+mod blurs;
 mod classic;
+mod direct_colour;
 mod fractorium;
 mod origin;
 mod phases;
 mod quaternions;
+mod renamed;
+mod surfaces;
 mod wider;
 
 /// JWildfire's `SMALL_EPSILON`, which it adds to radii and denominators.
@@ -30,7 +34,14 @@ fn jwf_sqrt(t: &VarIn) -> f64 {
 /// The twins, by file: each named as the attribute JWildfire writes (`NAME`, `pre_NAME`,
 /// `post_NAME`), with the parameters of the registry's variation of that name in its order
 /// (named as JWildfire names them), then those only JWildfire's formula has.
-pub(super) const TABLES: &[&[VarDef]] = &[classic::DEFS, wider::DEFS];
+pub(super) const TABLES: &[&[VarDef]] = &[
+    blurs::DEFS,
+    classic::DEFS,
+    direct_colour::DEFS,
+    renamed::DEFS,
+    surfaces::DEFS,
+    wider::DEFS,
+];
 
 /// Variations whose JWildfire twin is the registry's entry (parameters, derived values) with
 /// JWildfire's formula: name, formula, flags it drops, flags it adds.
@@ -51,7 +62,9 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("post_curl", phases::post_curl, 0, 0),
     ("post_curl3D", phases::post_curl3d, 0, 0),
     ("post_flatten", phases::post_flatten, 0, 0),
+    ("post_heat", phases::post_heat, 0, 0),
     ("pre_zscale", phases::pre_zscale, 0, 0),
+    ("pre_sinusoidal3D", phases::pre_sinusoidal3d, 0, 0),
     ("loq", quaternions::loq, 0, 0),
     ("rays1", origin::rays1, 0, 0),
     ("rays2", origin::rays2, 0, 0),
@@ -69,8 +82,21 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("wedge_sph", origin::wedge_sph, 0, 0),
     ("arctanh", fractorium::arctanh, 0, 0),
     ("boarders", fractorium::boarders, 0, 0),
+    (
+        "checks",
+        fractorium::checks,
+        flag::USES_Z | flag::WRITES_Z,
+        0,
+    ),
+    ("cpow3", fractorium::cpow3, 0, 0),
     ("crob", fractorium::crob, 0, 0),
     ("funnel", fractorium::funnel, 0, 0),
+    ("gamma", fractorium::gamma, 0, 0),
+    ("hypertile3D", fractorium::hypertile3d, 0, 0),
+    ("hypertile3D1", fractorium::hypertile3d1, 0, 0),
+    ("hypertile3D2", fractorium::hypertile3d2, 0, 0),
+    ("julian3Dx", fractorium::julian3dx, flag::USES_Z, 0),
+    ("squirrel", fractorium::squirrel, 0, flag::WRITES_ACC),
     ("ho", fractorium::ho, 0, 0),
     (
         "crop",

@@ -45,3 +45,25 @@ pub(super) fn post_curl3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng)
         r * (t.z + cz * r2),
     ]
 }
+
+/// pre_sinusoidal3d: sinusoidal3D whose z reads the x and y it has just replaced (the weighted
+/// sines), as JWildfire's assignments in order have it.
+pub(super) fn pre_sinusoidal3d(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let x = v.w * t.x.sin();
+    let y = v.w * t.y.sin();
+    [x, y, v.w * (x * x).atan2(y * y) * t.z.cos()]
+}
+
+/// post_heat: heat on the summed point with its true 3-D radius √(x² + y² + z²) (Fractorium's
+/// reads √|x² + y² + z|) and no guard at radius 0 (the inclination is then π/2) nor clamp of
+/// its cosine. Reads the registry's derived amplitudes, frequencies and phases.
+pub(super) fn post_heat(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
+    let [at, bt, ct, ap, bp, cp, ar, br, cr] = v.derived();
+    let mut r = (t.x * t.x + t.y * t.y + t.z * t.z).sqrt();
+    let azimuth = t.y.atan2(t.x);
+    r += ar * (br * r + cr).sin();
+    let (st, ct_) = (at * (bt * r + ct).sin() + azimuth).sin_cos();
+    let cos_incl = if r != 0.0 { t.z / r } else { 0.0 };
+    let (sp, cp_) = (ap * (bp * r + cp).sin() + cos_incl.acos()).sin_cos();
+    [r * ct_ * sp, r * st * sp, r * cp_]
+}

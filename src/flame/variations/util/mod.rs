@@ -9,12 +9,14 @@
 //!
 //! By file: `arith` (small arithmetic, Java and GLSL idioms), `c_ints` (C conversions as x86-64
 //! performs them), `random` (random draws and hashes), `coords` (coordinate systems),
-//! `complex` (complex numbers with C99 semantics) and `special` (special functions).
+//! `complex` (complex numbers with C99 semantics), `special` (special functions) and `formula`
+//! (JWildfire's formula texts).
 
 mod arith;
 mod c_ints;
 mod complex;
 mod coords;
+pub mod formula;
 mod random;
 mod special;
 
