@@ -103,20 +103,30 @@ fn jwildfire_doubled_variations_and_final_xforms() {
             (lin, 0.2, vec![]),
         ]
     );
-    // A further use with its own priority: `spherical#1#` runs before the others.
-    let forms: Vec<Form> = f.xforms[1].vars.iter().map(|v| v.form).collect();
-    assert_eq!(forms, [Form::Regular, Form::Pre]);
-    // Names JWildfire wrote with spaces are kept whole, with one warning each at their line.
+    // A further use with its own priority: `spherical#1#` runs before the others; the
+    // direct-colour glsl_apollonian of amount 0 is kept (JWildfire runs it: it colours points).
+    let forms: Vec<(Form, f64)> = f.xforms[1]
+        .vars
+        .iter()
+        .map(|v| (v.form, v.weight))
+        .collect();
+    assert_eq!(
+        forms,
+        [
+            (Form::Regular, 0.5),
+            (Form::Pre, 0.25),
+            (Form::Regular, 0.0)
+        ]
+    );
+    // Names JWildfire wrote with spaces are kept whole, with one warning each at their line:
+    // the kept glsl_apollonian's own parameter is read, the others kept as they stand.
+    assert_eq!(f.xforms[1].vars[2].params[0], 800.0);
     let kept: Vec<&str> = f.xforms[1]
         .extra_attrs
         .iter()
         .map(|(k, _)| k.as_str())
         .collect();
-    for name in [
-        "glsl_apollonian_Density Pixels",
-        "dc_acrilic_Red Fac.",
-        "dc_acrilic_Size (N PowersOf 2)",
-    ] {
+    for name in ["dc_acrilic_Red Fac.", "dc_acrilic_Size (N PowersOf 2)"] {
         assert!(kept.contains(&name), "{name} not in {kept:?}");
     }
     let spaced: Vec<_> = p.warnings.iter().filter(|w| w.code == "XML024").collect();

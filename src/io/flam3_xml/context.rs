@@ -28,6 +28,9 @@ pub(super) struct Ctx<'t, 'o> {
     /// The flame being read was written by JWildfire, which reads a variation's parameters by
     /// their exact names (letter case included).
     pub(super) jwildfire_names: bool,
+    /// The flame being read is drawn as JWildfire draws it (JWildfire wrote it, or ugnis copied
+    /// one JWildfire wrote): variations that colour or hide points act at amount 0.
+    pub(super) jwildfire_flame: bool,
     pub(super) library: OnceCell<Result<PaletteLibrary, String>>,
 }
 
@@ -52,6 +55,7 @@ impl<'t, 'o: 't> Ctx<'t, 'o> {
             warn_counts: Default::default(),
             opts,
             jwildfire_names: false,
+            jwildfire_flame: false,
             library: OnceCell::new(),
         }
     }

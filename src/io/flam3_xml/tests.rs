@@ -550,3 +550,32 @@ fn jwildfire_parameter_names_are_case_sensitive() {
     let f = read(sym, &opts()).unwrap().value.flames.remove(0);
     assert!(f.xforms[0].vars[0].params.contains(&0.375));
 }
+
+/// JWildfire runs a variation of amount 0 too: one that colours or hides points is kept from
+/// JWildfire's files (and through ugnis' own copy of them), one that only moves points is not,
+/// and flam3's files keep neither.
+#[test]
+fn jwildfire_keeps_colouring_variations_of_amount_zero() {
+    let src = |version: &str| {
+        format!(
+            r#"<flame name="z" {version} size="64 48" scale="20">
+  <xform weight="1" color="0" cpow3="1" dc_linear="0" dc_linear_scale="0.85" spherical="0" coefs="1 0 0 1 0 0"/>
+</flame>"#
+        )
+    };
+    let names = |f: &crate::flame::model::Flame| -> Vec<(String, f64)> {
+        f.xforms[0]
+            .vars
+            .iter()
+            .map(|v| (variations::info(v.id).name.to_string(), v.weight))
+            .collect()
+    };
+    let jwf = read(&src(r#"version="JWildfire V5.50 (21.12.2019)""#), &opts()).unwrap();
+    let f = jwf.value.flames[0].clone();
+    let want = [("cpow3".to_string(), 1.0), ("dc_linear".to_string(), 0.0)];
+    assert_eq!(names(&f), want);
+    let back = read(&flame_element(&f), &opts()).unwrap().value.flames[0].clone();
+    assert_eq!(names(&back), want);
+    let flam3 = read(&src(""), &opts()).unwrap().value.flames[0].clone();
+    assert_eq!(names(&flam3), [("cpow3".to_string(), 1.0)]);
+}
