@@ -573,6 +573,17 @@ fn escape_renders_kinds_views_and_rejects_bad_input() {
         (
             vec![
                 "escape",
+                "mandelbrot",
+                "--bla-tolerance",
+                "0.5",
+                "-o",
+                "x.png",
+            ],
+            "--bla-tolerance 0.5: expected a number from 1.1e-16",
+        ),
+        (
+            vec![
+                "escape",
                 "multibrot",
                 "--power",
                 "4",

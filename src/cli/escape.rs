@@ -218,6 +218,9 @@ pub fn doc_from_args(a: &EscapeArgs) -> Result<EscapeDoc> {
         doc.params.max_iter = n;
     }
     if let Some(e) = a.bla_tolerance {
+        if !ugnis::escape::BLA_TOLERANCE_RANGE.contains(&e) {
+            anyhow::bail!("--bla-tolerance {e}: expected a number from 1.1e-16 (2^-53) to 0.001");
+        }
         doc.params.bla_eps = e;
     }
     if let Some(s) = &a.coloring {

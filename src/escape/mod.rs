@@ -26,6 +26,8 @@ pub(crate) mod render;
 mod view;
 mod warp;
 
+/// The bilinear tolerances a deep zoom accepts (relative size of the terms a step may drop).
+pub use bla::EPSILON_RANGE as BLA_TOLERANCE_RANGE;
 pub use color::{Coloring, Palette};
 pub use complex::C;
 pub use doc::EscapeDoc;
