@@ -6,7 +6,7 @@ use super::{BAD_LIMIT, Pt};
 use crate::flame::jwf_render::colour_type::DistanceColour;
 use crate::flame::model::{Affine, Xform};
 use crate::flame::rng::FastRng;
-use crate::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId, VarIn, ZRule};
+use crate::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarIn, ZRule};
 
 /// One xform ready for iteration.
 #[derive(Clone, Debug)]
@@ -68,15 +68,6 @@ pub fn adjust_opacity(o: f64) -> f64 {
         o.powf(std::f64::consts::LOG2_10)
     }
 }
-/// Does a variation of weight 0 still run? flam3 and Fractorium skip it; JWildfire runs every
-/// variation of an xform whatever its amount, so one that colours or hides points acts at
-/// amount 0 (its contribution to the position is 0 either way).
-fn runs_at_weight_zero(id: VarId, rules: Rules) -> bool {
-    let def = variations::info(id);
-    rules.dialect == Dialect::JWildfire
-        && (def.has(variations::flag::SETS_COLOR) || def.has(variations::flag::HIDES))
-}
-
 impl CompiledXform {
     /// Compile `x` with plotted opacity `opacity`; its variations run as `rules` say (the
     /// rules of the program that wrote the flame).
@@ -87,7 +78,11 @@ impl CompiledXform {
         let mut needs = 0u8;
         let mut sets_color = false;
         for v in &x.vars {
-            if v.weight == 0.0 && !runs_at_weight_zero(v.id, rules) {
+            // JWildfire runs every variation whatever its amount: one that colours or hides
+            // points acts at 0 too; flam3 and Fractorium skip it.
+            let runs_at_zero =
+                rules.dialect == Dialect::JWildfire && variations::info(v.id).acts_at_weight_zero();
+            if v.weight == 0.0 && !runs_at_zero {
                 continue;
             }
             let prepare = |form| {

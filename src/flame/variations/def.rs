@@ -213,6 +213,13 @@ impl VarDef {
         self.flags & f != 0
     }
 
+    /// Does it act at weight 0 where the writing program runs every variation whatever its
+    /// amount (JWildfire)? One that colours or hides points does; one that only moves them
+    /// contributes nothing.
+    pub fn acts_at_weight_zero(&self) -> bool {
+        self.has(flag::SETS_COLOR | flag::HIDES)
+    }
+
     /// Is a 3-D variation (its output depends on z).
     pub fn is_3d(&self) -> bool {
         self.has(flag::USES_Z)

@@ -53,12 +53,6 @@ fn set_var(x: &mut Xform, st: &mut Pending, id: VarId, form: Form, instance: u32
     }
 }
 
-/// Does a variation colour or hide points (and so act in JWildfire even at amount 0)?
-fn acts_at_amount_zero(id: VarId) -> bool {
-    let def = variations::info(id);
-    def.has(variations::flag::SETS_COLOR) || def.has(variations::flag::HIDES)
-}
-
 /// Read the attributes of an `<xform>` (`fin`: a `<finalxform>`); `parity` is its default colour.
 pub(super) fn read_xform(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64) -> R<Xform> {
     read_xform_as(cx, attrs, fin, parity, false)
@@ -265,7 +259,7 @@ fn variation_attr(
     if let Some((id, form)) = variations::parse_name(base) {
         let w = cx.num(a)?;
         set_var(x, st, id, form, instance, w);
-        if w == 0.0 && cx.jwildfire_flame && acts_at_amount_zero(id) {
+        if w == 0.0 && cx.jwildfire_flame && variations::info(id).acts_at_weight_zero() {
             // JWildfire runs every variation whatever its amount: one that colours or hides
             // points acts at amount 0 too, so it is kept (it moves nothing).
             x.vars.push(Var::with_form(id, form, 0.0));
