@@ -1,6 +1,7 @@
 //! Tests of `escape_view`.
 
 use super::*;
+use crate::escape::centre::Centre;
 
 #[test]
 fn round_trip_every_kind() {

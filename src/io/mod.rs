@@ -7,6 +7,7 @@ pub mod audio;
 pub mod bmp;
 pub mod diag;
 pub(crate) mod error;
+mod escape_values;
 pub mod escape_view;
 pub mod exr;
 pub mod flam3_xml;
