@@ -28,14 +28,6 @@ use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId}
 /// Sorted, one name per line.
 const NOT_YET: &[(&str, &str)] = &[
     (
-        "arcsech2",
-        "x, y differ at the points (0, 0), (0, 1) or (-1, 0)",
-    ),
-    (
-        "arctanh",
-        "x differs at the points (0, 0), (0, 1) or (-1, 0)",
-    ),
-    (
         "asteria",
         "weight2 points 11, 13, 15 are random in JWildfire (a draw above 0.35 keeps the point) but recorded as exact: every seed the vectors tried drew above 0.35",
     ),
@@ -53,7 +45,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("cell3D", "not implemented"),
     (
         "chaosCubes",
-        "x, y, z differ in alt2 (scales above 1 and twists amplify JWildfire's table-based sin and cos)",
+        "x, y, z match; statistics differ at points 11 and 23 (quantiles of z and y)",
     ),
     (
         "circlecrop",
@@ -61,33 +53,16 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     ("colordomain", "not implemented"),
     ("colormap_wf", "not implemented"),
-    (
-        "complex",
-        "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "coth2_bs",
-        "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
     ("curliecue", "not implemented"),
     ("custom_wf", "not implemented"),
     ("custom_wf_full", "not implemented"),
     ("cut_shapes", "not implemented"),
-    (
-        "d_spherical",
-        "x, y differ at the origin; statistics differ",
-    ),
     ("dc_carpet", "statistics differ"),
     ("dc_code", "not implemented"),
     (
         "dc_dmodulus",
         "statistics differ at one point (its colour is a slowly mixing chain: the quantiles of \
          20000 correlated draws vary more than the tolerance allows)",
-    ),
-    (
-        "dc_fingerprint",
-        "colour differs (a chain of 50 sine hashes amplifies the last bits of JWildfire's \
-         table-based sin)",
     ),
     ("dc_randomoctree", "not implemented"),
     ("dc_triTile", "not implemented"),
@@ -97,38 +72,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("dla3d_wf", "x, y, z, color differ; call sequence differs"),
     ("dla_wf", "not implemented"),
     ("ducks", "not implemented"),
-    (
-        "eCollide",
-        "y differs at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "eMod",
-        "y differs at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "eMotion",
-        "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "ePush",
-        "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "eRotate",
-        "y differs at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "eScale",
-        "y differs at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "eSwirl",
-        "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
-    (
-        "edisc",
-        "y differs at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
     ("elliptic", "statistics differ"),
     ("elliptic2", "statistics differ"),
     ("f_complex", "not implemented"),
@@ -154,7 +97,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("grid3d_wf", "not implemented"),
     ("hamid_js", "not implemented"),
     ("hexnix3D", "statistics differ"),
-    ("hypershift2", "x, y, z differ at the origin"),
     ("hypertile1", "statistics differ"),
     ("hypertile2", "statistics differ"),
     ("iflames_wf", "not implemented"),
@@ -166,7 +108,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("kaleidoimg", "not implemented"),
     ("kifs3d", "not implemented"),
     ("klein_group", "not implemented"),
-    ("lazyjess", "x, y differ at the origin"),
     ("lsystem3D_js", "not implemented"),
     ("lsystem_js", "not implemented"),
     ("mandala", "not implemented"),
@@ -175,16 +116,11 @@ const NOT_YET: &[(&str, &str)] = &[
     ("metaballs3d_wf", "not implemented"),
     ("msTruchet", "not implemented"),
     ("multi_ifs", "not implemented"),
-    (
-        "npolar",
-        "y differs at the points (0, 0), (0, 1) or (-1, 0)",
-    ),
     ("obj_mesh_primitive_wf", "not implemented"),
     ("obj_mesh_wf", "not implemented"),
     ("ocappedcone3D", "statistics differ"),
     ("ocylinder3D", "statistics differ"),
     ("oroundcone3D", "statistics differ"),
-    ("ortho", "x, y differ at the origin"),
     ("parplot2d_wf", "not implemented"),
     ("phoenix_julia", "statistics differ"),
     ("pie3D", "statistics differ"),
@@ -213,15 +149,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("pre_custom_wf", "not implemented"),
     ("pre_subflame_wf", "not implemented"),
     ("quad", "not implemented"),
-    (
-        "quaternion",
-        "y differs at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
     ("rays", "statistics differ"),
-    (
-        "rays3",
-        "x, y differ at the points (0, 0), (0, 1) or (-1, 0) (JWildfire's table-based tan)",
-    ),
     ("recurrenceplot", "not implemented"),
     ("ringer", "not implemented"),
     ("ringsubflame", "not implemented"),
@@ -230,10 +158,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("spliptic_bs", "statistics differ"),
     ("splitbrdr", "statistics differ"),
     ("sqrt_asinh", "statistics differ"),
-    (
-        "squircular",
-        "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
-    ),
     ("squish", "statistics differ"),
     ("subflame_wf", "not implemented"),
     ("sunvoroni", "not implemented"),
@@ -247,23 +171,14 @@ const NOT_YET: &[(&str, &str)] = &[
     ("triantruchet", "not implemented"),
     ("truchet_ae", "not implemented"),
     ("truchet_hex_fill", "statistics differ"),
-    ("wallpaper_js", "x differs at the origin"),
+    (
+        "wallpaper_js",
+        "acc point 16 is random in JWildfire (the second branch sets x to 0, the first keeps the sum's 0.3) but recorded as exact 0.3: every seed the vectors tried took the first branch",
+    ),
     ("wangtiles", "not implemented"),
     ("wedge_julia", "statistics differ"),
-    (
-        "x",
-        "x, y differ at the points (0, 0), (0, 1) or (-1, 0) (JWildfire's table-based tan)",
-    ),
-    (
-        "y",
-        "x, y differ at the points (0, 0), (0, 1) or (-1, 0) (JWildfire's table-based tan)",
-    ),
     ("yplot2d_wf", "not implemented"),
     ("yplot3d_wf", "not implemented"),
-    (
-        "z",
-        "x, y differ at the points (0, 0), (0, 1) or (-1, 0) (JWildfire's table-based tan)",
-    ),
 ];
 
 /// A table of the vectors: from UGNIS_JWF_VECTORS_DIR, else the committed fixture.

@@ -9,6 +9,7 @@
 
 use std::f64::consts::{FRAC_2_PI, PI};
 
+use super::util::jwf_math as jm;
 use super::*;
 
 /// The four detuning factors of the `*2_bs` family (JWildfire's defaults differ per function).
@@ -141,14 +142,15 @@ fn tanh2_bs(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// cos(y2·y)); nothing is added where the denominator vanishes.
 fn coth2_bs(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [x1, x2, y1, y2] = v.params();
-    let d = (x2 * t.x).cosh() - (y2 * t.y).cos();
+    // JWildfire's table maths: near the origin d is a difference of nearly equal numbers.
+    let d = jm::cosh(x2 * t.x) - jm::cos(y2 * t.y);
     if d == 0.0 {
         return [0.0; 3];
     }
     let den = 1.0 / d;
     [
-        v.w * den * (x1 * t.x).sinh(),
-        v.w * den * (y1 * t.y).sin(),
+        v.w * den * jm::sinh(x1 * t.x),
+        v.w * den * jm::sin(y1 * t.y),
         0.0,
     ]
 }

@@ -13,6 +13,7 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
 use super::jwf_direct_colour::gmod;
 use super::util::fract;
+use super::util::jwf_math as jm;
 use super::*;
 
 /// JWildfire's `EPSILON`.
@@ -339,12 +340,14 @@ fn stripfit(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
 /// non-linearly, as the disc's radius).
 fn squircular(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let (u, w) = (t.x, t.y);
+    // JWildfire's table √ (√2 included): near the origin r is a difference of nearly equal
+    // numbers.
     let r = u * u + w * w;
-    let rs = r.sqrt();
+    let rs = jm::sqrt(r);
     let xs = if u > 0.0 { 1.0 } else { -1.0 };
-    let r = (v.w * v.w * r - 4.0 * u * u * w * w).sqrt();
-    let r = (1.0 + u * u / (w * w) - rs / (v.w * w * w) * r).sqrt();
-    let r = r / std::f64::consts::SQRT_2;
+    let r = jm::sqrt(v.w * v.w * r - 4.0 * u * u * w * w);
+    let r = jm::sqrt(1.0 + u * u / (w * w) - rs / (v.w * w * w) * r);
+    let r = r / jm::sqrt(2.0);
     [xs * r, w / u * r, 0.0]
 }
 

@@ -12,6 +12,7 @@ use std::f64::consts::TAU;
 use super::jwf_a_dc::rot;
 use super::jwf_dc_maths::{length2, step};
 use super::jwf_direct_colour::{DC_FLAGS, dc_common, dc_tail, gmod};
+use super::util::jwf_math as jm;
 use super::util::{atan2_approx, fract, signum_java, smoothstep};
 use super::*;
 
@@ -176,13 +177,14 @@ fn dc_hexagons(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     dc_common(v, tail, t, acc, rng, 1.0, pattern)
 }
 
-/// The fingerprint's hash of p into [−1, 1]².
+/// The fingerprint's hash of p into [−1, 1]², with JWildfire's table sine: the 50 chained
+/// hashes turn its last bits into different points.
 fn fingerprint_hash(x: f64, y: f64) -> (f64, f64) {
     let a = x * 63.31 + y * 127.63;
     let b = x * 395.467 + y * 213.799;
     (
-        fract(a.sin() * 43141.59265) * 2.0 - 1.0,
-        fract(b.sin() * 43141.59265) * 2.0 - 1.0,
+        fract(jm::sin(a) * 43141.59265) * 2.0 - 1.0,
+        fract(jm::sin(b) * 43141.59265) * 2.0 - 1.0,
     )
 }
 
@@ -193,7 +195,8 @@ fn dc_fingerprint(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
     let [zoom, _, time, width, tail @ ..] = v.params::<9>();
     dc_common(v, tail, t, acc, rng, 0.5, |x, y| {
         let (mut ux, mut uy) = (x * zoom, y * zoom);
-        let bounds = smoothstep(9.0, 10.0, length2(ux * 0.7, uy * 0.5));
+        let (ex, ey) = (ux * 0.7, uy * 0.5);
+        let bounds = smoothstep(9.0, 10.0, jm::sqrt(ex * ex + ey * ey));
         let mut a = 0.0;
         let mut h = ((7.0 * time).floor(), 0.0);
         for _ in 0..50 {
@@ -208,7 +211,7 @@ fn dc_fingerprint(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
         a += atan2_approx(uy, ux);
         let p = (1.0 - bounds) * width;
         let s = p.min(0.3);
-        let l = length2(ux, uy) + 0.319 * a;
+        let l = jm::sqrt(ux * ux + uy * uy) + 0.319 * a;
         let m = gmod(l, 2.0);
         let c = (1.0 - smoothstep(2.0 - s, 2.0, m)) * smoothstep(p, p + s, m);
         [c, c, c]

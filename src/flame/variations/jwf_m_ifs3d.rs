@@ -13,6 +13,7 @@
 
 use std::f64::consts::PI;
 
+use super::util::jwf_math as jm;
 use super::*;
 
 pub(super) static DEFS: &[VarDef] = &[
@@ -73,22 +74,27 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR),
 ];
 
+// The rotations take JWildfire's table sin and cos: the twists feed each step's angle with
+// the previous step's point, so the last bits of sin and cos grow along the chain.
 fn rotate_x(p: &mut [f64; 3], a: f64) {
     let (y, z) = (p[1], p[2]);
-    p[1] = a.cos() * y - a.sin() * z;
-    p[2] = a.sin() * y + a.cos() * z;
+    let (s, c) = (jm::sin(a), jm::cos(a));
+    p[1] = c * y - s * z;
+    p[2] = s * y + c * z;
 }
 
 fn rotate_y(p: &mut [f64; 3], a: f64) {
     let (x, z) = (p[0], p[2]);
-    p[0] = a.cos() * x + a.sin() * z;
-    p[2] = -a.sin() * x + a.cos() * z;
+    let (s, c) = (jm::sin(a), jm::cos(a));
+    p[0] = c * x + s * z;
+    p[2] = -s * x + c * z;
 }
 
 fn rotate_z(p: &mut [f64; 3], a: f64) {
     let (x, y) = (p[0], p[1]);
-    p[0] = a.cos() * x - a.sin() * y;
-    p[1] = a.sin() * x + a.cos() * y;
+    let (s, c) = (jm::sin(a), jm::cos(a));
+    p[0] = c * x - s * y;
+    p[1] = s * x + c * y;
 }
 
 /// Whether sub-cube (i, j, k) of {−1, 0, 1}³ is kept in `mode` (0–5).
@@ -230,7 +236,7 @@ fn chaos_cubes(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
             2 => f64::from(last[0] + 1 + (last[1] + 1) * 3 + (last[2] + 1) * 9) / 26.0,
             3 => (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() / offset,
             4 => path / (depth * offset),
-            _ => (p[1].atan2(p[0]) + p[2].atan2(p[0]) + 2.0 * PI) / (4.0 * PI),
+            _ => (libm::atan2(p[1], p[0]) + libm::atan2(p[2], p[0]) + 2.0 * PI) / (4.0 * PI),
         } * speed;
         let col = ((col % 1.0) + 1.0) % 1.0;
         acc.color += (col - acc.color) * v.w;

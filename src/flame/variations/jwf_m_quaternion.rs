@@ -3,10 +3,13 @@
 //! sin and sinh of the point taken as the quaternion x + (y, z)·i (each with its power and
 //! the detuning factors x1, x2, y1, y2, z1, z2 of its parts).
 //!
+//! JWildfire's table maths (`jwf_math`) throughout: near the origin |v| divides.
+//!
 //! The formulas follow JWildfire's (LGPL-2.1) code, written anew.
 
 use std::f64::consts::E;
 
+use super::util::jwf_math as jm;
 use super::*;
 
 /// The power and six detuning factors of one function, named `quaternion_<f>q…`.
@@ -103,24 +106,24 @@ struct Parts {
 
 /// The circular functions: sin(x·x1), cos(x·x2), sinh(|v|·y1), cosh(|v|·y2).
 fn circular(q: &[f64], (x, y, z): (f64, f64, f64)) -> Parts {
-    let abs_v = y.hypot(z) * q[5];
+    let abs_v = jm::hypot(y, z) * q[5];
     Parts {
-        s: (x * q[1]).sin(),
-        c: (x * q[2]).cos(),
-        sh: (abs_v * q[3]).sinh(),
-        ch: (abs_v * q[4]).cosh(),
+        s: jm::sin(x * q[1]),
+        c: jm::cos(x * q[2]),
+        sh: jm::sinh(abs_v * q[3]),
+        ch: jm::cosh(abs_v * q[4]),
         abs_v,
     }
 }
 
 /// The hyperbolic functions: sin(|v|·y1), cos(|v|·y2), sinh(x·x1), cosh(x·x2).
 fn hyperbolic(q: &[f64], (x, y, z): (f64, f64, f64)) -> Parts {
-    let abs_v = y.hypot(z) * q[5];
+    let abs_v = jm::hypot(y, z) * q[5];
     Parts {
-        s: (abs_v * q[3]).sin(),
-        c: (abs_v * q[4]).cos(),
-        sh: (x * q[1]).sinh(),
-        ch: (x * q[2]).cosh(),
+        s: jm::sin(abs_v * q[3]),
+        c: jm::cos(abs_v * q[4]),
+        sh: jm::sinh(x * q[1]),
+        ch: jm::cosh(x * q[2]),
         abs_v,
     }
 }
@@ -201,17 +204,17 @@ fn quaternion(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3
     }
     if q[ESTI] != 0.0 {
         let [pw, x1, y1, y2, z1, z2] = q[ESTI..ESTI + 6].try_into().expect("six values");
-        let e = (x * x1).exp();
-        let abs_v = y.hypot(z) * z1;
-        let (s, c) = ((abs_v * y1).sin(), (abs_v * y2).cos());
+        let e = jm::exp(x * x1);
+        let abs_v = jm::hypot(y, z) * z1;
+        let (s, c) = (jm::sin(abs_v * y1), jm::cos(abs_v * y2));
         let a = e * s / abs_v * z2;
         add(&mut o, [pw * w * e * c, pw * w * a * y, pw * w * a * z]);
     }
     if q[LOG] != 0.0 {
         let (pw, base) = (q[LOG], q[LOG + 1]);
         let denom = 0.5 * w / base.ln();
-        let abs_v = y.hypot(z);
-        let cc = w * abs_v.atan2(x) / abs_v;
+        let abs_v = jm::hypot(y, z);
+        let cc = w * jm::atan2(abs_v, x) / abs_v;
         let lx = pw * (x * x + abs_v * abs_v).ln() * denom;
         add(&mut o, [lx, pw * cc * y, pw * cc * z]);
     }

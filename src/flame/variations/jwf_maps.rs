@@ -11,6 +11,7 @@
 
 use std::f64::consts::{FRAC_1_PI, TAU};
 
+use super::util::jwf_math as jm;
 use super::util::{atan2_approx, signum_java, sqr};
 use super::*;
 
@@ -140,6 +141,7 @@ const COMPLEX_PARAMS: &[super::Param] = &[
 /// complex: a weighted sum of the complex cos, cosh, cot, coth, csc, csch, exp, sec, sech, tan,
 /// tanh, sin and sinh of the input, each with factors that detune its real and imaginary
 /// parts. A vanishing denominator drops the whole output (the point contributes nothing).
+/// JWildfire's table maths throughout: near the origin the poles amplify their last bits.
 fn complex(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [
         cospow,
@@ -211,105 +213,105 @@ fn complex(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let (mut ox, mut oy) = (0.0, 0.0);
     // cos
     if cospow != 0.0 {
-        ox += cospow * (x * cosx2).cos() * (y * cosy2).cosh();
-        oy -= cospow * (x * cosx1).sin() * (y * cosy1).sinh();
+        ox += cospow * jm::cos(x * cosx2) * jm::cosh(y * cosy2);
+        oy -= cospow * jm::sin(x * cosx1) * jm::sinh(y * cosy1);
     }
     // cosh
     if coshpow != 0.0 {
-        ox += coshpow * (x * coshx2).cosh() * (y * coshy2).cos();
-        oy += coshpow * (x * coshx1).sinh() * (y * coshy1).sin();
+        ox += coshpow * jm::cosh(x * coshx2) * jm::cos(y * coshy2);
+        oy += coshpow * jm::sinh(x * coshx1) * jm::sin(y * coshy1);
     }
     // cot
     if cotpow != 0.0 {
-        let k = 1.0 / ((coty2 * y).cosh() - (cotx2 * x).cos());
-        ox += cotpow * k * (cotx1 * x).sin();
-        oy -= cotpow * k * (coty1 * y).sinh();
+        let k = 1.0 / (jm::cosh(coty2 * y) - jm::cos(cotx2 * x));
+        ox += cotpow * k * jm::sin(cotx1 * x);
+        oy -= cotpow * k * jm::sinh(coty1 * y);
     }
     // coth
     if cothpow != 0.0 {
-        let d = (cothx2 * x).cosh() - (cothy2 * y).cos();
+        let d = jm::cosh(cothx2 * x) - jm::cos(cothy2 * y);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 1.0 / d;
-        ox += cothpow * k * (cothx1 * x).sinh();
-        oy += cothpow * k * (cothy1 * y).sin();
+        ox += cothpow * k * jm::sinh(cothx1 * x);
+        oy += cothpow * k * jm::sin(cothy1 * y);
     }
     // csc
     if cscpow != 0.0 {
-        let d = (2.0 * y).cosh() - (2.0 * x).cos();
+        let d = jm::cosh(2.0 * y) - jm::cos(2.0 * x);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += cscpow * k * (x * cscx1).sin() * (y * cscy2).cosh();
-        oy -= cscpow * k * (x * cscx2).cos() * (y * cscy1).sinh();
+        ox += cscpow * k * jm::sin(x * cscx1) * jm::cosh(y * cscy2);
+        oy -= cscpow * k * jm::cos(x * cscx2) * jm::sinh(y * cscy1);
     }
     // csch
     if cschpow != 0.0 {
-        let d = (2.0 * x).cosh() - (2.0 * y).cos();
+        let d = jm::cosh(2.0 * x) - jm::cos(2.0 * y);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += cschpow * k * (x * cschx1).sinh() * (y * cschy2).cos();
-        oy -= cschpow * k * (x * cschx2).cosh() * (y * cschy1).sin();
+        ox += cschpow * k * jm::sinh(x * cschx1) * jm::cos(y * cschy2);
+        oy -= cschpow * k * jm::cosh(x * cschx2) * jm::sin(y * cschy1);
     }
     // exp
     if exppow != 0.0 {
-        let e = (x * expx1).exp();
-        ox += exppow * e * (y * expy2).cos();
-        oy += exppow * e * (y * expy1).sin();
+        let e = jm::exp(x * expx1);
+        ox += exppow * e * jm::cos(y * expy2);
+        oy += exppow * e * jm::sin(y * expy1);
     }
     // sec
     if secpow != 0.0 {
-        let d = (2.0 * x).cos() + (2.0 * y).cosh();
+        let d = jm::cos(2.0 * x) + jm::cosh(2.0 * y);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += secpow * k * (x * secx2).cos() * (y * secy2).cosh();
-        oy += secpow * k * (x * secx1).sin() * (y * secy1).sinh();
+        ox += secpow * k * jm::cos(x * secx2) * jm::cosh(y * secy2);
+        oy += secpow * k * jm::sin(x * secx1) * jm::sinh(y * secy1);
     }
     // sech
     if sechpow != 0.0 {
-        let d = (2.0 * y).cos() + (2.0 * x).cosh();
+        let d = jm::cos(2.0 * y) + jm::cosh(2.0 * x);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 2.0 / d;
-        ox += sechpow * k * (x * sechx2).cosh() * (y * sechy2).cos();
-        oy -= sechpow * k * (x * sechx1).sinh() * (y * sechy1).sin();
+        ox += sechpow * k * jm::cosh(x * sechx2) * jm::cos(y * sechy2);
+        oy -= sechpow * k * jm::sinh(x * sechx1) * jm::sin(y * sechy1);
     }
     // tan
     if tanpow != 0.0 {
-        let d = (tanx2 * x).cos() + (tany2 * y).cosh();
+        let d = jm::cos(tanx2 * x) + jm::cosh(tany2 * y);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 1.0 / d;
-        ox += tanpow * k * (tanx1 * x).sin();
-        oy += tanpow * k * (tany1 * y).sinh();
+        ox += tanpow * k * jm::sin(tanx1 * x);
+        oy += tanpow * k * jm::sinh(tany1 * y);
     }
     // tanh
     if tanhpow != 0.0 {
-        let d = (y * tanhy2).cos() + (x * tanhx2).cosh();
+        let d = jm::cos(y * tanhy2) + jm::cosh(x * tanhx2);
         if d == 0.0 {
             return [0.0; 3];
         }
         let k = 1.0 / d;
-        ox += tanhpow * k * (x * tanhx1).sinh();
-        oy += tanhpow * k * (y * tanhy1).sin();
+        ox += tanhpow * k * jm::sinh(x * tanhx1);
+        oy += tanhpow * k * jm::sin(y * tanhy1);
     }
     // sin
     if sinpow != 0.0 {
-        ox += sinpow * (x * sinx1).sin() * (y * siny2).cosh();
-        oy += sinpow * (x * sinx2).cos() * (y * siny1).sinh();
+        ox += sinpow * jm::sin(x * sinx1) * jm::cosh(y * siny2);
+        oy += sinpow * jm::cos(x * sinx2) * jm::sinh(y * siny1);
     }
     // sinh
     if sinhpow != 0.0 {
-        ox += sinhpow * (x * sinhx1).sinh() * (y * sinhy2).cos();
-        oy += sinhpow * (x * sinhx2).cosh() * (y * sinhy1).sin();
+        ox += sinhpow * jm::sinh(x * sinhx1) * jm::cos(y * sinhy2);
+        oy += sinhpow * jm::cosh(x * sinhx2) * jm::sin(y * sinhy1);
     }
     [v.w * ox, v.w * oy, 0.0]
 }

@@ -5,23 +5,11 @@
 //! The formulas follow JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics,
 //! written anew.
 
-use std::f64::consts::{FRAC_2_PI, PI, TAU};
+use std::f64::consts::{PI, TAU};
 
 use crate::flame::variations::util::mix;
 use crate::flame::variations::*;
 use crate::flame::variations::{fr_crops, fr_radial};
-
-/// atanh(z) = ½·ln((1 + z)/(1 − z)), times the weight·2/π (Fractorium: weight/π).
-pub(super) fn arctanh(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let (x, y) = (t.x, t.y);
-    // (1 + z)/(1 − z), then its logarithm.
-    let (nr, ni) = (1.0 + x, y);
-    let (dr, di) = (1.0 - x, -y);
-    let d = dr * dr + di * di;
-    let (qr, qi) = ((nr * dr + ni * di) / d, (ni * dr - nr * di) / d);
-    let k = v.w * FRAC_2_PI;
-    [k * 0.5 * (qr * qr + qi * qi).ln(), k * qi.atan2(qr), 0.0]
-}
 
 /// Zueuk's cpow3 as JWildfire computes it: the root of the divisor is ⌊divisor·ξ⌋ (Fractorium
 /// draws an integer below 32767), the branch of the logarithm rounds as Java does (⌊x + ½⌋).

@@ -20,6 +20,7 @@ mod phases;
 mod quaternions;
 mod renamed;
 mod surfaces;
+mod tablemath;
 mod wider;
 
 /// JWildfire's `SMALL_EPSILON`, which it adds to radii and denominators.
@@ -80,7 +81,7 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("tanhq", quaternions::tanhq, 0, 0),
     ("tanq", quaternions::tanq, 0, 0),
     ("wedge_sph", origin::wedge_sph, 0, 0),
-    ("arctanh", fractorium::arctanh, 0, 0),
+    ("arctanh", tablemath::arctanh, 0, 0),
     ("boarders", fractorium::boarders, 0, 0),
     (
         "checks",
@@ -132,6 +133,20 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
         0,
         flag::USES_Z | flag::WRITES_Z,
     ),
+    ("arcsech2", tablemath::arcsech2, 0, 0),
+    ("d_spherical", tablemath::d_spherical, 0, 0),
+    ("eCollide", tablemath::e_collide, 0, 0),
+    ("eMod", tablemath::e_mod, 0, 0),
+    ("eMotion", tablemath::e_motion, 0, 0),
+    ("ePush", tablemath::e_push, 0, 0),
+    ("eRotate", tablemath::e_rotate, 0, 0),
+    ("eSwirl", tablemath::e_swirl, 0, 0),
+    ("edisc", tablemath::edisc, 0, 0),
+    ("hypershift2", tablemath::hypershift2, 0, 0),
+    ("lazyjess", tablemath::lazyjess, 0, 0),
+    ("npolar", tablemath::npolar, 0, 0),
+    ("ortho", tablemath::ortho, 0, 0),
+    ("rays3", tablemath::rays3, 0, 0),
 ];
 
 /// JWildfire's crop replaces the sum so far and hides or shows the point.

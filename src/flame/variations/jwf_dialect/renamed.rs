@@ -25,7 +25,8 @@ pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
             p("truchet_fill_seed", 0.0),
         ])
         .prepare(truchet_fill_prep),
-    VarDef::new("eScale", e_scale).params(&[p("eScale_scale", 1.0), p("eScale_angle", 0.0)]),
+    VarDef::new("eScale", super::tablemath::e_scale)
+        .params(&[p("eScale_scale", 1.0), p("eScale_angle", 0.0)]),
     VarDef::new("bubbleT3D", bubble_t3d)
         .params(&[
             // Each evaluation walks the stripes one by one.
@@ -61,31 +62,6 @@ pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
         .flags(flag::WRITES_Z)
         .prepare(prose3d_prep),
 ];
-
-/// Michael Faber's eScale as JWildfire computes it: elliptic coordinates (μ, ν), μ scaled and
-/// ν scaled about `angle`, wrapped into (−π, π]; acosh as JWildfire's `MathLib` has it,
-/// ln(√(x² − 1) + x).
-fn e_scale(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
-    let [scale, angle] = v.params();
-    let sqrt_safe = |u: f64| if u <= 0.0 { 0.0 } else { u.sqrt() };
-    let tmp = t.y * t.y + t.x * t.x + 1.0;
-    let tmp2 = 2.0 * t.x;
-    let xmax = ((sqrt_safe(tmp + tmp2) + sqrt_safe(tmp - tmp2)) * 0.5).max(1.0);
-    let mu = ((xmax * xmax - 1.0).sqrt() + xmax).ln() * scale;
-    let mut nu = (t.x / xmax).clamp(-1.0, 1.0).acos();
-    if t.y < 0.0 {
-        nu = -nu;
-    }
-    nu = ((scale * (nu + PI + angle)) % (TAU * scale) - angle - scale * PI) % TAU;
-    if nu > PI {
-        nu -= TAU;
-    }
-    if nu < -PI {
-        nu += TAU;
-    }
-    let (s, c) = nu.sin_cos();
-    [v.w * mu.cosh() * c, v.w * mu.sinh() * s, 0.0]
-}
 
 fn prep_bubble_t3d(v: &mut Prepared) {
     let [stripes, ratio, hole, _, sym, _] = v.params();

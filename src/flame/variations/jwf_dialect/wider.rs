@@ -152,18 +152,18 @@ pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
             p_int("dc_bubble_invert", 1.0, 0.0, 1.0),
         ])
         .flags(flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC),
-    VarDef::new("x", fr_radial::x_var)
+    VarDef::new("x", super::tablemath::x_var)
         .params(fr_radial::shape_params!(jwildfire "x"))
         .needs(need::SUMSQ | need::ATAN_YX)
-        .prepare(fr_radial::shape_prep),
-    VarDef::new("y", fr_radial::y_var)
+        .prepare(super::tablemath::shape_prep),
+    VarDef::new("y", super::tablemath::y_var)
         .params(fr_radial::shape_params!(jwildfire "y"))
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .prepare(fr_radial::shape_prep),
-    VarDef::new("z", fr_radial::z_var)
+        .prepare(super::tablemath::shape_prep),
+    VarDef::new("z", super::tablemath::z_var)
         .params(fr_radial::shape_params!(jwildfire "z"))
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)
-        .prepare(fr_radial::shape_prep),
+        .prepare(super::tablemath::shape_prep),
     VarDef::new("w", fr_radial::w_var)
         .params(fr_radial::shape_params!(jwildfire "w", p("w_angle", 0.0)))
         .needs(need::SUMSQ | need::SQRT | need::ATAN_YX)

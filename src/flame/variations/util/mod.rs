@@ -9,14 +9,17 @@
 //!
 //! By file: `arith` (small arithmetic, Java and GLSL idioms), `c_ints` (C conversions as x86-64
 //! performs them), `random` (random draws and hashes), `coords` (coordinate systems),
-//! `complex` (complex numbers with C99 semantics), `special` (special functions) and `formula`
-//! (JWildfire's formula texts).
+//! `complex` (complex numbers with C99 semantics), `special` (special functions), `formula`
+//! (JWildfire's formula texts) and `jwf_math` (JWildfire's table-based sin, cos, atan2, √, …,
+//! used as `jwf_math::sin` by the JWildfire variations that need its exact numbers).
 
 mod arith;
 mod c_ints;
 mod complex;
 mod coords;
 pub mod formula;
+pub mod jwf_math;
+mod jwf_math_tables;
 mod random;
 mod special;
 
