@@ -27,29 +27,12 @@ use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId}
 /// when one of them passes (take it off the list) and when a variation off the list fails.
 /// Sorted, one name per line.
 const NOT_YET: &[(&str, &str)] = &[
-    (
-        "asteria",
-        "weight2 points 11, 13, 15 are random in JWildfire (a draw above 0.35 keeps the point) but recorded as exact: every seed the vectors tried drew above 0.35",
-    ),
-    ("blade3D", "statistics differ"),
     ("brush_stroke_wf", "not implemented"),
-    (
-        "bubbleT3D",
-        "the vectors record angle_of_hole as JWildfire's init rewrote it (the hole's half angle in radians), not as it was set",
-    ),
     ("cactusGlobe", "not implemented"),
-    (
-        "capsule3D",
-        "statistics differ (alt2, where the capsule fills the cube's corner)",
-    ),
     ("cell3D", "not implemented"),
     (
         "chaosCubes",
         "x, y, z match; statistics differ at points 11 and 23 (quantiles of z and y)",
-    ),
-    (
-        "circlecrop",
-        "z differs; hide flag differs; statistics differ",
     ),
     ("colordomain", "not implemented"),
     ("colormap_wf", "not implemented"),
@@ -57,16 +40,9 @@ const NOT_YET: &[(&str, &str)] = &[
     ("custom_wf", "not implemented"),
     ("custom_wf_full", "not implemented"),
     ("cut_shapes", "not implemented"),
-    ("dc_carpet", "statistics differ"),
     ("dc_code", "not implemented"),
-    (
-        "dc_dmodulus",
-        "statistics differ at one point (its colour is a slowly mixing chain: the quantiles of \
-         20000 correlated draws vary more than the tolerance allows)",
-    ),
     ("dc_randomoctree", "not implemented"),
     ("dc_triTile", "not implemented"),
-    ("dc_triangle", "x, y, z, color differ; statistics differ"),
     ("dc_triantess", "not implemented"),
     ("displacemap_wf", "not implemented"),
     ("dla3d_wf", "x, y, z, color differ; call sequence differs"),
@@ -89,14 +65,16 @@ const NOT_YET: &[(&str, &str)] = &[
     ("fract_meteors_wf", "statistics differ in buddhabrot mode"),
     ("glsl_circuits", "not implemented"),
     ("glsl_code", "not implemented"),
-    ("glsl_mandala", "statistics differ (alt)"),
+    (
+        "glsl_mandala",
+        "colour statistics differ in alt (gradient mode: r times g after 51 steps of the inversion map; cause not found)",
+    ),
     ("glsl_randomoctree", "not implemented"),
     ("glynnSim1", "statistics differ"),
     ("glynns3subfl", "not implemented"),
     ("gpattern", "not implemented"),
     ("grid3d_wf", "not implemented"),
     ("hamid_js", "not implemented"),
-    ("hexnix3D", "statistics differ"),
     ("hypertile1", "statistics differ"),
     ("hypertile2", "statistics differ"),
     ("iflames_wf", "not implemented"),
@@ -118,22 +96,12 @@ const NOT_YET: &[(&str, &str)] = &[
     ("multi_ifs", "not implemented"),
     ("obj_mesh_primitive_wf", "not implemented"),
     ("obj_mesh_wf", "not implemented"),
-    ("ocappedcone3D", "statistics differ"),
-    ("ocylinder3D", "statistics differ"),
-    ("oroundcone3D", "statistics differ"),
     ("parplot2d_wf", "not implemented"),
     ("phoenix_julia", "statistics differ"),
-    ("pie3D", "statistics differ"),
-    ("pixel_flow", "statistics differ"),
     ("point_mirror_symmetry", "not implemented"),
     ("polarplot2d_wf", "not implemented"),
-    (
-        "polarplot3d_wf",
-        "statistics differ in the alt sets, whose formula text (drawn from a random preset by JWildfire's constructor) the vectors do not record",
-    ),
     ("post_brush_stroke_wf", "not implemented"),
     ("post_bumpmap_wf", "not implemented"),
-    ("post_circlecrop", "hide flag differs; statistics differ"),
     ("post_colormap_wf", "not implemented"),
     ("post_custom_wf", "not implemented"),
     (
@@ -144,8 +112,10 @@ const NOT_YET: &[(&str, &str)] = &[
     ("post_julia3Dq", "statistics differ"),
     ("post_juliaq", "statistics differ"),
     ("post_point_crop", "not implemented"),
-    ("post_smartcrop", "color differs; statistics differ"),
-    ("pre_circlecrop", "hide flag differs; statistics differ"),
+    (
+        "post_smartcrop",
+        "alt2 point 10 is random in JWildfire (a fresh object that crops it with the edge draw gives the last kept point, still the origin) but recorded as exact, and its statistics stream never started with a crop",
+    ),
     ("pre_custom_wf", "not implemented"),
     ("pre_subflame_wf", "not implemented"),
     ("quad", "not implemented"),
@@ -156,21 +126,21 @@ const NOT_YET: &[(&str, &str)] = &[
     ("rose_wf", "statistics differ"),
     ("sattractor3D", "not implemented"),
     ("spliptic_bs", "statistics differ"),
-    ("splitbrdr", "statistics differ"),
     ("sqrt_asinh", "statistics differ"),
-    ("squish", "statistics differ"),
     ("subflame_wf", "not implemented"),
     ("sunvoroni", "not implemented"),
-    ("superShape3d", "statistics differ"),
     ("svg_wf", "not implemented"),
     ("synth", "x, y differ; statistics differ"),
     ("taprats", "not implemented"),
     ("terrain3D", "not implemented"),
     ("tess_shape", "not implemented"),
-    ("text_wf", "statistics differ"),
+    (
+        "text_wf",
+        "statistics differ: ugnis draws the text with its bundled sans-serif, JWildfire with the system font (Arial or the fallback)",
+    ),
     ("triantruchet", "not implemented"),
     ("truchet_ae", "not implemented"),
-    ("truchet_hex_fill", "statistics differ"),
+    ("truchet_hex_fill", "statistics differ (cause not found)"),
     (
         "wallpaper_js",
         "acc point 16 is random in JWildfire (the second branch sets x to 0, the first keeps the sum's 0.3) but recorded as exact 0.3: every seed the vectors tried took the first branch",
@@ -285,8 +255,80 @@ const RULES: Rules = Rules {
     preserve_z: false,
 };
 
-fn prepared(s: &Set) -> Prepared {
-    Prepared::for_flame(s.id, s.form, s.weight, &s.params, &[], s.aff, RULES)
+fn prepared(var: &str, ps: &str, s: &Set) -> Prepared {
+    let mut params = s.params.clone();
+    if var == "bubbleT3D" {
+        undo_bubble_t3d_init(&mut params);
+    }
+    let texts: Vec<String> = harness_texts(var, ps)
+        .iter()
+        .map(|t| t.to_string())
+        .collect();
+    Prepared::for_flame(s.id, s.form, s.weight, &params, &texts, s.aff, RULES)
+}
+
+/// bubbleT3D's `init` rewrites its field `angle_of_hole` (a, in degrees) to the hole's angle
+/// π − a·π/360 (for a ≥ 0, as in every set of the vectors), and the vectors' `params` column
+/// reads the fields back after `init`: the value set is (π − A)·360/π of the value A listed.
+fn undo_bubble_t3d_init(params: &mut [f64]) {
+    let (_, _, k) = variations::param_of("bubbleT3D_angle_of_hole").expect("bubbleT3D's hole");
+    params[k] = (std::f64::consts::PI - params[k]) * 360.0 / std::f64::consts::PI;
+}
+
+/// The formula texts a set ran with where the vectors do not record them. polarplot3d_wf's
+/// harness set `preset_id` (an integer: 8 + 1 = 9 in `alt`, 8 + 2 = 10 in `alt2`) first,
+/// which loads that preset's formula (JWildfire's presets file; an id it lacks, as 10, gives
+/// the default preset, formula `1.0`); the ranges set next differ from the preset's, so
+/// `preset_id` reads back as −1 while the formula stays.
+fn harness_texts(var: &str, ps: &str) -> &'static [&'static str] {
+    match (var, ps) {
+        ("polarplot3d_wf", "alt") => &["cos(param_a*t + sin(param_b*u)) + param_c"],
+        ("polarplot3d_wf", "alt2") => &["1.0"],
+        _ => &[],
+    }
+}
+
+/// Cells the vectors record as exact that are random in JWildfire: the harness looks for
+/// random cells at the default weight and affine map only and reuses that finding for the
+/// `weight2`, `affine2` and `acc` sets. asteria draws only for points inside both the unit
+/// circle and the circle of radius 1 about (±1, ±1); at weight −1.3 points 11, 13 and 15 are
+/// there (at 0.7 they are not), and the value recorded is the one the draw of seed
+/// 1000 + point gave (above 0.35: the point kept). Such a row must equal ugnis' output for
+/// one of [`UNMARKED_SEEDS`] seeds.
+const UNMARKED_RANDOM: &[(&str, &str, &[&str])] = &[("asteria", "weight2", &["11", "13", "15"])];
+
+/// How many seeds an [`UNMARKED_RANDOM`] row is tried with.
+const UNMARKED_SEEDS: u64 = 64;
+
+/// JWildfire's generator (`MarsagliaRandomGenerator`: two 16-bit multiply-with-carry
+/// generators in Java's signed `int`; the overflow of the one multiplied by 36969 breaks it
+/// into short cycles) enters a cycle of 2331 steps from the statistics' seeds 4242 + 11 and
+/// 4242 + 23 (after 34416 and 27665 draws; from the other 22 seeds it enters one of 100638
+/// steps), and the part it adds to every later draw repeats with that period: successive
+/// triples of draws are then far from uniform in the unit cube (seed 4253: 3.41 % of 300000
+/// triples in [0.7, 1]³, where 2.70 % are expected and seed 4242 gives 2.80 %). Variations
+/// that fill a solid by drawing points of the cube until one falls inside accept at a rate
+/// that differs accordingly (capsule3D `alt2`: 6.1 % of the draws from seed 4253, 5.4 % from
+/// 4265, 4.9 to 5.1 % from the others), so their statistics at these two points are not
+/// those of uniform draws. Their other 22 points are compared.
+const SHORT_CYCLE_POINTS: &[&str] = &["11", "23"];
+
+/// The variations whose statistics at [`SHORT_CYCLE_POINTS`] are left out: those that draw
+/// points of the cube until one falls inside a solid, and dc_dmodulus, whose colour halves
+/// the last colour and adds one of two values picked by a draw at every call (the colour
+/// reads the last draws as binary digits).
+const JOINT_DRAWS: &[&str] = &[
+    "capsule3D",
+    "dc_dmodulus",
+    "ocappedcone3D",
+    "ocylinder3D",
+    "oroundcone3D",
+];
+
+fn unmarked_random(var: &str, ps: &str, point: &str) -> bool {
+    UNMARKED_RANDOM
+        .iter()
+        .any(|(v, s, pts)| *v == var && *s == ps && pts.contains(&point))
 }
 
 /// The phase JWildfire runs a variation of `priority` in, against the one ugnis runs it in.
@@ -374,9 +416,7 @@ fn check_deterministic(
         for &i in rows {
             let r = &t.rows[i];
             let tx = t_in(t, r, &points);
-            let v = prepared(set);
-            let mut rng = FastRng::new(i as u64);
-            let o = variations::eval_prepared(&v, tx, acc_in(t, r), true, &mut rng);
+            let v = prepared(var, ps, set);
             let color_in = acc_in(t, r).color;
             let want = [
                 t.get(r, "out_x"),
@@ -384,9 +424,28 @@ fn check_deterministic(
                 t.get(r, "out_z"),
                 t.get(r, "color_out"),
             ];
-            let got = [o.x, o.y, o.z, o.color];
             let random_row = want.iter().any(|w| w.is_empty());
             let point = t.get(r, "point");
+            let run = |seed: u64| {
+                let mut rng = FastRng::new(seed);
+                variations::eval_prepared(&v, tx, acc_in(t, r), true, &mut rng)
+            };
+            let matches = |o: &Acc| {
+                let got = [o.x, o.y, o.z, o.color];
+                (0..4).all(|k| match want[k] {
+                    "" => true,
+                    "=" => same(got[k], color_in),
+                    w => same(got[k], num(w)),
+                })
+            };
+            let mut o = run(i as u64);
+            if unmarked_random(var, ps, point) && !matches(&o) {
+                let seeds = (1..UNMARKED_SEEDS).map(|k| i as u64 + k * 7919);
+                if let Some(hit) = seeds.map(run).find(|o| matches(o)) {
+                    o = hit;
+                }
+            }
+            let got = [o.x, o.y, o.z, o.color];
             for k in 0..4 {
                 let w = match want[k] {
                     "" => continue, // a random component: see the statistical test
@@ -459,8 +518,12 @@ fn check_random(
                         let Some(set) = by_set.get(&(var.to_string(), ps.to_string())) else {
                             continue;
                         };
+                        let point = t.get(r, "point");
+                        if JOINT_DRAWS.contains(&var) && SHORT_CYCLE_POINTS.contains(&point) {
+                            continue;
+                        }
                         let (tx, acc) = input_of(inputs, t, r);
-                        let v = prepared(set);
+                        let v = prepared(var, ps, set);
                         let mut rng = FastRng::new(1000 + i as u64);
                         let draw = || variations::eval_prepared(&v, tx, acc, false, &mut rng);
                         if let Err(e) = compare_stats(t, r, Finite::PerCoordinate, draw) {
@@ -495,7 +558,7 @@ fn check_stateful(
         let Some(set) = by_set.get(&(var.to_string(), ps.to_string())) else {
             continue;
         };
-        let v = prepared(set);
+        let v = prepared(var, ps, set);
         let (tx, _) = input_of(inputs, &t, r);
         let mut rng = FastRng::new(7);
         let acc = Acc {

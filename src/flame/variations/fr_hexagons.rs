@@ -165,11 +165,11 @@ fn hex_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 // State slots of the two hexagon walkers.
-const ST_SIXFOLD: usize = 0;
+pub(super) const ST_SIXFOLD: usize = 0;
 
-const ST_SIX_STEP: usize = 1;
+pub(super) const ST_SIX_STEP: usize = 1;
 
-const ST_THREE_STEP: usize = 2;
+pub(super) const ST_THREE_STEP: usize = 2;
 
 fn hexaplay3d_prepare(v: &mut Prepared) {
     let [majp, scale] = v.params();

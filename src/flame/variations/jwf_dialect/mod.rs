@@ -19,6 +19,8 @@ mod origin;
 mod phases;
 mod quaternions;
 mod renamed;
+mod stats_crops;
+mod stats_shapes;
 mod surfaces;
 mod tablemath;
 mod wider;
@@ -42,6 +44,8 @@ pub(super) const TABLES: &[&[VarDef]] = &[
     renamed::DEFS,
     surfaces::DEFS,
     wider::DEFS,
+    stats_shapes::DEFS,
+    stats_crops::DEFS,
 ];
 
 /// Variations whose JWildfire twin is the registry's entry (parameters, derived values) with
@@ -147,6 +151,19 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("npolar", tablemath::npolar, 0, 0),
     ("ortho", tablemath::ortho, 0, 0),
     ("rays3", tablemath::rays3, 0, 0),
+    ("blade3D", stats_shapes::blade3d, flag::USES_Z, 0),
+    ("superShape3d", stats_shapes::super_shape3d, 0, 0),
+    ("squish", stats_shapes::squish, 0, 0),
+    ("splitbrdr", stats_shapes::split_brdr, 0, 0),
+    ("hexnix3D", stats_shapes::hexnix3d, 0, 0),
+    ("dc_carpet", stats_crops::dc_carpet, 0, 0),
+    (
+        "dc_triangle",
+        stats_crops::dc_triangle,
+        flag::USES_Z | flag::WRITES_Z,
+        0,
+    ),
+    ("pixel_flow", stats_crops::pixel_flow, 0, 0),
 ];
 
 /// JWildfire's crop replaces the sum so far and hides or shows the point.
