@@ -87,6 +87,7 @@ const ONE_DIV_F4: f64 = 1.0 / 24.0;
 
 impl Tables {
     /// The tables as the `libm` crate computes them, before the corrections.
+    #[allow(clippy::needless_range_loop)] // several tables are filled from one step value
     pub(super) fn computed() -> Self {
         let n = SIN_COS_TABS_SIZE;
         let (d_hi, d_lo) = sin_cos_delta();
