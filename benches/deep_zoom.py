@@ -20,6 +20,14 @@ an exact per-pixel computation in big fixed point) is the test `escape::deep::te
 (`cargo test --lib escape::deep`).
 
     python3 benches/deep_zoom.py --ugnis target/release/ugnis --fs-python /path/to/python
+
+Measured on 2 threads, 640x480, with the 2-core machine at load 11-12 (ugnis' wall time over
+Fractalshades', CPU ratio in brackets): seahorse 1e-25 2.78 (2.70) against Fractalshades'
+default tolerance, 0.83 (0.79) against its matched 1e-14; misiurewicz 1e-100 0.12 (0.09),
+matched 0.11 (0.09); misiurewicz 1e-1000 0.07 (0.09), matched 0.06 (0.08); burning ship 1e-100
+0.23 (0.23). Fractalshades' own accuracy (--accuracy, 16x12): seahorse 85.4 % at 1e-6 and
+99.0 % at 1e-14; misiurewicz 1e-100 and 1e-1000 100 % at both; burning ship 1e-100 43.8 % and
+46.4 %.
 """
 
 import argparse
