@@ -8,13 +8,26 @@ Fractalshades' Burning Ship iterates y ← 2|xy| − b, the mirror image of ugni
 (|Re z| + i|Im z|)² + c: its view is given the negated imaginary part.
 
 Fractalshades runs each view twice in one process and its second run is timed, so that
-numba's compilation does not count. It needs `pip install fractalshades gmpy2` (and Debian's
-libgmp-dev libmpfr-dev libmpc-dev); give its Python with --fs-python (skipped when absent).
+numba's compilation does not count. It needs `pip install fractalshades gmpy2 "numpy<2.4"`
+(Fractalshades 1.2.1's reference loop fails on numpy 2.4; and Debian's libgmp-dev
+libmpfr-dev libmpc-dev); give its Python with --fs-python (skipped when absent).
 
-The correctness figure (continuous counts against an exact per-pixel computation in big
-fixed point) is the test `escape::deep::tests` (`cargo test --lib escape::deep`).
+Fractalshades' default bilinear tolerance (1e-6) is less exact than ugnis' default (2^-44):
+`--accuracy` measures its continuous counts against exact iteration in MPFR on a 16x12 grid
+of each view, and each Mandelbrot view is also timed with Fractalshades at --fs-matched, the
+tolerance at which its accuracy matches ugnis'. ugnis' own figure (continuous counts against
+an exact per-pixel computation in big fixed point) is the test `escape::deep::tests`
+(`cargo test --lib escape::deep`).
 
     python3 benches/deep_zoom.py --ugnis target/release/ugnis --fs-python /path/to/python
+
+Measured on 2 threads, 640x480, with the 2-core machine at load 11-12 (ugnis' wall time over
+Fractalshades', CPU ratio in brackets): seahorse 1e-25 2.78 (2.70) against Fractalshades'
+default tolerance, 0.83 (0.79) against its matched 1e-14; misiurewicz 1e-100 0.12 (0.09),
+matched 0.11 (0.09); misiurewicz 1e-1000 0.07 (0.09), matched 0.06 (0.08); burning ship 1e-100
+0.23 (0.23). Fractalshades' own accuracy (--accuracy, 16x12): seahorse 85.4 % at 1e-6 and
+99.0 % at 1e-14; misiurewicz 1e-100 and 1e-1000 100 % at both; burning ship 1e-100 43.8 % and
+46.4 %.
 """
 
 import argparse
@@ -48,8 +61,14 @@ VIEWS = [
     ("burning ship 1e-100", SHIP_X, SHIP_Y, "1e-100", 5000, "burning-ship"),
 ]
 
+# Fractalshades' bilinear tolerance at which its continuous counts are as exact as ugnis'
+# default (2^-44): on the seahorse view (16x12 grid, --accuracy) its default 1e-6 leaves
+# 85 % of pixels within 0.05 of exact iteration, 1e-10 96 %, 1e-12 98 %, 1e-14 and no
+# bilinear steps at all 99 %.
+FS_MATCHED = "1e-14"
+
 FS_SCRIPT = r"""
-import os, sys, time, tempfile
+import math, os, sys, time, tempfile
 os.environ.setdefault("NUMBA_NUM_THREADS", sys.argv[6])
 import mpmath
 import fractalshades as fs
@@ -57,27 +76,80 @@ import fractalshades.models as fsm
 
 x, y, dx, max_iter, size = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5]
 ship = sys.argv[7] == "burning-ship"
+eps = None if sys.argv[8] == "none" else float(sys.argv[8])
+accuracy = sys.argv[9] == "accuracy"
 if ship:
     y = y[1:] if y.startswith("-") else "-" + y
 nx, ny = (int(v) for v in size.split("x"))
 digits = max(20, int(-mpmath.log10(mpmath.mpf(dx))) + 10)
-times = []
-for run in range(2):
+
+
+def render():
     d = tempfile.mkdtemp()
     if ship:
         f = fsm.Perturbation_burning_ship(d, flavor="Burning ship")
         f.zoom(precision=digits, x=x, y=y, dx=dx, nx=nx, xy_ratio=nx / ny, theta_deg=0.0)
         f.calc_std_div(calc_name="bench", subset=None, max_iter=max_iter, M_divergence=256.0,
-                       calc_hessian=False)
+                       calc_hessian=False, BLA_eps=eps)
     else:
         f = fsm.Perturbation_mandelbrot(d)
         f.zoom(precision=digits, x=x, y=y, dx=dx, nx=nx, xy_ratio=nx / ny, theta_deg=0.0)
         f.calc_std_div(calc_name="bench", subset=None, max_iter=max_iter, M_divergence=256.0,
-                       epsilon_stationnary=1e-3, calc_dzndc=False)
+                       epsilon_stationnary=1e-3, calc_dzndc=False, BLA_eps=eps)
     t, p = time.time(), time.process_time()
     f.calc_raw("bench")
-    times.append((time.time() - t, time.process_time() - p))
-print(times[1][0], times[1][1])
+    return f, (time.time() - t, time.process_time() - p)
+
+
+if not accuracy:
+    render()
+    f, (wall, cpu) = render()
+    print(wall, cpu)
+    sys.exit(0)
+
+# Accuracy: every pixel's continuous count n + 1 - log2(ln|z|) from Fractalshades' raw
+# arrays (escape iteration, final z) against the same count from the pixel iterated directly
+# in MPFR (gmpy2) at twice the digits of the view plus 200 bits.
+import gmpy2
+f, _ = render()
+M2 = 256.0 ** 2
+prec = int(-mpmath.log(mpmath.mpf(dx), 2) * 2 + 200)
+gmpy2.get_context().precision = prec
+X, Y, DX = gmpy2.mpfr(x), gmpy2.mpfr(y), gmpy2.mpfr(dx)
+
+
+def nu(n, z):
+    return n + 1 - math.log(math.log(abs(z))) / math.log(2)
+
+
+def exact(p):
+    cx = X + gmpy2.mpfr(p.real) * DX
+    cy = Y + gmpy2.mpfr(p.imag) * DX
+    zx = zy = gmpy2.mpfr(0)
+    for n in range(1, max_iter + 1):
+        if ship:
+            # Fractalshades' Burning Ship: y <- 2|xy| - b.
+            zx, zy = zx * zx - zy * zy + cx, 2 * abs(zx * zy) - cy
+        else:
+            zx, zy = zx * zx - zy * zy + cx, 2 * zx * zy + cy
+        a, b = float(zx), float(zy)
+        if not a * a + b * b <= M2:
+            return n, complex(a, b)
+    return None
+
+
+good = total = 0
+for cs in f.chunk_slices():
+    _, c_pix, Z, U, stop_reason, stop_iter = f.reload_data(cs, "bench")
+    for k in range(len(c_pix)):
+        e = exact(complex(c_pix[k]))
+        if e is None:
+            ok = stop_reason[0, k] == 0
+        else:
+            ok = stop_reason[0, k] == 1 and abs(nu(int(stop_iter[0, k]), Z[0, k]) - nu(*e)) < 0.05
+        good += bool(ok)
+        total += 1
+print(good / total)
 """
 
 
@@ -100,16 +172,15 @@ def time_ugnis(exe, view, size, threads, tolerance=None):
         return (dt, cpu), ""
 
 
-def time_fractalshades(py, view, size, threads):
+def run_fractalshades(py, view, size, threads, eps="1e-6", accuracy=False):
     name, x, y, width, max_iter, kind = view
     # Fractalshades' dx is the view's width.
     r = subprocess.run([py, "-c", FS_SCRIPT, x, y, width, str(max_iter), size, str(threads),
-                        kind],
+                        kind, eps, "accuracy" if accuracy else "time"],
                        capture_output=True, text=True)
     if r.returncode != 0:
         return None, r.stderr.strip().splitlines()[-1:]
-    wall, cpu = r.stdout.strip().splitlines()[-1].split()
-    return (float(wall), float(cpu)), ""
+    return [float(v) for v in r.stdout.strip().splitlines()[-1].split()], ""
 
 
 def main():
@@ -122,37 +193,61 @@ def main():
     ap.add_argument("--fs-tolerance", action="store_true",
                     help="also time ugnis with Fractalshades' bilinear tolerance (1e-6, "
                          "--bla-tolerance): the same skipping, less exact than ugnis' default")
+    ap.add_argument("--fs-matched", default=FS_MATCHED,
+                    help="also time Fractalshades at this bilinear tolerance (its accuracy "
+                         "then matches ugnis' default; 'off' to skip)")
+    ap.add_argument("--accuracy", action="store_true",
+                    help="instead of timing, the fraction of a 16x12 grid of Fractalshades' "
+                         "pixels whose continuous count is within 0.05 of exact iteration, at "
+                         "its default tolerance and at --fs-matched")
     a = ap.parse_args()
+    views = [v for v in VIEWS if not a.only or a.only in v[0]]
+    if a.accuracy:
+        if not a.fs_python:
+            sys.exit("--accuracy needs --fs-python")
+        print(f"{'view':24} Fractalshades' pixels within 0.05 of exact (16x12)")
+        for v in views:
+            cols = []
+            for eps in ["1e-6"] + ([a.fs_matched] if a.fs_matched != "off" else []):
+                r, err = run_fractalshades(a.fs_python, v, "16x12", a.threads, eps, True)
+                cols.append(f"eps {eps}: " + (f"{100 * r[0]:.1f} %" if r else f"failed {err}"))
+            print(f"{v[0]:24} " + ", ".join(cols), flush=True)
+        return
     # On a machine other jobs load, wall times stretch with the load; CPU times (all threads)
     # do much less, so both are shown.
     print(f"{'view':24} {'size':>8} {'iters':>6} {'ugnis s':>9} {'Fractalshades s':>16} "
           f"{'ratio':>6} {'CPU s':>7} {'FS CPU s':>9} {'ratio':>6}")
-    for v in VIEWS:
-        if a.only and a.only not in v[0]:
-            continue
+
+    def row(label, v, tu, tf):
+        cols = [f"{tu[0]:.2f}", f"{tf[0]:.2f}" if tf else "-",
+                f"{tu[0] / tf[0]:.2f}" if tf else "-", f"{tu[1]:.2f}",
+                f"{tf[1]:.2f}" if tf else "-", f"{tu[1] / tf[1]:.2f}" if tf else "-"]
+        print(f"{label:24} {a.size:>8} {v[4]:>6} {cols[0]:>9} {cols[1]:>16} {cols[2]:>6} "
+              f"{cols[3]:>7} {cols[4]:>9} {cols[5]:>6}", flush=True)
+
+    for v in views:
         tu, err = time_ugnis(a.ugnis, v, a.size, a.threads)
         tf = None
         if a.fs_python:
-            tf, ferr = time_fractalshades(a.fs_python, v, a.size, a.threads)
+            tf, ferr = run_fractalshades(a.fs_python, v, a.size, a.threads)
             if tf is None:
                 print(f"  Fractalshades failed: {ferr}", file=sys.stderr)
         if tu is None:
             print(f"{v[0]:24} {a.size:>8} {v[4]:>6} failed: {err}", flush=True)
             continue
-        cols = [f"{tu[0]:.2f}", f"{tf[0]:.2f}" if tf else "-",
-                f"{tu[0] / tf[0]:.2f}" if tf else "-", f"{tu[1]:.2f}",
-                f"{tf[1]:.2f}" if tf else "-", f"{tu[1] / tf[1]:.2f}" if tf else "-"]
-        print(f"{v[0]:24} {a.size:>8} {v[4]:>6} {cols[0]:>9} {cols[1]:>16} {cols[2]:>6} "
-              f"{cols[3]:>7} {cols[4]:>9} {cols[5]:>6}", flush=True)
+        row(v[0], v, tu, tf)
+        if a.fs_python and a.fs_matched != "off" and v[5] == "mandelbrot":
+            tm, ferr = run_fractalshades(a.fs_python, v, a.size, a.threads, a.fs_matched)
+            if tm is None:
+                print(f"  Fractalshades at {a.fs_matched} failed: {ferr}", file=sys.stderr)
+            else:
+                row(f"  FS at tolerance {a.fs_matched}", v, tu, tm)
         if a.fs_tolerance:
             te, err = time_ugnis(a.ugnis, v, a.size, a.threads, 1e-6)
             if te is None:
                 print(f"  ugnis --bla-tolerance 1e-6 failed: {err}", file=sys.stderr)
                 continue
-            cols = [f"{te[0]:.2f}", f"{te[0] / tf[0]:.2f}" if tf else "-", f"{te[1]:.2f}",
-                    f"{te[1] / tf[1]:.2f}" if tf else "-"]
-            print(f"{'  at tolerance 1e-6':24} {a.size:>8} {v[4]:>6} {cols[0]:>9} {'':>16} "
-                  f"{cols[1]:>6} {cols[2]:>7} {'':>9} {cols[3]:>6}", flush=True)
+            row("  ugnis at tolerance 1e-6", v, te, tf)
 
 
 if __name__ == "__main__":

@@ -21,10 +21,13 @@ use super::fx::{Cx, Fx};
 /// round-off (2^-53) drops nothing f64 would keep, but admits so few steps that half of the
 /// iterations of a seahorse-valley view at 1e-25 (30,000 iterations) are taken one by one;
 /// 2^-44 skips about half of those and keeps its continuous counts as close to exact
-/// iteration (97 % of pixels within 0.05) as 2^-53 does, where 2^-43 already loses a pixel.
-/// Larger values trade correctness for speed: 1e-10 agrees on 94 %, 1e-8 on 87 % and
-/// Fractalshades' default 1e-6 on 78 % of that view's pixels, and on that view they leave
-/// 2.2 and 8 times fewer iterations to take one by one.
+/// iteration as no approximation at all: on a 16×12 grid of that view the same 181 pixels
+/// agree within 0.05 as with every iteration perturbed singly (ε = 0), or without rebasing;
+/// the other 11 are lost to f64 rounding of the differences. 2^-43 already loses a pixel.
+/// Larger values trade correctness for speed: 1e-10 loses 6 more pixels and Fractalshades'
+/// default 1e-6 32 more, and on that view they leave 2.2 and 8 times fewer iterations to take
+/// one by one. (Fractalshades itself, at its default 1e-6, has 85 % of a grid of that view
+/// within 0.05 of exact iteration; it reaches its unapproximated 99 % at 1e-14.)
 pub const EPSILON: f64 = 1.0 / (1u64 << 44) as f64;
 
 /// The range a user may choose ε from: f64's unit round-off to a thousandth.
