@@ -441,7 +441,7 @@ fn check_deterministic(
             let mut o = run(i as u64);
             if unmarked_random(var, ps, point) && !matches(&o) {
                 let seeds = (1..UNMARKED_SEEDS).map(|k| i as u64 + k * 7919);
-                if let Some(hit) = seeds.map(run).find(|o| matches(o)) {
+                if let Some(hit) = seeds.map(run).find(matches) {
                     o = hit;
                 }
             }
