@@ -99,6 +99,17 @@
 //! | `jwf_m_curves` | curves drawn at random (`maurer_rose`) |
 //! | `jwf_m_tilecuts` | cuts along tilings (`cut_hextruchetflow`, `cut_truchetweaving`, `cut_tstruchet`, `cut_triantess`, …) |
 //! | `jwf_m_draw` | drawings of many figures, one drawn at random per call (`sunflower`) |
+//! | `jwf_h4_cells` | space cut into moved, bent and turned cubes (`cell3D`) |
+//! | `jwf_h4_hamid` | Hamid Naderi Yeganeh's figures of segments and circles (`hamid_js`) |
+//! | `jwf_h4_ifs` | 74 small iterated function systems (`multi_ifs`) |
+//! | `jwf_h4_inversion` | inversion in a circle, conic, polygon, rhodonea or supershape (`inversion`) |
+//! | `jwf_h4_kifs` | a kaleidoscopic IFS iterated within one call (`kifs3d`) |
+//! | `jwf_h4_klein` | limit sets of Kleinian groups (`klein_group`) |
+//! | `jwf_h4_mandala` | Steve Witham's rotation-orbit mandalas (`mandala`, `mandala2`) |
+//! | `jwf_h4_metaballs` | points inside seeded metaballs (`metaballs3d_wf`) |
+//! | `jwf_h4_recurrence` | recurrence plots of 30 signals (`recurrenceplot`) |
+//! | `jwf_h4_shapes` | a cut along Inigo Quilez's 2-D distance functions (`cut_shapes`) |
+//! | `jwf_h4_terrain` | a diamond-square landscape mesh (`terrain3D`) |
 //! | `jwf_m_foam` | points pushed out of random bubbles (`natural_foam`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
@@ -199,6 +210,17 @@ mod jwf_dc_twins;
 mod jwf_dialect;
 mod jwf_direct_colour;
 mod jwf_drawings;
+mod jwf_h4_cells;
+mod jwf_h4_hamid;
+mod jwf_h4_ifs;
+mod jwf_h4_inversion;
+mod jwf_h4_kifs;
+mod jwf_h4_klein;
+mod jwf_h4_mandala;
+mod jwf_h4_metaballs;
+mod jwf_h4_recurrence;
+mod jwf_h4_shapes;
+mod jwf_h4_terrain;
 mod jwf_knots;
 mod jwf_m_crops;
 mod jwf_m_curves;

@@ -45,6 +45,11 @@ use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
     jwf_z_solids, jwf_z_warps,
 };
+// JWildfire variations not yet implemented, part 1 (helper h4).
+use super::{
+    jwf_h4_cells, jwf_h4_hamid, jwf_h4_ifs, jwf_h4_inversion, jwf_h4_kifs, jwf_h4_klein,
+    jwf_h4_mandala, jwf_h4_metaballs, jwf_h4_recurrence, jwf_h4_shapes, jwf_h4_terrain,
+};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -86,7 +91,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 85] = [
+const FILES: [&[VarDef]; 96] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -179,6 +184,17 @@ const FILES: [&[VarDef]; 85] = [
     jwf_m_tilecuts::DEFS,
     jwf_m_ifs3d::DEFS,
     jwf_m_foam::DEFS,
+    jwf_h4_mandala::DEFS,
+    jwf_h4_klein::DEFS,
+    jwf_h4_cells::DEFS,
+    jwf_h4_kifs::DEFS,
+    jwf_h4_hamid::DEFS,
+    jwf_h4_ifs::DEFS,
+    jwf_h4_shapes::DEFS,
+    jwf_h4_recurrence::DEFS,
+    jwf_h4_inversion::DEFS,
+    jwf_h4_terrain::DEFS,
+    jwf_h4_metaballs::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -633,6 +649,18 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "chaosCubes",
     "romanesco",
     "natural_foam",
+    "mandala",
+    "mandala2",
+    "klein_group",
+    "cell3D",
+    "kifs3d",
+    "hamid_js",
+    "multi_ifs",
+    "cut_shapes",
+    "recurrenceplot",
+    "inversion",
+    "terrain3D",
+    "metaballs3d_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.
