@@ -190,9 +190,10 @@ fn mag_inv(re: f64, im: f64) -> f64 {
 /// JWildfire's `Complex.Log`: ½·ln(|z|² + 1e-20) and the argument (Java's atan2, plus a zero
 /// period term, so that −0 reads +0).
 fn c_log(re: f64, im: f64) -> (f64, f64) {
+    let arg = libm::atan2(im, re);
     (
         0.5 * (re * re + im * im + 1e-20).ln(),
-        0.0 + libm::atan2(im, re),
+        if arg == 0.0 { 0.0 } else { arg },
     )
 }
 
