@@ -43,14 +43,14 @@ fn push_ngon(
 }
 
 /// Java's `random(n)`: ⌊draw·n⌋, at most n − 1.
-fn java_below(rng: &mut FastRng, n: i32) -> i32 {
+pub(super) fn java_below(rng: &mut FastRng, n: i32) -> i32 {
     ((rng.f01() * f64::from(n)) as i32).min(n - 1)
 }
 
 /// A random point of the regular polygon of `sides` sides of radius 1 about the origin, with
 /// a hole of `hole` times its size (FractalDesire's nBlur: a corner chosen at random, an angle
 /// within it bunched towards the middle, a radius up to the edge).
-fn nblur_point(rng: &mut FastRng, sides: i32, hole: f64) -> (f64, f64) {
+pub(super) fn nblur_point(rng: &mut FastRng, sides: i32, hole: f64) -> (f64, f64) {
     let n = sides.max(3);
     let mid = TAU / f64::from(n);
     let tan90_m_2 = (FRAC_PI_2 + mid / 2.0).tan();
