@@ -150,7 +150,9 @@ fn post_point_crop(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -
     let (x, y, z) = (t.x, t.y, t.z);
     let hit = if xw + yw + zw != 0.0 {
         let (dx, dy, dz) = (x - xo, y - yo, z - zo);
-        (dx <= xw && dx >= -xw) || (dy <= yw && dy >= -yw) || (dz <= zw && dz >= -zw && z != 0.0)
+        (-xw..=xw).contains(&dx)
+            || (-yw..=yw).contains(&dy)
+            || ((-zw..=zw).contains(&dz) && z != 0.0)
     } else {
         x == xo && y == yo && z == zo
     };

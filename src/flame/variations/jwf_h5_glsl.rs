@@ -39,12 +39,10 @@ fn glsl_mod(a: f64, b: f64) -> f64 {
 
 /// GLSL's sign.
 fn glsl_sign(a: f64) -> f64 {
-    if a > 0.0 {
-        1.0
-    } else if a < 0.0 {
-        -1.0
+    if a == 0.0 || a.is_nan() {
+        a
     } else {
-        0.0
+        a.signum()
     }
 }
 

@@ -82,12 +82,10 @@ fn fract(x: f64) -> f64 {
 }
 /// GLSL's sign.
 fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
+    if x == 0.0 || x.is_nan() {
+        x
     } else {
-        0.0
+        x.signum()
     }
 }
 

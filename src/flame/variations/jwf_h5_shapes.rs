@@ -124,8 +124,8 @@ fn cactus_spike(
         let rl = (r[0] * r[0] + r[1] * r[1] + r[2] * r[2]).sqrt();
         if rl > 1e-6 {
             let m = splay * len * rng.f01();
-            for k in 0..3 {
-                s[k] += r[k] / rl * m;
+            for (sk, rk) in s.iter_mut().zip(r) {
+                *sk += rk / rl * m;
             }
         }
     }
@@ -209,8 +209,8 @@ fn cactus_point(v: &Prepared, t: &VarIn, rng: &mut FastRng, size: f64) -> (V3, b
     }
     if feature {
         let s = cactus_spike(rng, (p[0], p[1], p[2]), spike_len, splay, droop);
-        for k in 0..3 {
-            p[k] += s[k];
+        for (pk, sk) in p.iter_mut().zip(s) {
+            *pk += sk;
         }
     }
     (p, feature)
@@ -318,7 +318,7 @@ fn tess_offsets(v: &Prepared, px: f64, py: f64, hw: f64, hh: f64, clamp: bool) -
         if h == 0.0 {
             0.0
         } else if clamp {
-            (a / h).max(-1.0).min(1.0)
+            (a / h).clamp(-1.0, 1.0)
         } else {
             a / h
         }
@@ -366,7 +366,7 @@ fn tess_inside(v: &Prepared, px: f64, py: f64, hw: f64, hh: f64) -> bool {
         }),
         4 => {
             let (lr, tb) = tess_offsets(v, px, py, hw, hh, true);
-            px >= -hw + lr && px <= hw - lr && py >= -hh + tb && py <= hh - tb
+            (-hw + lr..=hw - lr).contains(&px) && (-hh + tb..=hh - tb).contains(&py)
         }
         5 => {
             let (dx, dy) = tess_offsets(v, px, py, hw, hh, true);
@@ -374,7 +374,7 @@ fn tess_inside(v: &Prepared, px: f64, py: f64, hw: f64, hh: f64) -> bool {
         }
         6 => {
             let (r, t) = tess_offsets(v, px, py, hw, hh, true);
-            px >= -hw && px <= hw + r && py >= -hh && py <= hh + t
+            (-hw..=hw + r).contains(&px) && (-hh..=hh + t).contains(&py)
         }
         7 => {
             let a = py.atan2(px);
@@ -426,7 +426,7 @@ fn tess_fill(v: &Prepared, rng: &mut FastRng, hw: f64, hh: f64) -> (f64, f64) {
                 let px = (rng.f01() * 2.0 - 1.0) * sx;
                 let py = (rng.f01() * 2.0 - 1.0) * sy;
                 let (lr, tb) = tess_offsets(v, px, py, hw, hh, true);
-                if px >= -hw + lr && px <= hw - lr && py >= -hh + tb && py <= hh - tb {
+                if (-hw + lr..=hw - lr).contains(&px) && (-hh + tb..=hh - tb).contains(&py) {
                     return (px, py);
                 }
             }
@@ -481,7 +481,7 @@ fn tess_shape(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
         (t.x, t.y)
     } else {
         let (sx, sy) = tess_fill(v, rng, hw, hh);
-        let a = (v.w * strength).min(1.0).max(0.0);
+        let a = (v.w * strength).clamp(0.0, 1.0);
         ((1.0 - a) * t.x + a * sx, (1.0 - a) * t.y + a * sy)
     };
     if v.form == Form::Regular {

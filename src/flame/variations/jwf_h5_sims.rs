@@ -257,7 +257,7 @@ fn dla_points(p: &[f64], _texts: &[String]) -> Vec<f64> {
                 2 => ci -= 1,
                 _ => cj += 1,
             }
-            if ci < 1 || ci > inner || cj < 1 || cj > inner {
+            if !(1..=inner).contains(&ci) || !(1..=inner).contains(&cj) {
                 // Strayed off the grid: release another.
                 continue 'grow;
             }
