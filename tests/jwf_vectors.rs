@@ -46,10 +46,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "the vectors record angle_of_hole as JWildfire's init rewrote it (the hole's half angle in radians), not as it was set",
     ),
     (
-        "cactusGlobe",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
-    (
         "capsule3D",
         "statistics differ (alt2, where the capsule fills the cube's corner)",
     ),
@@ -72,10 +68,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "coth2_bs",
         "x, y differ at the near-zero point 17 (JWildfire's table-based maths)",
     ),
-    (
-        "curliecue",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("custom_wf", "not implemented"),
     ("custom_wf_full", "not implemented"),
     ("cut_shapes", "not implemented"),
@@ -97,23 +89,15 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "dc_randomoctree",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
+        "implemented; differs from the vectors (cause not investigated in the time)",
     ),
     (
         "dc_triTile",
         "not implemented: 1 150 lines of tile shaders, not reached in the time",
     ),
     ("dc_triangle", "x, y, z, color differ; statistics differ"),
-    (
-        "dc_triantess",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("displacemap_wf", "not implemented"),
     ("dla3d_wf", "x, y, z, color differ; call sequence differs"),
-    (
-        "dla_wf",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("ducks", "not implemented"),
     (
         "eCollide",
@@ -157,10 +141,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "farblur",
         "runs as a regular variation, JWildfire's is post; statistics differ",
     ),
-    (
-        "flame_bulb",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("fract_formula_julia_wf", "not implemented"),
     ("fract_formula_mand_wf", "not implemented"),
     (
@@ -168,24 +148,12 @@ const NOT_YET: &[(&str, &str)] = &[
         "statistics differ in buddhabrot mode",
     ),
     ("fract_meteors_wf", "statistics differ in buddhabrot mode"),
-    (
-        "glsl_circuits",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("glsl_code", "not implemented"),
     ("glsl_mandala", "statistics differ (alt)"),
-    (
-        "glsl_randomoctree",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("glynnSim1", "statistics differ"),
     (
         "glynns3subfl",
         "not implemented: draws from an embedded sub-flame (subflame_wf's machinery, not implemented)",
-    ),
-    (
-        "gpattern",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
     ),
     (
         "grid3d_wf",
@@ -231,10 +199,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("phoenix_julia", "statistics differ"),
     ("pie3D", "statistics differ"),
     ("pixel_flow", "statistics differ"),
-    (
-        "point_mirror_symmetry",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("polarplot2d_wf", "not implemented"),
     (
         "polarplot3d_wf",
@@ -254,7 +218,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ("post_juliaq", "statistics differ"),
     (
         "post_point_crop",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
+        "implemented; differs from the vectors (cause not investigated in the time)",
     ),
     ("post_smartcrop", "color differs; statistics differ"),
     ("pre_circlecrop", "hide flag differs; statistics differ"),
@@ -271,10 +235,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "x, y differ at the points (0, 0), (0, 1) or (-1, 0) (JWildfire's table-based tan)",
     ),
     ("recurrenceplot", "not implemented"),
-    (
-        "ringer",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("ringsubflame", "not implemented"),
     ("rose_wf", "statistics differ"),
     (
@@ -299,19 +259,7 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: needs Craig Kaplan's Taprats tiling library (tilings, maps, star and rosette figures, render styles), several thousand lines",
     ),
     ("terrain3D", "not implemented"),
-    (
-        "tess_shape",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("text_wf", "statistics differ"),
-    (
-        "triantruchet",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
-    (
-        "truchet_ae",
-        "implemented; not yet checked against the vectors (the build did not finish in time)",
-    ),
     ("truchet_hex_fill", "statistics differ"),
     ("wallpaper_js", "x differs at the origin"),
     ("wangtiles", "not implemented"),
