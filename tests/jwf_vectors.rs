@@ -157,7 +157,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "grid3d_wf",
-        "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell (not yet checked against the vectors)",
+        "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
     ),
     ("hamid_js", "not implemented"),
     ("hexnix3D", "statistics differ"),
