@@ -43,7 +43,7 @@ fn push_ngon(
 }
 
 /// Java's `random(n)`: ⌊draw·n⌋, at most n − 1.
-fn java_below(rng: &mut FastRng, n: i32) -> i32 {
+pub(super) fn java_below(rng: &mut FastRng, n: i32) -> i32 {
     ((rng.f01() * f64::from(n)) as i32).min(n - 1)
 }
 

@@ -111,6 +111,13 @@
 //! | `jwf_h4_shapes` | a cut along Inigo Quilez's 2-D distance functions (`cut_shapes`) |
 //! | `jwf_h4_terrain` | a diamond-square landscape mesh (`terrain3D`) |
 //! | `jwf_m_foam` | points pushed out of random bubbles (`natural_foam`) |
+//! | `jwf_h5_shapes` | shapes filled at random (`cactusGlobe`, `tess_shape`, `flame_bulb`) |
+//! | `jwf_h5_sims` | simulations (`truchet_ae`, `dla_wf`) |
+//! | `jwf_h5_draw` | drawings of figures drawn once, one drawn at random per call (`curliecue`, `gpattern`, `triantruchet`) |
+//! | `jwf_h5_crops` | crops and mirrors that remember points (`ringer`, `post_point_crop`, `point_mirror_symmetry`) |
+//! | `jwf_h5_glsl` | a glowing-circuits shader stamp (`glsl_circuits`) |
+//! | `jwf_h5_octree` | a flight through a random octree, as a stamp (`glsl_randomoctree`, `dc_randomoctree`) |
+//! | `jwf_h5_triantess` | a triangle group's tessellation, as a stamp (`dc_triantess`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -221,6 +228,13 @@ mod jwf_h4_metaballs;
 mod jwf_h4_recurrence;
 mod jwf_h4_shapes;
 mod jwf_h4_terrain;
+mod jwf_h5_crops;
+mod jwf_h5_draw;
+mod jwf_h5_glsl;
+mod jwf_h5_octree;
+mod jwf_h5_shapes;
+mod jwf_h5_sims;
+mod jwf_h5_triantess;
 mod jwf_knots;
 mod jwf_m_crops;
 mod jwf_m_curves;

@@ -40,6 +40,11 @@ use super::{
     jwf_m_crops, jwf_m_curves, jwf_m_cuts, jwf_m_draw, jwf_m_foam, jwf_m_ifs3d, jwf_m_polylog,
     jwf_m_quaternion, jwf_m_stabilize, jwf_m_tilecuts, jwf_m_tiles, jwf_m_trig,
 };
+// JWildfire variations added by helper h5.
+use super::{
+    jwf_h5_crops, jwf_h5_draw, jwf_h5_glsl, jwf_h5_octree, jwf_h5_shapes, jwf_h5_sims,
+    jwf_h5_triantess,
+};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -91,7 +96,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 96] = [
+const FILES: [&[VarDef]; 103] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -195,6 +200,13 @@ const FILES: [&[VarDef]; 96] = [
     jwf_h4_inversion::DEFS,
     jwf_h4_terrain::DEFS,
     jwf_h4_metaballs::DEFS,
+    jwf_h5_shapes::DEFS,
+    jwf_h5_sims::DEFS,
+    jwf_h5_draw::DEFS,
+    jwf_h5_crops::DEFS,
+    jwf_h5_glsl::DEFS,
+    jwf_h5_octree::DEFS,
+    jwf_h5_triantess::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -661,6 +673,22 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "inversion",
     "terrain3D",
     "metaballs3d_wf",
+    "cactusGlobe",
+    "tess_shape",
+    "flame_bulb",
+    "grid3d_wf",
+    "truchet_ae",
+    "dla_wf",
+    "curliecue",
+    "gpattern",
+    "triantruchet",
+    "ringer",
+    "post_point_crop",
+    "point_mirror_symmetry",
+    "glsl_circuits",
+    "glsl_randomoctree",
+    "dc_randomoctree",
+    "dc_triantess",
 ];
 
 /// Every JWildfire variation's name in registry order.
