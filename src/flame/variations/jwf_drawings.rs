@@ -19,7 +19,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(&[
             p("rose_wf_amp", 0.5),
             p_int("rose_wf_waves", 4.0, NEG_INF, INF),
-            p_int("rose_wf_filled", 0.0, NEG_INF, INF),
+            p("rose_wf_filled", 0.85),
         ])
         .needs(need::ATAN_XY)
         .flags(flag::JWILDFIRE | flag::RANDOM),
@@ -91,12 +91,14 @@ pub(super) static DEFS: &[VarDef] = &[
 ];
 
 /// rose_wf: the rose curve r = amp·cos(waves·θ) drawn along the input's direction (θ measured
-/// from the y axis, JWildfire's atan2(x, y)); `filled` = 1 scatters points inside the petals.
+/// from the y axis, JWildfire's atan2(x, y)); a share `filled` of the points falls inside.
 fn rose_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [amp, waves, filled] = v.params();
     let a = t.atan_xy;
     let mut r = amp * (waves * a).cos();
-    if filled == 1.0 {
+    // A share `filled` of the points falls inside the petal (JWildfire 9.00; before, `filled`
+    // was 0 or 1, which this reads the same way). A share of 1 or more needs no draw.
+    if filled >= 1.0 || (filled > 0.0 && filled > rng.f01()) {
         r *= rng.f01();
     }
     let (s, c) = a.sin_cos();

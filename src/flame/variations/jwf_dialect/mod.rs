@@ -11,7 +11,9 @@
 
 use super::*;
 
+mod after;
 mod blurs;
+mod branches;
 mod classic;
 mod direct_colour;
 mod fractorium;
@@ -164,6 +166,16 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
         0,
     ),
     ("pixel_flow", stats_crops::pixel_flow, 0, 0),
+    ("juliaq", branches::juliaq, 0, 0),
+    ("post_juliaq", branches::juliaq, 0, 0),
+    ("julia3Dq", branches::julia3dq, 0, 0),
+    ("post_julia3Dq", branches::julia3dq, 0, 0),
+    ("juliac", branches::juliac, 0, 0),
+    ("phoenix_julia", branches::phoenix_julia, flag::WRITES_Z, 0),
+    ("wedge_julia", branches::wedge_julia, 0, 0),
+    ("hypertile1", branches::hypertile1, 0, 0),
+    ("hypertile2", branches::hypertile2, 0, 0),
+    ("farblur", after::farblur, 0, flag::POST_ONLY),
 ];
 
 /// JWildfire's crop replaces the sum so far and hides or shows the point.

@@ -13,7 +13,14 @@ fn rose_wf_matches_jwildfire() {
     run_cases(
         &mut rng,
         &[
-            ("rose_wf", &[], 1.3, 0.5, &PTS, ROSE_DEF),
+            (
+                "rose_wf",
+                &[("rose_wf_filled", 0.0)],
+                1.3,
+                0.5,
+                &PTS,
+                ROSE_DEF,
+            ),
             (
                 "rose_wf",
                 &[
@@ -180,7 +187,7 @@ fn polygon_sampler_fills_the_polygon() {
     }
 }
 
-// rose default w1.3 (randoms used: 0)
+// rose default (filled 0) w1.3 (randoms used: 0)
 const ROSE_DEF: &[[f64; 4]] = &[
     [-0.012482698343798915, 0.029126296135530798, 0.0, 0.5],
     [-0.17266036024519352, 0.057553453415064515, 0.0, 0.5],
