@@ -183,6 +183,7 @@ pub fn sin_cos_scalar(x: f64) -> (f64, f64) {
 /// library's method syntax (`a.fsin_cos()` for `a.sin_cos()`, `a.fln()` for `a.ln()`): the
 /// same special values as the standard library's, a few ulp apart elsewhere, and no calls, so
 /// a loop over a batch of points vectorises where the formula allows.
+#[allow(dead_code)] // the full set; formulas take them up one by one
 pub trait FastTrig {
     /// [`sin_cos_any`].
     fn fsin_cos(self) -> (f64, f64);
@@ -364,6 +365,7 @@ pub fn atan2_any(y: f64, x: f64) -> f64 {
 /// asin x = atan2(x, √((1 − x)(1 + x))), branch-free: within a few ulp of the standard
 /// library's (1 − x is exact near 1, where √(1 − x²) would lose the digits that matter);
 /// |x| > 1 and NaN give NaN, ±0 and ±1 as the standard library gives them.
+#[allow(dead_code)] // the full set; formulas take them up one by one
 #[inline(always)]
 pub fn asin(x: f64) -> f64 {
     atan2(x, ((1.0 - x) * (1.0 + x)).sqrt())
@@ -371,6 +373,7 @@ pub fn asin(x: f64) -> f64 {
 
 /// acos x = atan2(√((1 − x)(1 + x)), x), branch-free: within a few ulp of the standard
 /// library's; |x| > 1 and NaN give NaN, acos 1 = 0 and acos −1 = π.
+#[allow(dead_code)] // the full set; formulas take them up one by one
 #[inline(always)]
 pub fn acos(x: f64) -> f64 {
     atan2(((1.0 - x) * (1.0 + x)).sqrt(), x)
