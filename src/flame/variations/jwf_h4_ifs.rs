@@ -55,7 +55,7 @@ fn multi_ifs(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 /// the draw below which it is taken, then nx = a·x + b·y + c, ny = d·x + e·y + f, and the
 /// colour used (1–4: `color1`…`color4`, 0: colour 0).
 #[rustfmt::skip]
-const SYSTEMS: [[[f64; 8]; 4]; 74] = [
+static SYSTEMS: [[[f64; 8]; 4]; 74] = [
     [
         [0.25, 0.5, 0.0, 0.0, 0.0, 0.5, 0.0, 1.0],
         [0.5, 0.5, 0.0, -0.5, 0.0, 0.5, -0.5, 2.0],

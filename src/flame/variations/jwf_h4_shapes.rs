@@ -85,6 +85,7 @@ fn triangle(p: P) -> f64 {
     -len((x, y)) * sgn(y)
 }
 
+#[allow(clippy::approx_constant)] // JWildfire's own rounded constants
 fn star(p: P, r: f64, n: f64, m: f64) -> f64 {
     let an = 3.141593 / n;
     let en = 6.283185 / m;
@@ -195,6 +196,7 @@ fn boxed(p: P, b: P) -> f64 {
 }
 
 /// The signed distance of shape `kind` (animated by `time`; `n` points for the star).
+#[allow(clippy::approx_constant)] // JWildfire's own rounded constants
 fn shape(kind: f64, p: P, n: f64, time: f64) -> f64 {
     // The half sizes cos((0, 1.57) + time)·0.3 + c of the cross, rhombus and box.
     let wobble = |c: f64| ((time).cos() * 0.3 + c, (1.57 + time).cos() * 0.3 + c);
