@@ -36,9 +36,17 @@ pub fn scan_attrs_jwf<'a>(
     scan(content, base, Some(notes))
 }
 
-/// A name's end: the first `=`, blank or `/` from `i`.
-fn name_end(b: &[u8], mut i: usize) -> usize {
-    while i < b.len() && b[i] != b'=' && !b[i].is_ascii_whitespace() && b[i] != b'/' {
+/// A name's end: the first `=`, blank or `/` from `i`; with `slash_inside`, a `/` followed by
+/// a letter, digit or `_` belongs to the name (JWildfire writes parameter names such as
+/// `hamid_js_number_lines/circles`).
+fn name_end(b: &[u8], mut i: usize, slash_inside: bool) -> usize {
+    let inside = |i: usize| {
+        slash_inside
+            && b.get(i + 1)
+                .is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_')
+    };
+    while i < b.len() && b[i] != b'=' && !b[i].is_ascii_whitespace() && (b[i] != b'/' || inside(i))
+    {
         i += 1;
     }
     i
@@ -70,7 +78,7 @@ fn scan<'a>(
             break;
         }
         let ns = i;
-        i = name_end(b, i);
+        i = name_end(b, i, notes.is_some());
         let first = &content[ns..i];
         let valid = if notes.is_some() {
             is_jwf_name
@@ -91,7 +99,7 @@ fn scan<'a>(
             // JWildfire's reader: the name runs on to the next `=`.
             let mut end = ns + first.len();
             while i < b.len() && b[i] != b'=' && b[i] != b'/' {
-                end = name_end(b, i);
+                end = name_end(b, i, true);
                 i = skip_blanks(b, end);
             }
             let name = &content[ns..end];
@@ -168,9 +176,10 @@ fn scan<'a>(
 /// A name of JWildfire's files: an XML name, after removing JWildfire's index `#k#` of a
 /// variation used more than once in an xform (`log#1#`, `log#1#_base`).
 fn is_jwf_name(name: &str) -> bool {
+    let plain = |n: &str| n.split('/').all(is_xml_name);
     match split_jwf_index(name) {
-        Some((base, _)) => is_xml_name(&base),
-        None => is_xml_name(name),
+        Some((base, _)) => plain(&base),
+        None => plain(name),
     }
 }
 

@@ -16,8 +16,9 @@ use super::*;
 pub(super) static DEFS: &[VarDef] = &[VarDef::new("metaballs3d_wf", metaballs3d_wf)
     .params(&[
         p_int("metaballs3d_wf_mb_mode", 0.0, 0.0, 2.0),
-        // At most 1000 balls, each evaluated for every try.
-        p_int("metaballs3d_wf_mb_count", 64.0, 0.0, 1000.0).limited(),
+        // At most 128 balls, each evaluated for every try (with at most 256 tries a call
+        // costs at most 32,768 ball tests).
+        p_int("metaballs3d_wf_mb_count", 64.0, 0.0, 128.0).limited(),
         p("metaballs3d_wf_mb_min_radius", 0.35),
         p("metaballs3d_wf_mb_max_radius", 0.75),
         p("metaballs3d_wf_mb_negative", 0.3),
@@ -35,8 +36,8 @@ pub(super) static DEFS: &[VarDef] = &[VarDef::new("metaballs3d_wf", metaballs3d_
         p("metaballs3d_wf_ymax", PI),
         p("metaballs3d_wf_zmin", -PI),
         p("metaballs3d_wf_zmax", PI),
-        // At most 1000 tries per call.
-        p_int("metaballs3d_wf_max_iter", 160.0, 1.0, 1000.0).limited(),
+        // At most 256 tries per call.
+        p_int("metaballs3d_wf_max_iter", 160.0, 1.0, 256.0).limited(),
         p_int(
             "metaballs3d_wf_direct_color",
             1.0,

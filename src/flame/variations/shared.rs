@@ -251,6 +251,10 @@ mod tests {
                     }
                 })
                 .collect();
+            if sd.key.len() == d.params.len() {
+                // Every parameter is part of the key (mandala2's table): nothing to change.
+                continue;
+            }
             assert_ne!(base, other, "{}: nothing outside the key", d.name);
             let texts: Vec<String> = d.texts.iter().map(|t| t.default.to_string()).collect();
             let (a, b) = ((sd.build)(&base, &texts), (sd.build)(&other, &texts));
