@@ -124,10 +124,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
     ),
     (
-        "rays",
-        "statistics differ at the origin (point 16): JWildfire divides by r² + 1e-300, the registry's formula guards r² otherwise",
-    ),
-    (
         "recurrenceplot",
         "statistics differ (a rejected draw repeats the last point plotted: the quantiles of \
          20000 correlated draws vary more than the tolerance allows)",

@@ -153,6 +153,7 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("npolar", tablemath::npolar, 0, 0),
     ("ortho", tablemath::ortho, 0, 0),
     ("rays3", tablemath::rays3, 0, 0),
+    ("rays", tablemath::rays, 0, 0),
     ("blade3D", stats_shapes::blade3d, flag::USES_Z, 0),
     ("superShape3d", stats_shapes::super_shape3d, 0, 0),
     ("squish", stats_shapes::squish, 0, 0),

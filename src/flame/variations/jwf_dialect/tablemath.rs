@@ -525,3 +525,14 @@ pub(super) fn ortho(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3
         [if mirrored { -ox } else { ox }, w * k * jm::sin(ang), 0.0]
     }
 }
+
+/// rays: the point thrown along a random tangent, scaled by the inverse of its squared
+/// distance, where JWildfire adds only `SMALL_EPSILON` (1e-300) to that distance (flam3 adds
+/// 1e-10), so near the origin its rays reach much further (JWildfire 9.00, `RaysFunc`).
+pub(super) fn rays(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    let w = v.w;
+    let ang = w * rng.f01() * PI;
+    let r = w / (t.x * t.x + t.y * t.y + super::SMALL_EPSILON);
+    let tanr = w * jm::tan(ang) * r;
+    [tanr * jm::cos(t.x), tanr * jm::sin(t.y), 0.0]
+}
