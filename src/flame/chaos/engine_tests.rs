@@ -1,0 +1,232 @@
+//! Tests of the lane runner: its statistics against the scalar chaos game, restarts, hidden
+//! samples and bad values.
+
+use super::*;
+use crate::flame::model::{Affine, Flame, Xform};
+use crate::flame::variations;
+
+#[test]
+fn lanes_match_the_scalar_statistics() {
+    // A flame with a non-trivial variation mix: the mean and spread of the plotted points
+    // and colours agree between the scalar and the lane runner.
+    let mut f = Flame::default();
+    let mut a = Xform::linear(Affine::new(0.6, -0.3, 0.4, 0.5, 0.2, -0.1), 1.0, 0.0);
+    a.vars = vec![
+        crate::flame::model::Var::new(variations::SWIRL, 0.6),
+        crate::flame::model::Var::new(variations::POLAR, 0.4),
+    ];
+    let mut b = Xform::linear(Affine::new(-0.5, 0.2, 0.1, 0.7, -0.3, 0.4), 2.0, 1.0);
+    b.vars = vec![crate::flame::model::Var::new(variations::SPHERICAL, 0.8)];
+    b.post = Affine::new(0.9, 0.0, 0.0, 0.9, 0.1, 0.0);
+    f.xforms = vec![a, b];
+    let mut fx = Xform::linear(Affine::new(1.0, 0.1, 0.0, 1.0, 0.0, 0.0), 0.0, 0.5);
+    fx.vars = vec![crate::flame::model::Var::new(variations::SINUSOIDAL, 1.0)];
+    fx.opacity = 0.7;
+    f.final_xform = Some(fx);
+    let ch = Chaos::new(&f).unwrap();
+    let stats = |lanes: bool| {
+        let mut rng = FastRng::new(11);
+        let mut sc = Lanes::new();
+        let (mut n, mut sx, mut sy, mut sc2, mut sxx) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for _ in 0..40 {
+            // Bounded statistics: the spherical xform gives heavy tails.
+            let mut plot = |x: f64, y: f64, c: f64, _v: f64| {
+                n += 1.0;
+                sx += x.clamp(-3.0, 3.0);
+                sy += y.clamp(-3.0, 3.0);
+                sc2 += c;
+                sxx += (x.abs() < 0.5) as u8 as f64;
+            };
+            if lanes {
+                ch.run_lanes(10_000, &mut rng, &mut sc, |xs, ys, _zs, cs, vs, _rgb| {
+                    for j in 0..xs.len() {
+                        if vs[j] >= 0.0 {
+                            plot(xs[j], ys[j], cs[j], vs[j]);
+                        }
+                    }
+                });
+            } else {
+                ch.run_sub_batch(10_000, &mut rng, |p, v| plot(p.x, p.y, p.c, v));
+            }
+        }
+        (n, sx / n, sy / n, sc2 / n, sxx / n)
+    };
+    let a = stats(false);
+    let b = stats(true);
+    assert_eq!(a.0, 400_000.0);
+    assert_eq!(b.0, 400_000.0);
+    for (p, q) in [(a.1, b.1), (a.2, b.2), (a.3, b.3), (a.4, b.4)] {
+        assert!((p - q).abs() < 0.01, "{a:?} vs {b:?}");
+    }
+}
+
+/// Run the lane runner and bin the plotted points on an 8×8 grid over [−1, 2]²; also the
+/// mean colour, the number of samples and of bad values.
+fn lane_grid(ch: &Chaos, seed: u64) -> ([f64; 64], f64, f64, u64) {
+    let mut rng = FastRng::new(seed);
+    let mut ln = Lanes::new();
+    let (mut grid, mut n, mut c) = ([0.0; 64], 0.0, 0.0);
+    let mut bad = 0;
+    for _ in 0..30 {
+        bad += ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, cs, vs, _rgb| {
+            for j in 0..xs.len() {
+                if vs[j] >= 0.0 {
+                    assert!(xs[j].is_finite() && ys[j].is_finite());
+                    let cell = |v: f64| (((v + 1.0) / 3.0 * 8.0).clamp(0.0, 7.0)) as usize;
+                    grid[cell(ys[j]) * 8 + cell(xs[j])] += 1.0;
+                    n += 1.0;
+                    c += cs[j];
+                }
+            }
+        });
+    }
+    (grid.map(|g| g / n), n, c / n, bad)
+}
+
+#[test]
+fn affine_ifs_steps_orbits_in_place_with_the_same_statistics() {
+    // Unequal weights, a colour blend and a linear weight other than 1: the in-place rows
+    // and the grouped general path plot the same distribution.
+    let mut f = Flame::default();
+    for (i, (e, ff, w)) in [(0.0, 0.0, 1.0), (0.5, 0.0, 2.0), (0.25, 0.5, 0.5)]
+        .into_iter()
+        .enumerate()
+    {
+        let mut x = Xform::linear(Affine::new(0.5, 0.1, -0.1, 0.5, e, ff), w, i as f64 / 2.0);
+        x.vars[0].weight = 0.9;
+        x.color_speed = 0.3;
+        f.xforms.push(x);
+    }
+    let ch = Chaos::new(&f).unwrap();
+    assert!(ch.affine.is_some());
+    let general = Chaos {
+        affine: None,
+        ..Chaos::new(&f).unwrap()
+    };
+    let (a, na, ca, _) = lane_grid(&ch, 3);
+    let (b, nb, cb, _) = lane_grid(&general, 3);
+    assert_eq!((na, nb), (300_000.0, 300_000.0));
+    assert!((ca - cb).abs() < 0.01, "{ca} vs {cb}");
+    let l1: f64 = a.iter().zip(&b).map(|(p, q)| (p - q).abs()).sum();
+    assert!(l1 < 0.02, "cell frequencies differ by {l1}");
+    // A post-affine, a final xform or xaos take the general path.
+    let mut g = f.clone();
+    g.xforms[1].post = Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0);
+    assert!(Chaos::new(&g).unwrap().affine.is_none());
+}
+
+#[test]
+fn orbits_restart_as_often_as_flam3s() {
+    // One xform contracting slowly to the origin: only fresh orbits plot points away from
+    // it. flam3 starts one orbit per sub-batch; the lane runner restarts one orbit per call,
+    // so the share of such points is about the same (long-lived orbits alone: ~20× fewer).
+    let mut f = Flame::default();
+    f.xforms.push(Xform::linear(
+        Affine::new(0.9, 0.0, 0.0, 0.9, 0.0, 0.0),
+        1.0,
+        0.0,
+    ));
+    let ch = Chaos::new(&f).unwrap();
+    let (calls, n) = (5000, 200);
+    let mut rng = FastRng::new(8);
+    let (mut far, mut total) = (0.0, 0.0);
+    for _ in 0..calls {
+        ch.run_sub_batch(n, &mut rng, |p, _| {
+            far += (p.x.abs() > 0.01) as u8 as f64;
+            total += 1.0;
+        });
+    }
+    let scalar = far / total;
+    let mut ln = Lanes::new();
+    let (mut far, mut total) = (0.0, 0.0);
+    for _ in 0..calls {
+        ch.run_lanes(n, &mut rng, &mut ln, |xs, _ys, _zs, _cs, vs, _rgb| {
+            for (x, v) in xs.iter().zip(vs) {
+                if *v >= 0.0 {
+                    far += (x.abs() > 0.01) as u8 as f64;
+                    total += 1.0;
+                }
+            }
+        });
+    }
+    let lanes = far / total;
+    assert!(scalar > 0.05, "{scalar}");
+    assert!(
+        (0.5..1.5).contains(&(lanes / scalar)),
+        "{lanes} vs {scalar}"
+    );
+}
+
+#[test]
+fn hidden_samples_count_and_add_nothing() {
+    // crop_stars hides what falls outside its star: those samples come to the origin,
+    // count as samples, and are plotted with visibility 0, in the lanes and the scalar
+    // loop alike.
+    let crop = variations::by_name("crop_stars").unwrap();
+    let mut a = Xform::linear(Affine::new(0.9, 0.3, -0.3, 0.9, 0.2, 0.1), 1.0, 0.0);
+    a.vars = vec![crate::flame::model::Var::new(crop, 1.0)];
+    let mut b = Xform::linear(Affine::new(0.6, 0.0, 0.0, 0.6, -0.3, 0.2), 1.0, 1.0);
+    b.vars = vec![crate::flame::model::Var::new(variations::SPHERICAL, 0.5)];
+    let f = Flame {
+        xforms: vec![a, b],
+        ..Flame::default()
+    };
+    let ch = Chaos::new(&f).unwrap();
+    assert!(ch.hides && ch.xforms[0].hides && !ch.xforms[1].hides);
+    let at_origin = |x: f64, y: f64| x == 0.0 && y == 0.0;
+    let mut rng = FastRng::new(2);
+    let mut ln = Lanes::new();
+    let (mut n, mut hidden) = (0u64, 0u64);
+    for _ in 0..20 {
+        ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs, _rgb| {
+            for j in 0..xs.len() {
+                if vs[j] < 0.0 {
+                    continue;
+                }
+                n += 1;
+                if vs[j] == 0.0 {
+                    hidden += 1;
+                    assert!(at_origin(xs[j], ys[j]));
+                } else {
+                    assert!(!at_origin(xs[j], ys[j]), "a hidden point was drawn");
+                }
+            }
+        });
+    }
+    assert_eq!(n, 200_000);
+    let (mut m, mut hidden_scalar) = (0u64, 0u64);
+    for _ in 0..20 {
+        ch.run_sub_batch(10_000, &mut rng, |p, v| {
+            m += 1;
+            if v == 0.0 {
+                hidden_scalar += 1;
+                assert!(at_origin(p.x, p.y));
+            }
+        });
+    }
+    assert_eq!(m, 200_000);
+    let (fl, fs) = (hidden as f64 / 2e5, hidden_scalar as f64 / 2e5);
+    assert!(fl > 0.05 && (fl - fs).abs() < 0.02, "{fl} vs {fs}");
+}
+
+#[test]
+fn affine_ifs_replaces_bad_values_and_keeps_plotting() {
+    // An expanding map sends orbits past the bad-value limit: they restart at random
+    // points, are counted, and every plotted point is finite.
+    let mut f = Flame::default();
+    f.xforms.push(Xform::linear(
+        Affine::new(0.5, 0.0, 0.0, 0.5, 0.0, 0.0),
+        1.0,
+        0.0,
+    ));
+    f.xforms.push(Xform::linear(
+        Affine::new(1e30, 0.0, 0.0, 1e30, 0.0, 0.0),
+        1.0,
+        1.0,
+    ));
+    let ch = Chaos::new(&f).unwrap();
+    assert!(ch.affine.is_some());
+    let (_, n, _, bad) = lane_grid(&ch, 4);
+    assert_eq!(n, 300_000.0);
+    assert!(bad > 1000, "{bad} bad values");
+}
