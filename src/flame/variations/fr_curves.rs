@@ -242,6 +242,14 @@ fn spirograph(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// input.
 #[inline(always)]
 fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    super_shape3d_as::<false>(v, rng)
+}
+
+/// superShape3d as Fractorium computes it, or with `JWILDFIRE` as JWildfire 9.00 does: the two
+/// superformula radii raised to −1/n1 (Fractorium: |·| raised to n1), the sign of φ from a
+/// uniform draw below 0.5 and the standard library's sine and cosine.
+#[inline(always)]
+pub(super) fn super_shape3d_as<const JWILDFIRE: bool>(v: &Prepared, rng: &mut FastRng) -> V3 {
     let [
         _,
         _,
@@ -263,17 +271,27 @@ fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 
     let [an2_1, an2_2, bn3_1, bn3_2, m4_1, m4_2, rho_k, phi_k] = v.derived();
     let rho = rng.f01() * rho_k;
     let mut phi = rng.f01() * phi_k;
-    if rng.bit() {
+    let flip = if JWILDFIRE {
+        rng.f01() < 0.5
+    } else {
+        rng.bit()
+    };
+    if flip {
         phi = -phi;
     }
-    let (sr, cr) = rho.fsin_cos();
-    let (sp, cp) = phi.fsin_cos();
-    let (msr, mcr) = (m4_1 * rho).fsin_cos();
-    let (msp, mcp) = (m4_2 * phi).fsin_cos();
+    let sin_cos = |a: f64| if JWILDFIRE { a.sin_cos() } else { a.fsin_cos() };
+    let (sr, cr) = sin_cos(rho);
+    let (sp, cp) = sin_cos(phi);
+    let (msr, mcr) = sin_cos(m4_1 * rho);
+    let (msp, mcp) = sin_cos(m4_2 * phi);
     let pr1 = an2_1 * mcr.abs().powf(n2_1) + bn3_1 * msr.abs().powf(n3_1);
     let pr2 = an2_2 * mcp.abs().powf(n2_2) + bn3_2 * msp.abs().powf(n3_2);
-    let r1 = pr1.abs().powf(n1_1) + spiral * rho;
-    let r2 = pr2.abs().powf(n1_2);
+    let (r1, r2) = if JWILDFIRE {
+        (pr1.powf(-1.0 / n1_1), pr2.powf(-1.0 / n1_2))
+    } else {
+        (pr1.abs().powf(n1_1), pr2.abs().powf(n1_2))
+    };
+    let r1 = r1 + spiral * rho;
     if toroid == 1.0 {
         let ring = r1 + r2 * cp;
         [v.w * cr * ring, v.w * sr * ring, v.w * r2 * sp]

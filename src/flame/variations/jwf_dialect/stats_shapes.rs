@@ -46,48 +46,7 @@ fn pie3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// David Young's superShape3d as JWildfire computes it: the two superformula radii raised to
 /// −1/n1 (Fractorium's raise them to n1). Reads the registry's derived values.
 pub(super) fn super_shape3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [
-        _,
-        _,
-        _,
-        _,
-        _,
-        _,
-        _,
-        _,
-        n1_1,
-        n1_2,
-        n2_1,
-        n2_2,
-        n3_1,
-        n3_2,
-        spiral,
-        toroid,
-    ] = v.params();
-    let [an2_1, an2_2, bn3_1, bn3_2, m4_1, m4_2, rho_k, phi_k] = v.derived();
-    let rho = rng.f01() * rho_k;
-    let mut phi = rng.f01() * phi_k;
-    if rng.f01() < 0.5 {
-        phi = -phi;
-    }
-    let (sr, cr) = rho.sin_cos();
-    let (sp, cp) = phi.sin_cos();
-    let (msr, mcr) = (m4_1 * rho).sin_cos();
-    let (msp, mcp) = (m4_2 * phi).sin_cos();
-    let pr1 = an2_1 * mcr.abs().powf(n2_1) + bn3_1 * msr.abs().powf(n3_1);
-    let pr2 = an2_2 * mcp.abs().powf(n2_2) + bn3_2 * msp.abs().powf(n3_2);
-    let r1 = pr1.powf(-1.0 / n1_1) + spiral * rho;
-    let r2 = pr2.powf(-1.0 / n1_2);
-    if toroid == 1.0 {
-        let ring = r1 + r2 * cp;
-        [v.w * cr * ring, v.w * sr * ring, v.w * r2 * sp]
-    } else {
-        [
-            v.w * r1 * cr * r2 * cp,
-            v.w * r1 * sr * r2 * cp,
-            v.w * r2 * sp,
-        ]
-    }
+    crate::flame::variations::fr_curves::super_shape3d_as::<true>(v, rng)
 }
 
 /// Michael Faber's squish as JWildfire computes it: the arc length along the square of
