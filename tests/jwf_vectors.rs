@@ -48,14 +48,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: its formula is Java source code compiled at run time (Janino)",
     ),
     (
-        "elliptic",
-        "statistics differ at the near-zero point 17 (JWildfire's table-based maths: the mean radius, or its last digits)",
-    ),
-    (
-        "elliptic2",
-        "statistics differ at the near-zero point 17 (JWildfire's table-based maths: the mean radius, or its last digits)",
-    ),
-    (
         "f_complex",
         "not implemented: its function is Java source compiled at run time (Janino)",
     ),
@@ -132,14 +124,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "sattractor3D",
         "not implemented: its attractor formulas come from a preset file run by a formula evaluator; JWildfire itself fails its alt sets",
-    ),
-    (
-        "spliptic_bs",
-        "statistics differ at the near-zero point 17 (JWildfire's table-based maths: the mean radius, or its last digits)",
-    ),
-    (
-        "sqrt_asinh",
-        "statistics differ at the near-zero point 17 (JWildfire's table-based maths: the mean radius, or its last digits)",
     ),
     ("subflame_wf", "not implemented"),
     (

@@ -11,6 +11,7 @@
 
 use std::f64::consts::{FRAC_1_PI, FRAC_PI_2, PI, TAU};
 
+use super::util::jwf_math as jm;
 use super::*;
 
 pub(super) static DEFS: &[VarDef] = &[
@@ -254,9 +255,10 @@ fn r_circleblur(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V
     [v.w * ox, v.w * oy, 0.0]
 }
 
-/// √x, or 0 below 1e-300.
-fn sqrt_safe(x: f64) -> f64 {
-    if x < 1e-300 { 0.0 } else { x.sqrt() }
+/// √x, 0 below 1e-300, with JWildfire's table-based square root (`FAST_MATH`): the elliptic
+/// family needs its last ulps near the origin, where xmax is 1 plus a few ulps.
+fn jm_sqrt_safe(x: f64) -> f64 {
+    if x < 1e-300 { 0.0 } else { jm::sqrt(x) }
 }
 
 /// spliptic_bs (Brad Stefanov): elliptic with its halves split apart by ±x and ±y, the y
@@ -266,15 +268,15 @@ fn spliptic_bs(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3
     let k = v.w / FRAC_PI_2;
     let tmp = t.y * t.y + t.x * t.x + 1.0;
     let x2 = 2.0 * t.x;
-    let xmax = 0.5 * ((tmp + x2).sqrt() + (tmp - x2).sqrt());
+    let xmax = 0.5 * (jm::sqrt(tmp + x2) + jm::sqrt(tmp - x2));
     let a = t.x / xmax;
-    let b = sqrt_safe(1.0 - a * a);
+    let b = jm_sqrt_safe(1.0 - a * a);
     let ox = if t.x >= 0.0 {
-        k * a.atan2(b) + px
+        k * jm::atan2(a, b) + px
     } else {
-        k * a.atan2(b) - px
+        k * jm::atan2(a, b) - px
     };
-    let l = k * (xmax + sqrt_safe(xmax - 1.0)).ln() + py;
+    let l = k * (xmax + jm_sqrt_safe(xmax - 1.0)).ln() + py;
     let oy = if rng.f01() < 0.5 { l } else { -l };
     [ox, oy, 0.0]
 }
@@ -325,14 +327,14 @@ fn elliptic2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let k = v.w / (PI / h);
     let tmp = t.y * t.y + t.x * t.x + a1;
     let x2 = b1 * t.x;
-    let xmax = c * ((tmp + x2).sqrt() + (tmp - x2).sqrt());
+    let xmax = c * (jm::sqrt(tmp + x2) + jm::sqrt(tmp - x2));
     let a = t.x / xmax * a2;
-    let b = sqrt_safe(d - a * a) * b2;
-    let ox = k * a.atan2(b) - FRAC_PI_2 * a3;
+    let b = jm_sqrt_safe(d - a * a) * b2;
+    let ox = k * jm::atan2(a, b) - FRAC_PI_2 * a3;
     let oy = if rng.f01() < e {
-        k * (xmax + sqrt_safe(xmax - f)).ln()
+        k * (xmax + jm_sqrt_safe(xmax - f)).ln()
     } else {
-        -(k * (xmax + sqrt_safe(xmax - g)).ln())
+        -(k * (xmax + jm_sqrt_safe(xmax - g)).ln())
     };
     [ox, oy, 0.0]
 }

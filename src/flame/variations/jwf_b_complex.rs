@@ -11,6 +11,7 @@
 //! multiply the output linearly, integer parameters are rounded, and random numbers are drawn in
 //! the order JWildfire draws them.
 
+use super::util::jwf_math as jm;
 use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI, TAU};
 
 use super::*;
@@ -200,8 +201,9 @@ impl Jc {
         let m = o.mag_inv();
         Jc::new(r2 * m, i2 * m)
     }
+    /// The principal root, the radius from Jafama's `hypot` as JWildfire's `Complex.Radius`.
     fn sqrt(self) -> Jc {
-        let rad = self.re.hypot(self.im);
+        let rad = jm::hypot(self.re, self.im);
         let sb = if self.im < 0.0 { -1.0 } else { 1.0 };
         Jc::new(
             (0.5 * (rad + self.re)).sqrt(),
@@ -209,7 +211,8 @@ impl Jc {
         )
     }
     fn ln(self) -> Jc {
-        Jc::new(0.5 * self.mag2eps().ln(), self.im.atan2(self.re))
+        // java.lang.Math.atan2 is fdlibm's.
+        Jc::new(0.5 * self.mag2eps().ln(), libm::atan2(self.im, self.re))
     }
     fn exp(self) -> Jc {
         let e = self.re.exp();

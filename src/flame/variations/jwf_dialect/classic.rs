@@ -9,6 +9,7 @@
 use std::f64::consts::{FRAC_2_PI, FRAC_PI_4};
 
 use super::{SMALL_EPSILON, jwf_sqrt};
+use crate::flame::variations::util::jwf_math as jm;
 use crate::flame::variations::*;
 
 pub(in crate::flame::variations) const DEFS: &[VarDef] = &[
@@ -78,9 +79,11 @@ fn elliptic(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
             0.0,
         ];
     }
-    let safe_sqrt = |u: f64| if u < SMALL_EPSILON { 0.0 } else { u.sqrt() };
+    // JWildfire's table-based square root and arctangent (FAST_MATH): near the origin xmax is
+    // 1 plus a few ulps, and which ulps decides the height of the result.
+    let safe_sqrt = |u: f64| if u < SMALL_EPSILON { 0.0 } else { jm::sqrt(u) };
     let tmp = sq + 1.0;
-    let xmax = 0.5 * ((tmp + x2).sqrt() + (tmp - x2).sqrt());
+    let xmax = 0.5 * (jm::sqrt(tmp + x2) + jm::sqrt(tmp - x2));
     let a = x / xmax;
     let b = safe_sqrt(1.0 - a * a);
     let sign = if mode == 1.0 {
@@ -91,7 +94,7 @@ fn elliptic(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         -1.0
     };
     [
-        k * a.atan2(b),
+        k * jm::atan2(a, b),
         sign * k * (xmax + safe_sqrt(xmax - 1.0)).ln(),
         0.0,
     ]
