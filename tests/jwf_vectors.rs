@@ -131,7 +131,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: its colours follow the orientation of each Voronoi cell, which comes from QuickHull3D's face order (megamu.mesh)",
     ),
     ("svg_wf", "not implemented"),
-    ("synth", "x, y differ; statistics differ"),
     (
         "taprats",
         "not implemented: needs Craig Kaplan's Taprats tiling library (tilings, maps, star and rosette figures, render styles), several thousand lines",

@@ -13,14 +13,15 @@ use crate::flame::fastmath::FastTrig;
 
 /// synth's parameters: five global ones, then six per wave layer (`synth_L`, `_type`, `_skew`,
 /// `_frq`, `_phs`, `_layer`) for the layers named.
+/// `$modes` and `$smooth` are the largest shape number and smoothing type the writer knows.
 macro_rules! synth_params {
-    ($($layer:literal),*) => {
+    ($modes:literal, $smooth:literal; $($layer:literal),*) => {
         &[
             p("synth_a", 0.0),
-            p_int("synth_mode", 3.0, 0.0, 26.0),
+            p_int("synth_mode", 3.0, 0.0, $modes),
             p("synth_power", -2.0),
             p("synth_mix", 0.0),
-            p_int("synth_smooth", 0.0, 0.0, 1.0),
+            p_int("synth_smooth", 0.0, 0.0, $smooth),
             $(
                 p(concat!("synth_", $layer), 0.0),
                 p_int(concat!("synth_", $layer, "_type"), 0.0, 0.0, 8.0),
@@ -112,7 +113,7 @@ fn synth_value(v: &Prepared, theta: f64) -> f64 {
 
 /// A quadratic Bézier reshaping of x by the factor m: it bends the line y = x so that it
 /// passes through (1, m), rejoining y = x beyond max(1/m, 2m); odd in x and in m.
-fn bezier_quad_map(x: f64, m: f64) -> f64 {
+fn bezier_quad_map<const JWF: bool>(x: f64, m: f64) -> f64 {
     let mut sign = 1.0;
     let (mut x, mut m) = (x, m);
     if m < 0.0 {
@@ -124,14 +125,25 @@ fn bezier_quad_map(x: f64, m: f64) -> f64 {
         sign = -sign;
     }
     let im = if m > 1.0e-10 { 1.0 / m } else { 1e10 };
-    let end = if im < m * 2.0 { m * 2.0 } else { im };
+    // Where the curve rejoins the diagonal: Fractorium takes the larger of 1/m and 2m,
+    // JWildfire the larger of 2 − m and 2m. JWildfire also takes the special cases m = ½ and
+    // m = 2 within 1e-5 (a squared distance below 1e-10), Fractorium within 1e-10.
+    let other = if JWF { 2.0 - m } else { im };
+    let end = if other < m * 2.0 { m * 2.0 } else { other };
+    let near = |a: f64, b: f64| {
+        if JWF {
+            (a - b) * (a - b) <= 1e-10
+        } else {
+            (a - b).abs() <= 1e-10
+        }
+    };
     if x > end || m == 1.0 {
         return sign * x;
     }
     if m < 1.0 && x <= 1.0 {
         // Control points (0,0), (m,m), (1,m).
         let mut t = x;
-        if (m - 0.5).abs() > 1e-10 {
+        if !near(m, 0.5) {
             t = (-m + (m * m + (1.0 - 2.0 * m) * x).sqrt()) / (1.0 - 2.0 * m);
         }
         return sign * (x + (m - 1.0) * t * t);
@@ -139,7 +151,7 @@ fn bezier_quad_map(x: f64, m: f64) -> f64 {
     if 1.0 < m && x <= 1.0 {
         // Control points (0,0), (1/m,1/m), (1,m).
         let mut t = x;
-        if (m - 2.0).abs() > 1e-10 {
+        if !near(m, 2.0) {
             t = (-im + (im * im + (1.0 - 2.0 * im) * x).sqrt()) / (1.0 - 2.0 * im);
         }
         return sign * (x + (m - 1.0) * t * t);
@@ -154,32 +166,34 @@ fn bezier_quad_map(x: f64, m: f64) -> f64 {
     sign * (x + (m - 1.0) * t * t - 2.0 * (m - 1.0) * t + (m - 1.0))
 }
 
-/// Apply the shaping factor m to x: linearly, or by the Bézier map when `smooth` is 1.
+/// Apply the shaping factor m to x: by the Bézier map when `smooth` is 1, else linearly.
 #[inline]
-fn synth_lerp(x: f64, m: f64, smooth: i32) -> f64 {
-    if smooth == 0 {
-        x * m
+fn synth_lerp<const JWF: bool>(x: f64, m: f64, smooth: i32) -> f64 {
+    if smooth == 1 {
+        bezier_quad_map::<JWF>(x, m)
     } else {
-        bezier_quad_map(x, m)
+        x * m
     }
 }
 
-/// sin and cos of theta, reshaped by the synth function: multiplied by it (smooth 0) or with
-/// its deviation from 1 added (otherwise).
+/// sin and cos of theta, reshaped by the synth function: multiplied by it (smooth 0), with
+/// its deviation from 1 added (smooth 1), or as they are (another type, in JWildfire's files).
 fn synth_sin_cos(v: &Prepared, theta: f64, smooth: i32) -> (f64, f64) {
     let [_, _, _, mix] = v.params();
     let (s, c) = theta.fsin_cos();
-    if smooth == 0 {
-        (
+    match smooth {
+        0 => (
             s * synth_value(v, theta),
             c * synth_value(v, theta + FRAC_PI_2),
-        )
-    } else {
-        let k = 1.0 - mix;
-        (
-            k * s + (synth_value(v, theta) - 1.0),
-            k * c + (synth_value(v, theta + FRAC_PI_2) - 1.0),
-        )
+        ),
+        1 => {
+            let k = 1.0 - mix;
+            (
+                k * s + (synth_value(v, theta) - 1.0),
+                k * c + (synth_value(v, theta + FRAC_PI_2) - 1.0),
+            )
+        }
+        _ => (s, c),
     }
 }
 
@@ -188,7 +202,7 @@ fn synth_sin_cos(v: &Prepared, theta: f64, smooth: i32) -> (f64, f64) {
 #[inline(always)]
 fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, mode] = v.params();
-    synth_shape(v, t, rng, mode as i32)
+    synth_shape::<false>(v, t, rng, mode as i32)
 }
 
 /// synth in a flame JWildfire wrote: JWildfire numbers the shapes from 12 on otherwise
@@ -196,7 +210,7 @@ fn synth(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// radius as it was), the mirrors 17 and 18, powered spherical 19; the sinusoidal to cylinder
 /// shapes as 1001–1007) and draws nothing for a number it does not know (JWildfire 9.00's
 /// `SynthFunc`).
-pub(super) fn synth_jwildfire(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+fn synth_jwildfire(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, mode, power] = v.params();
     let shape = match mode as i32 {
         m @ 0..=11 => m,
@@ -216,11 +230,11 @@ pub(super) fn synth_jwildfire(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut Fa
         m @ 1001..=1007 => m - 989,
         _ => return [0.0; 3],
     };
-    synth_shape(v, t, rng, shape)
+    synth_shape::<true>(v, t, rng, shape)
 }
 
 /// synth's shape `mode` in Fractorium's numbering.
-fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
+fn synth_shape<const JWF: bool>(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
     let [_, _, power, mix, smooth] = v.params();
     let smooth = smooth as i32;
     let w = v.w;
@@ -234,14 +248,14 @@ fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
             // spherical
             let radius = zeps(t.sumsq).powf((power + 1.0) / 2.0);
             let theta = t.atan_xy;
-            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
+            let radius = synth_lerp::<JWF>(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         1 => {
             // bubble
             let radius = t.sqrt / (t.sumsq / 4.0 + 1.0);
             let theta = t.atan_xy;
-            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
+            let radius = synth_lerp::<JWF>(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         2 => {
@@ -251,7 +265,7 @@ fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
             let vx = radius * theta.fsin();
             let vy = radius * theta.fcos();
             let radius = zeps(radius * radius).powf(power / 2.0);
-            let radius = w * synth_lerp(radius, synth_value(v, theta), smooth);
+            let radius = w * synth_lerp::<JWF>(radius, synth_value(v, theta), smooth);
             [vx * radius, vy * radius, 0.0]
         }
         3 => {
@@ -259,27 +273,35 @@ fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
             let radius = 0.5 * (rng.f01() + rng.f01());
             let theta = TAU * rng.f01() - PI;
             let radius = zeps(sqr(radius)).powf(-power / 2.0);
-            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
+            let radius = synth_lerp::<JWF>(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         4 => {
             // zigzag blur along a segment
             let vy = 1.0 + 0.1 * (rng.f01() + rng.f01() - 1.0) * power;
             let theta = 2.0 * ((rng.f01() - 0.5) * 2.0).asin();
-            let vy = synth_lerp(vy, synth_value(v, theta), smooth);
+            let vy = synth_lerp::<JWF>(vy, synth_value(v, theta), smooth);
             [w * (theta / PI), w * (vy - 1.0), 0.0]
         }
         5 => {
             // raw circle
             let theta = t.atan_xy;
-            let radius = synth_lerp(t.sqrt, synth_value(v, theta), smooth);
+            let radius = synth_lerp::<JWF>(t.sqrt, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
-        6 => [w * synth_lerp(x, synth_value(v, y), smooth), w * y, 0.0],
-        7 => [w * x, w * synth_lerp(y, synth_value(v, x), smooth), 0.0],
+        6 => [
+            w * synth_lerp::<JWF>(x, synth_value(v, y), smooth),
+            w * y,
+            0.0,
+        ],
+        7 => [
+            w * x,
+            w * synth_lerp::<JWF>(y, synth_value(v, x), smooth),
+            0.0,
+        ],
         8 => [
-            w * synth_lerp(x, synth_value(v, y), smooth),
-            w * synth_lerp(y, synth_value(v, x), smooth),
+            w * synth_lerp::<JWF>(x, synth_value(v, y), smooth),
+            w * synth_lerp::<JWF>(y, synth_value(v, x), smooth),
             0.0,
         ],
         9 => [w * (x + synth_value(v, y) - 1.0), w * y, 0.0],
@@ -347,7 +369,7 @@ fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
             // blurred ring
             let radius = 1.0 + 0.1 * (rng.f01() + rng.f01() - 1.0) * power;
             let theta = TAU * rng.f01() - PI;
-            let radius = synth_lerp(radius, synth_value(v, theta), smooth);
+            let radius = synth_lerp::<JWF>(radius, synth_value(v, theta), smooth);
             polar(radius, theta)
         }
         20 => {
@@ -382,11 +404,19 @@ fn synth_shape(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode: i32) -> V3 {
         _ => {
             // spherical, power applied after the shaping
             let theta = t.atan_xy;
-            let radius = synth_lerp(t.sqrt, synth_value(v, theta), smooth);
+            let radius = synth_lerp::<JWF>(t.sqrt, synth_value(v, theta), smooth);
             let radius = radius.powf(power);
             polar(radius, theta)
         }
     }
 }
 
-const SYNTH_PARAMS: &[Param] = synth_params!("b", "c", "d", "e", "f");
+const SYNTH_PARAMS: &[Param] = synth_params!(26.0, 1.0; "b", "c", "d", "e", "f");
+
+/// JWildfire's synth: its own shape numbers (up to 1007; others draw nothing) and smoothing
+/// types (0 and 1 as Fractorium's; any other number interpolates linearly and leaves the sine
+/// and cosine unshaped), not clamped to Fractorium's ranges.
+pub(super) static JWF_DEFS: &[VarDef] = &[VarDef::new("synth", synth_jwildfire)
+    .params(synth_params!(2147483647.0, 2147483647.0; "b", "c", "d", "e", "f"))
+    .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
+    .flags(flag::RANDOM)];

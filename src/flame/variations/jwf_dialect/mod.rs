@@ -48,6 +48,7 @@ pub(super) const TABLES: &[&[VarDef]] = &[
     wider::DEFS,
     stats_shapes::DEFS,
     stats_crops::DEFS,
+    super::fr_synth::JWF_DEFS,
 ];
 
 /// Variations whose JWildfire twin is the registry's entry (parameters, derived values) with
@@ -120,7 +121,6 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("shredlin", fractorium::shredlin, 0, flag::WRITES_ACC),
     ("sintrange", fractorium::sintrange, 0, flag::WRITES_ACC),
     ("sinusgrid", fractorium::sinusgrid, 0, flag::WRITES_Z),
-    ("synth", super::fr_synth::synth_jwildfire, 0, 0),
     (
         "post_crop",
         fractorium::crop,
