@@ -139,7 +139,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "text_wf",
         "statistics differ: ugnis draws the text with its bundled sans-serif, JWildfire with the system font (Arial or the fallback)",
     ),
-    ("truchet_hex_fill", "statistics differ (cause not found)"),
     (
         "wangtiles",
         "not implemented: draws JWildfire's tile images (PNG resources)",

@@ -437,6 +437,24 @@ fn truchet_hex_fill_prep(v: &mut Prepared) {
 /// split into the three arcs of a hexagon.
 #[inline(always)]
 fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    truchet_hex_fill_as::<false>(v, t, rng)
+}
+
+/// Truchet_hex_fill as JWildfire 9.00 computes it (`TruchetHexFillFunc`): the ring is
+/// exponential in x (scaled by 2 / (e^(π/3n) + e^(−π/3n)) so that the tiles meet), where
+/// Fractorium's is linear, and the input is mirrored for the other tile orientation when the
+/// flip is 0 (Fractorium: when it is 1).
+pub(super) fn truchet_hex_fill_jwildfire(
+    v: &Prepared,
+    t: &VarIn,
+    _: &mut Acc,
+    rng: &mut FastRng,
+) -> V3 {
+    truchet_hex_fill_as::<true>(v, t, rng)
+}
+
+#[inline(always)]
+fn truchet_hex_fill_as<const JWF: bool>(v: &Prepared, t: &VarIn, rng: &mut FastRng) -> V3 {
     let [_, flipx, flipy, sx, sy, seed] = v.params();
     let [n3, inv_n3] = v.derived();
     let l = rng.f01().ln();
@@ -454,10 +472,16 @@ fn truchet_hex_fill(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> 
         add = false;
     }
     let sector = (rng.f01() * n3).floor() * TAU * inv_n3;
-    let ya = if flipy != 0.0 && !add { -t.y } else { t.y };
-    let xa = if flipx != 0.0 && !add { -t.x } else { t.x };
+    let mirror = |flip: f64| !add && (flip == 0.0) == JWF;
+    let ya = if mirror(flipy) { -t.y } else { t.y };
+    let xa = if mirror(flipx) { -t.x } else { t.x };
     let ang = ya * inv_n3 * PI + sector;
-    let a = 1.0 + xa * inv_n3 * PI;
+    let a = if JWF {
+        let s1 = (PI * inv_n3).exp();
+        2.0 / (s1 + 1.0 / s1) * (xa * inv_n3 * PI).exp()
+    } else {
+        1.0 + xa * inv_n3 * PI
+    };
     let fx = a * ang.fcos();
     let fy = a * ang.fsin();
     // Which third of the circle: move that arc's centre to the origin.

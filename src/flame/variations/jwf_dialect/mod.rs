@@ -120,6 +120,12 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("kaleidoscope", fractorium::kaleidoscope, 0, 0),
     ("shredlin", fractorium::shredlin, 0, flag::WRITES_ACC),
     ("sintrange", fractorium::sintrange, 0, flag::WRITES_ACC),
+    (
+        "truchet_hex_fill",
+        super::fr_truchet::truchet_hex_fill_jwildfire,
+        0,
+        0,
+    ),
     ("sinusgrid", fractorium::sinusgrid, 0, flag::WRITES_Z),
     (
         "post_crop",
