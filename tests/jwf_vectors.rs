@@ -55,10 +55,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("fract_formula_mand_wf", "not implemented"),
     ("glsl_code", "not implemented"),
     (
-        "glsl_mandala",
-        "colour statistics differ in alt (gradient mode: r times g after 51 steps of the inversion map; cause not found)",
-    ),
-    (
         "glynnSim1",
         "statistics differ: the registry's parameter ranges (Fractorium's: pow clamped to [0, 1]) clamp JWildfire's pow 1.5",
     ),

@@ -633,7 +633,12 @@ pub(super) fn hyperbolic_grey(x: f64, y: f64) -> f64 {
 
 /// glsl_mandala: dc_mandala's kaleidoscopic fractal on the pixel's centre in [-1, 1]².
 fn glsl_mandala(v: &Prepared, _: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
-    let [res, q @ .., gradient] = v.params::<11>();
+    let [res, mut q @ .., gradient] = v.params::<11>();
+    if gradient != 0.0 {
+        // JWildfire's GLSL vectors keep their r, g, b as constructed: the channel inversions
+        // (iR, iG, iB) change x, y, z after that, so the gradient index r·g never sees them.
+        q[6..].fill(0.0);
+    }
     glsl_frame(v, res, gradient, acc, rng, GlslIndex::RedGreen, |i, j| {
         let (x, y) = (
             2.0 * (i + 0.5) / res - 1.0,
