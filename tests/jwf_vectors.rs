@@ -42,7 +42,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: 1 150 lines of tile shaders, not reached in the time",
     ),
     ("displacemap_wf", "not implemented"),
-    ("dla3d_wf", "x, y, z, color differ; call sequence differs"),
     (
         "ducks",
         "not implemented: its formula is Java source code compiled at run time (Janino)",
@@ -484,6 +483,14 @@ fn harness_rgb(c: [f64; 3]) -> [f64; 3] {
 }
 
 /// The exact cells of every row: position, colour, direct colour, hide flag.
+/// Parameter sets whose recorded values come from a race in JWildfire, left out: dla3d_wf
+/// with `single_thread` 0 (its `default` set) grows its aggregate with two walker threads per
+/// render thread drawing from one shared generator, so the shape depends on the threads'
+/// timing (JWildfire caches the first shape it grew for the session). ugnis grows it as
+/// JWildfire's single-threaded path does; the `alt` and `alt2` sets (`single_thread` 1 and 2)
+/// are compared exactly.
+const RACED_SETS: &[(&str, &str)] = &[("dla3d_wf", "default")];
+
 fn check_deterministic(
     t: &Table,
     all: &[SetRows],
@@ -503,6 +510,9 @@ fn check_deterministic(
                 continue;
             }
         };
+        if RACED_SETS.contains(&(var.as_str(), ps.as_str())) {
+            continue;
+        }
         let rgb_may_vary = vars.get(var).is_some_and(|v| v.random_rgb_or_hide);
         for &i in rows {
             let r = &t.rows[i];
@@ -670,7 +680,10 @@ fn check_stateful(
     let t = Table::parse(&fixture("state_sequences"));
     for r in &t.rows {
         let (var, ps) = (t.get(r, "variation"), t.get(r, "param_set"));
-        if !selected(var) || vars.get(var).is_none_or(|v| v.random) {
+        if !selected(var)
+            || vars.get(var).is_none_or(|v| v.random)
+            || RACED_SETS.contains(&(var, ps))
+        {
             continue;
         }
         let Some(set) = by_set.get(&(var.to_string(), ps.to_string())) else {

@@ -92,7 +92,15 @@ pub(super) static DEFS: &[VarDef] = &[
         .shared(&[], polar_formula),
     VarDef::new("dla3d_wf", dla3d_wf)
         .params(P_DLA)
-        .flags(flag::JWILDFIRE | flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR | flag::HIDES)
+        .flags(
+            flag::JWILDFIRE
+                | flag::RANDOM
+                | flag::STATEFUL
+                | flag::WRITES_Z
+                | flag::SETS_COLOR
+                | flag::HIDES,
+        )
+        .prepare(dla_prepare)
         .shared(&[0, 1, 6, 7, 8, 9], dla_nodes),
 ];
 
@@ -704,9 +712,22 @@ fn dla_sample<R: Draw>(v: &Prepared, nodes: &[f64], r: &mut R) -> Option<([f64; 
 /// as blurred spheres at the nodes and tubes along the links (or as bare links when the outer
 /// blur radius is 0), coloured by relative depth when dc_color is on. Where nothing is drawn
 /// the point is hidden (the sample counts, nothing is added).
-fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+/// dla3d_wf's own generator (state slot 0): JWildfire's Marsaglia generator seeded with
+/// `seed` when the variation is initialised, so that the samples follow JWildfire's sequence.
+fn dla_prepare(v: &mut Prepared) {
+    let [_, seed] = v.params();
+    v.state
+        .set(0, f64::from_bits(Mwc::new(seed as i64).to_bits()));
+}
+
+/// A sample of the aggregate drawn with the variation's own generator (JWildfire draws every
+/// number of dla3d_wf from it, none from the render's).
+fn dla3d_wf(v: &Prepared, _t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
     let [_, _, _, _, _, dc_color] = v.params();
-    match dla_sample(v, v.data(), rng) {
+    let mut g = Mwc::from_bits(v.state.get(0).to_bits());
+    let sample = dla_sample(v, v.data(), &mut g);
+    v.state.set(0, f64::from_bits(g.to_bits()));
+    match sample {
         Some((pos, color)) => {
             if dc_color > 0.0 {
                 acc.color = color.clamp(0.0, 1.0);
