@@ -4,7 +4,7 @@
 
 use super::def::Prepared;
 use super::point::{Acc, SoaAcc, SoaIn, VarIn};
-use super::{V3, flag};
+use super::{Draws, V3, flag};
 use crate::flame::fastmath::{self, Simd};
 use crate::flame::rng::FastRng;
 
@@ -91,6 +91,163 @@ pub fn batch_with(
         start += m;
     }
 }
+
+/// The random numbers of one point, drawn before its batch's loop, read in order: what a
+/// formula generic over [`Draws`] takes in [`batch_with_draws`]. A formula that reads more than
+/// `K` gets 0 for the rest (its batch loop then differs from its point-by-point version, which
+/// the bit-for-bit test of every loop shows).
+pub struct Row<const K: usize> {
+    d: [u64; K],
+    pos: usize,
+}
+
+impl<const K: usize> Draws for Row<K> {
+    #[inline(always)]
+    fn u64(&mut self) -> u64 {
+        let u = self.d.get(self.pos).copied().unwrap_or(0);
+        self.pos += 1;
+        u
+    }
+}
+
+/// A formula generic over [`Draws`] at [`Row`]`<K>`, for [`batch_with_draws`]: a trait with an
+/// always-inlined method rather than a function passed as a value, whose call the compiler may
+/// leave out of line (and a call in the loop stops it from vectorising).
+pub trait DrawnFormula<const K: usize> {
+    fn at(&self, v: &Prepared, t: &VarIn, a: &mut Acc, row: &mut Row<K>) -> V3;
+}
+
+/// [`batch_with`] for a formula that draws exactly `K` random numbers per point whatever the
+/// point: the numbers of a pass are drawn first, point after point in the order the formula
+/// draws them (the same stream and the same bits as the formula drawing them itself), and the
+/// formula reads them from its point's [`Row`]: nothing then carries from point to point, so
+/// the loop vectorises where the formula does.
+#[inline(always)]
+pub fn batch_with_draws<const K: usize>(
+    v: &Prepared,
+    s: &SoaIn,
+    acc: &mut SoaAcc,
+    rng: &mut FastRng,
+    f: impl DrawnFormula<K>,
+) {
+    let n = acc.x.len();
+    let own_z = v.def.flags & flag::WRITES_Z != 0;
+    let default_z = v.default_z_rule();
+    let mut drawn = [[0u64; K]; PASS];
+    let mut start = 0;
+    while start < n {
+        let m = (n - start).min(PASS);
+        for row in drawn[..m].iter_mut() {
+            for u in row.iter_mut() {
+                *u = rng.u64();
+            }
+        }
+        let r = start..start + m;
+        let s = s.range(r.clone());
+        let mut out = [[0.0; PASS]; 4];
+        let mut hides = [false; PASS];
+        {
+            let [ox, oy, oz, oc] = &mut out;
+            let (ox, oy, oz, oc) = (&mut ox[..m], &mut oy[..m], &mut oz[..m], &mut oc[..m]);
+            let hides = &mut hides[..m];
+            let drawn = &drawn[..m];
+            let (ax, ay) = (&acc.x[r.clone()], &acc.y[r.clone()]);
+            let (az, ac) = (&acc.z[r.clone()], &acc.color[r.clone()]);
+            for j in 0..m {
+                let t = s.at(j);
+                let mut a = Acc {
+                    x: ax[j],
+                    y: ay[j],
+                    z: az[j],
+                    color: ac[j],
+                    ..Acc::default()
+                };
+                let mut row = Row {
+                    d: drawn[j],
+                    pos: 0,
+                };
+                let mut o = f.at(v, &t, &mut a, &mut row);
+                if !own_z {
+                    o[2] = default_z.of(t.z);
+                }
+                ox[j] = a.x + o[0];
+                oy[j] = a.y + o[1];
+                oz[j] = a.z + o[2];
+                oc[j] = a.drawn_color();
+                hides[j] = a.hide;
+            }
+        }
+        let [ox, oy, oz, oc] = &out;
+        acc.x[r.clone()].copy_from_slice(&ox[..m]);
+        acc.y[r.clone()].copy_from_slice(&oy[..m]);
+        acc.z[r.clone()].copy_from_slice(&oz[..m]);
+        acc.color[r.clone()].copy_from_slice(&oc[..m]);
+        for (h, &k) in acc.hide[r].iter_mut().zip(&hides[..m]) {
+            *h |= k;
+        }
+        start += m;
+    }
+}
+
+/// [`inline_batch!`] for a formula `$f` generic over [`Draws`] that draws exactly `$k` random
+/// numbers per point: [`batch_with_draws`] with `$f` at [`Row`]`<$k>`, compiled for AVX2 and
+/// FMA where the CPU has them; elsewhere [`generic_batch`] (the formula drawing the same
+/// numbers itself, point by point).
+macro_rules! inline_batch_drawn {
+    ($f:ident, $k:expr) => {{
+        fn batch(
+            v: &$crate::flame::variations::Prepared,
+            s: &$crate::flame::variations::SoaIn,
+            acc: &mut $crate::flame::variations::SoaAcc,
+            rng: &mut $crate::flame::rng::FastRng,
+        ) {
+            #[cfg(target_arch = "x86_64")]
+            {
+                use $crate::flame::fastmath::{Simd, simd};
+                use $crate::flame::rng::FastRng;
+                use $crate::flame::variations::{
+                    Acc, DrawnFormula, Prepared, Row, SoaAcc, SoaIn, V3, VarIn, batch_with_draws,
+                };
+                struct Formula;
+                impl DrawnFormula<{ $k }> for Formula {
+                    #[inline(always)]
+                    fn at(
+                        &self,
+                        v: &Prepared,
+                        t: &VarIn,
+                        a: &mut Acc,
+                        row: &mut Row<{ $k }>,
+                    ) -> V3 {
+                        $f(v, t, a, row)
+                    }
+                }
+                #[target_feature(enable = "avx2,fma")]
+                fn avx2(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
+                    batch_with_draws::<{ $k }>(v, s, acc, rng, Formula)
+                }
+                match simd() {
+                    // SAFETY: the CPU has reported AVX2 and FMA (AVX-512F implies them here).
+                    Simd::Avx512 | Simd::Avx2Fma => return unsafe { avx2(v, s, acc, rng) },
+                    Simd::Baseline => {}
+                }
+            }
+            // The same numbers in the same order, drawn point by point: the same bits.
+            $crate::flame::variations::generic_batch(v, s, acc, rng)
+        }
+        batch as $crate::flame::variations::BatchFn
+    }};
+}
+pub(crate) use inline_batch_drawn;
+
+/// `VarDef::new(name, f)` for a formula `f` generic over [`Draws`] drawing exactly `k` random
+/// numbers per point, with [`inline_batch_drawn!`]`(f, k)` as its batch loop.
+macro_rules! inlined_drawn {
+    ($name:expr, $f:ident, $k:expr) => {
+        $crate::flame::variations::VarDef::new($name, $f::<$crate::flame::rng::FastRng>)
+            .batch($crate::flame::variations::inline_batch_drawn!($f, $k))
+    };
+}
+pub(crate) use inlined_drawn;
 
 /// A [`BatchFn`] for the formula `$f` (an [`EvalFn`]-shaped function): on CPUs with AVX2 and
 /// FMA, [`batch_with`] with the formula inlined and compiled for them — no call through a
