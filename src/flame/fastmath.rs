@@ -179,8 +179,11 @@ pub fn sin_cos_scalar(x: f64) -> (f64, f64) {
     }
 }
 
-/// Sine and cosine through [`sin_cos_any`] as methods, for scalar formulas written with the
-/// standard library's method syntax (`a.fsin_cos()` for `a.sin_cos()`).
+/// This module's functions for any argument as methods, for formulas written with the standard
+/// library's method syntax (`a.fsin_cos()` for `a.sin_cos()`, `a.fln()` for `a.ln()`): the
+/// same special values as the standard library's, a few ulp apart elsewhere, and no calls, so
+/// a loop over a batch of points vectorises where the formula allows.
+#[allow(dead_code)] // the full set; formulas take them up one by one
 pub trait FastTrig {
     /// [`sin_cos_any`].
     fn fsin_cos(self) -> (f64, f64);
@@ -188,6 +191,22 @@ pub trait FastTrig {
     fn fsin(self) -> f64;
     /// cos through [`sin_cos_any`].
     fn fcos(self) -> f64;
+    /// tan as sin / cos of [`sin_cos_any`].
+    fn ftan(self) -> f64;
+    /// [`ln`].
+    fn fln(self) -> f64;
+    /// [`exp_any`].
+    fn fexp(self) -> f64;
+    /// [`pow`].
+    fn fpowf(self, y: f64) -> f64;
+    /// [`atan2_any`] (self is y).
+    fn fatan2(self, x: f64) -> f64;
+    /// [`atan`].
+    fn fatan(self) -> f64;
+    /// [`asin`].
+    fn fasin(self) -> f64;
+    /// [`acos`].
+    fn facos(self) -> f64;
 }
 
 impl FastTrig for f64 {
@@ -202,6 +221,39 @@ impl FastTrig for f64 {
     #[inline(always)]
     fn fcos(self) -> f64 {
         sin_cos_any(self).1
+    }
+    #[inline(always)]
+    fn ftan(self) -> f64 {
+        let (s, c) = sin_cos_any(self);
+        s / c
+    }
+    #[inline(always)]
+    fn fln(self) -> f64 {
+        ln(self)
+    }
+    #[inline(always)]
+    fn fexp(self) -> f64 {
+        exp_any(self)
+    }
+    #[inline(always)]
+    fn fpowf(self, y: f64) -> f64 {
+        pow(self, y)
+    }
+    #[inline(always)]
+    fn fatan2(self, x: f64) -> f64 {
+        atan2_any(self, x)
+    }
+    #[inline(always)]
+    fn fatan(self) -> f64 {
+        atan(self)
+    }
+    #[inline(always)]
+    fn fasin(self) -> f64 {
+        asin(self)
+    }
+    #[inline(always)]
+    fn facos(self) -> f64 {
+        acos(self)
     }
 }
 
@@ -294,6 +346,41 @@ pub fn atan2(y: f64, x: f64) -> f64 {
         f64::from_bits(FRAC_PI_2.to_bits() | ysign)
     };
     if x == 0.0 { on_axis } else { r }
+}
+
+/// atan2(y, x) for any y and x: [`atan2`], where both are infinite the standard library's
+/// ±π/4 (x = +∞) or ±3π/4 (x = −∞) rather than NaN, and NaN where either is NaN ([`atan2`]
+/// alone gives ±π/2 for a NaN y over x = 0). Branch-free.
+#[inline(always)]
+pub fn atan2_any(y: f64, x: f64) -> f64 {
+    let a = atan2(y, x);
+    let corner = if x > 0.0 { FRAC_PI_4 } else { 3.0 * FRAC_PI_4 };
+    let corner = f64::from_bits(corner.to_bits() | (y.to_bits() & (1 << 63)));
+    let a = if x.is_infinite() && y.is_infinite() {
+        corner
+    } else {
+        a
+    };
+    // NaN in, NaN out (the sum of two numbers one of which is NaN is NaN).
+    if x.is_nan() || y.is_nan() { x + y } else { a }
+}
+
+/// asin x = atan2(x, √((1 − x)(1 + x))), branch-free: within a few ulp of the standard
+/// library's (1 − x is exact near 1, where √(1 − x²) would lose the digits that matter);
+/// |x| > 1 and NaN give NaN (of unspecified sign, as the standard library's), ±0 and ±1 as
+/// the standard library gives them.
+#[allow(dead_code)] // the full set; formulas take them up one by one
+#[inline(always)]
+pub fn asin(x: f64) -> f64 {
+    atan2_any(x, ((1.0 - x) * (1.0 + x)).sqrt())
+}
+
+/// acos x = atan2(√((1 − x)(1 + x)), x), branch-free: within a few ulp of the standard
+/// library's; |x| > 1 and NaN give NaN, acos 1 = 0 and acos −1 = π.
+#[allow(dead_code)] // the full set; formulas take them up one by one
+#[inline(always)]
+pub fn acos(x: f64) -> f64 {
+    atan2_any(((1.0 - x) * (1.0 + x)).sqrt(), x)
 }
 
 /// ln 2 split: the first 32 bits, and the rest (fdlibm).

@@ -2,9 +2,11 @@
 //! point by point, and [`inline_batch!`], which builds a loop with the formula inlined (compiled
 //! for AVX2 and FMA where the CPU has them) for every Fractorium variation.
 
+use std::mem::MaybeUninit;
+
 use super::def::Prepared;
 use super::point::{Acc, SoaAcc, SoaIn, VarIn};
-use super::{V3, flag};
+use super::{Draws, V3, flag};
 use crate::flame::fastmath::{self, Simd};
 use crate::flame::rng::FastRng;
 
@@ -26,6 +28,19 @@ pub fn generic_batch(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRn
 
 /// Points per pass of [`batch_with`].
 const PASS: usize = 256;
+
+/// Copies a pass's outputs to the caller's column. The pass arrays are left uninitialised
+/// rather than zeroed (8 KiB per call, a few percent of a cheap flame's time, and calls often
+/// hold far fewer than [`PASS`] points); every value of `src` is written by the pass's loop
+/// before this copy.
+#[inline(always)]
+fn copy_written(dst: &mut [f64], src: &[MaybeUninit<f64>]) {
+    for (d, s) in dst.iter_mut().zip(src) {
+        // SAFETY: the pass's loop writes src[j] for every j below its length, `m`, and
+        // cannot leave the loop early (a panic unwinds past this copy).
+        *d = unsafe { s.assume_init() };
+    }
+}
 
 /// The batch loop calling `f` point by point, as [`Prepared::eval`] does. With `f` a function
 /// item (not a pointer) the formula is inlined into the loop: see [`inline_batch!`].
@@ -51,7 +66,7 @@ pub fn batch_with(
         let m = (n - start).min(PASS);
         let r = start..start + m;
         let s = s.range(r.clone());
-        let mut out = [[0.0; PASS]; 4];
+        let mut out = [[MaybeUninit::<f64>::uninit(); PASS]; 4];
         let mut hides = [false; PASS];
         {
             let [ox, oy, oz, oc] = &mut out;
@@ -73,24 +88,185 @@ pub fn batch_with(
                 if !own_z {
                     o[2] = default_z.of(t.z);
                 }
-                ox[j] = a.x + o[0];
-                oy[j] = a.y + o[1];
-                oz[j] = a.z + o[2];
-                oc[j] = a.drawn_color();
+                ox[j] = MaybeUninit::new(a.x + o[0]);
+                oy[j] = MaybeUninit::new(a.y + o[1]);
+                oz[j] = MaybeUninit::new(a.z + o[2]);
+                oc[j] = MaybeUninit::new(a.drawn_color());
                 hides[j] = a.hide;
             }
         }
         let [ox, oy, oz, oc] = &out;
-        acc.x[r.clone()].copy_from_slice(&ox[..m]);
-        acc.y[r.clone()].copy_from_slice(&oy[..m]);
-        acc.z[r.clone()].copy_from_slice(&oz[..m]);
-        acc.color[r.clone()].copy_from_slice(&oc[..m]);
+        copy_written(&mut acc.x[r.clone()], &ox[..m]);
+        copy_written(&mut acc.y[r.clone()], &oy[..m]);
+        copy_written(&mut acc.z[r.clone()], &oz[..m]);
+        copy_written(&mut acc.color[r.clone()], &oc[..m]);
         for (h, &k) in acc.hide[r].iter_mut().zip(&hides[..m]) {
             *h |= k;
         }
         start += m;
     }
 }
+
+/// The random numbers of one point, drawn before its batch's loop, read in order: what a
+/// formula generic over [`Draws`] takes in [`batch_with_draws`]. A formula that reads more than
+/// `K` gets 0 for the rest (its batch loop then differs from its point-by-point version, which
+/// the bit-for-bit test of every loop shows).
+pub struct Row<const K: usize> {
+    d: [u64; K],
+    pos: usize,
+}
+
+impl<const K: usize> Draws for Row<K> {
+    #[inline(always)]
+    fn u64(&mut self) -> u64 {
+        let u = self.d.get(self.pos).copied().unwrap_or(0);
+        self.pos += 1;
+        u
+    }
+}
+
+/// A formula generic over [`Draws`] at [`Row`]`<K>`, for [`batch_with_draws`]: a trait with an
+/// always-inlined method rather than a function passed as a value, whose call the compiler may
+/// leave out of line (and a call in the loop stops it from vectorising).
+pub trait DrawnFormula<const K: usize> {
+    fn at(&self, v: &Prepared, t: &VarIn, a: &mut Acc, row: &mut Row<K>) -> V3;
+}
+
+/// [`batch_with`] for a formula that draws exactly `K` random numbers per point whatever the
+/// point: the numbers of a pass are drawn first, point after point in the order the formula
+/// draws them (the same stream and the same bits as the formula drawing them itself), and the
+/// formula reads them from its point's [`Row`]: nothing then carries from point to point, so
+/// the loop vectorises where the formula does.
+#[inline(always)]
+pub fn batch_with_draws<const K: usize>(
+    v: &Prepared,
+    s: &SoaIn,
+    acc: &mut SoaAcc,
+    rng: &mut FastRng,
+    f: impl DrawnFormula<K>,
+) {
+    let n = acc.x.len();
+    let own_z = v.def.flags & flag::WRITES_Z != 0;
+    let default_z = v.default_z_rule();
+    // Uninitialised as the outputs are (see [`copy_written`]): rows 0..m are drawn first.
+    let mut drawn = [MaybeUninit::<[u64; K]>::uninit(); PASS];
+    let mut start = 0;
+    while start < n {
+        let m = (n - start).min(PASS);
+        for row in drawn[..m].iter_mut() {
+            let mut d = [0u64; K];
+            for u in d.iter_mut() {
+                *u = rng.u64();
+            }
+            *row = MaybeUninit::new(d);
+        }
+        let r = start..start + m;
+        let s = s.range(r.clone());
+        let mut out = [[MaybeUninit::<f64>::uninit(); PASS]; 4];
+        let mut hides = [false; PASS];
+        {
+            let [ox, oy, oz, oc] = &mut out;
+            let (ox, oy, oz, oc) = (&mut ox[..m], &mut oy[..m], &mut oz[..m], &mut oc[..m]);
+            let hides = &mut hides[..m];
+            let drawn = &drawn[..m];
+            let (ax, ay) = (&acc.x[r.clone()], &acc.y[r.clone()]);
+            let (az, ac) = (&acc.z[r.clone()], &acc.color[r.clone()]);
+            for j in 0..m {
+                let t = s.at(j);
+                let mut a = Acc {
+                    x: ax[j],
+                    y: ay[j],
+                    z: az[j],
+                    color: ac[j],
+                    ..Acc::default()
+                };
+                let mut row = Row {
+                    // SAFETY: rows 0..m were drawn above, and j < m.
+                    d: unsafe { drawn[j].assume_init() },
+                    pos: 0,
+                };
+                let mut o = f.at(v, &t, &mut a, &mut row);
+                if !own_z {
+                    o[2] = default_z.of(t.z);
+                }
+                ox[j] = MaybeUninit::new(a.x + o[0]);
+                oy[j] = MaybeUninit::new(a.y + o[1]);
+                oz[j] = MaybeUninit::new(a.z + o[2]);
+                oc[j] = MaybeUninit::new(a.drawn_color());
+                hides[j] = a.hide;
+            }
+        }
+        let [ox, oy, oz, oc] = &out;
+        copy_written(&mut acc.x[r.clone()], &ox[..m]);
+        copy_written(&mut acc.y[r.clone()], &oy[..m]);
+        copy_written(&mut acc.z[r.clone()], &oz[..m]);
+        copy_written(&mut acc.color[r.clone()], &oc[..m]);
+        for (h, &k) in acc.hide[r].iter_mut().zip(&hides[..m]) {
+            *h |= k;
+        }
+        start += m;
+    }
+}
+
+/// [`inline_batch!`] for a formula `$f` generic over [`Draws`] that draws exactly `$k` random
+/// numbers per point: [`batch_with_draws`] with `$f` at [`Row`]`<$k>`, compiled for AVX2 and
+/// FMA where the CPU has them; elsewhere [`generic_batch`] (the formula drawing the same
+/// numbers itself, point by point).
+macro_rules! inline_batch_drawn {
+    ($f:ident, $k:expr) => {{
+        fn batch(
+            v: &$crate::flame::variations::Prepared,
+            s: &$crate::flame::variations::SoaIn,
+            acc: &mut $crate::flame::variations::SoaAcc,
+            rng: &mut $crate::flame::rng::FastRng,
+        ) {
+            #[cfg(target_arch = "x86_64")]
+            {
+                use $crate::flame::fastmath::{Simd, simd};
+                use $crate::flame::rng::FastRng;
+                use $crate::flame::variations::{
+                    Acc, DrawnFormula, Prepared, Row, SoaAcc, SoaIn, V3, VarIn, batch_with_draws,
+                };
+                struct Formula;
+                impl DrawnFormula<{ $k }> for Formula {
+                    #[inline(always)]
+                    fn at(
+                        &self,
+                        v: &Prepared,
+                        t: &VarIn,
+                        a: &mut Acc,
+                        row: &mut Row<{ $k }>,
+                    ) -> V3 {
+                        $f(v, t, a, row)
+                    }
+                }
+                #[target_feature(enable = "avx2,fma")]
+                fn avx2(v: &Prepared, s: &SoaIn, acc: &mut SoaAcc, rng: &mut FastRng) {
+                    batch_with_draws::<{ $k }>(v, s, acc, rng, Formula)
+                }
+                match simd() {
+                    // SAFETY: the CPU has reported AVX2 and FMA (AVX-512F implies them here).
+                    Simd::Avx512 | Simd::Avx2Fma => return unsafe { avx2(v, s, acc, rng) },
+                    Simd::Baseline => {}
+                }
+            }
+            // The same numbers in the same order, drawn point by point: the same bits.
+            $crate::flame::variations::generic_batch(v, s, acc, rng)
+        }
+        batch as $crate::flame::variations::BatchFn
+    }};
+}
+pub(crate) use inline_batch_drawn;
+
+/// `VarDef::new(name, f)` for a formula `f` generic over [`Draws`] drawing exactly `k` random
+/// numbers per point, with [`inline_batch_drawn!`]`(f, k)` as its batch loop.
+macro_rules! inlined_drawn {
+    ($name:expr, $f:ident, $k:expr) => {
+        $crate::flame::variations::VarDef::new($name, $f::<$crate::flame::rng::FastRng>)
+            .batch($crate::flame::variations::inline_batch_drawn!($f, $k))
+    };
+}
+pub(crate) use inlined_drawn;
 
 /// A [`BatchFn`] for the formula `$f` (an [`EvalFn`]-shaped function): on CPUs with AVX2 and
 /// FMA, [`batch_with`] with the formula inlined and compiled for them — no call through a

@@ -18,10 +18,10 @@ use crate::flame::fastmath::FastTrig;
 const NBLUR_MAX: f64 = 1000.0;
 
 pub(super) static DEFS: &[VarDef] = &[
-    super::inlined!("blur3D", blur3d)
+    super::inlined_drawn!("blur3D", blur3d, 6)
         .flags(flag::RANDOM | flag::WRITES_Z)
         .sum(),
-    super::inlined!("blur_circle", blur_circle)
+    super::inlined_drawn!("blur_circle", blur_circle, 2)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .sum(),
     super::inlined!("blur_heart", blur_heart)
@@ -104,7 +104,7 @@ pub(super) static DEFS: &[VarDef] = &[
 /// A random point of the ball of radius 2w (the sum of four uniforms sets the radius, two
 /// random angles the direction).
 #[inline(always)]
-fn blur3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+fn blur3d<R: Draws>(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut R) -> V3 {
     let azimuth = rng.f01() * TAU;
     let r = v.w * (rng.f01() + rng.f01() + rng.f01() + rng.f01() - 2.0);
     let polar = rng.f01() * PI;
@@ -116,7 +116,7 @@ fn blur3d(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
 /// A uniform point of the square [−1, 1]² mapped onto the disc of radius w (squares of
 /// half-side s go to circles of radius s); z is scaled.
 #[inline(always)]
-fn blur_circle(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+fn blur_circle<R: Draws>(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut R) -> V3 {
     let x = 2.0 * rng.f01() - 1.0;
     let y = 2.0 * rng.f01() - 1.0;
     let (side, per) = square_arc(x, y);

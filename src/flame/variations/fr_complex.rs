@@ -27,7 +27,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM)
         .prepare(prep_cpow2),
-    super::inlined!("cpow3", cpow3)
+    super::inlined_drawn!("cpow3", cpow3, 4)
         .params(&[
             p("cpow3_r", 1.0),
             p_nonzero("cpow3_d", 1.0, f64::NEG_INFINITY, f64::INFINITY),
@@ -75,7 +75,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .needs(need::SUMSQ | need::ATAN_YX)
         .flags(flag::RANDOM | flag::USES_Z | flag::WRITES_Z)
         .prepare(prep_log_db),
-    super::inlined!("MobiusN", mobius_n)
+    super::inlined_drawn!("MobiusN", mobius_n, 1)
         .params(&[
             p("MobiusNRe_A", 1.0),
             p("MobiusNIm_A", 0.0),
@@ -239,7 +239,7 @@ fn prep_cpow3(v: &mut Prepared) {
 /// the logarithm drawn from a geometric-like law whose width is `spread`, and random roots of
 /// the divisor.
 #[inline(always)]
-fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+fn cpow3<R: Draws>(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut R) -> V3 {
     let [c, d, half_c, half_d, ang, coeff] = v.derived();
     let mut a = t.atan_yx;
     if a < 0.0 {
@@ -249,10 +249,11 @@ fn cpow3(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         a -= TAU;
     }
     let turn = if rng.bit() { TAU } else { -TAU };
-    a += turn * (rng.f01().ln() * coeff).round();
-    let lnr2 = t.sumsq.ln();
-    let r = v.w * (half_c * lnr2 - d * a).exp();
-    let th = c * a + half_d * lnr2 + ang * crand(rng);
+    a += turn * (rng.f01().fln() * coeff).round();
+    let lnr2 = t.sumsq.fln();
+    let r = v.w * (half_c * lnr2 - d * a).fexp();
+    // [`crand`]: an integer below 32767 (exact through i32, which vector units convert).
+    let th = c * a + half_d * lnr2 + ang * (rng.below(32767) as i32 as f64);
     let (s, c) = th.fsin_cos();
     [r * c, r * s, 0.0]
 }
@@ -495,11 +496,11 @@ fn prep_mobius_n(v: &mut Prepared) {
 /// MobiusN: conjugates a Möbius map (A·z + B)/(C·z + D) by z ↦ z^power: the input is raised to
 /// the power, mapped, then one of the power-th roots is taken at random.
 #[inline(always)]
-fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
+fn mobius_n<R: Draws>(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut R) -> V3 {
     let [re_a, im_a, re_b, im_b, re_c, im_c, re_d, im_d, _, dist] = v.params();
     let [power, whole_power] = v.derived();
     let e = 4.0 * dist / power;
-    let r = t.sqrt.powf(e);
+    let r = t.sqrt.fpowf(e);
     let ang = t.atan_yx * power;
     let (x, y) = (r * ang.fcos(), r * ang.fsin());
     let re_u = re_a * x - im_a * y + re_b;
@@ -509,9 +510,9 @@ fn mobius_n(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let den = re_v * re_v + im_v * im_v;
     let x = (re_u * re_v + im_u * im_v) / den;
     let y = (im_u * re_v - re_u * im_v) / den;
-    let r = (x * x + y * y).sqrt().powf(1.0 / e);
+    let r = (x * x + y * y).sqrt().fpowf(1.0 / e);
     let branch = (power * rng.f01()).floor();
-    let ang = (y.atan2(x) + branch * TAU) / whole_power;
+    let ang = (y.fatan2(x) + branch * TAU) / whole_power;
     [v.w * r * ang.fcos(), v.w * r * ang.fsin(), 0.0]
 }
 
@@ -528,7 +529,7 @@ fn murl(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [_, power] = v.params();
     let [cp, half_power, scale] = v.derived();
     let ang = t.atan_yx * power;
-    let r = cp * t.sumsq.powf(half_power);
+    let r = cp * t.sumsq.fpowf(half_power);
     let re = r * ang.fcos() + 1.0;
     let im = r * ang.fsin();
     let k = scale / (re * re + im * im);

@@ -40,7 +40,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .flags(flag::RANDOM | flag::WRITES_Z | flag::SETS_COLOR)
         .sum()
         .prepare(dc_cube_prepare),
-    super::inlined!("dc_cylinder", dc_cylinder)
+    super::inlined_drawn!("dc_cylinder", dc_cylinder, 5)
         .params(&[
             p("dc_cylinder_offset", 0.0),
             p("dc_cylinder_angle", 0.0),
@@ -191,7 +191,7 @@ fn dc_cylinder_prepare(v: &mut Prepared) {
 /// A blurred cylinder: x wraps around a circle (sin/cos into x and z), y passes scaled, with a
 /// random radial blur; coloured by a linear gradient across the new running sum.
 #[inline(always)]
-fn dc_cylinder(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+fn dc_cylinder<R: Draws>(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut R) -> V3 {
     let [offset, _, _, sx, sy, blur] = v.params();
     let [sina, cosa, ldcs] = v.derived();
     let (sr, cr) = (rng.f01() * TAU).fsin_cos();
@@ -203,7 +203,10 @@ fn dc_cylinder(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 
     ];
     let (px, py, _) = sum_or_input(v, t, acc);
     let (tx, ty) = (o[0] + px, o[1] + py);
-    acc.color = (0.5 * (ldcs * (cosa * tx + sina * ty + offset) + 1.0)).abs() % 1.0;
+    acc.color = crate::flame::fastmath::fmod(
+        (0.5 * (ldcs * (cosa * tx + sina * ty + offset) + 1.0)).abs(),
+        1.0,
+    );
     o
 }
 

@@ -67,7 +67,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .params(depth2_params!("depth_gaussian2"))
         .flags(flag::RANDOM)
         .prepare(depth_gaussian2_prepare),
-    super::inlined!("depth_ngon", depth_ngon)
+    super::inlined_drawn!("depth_ngon", depth_ngon, 1)
         .params(&[
             p("depth_ngon_power", 5.0),
             p("depth_ngon_blur", 1.0),
@@ -358,7 +358,12 @@ fn depth_gaussian2(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -
 /// (1/cos of the angle to the nearest side normal): (r·cos, r·sin).
 #[inline(always)]
 fn polygon_offset(rng: &mut FastRng, side: f64, half: f64) -> (f64, f64) {
-    let ang = rng.f01() * TAU;
+    polygon_offset_at(rng.f01() * TAU, side, half)
+}
+
+/// [`polygon_offset`] at the angle `ang`.
+#[inline(always)]
+fn polygon_offset_at(ang: f64, side: f64, half: f64) -> (f64, f64) {
     let mut phi = ang - side * (ang / zeps(side)).floor();
     if phi > half {
         phi -= side;
@@ -377,19 +382,20 @@ fn depth_ngon_prepare(v: &mut Prepared) {
 /// Blurs the points beyond `radius` onto the outline of a regular polygon whose size grows with
 /// the distance past the radius.
 #[inline(always)]
-fn depth_ngon(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
+fn depth_ngon<R: Draws>(v: &Prepared, t: &VarIn, _acc: &mut Acc, rng: &mut R) -> V3 {
     let [_, _, radius] = v.params();
     let [side, half, blur10] = v.derived();
     let rad = t.sqrt;
-    depth_push(
-        v.w,
-        t,
-        rad,
-        radius,
-        rng,
-        |r| polygon_offset(r, side, half),
-        |d| blur10 * d,
-    )
+    // [`depth_push`] with the angle drawn for every point, pushed or not: one draw per point,
+    // which the batch loop draws beforehand (and no branch around the offset).
+    let (ox, oy) = polygon_offset_at(rng.f01() * TAU, side, half);
+    let aux = blur10 * (rad - radius);
+    let (bx, by) = if rad > radius {
+        (aux * ox, aux * oy)
+    } else {
+        (0.0, 0.0)
+    };
+    [v.w * (t.x + bx), v.w * (t.y + by), 0.0]
 }
 
 fn depth_ngon2_prepare(v: &mut Prepared) {

@@ -116,9 +116,11 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(gnarly_prepare),
     super::inlined!("gridout", gridout),
     VarDef::new("modulusx", modulus::<0>)
+        .batch(super::inline_batch!(modulus::<0>))
         .params(&[p("modulusx_x", 1.0), p("modulusx_shift", 0.0)])
         .prepare(prep_modulus),
     VarDef::new("modulusy", modulus::<1>)
+        .batch(super::inline_batch!(modulus::<1>))
         .params(&[p("modulusy_y", 1.0), p("modulusy_shift", 0.0)])
         .prepare(prep_modulus),
     super::inlined!("shredlin", shredlin)
@@ -695,11 +697,12 @@ fn prep_modulus(v: &mut Prepared) {
 
 /// modulusx / modulusy: wraps one coordinate (shifted by `shift`) into [−size, size); the other
 /// coordinate is only scaled.
+#[inline(always)]
 fn modulus<const AXIS: usize>(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [size, shift] = v.params();
     let [period] = v.derived();
     let (u, other) = if AXIS == 0 { (t.x, t.y) } else { (t.y, t.x) };
-    let f = (u + size + shift) % period;
+    let f = crate::flame::fastmath::fmod(u + size + shift, period);
     let wrapped = if f >= 0.0 {
         v.w * (f - size)
     } else {

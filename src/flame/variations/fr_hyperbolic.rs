@@ -40,7 +40,7 @@ pub(super) static DEFS: &[VarDef] = &[
             p("hypertile_n", 0.0),
         ])
         .prepare(hypertile_prepare),
-    super::inlined!("hypertile1", hypertile1)
+    super::inlined_drawn!("hypertile1", hypertile1, 1)
         .params(&[p("hypertile1_p", 3.0), p("hypertile1_q", 7.0)])
         .flags(flag::RANDOM | flag::COMPAT)
         .prepare(hypertile12_prepare),
@@ -238,10 +238,12 @@ fn hypertile12_prepare(v: &mut Prepared) {
 
 /// The {p, q} tiling map of `hypertile` towards a random vertex of the central polygon.
 #[inline(always)]
-fn hypertile1(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+fn hypertile1<R: Draws>(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut R) -> V3 {
     let [pa, r, whole_p] = v.derived();
+    // [`crand`] as the draws' own integer below 32767 (exact through i32, which vector units
+    // convert).
     let ang = if v.compat {
-        crand(rng) * pa
+        rng.below(32767) as i32 as f64 * pa
     } else {
         floor_f(rng.f01() * whole_p) * pa
     };

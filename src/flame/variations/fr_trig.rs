@@ -43,7 +43,7 @@ pub(super) static DEFS: &[VarDef] = &[
 #[inline(always)]
 fn bisplit(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
     let k = v.w * 0.1;
-    [k / t.x.tan() * t.y.fcos(), k / t.x.fsin() * -t.y, 0.0]
+    [k / t.x.ftan() * t.y.fcos(), k / t.x.fsin() * -t.y, 0.0]
 }
 
 /// Crescents: (sin x, cos x) scaled by sin²x·(cosh y + 1).

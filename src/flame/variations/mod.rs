@@ -271,12 +271,14 @@ pub(crate) mod util;
 
 pub use crate::flame::fastmath::Simd;
 pub use batch::time_batches;
+pub(crate) use batch::{DrawnFormula, Row, batch_with_draws};
 pub(crate) use batch::{batch_with, generic_batch};
-pub(crate) use batch::{inline_batch, inlined};
+pub(crate) use batch::{inline_batch, inline_batch_drawn, inlined, inlined_drawn};
 pub use def::{
     Assign, BatchFn, Dialect, EvalFn, Form, FormBatchFn, PrepareFn, Prepared, Rules, VarDef,
     VarState, ZRule, flag,
 };
+pub(crate) use flam3::Draws;
 pub use flam3::*;
 pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,

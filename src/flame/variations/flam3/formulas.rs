@@ -13,12 +13,23 @@ use crate::flame::variations::{Dialect, EPS, Form, Prepared, VarIn};
 
 /// Where a formula takes its random numbers: the generator itself, or the numbers a batch
 /// loop drew for its whole batch beforehand ([`Drawn`], in the same order, so both give the
-/// same bits). The defaults are [`FastRng`]'s own conversions.
-pub(super) trait Draws {
+/// same bits). The defaults are [`FastRng`]'s own conversions. Fractorium's formulas that draw
+/// a fixed number of numbers per point take it too (`batch_with_draws`).
+pub(crate) trait Draws {
     fn u64(&mut self) -> u64;
     #[inline(always)]
     fn f01(&mut self) -> f64 {
         u64_to_f64(self.u64() >> 11) * (1.0 / (1u64 << 53) as f64)
+    }
+    /// Uniform in [−1, 1), as [`FastRng::f11`].
+    #[inline(always)]
+    fn f11(&mut self) -> f64 {
+        self.f01() * 2.0 - 1.0
+    }
+    /// An integer in 0..n, as [`FastRng::below`] (the high half of the 128-bit product).
+    #[inline(always)]
+    fn below(&mut self, n: u64) -> u64 {
+        mul_high(self.u64(), n)
     }
     #[inline(always)]
     fn bit(&mut self) -> bool {

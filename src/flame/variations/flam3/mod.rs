@@ -17,6 +17,7 @@ use super::{Acc, Prepared, SoaAcc, SoaIn, V3, VarDef, VarIn, ZRule, flag, need, 
 #[cfg(target_arch = "x86_64")]
 use crate::flame::fastmath::Simd;
 use crate::flame::rng::FastRng;
+pub(crate) use formulas::Draws;
 use formulas::{Drawn, MAX_DRAWS, draws, formula, z_out};
 
 mod forms;
