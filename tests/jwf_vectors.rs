@@ -76,10 +76,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "statistics differ: the registry's parameter ranges (Fractorium's: pow clamped to [0, 1]) clamp JWildfire's pow 1.5",
     ),
     (
-        "glynns3subfl",
-        "not implemented: draws from an embedded sub-flame (subflame_wf's machinery, not implemented)",
-    ),
-    (
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
     ),
@@ -118,7 +114,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "alt2 point 10 is random in JWildfire (a fresh object that crops it with the edge draw gives the last kept point, still the origin) but recorded as exact, and its statistics stream never started with a crop",
     ),
     ("pre_custom_wf", "not implemented"),
-    ("pre_subflame_wf", "not implemented"),
     (
         "quad",
         "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
@@ -128,7 +123,10 @@ const NOT_YET: &[(&str, &str)] = &[
         "statistics differ (a rejected draw repeats the last point plotted: the quantiles of \
          20000 correlated draws vary more than the tolerance allows)",
     ),
-    ("ringsubflame", "not implemented"),
+    (
+        "ringsubflame",
+        "implemented; x, y and the default set match, the colour of the alt sets (color_mode 0 and 1: the sub-flame's colour, coloured by a dc_hexes_wf at weight 0) is spread wider than JWildfire's (cause not found in the time)",
+    ),
     (
         "sattractor3D",
         "not implemented: its attractor formulas come from a preset file run by a formula evaluator; JWildfire itself fails its alt sets",
@@ -141,7 +139,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "sqrt_asinh",
         "statistics differ at the near-zero point 17 (JWildfire's table-based maths: the mean radius, or its last digits)",
     ),
-    ("subflame_wf", "not implemented"),
     (
         "sunvoroni",
         "not implemented: its colours follow the orientation of each Voronoi cell, which comes from QuickHull3D's face order (megamu.mesh)",
