@@ -72,10 +72,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "colour statistics differ in alt (gradient mode: r times g after 51 steps of the inversion map; cause not found)",
     ),
     (
-        "glynnSim1",
-        "statistics differ: the registry's parameter ranges (Fractorium's: pow clamped to [0, 1]) clamp JWildfire's pow 1.5",
-    ),
-    (
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
     ),
@@ -83,7 +79,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("isosfplot3d_wf", "not implemented"),
     ("kaleidoimg", "not implemented"),
     ("lsystem3D_js", "not implemented"),
-    ("lsystem_js", "not implemented"),
     (
         "maurer_lines",
         "not implemented: 2,700 lines of Java, a 1,350-line transform with dozens of render modes",

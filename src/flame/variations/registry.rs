@@ -51,7 +51,7 @@ use super::{
     jwf_z_solids, jwf_z_warps,
 };
 // JWildfire's sub-flame and L-system variations (helper h3).
-use super::jwf_h9c_subflame;
+use super::{jwf_h9c_lsystem, jwf_h9c_subflame};
 // JWildfire variations not yet implemented, part 1 (helper h4).
 use super::{
     jwf_h4_cells, jwf_h4_hamid, jwf_h4_ifs, jwf_h4_inversion, jwf_h4_kifs, jwf_h4_klein,
@@ -98,7 +98,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 104] = [
+const FILES: [&[VarDef]; 105] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -211,6 +211,7 @@ const FILES: [&[VarDef]; 104] = [
     jwf_h5_triantess::DEFS,
     // JWildfire's sub-flame and L-system variations (helper h3).
     jwf_h9c_subflame::DEFS,
+    jwf_h9c_lsystem::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -697,6 +698,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "pre_subflame_wf",
     "ringsubflame",
     "glynns3subfl",
+    "lsystem_js",
 ];
 
 /// Every JWildfire variation's name in registry order.
