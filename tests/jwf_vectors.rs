@@ -54,14 +54,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("fract_formula_mand_wf", "not implemented"),
     ("glsl_code", "not implemented"),
     (
-        "glynnSim1",
-        "statistics differ: the registry's parameter ranges (Fractorium's: pow clamped to [0, 1]) clamp JWildfire's pow 1.5",
-    ),
-    (
-        "glynns3subfl",
-        "not implemented: draws from an embedded sub-flame (subflame_wf's machinery, not implemented)",
-    ),
-    (
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
     ),
@@ -69,7 +61,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("isosfplot3d_wf", "not implemented"),
     ("kaleidoimg", "not implemented"),
     ("lsystem3D_js", "not implemented"),
-    ("lsystem_js", "not implemented"),
     (
         "maurer_lines",
         "not implemented: 2,700 lines of Java, a 1,350-line transform with dozens of render modes",
@@ -96,17 +87,18 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented; differs from the vectors (cause not investigated in the time)",
     ),
     ("pre_custom_wf", "not implemented"),
-    ("pre_subflame_wf", "not implemented"),
     (
         "quad",
         "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
     ),
-    ("ringsubflame", "not implemented"),
+    (
+        "ringsubflame",
+        "implemented; x, y and the default set match, the colour of the alt sets (color_mode 0 and 1: the sub-flame's colour, coloured by a dc_hexes_wf at weight 0) is spread wider than JWildfire's (cause not found in the time)",
+    ),
     (
         "sattractor3D",
         "not implemented: its attractor formulas come from a preset file run by a formula evaluator; JWildfire itself fails its alt sets",
     ),
-    ("subflame_wf", "not implemented"),
     (
         "sunvoroni",
         "not implemented: its colours follow the orientation of each Voronoi cell, which comes from QuickHull3D's face order (megamu.mesh)",

@@ -118,6 +118,8 @@
 //! | `jwf_h5_glsl` | a glowing-circuits shader stamp (`glsl_circuits`) |
 //! | `jwf_h5_octree` | a flight through a random octree, as a stamp (`glsl_randomoctree`, `dc_randomoctree`) |
 //! | `jwf_h5_triantess` | a triangle group's tessellation, as a stamp (`dc_triantess`) |
+//! | `jwf_h9c_lsystem` | a Lindenmayer system drawn by a turtle, one segment per call (`lsystem_js`) |
+//! | `jwf_h9c_subflame` | a flame run inside a variation (`subflame_wf`, `pre_subflame_wf`, `ringsubflame`, `glynns3subfl`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -235,6 +237,8 @@ mod jwf_h5_octree;
 mod jwf_h5_shapes;
 mod jwf_h5_sims;
 mod jwf_h5_triantess;
+mod jwf_h9c_lsystem;
+mod jwf_h9c_subflame;
 mod jwf_knots;
 mod jwf_m_crops;
 mod jwf_m_curves;

@@ -50,6 +50,8 @@ use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
     jwf_z_solids, jwf_z_warps,
 };
+// JWildfire's sub-flame and L-system variations (helper h3).
+use super::{jwf_h9c_lsystem, jwf_h9c_subflame};
 // JWildfire variations not yet implemented, part 1 (helper h4).
 use super::{
     jwf_h4_cells, jwf_h4_hamid, jwf_h4_ifs, jwf_h4_inversion, jwf_h4_kifs, jwf_h4_klein,
@@ -96,7 +98,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 103] = [
+const FILES: [&[VarDef]; 105] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -207,6 +209,9 @@ const FILES: [&[VarDef]; 103] = [
     jwf_h5_glsl::DEFS,
     jwf_h5_octree::DEFS,
     jwf_h5_triantess::DEFS,
+    // JWildfire's sub-flame and L-system variations (helper h3).
+    jwf_h9c_subflame::DEFS,
+    jwf_h9c_lsystem::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -689,6 +694,11 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "glsl_randomoctree",
     "dc_randomoctree",
     "dc_triantess",
+    "subflame_wf",
+    "pre_subflame_wf",
+    "ringsubflame",
+    "glynns3subfl",
+    "lsystem_js",
 ];
 
 /// Every JWildfire variation's name in registry order.

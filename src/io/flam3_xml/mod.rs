@@ -25,6 +25,7 @@ mod jwf_look;
 mod layers;
 mod palette;
 mod read;
+mod subflame;
 mod template;
 mod write;
 mod xform;

@@ -40,7 +40,8 @@ pub fn read(text: &str, opts: &ReadOptions) -> R<Parsed<FlameFile>> {
                             format!("more than {MAX_FLAMES} flames in one file"),
                         ));
                     }
-                    let flame = read_flame(&mut cx, &mut cur, text, e, p.start, is_empty)?;
+                    let mut flame = read_flame(&mut cx, &mut cur, text, e, p.start, is_empty)?;
+                    super::subflame::fill(&mut flame, opts);
                     if opts.fla {
                         check_fla_name(&cx, &flame, p.start, &mut names)?;
                     }

@@ -17,6 +17,7 @@ mod branches;
 mod classic;
 mod direct_colour;
 mod fractorium;
+mod h9c_glynn;
 mod origin;
 mod phases;
 mod quaternions;
@@ -49,6 +50,7 @@ pub(super) const TABLES: &[&[VarDef]] = &[
     stats_shapes::DEFS,
     stats_crops::DEFS,
     super::fr_synth::JWF_DEFS,
+    h9c_glynn::DEFS,
 ];
 
 /// Variations whose JWildfire twin is the registry's entry (parameters, derived values) with
