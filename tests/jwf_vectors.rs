@@ -30,8 +30,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ("brush_stroke_wf", "not implemented"),
     ("colordomain", "not implemented"),
     ("colormap_wf", "not implemented"),
-    ("custom_wf", "not implemented"),
-    ("custom_wf_full", "not implemented"),
     ("dc_code", "not implemented"),
     (
         "dc_randomoctree",
@@ -48,17 +46,14 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "f_complex",
-        "not implemented: its function is Java source compiled at run time (Janino)",
+        "not implemented: its default Java function (log|z| + c) is simple, but its six colour modes run through JWildfire's ComplexFuncRunner helpers; not reached in the time",
     ),
-    ("fract_formula_julia_wf", "not implemented"),
-    ("fract_formula_mand_wf", "not implemented"),
     ("glsl_code", "not implemented"),
     (
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
     ),
     ("iflames_wf", "not implemented"),
-    ("isosfplot3d_wf", "not implemented"),
     ("kaleidoimg", "not implemented"),
     ("lsystem3D_js", "not implemented"),
     (
@@ -71,12 +66,9 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     ("obj_mesh_primitive_wf", "not implemented"),
     ("obj_mesh_wf", "not implemented"),
-    ("parplot2d_wf", "not implemented"),
-    ("polarplot2d_wf", "not implemented"),
     ("post_brush_stroke_wf", "not implemented"),
     ("post_bumpmap_wf", "not implemented"),
     ("post_colormap_wf", "not implemented"),
-    ("post_custom_wf", "not implemented"),
     (
         "post_depth",
         "x, y, z differ: JWildfire's adds the affine point (not the sum) to the sum, and ugnis' post phase does not see the affine point",
@@ -86,7 +78,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "post_point_crop",
         "implemented; differs from the vectors (cause not investigated in the time)",
     ),
-    ("pre_custom_wf", "not implemented"),
     (
         "quad",
         "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
@@ -97,7 +88,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "sattractor3D",
-        "not implemented: its attractor formulas come from a preset file run by a formula evaluator; JWildfire itself fails its alt sets",
+        "not implemented: a subdivided tube mesh around an attractor orbit of three preset formulas (960 lines of JWildfire), not reached in the time; only `default` can pass (JWildfire itself fails alt and alt2)",
     ),
     (
         "sunvoroni",
@@ -116,8 +107,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "wangtiles",
         "not implemented: draws JWildfire's tile images (PNG resources)",
     ),
-    ("yplot2d_wf", "not implemented"),
-    ("yplot3d_wf", "not implemented"),
 ];
 
 /// A table of the vectors: from UGNIS_JWF_VECTORS_DIR, else the committed fixture.
@@ -253,6 +242,42 @@ fn harness_texts(var: &str, ps: &str) -> &'static [&'static str] {
     match (var, ps) {
         ("polarplot3d_wf", "alt") => &["cos(param_a*t + sin(param_b*u)) + param_c"],
         ("polarplot3d_wf", "alt2") => &["1.0"],
+        // The other plots likewise: the preset id pinned for `default` (preset_id in the
+        // `params` column), that id + 1 for `alt` and + 2 for `alt2` (polarplot2d_wf has no
+        // preset 16: its default preset's formula `1.0`).
+        ("parplot2d_wf", "default") => &[
+            "(6.0+2.0*cos(u*v))*cos(u)",
+            "(6.0+2.0*cos(u*v))*sin(u)",
+            "(2.0*u+2.0*sin(u*v))",
+        ],
+        ("parplot2d_wf", "alt") => &[
+            "(1.0+0.25*cos(75.0*u))*cos(u)",
+            "(1.0+0.25*cos(75.0*u))*sin(u)",
+            "u+sin(75.0*u)",
+        ],
+        ("parplot2d_wf", "alt2") => &[
+            "7.83*cos((v-pi)/2.0)*(cos(16.4*v))",
+            "7.83*cos((v-pi)/2.0)*(sin(16.4*v))",
+            "7.83*sin((v-pi)/2.0)",
+        ],
+        ("polarplot2d_wf", "default") => &["param_a * sin(t) / t"],
+        ("polarplot2d_wf", "alt") => &["param_a + tanh(param_b * sin(param_c*t))/param_b"],
+        ("polarplot2d_wf", "alt2") => &["1.0"],
+        ("yplot2d_wf", "default") => &["log(fabs(x))"],
+        ("yplot2d_wf", "alt") => &["fabs(sin(x)*param_a) + fabs(cos(x)*param_b)"],
+        ("yplot2d_wf", "alt2") => &["x>0?pow(x,param_a):-pow(-x,param_a)"],
+        ("yplot3d_wf", "default") => &["(sin(x)*sin(x)+cos(z)*cos(z))/(5+x*x+z*z)"],
+        ("yplot3d_wf", "alt") => &["cos(2*pi*(x+z))*(1-sqrt(x*x+z*z))"],
+        ("yplot3d_wf", "alt2") => &["sin(x*x+z*z)"],
+        ("isosfplot3d_wf", "default") => &[
+            "pow(4*(-fabs(fabs(x)-1)*cos(pi/10)+y*sin(pi/10)+1),2)+pow((2*z),200)+pow((y/3),200)-1",
+        ],
+        ("isosfplot3d_wf", "alt") => &[
+            "cos(param_a*floor(x * param_e)) + sin(param_b*floor(y * param_f)) + cos(param_c*floor(z))-param_d",
+        ],
+        ("isosfplot3d_wf", "alt2") => &[
+            "cos(floor(param_a*floor(x))* param_e) + sin(floor(param_b*floor(y)) * param_f) + cos(floor(param_c*floor(z)) * param_d)",
+        ],
         _ => &[],
     }
 }

@@ -48,7 +48,7 @@ macro_rules! fract_params {
     };
 }
 
-const FLAGS: u32 = flag::JWILDFIRE
+pub(super) const FLAGS: u32 = flag::JWILDFIRE
     | flag::RANDOM
     | flag::STATEFUL
     | flag::WRITES_Z
@@ -151,7 +151,7 @@ pub(super) static DEFS: &[VarDef] = &[
 
 /// One fractal's step, from the orbit's current point (x, y), its squares and its start.
 #[derive(Clone, Copy)]
-enum Step {
+pub(super) enum Step {
     /// z^power + seed.
     Julia { power: i64, cx: f64, cy: f64 },
     /// z^power + start.
@@ -165,6 +165,13 @@ enum Step {
     Pearls { cx: f64, cy: f64 },
     /// seed·z² − 1.
     Salamander { cx: f64, cy: f64 },
+    /// A formula of JWildfire's `fract_formula_*_wf` ([`super::jwf_h9a_fract`]) of z, the
+    /// power and the seed (the start when `seed` is `None`).
+    Formula {
+        form: super::jwf_h9a_fract::Form,
+        power: f64,
+        seed: Option<(f64, f64)>,
+    },
 }
 
 /// An orbit: its current point, start, squares of the point before the last step (the escape
@@ -244,6 +251,10 @@ impl Orbit {
             Step::Salamander { cx, cy } => {
                 let (u, w) = (xs - ys, 2.0 * x * y);
                 (u * cx - w * cy - 1.0, u * cy + w * cx)
+            }
+            Step::Formula { form, power, seed } => {
+                let (cx, cy) = seed.unwrap_or((self.sx, self.sy));
+                super::jwf_h9a_fract::perform(&form, power, x, y, cx, cy)
             }
         };
         self.n += 1;
@@ -377,7 +388,14 @@ fn orbit_step(v: &Prepared, f: &Frame, s: Step, acc: &mut Acc, rng: &mut FastRng
 /// The family's call: buddhabrot mode, or a random start (the input point with `color_only`)
 /// tried up to `max_clip_iter` times until its count is not clipped, the point hidden when
 /// none is kept.
-fn fract(v: &Prepared, own: usize, s: Step, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
+pub(super) fn fract(
+    v: &Prepared,
+    own: usize,
+    s: Step,
+    t: &VarIn,
+    acc: &mut Acc,
+    rng: &mut FastRng,
+) -> V3 {
     let f = Frame::of(&v.p[..v.def.params.len()], own);
     if f.buddhabrot {
         return orbit_step(v, &f, s, acc, rng);

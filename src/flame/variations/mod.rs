@@ -120,6 +120,9 @@
 //! | `jwf_h5_triantess` | a triangle group's tessellation, as a stamp (`dc_triantess`) |
 //! | `jwf_h9c_lsystem` | a Lindenmayer system drawn by a turtle, one segment per call (`lsystem_js`) |
 //! | `jwf_h9c_subflame` | a flame run inside a variation (`subflame_wf`, `pre_subflame_wf`, `ringsubflame`, `glynns3subfl`) |
+//! | `jwf_h9a_code` | Java-code variations, their default code (`custom_wf`, `custom_wf_full`, `pre_custom_wf`, `post_custom_wf`) |
+//! | `jwf_h9a_fract` | escape-time sets of a complex formula (`fract_formula_julia_wf`, `fract_formula_mand_wf`) |
+//! | `jwf_h9a_plots` | plots of formula text (`parplot2d_wf`, `polarplot2d_wf`, `yplot2d_wf`, `yplot3d_wf`, `isosfplot3d_wf`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -239,6 +242,9 @@ mod jwf_h5_sims;
 mod jwf_h5_triantess;
 mod jwf_h9c_lsystem;
 mod jwf_h9c_subflame;
+mod jwf_h9a_code;
+mod jwf_h9a_fract;
+mod jwf_h9a_plots;
 mod jwf_knots;
 mod jwf_m_crops;
 mod jwf_m_curves;
@@ -286,7 +292,7 @@ pub(crate) use flam3::Draws;
 pub use flam3::*;
 pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
-    param_attr_name_in, param_of, parse_name, text_attr_name, text_of,
+    param_attr_name_in, param_of, parse_name, text_attr_name, text_of, text_problem,
 };
 pub use params::{
     Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,

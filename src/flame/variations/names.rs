@@ -86,6 +86,15 @@ pub fn text_attr_name(id: VarId, form: Form, k: usize) -> String {
     format!("{}{}", form.prefix(), info(id).texts[k].name)
 }
 
+/// Why the text parameters `texts` of variation `id` cannot be used as they are (a formula
+/// that does not compile, Java code other than the default that ugnis runs instead), for the
+/// reader of a file to report; `None` when they can.
+pub fn text_problem(id: VarId, texts: &[String]) -> Option<String> {
+    let name = info(id).name;
+    super::jwf_h9a_plots::formula_problem(name, texts)
+        .or_else(|| super::jwf_h9a_code::code_problem(name, texts))
+}
+
 /// If `attr` names a text parameter — `TEXT`, `pre_TEXT` or `post_TEXT` — the variation, form
 /// and text index (case-insensitive).
 pub fn text_of(attr: &str) -> Option<(VarId, Form, usize)> {

@@ -45,6 +45,8 @@ use super::{
     jwf_h5_crops, jwf_h5_draw, jwf_h5_glsl, jwf_h5_octree, jwf_h5_shapes, jwf_h5_sims,
     jwf_h5_triantess,
 };
+// JWildfire variations driven by formula text or Java code, added by helper h1 (session 9).
+use super::{jwf_h9a_code, jwf_h9a_fract, jwf_h9a_plots};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -98,7 +100,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 105] = [
+const FILES: [&[VarDef]; 108] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -212,6 +214,9 @@ const FILES: [&[VarDef]; 105] = [
     // JWildfire's sub-flame and L-system variations (helper h3).
     jwf_h9c_subflame::DEFS,
     jwf_h9c_lsystem::DEFS,
+    jwf_h9a_plots::DEFS,
+    jwf_h9a_code::DEFS,
+    jwf_h9a_fract::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -699,6 +704,17 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "ringsubflame",
     "glynns3subfl",
     "lsystem_js",
+    "parplot2d_wf",
+    "polarplot2d_wf",
+    "yplot2d_wf",
+    "yplot3d_wf",
+    "isosfplot3d_wf",
+    "custom_wf",
+    "custom_wf_full",
+    "pre_custom_wf",
+    "post_custom_wf",
+    "fract_formula_julia_wf",
+    "fract_formula_mand_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.

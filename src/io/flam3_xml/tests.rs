@@ -579,3 +579,36 @@ fn jwildfire_keeps_colouring_variations_of_amount_zero() {
     let flam3 = read(&src(""), &opts()).unwrap().value.flames[0].clone();
     assert_eq!(names(&flam3), [("cpow3".to_string(), 1.0)]);
 }
+
+/// Java code other than a variation's default (which ugnis runs instead) and a plot formula
+/// that does not compile are read, and each is reported by name; the default code and a
+/// formula that compiles are not.
+#[test]
+fn unsupported_code_and_bad_formulas_are_reported() {
+    let hex = |s: &str| s.bytes().map(|b| format!("{b:02X}")).collect::<String>();
+    let xml = format!(
+        r#"<flame name="c" version="JWildfire V9.00" size="16 12" scale="10" quality="2">
+  <xform weight="1" color="0" custom_wf="1" custom_wf_code="{}" coefs="1 0 0 1 0 0"/>
+  <xform weight="1" color="0" yplot2d_wf="1" yplot2d_wf_formula="{}" coefs="1 0 0 1 0 0"/>
+  <xform weight="1" color="0" yplot3d_wf="1" yplot3d_wf_formula="{}" coefs="1 0 0 1 0 0"/>
+</flame>"#,
+        hex("pVarTP.x += pAmount;"),
+        hex("sin(x) +"),
+        hex("x > 0 ? sin(x*z) : -pi")
+    );
+    let p = read(&xml, &opts()).unwrap();
+    let msgs: Vec<String> = p.warnings.iter().map(|w| w.to_string()).collect();
+    let has = |s: &str| msgs.iter().any(|m| m.contains(s));
+    assert!(
+        has("custom_wf: custom code is not supported; the default code is used"),
+        "{msgs:?}"
+    );
+    assert!(
+        has("yplot2d_wf_formula: the formula does not compile"),
+        "{msgs:?}"
+    );
+    assert!(!has("yplot3d_wf"), "{msgs:?}");
+    let f = &p.value.flames[0];
+    assert_eq!(f.xforms[1].vars[0].texts[0], "sin(x) +");
+    crate::flame::render(f, &crate::flame::RenderOptions::default()).unwrap();
+}

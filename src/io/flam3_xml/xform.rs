@@ -98,7 +98,16 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
         _ => 1.0,
     };
     apply_priorities(attrs, &mut x, &mut st);
+    let has_texts = !st.texts.is_empty();
     attach_params(&mut x, st);
+    if has_texts {
+        let at = attrs.first().map_or(0, |a| a.offset);
+        for v in &x.vars {
+            if let Some(msg) = variations::text_problem(v.id, &v.texts) {
+                cx.warn(at, "XML030", msg);
+            }
+        }
+    }
     Ok(x)
 }
 

@@ -7,8 +7,11 @@
 //! Java's typing is kept where it changes a value: an integer literal is an `int`, and an
 //! operation between two `int`s is integer arithmetic (`1/2` is 0, wrapping on overflow); such
 //! parts hold no variable, so they are folded while compiling. `sign` (an `int` in Java) is
-//! taken as a double. What is not an expression of this kind (statements, comparisons, casts,
-//! unknown names) is refused with a message saying where.
+//! taken as a double. Comparisons (`<`, `<=`, `>`, `>=`, `==`, `!=`), `&&`, `||`, `!` and the
+//! conditional `c ? a : b` are read too (a comparison is 1 or 0; both branches of a
+//! conditional are evaluated, which is the same since nothing has side effects). What is not an
+//! expression of this kind (statements, casts, unknown names) is refused with a message saying
+//! where.
 
 /// Most words of a compiled program.
 const MAX_WORDS: usize = 4096;
@@ -27,6 +30,17 @@ const OP_DIV: f64 = 6.0;
 const OP_REM: f64 = 7.0;
 const OP_F1: f64 = 8.0;
 const OP_F2: f64 = 9.0;
+const OP_LT: f64 = 10.0;
+const OP_LE: f64 = 11.0;
+const OP_GT: f64 = 12.0;
+const OP_GE: f64 = 13.0;
+const OP_EQ: f64 = 14.0;
+const OP_NE: f64 = 15.0;
+const OP_AND: f64 = 16.0;
+const OP_OR: f64 = 17.0;
+const OP_NOT: f64 = 18.0;
+/// The conditional: pops the condition, the value if true and the value if false.
+const OP_SEL: f64 = 19.0;
 
 /// Functions of one argument, by index.
 const F1: &[&str] = &[
@@ -147,7 +161,7 @@ pub fn compile(src: &str, vars: &[&str]) -> Result<Vec<f64>, String> {
         vars,
         nesting: 0,
     };
-    let v = p.expr()?;
+    let v = p.ternary()?;
     p.skip_ws();
     // JWildfire's text is the body of `return …;`: a trailing semicolon is harmless.
     if p.peek() == Some(b';') {
@@ -182,6 +196,12 @@ pub fn run(code: &[f64], vars: &[f64]) -> f64 {
             i += 1;
         } else if op == OP_NEG {
             st[n - 1] = -st[n - 1];
+        } else if op == OP_NOT {
+            st[n - 1] = truth(st[n - 1] == 0.0);
+        } else if op == OP_SEL {
+            let (c, a, b) = (st[n - 3], st[n - 2], st[n - 1]);
+            n -= 2;
+            st[n - 1] = if c != 0.0 { a } else { b };
         } else if op == OP_F1 {
             st[n - 1] = f1(code[i] as usize, st[n - 1]);
             i += 1;
@@ -199,7 +219,23 @@ pub fn run(code: &[f64], vars: &[f64]) -> f64 {
     if n == 1 { st[0] } else { f64::NAN }
 }
 
+fn truth(b: bool) -> f64 {
+    if b { 1.0 } else { 0.0 }
+}
+
 fn binary(op: f64, a: f64, b: f64) -> f64 {
+    if op >= OP_LT {
+        return truth(match op {
+            _ if op == OP_LT => a < b,
+            _ if op == OP_LE => a <= b,
+            _ if op == OP_GT => a > b,
+            _ if op == OP_GE => a >= b,
+            _ if op == OP_EQ => a == b,
+            _ if op == OP_NE => a != b,
+            _ if op == OP_AND => a != 0.0 && b != 0.0,
+            _ => a != 0.0 || b != 0.0,
+        });
+    }
     if op == OP_ADD {
         a + b
     } else if op == OP_SUB {
@@ -218,6 +254,7 @@ fn binary(op: f64, a: f64, b: f64) -> f64 {
 fn combine(op: f64, k: usize, a: Val, b: Val) -> Result<Val, String> {
     if let (Val::Int(x), Val::Int(y)) = (&a, &b)
         && op != OP_F2
+        && op < OP_LT
     {
         let (x, y) = (*x, *y);
         if (op == OP_DIV || op == OP_REM) && y == 0 {
@@ -285,6 +322,105 @@ impl Parser<'_> {
         }
     }
 
+    /// Eats the two-character operator `op` (not followed by `=` when it is one character
+    /// long and could start `<=`, `>=`, `==` or `!=`).
+    fn eat_op(&mut self, op: &[u8]) -> bool {
+        self.skip_ws();
+        if !self.s[self.at..].starts_with(op) {
+            return false;
+        }
+        if op.len() == 1 && self.s.get(self.at + 1) == Some(&b'=') {
+            return false;
+        }
+        self.at += op.len();
+        true
+    }
+
+    /// `c ? a : b`, or a logical expression.
+    fn ternary(&mut self) -> Result<Val, String> {
+        self.nesting += 1;
+        if self.nesting > MAX_NESTING {
+            return Err("the formula is too deeply nested".into());
+        }
+        let c = self.logic_or()?;
+        if !self.eat(b'?') {
+            self.nesting -= 1;
+            return Ok(c);
+        }
+        let a = self.ternary()?;
+        if !self.eat(b':') {
+            return Err(self.error("':' of the conditional"));
+        }
+        let b = self.ternary()?;
+        self.nesting -= 1;
+        if let Some(c) = c.num() {
+            return Ok(if c != 0.0 { a } else { b });
+        }
+        let (mut code, dc) = c.code();
+        let (ca, da) = a.code();
+        let (cb, db) = b.code();
+        code.extend_from_slice(&ca);
+        code.extend_from_slice(&cb);
+        code.push(OP_SEL);
+        let depth = dc.max(da + 1).max(db + 2);
+        if code.len() > MAX_WORDS || depth > MAX_STACK {
+            return Err("the formula is too long or too deeply nested".into());
+        }
+        Ok(Val::Code(code, depth))
+    }
+
+    fn logic_or(&mut self) -> Result<Val, String> {
+        let mut v = self.logic_and()?;
+        while self.eat_op(b"||") {
+            let r = self.logic_and()?;
+            v = combine(OP_OR, 0, v, r)?;
+        }
+        Ok(v)
+    }
+
+    fn logic_and(&mut self) -> Result<Val, String> {
+        let mut v = self.equality()?;
+        while self.eat_op(b"&&") {
+            let r = self.equality()?;
+            v = combine(OP_AND, 0, v, r)?;
+        }
+        Ok(v)
+    }
+
+    fn equality(&mut self) -> Result<Val, String> {
+        let mut v = self.relation()?;
+        loop {
+            let op = if self.eat_op(b"==") {
+                OP_EQ
+            } else if self.eat_op(b"!=") {
+                OP_NE
+            } else {
+                return Ok(v);
+            };
+            let r = self.relation()?;
+            v = combine(op, 0, v, r)?;
+        }
+    }
+
+    fn relation(&mut self) -> Result<Val, String> {
+        let mut v = self.expr()?;
+        loop {
+            let op = if self.eat_op(b"<=") {
+                OP_LE
+            } else if self.eat_op(b">=") {
+                OP_GE
+            } else if self.eat_op(b"<") {
+                OP_LT
+            } else if self.eat_op(b">") {
+                OP_GT
+            } else {
+                return Ok(v);
+            };
+            let r = self.expr()?;
+            v = combine(op, 0, v, r)?;
+        }
+    }
+
     fn expr(&mut self) -> Result<Val, String> {
         let mut v = self.term()?;
         loop {
@@ -333,6 +469,14 @@ impl Parser<'_> {
             }
         } else if self.eat(b'+') {
             self.unary()?
+        } else if self.eat_op(b"!") {
+            match self.unary()? {
+                Val::Code(mut c, d) => {
+                    c.push(OP_NOT);
+                    Val::Code(c, d)
+                }
+                v => Val::Int(i32::from(v.num() == Some(0.0))),
+            }
         } else {
             self.primary()?
         };
@@ -345,7 +489,7 @@ impl Parser<'_> {
         match self.peek() {
             Some(b'(') => {
                 self.at += 1;
-                let v = self.expr()?;
+                let v = self.ternary()?;
                 if !self.eat(b')') {
                     return Err(self.error("')'"));
                 }
@@ -425,9 +569,9 @@ impl Parser<'_> {
                 )),
             };
         }
-        let mut args = vec![self.expr()?];
+        let mut args = vec![self.ternary()?];
         while self.eat(b',') {
-            args.push(self.expr()?);
+            args.push(self.ternary()?);
         }
         if !self.eat(b')') {
             return Err(self.error("')' closing the arguments"));
@@ -487,6 +631,14 @@ mod tests {
         assert_eq!(eval("7 % 4 + 1.0/2", t, u), 3.5);
         assert_eq!(eval("min(t, u);", t, u), u);
         assert_eq!(eval("1e-1f", t, u), 0.1f32 as f64);
+        // Comparisons, logic and the conditional.
+        assert_eq!(eval("t>0?pow(t,2.5):-pow(-t,2.5)", t, u), t.powf(2.5));
+        assert_eq!(eval("u>0?pow(u,2.5):-pow(-u,2.5)", t, u), -(-u).powf(2.5));
+        assert_eq!(eval("t >= 0.7 && !(u == -1.3) ? 1 : 2", t, u), 2.0);
+        assert_eq!(eval("t <= 0.5 || u != 0 ? 3 : 4", t, u), 3.0);
+        assert_eq!(eval("1 < 2 ? t : u", t, u), t);
+        assert_eq!(eval("(t < u) + 0.5", t, u), 0.5);
+        assert_eq!(eval("t > 0 ? u > 0 ? 1 : 2 : 3", t, u), 2.0);
     }
 
     #[test]
@@ -499,6 +651,8 @@ mod tests {
         assert!(c("t u").contains("character 3"));
         assert!(c("1/0").contains("division by zero"));
         assert!(c(&"(".repeat(500)).contains("nested"));
+        assert!(c("t > 0 ? 1").contains("':'"));
+        assert!(c(&"t?".repeat(200)).contains("nested"));
         let deep = (0..40).fold("t".to_string(), |s, _| format!("t + ({s})"));
         assert!(c(&deep).contains("nested"));
     }
