@@ -118,6 +118,9 @@
 //! | `jwf_h5_glsl` | a glowing-circuits shader stamp (`glsl_circuits`) |
 //! | `jwf_h5_octree` | a flight through a random octree, as a stamp (`glsl_randomoctree`, `dc_randomoctree`) |
 //! | `jwf_h5_triantess` | a triangle group's tessellation, as a stamp (`dc_triantess`) |
+//! | `jwf_h9b_images` | colour, displacement and bump maps with JWildfire's default images (`colormap_wf`, `displacemap_wf`, `post_bumpmap_wf`, …) |
+//! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
+//! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -235,6 +238,9 @@ mod jwf_h5_octree;
 mod jwf_h5_shapes;
 mod jwf_h5_sims;
 mod jwf_h5_triantess;
+mod jwf_h9b_code;
+mod jwf_h9b_images;
+mod jwf_h9b_meshes;
 mod jwf_knots;
 mod jwf_m_crops;
 mod jwf_m_curves;
@@ -266,6 +272,7 @@ mod jwf_z_plane;
 mod jwf_z_solids;
 mod jwf_z_warps;
 mod noise;
+pub mod resources;
 mod shared;
 pub(crate) mod util;
 

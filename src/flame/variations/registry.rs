@@ -55,6 +55,8 @@ use super::{
     jwf_h4_cells, jwf_h4_hamid, jwf_h4_ifs, jwf_h4_inversion, jwf_h4_kifs, jwf_h4_klein,
     jwf_h4_mandala, jwf_h4_metaballs, jwf_h4_recurrence, jwf_h4_shapes, jwf_h4_terrain,
 };
+// JWildfire variations driven by images, meshes and other resources (helper h2, session 9).
+use super::{jwf_h9b_code, jwf_h9b_images, jwf_h9b_meshes};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -96,7 +98,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 103] = [
+const FILES: [&[VarDef]; 106] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -207,6 +209,9 @@ const FILES: [&[VarDef]; 103] = [
     jwf_h5_glsl::DEFS,
     jwf_h5_octree::DEFS,
     jwf_h5_triantess::DEFS,
+    jwf_h9b_images::DEFS,
+    jwf_h9b_meshes::DEFS,
+    jwf_h9b_code::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -689,6 +694,13 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "glsl_randomoctree",
     "dc_randomoctree",
     "dc_triantess",
+    "colormap_wf",
+    "post_colormap_wf",
+    "displacemap_wf",
+    "post_displacemap_wf",
+    "post_bumpmap_wf",
+    "obj_mesh_wf",
+    "colordomain",
 ];
 
 /// Every JWildfire variation's name in registry order.
