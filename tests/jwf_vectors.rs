@@ -27,9 +27,14 @@ use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId}
 /// when one of them passes (take it off the list) and when a variation off the list fails.
 /// Sorted, one name per line.
 const NOT_YET: &[(&str, &str)] = &[
-    ("brush_stroke_wf", "not implemented"),
-    ("colordomain", "not implemented"),
-    ("colormap_wf", "not implemented"),
+    (
+        "brush_stroke_wf",
+        "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
+    ),
+    (
+        "colormap_wf",
+        "implemented with JWildfire's default image (its corner gradient): z and hiding match; the colour differs: with dc_color ≠ 0 JWildfire sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), ugnis' variations do not see the palette and ask the renderer for the nearest palette colour instead",
+    ),
     ("dc_code", "not implemented"),
     (
         "dc_randomoctree",
@@ -39,7 +44,10 @@ const NOT_YET: &[(&str, &str)] = &[
         "dc_triTile",
         "not implemented: 1 150 lines of tile shaders, not reached in the time",
     ),
-    ("displacemap_wf", "not implemented"),
+    (
+        "displacemap_wf",
+        "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
+    ),
     (
         "ducks",
         "not implemented: its formula is Java source code compiled at run time (Janino)",
@@ -53,8 +61,14 @@ const NOT_YET: &[(&str, &str)] = &[
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
     ),
-    ("iflames_wf", "not implemented"),
-    ("kaleidoimg", "not implemented"),
+    (
+        "iflames_wf",
+        "not implemented: shapes sampled from an image's structure, each drawn as an embedded flame (iflames' machinery)",
+    ),
+    (
+        "kaleidoimg",
+        "not implemented: 14 kaleidoscope modes over JWildfire's default image; its alt sets also take the palette index nearest to the pixel, which ugnis' variations cannot compute without the palette",
+    ),
     ("lsystem3D_js", "not implemented"),
     (
         "maurer_lines",
@@ -64,16 +78,26 @@ const NOT_YET: &[(&str, &str)] = &[
         "msTruchet",
         "not implemented: draws its tiles into a Java2D antialiased image and samples its pixels (the antialiased raster cannot be reproduced exactly)",
     ),
-    ("obj_mesh_primitive_wf", "not implemented"),
-    ("obj_mesh_wf", "not implemented"),
-    ("post_brush_stroke_wf", "not implemented"),
-    ("post_bumpmap_wf", "not implemented"),
-    ("post_colormap_wf", "not implemented"),
+    (
+        "obj_mesh_primitive_wf",
+        "not implemented: its primitives are JWildfire's OBJ mesh files (a 1280-triangle ball by default, a capsule and a cone in the alt sets)",
+    ),
+    (
+        "post_brush_stroke_wf",
+        "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
+    ),
+    (
+        "post_colormap_wf",
+        "implemented with JWildfire's default image (its corner gradient): z and hiding match; the colour differs: with dc_color ≠ 0 JWildfire sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), ugnis' variations do not see the palette and ask the renderer for the nearest palette colour instead",
+    ),
     (
         "post_depth",
         "x, y, z differ: JWildfire's adds the affine point (not the sum) to the sum, and ugnis' post phase does not see the affine point",
     ),
-    ("post_displacemap_wf", "not implemented"),
+    (
+        "post_displacemap_wf",
+        "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
+    ),
     (
         "post_point_crop",
         "implemented; differs from the vectors (cause not investigated in the time)",
@@ -94,7 +118,10 @@ const NOT_YET: &[(&str, &str)] = &[
         "sunvoroni",
         "not implemented: its colours follow the orientation of each Voronoi cell, which comes from QuickHull3D's face order (megamu.mesh)",
     ),
-    ("svg_wf", "not implemented"),
+    (
+        "svg_wf",
+        "not implemented: rasterises its SVG with Java2D antialiasing and samples the pixels (the raster cannot be reproduced exactly)",
+    ),
     (
         "taprats",
         "not implemented: needs Craig Kaplan's Taprats tiling library (tilings, maps, star and rosette figures, render styles), several thousand lines",
@@ -105,7 +132,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "wangtiles",
-        "not implemented: draws JWildfire's tile images (PNG resources)",
+        "not implemented: draws JWildfire's tile images (PNG resources), and sets the palette index nearest to the pixel, which ugnis' variations cannot compute without the palette",
     ),
 ];
 

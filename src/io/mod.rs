@@ -25,6 +25,7 @@ pub mod strip_png;
 pub mod svg;
 pub mod target;
 pub mod ugr;
+pub mod var_images;
 pub mod video;
 pub(crate) mod xml;
 
@@ -331,7 +332,13 @@ fn read_flame_file_with(
         });
     }
     let (text, o) = flame_text(path, opts)?;
-    flam3_xml::read(&text, &o)
+    let mut p = flam3_xml::read(&text, &o)?;
+    // The image files the flame's variations name (JWildfire's image resources).
+    if !is_stdin(path) {
+        let w = var_images::load_variation_images(&p.value.flames, path, &o.file);
+        p.warnings.extend(w);
+    }
+    Ok(p)
 }
 
 /// A flam3 template file: render settings to apply to flames ([`flam3_xml::Template`]).

@@ -123,6 +123,9 @@
 //! | `jwf_h9a_code` | Java-code variations, their default code (`custom_wf`, `custom_wf_full`, `pre_custom_wf`, `post_custom_wf`) |
 //! | `jwf_h9a_fract` | escape-time sets of a complex formula (`fract_formula_julia_wf`, `fract_formula_mand_wf`) |
 //! | `jwf_h9a_plots` | plots of formula text (`parplot2d_wf`, `polarplot2d_wf`, `yplot2d_wf`, `yplot3d_wf`, `isosfplot3d_wf`) |
+//! | `jwf_h9b_images` | colour, displacement and bump maps with JWildfire's default images (`colormap_wf`, `displacemap_wf`, `post_bumpmap_wf`, …) |
+//! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
+//! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -240,11 +243,14 @@ mod jwf_h5_octree;
 mod jwf_h5_shapes;
 mod jwf_h5_sims;
 mod jwf_h5_triantess;
-mod jwf_h9c_lsystem;
-mod jwf_h9c_subflame;
 mod jwf_h9a_code;
 mod jwf_h9a_fract;
 mod jwf_h9a_plots;
+mod jwf_h9b_code;
+mod jwf_h9b_images;
+mod jwf_h9b_meshes;
+mod jwf_h9c_lsystem;
+mod jwf_h9c_subflame;
 mod jwf_knots;
 mod jwf_m_crops;
 mod jwf_m_curves;
@@ -276,6 +282,7 @@ mod jwf_z_plane;
 mod jwf_z_solids;
 mod jwf_z_warps;
 mod noise;
+pub mod resources;
 mod shared;
 pub(crate) mod util;
 

@@ -100,7 +100,7 @@ pub fn text_problem(id: VarId, texts: &[String]) -> Option<String> {
 pub fn text_of(attr: &str) -> Option<(VarId, Form, usize)> {
     let key = attr.to_ascii_lowercase();
     if let Some(&(id, k)) = REGISTRY.texts.get(&key) {
-        return Some((id, Form::Regular, k));
+        return Some((id, own_form(info(id)), k));
     }
     [("pre_", Form::Pre), ("post_", Form::Post)]
         .into_iter()

@@ -59,6 +59,8 @@ use super::{
     jwf_h4_cells, jwf_h4_hamid, jwf_h4_ifs, jwf_h4_inversion, jwf_h4_kifs, jwf_h4_klein,
     jwf_h4_mandala, jwf_h4_metaballs, jwf_h4_recurrence, jwf_h4_shapes, jwf_h4_terrain,
 };
+// JWildfire variations driven by images, meshes and other resources (helper h2, session 9).
+use super::{jwf_h9b_code, jwf_h9b_images, jwf_h9b_meshes};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -100,7 +102,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 108] = [
+const FILES: [&[VarDef]; 111] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -217,6 +219,9 @@ const FILES: [&[VarDef]; 108] = [
     jwf_h9a_plots::DEFS,
     jwf_h9a_code::DEFS,
     jwf_h9a_fract::DEFS,
+    jwf_h9b_images::DEFS,
+    jwf_h9b_meshes::DEFS,
+    jwf_h9b_code::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -715,6 +720,13 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "post_custom_wf",
     "fract_formula_julia_wf",
     "fract_formula_mand_wf",
+    "colormap_wf",
+    "post_colormap_wf",
+    "displacemap_wf",
+    "post_displacemap_wf",
+    "post_bumpmap_wf",
+    "obj_mesh_wf",
+    "colordomain",
 ];
 
 /// Every JWildfire variation's name in registry order.
