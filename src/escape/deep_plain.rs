@@ -6,6 +6,14 @@
 //! pixels in flight ([`LANES`] at once, each with its own reference index, count and
 //! difference) so that the processor overlaps their chains. The arithmetic of each pixel is
 //! exactly that of one pixel alone: the interleaving changes the time, not the bits.
+//!
+//! The lanes are scalar code (the compiler does not put them in vector registers). Measured on
+//! seahorse valley at 1e-25 (30,000 iterations, an AMD Zen 4 under load): eight lanes in
+//! AVX-512 registers, with the bilinear search and single steps blended lane by lane, took
+//! 10 % more CPU time than these four scalar lanes, since every read of the orbit or the table
+//! is a gather (each lane at its own index) and gathers are slow there; the same with the
+//! bilinear steps left to scalar code took 3 % less (within the load's noise), and eight
+//! scalar lanes 16 % more.
 
 use super::bla::Bla;
 use super::complex::C;
