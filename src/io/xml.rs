@@ -176,7 +176,9 @@ fn scan<'a>(
 /// A name of JWildfire's files: an XML name, after removing JWildfire's index `#k#` of a
 /// variation used more than once in an xform (`log#1#`, `log#1#_base`).
 fn is_jwf_name(name: &str) -> bool {
-    let plain = |n: &str| n.split('/').all(is_xml_name);
+    // JWildfire's parameter names may hold '/', '(' and ')' (`hamid_js_number_lines/circles`,
+    // `glynns3subfl_show/hide(1/0)`): inside a name they count as name characters.
+    let plain = |n: &str| is_xml_name(&n.replace(['/', '(', ')'], "_"));
     match split_jwf_index(name) {
         Some((base, _)) => plain(&base),
         None => plain(name),

@@ -83,7 +83,13 @@ pub fn param_attr_name_in(dialect: Dialect, id: VarId, form: Form, k: usize) -> 
 
 /// The attribute name of text parameter `k` of a variation used in `form`.
 pub fn text_attr_name(id: VarId, form: Form, k: usize) -> String {
-    format!("{}{}", form.prefix(), info(id).texts[k].name)
+    let d = info(id);
+    let name = d.texts[k].name;
+    // A pre- or post-only variation's text is named as its parameters are: as it stands.
+    if d.has(flag::POST_ONLY | flag::PRE_ONLY) {
+        return name.to_string();
+    }
+    format!("{}{name}", form.prefix())
 }
 
 /// Why the text parameters `texts` of variation `id` cannot be used as they are (a formula
