@@ -30,6 +30,42 @@ const FLAGS: u32 =
 /// A plot's parameters: `own`, then the six free parameters every plot passes to its formulas
 /// (named for variation `$n`, the first three with defaults `$a`, `$b`, `$c`).
 macro_rules! plot_params {
+    // The colour settings every plot has after its own ranges: direct colour, colour mode (its
+    // default given), colour-map blending and, with `displ`, the displacement map's.
+    ($n:literal, [$($own:expr),* $(,)?], colour($mode:expr, displ), [$($after:expr),* $(,)?],
+     $a:expr, $b:expr, $c:expr) => {
+        plot_params!(
+            $n,
+            [
+                $($own,)*
+                p_int(concat!($n, "_direct_color"), 1.0, NEG_INF, INF),
+                p_int(concat!($n, "_color_mode"), $mode, NEG_INF, INF),
+                p_int(concat!($n, "_blend_colormap"), 1.0, 0.0, 1.0),
+                p(concat!($n, "_displ_amount"), 0.1),
+                p_int(concat!($n, "_blend_displ_map"), 1.0, 0.0, 1.0),
+                $($after,)*
+            ],
+            $a,
+            $b,
+            $c
+        )
+    };
+    ($n:literal, [$($own:expr),* $(,)?], colour($mode:expr), [$($after:expr),* $(,)?],
+     $a:expr, $b:expr, $c:expr) => {
+        plot_params!(
+            $n,
+            [
+                $($own,)*
+                p_int(concat!($n, "_direct_color"), 1.0, NEG_INF, INF),
+                p_int(concat!($n, "_color_mode"), $mode, NEG_INF, INF),
+                p_int(concat!($n, "_blend_colormap"), 1.0, 0.0, 1.0),
+                $($after,)*
+            ],
+            $a,
+            $b,
+            $c
+        )
+    };
     ($n:literal, [$($own:expr),* $(,)?], $a:expr, $b:expr, $c:expr) => {
         &[
             $($own,)*
@@ -94,13 +130,9 @@ pub(super) static DEFS: &[VarDef] = &[
                 p("parplot2d_wf_umax", 2.0 * PI),
                 p("parplot2d_wf_vmin", 0.0),
                 p("parplot2d_wf_vmax", 2.0 * PI),
-                p_int("parplot2d_wf_direct_color", 1.0, NEG_INF, INF),
-                p_int("parplot2d_wf_color_mode", 3.0, NEG_INF, INF),
-                p_int("parplot2d_wf_blend_colormap", 1.0, 0.0, 1.0),
-                p("parplot2d_wf_displ_amount", 0.1),
-                p_int("parplot2d_wf_blend_displ_map", 1.0, 0.0, 1.0),
-                p_int("parplot2d_wf_solid", 1.0, NEG_INF, INF),
             ],
+            colour(3.0, displ),
+            [p_int("parplot2d_wf_solid", 1.0, NEG_INF, INF)],
             0.0,
             0.0,
             0.0
@@ -120,12 +152,9 @@ pub(super) static DEFS: &[VarDef] = &[
                 p("polarplot2d_wf_rmax", 2.0),
                 p("polarplot2d_wf_zmin", -2.0),
                 p("polarplot2d_wf_zmax", 2.0),
-                p_int("polarplot2d_wf_direct_color", 1.0, NEG_INF, INF),
-                p_int("polarplot2d_wf_color_mode", 1.0, NEG_INF, INF),
-                p_int("polarplot2d_wf_blend_colormap", 1.0, 0.0, 1.0),
-                p("polarplot2d_wf_displ_amount", 0.1),
-                p_int("polarplot2d_wf_blend_displ_map", 1.0, 0.0, 1.0),
             ],
+            colour(1.0, displ),
+            [],
             0.25,
             0.0,
             0.0
@@ -145,12 +174,9 @@ pub(super) static DEFS: &[VarDef] = &[
                 p("yplot2d_wf_ymax", 4.0),
                 p("yplot2d_wf_zmin", -2.0),
                 p("yplot2d_wf_zmax", 2.0),
-                p_int("yplot2d_wf_direct_color", 1.0, NEG_INF, INF),
-                p_int("yplot2d_wf_color_mode", 1.0, NEG_INF, INF),
-                p_int("yplot2d_wf_blend_colormap", 1.0, 0.0, 1.0),
-                p("yplot2d_wf_displ_amount", 0.1),
-                p_int("yplot2d_wf_blend_displ_map", 1.0, 0.0, 1.0),
             ],
+            colour(1.0, displ),
+            [],
             0.0,
             0.0,
             0.0
@@ -170,12 +196,9 @@ pub(super) static DEFS: &[VarDef] = &[
                 p("yplot3d_wf_ymax", 2.0),
                 p("yplot3d_wf_zmin", -2.0),
                 p("yplot3d_wf_zmax", 2.0),
-                p_int("yplot3d_wf_direct_color", 1.0, NEG_INF, INF),
-                p_int("yplot3d_wf_color_mode", 3.0, NEG_INF, INF),
-                p_int("yplot3d_wf_blend_colormap", 1.0, 0.0, 1.0),
-                p("yplot3d_wf_displ_amount", 0.1),
-                p_int("yplot3d_wf_blend_displ_map", 1.0, 0.0, 1.0),
             ],
+            colour(3.0, displ),
+            [],
             0.0,
             0.0,
             0.0
@@ -197,10 +220,9 @@ pub(super) static DEFS: &[VarDef] = &[
                 p("isosfplot3d_wf_zmax", PI),
                 p_range("isosfplot3d_wf_thickness", 0.05, 1e-8, INF),
                 p_int("isosfplot3d_wf_max_iter", 160.0, 1.0, ISO_MAX_ITER).limited(),
-                p_int("isosfplot3d_wf_direct_color", 1.0, NEG_INF, INF),
-                p_int("isosfplot3d_wf_color_mode", 9.0, NEG_INF, INF),
-                p_int("isosfplot3d_wf_blend_colormap", 1.0, 0.0, 1.0),
             ],
+            colour(9.0),
+            [],
             1.0,
             1.0,
             1.0
