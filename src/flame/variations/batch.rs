@@ -42,6 +42,26 @@ fn copy_written(dst: &mut [f64], src: &[MaybeUninit<f64>]) {
     }
 }
 
+/// Copies a pass's outputs and hide flags (points `r` of the call, every one written by the
+/// pass's loop) to the caller's columns.
+#[inline(always)]
+fn write_pass(
+    acc: &mut SoaAcc,
+    r: std::ops::Range<usize>,
+    out: &[[MaybeUninit<f64>; PASS]; 4],
+    hides: &[bool; PASS],
+) {
+    let m = r.len();
+    let [ox, oy, oz, oc] = out;
+    copy_written(&mut acc.x[r.clone()], &ox[..m]);
+    copy_written(&mut acc.y[r.clone()], &oy[..m]);
+    copy_written(&mut acc.z[r.clone()], &oz[..m]);
+    copy_written(&mut acc.color[r.clone()], &oc[..m]);
+    for (h, &k) in acc.hide[r].iter_mut().zip(&hides[..m]) {
+        *h |= k;
+    }
+}
+
 /// The batch loop calling `f` point by point, as [`Prepared::eval`] does. With `f` a function
 /// item (not a pointer) the formula is inlined into the loop: see [`inline_batch!`].
 ///
@@ -95,14 +115,7 @@ pub fn batch_with(
                 hides[j] = a.hide;
             }
         }
-        let [ox, oy, oz, oc] = &out;
-        copy_written(&mut acc.x[r.clone()], &ox[..m]);
-        copy_written(&mut acc.y[r.clone()], &oy[..m]);
-        copy_written(&mut acc.z[r.clone()], &oz[..m]);
-        copy_written(&mut acc.color[r.clone()], &oc[..m]);
-        for (h, &k) in acc.hide[r].iter_mut().zip(&hides[..m]) {
-            *h |= k;
-        }
+        write_pass(acc, r, &out, &hides);
         start += m;
     }
 }
@@ -196,14 +209,7 @@ pub fn batch_with_draws<const K: usize>(
                 hides[j] = a.hide;
             }
         }
-        let [ox, oy, oz, oc] = &out;
-        copy_written(&mut acc.x[r.clone()], &ox[..m]);
-        copy_written(&mut acc.y[r.clone()], &oy[..m]);
-        copy_written(&mut acc.z[r.clone()], &oz[..m]);
-        copy_written(&mut acc.color[r.clone()], &oc[..m]);
-        for (h, &k) in acc.hide[r].iter_mut().zip(&hides[..m]) {
-            *h |= k;
-        }
+        write_pass(acc, r, &out, &hides);
         start += m;
     }
 }
