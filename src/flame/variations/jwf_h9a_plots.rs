@@ -19,7 +19,7 @@ use super::util::formula;
 use super::*;
 
 /// Most samples isosfplot3d_wf tries per call (its `max_iter`; each evaluates the formula once).
-const ISO_MAX_ITER: f64 = 1_000.0;
+const ISO_MAX_ITER: f64 = 500.0;
 
 /// The longest formula text read (bytes).
 const MAX_TEXT: usize = 4000;
