@@ -99,10 +99,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
     ),
     (
-        "post_point_crop",
-        "implemented; differs from the vectors (cause not investigated in the time)",
-    ),
-    (
         "quad",
         "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
     ),
@@ -558,10 +554,20 @@ fn check_deterministic(
             continue;
         }
         let rgb_may_vary = vars.get(var).is_some_and(|v| v.random_rgb_or_hide);
+        // JWildfire's harness evaluates a set on one object, point after point, unless the set
+        // is flagged stateful (then each point on a fresh object): a variation that remembers
+        // points (post_point_crop) sees the points before it.
+        let shared = prepared(var, ps, set);
         for &i in rows {
             let r = &t.rows[i];
             let tx = t_in(t, r, &points);
-            let v = prepared(var, ps, set);
+            let fresh;
+            let v = if t.get(r, "fresh") == "1" {
+                fresh = prepared(var, ps, set);
+                &fresh
+            } else {
+                &shared
+            };
             let color_in = acc_in(t, r).color;
             let want = [
                 t.get(r, "out_x"),
@@ -573,7 +579,7 @@ fn check_deterministic(
             let point = t.get(r, "point");
             let run = |seed: u64| {
                 let mut rng = FastRng::new(seed);
-                variations::eval_prepared(&v, tx, acc_in(t, r), true, &mut rng)
+                variations::eval_prepared(v, tx, acc_in(t, r), true, &mut rng)
             };
             let matches = |o: &Acc| {
                 let got = [o.x, o.y, o.z, o.color];
