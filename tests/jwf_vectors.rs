@@ -37,10 +37,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     ("dc_code", "not implemented"),
     (
-        "dc_randomoctree",
-        "implemented; differs from the vectors (cause not investigated in the time)",
-    ),
-    (
         "dc_triTile",
         "not implemented: 1 150 lines of tile shaders, not reached in the time",
     ),

@@ -12,6 +12,7 @@ use std::f64::consts::PI;
 
 use super::jwf_c_glsl::{GLSL_RES_Y, GlslIndex, glsl_frame};
 use super::jwf_direct_colour::{DC_FLAGS, dc_common, dc_tail};
+use super::util::jwf_math as jm;
 use super::*;
 
 pub(super) static DEFS: &[VarDef] = &[
@@ -99,7 +100,7 @@ fn voxel_state(p: V, size: f64) -> i32 {
         return 0;
     }
     let d = p[0] * 13.46 + p[1] * 41.74 + p[2] * -73.36 + size * 14.24;
-    let val = fract(4e4 * (d + 17.34).sin());
+    let val = fract(4e4 * jm::sin(d + 17.34));
     if val < 0.5 {
         0
     } else if val < 0.95 {
@@ -125,15 +126,19 @@ struct Octree {
 /// The colour of the octree seen along the view direction (uv, 1).
 fn octree_rgb(o: &Octree, uv: (f64, f64)) -> V {
     let mut size = 1.0f64;
-    let ro = [0.5 + o.time.sin() * 0.4, 0.5 + o.time.cos() * 0.4, o.time];
-    let n = (uv.0 * uv.0 + uv.1 * uv.1 + 1.0).sqrt();
+    let ro = [
+        0.5 + jm::sin(o.time) * 0.4,
+        0.5 + jm::cos(o.time) * 0.4,
+        o.time,
+    ];
+    let n = jm::sqrt(uv.0 * uv.0 + uv.1 * uv.1 + 1.0);
     let mut rd = [uv.0 / n, uv.1 / n, 1.0 / n];
     let (mx, my) = o.mouse;
     let (mxs, mys) = (mx * o.mouse_scale.0, my * o.mouse_scale.1);
-    if (mxs * mxs + mys * mys).sqrt() > 40.0 {
-        let (s, c) = (my * PI - PI / 2.0).sin_cos();
+    if jm::sqrt(mxs * mxs + mys * mys) > 40.0 {
+        let (s, c) = (jm::sin(my * PI - PI / 2.0), jm::cos(my * PI - PI / 2.0));
         rd = [rd[0], c * rd[1] + s * rd[2], -s * rd[1] + c * rd[2]];
-        let (s, c) = (2.0 * mx * PI - PI).sin_cos();
+        let (s, c) = (jm::sin(2.0 * mx * PI - PI), jm::cos(2.0 * mx * PI - PI));
         rd = [c * rd[0] + s * rd[2], rd[1], -s * rd[0] + c * rd[2]];
     }
     let sgn = rd.map(sign);
@@ -202,7 +207,7 @@ fn octree_rgb(o: &Octree, uv: (f64, f64)) -> V {
         let normal: V = std::array::from_fn(|k| -(last[k] * sgn[k]));
         let base = [39.896, 57.3225, 48.25];
         let mut c: V = std::array::from_fn(|k| {
-            ((base[k] * val).sin() * 0.5 + 0.5) * (normal[k] * 0.25 + 0.75)
+            (jm::sin(base[k] * val) * 0.5 + 0.5) * (normal[k] * 0.25 + 0.75)
         });
         if o.borders {
             let q: V = std::array::from_fn(|k| (lro[k] / size - 0.5).abs() * (1.0 - last[k]));
@@ -221,7 +226,7 @@ fn octree_rgb(o: &Octree, uv: (f64, f64)) -> V {
     } else {
         [1.0 - edge; 3]
     };
-    color.map(f64::sqrt)
+    color.map(jm::sqrt)
 }
 
 /// glsl_randomoctree: the octree seen through the pixel, on the glsl_ frame (view directions
