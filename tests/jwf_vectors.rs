@@ -839,3 +839,38 @@ fn jwildfire_names_are_listed_as_jwildfire_writes_them() {
         "not listed by their name: {unlisted:?}"
     );
 }
+
+/// JWildfire looks a parameter up by its exact name, so ugnis spells the parameters of
+/// JWildfire's own variations in JWildfire 9.00's letter case (that of the vectors' sets); variations shared with Fractorium keep Fractorium's spelling and are read in
+/// any case.
+#[test]
+fn jwildfire_variations_spell_parameters_as_jwildfire() {
+    let t = Table::parse(&fixture("vectors"));
+    let mut wrong = std::collections::BTreeSet::new();
+    for r in &t.rows {
+        let (var, ps) = (t.get(r, "variation"), t.get(r, "params"));
+        let Some((id, form)) = variations::parse_name(var) else {
+            continue;
+        };
+        if ps == "\"" || ps == "-" || !variations::info(id).has(variations::flag::JWILDFIRE) {
+            continue;
+        }
+        let def = variations::def_in(variations::Dialect::JWildfire, id, form);
+        for k in ps
+            .split(';')
+            .filter_map(|kv| kv.split_once('='))
+            .map(|kv| kv.0)
+        {
+            let want = format!("{}_{k}", variations::info(id).name);
+            let Some((pid, _, i)) = variations::param_of(&want) else {
+                continue;
+            };
+            let p = def.params.get(i).or(variations::info(id).params.get(i));
+            if pid == id && p.is_some_and(|p| p.name != want && p.name.eq_ignore_ascii_case(&want))
+            {
+                wrong.insert(format!("{} (JWildfire: {want})", p.map_or("", |p| p.name)));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "spelled otherwise: {wrong:?}");
+}

@@ -12,10 +12,10 @@
 use super::util::Draw;
 use super::*;
 
-/// `NAME_StepX` and `NAME_StepY` (both 0 by default), after any leading parameters given.
+/// `NAME_stepx` and `NAME_stepy` (both 0 by default), after any leading parameters given.
 macro_rules! sym_steps {
     ($name:literal $(, $lead:expr)*) => {
-        &[$($lead,)* p(concat!($name, "_StepX"), 0.0), p(concat!($name, "_StepY"), 0.0)]
+        &[$($lead,)* p(concat!($name, "_stepx"), 0.0), p(concat!($name, "_stepy"), 0.0)]
     };
 }
 
@@ -509,14 +509,14 @@ fn prep_bg7(v: &mut Prepared) {
     );
 }
 
-const P_NG1: &[Param] = &[p("sym_ng1_StepX", 0.5), p("sym_ng1_StepY", 0.5)];
+const P_NG1: &[Param] = &[p("sym_ng1_stepx", 0.5), p("sym_ng1_stepy", 0.5)];
 
-const P_NG2: &[Param] = &[p("sym_ng2_StepX", 2.0), p("sym_ng2_StepY", 2.0)];
+const P_NG2: &[Param] = &[p("sym_ng2_stepx", 2.0), p("sym_ng2_stepy", 2.0)];
 
 const P_NG3: &[Param] = &[
-    p("sym_ng3_SepX", 0.5),
-    p("sym_ng3_SepY", 0.0),
-    p("sym_ng3_Step", 2.0),
+    p("sym_ng3_sepx", 0.5),
+    p("sym_ng3_sepy", 0.0),
+    p("sym_ng3_step", 2.0),
 ];
 
 const P_NG4: &[Param] = &[
@@ -538,13 +538,13 @@ const P_NG6: &[Param] = &[
     p("sym_ng6_stepy", 1.0),
 ];
 
-const P_NG7: &[Param] = &[p("sym_ng7_SepX", 0.0), p("sym_ng7_SepY", 0.0)];
+const P_NG7: &[Param] = &[p("sym_ng7_sepx", 0.0), p("sym_ng7_sepy", 0.0)];
 
 const P_NG8: &[Param] = &[
     p("sym_ng8_sepx", 0.0),
     p("sym_ng8_sepy", 0.0),
-    p("sym_ng8_SkewX", 0.0),
-    p("sym_ng8_SkewY", 0.0),
+    p("sym_ng8_skewx", 0.0),
+    p("sym_ng8_skewy", 0.0),
 ];
 
 const P_NG9: &[Param] = &[p("sym_ng9_sepx", 0.0), p("sym_ng9_sepy", 0.0)];
@@ -559,8 +559,8 @@ const P_NG11: &[Param] = &[
     p("sym_ng11_space", 0.0),
     p("sym_ng11_spacex", 0.0),
     p("sym_ng11_spacey", 0.0),
-    p("sym_ng11_StepX", 1.5),
-    p("sym_ng11_StepY", 1.5),
+    p("sym_ng11_stepx", 1.5),
+    p("sym_ng11_stepy", 1.5),
 ];
 
 const P_NG12: &[Param] = &[

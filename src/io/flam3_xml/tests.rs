@@ -545,10 +545,21 @@ fn jwildfire_parameter_names_are_case_sensitive() {
     let flam3 = format!(r#"<flame>{xform}</flame>"#);
     let f = read(&flam3, &opts()).unwrap().value.flames.remove(0);
     assert_eq!(f.xforms[0].vars[0].params[..2], [5.0, 2.0]);
-    // A name the registry spells with capitals (sym_bg5_StepX) is JWildfire's sym_bg5_stepx.
-    let sym = r#"<flame version="JWildfire V9.00"><xform weight="1" sym_bg5="1" sym_bg5_stepx="0.375" coefs="1 0 0 1 0 0"/></flame>"#;
-    let f = read(sym, &opts()).unwrap().value.flames.remove(0);
-    assert!(f.xforms[0].vars[0].params.contains(&0.375));
+    // JWildfire's own spelling is read; another letter case is not, as JWildfire 9.00 reads
+    // neither sym_bg5_StepX nor dc_inversion_Iterations (its 6.x spelling).
+    let sym = |attrs: &str| {
+        let src = format!(
+            r#"<flame version="JWildfire V9.00"><xform weight="1" {attrs} coefs="1 0 0 1 0 0"/></flame>"#
+        );
+        read(&src, &opts()).unwrap().value.flames.remove(0).xforms[0].vars[0]
+            .params
+            .clone()
+    };
+    assert!(sym(r#"sym_bg5="1" sym_bg5_stepx="0.375""#).contains(&0.375));
+    assert!(!sym(r#"sym_bg5="1" sym_bg5_StepX="0.375""#).contains(&0.375));
+    assert!(sym(r#"dc_inversion="1" dc_inversion_iterations="37""#).contains(&37.0));
+    assert!(!sym(r#"dc_inversion="1" dc_inversion_Iterations="37""#).contains(&37.0));
+    assert!(sym(r#"dc_inversion="1" dc_inversion_scaleX="2.25""#).contains(&2.25));
 }
 
 /// JWildfire runs a variation of amount 0 too: one that colours or hides points is kept from

@@ -335,12 +335,15 @@ fn variation_attr(
 /// Whether attribute `base`, found as parameter `index` of variation `id` used in `form`,
 /// spells that parameter with other letter case than JWildfire does (`dc_starsfield_Glow` for
 /// `dc_starsfield_glow`, as older JWildfire versions wrote): JWildfire, which looks parameters
-/// up by their exact names, does not read it. Only the part after the variation's name
-/// counts, and only where the registry spells it in lower case, which is JWildfire's spelling
-/// of every such name; names with capitals (some follow Fractorium's or Apophysis' spelling)
-/// and names reached through an alias match in any case.
+/// up by their exact names, does not read it (JWildfire 9.00 reads `dc_inversion_Iterations`
+/// and `_ScaleX` of its 6.x files as nothing, and draws its defaults). Only the part after the
+/// variation's name counts: for JWildfire's own variations the registry spells it as
+/// JWildfire does; for the others only where the registry spells it in lower case, which is
+/// JWildfire's spelling of every such name (names with capitals there follow Fractorium's or
+/// Apophysis' spelling). Names reached through an alias match in any case.
 fn case_differs(base: &str, id: VarId, form: Form, index: usize) -> bool {
     let def = variations::def_in(variations::Dialect::JWildfire, id, form);
+    let exact = variations::info(id).has(variations::flag::JWILDFIRE);
     let Some(p) = def
         .params
         .get(index)
@@ -353,7 +356,7 @@ fn case_differs(base: &str, id: VarId, form: Form, index: usize) -> bool {
         Some(head) if head.eq_ignore_ascii_case(var) => p.name[var.len()..].strip_prefix('_'),
         _ => None,
     };
-    let Some(part) = part.filter(|q| !q.bytes().any(|b| b.is_ascii_uppercase())) else {
+    let Some(part) = part.filter(|q| exact || !q.bytes().any(|b| b.is_ascii_uppercase())) else {
         return false;
     };
     let tail = base
