@@ -22,6 +22,10 @@ pub struct Var {
     pub params: Vec<f64>,
     /// Text parameters in [`variations::VarDef::texts`] order (empty for most variations).
     pub texts: Vec<String>,
+    /// A regular variation JWildfire's priority (`NAME_fx_priority`) moved before or after the
+    /// others (`form` says which): it adds its output to the point there instead of replacing
+    /// it, and is written back as the plain name with its priority.
+    pub moved: bool,
 }
 
 impl Var {
@@ -42,6 +46,7 @@ impl Var {
                 .iter()
                 .map(|t| t.default.to_string())
                 .collect(),
+            moved: false,
         }
     }
 

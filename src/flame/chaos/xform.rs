@@ -87,7 +87,12 @@ impl CompiledXform {
             }
             let prepare = |form| {
                 let (w, p, t) = (v.weight, &v.params, &v.texts);
-                Prepared::for_flame(v.id, form, w, p, t, x.coefs, rules)
+                let prepared = Prepared::for_flame(v.id, form, w, p, t, x.coefs, rules);
+                if v.moved {
+                    prepared.moved_by_priority(rules)
+                } else {
+                    prepared
+                }
             };
             let p = prepare(v.form);
             sets_color |= p.def.has(variations::flag::SETS_COLOR);
@@ -226,6 +231,49 @@ impl CompiledXform {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flame::model::Var;
+
+    /// A regular variation JWildfire's priority moved before the others adds its output to
+    /// the point (T + w·f(T)); a `pre_` form replaces it (w·f(T)). Moved after the others, it
+    /// adds to the sum.
+    #[test]
+    fn a_variation_moved_by_priority_adds_to_the_point() {
+        let spherical = crate::flame::variations::by_name("spherical").unwrap();
+        let (w, x, y) = (0.25, 0.6, -0.8);
+        let run = |form: Form, moved: bool, rules: Rules| {
+            let mut xf = Xform::linear(Affine::IDENTITY, 1.0, 0.0);
+            if form == Form::Post {
+                xf.vars[0].weight = 1.0;
+            } else {
+                xf.vars.clear();
+            }
+            xf.vars.push(Var {
+                moved,
+                ..Var::with_form(spherical, form, w)
+            });
+            let c = CompiledXform::new(&xf, 1.0, rules);
+            let p = Pt {
+                x,
+                y,
+                z: 0.0,
+                c: 0.0,
+            };
+            let (q, bad) = c.apply(p, &mut FastRng::new(1));
+            assert!(!bad);
+            (q.x, q.y)
+        };
+        let jwf = Rules {
+            dialect: Dialect::JWildfire,
+            ..Rules::default()
+        };
+        let r2 = x * x + y * y;
+        let (sx, sy) = (w * x / r2, w * y / r2);
+        let close = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).abs() + (a.1 - b.1).abs() < 1e-12;
+        assert!(close(run(Form::Pre, true, jwf), (x + sx, y + sy)));
+        assert!(close(run(Form::Pre, false, jwf), (sx, sy)));
+        assert!(close(run(Form::Post, true, jwf), (x + sx, y + sy)));
+        assert!(close(run(Form::Post, false, jwf), (sx, sy)));
+    }
 
     #[test]
     fn opacity_adjustment_oracles() {

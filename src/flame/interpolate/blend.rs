@@ -183,12 +183,14 @@ fn blend_vars(xs: &[&Xform], c: &[f64]) -> Vec<Var> {
             .next()
             .map(|v| v.texts.clone())
             .unwrap_or_default();
+        let moved = found.iter().flatten().any(|v| v.moved);
         out.push(Var {
             id,
             form,
             weight,
             params,
             texts,
+            moved,
         });
     }
     out

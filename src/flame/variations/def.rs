@@ -325,6 +325,10 @@ pub struct Prepared {
     pub dialect: Dialect,
     /// The output z when the formula computes none.
     pub zrule: ZRule,
+    /// How a `pre_`/`post_` form joins its output to the point: the variation's own
+    /// [`VarDef::assign`], or [`Assign::Sum`] for a regular variation JWildfire's priority moved
+    /// before or after the others ([`Prepared::moved_by_priority`]).
+    pub assign: Assign,
     /// State carried from one call to the next (used by the stateful variations only). Boxed:
     /// its atomics inline would make `&Prepared` a reference to interior-mutable memory, and
     /// the compiler could then keep no parameter in a register across a batch loop's stores
@@ -448,7 +452,7 @@ impl Prepared {
     /// replaces it or adds to it, as [`VarDef::assign`] says.
     #[inline(always)]
     pub(super) fn assign(&self, p: &mut V3, o: V3) {
-        match self.def.assign {
+        match self.assign {
             Assign::Set => *p = o,
             Assign::Sum => {
                 p[0] += o[0];

@@ -92,6 +92,7 @@ impl Prepared {
             compat: rules.compat,
             dialect: rules.dialect,
             zrule,
+            assign: def.assign,
             state: Box::default(),
             data: None,
             texts,
@@ -103,6 +104,24 @@ impl Prepared {
             f(&mut v);
         }
         v
+    }
+
+    /// The variation as JWildfire runs a regular variation its priority moved before
+    /// (`NAME_fx_priority` −1) or after (1) the others (JWildfire 9.00's
+    /// `EnforcedPreVariationTransformationStep` and `…PostVariationTransformationStep`): the
+    /// formula is given a copy of the point and adds its output to the point, as it adds to
+    /// the sum among the regular ones, where a `pre_`/`post_` form replaces the point. The
+    /// output z follows the regular rule (0, or the weighted input z with "preserve Z").
+    pub fn moved_by_priority(mut self, rules: Rules) -> Self {
+        if self.form != Form::Regular && !self.def.has(flag::PRE_ONLY | flag::POST_ONLY) {
+            self.assign = Assign::Sum;
+            self.zrule = if rules.dialect == Dialect::JWildfire && rules.preserve_z {
+                ZRule::Weighted
+            } else {
+                ZRule::Zero
+            };
+        }
+        self
     }
 }
 

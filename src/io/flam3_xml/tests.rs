@@ -476,6 +476,50 @@ fn jwildfire_pre_variation_of_priority_zero_does_nothing() {
     assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
 }
 
+/// A regular variation JWildfire's priority moves before (-1) or after (1) the others is
+/// marked as moved in JWildfire's flames (it then adds to the point), written back as the plain
+/// name with its priority, and read back the same; in other programs' flames the mark only
+/// changes the phase.
+#[test]
+fn jwildfire_priority_moves_a_regular_variation() {
+    let xform = r#"<xform weight="1" loonie="0.25" loonie_fx_priority="-1" julian="0.5" julian_fx_priority="1" spherical="1" coefs="1 0 0 1 0 0"/>"#;
+    let jwf = format!(r#"<flame version="JWildfire V7.30">{xform}</flame>"#);
+    let f = read(&jwf, &opts()).unwrap().value.flames.remove(0);
+    let marks = |f: &Flame| -> Vec<(Form, bool)> {
+        f.xforms[0].vars.iter().map(|v| (v.form, v.moved)).collect()
+    };
+    assert_eq!(
+        marks(&f),
+        [
+            (Form::Pre, true),
+            (Form::Post, true),
+            (Form::Regular, false)
+        ]
+    );
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f.clone()],
+    });
+    assert!(out.contains("loonie_fx_priority=\"-1\""), "{out}");
+    assert!(out.contains("julian_fx_priority=\"1\""), "{out}");
+    assert!(
+        !out.contains("pre_loonie") && !out.contains("post_julian"),
+        "{out}"
+    );
+    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
+    let other = format!(r#"<flame>{xform}</flame>"#);
+    let g = read(&other, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(
+        marks(&g),
+        [
+            (Form::Pre, false),
+            (Form::Post, false),
+            (Form::Regular, false)
+        ]
+    );
+}
+
 #[test]
 fn a_second_curve_for_one_target_is_skipped_with_a_warning() {
     use crate::flame::keyframes::{FlameParam, Key, Target};

@@ -335,7 +335,7 @@ fn var_names(x: &Xform) -> Vec<VarName> {
     x.vars
         .iter()
         .map(|v| {
-            let (name, form, priority) = names_of(v.id, v.form);
+            let (name, form, priority) = names_of(v.id, v.form, v.moved);
             let k = seen.iter().filter(|s| **s == name).count();
             seen.push(name.clone());
             if k == 0 {
@@ -361,8 +361,9 @@ fn var_names(x: &Xform) -> Vec<VarName> {
 /// The name variation `id` used in `form` is written under, the form of its parameters' names
 /// and its JWildfire priority mark. The prefixed name unless it means another variation
 /// (flam3's `pre_blur` is `gaussian_blur`'s `pre_` form, not `blur`'s): then the plain name,
-/// marked as JWildfire marks a variation run before or after the others.
-fn names_of(id: VarId, form: Form) -> (String, Form, Option<&'static str>) {
+/// marked as JWildfire marks a variation run before or after the others; so too a variation
+/// JWildfire's priority `moved` there.
+fn names_of(id: VarId, form: Form, moved: bool) -> (String, Form, Option<&'static str>) {
     let own = variations::attr_name(id, form);
     let plain = variations::attr_name(id, Form::Regular);
     let mark = match form {
@@ -370,7 +371,7 @@ fn names_of(id: VarId, form: Form) -> (String, Form, Option<&'static str>) {
         Form::Post => "1",
         Form::Regular => "0",
     };
-    if variations::parse_name(&own) == Some((id, form))
+    if !(moved && form != Form::Regular) && variations::parse_name(&own) == Some((id, form))
         || variations::parse_name(&plain) != Some((id, Form::Regular))
     {
         (own, form, None)

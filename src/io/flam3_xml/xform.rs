@@ -97,7 +97,7 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
         (None, Some(sig)) if sig > 0.0 => 0.0,
         _ => 1.0,
     };
-    apply_priorities(attrs, &mut x, &mut st);
+    apply_priorities(attrs, &mut x, &mut st, cx.jwildfire_flame);
     let has_texts = !st.texts.is_empty();
     attach_params(&mut x, st);
     if has_texts {
@@ -371,8 +371,9 @@ fn case_differs(base: &str, id: VarId, form: Form, index: usize) -> bool {
 /// parameters change form. A `pre_` variation marked 0 runs among the regular ones, where
 /// JWildfire hands it a copy of the sum so far as the point to change and keeps nothing of
 /// what it changes there: it draws nothing, so it is kept as an attribute, not a variation
-/// (and written back as it was read).
-fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending) {
+/// (and written back as it was read). In JWildfire's flames a regular variation moved before
+/// or after the others adds its output to the point there ([`Var::moved`]).
+fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending, jwildfire: bool) {
     for a in attrs {
         let (base, instance) = split_jwf_index(a.name).unwrap_or((a.name.to_string(), 0));
         if let Some(name) = base.strip_suffix("_fx_priority")
@@ -404,6 +405,7 @@ fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending) {
             for (var, &k) in x.vars.iter_mut().zip(&st.instances) {
                 if this(var.id, var.form, k) {
                     var.form = form;
+                    var.moved = jwildfire;
                 }
             }
             for p in st.params.iter_mut() {

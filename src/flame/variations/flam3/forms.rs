@@ -157,7 +157,7 @@ fn span<const ID: u16, F: SpanFormula<ID>>(
     // The framework's z and the way the output joins the point, decided once: a `match` in
     // the loop (a switch on a value the compiler does not see as fixed) keeps it scalar.
     let default_z = v.default_z_rule();
-    let adds = v.def.assign == Assign::Sum;
+    let adds = v.assign == Assign::Sum;
     let n = x.len().min(y.len()).min(z.len());
     let (x, y, z) = (&mut x[..n], &mut y[..n], &mut z[..n]);
     for i in 0..n {
