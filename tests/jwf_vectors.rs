@@ -80,7 +80,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "obj_mesh_primitive_wf",
-        "not implemented: its primitives are JWildfire's OBJ mesh files (a 1280-triangle ball by default, a capsule and a cone in the alt sets)",
+        "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
     ),
     (
         "post_brush_stroke_wf",
@@ -109,10 +109,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "ringsubflame",
         "implemented; x, y and the default set match, the colour of the alt sets (color_mode 0 and 1: the sub-flame's colour, coloured by a dc_hexes_wf at weight 0) is spread wider than JWildfire's (cause not found in the time)",
-    ),
-    (
-        "sattractor3D",
-        "not implemented: a subdivided tube mesh around an attractor orbit of three preset formulas (960 lines of JWildfire), not reached in the time; only `default` can pass (JWildfire itself fails alt and alt2)",
     ),
     (
         "sunvoroni",
