@@ -69,7 +69,10 @@ const NOT_YET: &[(&str, &str)] = &[
         "kaleidoimg",
         "not implemented: 14 kaleidoscope modes over JWildfire's default image; its alt sets also take the palette index nearest to the pixel, which ugnis' variations cannot compute without the palette",
     ),
-    ("lsystem3D_js", "not implemented"),
+    (
+        "lsystem3D_js",
+        "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
+    ),
     (
         "maurer_lines",
         "not implemented: 2,700 lines of Java, a 1,350-line transform with dozens of render modes",
