@@ -65,7 +65,10 @@ const NOT_YET: &[(&str, &str)] = &[
         "kaleidoimg",
         "not implemented: 14 kaleidoscope modes over JWildfire's default image; its alt sets also take the palette index nearest to the pixel, which ugnis' variations cannot compute without the palette",
     ),
-    ("lsystem3D_js", "not implemented"),
+    (
+        "lsystem3D_js",
+        "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
+    ),
     (
         "maurer_lines",
         "not implemented: 2,700 lines of Java, a 1,350-line transform with dozens of render modes",
@@ -76,7 +79,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "obj_mesh_primitive_wf",
-        "not implemented: its primitives are JWildfire's OBJ mesh files (a 1280-triangle ball by default, a capsule and a cone in the alt sets)",
+        "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
     ),
     (
         "post_brush_stroke_wf",
@@ -101,10 +104,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "ringsubflame",
         "implemented; x, y and the default set match, the colour of the alt sets (color_mode 0 and 1: the sub-flame's colour, coloured by a dc_hexes_wf at weight 0) is spread wider than JWildfire's (cause not found in the time)",
-    ),
-    (
-        "sattractor3D",
-        "not implemented: a subdivided tube mesh around an attractor orbit of three preset formulas (960 lines of JWildfire), not reached in the time; only `default` can pass (JWildfire itself fails alt and alt2)",
     ),
     (
         "sunvoroni",

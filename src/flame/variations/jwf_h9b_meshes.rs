@@ -133,7 +133,7 @@ fn mesh_data(p: &[f64], texts: &[String]) -> Vec<f64> {
 /// How often JWildfire lists each triangle of a loaded mesh: its area over the smallest area,
 /// rounded, at most 5000 (500 for a mesh of 5000 triangles or more); every triangle once
 /// when all have the same area (within 10⁻⁸). A triangle of no area is not listed.
-fn area_counts(m: &ResourceMesh) -> Vec<f64> {
+pub(super) fn area_counts(m: &ResourceMesh) -> Vec<f64> {
     let area = |f: &[u32; 3]| {
         let [a, b, c] = f.map(|i| m.vertices[i as usize].map(f64::from));
         let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
@@ -173,7 +173,7 @@ fn vertex_key(v: [f32; 3]) -> [i64; 3] {
 
 /// Every triangle split into four at its edges' midpoints, vertices at the same place
 /// (to 10⁻⁴) merged.
-fn subdivide(m: &ResourceMesh) -> ResourceMesh {
+pub(super) fn subdivide(m: &ResourceMesh) -> ResourceMesh {
     let mut out = ResourceMesh {
         vertices: Vec::new(),
         faces: Vec::with_capacity(m.faces.len() * 4),
@@ -202,7 +202,7 @@ fn subdivide(m: &ResourceMesh) -> ResourceMesh {
 
 /// Taubin smoothing: `passes` times, each vertex moved by λ, then by μ, times the mean of the
 /// vectors to its neighbours (a vertex with fewer than two neighbours stays).
-fn taubin(m: &mut ResourceMesh, passes: usize, lambda: f64, mu: f64) {
+pub(super) fn taubin(m: &mut ResourceMesh, passes: usize, lambda: f64, mu: f64) {
     let mut nb: Vec<Vec<u32>> = vec![Vec::new(); m.vertices.len()];
     for f in &m.faces {
         for (a, b) in [(0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1)] {
@@ -241,13 +241,13 @@ fn taubin(m: &mut ResourceMesh, passes: usize, lambda: f64, mu: f64) {
 }
 
 /// A vertex scaled and moved as JWildfire does it: each coordinate rounded to a `float`.
-fn place(v: [f64; 3], scale: [f64; 3], offset: [f64; 3]) -> [f64; 3] {
+pub(super) fn place(v: [f64; 3], scale: [f64; 3], offset: [f64; 3]) -> [f64; 3] {
     std::array::from_fn(|k| (v[k] * scale[k] + offset[k]) as f32 as f64)
 }
 
 /// A uniform random point of the triangle (p1, p2, p3): the square root of one draw and a
 /// second draw give its barycentric weights (Osada et al., "Shape distributions", 2002).
-fn point_in_triangle(p: [[f64; 3]; 3], rng: &mut FastRng) -> [f64; 3] {
+pub(super) fn point_in_triangle(p: [[f64; 3]; 3], rng: &mut FastRng) -> [f64; 3] {
     let s = rng.f01().sqrt();
     let r2 = rng.f01();
     let (a, b, c) = (1.0 - s, s * (1.0 - r2), r2 * s);

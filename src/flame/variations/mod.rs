@@ -151,6 +151,8 @@
 //! | `jwf_z_plane` | JWildfire's plane maps and point sets (`jac_elk`, `jac_asn`, `pointgrid_wf`, `intersection`, `glynnspiro`, `juliascopePlus`) |
 //! | `jwf_z_orbits` | orbits and curves of the plane (`gumowski_mira`, `starfractal`, `sphtiling3v2`, `iconattractor_js`, `harmonograph_js`) |
 //! | `jwf_z_figures` | figures and mirrors (`meeple`, `tqmirror`, `rhodonea`) |
+//! | `jwf_s10_geo_mesh` | JWildfire's built-in meshes built from their geometry (`obj_mesh_primitive_wf`) |
+//! | `jwf_s10_geo_attractor` | a tube around a strange attractor's orbit, as a mesh (`sattractor3D`) |
 
 pub use crate::flame::affine::Affine;
 
@@ -267,6 +269,8 @@ mod jwf_m_trig;
 mod jwf_maps;
 mod jwf_post_symmetry;
 mod jwf_prepost;
+mod jwf_s10_geo_attractor;
+mod jwf_s10_geo_mesh;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;
