@@ -70,10 +70,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
     ),
     (
-        "maurer_lines",
-        "not implemented: 2,700 lines of Java, a 1,350-line transform with dozens of render modes",
-    ),
-    (
         "msTruchet",
         "not implemented: draws its tiles into a Java2D antialiased image and samples its pixels (the antialiased raster cannot be reproduced exactly)",
     ),
@@ -115,7 +111,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "taprats",
-        "not implemented: needs Craig Kaplan's Taprats tiling library (tilings, maps, star and rosette figures, render styles), several thousand lines",
+        "not implemented: each call draws one primitive picked uniformly from the list Craig Kaplan's Taprats (in JWildfire's source, GPL) renders: the sets' tilings (csk_7, 4.8^2, 10: data in its 3,500-line Tiling class), star and rosette figures in the regular tiles and, with Infer on (alt sets), figures inferred for the others (650 lines), the planar map of the tiling filled over the view window (-1.5 to 1.5), then the interlace, emboss or filled style (200 to 480 lines each, filled regions triangulated); the statistics depend on that list primitive for primitive, so the whole pipeline must be reproduced; not reached in the time",
     ),
     (
         "text_wf",

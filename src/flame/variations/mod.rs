@@ -126,6 +126,7 @@
 //! | `jwf_h9b_images` | colour, displacement and bump maps with JWildfire's default images (`colormap_wf`, `displacemap_wf`, `post_bumpmap_wf`, …) |
 //! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
 //! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
+//! | `jwf_s10_maurer` | chords of nineteen curves in 25 render modes, filtered and coloured (`maurer_lines`; curves and modes in `jwf_s10_maurer_curves`, `jwf_s10_maurer_render`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -271,6 +272,9 @@ mod jwf_post_symmetry;
 mod jwf_prepost;
 mod jwf_s10_geo_attractor;
 mod jwf_s10_geo_mesh;
+mod jwf_s10_maurer;
+mod jwf_s10_maurer_curves;
+mod jwf_s10_maurer_render;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;

@@ -63,6 +63,8 @@ use super::{
 use super::{jwf_h9b_code, jwf_h9b_images, jwf_h9b_meshes};
 // JWildfire's 3-D shapes and meshes (helper h5, session 10).
 use super::{jwf_s10_geo_attractor, jwf_s10_geo_mesh};
+// JWildfire's Maurer lines (helper h2, session 10).
+use super::jwf_s10_maurer;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -104,7 +106,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 113] = [
+const FILES: [&[VarDef]; 114] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -227,6 +229,8 @@ const FILES: [&[VarDef]; 113] = [
     // JWildfire's 3-D shapes and meshes (helper h5, session 10).
     jwf_s10_geo_mesh::DEFS,
     jwf_s10_geo_attractor::DEFS,
+    // JWildfire's Maurer lines (helper h2, session 10).
+    jwf_s10_maurer::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -734,6 +738,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "colordomain",
     "obj_mesh_primitive_wf",
     "sattractor3D",
+    "maurer_lines",
 ];
 
 /// Every JWildfire variation's name in registry order.
