@@ -41,10 +41,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented; differs from the vectors (cause not investigated in the time)",
     ),
     (
-        "dc_triTile",
-        "not implemented: 1 150 lines of tile shaders, not reached in the time",
-    ),
-    (
         "displacemap_wf",
         "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
     ),
@@ -101,10 +97,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "post_point_crop",
         "implemented; differs from the vectors (cause not investigated in the time)",
-    ),
-    (
-        "quad",
-        "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
     ),
     (
         "ringsubflame",

@@ -126,6 +126,8 @@
 //! | `jwf_h9b_images` | colour, displacement and bump maps with JWildfire's default images (`colormap_wf`, `displacemap_wf`, `post_bumpmap_wf`, …) |
 //! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
 //! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
+//! | `jwf_s10_quad`, `jwf_s10_quad_subs` | the plane in four quadrants, each through a sub-variation of its own (`quad`) |
+//! | `jwf_s10_tritile` | a random point of a random tile of a triangle substitution tiling (`dc_triTile`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -267,6 +269,9 @@ mod jwf_m_trig;
 mod jwf_maps;
 mod jwf_post_symmetry;
 mod jwf_prepost;
+mod jwf_s10_quad;
+mod jwf_s10_quad_subs;
+mod jwf_s10_tritile;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;

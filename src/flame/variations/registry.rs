@@ -61,6 +61,8 @@ use super::{
 };
 // JWildfire variations driven by images, meshes and other resources (helper h2, session 9).
 use super::{jwf_h9b_code, jwf_h9b_images, jwf_h9b_meshes};
+// JWildfire variations added in session 10 by helper h3.
+use super::{jwf_s10_quad, jwf_s10_tritile};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -102,7 +104,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 111] = [
+const FILES: [&[VarDef]; 113] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -222,6 +224,8 @@ const FILES: [&[VarDef]; 111] = [
     jwf_h9b_images::DEFS,
     jwf_h9b_meshes::DEFS,
     jwf_h9b_code::DEFS,
+    jwf_s10_quad::DEFS,
+    jwf_s10_tritile::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -727,6 +731,8 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "post_bumpmap_wf",
     "obj_mesh_wf",
     "colordomain",
+    "quad",
+    "dc_triTile",
 ];
 
 /// Every JWildfire variation's name in registry order.
