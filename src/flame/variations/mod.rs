@@ -271,6 +271,8 @@ mod jwf_post_symmetry;
 mod jwf_prepost;
 mod jwf_s10_quad;
 mod jwf_s10_quad_subs;
+#[cfg(test)]
+mod jwf_s10_quad_tests;
 mod jwf_s10_tritile;
 mod jwf_symmetry;
 #[cfg(test)]
