@@ -37,10 +37,6 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     ("dc_code", "not implemented"),
     (
-        "dc_triTile",
-        "not implemented: 1 150 lines of tile shaders, not reached in the time",
-    ),
-    (
         "displacemap_wf",
         "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
     ),
@@ -92,10 +88,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "post_displacemap_wf",
         "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
-    ),
-    (
-        "quad",
-        "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
     ),
     (
         "ringsubflame",

@@ -127,6 +127,8 @@
 //! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
 //! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
 //! | `jwf_s10_maurer` | chords of nineteen curves in 25 render modes, filtered and coloured (`maurer_lines`; curves and modes in `jwf_s10_maurer_curves`, `jwf_s10_maurer_render`) |
+//! | `jwf_s10_quad`, `jwf_s10_quad_subs` | the plane in four quadrants, each through a sub-variation of its own (`quad`) |
+//! | `jwf_s10_tritile` | a random point of a random tile of a triangle substitution tiling (`dc_triTile`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -275,6 +277,11 @@ mod jwf_s10_geo_mesh;
 mod jwf_s10_maurer;
 mod jwf_s10_maurer_curves;
 mod jwf_s10_maurer_render;
+mod jwf_s10_quad;
+mod jwf_s10_quad_subs;
+#[cfg(test)]
+mod jwf_s10_quad_tests;
+mod jwf_s10_tritile;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;

@@ -65,6 +65,8 @@ use super::{jwf_h9b_code, jwf_h9b_images, jwf_h9b_meshes};
 use super::{jwf_s10_geo_attractor, jwf_s10_geo_mesh};
 // JWildfire's Maurer lines (helper h2, session 10).
 use super::jwf_s10_maurer;
+// JWildfire variations added in session 10 by helper h3.
+use super::{jwf_s10_quad, jwf_s10_tritile};
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -106,7 +108,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 114] = [
+const FILES: [&[VarDef]; 116] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -231,6 +233,8 @@ const FILES: [&[VarDef]; 114] = [
     jwf_s10_geo_attractor::DEFS,
     // JWildfire's Maurer lines (helper h2, session 10).
     jwf_s10_maurer::DEFS,
+    jwf_s10_quad::DEFS,
+    jwf_s10_tritile::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -739,6 +743,8 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "obj_mesh_primitive_wf",
     "sattractor3D",
     "maurer_lines",
+    "quad",
+    "dc_triTile",
 ];
 
 /// Every JWildfire variation's name in registry order.
