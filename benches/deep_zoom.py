@@ -40,7 +40,11 @@ Accuracy (16x12): ugnis, Fractalshades at 1e-6 and at 1e-14 all 100 %: this view
 show the misses a near-parabolic view such as the seahorse does. On the seahorse view the
 same --accuracy gives ugnis 99.0 % (190 of 192, as the Rust test).
 
-Seahorse again with the machine at load 9-10 (other jobs): ugnis 20.29 s wall, 11.18 s CPU;
+Seahorse after the first-level radius by index and the AVX-512 build of the plain loop (load
+10-12): ugnis 25.25 s wall, 10.29 s CPU; Fractalshades 10.22 s (3.87 s CPU) at its default,
+39.32 s (15.68 s CPU) at 1e-14: wall ratio 2.47 and 0.64, CPU ratio 2.66 and 0.66.
+
+Seahorse before that, with the machine at load 9-10 (other jobs): ugnis 20.29 s wall, 11.18 s CPU;
 Fractalshades 6.17 s (3.70 s CPU) at its default, 19.75 s (14.99 s CPU) at 1e-14: CPU ratio
 3.02 and 0.75. ugnis' CPU time at other tolerances (same load): 2^-43 11.11 s, 1e-12 9.78 s.
 """
