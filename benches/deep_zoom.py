@@ -13,8 +13,9 @@ numba's compilation does not count. It needs `pip install fractalshades gmpy2 "n
 libmpfr-dev libmpc-dev); give its Python with --fs-python (skipped when absent).
 
 Fractalshades' default bilinear tolerance (1e-6) is less exact than ugnis' default (2^-44):
-`--accuracy` measures its continuous counts against exact iteration in MPFR on a 16x12 grid
-of each view, and each Mandelbrot view is also timed with Fractalshades at --fs-matched, the
+`--accuracy` measures both programs' continuous counts against exact iteration in MPFR on a
+16x12 grid of each view (ugnis' from its EXR iteration data, Fractalshades' from its raw
+arrays), and each Mandelbrot view is also timed with Fractalshades at --fs-matched, the
 tolerance at which its accuracy matches ugnis'. ugnis' own figure (continuous counts against
 an exact per-pixel computation in big fixed point) is the test `escape::deep::tests`
 (`cargo test --lib escape::deep`); on the seahorse view's own 16x12 grid (width 1e-25, 30,000
@@ -32,7 +33,18 @@ matched 0.11 (0.09); misiurewicz 1e-1000 0.07 (0.09), matched 0.06 (0.08); burni
 99.0 % at 1e-14; misiurewicz 1e-100 and 1e-1000 100 % at both; burning ship 1e-100 43.8 % and
 46.4 %.
 
-Seahorse again with the machine at load 9-10 (other jobs): ugnis 20.29 s wall, 11.18 s CPU;
+The dense view near 1e-300 (200,000 iterations at most, pixels escape after about 91,000;
+load 10-12): ugnis 20.57 s wall, 5.15 s CPU; Fractalshades 44.57 s (13.61 s CPU) at its
+default, 169.39 s (39.14 s CPU) at 1e-14: wall ratio 0.46 and 0.12, CPU ratio 0.38 and 0.13.
+Accuracy (16x12): ugnis, Fractalshades at 1e-6 and at 1e-14 all 100 %: this view does not
+show the misses a near-parabolic view such as the seahorse does. On the seahorse view the
+same --accuracy gives ugnis 99.0 % (190 of 192, as the Rust test).
+
+Seahorse after the first-level radius by index and the AVX-512 build of the plain loop (load
+10-12): ugnis 25.25 s wall, 10.29 s CPU; Fractalshades 10.22 s (3.87 s CPU) at its default,
+39.32 s (15.68 s CPU) at 1e-14: wall ratio 2.47 and 0.64, CPU ratio 2.66 and 0.66.
+
+Seahorse before that, with the machine at load 9-10 (other jobs): ugnis 20.29 s wall, 11.18 s CPU;
 Fractalshades 6.17 s (3.70 s CPU) at its default, 19.75 s (14.99 s CPU) at 1e-14: CPU ratio
 3.02 and 0.75. ugnis' CPU time at other tolerances (same load): 2^-43 11.11 s, 1e-12 9.78 s.
 """
@@ -53,6 +65,25 @@ SHIP_Y = ("-0.620043386399648200978028882876077721013041924053031614563946013305
           "942996783102213960061646547603087438578052911231800480602098334794794166210"
           "898372624575163846941793646094380205244377968751786864654")
 
+# A dense, chaotic view near 1e-300 on the way to the minibrot of Fractalshades' example
+# "23 - A deep mini" (examples/batch_mode/23-deep_min.py, width 5.07e-433; the same path as its
+# "Dinkidau flake" at 1.7e-157): a period-57,853 minibrot lies in the view, and its pixels
+# escape after about 91,000 iterations.
+DENSE_X = ("-1.99996619445037030418434688506350579675531241540724851511761922944801584242342684381"
+          "37612977886891381228704640656094986435381057574477216648567249609280392009708065964646"
+          "97897247034380275662515774719795646696735873798312804539648952681115225456179242935106"
+          "83774588487880585490216939383687209739405059004605769908796701019623976540655194251135"
+          "32489358706769123819542065835894736637726501046377854193929498727550588955307380897400"
+          "79985776336454731048155381424443368009147832298545439060874543314328347318610344753331"
+          "544040936498231198149727109")
+DENSE_Y = ("0.000000000000000000000000000000000300138243679093832407249730397759249873468311907733"
+          "35270174257280120474975614823581185647299288414075519224186504978181625475848084062264"
+          "19681319987510966551024915920858367060072851094384239104512934585936736294083320495556"
+          "91125564103474186024773553414471657579951070239079740422320855859219398895622812831264"
+          "74253580211041231506233164036106101811335050020786087353656381162350128598636029702826"
+          "87765675758728641685358330772131661136113532338021950485899263595349420350880557330865"
+          "130440135716258565997502285180701052571648187007997490077027")
+
 VIEWS = [
     # name, x, y, width, max_iter, kind
     (
@@ -66,6 +97,7 @@ VIEWS = [
     ("misiurewicz i 1e-100", "0", "1", "1e-100", 5000, "mandelbrot"),
     ("misiurewicz i 1e-1000", "0", "1", "1e-1000", 20000, "mandelbrot"),
     ("burning ship 1e-100", SHIP_X, SHIP_Y, "1e-100", 5000, "burning-ship"),
+    ("dense 1e-300", DENSE_X, DENSE_Y, "1e-300", 200000, "mandelbrot"),
 ]
 
 # Fractalshades' bilinear tolerance at which its continuous counts are as exact as ugnis'
@@ -160,6 +192,106 @@ print(good / total)
 """
 
 
+# ugnis' accuracy: its iteration data (EXR channels N and NF, read here without an EXR library:
+# ZIP or uncompressed scanlines) on a 16x12 grid against the same exact iteration in MPFR, at
+# ugnis' pixel centres (pixel (i, j) at ((i + 1/2)/w - 1/2, 1/2 - (j + 1/2)/h) times the view's
+# width and height).
+UG_ACC_SCRIPT = r"""
+import math, struct, sys, zlib
+import gmpy2
+import mpmath
+
+exr, x, y, dx, max_iter, ship = sys.argv[1:7]
+max_iter, ship = int(max_iter), ship == "burning-ship"
+
+
+def read_counts(path):
+    b = open(path, "rb").read()
+    p, attrs = 8, {}
+    while b[p] != 0:
+        e = b.index(b"\0", p); name = b[p:e].decode(); p = e + 1
+        e = b.index(b"\0", p); p = e + 1
+        size = struct.unpack_from("<i", b, p)[0]; p += 4
+        attrs[name] = b[p:p + size]; p += size
+    p += 1
+    chl, chans, q = attrs["channels"], [], 0
+    while chl[q] != 0:
+        e = chl.index(b"\0", q); chans.append(chl[q:e].decode()); q = e + 17
+    x0, y0, x1, y1 = struct.unpack("<4i", attrs["dataWindow"])
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    comp = attrs["compression"][0]
+    per = {0: 1, 2: 1, 3: 16}[comp]
+    offs = struct.unpack_from("<%dQ" % ((h + per - 1) // per), b, p)
+    ch = {c: [[0] * w for _ in range(h)] for c in chans}
+    for off in offs:
+        y, size = struct.unpack_from("<ii", b, off)
+        data = b[off + 8:off + 8 + size]
+        lines = min(per, y1 - y + 1)
+        if comp != 0 and size < lines * w * 4 * len(chans):
+            t = bytearray(zlib.decompress(data))
+            for i in range(1, len(t)):
+                t[i] = (t[i - 1] + t[i] - 128) & 0xFF
+            half = (len(t) + 1) // 2
+            r = bytearray(len(t))
+            r[0::2], r[1::2] = t[:half], t[half:]
+            data = bytes(r)
+        q = 0
+        for l in range(lines):
+            for c in chans:
+                ch[c][y - y0 + l] = struct.unpack_from("<%d%s" % (w, "I" if c == "N" else "f"),
+                                                       data, q)
+                q += 4 * w
+    return w, h, [[None if ch["N"][j][i] == 0xFFFFFFFF else ch["N"][j][i] + ch["NF"][j][i]
+                   for i in range(w)] for j in range(h)]
+
+
+w, h, got = read_counts(exr)
+gmpy2.get_context().precision = int(-mpmath.log(mpmath.mpf(dx), 2) * 2 + 200)
+X, Y, DX = gmpy2.mpfr(x), gmpy2.mpfr(y), gmpy2.mpfr(dx)
+M2 = 256.0 ** 2
+
+
+def exact(cx, cy):
+    zx = zy = gmpy2.mpfr(0)
+    for n in range(1, max_iter + 1):
+        if ship:
+            zx, zy = zx * zx - zy * zy + cx, 2 * abs(zx * zy) + cy
+        else:
+            zx, zy = zx * zx - zy * zy + cx, 2 * zx * zy + cy
+        a, b = float(zx), float(zy)
+        if not a * a + b * b <= M2:
+            return n + 1 - math.log(math.log(math.hypot(a, b))) / math.log(2)
+    return None
+
+
+good = 0
+for j in range(h):
+    for i in range(w):
+        cx = X + gmpy2.mpfr((i + 0.5) / w - 0.5) * DX
+        cy = Y + gmpy2.mpfr(0.5 - (j + 0.5) / h) * DX * h / w
+        e, g = exact(cx, cy), got[j][i]
+        good += (e is None and g is None) or (e is not None and g is not None
+                                              and abs(e - g) < 0.05)
+print(good / (w * h))
+"""
+
+
+def ugnis_accuracy(exe, py, view, threads):
+    name, x, y, width, max_iter, kind = view
+    with tempfile.TemporaryDirectory() as d:
+        out = os.path.join(d, "grid.exr")
+        r = subprocess.run([exe, "escape", kind, "--center", f"{x},{y}", "--width", width,
+                            "--size", "16x12", "--max-iter", str(max_iter), "--bailout", "256",
+                            "--threads", str(threads), "-o", out], capture_output=True, text=True)
+        if r.returncode != 0:
+            return None, r.stderr.strip()
+        r = subprocess.run([py, "-c", UG_ACC_SCRIPT, out, x, y, width, str(max_iter), kind],
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            return None, r.stderr.strip().splitlines()[-1:]
+        return float(r.stdout.strip().splitlines()[-1]), ""
+
+
 def time_ugnis(exe, view, size, threads, tolerance=None):
     name, x, y, width, max_iter, kind = view
     with tempfile.TemporaryDirectory() as d:
@@ -212,12 +344,13 @@ def main():
     if a.accuracy:
         if not a.fs_python:
             sys.exit("--accuracy needs --fs-python")
-        print(f"{'view':24} Fractalshades' pixels within 0.05 of exact (16x12)")
+        print(f"{'view':24} pixels within 0.05 of exact (16x12)")
         for v in views:
-            cols = []
+            r, err = ugnis_accuracy(a.ugnis, a.fs_python, v, a.threads)
+            cols = ["ugnis: " + (f"{100 * r:.1f} %" if r is not None else f"failed {err}")]
             for eps in ["1e-6"] + ([a.fs_matched] if a.fs_matched != "off" else []):
                 r, err = run_fractalshades(a.fs_python, v, "16x12", a.threads, eps, True)
-                cols.append(f"eps {eps}: " + (f"{100 * r[0]:.1f} %" if r else f"failed {err}"))
+                cols.append(f"Fractalshades eps {eps}: " + (f"{100 * r[0]:.1f} %" if r else f"failed {err}"))
             print(f"{v[0]:24} " + ", ".join(cols), flush=True)
         return
     # On a machine other jobs load, wall times stretch with the load; CPU times (all threads)

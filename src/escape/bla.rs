@@ -55,6 +55,9 @@ pub struct Bla {
     /// the test most iterations make touches 8 bytes.
     radii: Vec<Vec<f64>>,
     coeffs: Vec<Vec<[C; 2]>>,
+    /// The radius of the first level by starting index (0 at even indices, where no step
+    /// starts): one load and comparison turn down the iterations that take no step.
+    first: Vec<f64>,
     /// The orbit's last index (steps end there).
     last: usize,
 }
@@ -79,10 +82,10 @@ fn merge(x: &Step, y: &Step, dc_max: Fx) -> Step {
     }
 }
 
-/// Bytes the table of an orbit of `len` points takes (about one merged step per point, and
-/// its f64 copy).
+/// Bytes the table of an orbit of `len` points takes (about one merged step per point, its
+/// f64 copy and the first level's radii by index).
 pub fn table_bytes(len: u64) -> u64 {
-    len * (std::mem::size_of::<Step>() + std::mem::size_of::<[C; 2]>() + 8) as u64
+    len * (std::mem::size_of::<Step>() + std::mem::size_of::<[C; 2]>() + 16) as u64
 }
 
 impl Bla {
@@ -136,7 +139,7 @@ impl Bla {
         }
         levels.push(prev);
         let in_f64 = |c: &Cx| c.is_zero() || (-1000..1000).contains(&c.e);
-        let radii = levels
+        let radii: Vec<Vec<f64>> = levels
             .iter()
             .map(|l| {
                 l.iter()
@@ -154,8 +157,13 @@ impl Bla {
             .iter()
             .map(|l| l.iter().map(|st| [st.a.to_c(), st.b.to_c()]).collect())
             .collect();
+        let mut first = vec![0.0; last + 1];
+        for (j, &r) in radii.first().into_iter().flatten().enumerate() {
+            first[1 + 2 * j] = r;
+        }
         Bla {
             levels,
+            first,
             radii,
             coeffs,
             last,
@@ -220,6 +228,14 @@ impl Bla {
             let [a, b] = self.coeffs[k][j];
             (a, b, len)
         })
+    }
+
+    /// The radius of the first level's step from reference index m (0 where none starts:
+    /// at even m, and past the orbit), compared with |re| + |im| of the difference before
+    /// [`Bla::find_plain`] is called.
+    #[inline(always)]
+    pub fn first_radius(&self, m: usize) -> f64 {
+        self.first.get(m).copied().unwrap_or(0.0)
     }
 
     /// Number of steps stored.
