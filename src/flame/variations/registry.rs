@@ -61,6 +61,8 @@ use super::{
 };
 // JWildfire variations driven by images, meshes and other resources (helper h2, session 9).
 use super::{jwf_h9b_code, jwf_h9b_images, jwf_h9b_meshes};
+// JWildfire's kaleidoscope over an image (helper h1, session 10).
+use super::jwf_pal_kaleido;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -102,7 +104,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 111] = [
+const FILES: [&[VarDef]; 112] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -222,6 +224,7 @@ const FILES: [&[VarDef]; 111] = [
     jwf_h9b_images::DEFS,
     jwf_h9b_meshes::DEFS,
     jwf_h9b_code::DEFS,
+    jwf_pal_kaleido::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -727,6 +730,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "post_bumpmap_wf",
     "obj_mesh_wf",
     "colordomain",
+    "kaleidoimg",
 ];
 
 /// Every JWildfire variation's name in registry order.
