@@ -31,15 +31,7 @@ const NOT_YET: &[(&str, &str)] = &[
         "brush_stroke_wf",
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
     ),
-    (
-        "colormap_wf",
-        "implemented with JWildfire's default image (its corner gradient): z and hiding match; the colour differs: with dc_color ≠ 0 JWildfire sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), ugnis' variations do not see the palette and ask the renderer for the nearest palette colour instead",
-    ),
     ("dc_code", "not implemented"),
-    (
-        "displacemap_wf",
-        "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
-    ),
     (
         "ducks",
         "not implemented: its formula is Java source code compiled at run time (Janino)",
@@ -58,10 +50,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: shapes sampled from an image's structure, each drawn as an embedded flame (iflames' machinery)",
     ),
     (
-        "kaleidoimg",
-        "not implemented: 14 kaleidoscope modes over JWildfire's default image; its alt sets also take the palette index nearest to the pixel, which ugnis' variations cannot compute without the palette",
-    ),
-    (
         "lsystem3D_js",
         "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
     ),
@@ -78,16 +66,8 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
     ),
     (
-        "post_colormap_wf",
-        "implemented with JWildfire's default image (its corner gradient): z and hiding match; the colour differs: with dc_color ≠ 0 JWildfire sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), ugnis' variations do not see the palette and ask the renderer for the nearest palette colour instead",
-    ),
-    (
         "post_depth",
         "x, y, z differ: JWildfire's adds the affine point (not the sum) to the sum, and ugnis' post phase does not see the affine point",
-    ),
-    (
-        "post_displacemap_wf",
-        "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
     ),
     (
         "ringsubflame",
@@ -111,7 +91,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "wangtiles",
-        "not implemented: draws JWildfire's tile images (PNG resources), and sets the palette index nearest to the pixel, which ugnis' variations cannot compute without the palette",
+        "not implemented: it draws the tiles of JWildfire's tile sets, GIF images shipped in its jar (`WangTilesFunc` loads `<set>/<n>.gif`), which ugnis does not have (the palette index nearest to a pixel it sets is available: `PaletteIndex`)",
     ),
 ];
 
@@ -228,8 +208,15 @@ fn prepared(var: &str, ps: &str, s: &Set) -> Prepared {
         .iter()
         .map(|t| t.to_string())
         .collect();
-    Prepared::for_flame(s.id, s.form, s.weight, &params, &texts, s.aff, RULES)
+    let mut v = Prepared::for_flame(s.id, s.form, s.weight, &params, &texts, s.aff, RULES);
+    v.give_palette(&UNSET_PALETTE);
+    v
 }
+
+/// The palette the vectors' variations see: a fresh layer's, every entry black (handed over
+/// as the chaos game hands a flame's palette over).
+static UNSET_PALETTE: std::sync::LazyLock<std::sync::Arc<variations::PaletteIndex>> =
+    std::sync::LazyLock::new(|| std::sync::Arc::new(variations::PaletteIndex::unset()));
 
 /// bubbleT3D's `init` rewrites its field `angle_of_hole` (a, in degrees) to the hole's angle
 /// π − a·π/360 (for a ≥ 0, as in every set of the vectors), and the vectors' `params` column

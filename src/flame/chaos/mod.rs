@@ -92,6 +92,9 @@ pub struct Chaos {
     /// check (every [`JWF_CHECK_STEPS`] steps) restarts it; a final xform's bad value is a
     /// sample that draws nothing.
     jwf_bad_values: bool,
+    /// Some variation gives points the palette position of a colour: the colour coordinates
+    /// depend on the palette, so a palette change needs the chaos game run again.
+    pub reads_palette: bool,
 }
 
 /// JWildfire checks each orbit for NaN and infinity once every this many iterations
@@ -163,6 +166,37 @@ fn colour_by_distance(
             c.linear_only = None;
         }
     }
+}
+
+/// Hand the flame's palette (as its renderer colours the picture) to the variations that look
+/// colours up in it ([`variations::flag::PALETTE`]); the table is built only when one does.
+/// Returns whether one does.
+fn give_palette(
+    flame: &Flame,
+    xforms: &mut [CompiledXform],
+    final_xform: &mut Option<CompiledXform>,
+    more_finals: &mut [CompiledXform],
+) -> bool {
+    let mut vars = xforms
+        .iter_mut()
+        .chain(final_xform)
+        .chain(more_finals)
+        .flat_map(|x| {
+            x.pre_vars
+                .iter_mut()
+                .chain(&mut x.vars)
+                .chain(&mut x.post_vars)
+        })
+        .filter(|v| v.def.has(variations::flag::PALETTE))
+        .peekable();
+    if vars.peek().is_none() {
+        return false;
+    }
+    let table = std::sync::Arc::new(variations::PaletteIndex::from_colors(flame.render_colors()));
+    for v in vars {
+        v.give_palette(&table);
+    }
+    true
 }
 
 impl Chaos {
@@ -246,6 +280,7 @@ impl Chaos {
         if flame.renders_as_jwildfire() {
             colour_by_distance(flame, &mut xforms, &mut final_xform, &mut more_finals);
         }
+        let reads_palette = give_palette(flame, &mut xforms, &mut final_xform, &mut more_finals);
         let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();
         let affine = (final_xform.is_none() && !xaos && Projection::of(flame).is_none())
             .then(|| {
@@ -303,6 +338,7 @@ impl Chaos {
             tables,
             xaos,
             jwf_bad_values,
+            reads_palette,
         })
     }
 

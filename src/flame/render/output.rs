@@ -105,7 +105,10 @@ impl Renderer {
 
     /// True when the samples are kept and [`Renderer::recolor`] can be used.
     pub fn can_recolor(&self) -> bool {
-        self.logs.is_some() && self.ifs3d.is_none() && self.motion.is_none()
+        self.logs.is_some()
+            && self.ifs3d.is_none()
+            && self.motion.is_none()
+            && !self.chaos.reads_palette
     }
 
     /// Change the palette (and palette mode) by re-accumulating the kept samples: no iteration.
@@ -116,7 +119,8 @@ impl Renderer {
         mode: crate::flame::PaletteMode,
     ) -> bool {
         let Some(logs) = &self.logs else { return false };
-        if self.ifs3d.is_some() {
+        // Colour coordinates taken from the palette change with it.
+        if self.ifs3d.is_some() || self.chaos.reads_palette {
             return false;
         }
         self.flame.palette = palette.clone();

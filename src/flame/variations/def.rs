@@ -5,6 +5,7 @@
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use super::palette_index::PaletteIndex;
 use super::params::{Param, TextParam};
 use super::point::{Acc, SoaAcc, SoaIn, VarIn};
 use super::shared::{BuildFn, SharedDef};
@@ -51,6 +52,9 @@ pub mod flag {
     /// regular variations (in its `pre_` form) and once after them (in its `post_` form). The
     /// formula tells the two calls apart by [`Prepared::form`].
     pub const PREPOST: u32 = 65536;
+    /// Gives the point the palette position of a colour: needs the flame's palette
+    /// ([`Prepared::give_palette`](super::Prepared::give_palette)).
+    pub const PALETTE: u32 = 1 << 17;
 }
 
 /// Regular, `pre_` or `post_` use of a variation.
@@ -340,6 +344,9 @@ pub struct Prepared {
     pub data: Option<Arc<[f64]>>,
     /// Text parameters in [`VarDef::texts`] order.
     pub texts: Vec<String>,
+    /// The flame's palette for nearest-colour lookups, for the variations flagged
+    /// [`flag::PALETTE`] once their xform is compiled for a flame (`None` before).
+    pub palette: Option<Arc<PaletteIndex>>,
 }
 
 impl Prepared {
@@ -408,6 +415,21 @@ impl Prepared {
                 1.0
             },
         }
+    }
+
+    /// Hand the flame's palette to a variation that looks colours up in it
+    /// ([`flag::PALETTE`]; the others ignore it).
+    pub fn give_palette(&mut self, palette: &Arc<PaletteIndex>) {
+        if self.def.has(flag::PALETTE) {
+            self.palette = Some(palette.clone());
+        }
+    }
+
+    /// The colour coordinate of the palette entry nearest to the colour (r, g, b) (see
+    /// [`PaletteIndex::coordinate`]); `None` while no palette was handed over.
+    #[inline]
+    pub fn palette_coordinate(&self, r: f64, g: f64, b: f64) -> Option<f64> {
+        Some(self.palette.as_deref()?.coordinate(r, g, b))
     }
 
     /// Evaluate the formula: the weighted output for input `t`.

@@ -17,12 +17,13 @@
 //! * bump map: a blank 320 × 256 image (every pixel black), so only `offset_z` acts, inside
 //!   the image's rectangle.
 //!
-//! Where JWildfire turns a pixel's colour into a palette index (`dc_color` ≠ 0, and
-//! `color_mode` 1 of the displacement maps), it looks for the palette entry nearest to it.
-//! ugnis' variations do not see the palette: the colour maps ask the renderer for the nearest
-//! palette colour instead (the same colour is drawn, but the index does not carry over to the
-//! next iteration), and the displacement maps, which also give the point the pixel's own
-//! colour, leave the colour index as it is.
+//! Where JWildfire turns a pixel's colour into a palette position (`dc_color` > 0, and
+//! `color_mode` 1 of the displacement maps), the point's colour coordinate becomes that of the
+//! palette entry nearest to the pixel ([`super::PaletteIndex`], the flame's palette handed over
+//! when the xform is compiled); it carries over to the next iterations as any colour
+//! coordinate does. The displacement maps compare the pixel's channels in [0, 1] with the
+//! palette's bytes, as JWildfire does. Without a palette (a variation evaluated outside a
+//! flame) the coordinate is left as it is.
 
 use super::util::jwf_math;
 use super::*;
@@ -57,14 +58,14 @@ impl Image {
 }
 
 /// An image kept as shared data ([`Image::to_data`]).
-struct View<'a> {
-    w: i32,
-    h: i32,
+pub(super) struct View<'a> {
+    pub(super) w: i32,
+    pub(super) h: i32,
     px: &'a [f64],
 }
 
 impl<'a> View<'a> {
-    fn of(d: &'a [f64]) -> View<'a> {
+    pub(super) fn of(d: &'a [f64]) -> View<'a> {
         match d {
             [w, h, px @ ..] if (*w * *h) as usize == px.len() => View {
                 w: *w as i32,
@@ -80,7 +81,7 @@ impl<'a> View<'a> {
     }
 
     /// The pixel at column `x`, row `y` (both inside the image).
-    fn at(&self, x: i32, y: i32) -> [u8; 4] {
+    pub(super) fn at(&self, x: i32, y: i32) -> [u8; 4] {
         let i = y as usize * self.w as usize + x as usize;
         let [a, r, g, b] = (self.px.get(i).copied().unwrap_or(0.0) as u32).to_be_bytes();
         [r, g, b, a]
@@ -103,7 +104,7 @@ fn image_data(texts: &[String], default: impl FnOnce() -> Image) -> Vec<f64> {
 }
 
 /// Shared data of the colour and displacement maps.
-fn gradient_map(_p: &[f64], texts: &[String]) -> Vec<f64> {
+pub(super) fn gradient_map(_p: &[f64], texts: &[String]) -> Vec<f64> {
     image_data(texts, || corner_gradient(256, 256))
 }
 
@@ -150,7 +151,7 @@ fn corner_gradient(w: i32, h: i32) -> Image {
 
 /// JWildfire's `Tools.FTOI`: round half away from zero, to Java's `int` (saturating; NaN
 /// gives 0).
-fn ftoi(x: f64) -> i32 {
+pub(super) fn ftoi(x: f64) -> i32 {
     if x > 0.0 {
         (x + 0.5) as i32
     } else if x < 0.0 {
@@ -162,7 +163,7 @@ fn ftoi(x: f64) -> i32 {
 
 /// Brings a pixel index into `[0, n)` as JWildfire's tiling does: by whole image widths
 /// (Java's truncating division, so an index of −n, −2n, … lands on n, outside).
-fn tile(i: i32, n: i32) -> i32 {
+pub(super) fn tile(i: i32, n: i32) -> i32 {
     if i < 0 {
         let k = i / n - 1;
         i.wrapping_sub(k.wrapping_mul(n))
@@ -233,8 +234,9 @@ macro_rules! displacemap_params {
     };
 }
 
-const MAP_FLAGS: u32 = flag::JWILDFIRE | flag::WRITES_Z | flag::SETS_COLOR | flag::HIDES;
-const DISPLACE_FLAGS: u32 = flag::JWILDFIRE | flag::WRITES_Z | flag::SETS_COLOR;
+const MAP_FLAGS: u32 =
+    flag::JWILDFIRE | flag::WRITES_Z | flag::SETS_COLOR | flag::HIDES | flag::PALETTE;
+const DISPLACE_FLAGS: u32 = flag::JWILDFIRE | flag::WRITES_Z | flag::SETS_COLOR | flag::PALETTE;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("colormap_wf", colormap_wf)
@@ -328,9 +330,12 @@ fn colormap(v: &Prepared, x_in: f64, y_in: f64, acc: &mut Acc) -> (f64, bool) {
     };
     if dc_color == 0.0 {
         acc.rgb = Some([r, g, b]);
-    } else {
+    } else if dc_color > 0.0 {
         // The palette entry nearest to the pixel (see the module documentation).
-        acc.rgb = Some([r, g, b].map(|c| f64::from(ftoi(c)) - Acc::NEAREST_KEY));
+        let [r, g, b] = [r, g, b].map(|c| f64::from(ftoi(c)));
+        if let Some(c) = v.palette_coordinate(r, g, b) {
+            acc.color = c;
+        }
     }
     acc.hide = with_alpha > 0.0 && a <= 0.1;
     let mut dz = offset_z;
@@ -420,8 +425,12 @@ fn displace(v: &Prepared, x_in: f64, y_in: f64, px: f64, py: f64, acc: &mut Acc)
         }
     };
     if color_mode == 1.0 {
-        // The pixel's own colour (the palette index: see the module documentation).
+        // The pixel's own colour, and the palette entry nearest to it (see the module
+        // documentation).
         acc.rgb = Some([r * 255.0, g * 255.0, b * 255.0]);
+        if let Some(c) = v.palette_coordinate(r, g, b) {
+            acc.color = c;
+        }
     }
     out
 }
@@ -517,6 +526,104 @@ mod tests {
         let v = Prepared::with_texts(id, Form::Regular, 1.0, &p, &[], Default::default(), true);
         colormap_wf(&v, &t, &mut acc, &mut FastRng::new(1));
         assert_ne!(acc.rgb, Some([10.0, 20.0, 30.0]));
+    }
+
+    /// JWildfire's `getColorIdx`, entry by entry: palette bytes × 200/256, Euclidean
+    /// distance, the first of equals, index / (N − 1).
+    fn jwildfire_index(pal: &[[u8; 3]], c: [f64; 3]) -> f64 {
+        let mut best = (f64::INFINITY, 0);
+        for (i, p) in pal.iter().enumerate() {
+            let q = p.map(|v| f64::from(v) * 200.0 / 256.0);
+            let d = (0..3).map(|k| (q[k] - c[k]).powi(2)).sum::<f64>().sqrt();
+            if d < best.0 {
+                best = (d, i);
+            }
+        }
+        best.1 as f64 / (pal.len() - 1) as f64
+    }
+
+    #[test]
+    fn the_flames_gradient_gives_the_nearest_index_which_persists() {
+        use crate::flame::Chaos;
+        use crate::flame::chaos::Pt;
+        use crate::flame::model::{Flame, PaletteIndex as Rule, Var, Xform};
+        // A gradient whose entries repeat (the first of equals must win).
+        let rgb: Vec<[u8; 3]> = (0..256)
+            .map(|i| [(i % 128 * 2) as u8, (255 - i % 128 * 2) as u8, 90])
+            .collect();
+        let cm = super::super::by_name("colormap_wf").unwrap();
+        let dm = super::super::by_name("displacemap_wf").unwrap();
+        let mut x = Xform::linear(crate::flame::model::Affine::IDENTITY, 1.0, 0.3);
+        x.direct_color = 1.0;
+        x.vars.push(Var::new(cm, 1.0));
+        let mut d = Var::new(dm, 0.0);
+        d.params[1] = 1.0; // color_mode 1
+        x.vars.push(d);
+        let f = Flame {
+            xforms: vec![x],
+            palette: crate::gradient::Gradient::from_rgb8("repeats", &rgb),
+            palette_index: Rule::JWildfire,
+            ..Flame::default()
+        };
+        let ch = Chaos::new(&f).unwrap();
+        assert!(ch.reads_palette);
+        let xf = &ch.xforms[0];
+        let v = xf.vars.iter().find(|v| v.id == cm).unwrap();
+        let dv = xf.vars.iter().find(|v| v.id == dm).unwrap();
+        assert!(v.palette.is_some() && dv.palette.is_some());
+        for (px, py) in [(0.3, -0.2), (-0.45, 0.1), (0.05, 0.4)] {
+            let t = VarIn {
+                x: px,
+                y: py,
+                ..Default::default()
+            };
+            // The pixel under the point, as its own colour (dc_color 0).
+            let mut own = v.clone();
+            own.p[9] = 0.0;
+            let mut a = Acc::default();
+            colormap_wf(&own, &t, &mut a, &mut FastRng::new(1));
+            let pixel = a.rgb.unwrap();
+            let want = jwildfire_index(&rgb, pixel);
+            let mut a = Acc::default();
+            colormap_wf(v, &t, &mut a, &mut FastRng::new(1));
+            assert_eq!((a.color, a.rgb), (want, None), "({px}, {py})");
+            // The displacement map compares the channels in [0, 1].
+            let mut a = Acc::default();
+            displacemap_wf(dv, &t, &mut a, &mut FastRng::new(1));
+            let unit = a.rgb.unwrap().map(|c| c / 255.0);
+            assert_eq!(a.color, jwildfire_index(&rgb, unit));
+        }
+        // Through an xform of the colour map alone: the map sets the point's colour
+        // coordinate, which the next iteration blends from.
+        let mut one = f.clone();
+        one.xforms[0].vars.truncate(2);
+        let ch = Chaos::new(&one).unwrap();
+        assert!(ch.reads_palette);
+        let p = Pt {
+            x: 0.3,
+            y: -0.2,
+            z: 0.0,
+            c: 0.9,
+        };
+        let (q, bad, _) = ch.xforms[0].apply_hiding(p, &mut FastRng::new(3));
+        assert!(!bad);
+        let mut a = Acc::default();
+        let t = VarIn {
+            x: 0.3,
+            y: -0.2,
+            ..Default::default()
+        };
+        colormap_wf(v, &t, &mut a, &mut FastRng::new(1));
+        assert_eq!(q.c, a.color);
+        let xf = &ch.xforms[0];
+        assert_ne!(
+            q.c,
+            xf.color_speed * xf.color + (1.0 - xf.color_speed) * 0.9
+        );
+        // Without these variations no table is built.
+        let mut plain = f.clone();
+        plain.xforms[0].vars.truncate(1);
+        assert!(!Chaos::new(&plain).unwrap().reads_palette);
     }
 
     #[test]

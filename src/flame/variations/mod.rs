@@ -125,6 +125,7 @@
 //! | `jwf_h9a_plots` | plots of formula text (`parplot2d_wf`, `polarplot2d_wf`, `yplot2d_wf`, `yplot3d_wf`, `isosfplot3d_wf`) |
 //! | `jwf_h9b_images` | colour, displacement and bump maps with JWildfire's default images (`colormap_wf`, `displacemap_wf`, `post_bumpmap_wf`, …) |
 //! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
+//! | `jwf_pal_kaleido` | an image seen through 14 kaleidoscopes and warps (`kaleidoimg`) |
 //! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
 //! | `jwf_s10_maurer` | chords of nineteen curves in 25 render modes, filtered and coloured (`maurer_lines`; curves and modes in `jwf_s10_maurer_curves`, `jwf_s10_maurer_render`) |
 //! | `jwf_s10_quad`, `jwf_s10_quad_subs` | the plane in four quadrants, each through a sub-variation of its own (`quad`) |
@@ -162,6 +163,7 @@ pub use crate::flame::affine::Affine;
 mod batch;
 mod def;
 mod names;
+mod palette_index;
 mod params;
 mod point;
 mod prepare;
@@ -270,6 +272,7 @@ mod jwf_m_tilecuts;
 mod jwf_m_tiles;
 mod jwf_m_trig;
 mod jwf_maps;
+mod jwf_pal_kaleido;
 mod jwf_post_symmetry;
 mod jwf_prepost;
 mod jwf_s10_geo_attractor;
@@ -316,6 +319,7 @@ pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
     param_attr_name_in, param_of, parse_name, text_attr_name, text_of, text_problem,
 };
+pub use palette_index::PaletteIndex;
 pub use params::{
     Param, ParamKind, TextParam, p, p_cyclic, p_int, p_int_nonzero, p_nonzero, p_range,
 };

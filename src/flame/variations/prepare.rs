@@ -96,6 +96,7 @@ impl Prepared {
             state: Box::default(),
             data: None,
             texts,
+            palette: None,
         };
         if let Some(sd) = &def.shared {
             v.data = Some(shared::data(id, sd, &v.p, &v.texts));

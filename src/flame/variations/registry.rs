@@ -67,6 +67,8 @@ use super::{jwf_s10_geo_attractor, jwf_s10_geo_mesh};
 use super::jwf_s10_maurer;
 // JWildfire variations added in session 10 by helper h3.
 use super::{jwf_s10_quad, jwf_s10_tritile};
+// JWildfire's kaleidoscope over an image (helper h1, session 10).
+use super::jwf_pal_kaleido;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -108,7 +110,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 116] = [
+const FILES: [&[VarDef]; 117] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -235,6 +237,7 @@ const FILES: [&[VarDef]; 116] = [
     jwf_s10_maurer::DEFS,
     jwf_s10_quad::DEFS,
     jwf_s10_tritile::DEFS,
+    jwf_pal_kaleido::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -745,6 +748,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "maurer_lines",
     "quad",
     "dc_triTile",
+    "kaleidoimg",
 ];
 
 /// Every JWildfire variation's name in registry order.
