@@ -35,7 +35,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "colormap_wf",
         "implemented with JWildfire's default image (its corner gradient): z and hiding match; the colour differs: with dc_color ≠ 0 JWildfire sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), ugnis' variations do not see the palette and ask the renderer for the nearest palette colour instead",
     ),
-    ("dc_code", "not implemented"),
     (
         "dc_randomoctree",
         "implemented; differs from the vectors (cause not investigated in the time)",
@@ -48,15 +47,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "displacemap_wf",
         "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
     ),
-    (
-        "ducks",
-        "not implemented: its formula is Java source code compiled at run time (Janino)",
-    ),
-    (
-        "f_complex",
-        "not implemented: its default Java function (log|z| + c) is simple, but its six colour modes run through JWildfire's ComplexFuncRunner helpers; not reached in the time",
-    ),
-    ("glsl_code", "not implemented"),
     (
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
@@ -91,10 +81,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented with JWildfire's default image (its corner gradient): z and hiding match; the colour differs: with dc_color ≠ 0 JWildfire sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), ugnis' variations do not see the palette and ask the renderer for the nearest palette colour instead",
     ),
     (
-        "post_depth",
-        "x, y, z differ: JWildfire's adds the affine point (not the sum) to the sum, and ugnis' post phase does not see the affine point",
-    ),
-    (
         "post_displacemap_wf",
         "implemented with JWildfire's default image: positions and own colours match; with color_mode 1 JWildfire also sets the index of the palette entry nearest to the pixel (0 in the vectors' empty palette), which ugnis' variations cannot compute without the palette",
     ),
@@ -105,10 +91,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "quad",
         "not implemented: 4,700 lines of Java, about 60 sub-variations for each of four quadrants",
-    ),
-    (
-        "ringsubflame",
-        "implemented; x, y and the default set match, the colour of the alt sets (color_mode 0 and 1: the sub-flame's colour, coloured by a dc_hexes_wf at weight 0) is spread wider than JWildfire's (cause not found in the time)",
     ),
     (
         "sattractor3D",

@@ -51,6 +51,10 @@ pub mod flag {
     /// regular variations (in its `pre_` form) and once after them (in its `post_` form). The
     /// formula tells the two calls apart by [`Prepared::form`].
     pub const PREPOST: u32 = 65536;
+    /// A `post_` form whose input is the point the regular variations saw (the affine point,
+    /// after the `pre_` forms), not the sum; it reads the sum from the running [`Acc`]
+    /// (JWildfire's post variations see both, `pAffineTP` and `pVarTP`).
+    pub const READS_AFFINE_POINT: u32 = 131072;
 }
 
 /// Regular, `pre_` or `post_` use of a variation.
@@ -440,6 +444,27 @@ impl Prepared {
     #[inline]
     pub fn apply_post(&self, acc: &mut Acc, color: f64, rng: &mut FastRng) {
         let t = VarIn::new(acc.x, acc.y, acc.z, color, self.def.needs, false);
+        let o = self.eval(&t, acc, rng);
+        self.assign_acc(acc, o);
+    }
+
+    /// [`Prepared::apply_post`] for a form that may read the point the regular variations saw,
+    /// `affine`: a form with [`flag::READS_AFFINE_POINT`] gets it as its input (and the sum
+    /// in `acc`), any other the sum.
+    #[inline]
+    pub fn apply_post_after(&self, affine: &V3, acc: &mut Acc, color: f64, rng: &mut FastRng) {
+        if self.def.flags & flag::READS_AFFINE_POINT == 0 {
+            self.apply_post(acc, color, rng);
+            return;
+        }
+        let t = VarIn::new(
+            affine[0],
+            affine[1],
+            affine[2],
+            color,
+            self.def.needs,
+            false,
+        );
         let o = self.eval(&t, acc, rng);
         self.assign_acc(acc, o);
     }

@@ -126,6 +126,8 @@
 //! | `jwf_h9b_images` | colour, displacement and bump maps with JWildfire's default images (`colormap_wf`, `displacemap_wf`, `post_bumpmap_wf`, …) |
 //! | `jwf_h9b_meshes` | random points of a mesh, JWildfire's default cube or an OBJ file (`obj_mesh_wf`) |
 //! | `jwf_h9b_code` | a domain colouring of JWildfire's default complex function (`colordomain`) |
+//! | `jwf_s10_code` | Java-code escape-time pictures, their default code (`glsl_code`, `f_complex`, `ducks`) |
+//! | `jwf_s10_code_dc` | a direct-colour stamp of a program written from a seed (`dc_code`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -267,6 +269,8 @@ mod jwf_m_trig;
 mod jwf_maps;
 mod jwf_post_symmetry;
 mod jwf_prepost;
+mod jwf_s10_code;
+mod jwf_s10_code_dc;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;

@@ -47,6 +47,8 @@ use super::{
 };
 // JWildfire variations driven by formula text or Java code, added by helper h1 (session 9).
 use super::{jwf_h9a_code, jwf_h9a_fract, jwf_h9a_plots};
+// JWildfire variations driven by Java code, their default code (session 10).
+use super::{jwf_s10_code, jwf_s10_code_dc};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -102,7 +104,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 111] = [
+const FILES: [&[VarDef]; 113] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -222,6 +224,8 @@ const FILES: [&[VarDef]; 111] = [
     jwf_h9b_images::DEFS,
     jwf_h9b_meshes::DEFS,
     jwf_h9b_code::DEFS,
+    jwf_s10_code::DEFS,
+    jwf_s10_code_dc::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -727,6 +731,10 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "post_bumpmap_wf",
     "obj_mesh_wf",
     "colordomain",
+    "glsl_code",
+    "f_complex",
+    "ducks",
+    "dc_code",
 ];
 
 /// Every JWildfire variation's name in registry order.
