@@ -31,16 +31,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "brush_stroke_wf",
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
     ),
-    ("dc_code", "not implemented"),
-    (
-        "ducks",
-        "not implemented: its formula is Java source code compiled at run time (Janino)",
-    ),
-    (
-        "f_complex",
-        "not implemented: its default Java function (log|z| + c) is simple, but its six colour modes run through JWildfire's ComplexFuncRunner helpers; not reached in the time",
-    ),
-    ("glsl_code", "not implemented"),
     (
         "grid3d_wf",
         "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
@@ -64,14 +54,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "post_brush_stroke_wf",
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
-    ),
-    (
-        "post_depth",
-        "x, y, z differ: JWildfire's adds the affine point (not the sum) to the sum, and ugnis' post phase does not see the affine point",
-    ),
-    (
-        "ringsubflame",
-        "implemented; x, y and the default set match, the colour of the alt sets (color_mode 0 and 1: the sub-flame's colour, coloured by a dc_hexes_wf at weight 0) is spread wider than JWildfire's (cause not found in the time)",
     ),
     (
         "sunvoroni",

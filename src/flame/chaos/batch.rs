@@ -146,7 +146,7 @@ impl CompiledXform {
             g.py[..n].fill(0.0);
             g.pz[..n].fill(0.0);
         }
-        self.post_forms(c, rgb.as_deref_mut(), g, rng);
+        self.post_forms(x, y, z, c, rgb.as_deref_mut(), g, rng);
         self.finish_group(x, y, z, c, g, rng);
         if let (Some(d), Some(r)) = (distance, rgb) {
             let old = [&g.old[0][..n], &g.old[1][..n], &g.old[2][..n]];
@@ -319,10 +319,15 @@ impl CompiledXform {
     }
 
     /// The `post_` forms on the summed points in `g` (own colours into `rgb`): each over the
-    /// whole group when all have batch loops ([`batched_forms`]), else point by point.
+    /// whole group when all have batch loops ([`batched_forms`]), else point by point (a form
+    /// reading the affine point gets it from `x`, `y`, `z`).
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn post_forms(
         &self,
+        x: &[f64],
+        y: &[f64],
+        z: &[f64],
         c: &[f64],
         mut rgb: Option<&mut [u32]>,
         g: &mut Scratch,
@@ -333,10 +338,10 @@ impl CompiledXform {
             return;
         }
         if batched_forms(&self.post_vars) {
-            let (x, y, z) = (&mut g.px[..n], &mut g.py[..n], &mut g.pz[..n]);
+            let (px, py, pz) = (&mut g.px[..n], &mut g.py[..n], &mut g.pz[..n]);
             for v in &self.post_vars {
                 if let Some(f) = v.def.form_batch {
-                    f(v, x, y, z, rng);
+                    f(v, px, py, pz, rng);
                 }
             }
             return;
@@ -350,8 +355,9 @@ impl CompiledXform {
                 hide: false,
                 rgb: None,
             };
+            let affine = [x[j], y[j], z[j]];
             for v in &self.post_vars {
-                v.apply_post(&mut acc, cj, rng);
+                v.apply_post_after(&affine, &mut acc, cj, rng);
             }
             let pc = own_colour(&acc, rgb.as_deref_mut(), j);
             (g.px[j], g.py[j], g.pz[j], g.pc[j]) = (acc.x, acc.y, acc.z, pc);
@@ -466,6 +472,51 @@ mod tests {
         let mut s = Scratch::new();
         ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, None, &mut s, &mut rng);
         assert!((gx[0] - q.x).abs() < 1e-12 && (gy[0] - q.y).abs() < 1e-12);
+    }
+
+    /// JWildfire's post_depth reads the point the regular variations saw (the affine point)
+    /// besides their sum, in both the point-by-point and the batched runs; the same xform in
+    /// a flam3 flame runs flam3's post_ form of depth on the sum alone.
+    #[test]
+    fn a_post_form_can_read_the_affine_point() {
+        use crate::flame::model::{PaletteIndex, Var};
+        use crate::flame::variations::{Form, LINEAR};
+        let depth = variations::by_name("depth").unwrap();
+        let mut x = Xform::linear(Affine::new(0.8, 0.2, -0.3, 0.9, 0.1, -0.2), 1.0, 0.0);
+        x.vars = vec![
+            Var::new(LINEAR, 0.5),
+            Var::with_form(depth, Form::Post, 0.7),
+        ];
+        let mut f = Flame {
+            xforms: vec![x.clone()],
+            palette_index: PaletteIndex::JWildfire,
+            ..Flame::default()
+        };
+        let p = Pt {
+            x: 0.4,
+            y: -0.7,
+            z: 0.3,
+            c: 0.5,
+        };
+        let (tx, ty) = x.coefs.apply(p.x, p.y);
+        // JWildfire's linear is 2-D: the sum's z is 0, so |z|^power is 0.
+        let (sx, sy) = (0.5 * tx, 0.5 * ty);
+        let want = [sx + 0.7 * tx, sy + 0.7 * ty];
+        for jwildfire in [true, false] {
+            if !jwildfire {
+                f.palette_index = PaletteIndex::Flam3;
+            }
+            let ch = Chaos::new(&f).unwrap();
+            let mut rng = FastRng::new(2);
+            let (q, bad) = ch.xforms[0].apply(p, &mut rng);
+            assert!(!bad);
+            let (mut gx, mut gy, mut gz, mut gc) = ([p.x], [p.y], [p.z], [p.c]);
+            let mut s = Scratch::new();
+            ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, None, &mut s, &mut rng);
+            assert!((gx[0] - q.x).abs() < 1e-12 && (gy[0] - q.y).abs() < 1e-12);
+            let near = (q.x - want[0]).abs() < 1e-12 && (q.y - want[1]).abs() < 1e-12;
+            assert_eq!(near, jwildfire, "{q:?} {want:?}");
+        }
     }
 
     /// Own colours through a group: a direct-colour variation writes its pattern's colour

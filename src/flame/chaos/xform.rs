@@ -194,7 +194,7 @@ impl CompiledXform {
             (acc.x, acc.y, acc.z) = (tr[0], tr[1], tr[2]);
         }
         for v in &self.post_vars {
-            v.apply_post(&mut acc, blended, rng);
+            v.apply_post_after(&tr, &mut acc, blended, rng);
         }
         if let Some(post) = &self.post {
             (acc.x, acc.y) = post.apply(acc.x, acc.y);

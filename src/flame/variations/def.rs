@@ -55,6 +55,10 @@ pub mod flag {
     /// Gives the point the palette position of a colour: needs the flame's palette
     /// ([`Prepared::give_palette`](super::Prepared::give_palette)).
     pub const PALETTE: u32 = 1 << 17;
+    /// A `post_` form whose input is the point the regular variations saw (the affine point,
+    /// after the `pre_` forms), not the sum; it reads the sum from the running [`Acc`]
+    /// (JWildfire's post variations see both, `pAffineTP` and `pVarTP`).
+    pub const READS_AFFINE_POINT: u32 = 1 << 18;
 }
 
 /// Regular, `pre_` or `post_` use of a variation.
@@ -466,6 +470,27 @@ impl Prepared {
     #[inline]
     pub fn apply_post(&self, acc: &mut Acc, color: f64, rng: &mut FastRng) {
         let t = VarIn::new(acc.x, acc.y, acc.z, color, self.def.needs, false);
+        let o = self.eval(&t, acc, rng);
+        self.assign_acc(acc, o);
+    }
+
+    /// [`Prepared::apply_post`] for a form that may read the point the regular variations saw,
+    /// `affine`: a form with [`flag::READS_AFFINE_POINT`] gets it as its input (and the sum
+    /// in `acc`), any other the sum.
+    #[inline]
+    pub fn apply_post_after(&self, affine: &V3, acc: &mut Acc, color: f64, rng: &mut FastRng) {
+        if self.def.flags & flag::READS_AFFINE_POINT == 0 {
+            self.apply_post(acc, color, rng);
+            return;
+        }
+        let t = VarIn::new(
+            affine[0],
+            affine[1],
+            affine[2],
+            color,
+            self.def.needs,
+            false,
+        );
         let o = self.eval(&t, acc, rng);
         self.assign_acc(acc, o);
     }

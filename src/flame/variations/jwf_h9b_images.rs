@@ -270,7 +270,14 @@ pub(super) static DEFS: &[VarDef] = &[
             p_int("post_bumpmap_wf_reset_z", 0.0, IMIN, IMAX),
         ])
         .texts(image_text!("post_bumpmap_wf"))
-        .flags(flag::JWILDFIRE | flag::POST_ONLY | flag::USES_Z | flag::WRITES_Z)
+        .flags(
+            flag::JWILDFIRE
+                | flag::POST_ONLY
+                | flag::USES_Z
+                | flag::WRITES_Z
+                | flag::READS_AFFINE_POINT
+                | flag::READS_ACC,
+        )
         .shared(&[], bump_map),
 ];
 
@@ -454,10 +461,9 @@ fn post_displacemap_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRn
 
 /// post_bumpmap_wf: inside the image's rectangle, z is raised by `offset_z` plus `scale_z`
 /// times the pixel's brightness (0 everywhere in the blank default image), or set to that
-/// with `reset_z`. JWildfire places the point by the xform's affine point; ugnis' post phase
-/// sees the summed point (the same point when the xform's only regular variation is `linear`
-/// at weight 1).
-fn post_bumpmap_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+/// with `reset_z`. As in JWildfire, the pixel is the one under the xform's affine point (the
+/// input `t`, [`flag::READS_AFFINE_POINT`]); the summed point, read from `acc`, is moved.
+fn post_bumpmap_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [
         scale_x,
         scale_y,
@@ -472,11 +478,11 @@ fn post_bumpmap_wf(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) 
     let y = (t.y - offset_y + 1.0) / scale_y * 0.5 * f64::from(img.h - 1);
     let (ix, iy) = (ftoi(x), ftoi(y));
     if !((0..img.w).contains(&ix) && (0..img.h).contains(&iy)) {
-        return [t.x, t.y, t.z];
+        return [acc.x, acc.y, acc.z];
     }
     let [r, g, b, _] = img.at(ix, iy).map(f64::from);
     let dz = offset_z + scale_z * (intensity(r, g, b) / 255.0);
-    [t.x, t.y, if reset_z != 0.0 { dz } else { t.z + dz }]
+    [acc.x, acc.y, if reset_z != 0.0 { dz } else { acc.z + dz }]
 }
 
 #[cfg(test)]

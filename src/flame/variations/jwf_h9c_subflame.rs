@@ -345,7 +345,7 @@ impl SubXform {
         }
         let c = acc.color;
         for v in &self.posts {
-            v.apply_post(&mut acc, c, rng);
+            v.apply_post_after(&tr, &mut acc, c, rng);
         }
         if let Some(post) = &self.post {
             (acc.x, acc.y) = post.apply(acc.x, acc.y);
@@ -753,6 +753,9 @@ const ST_OLD: usize = 6;
 fn ringsubflame(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [hide, radius, crop, thickness, contrast, pow, scatter, zero] = v.params();
     let w = v.w;
+    // JWildfire colours the point last (`setColor` ends `transform`), and not at all when the
+    // crop below hides it: such a point keeps the colour it came with.
+    let (color_in, rgb_in) = (acc.color, acc.rgb);
     let Some(q) = sub_point(v, 8, acc, rng) else {
         acc.hide = true;
         return [0.0; 3];
@@ -789,6 +792,7 @@ fn ringsubflame(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V
         acc.x = 0.0;
         acc.y = 0.0;
         acc.hide = true;
+        (acc.color, acc.rgb) = (color_in, rgb_in);
     } else if esc {
         acc.x = w * rdc * c;
         acc.y = w * rdc * s;

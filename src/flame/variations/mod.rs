@@ -130,6 +130,8 @@
 //! | `jwf_s10_maurer` | chords of nineteen curves in 25 render modes, filtered and coloured (`maurer_lines`; curves and modes in `jwf_s10_maurer_curves`, `jwf_s10_maurer_render`) |
 //! | `jwf_s10_quad`, `jwf_s10_quad_subs` | the plane in four quadrants, each through a sub-variation of its own (`quad`) |
 //! | `jwf_s10_tritile` | a random point of a random tile of a triangle substitution tiling (`dc_triTile`) |
+//! | `jwf_s10_code` | Java-code escape-time pictures, their default code (`glsl_code`, `f_complex`, `ducks`) |
+//! | `jwf_s10_code_dc` | a direct-colour stamp of a program written from a seed (`dc_code`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -275,6 +277,8 @@ mod jwf_maps;
 mod jwf_pal_kaleido;
 mod jwf_post_symmetry;
 mod jwf_prepost;
+mod jwf_s10_code;
+mod jwf_s10_code_dc;
 mod jwf_s10_geo_attractor;
 mod jwf_s10_geo_mesh;
 mod jwf_s10_maurer;

@@ -92,13 +92,17 @@ pub fn text_attr_name(id: VarId, form: Form, k: usize) -> String {
     format!("{}{name}", form.prefix())
 }
 
-/// Why the text parameters `texts` of variation `id` cannot be used as they are (a formula
-/// that does not compile, Java code other than the default that ugnis runs instead), for the
-/// reader of a file to report; `None` when they can.
-pub fn text_problem(id: VarId, texts: &[String]) -> Option<String> {
+/// Why the text parameters `texts` of variation `id` (with parameters `params`) cannot be used
+/// as they are (a formula that does not compile, Java code other than the default that ugnis
+/// runs instead), for the reader of a file to report; `None` when they can.
+pub fn text_problem(id: VarId, params: &[f64], texts: &[String]) -> Option<String> {
     let name = info(id).name;
+    if name == "dc_code" {
+        return super::jwf_s10_code_dc::code_problem(params.first().copied().unwrap_or(0.0), texts);
+    }
     super::jwf_h9a_plots::formula_problem(name, texts)
         .or_else(|| super::jwf_h9a_code::code_problem(name, texts))
+        .or_else(|| super::jwf_s10_code::code_problem(name, texts))
 }
 
 /// If `attr` names a text parameter — `TEXT`, `pre_TEXT` or `post_TEXT` — the variation, form

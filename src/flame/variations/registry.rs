@@ -47,6 +47,8 @@ use super::{
 };
 // JWildfire variations driven by formula text or Java code, added by helper h1 (session 9).
 use super::{jwf_h9a_code, jwf_h9a_fract, jwf_h9a_plots};
+// JWildfire variations driven by Java code, their default code (session 10).
+use super::{jwf_s10_code, jwf_s10_code_dc};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -110,7 +112,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 117] = [
+const FILES: [&[VarDef]; 119] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -238,6 +240,8 @@ const FILES: [&[VarDef]; 117] = [
     jwf_s10_quad::DEFS,
     jwf_s10_tritile::DEFS,
     jwf_pal_kaleido::DEFS,
+    jwf_s10_code::DEFS,
+    jwf_s10_code_dc::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -749,6 +753,10 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "quad",
     "dc_triTile",
     "kaleidoimg",
+    "glsl_code",
+    "f_complex",
+    "ducks",
+    "dc_code",
 ];
 
 /// Every JWildfire variation's name in registry order.

@@ -635,6 +635,45 @@ fn jwildfire_keeps_colouring_variations_of_amount_zero() {
     assert_eq!(names(&flam3), [("cpow3".to_string(), 1.0)]);
 }
 
+/// ducks' code other than its default is reported; dc_code's code is checked against the
+/// source its `randomize` seed writes (JWildfire 9.00's `randomizeCode`, seed 10002).
+#[test]
+fn code_of_the_escape_time_pictures_is_checked() {
+    let hex = |s: &str| s.bytes().map(|b| format!("{b:02X}")).collect::<String>();
+    let seed_10002 = "public vec3 getRGBColor(double xp,double yp)\n{\n  vec2 p=new vec2(xp,yp);\n  \
+        p=p.multiply(zoom).minus(new vec2(stepX,stepY));\n  double t=26.52197521717507;\n  \
+        vec3 color=new vec3(0.0);\n  vec2 z = new vec2(0.0);\n   vec2 c=p;\n   \
+        for(int k = 0; k < 32; ++k) {\n      if (length(z) > 2.) break;\n          \
+        z = c_add(c_mul(z,z),c);\n      t = (double)k;\n   }\n   \
+        double t1=length(c_tanh(z));\n   \
+        color =  new vec3(t/32., t/64., t/24.).multiply(t1);\n   return color;\n}\n";
+    let flame = |seed: u32| {
+        format!(
+            r#"<flame name="c" version="JWildfire V9.00" size="16 12" scale="10" quality="2">
+  <xform weight="1" color="0" ducks="1" ducks_code="{}" coefs="1 0 0 1 0 0"/>
+  <xform weight="1" color="0" dc_code="1" dc_code_randomize="{seed}" dc_code_code="{}" coefs="1 0 0 1 0 0"/>
+</flame>"#,
+            hex("public Complex f(Complex z, Complex c) { return z; }"),
+            hex(seed_10002)
+        )
+    };
+    let msgs = |seed| {
+        let p = read(&flame(seed), &opts()).unwrap();
+        p.warnings.iter().map(|w| w.to_string()).collect::<Vec<_>>()
+    };
+    let (right, wrong) = (msgs(10002), msgs(10001));
+    let has = |m: &[String], s: &str| m.iter().any(|w| w.contains(s));
+    assert!(
+        has(&right, "ducks: custom code is not supported"),
+        "{right:?}"
+    );
+    assert!(!has(&right, "dc_code"), "{right:?}");
+    assert!(
+        has(&wrong, "dc_code: edited code is not supported"),
+        "{wrong:?}"
+    );
+}
+
 /// Java code other than a variation's default (which ugnis runs instead) and a plot formula
 /// that does not compile are read, and each is reported by name; the default code and a
 /// formula that compiles are not.

@@ -103,7 +103,7 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
     if has_texts {
         let at = attrs.first().map_or(0, |a| a.offset);
         for v in &x.vars {
-            if let Some(msg) = variations::text_problem(v.id, &v.texts) {
+            if let Some(msg) = variations::text_problem(v.id, &v.params, &v.texts) {
                 cx.warn(at, "XML030", msg);
             }
         }

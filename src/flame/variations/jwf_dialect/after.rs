@@ -27,3 +27,20 @@ pub(super) fn farblur(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -
         t.z + sz * r * cv,
     ]
 }
+
+/// post_depth: the sum so far (x, y, z) moved by the weight times the point the regular
+/// variations saw plus the sum scaled by |z|^power (JWildfire 9.00, `PostDepthFunc`, after
+/// Zy0rg's "Blur Package"). The input `t` is that affine point
+/// ([`flag::READS_AFFINE_POINT`]); the sum is read from `acc`.
+pub(super) fn post_depth(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
+    let [power] = v.params();
+    let mut k = acc.z.abs();
+    if k != 0.0 && power != 1.0 {
+        k = (k.ln() * power).exp();
+    }
+    [
+        acc.x + v.w * (t.x + acc.x * k),
+        acc.y + v.w * (t.y + acc.y * k),
+        acc.z + v.w * (t.z + acc.z * k),
+    ]
+}

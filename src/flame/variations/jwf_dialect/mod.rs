@@ -185,6 +185,12 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
     ("hypertile1", branches::hypertile1, 0, 0),
     ("hypertile2", branches::hypertile2, 0, 0),
     ("farblur", after::farblur, 0, flag::POST_ONLY),
+    (
+        "post_depth",
+        after::post_depth,
+        0,
+        flag::READS_AFFINE_POINT | flag::READS_ACC,
+    ),
 ];
 
 /// JWildfire's crop replaces the sum so far and hides or shows the point.
