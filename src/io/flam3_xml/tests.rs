@@ -427,11 +427,16 @@ fn jwildfire_variation_used_twice() {
         name: String::new(),
         flames: vec![f.clone()],
     });
-    // The post_ use has a name of its own; the dropped third use keeps its parameter.
-    assert!(out.contains("julian=\"0.5\" post_julian=\"0.25\""), "{out}");
+    // The use moved after the others keeps its name and priority; the dropped third use keeps
+    // its parameter.
+    assert!(
+        out.contains("julian=\"0.5\" julian#1#=\"0.25\" julian#1#_fx_priority=\"1\""),
+        "{out}"
+    );
     assert!(out.contains("julian#2#_power=\"7\""), "{out}");
     let mut x = f.xforms[0].clone();
     x.vars[1].form = Form::Regular;
+    x.vars[1].moved = false;
     x.extra_attrs.clear();
     let g = Flame {
         xforms: vec![x.clone()],

@@ -402,11 +402,17 @@ fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending, jwildfire: 
             let this = |vid: VarId, vform: Form, k: u32| {
                 vid == id && vform == Form::Regular && k == instance
             };
+            let mut moved = false;
             for (var, &k) in x.vars.iter_mut().zip(&st.instances) {
                 if this(var.id, var.form, k) {
                     var.form = form;
                     var.moved = jwildfire;
+                    moved |= jwildfire;
                 }
+            }
+            if moved {
+                // Written again with the variation itself.
+                x.extra_attrs.retain(|(k, _)| k != a.name);
             }
             for p in st.params.iter_mut() {
                 if this(p.id, p.form, p.instance) {
