@@ -33,7 +33,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "grid3d_wf",
-        "implemented; alt sets expected to differ: JWildfire gives a cell its spreads from a generator in the order cells are first reached, ugnis hashes the cell",
+        "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
     ),
     (
         "iflames_wf",
