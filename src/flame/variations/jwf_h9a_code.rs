@@ -63,6 +63,9 @@ const DEFAULT_CODE: &[(&str, u64)] = &[
     ("pre_custom_wf", 0x97d7_303a_584b_7967),
     ("post_custom_wf", 0x97d7_303a_584b_7967),
     ("custom_wf_full", 0x4689_89a4_6575_a69f),
+    ("glsl_code", 0x42a1_db57_c220_8e02),
+    ("f_complex", 0x1e28_1dfe_9e08_30a3),
+    ("ducks", 0x7e9d_1669_5b6c_49e8),
 ];
 
 /// FNV-1a (64 bits) of `s` with every run of whitespace made one space and the ends trimmed.

@@ -257,6 +257,13 @@ pub(super) fn point_in_triangle(p: [[f64; 3]; 3], rng: &mut FastRng) -> [f64; 3]
 /// obj_mesh_wf: a random point of a random triangle of the mesh, times the weight.
 fn obj_mesh_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [sx, sy, sz, ox, oy, oz] = v.params();
+    mesh_point(v, [sx, sy, sz], [ox, oy, oz], rng)
+}
+
+/// A random point of a random triangle (picked by area) of the mesh in the variation's
+/// shared data (count, running area totals, then nine corner coordinates per triangle),
+/// scaled by `scale`, moved by `offset`, times the weight; the origin for an empty mesh.
+pub(super) fn mesh_point(v: &Prepared, scale: V3, offset: V3, rng: &mut FastRng) -> V3 {
     let d = v.data();
     let n = d.first().map_or(0, |&n| n as usize);
     if n == 0 || d.len() < 1 + 10 * n {
@@ -268,13 +275,7 @@ fn obj_mesh_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V
     let pick = rng.below(total as u64) as f64;
     let k = totals.partition_point(|&c| c <= pick).min(n - 1);
     let c = &d[1 + n + 9 * k..1 + n + 9 * k + 9];
-    let corner = |i: usize| {
-        place(
-            [c[3 * i], c[3 * i + 1], c[3 * i + 2]],
-            [sx, sy, sz],
-            [ox, oy, oz],
-        )
-    };
+    let corner = |i: usize| place([c[3 * i], c[3 * i + 1], c[3 * i + 2]], scale, offset);
     let p = point_in_triangle([corner(0), corner(1), corner(2)], rng);
     p.map(|c| v.w * c)
 }

@@ -5,7 +5,7 @@
 //! cannot run Java: each computes what JWildfire's built-in default code computes, written
 //! here natively, with every other parameter as JWildfire uses it. A flame whose code differs
 //! from the default is still drawn, with the default; its reader reports it
-//! ([`code_problem`]).
+//! ([`super::jwf_h9a_code::code_problem`]).
 //!
 //! The formulas follow JWildfire 9.00 (LGPL-2.1): `GLSLBaseFunc` with `glslFuncRunner`'s
 //! `fractal`, `F_ComplexFunc` with its `ComplexFuncRunner` and the complex class
@@ -113,45 +113,6 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(ducks_prepare)
         .flags(COLOUR),
 ];
-
-/// FNV-1a (64 bits) of the default code of each variation, its whitespace runs made single
-/// spaces and the ends trimmed (as `jwf_h9a_code` hashes custom_wf's): computed from the
-/// default strings of JWildfire 9.00's classes.
-const DEFAULT_CODE: &[(&str, u64)] = &[
-    ("glsl_code", 0x42a1_db57_c220_8e02),
-    ("f_complex", 0x1e28_1dfe_9e08_30a3),
-    ("ducks", 0x7e9d_1669_5b6c_49e8),
-];
-
-/// FNV-1a (64 bits) of `s` with every run of whitespace made one space and the ends trimmed.
-fn normalised_hash(s: &str) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    let mut eat = |b: u8| {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0100_0000_01b3);
-    };
-    for (i, word) in s.split_whitespace().enumerate() {
-        if i > 0 {
-            eat(b' ');
-        }
-        word.bytes().for_each(&mut eat);
-    }
-    h
-}
-
-/// The reader's warning for a code text of variation `name` that is not JWildfire's default
-/// (compared with whitespace normalised): `None` for the default, an empty text, or a
-/// variation not of this file.
-pub fn code_problem(name: &str, texts: &[String]) -> Option<String> {
-    let (_, want) = DEFAULT_CODE.iter().find(|(n, _)| *n == name)?;
-    let text = texts.first()?;
-    if text.trim().is_empty() || normalised_hash(text) == *want {
-        return None;
-    }
-    Some(format!(
-        "{name}: custom code is not supported; the default code is used"
-    ))
-}
 
 /// Java's `(int)` of 256·c kept at most 255 (JWildfire's `dbl2int`), and at least 0.
 fn byte(c: f64) -> i64 {
@@ -607,6 +568,7 @@ fn ducks(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 
 #[cfg(test)]
 mod tests {
+    use super::super::jwf_h9a_code::code_problem;
     use super::*;
 
     #[test]

@@ -24,7 +24,7 @@
 //! smoothing (λ > 1) moves the vertices along that triangulation's edges, so a subdivided,
 //! strongly smoothed cone differs from JWildfire's.
 
-use super::jwf_h9b_meshes::{area_counts, place, point_in_triangle, subdivide, taubin};
+use super::jwf_h9b_meshes::{area_counts, mesh_point, subdivide, taubin};
 use super::resources::ResourceMesh;
 use super::*;
 
@@ -269,25 +269,7 @@ fn mesh_data(p: &[f64], _texts: &[String]) -> Vec<f64> {
 /// weight.
 fn obj_mesh_primitive_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [_, sx, sy, sz, ox, oy, oz] = v.params();
-    let d = v.data();
-    let n = d.first().map_or(0, |&n| n as usize);
-    if n == 0 || d.len() < 1 + 10 * n {
-        return [0.0; 3];
-    }
-    let totals = &d[1..1 + n];
-    let total = totals[n - 1];
-    let pick = rng.below(total as u64) as f64;
-    let k = totals.partition_point(|&c| c <= pick).min(n - 1);
-    let c = &d[1 + n + 9 * k..1 + n + 9 * k + 9];
-    let corner = |i: usize| {
-        place(
-            [c[3 * i], c[3 * i + 1], c[3 * i + 2]],
-            [sx, sy, sz],
-            [ox, oy, oz],
-        )
-    };
-    let p = point_in_triangle([corner(0), corner(1), corner(2)], rng);
-    p.map(|c| v.w * c)
+    mesh_point(v, [sx, sy, sz], [ox, oy, oz], rng)
 }
 
 #[cfg(test)]

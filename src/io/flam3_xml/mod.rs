@@ -32,6 +32,8 @@ mod xform;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_jwf;
 
 pub use read::read;
 pub use template::{Template, read_template};

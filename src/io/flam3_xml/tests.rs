@@ -3,10 +3,10 @@
 
 use super::*;
 use crate::flame::model::{Affine, PaletteMode};
-use crate::flame::variations::{self, Form};
+use crate::flame::variations;
 use crate::io::diag::Pos;
 
-fn opts() -> ReadOptions<'static> {
+pub(super) fn opts() -> ReadOptions<'static> {
     ReadOptions {
         file: "t.flame".into(),
         library: LibrarySource::Paths(vec![]),
@@ -408,121 +408,6 @@ fn writer_follows_apophysis_line_rules() {
     // Palette as zero-padded upper-case hex, 8 colours per line.
     assert!(t.contains("FF0000FE0001"), "{t}");
     assert!(!t.contains("ugnis_kind") || t.contains("ugnis_kind=\"flame\""));
-}
-
-/// JWildfire writes a variation used twice in an xform as `NAME` and `NAME#1#` (its
-/// parameters `NAME#1#_param`, its priority `NAME#1#_fx_priority`): two uses, written back
-/// the same way; a dropped use's parameters are not written twice.
-#[test]
-fn jwildfire_variation_used_twice() {
-    let text = r#"<flame version="JWildfire V7.30"><xform weight="1" julian="0.5" julian_power="3" julian#1#="0.25" julian#1#_power="5" julian#1#_fx_priority="1" julian#2#="0" julian#2#_power="7" coefs="1 0 0 1 0 0"/></flame>"#;
-    let f = read(text, &opts()).unwrap().value.flames.remove(0);
-    let vars: Vec<(Form, f64, f64)> = f.xforms[0]
-        .vars
-        .iter()
-        .map(|v| (v.form, v.weight, v.params[0]))
-        .collect();
-    assert_eq!(vars, [(Form::Regular, 0.5, 3.0), (Form::Post, 0.25, 5.0)]);
-    let out = write(&FlameFile {
-        name: String::new(),
-        flames: vec![f.clone()],
-    });
-    // The use moved after the others keeps its name and priority; the dropped third use keeps
-    // its parameter.
-    assert!(
-        out.contains("julian=\"0.5\" julian#1#=\"0.25\" julian#1#_fx_priority=\"1\""),
-        "{out}"
-    );
-    assert!(out.contains("julian#2#_power=\"7\""), "{out}");
-    let mut x = f.xforms[0].clone();
-    x.vars[1].form = Form::Regular;
-    x.vars[1].moved = false;
-    x.extra_attrs.clear();
-    let g = Flame {
-        xforms: vec![x.clone()],
-        ..f
-    };
-    let out = write(&FlameFile {
-        name: String::new(),
-        flames: vec![g],
-    });
-    assert!(
-        out.contains("julian=\"0.5\" julian#1#=\"0.25\" julian_power=\"3\""),
-        "{out}"
-    );
-    assert!(out.contains("julian#1#_power=\"5\""), "{out}");
-    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
-    assert_eq!(back.xforms[0].vars, x.vars);
-}
-
-/// A `pre_` variation JWildfire's file marks with priority 0 runs among the regular ones on a
-/// copy JWildfire then throws away: it draws nothing, so it is no variation here, and it is
-/// written back as it was read. Marked -1, it stays a pre_ variation.
-#[test]
-fn jwildfire_pre_variation_of_priority_zero_does_nothing() {
-    let text = r#"<flame version="JWildfire V7.30"><xform weight="1" pre_blur="1.18" pre_blur_fx_priority="0" bubble="0.2" bubble_fx_priority="0" coefs="1 0 0 1 0 0"/><xform weight="1" pre_blur="0.5" pre_blur_fx_priority="-1" coefs="1 0 0 1 0 0"/></flame>"#;
-    let f = read(text, &opts()).unwrap().value.flames.remove(0);
-    let forms = |i: usize| -> Vec<(Form, f64)> {
-        f.xforms[i]
-            .vars
-            .iter()
-            .map(|v| (v.form, v.weight))
-            .collect()
-    };
-    assert_eq!(forms(0), [(Form::Regular, 0.2)]);
-    assert_eq!(forms(1), [(Form::Pre, 0.5)]);
-    let out = write(&FlameFile {
-        name: String::new(),
-        flames: vec![f.clone()],
-    });
-    assert!(out.contains("pre_blur=\"1.18\""), "{out}");
-    assert!(out.contains("pre_blur_fx_priority=\"0\""), "{out}");
-    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
-    assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
-}
-
-/// A regular variation JWildfire's priority moves before (-1) or after (1) the others is
-/// marked as moved in JWildfire's flames (it then adds to the point), written back as the plain
-/// name with its priority, and read back the same; in other programs' flames the mark only
-/// changes the phase.
-#[test]
-fn jwildfire_priority_moves_a_regular_variation() {
-    let xform = r#"<xform weight="1" loonie="0.25" loonie_fx_priority="-1" julian="0.5" julian_fx_priority="1" spherical="1" coefs="1 0 0 1 0 0"/>"#;
-    let jwf = format!(r#"<flame version="JWildfire V7.30">{xform}</flame>"#);
-    let f = read(&jwf, &opts()).unwrap().value.flames.remove(0);
-    let marks = |f: &Flame| -> Vec<(Form, bool)> {
-        f.xforms[0].vars.iter().map(|v| (v.form, v.moved)).collect()
-    };
-    assert_eq!(
-        marks(&f),
-        [
-            (Form::Pre, true),
-            (Form::Post, true),
-            (Form::Regular, false)
-        ]
-    );
-    let out = write(&FlameFile {
-        name: String::new(),
-        flames: vec![f.clone()],
-    });
-    assert!(out.contains("loonie_fx_priority=\"-1\""), "{out}");
-    assert!(out.contains("julian_fx_priority=\"1\""), "{out}");
-    assert!(
-        !out.contains("pre_loonie") && !out.contains("post_julian"),
-        "{out}"
-    );
-    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
-    assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
-    let other = format!(r#"<flame>{xform}</flame>"#);
-    let g = read(&other, &opts()).unwrap().value.flames.remove(0);
-    assert_eq!(
-        marks(&g),
-        [
-            (Form::Pre, false),
-            (Form::Post, false),
-            (Form::Regular, false)
-        ]
-    );
 }
 
 #[test]
