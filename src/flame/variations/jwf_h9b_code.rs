@@ -41,31 +41,36 @@ fn default_f(x: f64, y: f64) -> (f64, f64) {
     (sr * sr - si * si, sr * si + si * sr)
 }
 
-/// Hue, saturation and value (each in [0, 1]) to bytes, as JWildfire's `SetHSV` does it: a
-/// channel is 256 times its value, truncated and kept below 256.
-fn hsv_bytes(h: f64, s: f64, v: f64) -> [f64; 3] {
-    let (r, g, b) = if s == 0.0 {
-        (v, v, v)
-    } else {
-        let h = if h == 1.0 { 0.0 } else { h };
-        let z = (h * 6.0).floor();
-        let f = h * 6.0 - z;
-        let (p, q, t) = (v * (1.0 - s), v * (1.0 - s * f), v * (1.0 - s * (1.0 - f)));
-        match z as i32 {
-            0 => (v, t, p),
-            1 => (q, v, p),
-            2 => (p, v, t),
-            3 => (p, q, v),
-            4 => (t, p, v),
-            5 => (v, p, q),
-            _ => (0.0, 0.0, 0.0),
-        }
-    };
-    [r, g, b].map(|c| f64::from(((256.0 * c) as i32).min(255)))
+/// Hue, saturation and value (each in [0, 1]) to red, green and blue (JWildfire's `SetHSV`).
+pub(super) fn set_hsv(h: f64, s: f64, v: f64) -> [f64; 3] {
+    if s == 0.0 {
+        return [v, v, v];
+    }
+    let h = if h == 1.0 { 0.0 } else { h };
+    let z = (h * 6.0).floor();
+    let f = h * 6.0 - z;
+    let (p, q, t) = (v * (1.0 - s), v * (1.0 - s * f), v * (1.0 - s * (1.0 - f)));
+    match z as i32 {
+        0 => [v, t, p],
+        1 => [q, v, p],
+        2 => [p, v, t],
+        3 => [p, q, v],
+        4 => [t, p, v],
+        5 => [v, p, q],
+        _ => [0.0; 3],
+    }
 }
 
-/// The colour of the value w = (u, v) of the function (see the module documentation).
+/// The colour of the value w = (u, v) of the function as bytes, as JWildfire's `SetHSV` gives
+/// them: a channel is 256 times its value, truncated and kept below 256.
 fn domain_colour(u: f64, v: f64) -> [f64; 3] {
+    domain_rgb(u, v).map(|c| f64::from(((256.0 * c) as i32).min(255)))
+}
+
+/// The domain colouring of w = (u, v) that JWildfire's `colordomain` and its followers use
+/// (see the module documentation): the argument as hue, the modulus on a scale of powers of
+/// e as saturation and value; red, green and blue in [0, 1].
+pub(super) fn domain_rgb(u: f64, v: f64) -> [f64; 3] {
     const TAU: f64 = std::f64::consts::TAU;
     let mut a = v.atan2(u);
     // The argument in [0, 2π) (a NaN argument stays NaN).
@@ -95,7 +100,7 @@ fn domain_colour(u: f64, v: f64) -> [f64; 3] {
     };
     let sat = 0.4 + (1.0 - (1.0 - tri).powf(3.0)) * 0.6;
     let val = 0.6 + (1.0 - tri.powf(3.0)) * 0.4;
-    hsv_bytes(a, sat, val)
+    set_hsv(a, sat, val)
 }
 
 /// colordomain: a random node of the grid, coloured by the function there.

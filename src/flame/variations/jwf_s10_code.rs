@@ -14,6 +14,7 @@
 //! algorithmic-worlds.net/blog/blog.php?Post=20110227. Written anew.
 
 use super::jwf_direct_colour::dc_luma;
+use super::jwf_h9b_code::domain_rgb as domain_colour;
 use super::*;
 
 /// The `code` text parameter: empty for JWildfire's default (a file holding the default's
@@ -126,55 +127,6 @@ fn bytes(c: [f64; 3]) -> [i64; 3] {
 /// log₂ as JWildfire computes it: ln x / ln 2.
 fn log2(x: f64) -> f64 {
     x.ln() / std::f64::consts::LN_2
-}
-
-/// Hue, saturation and value (each in [0, 1]) to red, green and blue (JWildfire's `SetHSV`).
-fn set_hsv(h: f64, s: f64, v: f64) -> [f64; 3] {
-    if s == 0.0 {
-        return [v, v, v];
-    }
-    let h = if h == 1.0 { 0.0 } else { h };
-    let z = (h * 6.0).floor();
-    let f = h * 6.0 - z;
-    let (p, q, t) = (v * (1.0 - s), v * (1.0 - s * f), v * (1.0 - s * (1.0 - f)));
-    match z as i32 {
-        0 => [v, t, p],
-        1 => [q, v, p],
-        2 => [p, v, t],
-        3 => [p, q, v],
-        4 => [t, p, v],
-        5 => [v, p, q],
-        _ => [0.0; 3],
-    }
-}
-
-/// The domain colouring of w = (u, v) JWildfire's `colordomain` and its followers use: the
-/// argument as hue, the modulus on a scale of powers of e as saturation and value.
-fn domain_colour(u: f64, v: f64) -> [f64; 3] {
-    const TAU: f64 = std::f64::consts::TAU;
-    let mut a = v.atan2(u);
-    if a < 0.0 {
-        a += TAU;
-    }
-    a /= TAU;
-    let m = (u * u + v * v).sqrt();
-    // e^(k−1) ≤ … < m ≤ e^k, 0 below 1; past 710 steps e^k is infinite (bounded loop).
-    let (mut lo, mut hi) = (0.0, 1.0);
-    let mut steps = 0;
-    while m > hi && steps < 720 {
-        lo = hi;
-        hi *= std::f64::consts::E;
-        steps += 1;
-    }
-    let k = (m - lo) / (hi - lo);
-    let tri = if k >= 0.5 {
-        1.0 - (k - 0.5) * 2.0
-    } else {
-        k * 2.0
-    };
-    let sat = 0.4 + (1.0 - (1.0 - tri).powf(3.0)) * 0.6;
-    let val = 0.6 + (1.0 - tri.powf(3.0)) * 0.4;
-    set_hsv(a, sat, val)
 }
 
 /// JWildfire's own colour (bytes) for the point, or the nearest key of the palette to it.
@@ -569,6 +521,7 @@ fn ducks(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 #[cfg(test)]
 mod tests {
     use super::super::jwf_h9a_code::code_problem;
+    use super::super::jwf_h9b_code::set_hsv;
     use super::*;
 
     #[test]
