@@ -27,7 +27,7 @@ impl Chaos {
     /// at every step each orbit draws its xform, and each xform is applied to all the orbits
     /// that drew it as one array computation. The orbits persist between calls (a worker keeps
     /// one [`Lanes`] for its whole render): every orbit starts at a random point, is fused for
-    /// 15 steps and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; one
+    /// 15 steps (see [`Chaos::fuse`]) and retries bad values up to 4 times, as in [`Chaos::run_sub_batch`]; one
     /// orbit, chosen at random, restarts (fused) at every call, so that orbits live about as
     /// long as flam3's (one per sub-batch of 10 000 samples).
     ///
@@ -97,18 +97,21 @@ impl Chaos {
     }
 
     /// Start every orbit at a random point on the first call; on later calls restart one
-    /// orbit, chosen at random, fused.
+    /// orbit, chosen at random, fused (not for a flame JWildfire's renderer draws, whose
+    /// orbits live for the whole render: see [`JWF_FUSE`](super::JWF_FUSE)).
     #[inline(always)]
     fn start_orbits(&self, ln: &mut Lanes, rng: &mut FastRng) {
         if !ln.started {
+            let fuse = -(self.fuse() as i32);
             let o = &mut ln.sets[ln.cur & 1];
             for l in 0..LANES {
                 let p = Self::start_point(rng);
                 (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
                 o.rgb[l] = 0;
+                o.step[l] = fuse;
             }
             ln.started = true;
-        } else {
+        } else if !self.jwf_bad_values {
             // flam3 starts a new orbit for every sub-batch of 10 000 samples; a flame that
             // converges slowly (one contracting xform, say) shows the path towards its
             // attractor from each start. Restart one orbit per call, chosen at random: every

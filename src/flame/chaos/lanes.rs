@@ -7,7 +7,7 @@ use super::{FUSE, LANES};
 /// The state of [`LANES`] orbits: position, colour coordinate, own colour (see
 /// [`crate::flame::variations::own_rgb`]; carried only for flames that have them), the xform
 /// applied last (xaos row; `u16::MAX` before the first), consecutive bad values, and steps
-/// done (an orbit plots once this is ≥ 0; it starts at −FUSE). Under JWildfire's rule for bad
+/// done (an orbit plots once this is ≥ 0; it starts at minus the fuse, [`Chaos::fuse`](super::Chaos::fuse)). Under JWildfire's rule for bad
 /// values an orbit waiting for its restart has [`WAITING`] consecutive bad values.
 #[derive(Clone, Debug)]
 pub(super) struct Orbits {

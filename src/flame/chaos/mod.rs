@@ -32,6 +32,15 @@ use crate::flame::variations;
 pub const CHOOSE_GRAIN: usize = 16384;
 /// Fuse iterations at the start of every sub-batch (flam3 `FUSE_27`).
 pub const FUSE: i64 = 15;
+/// Fuse iterations of an orbit of a flame JWildfire's renderer draws. JWildfire fuses each
+/// orbit for 43 steps (`Constants.INITIAL_ITERATIONS`), but it runs one orbit per render
+/// thread for the whole render, so the path from an orbit's start towards the attractor is a
+/// negligible share of its samples. ugnis runs [`LANES`] orbits per thread, which would draw
+/// those paths hundreds of times over (a slowly contracting xform leaves a haze of dots around
+/// the attractor that JWildfire's pictures do not have): its orbits of such a flame are fused
+/// long enough to reach the attractor (a contraction of 0.97 per step shrinks a start's
+/// distance by 10⁻¹³ in 1000 steps), and they live for the whole render.
+pub const JWF_FUSE: i64 = 1000;
 /// Samples per sub-batch.
 pub const SUB_BATCH: u64 = 10_000;
 /// Number of independent orbits iterated together by [`Chaos::run_lanes`].
@@ -395,11 +404,17 @@ impl Chaos {
         Pt { x, y, z: 0.0, c }
     }
 
+    /// The fuse of an orbit: [`JWF_FUSE`] for a flame JWildfire's renderer draws, else
+    /// flam3's [`FUSE`].
+    pub fn fuse(&self) -> i64 {
+        if self.jwf_bad_values { JWF_FUSE } else { FUSE }
+    }
+
     /// A random start point iterated through the fuse, and the xform applied last.
     fn fused_start(&self, rng: &mut FastRng) -> (Pt, usize) {
         let mut p = Self::start_point(rng);
         let mut last = None;
-        for _ in 0..FUSE {
+        for _ in 0..self.fuse() {
             let i = self.choose(last, rng);
             p = self.xforms[i].apply(p, rng).0;
             last = Some(i);
@@ -412,7 +427,7 @@ impl Chaos {
     #[inline(always)]
     pub fn run_sub_batch<F: FnMut(Pt, f64)>(&self, n: u64, rng: &mut FastRng, mut plot: F) -> u64 {
         let mut p = Self::start_point(rng);
-        let mut k: i64 = -FUSE;
+        let mut k: i64 = -self.fuse();
         let mut consec = 0u32;
         let mut bad = 0u64;
         let mut last = None;
