@@ -110,7 +110,9 @@ pub(super) static DEFS: &[VarDef] = &[
                 | flag::USES_Z
                 | flag::WRITES_Z
                 | flag::SETS_COLOR
-                | flag::USES_COLOR,
+                | flag::USES_COLOR
+                | flag::READS_AFFINE_POINT
+                | flag::READS_ACC,
         )
         .prepare(prep_post_smartcrop),
     super::inlined!("vignette", vignette)
@@ -643,9 +645,10 @@ fn prep_post_smartcrop(v: &mut Prepared) {
 
 /// post_smartcrop: crops the summed point to a polygon (power ≥ 2 sides, optionally rounded
 /// and distorted) or to an angular sector (power < 2); cropped points are removed, pushed onto
-/// the crop edge (scattered), or replaced by the last kept point. Fractorium's `static` modes
-/// ≤ 1 read the xform's pre-variation point, which this framework does not pass to post_
-/// variations: the summed point is used instead.
+/// the crop edge (scattered), or replaced by the last kept point. The `static` modes above 1
+/// crop the summed point (`acc`); the others crop the point the xform's regular variations saw
+/// (the input `t`, [`flag::READS_AFFINE_POINT`]) and add the result to the sum, as Fractorium
+/// (`PostSmartcropVariation`) and JWildfire 9.00 (`PostSmartCropFunc`) both do.
 #[inline(always)]
 fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [
@@ -665,7 +668,13 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
     let w = v.w;
     let mode = mode as i32;
     let absolute = stat > 1.0 || stat == -1.0;
-    let (xi, yi, zi) = (t.x, t.y, t.z);
+    // The sum so far, which a relative mode adds to.
+    let sum = [acc.x, acc.y, acc.z];
+    let (xi, yi, zi) = if stat > 1.0 {
+        (sum[0], sum[1], sum[2])
+    } else {
+        (t.x, t.y, t.z)
+    };
     let ang = yi.atan2(xi);
     let rad = (xi * xi + yi * yi).sqrt();
     let st = &v.state;
@@ -675,7 +684,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
         if absolute {
             s
         } else {
-            [t.x + s[0], t.y + s[1], t.z + s[2]]
+            [sum[0] + s[0], sum[1] + s[1], sum[2] + s[2]]
         }
     };
     let placed = |r: f64, a: f64| -> V3 {
@@ -683,7 +692,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
         if absolute {
             o
         } else {
-            [t.x + o[0], t.y + o[1], t.z + o[2]]
+            [sum[0] + o[0], sum[1] + o[1], sum[2] + o[2]]
         }
     };
     if radial != 0.0 {
@@ -741,11 +750,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
                 return placed(rdc, ang + rotation);
             }
             // Removed: the origin in the absolute modes; otherwise the point is left as is.
-            return if absolute {
-                [0.0, 0.0, 0.0]
-            } else {
-                [t.x, t.y, t.z]
-            };
+            return if absolute { [0.0, 0.0, 0.0] } else { sum };
         }
     }
     // Kept: remember it (scaled by the weight) for the "last kept point" crop mode.
@@ -759,7 +764,7 @@ fn post_smartcrop(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
     if stat > 0.0 {
         s
     } else {
-        [t.x + s[0], t.y + s[1], t.z + s[2]]
+        [sum[0] + s[0], sum[1] + s[1], sum[2] + s[2]]
     }
 }
 
@@ -801,4 +806,52 @@ fn vignette(v: &Prepared, t: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         py += blur_r * blur_a.fsin();
     }
     [px * v.w, py * v.w, 0.0]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::affine::Affine;
+
+    /// post_smartcrop with `static` set, power 4 (a square of radius 1), keeping the inside.
+    fn smartcrop(stat: f64) -> Prepared {
+        let (id, form) = parse_name("post_smartcrop").expect("registered");
+        let mut vals = info(id).defaults();
+        let (_, _, k) = param_of("post_smartcrop_static").expect("a parameter");
+        vals[k] = stat;
+        Prepared::new(id, form, 1.0, &vals, Affine::default(), true)
+    }
+
+    fn sum_at(x: f64, y: f64) -> Acc {
+        Acc {
+            x,
+            y,
+            z: 0.0,
+            color: 0.5,
+            hide: false,
+            rgb: None,
+        }
+    }
+
+    #[test]
+    fn smartcrop_reads_the_affine_point_unless_static_is_above_1() {
+        let mut rng = FastRng::new(7);
+        let affine = [0.1, 0.2, 0.0];
+        // static 0: the affine point (inside) is kept and added to the sum (outside).
+        let mut acc = sum_at(5.0, 5.0);
+        smartcrop(0.0).apply_post_after(&affine, &mut acc, 0.5, &mut rng);
+        assert!((acc.x - 5.1).abs() < 1e-12 && (acc.y - 5.2).abs() < 1e-12);
+        // static 1: a kept affine point replaces the sum.
+        let mut acc = sum_at(5.0, 5.0);
+        smartcrop(1.0).apply_post_after(&affine, &mut acc, 0.5, &mut rng);
+        assert!((acc.x - 0.1).abs() < 1e-12 && (acc.y - 0.2).abs() < 1e-12);
+        // An affine point outside is pushed onto the crop's edge, and that is added.
+        let mut acc = sum_at(5.0, 5.0);
+        smartcrop(1.0).apply_post_after(&[3.0, 0.0, 0.0], &mut acc, 0.5, &mut rng);
+        assert!((acc.x - 6.0).abs() < 1e-9 && (acc.y - 5.0).abs() < 1e-9);
+        // static 2: the sum itself is cropped (onto the edge, replacing it).
+        let mut acc = sum_at(3.0, 0.0);
+        smartcrop(2.0).apply_post_after(&affine, &mut acc, 0.5, &mut rng);
+        assert!((acc.x - 1.0).abs() < 1e-9 && acc.y.abs() < 1e-9);
+    }
 }
