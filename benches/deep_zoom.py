@@ -21,7 +21,8 @@ an exact per-pixel computation in big fixed point) is the test `escape::deep::te
 (`cargo test --lib escape::deep`); on the seahorse view's own 16x12 grid (width 1e-25, 30,000
 iterations) `the_bench_view_is_as_exact_as_fractalshades_at_matched_tolerance` (run with
 `--ignored`; UGNIS_BLA_EPS=a,b also reports other tolerances) gets 190 of 192 pixels (99.0 %)
-at the default 2^-44, and also at 2^-43 and 2^-42; 189 at 1e-12, 185 at 1e-10.
+at the default 2^-44, and also at 2^-43, 2^-42 and 1e-12; 188 at 1e-10, 178 at 1e-6 (with
+the quadratic steps; with the bilinear ones it was 189 at 1e-12 and 185 at 1e-10).
 
     python3 benches/deep_zoom.py --ugnis target/release/ugnis --fs-python /path/to/python
 

@@ -215,7 +215,8 @@ fn bilinear_steps_skip_most_iterations() {
     let st = r.main.bla.find(1, dc.abs(), 10_000).unwrap();
     assert!(st.len >= 128, "first step {}", st.len);
     // The plain loop's quadratic steps land where the single steps do, for differences up
-    // to their radius and offsets up to the view's largest.
+    // to their radius and offsets up to the view's largest (the worst relative difference
+    // found is about 1e-14).
     let last = r.main.z.len() - 1;
     let radius = view.offset_from_pixel_fx(0.0, 0.0, w, h).abs().to_f64();
     let (mut checked, mut worst) = (0, 0.0f64);
@@ -243,7 +244,7 @@ fn bilinear_steps_skip_most_iterations() {
                 }
                 let err = (q - d).abs() / d.abs();
                 worst = worst.max(err);
-                assert!(err < 1e-9, "m {m} level {k}: {q:?} against {d:?}");
+                assert!(err < 1e-12, "m {m} level {k}: {q:?} against {d:?}");
                 checked += 1;
             }
         }
