@@ -21,9 +21,18 @@ an exact per-pixel computation in big fixed point) is the test `escape::deep::te
 (`cargo test --lib escape::deep`); on the seahorse view's own 16x12 grid (width 1e-25, 30,000
 iterations) `the_bench_view_is_as_exact_as_fractalshades_at_matched_tolerance` (run with
 `--ignored`; UGNIS_BLA_EPS=a,b also reports other tolerances) gets 190 of 192 pixels (99.0 %)
-at the default 2^-44, and also at 2^-43 and 2^-42; 189 at 1e-12, 185 at 1e-10.
+at the default 2^-44, and also at 2^-43, 2^-42 and 1e-12; 188 at 1e-10, 178 at 1e-6 (with
+the quadratic steps; with the bilinear ones it was 189 at 1e-12 and 185 at 1e-10).
 
     python3 benches/deep_zoom.py --ugnis target/release/ugnis --fs-python /path/to/python
+
+Seahorse with quadratic steps in ugnis' plain-f64 loop (src/escape/bla_quad.rs), 2 threads,
+640x480, load 8-10: ugnis 7.18 s wall, 2.63 s CPU; Fractalshades 9.06 s (4.23 s CPU) at its
+default, 34.71 s (18.35 s CPU) at 1e-14: wall ratio 0.79 and 0.21, CPU ratio 0.62 and 0.14.
+On one thread, back to back, the bilinear build took 10.2-11.1 s CPU and the quadratic one
+2.5-2.6 s; --accuracy unchanged at 99.0 % (190 of 192); at --bla-tolerance 1e-6 ugnis takes
+0.95 s CPU on one thread (86 % of the grid within 0.05, as before). The older figures below
+are for the bilinear steps.
 
 Measured on 2 threads, 640x480, with the 2-core machine at load 11-12 (ugnis' wall time over
 Fractalshades', CPU ratio in brackets): seahorse 1e-25 2.78 (2.70) against Fractalshades'

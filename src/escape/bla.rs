@@ -13,21 +13,22 @@
 //! |δc|max the largest pixel offset of the view. The table holds, for each level k ≥ 1, the
 //! merged steps of 2^k iterations starting at m = 1 + j·2^k; a pixel at index m takes the
 //! longest one whose radius admits it. Julia sets have no δc term: B = 0.
+//!
+//! These steps serve the extended-exponent and derivative paths of [`super::deep`]; the
+//! plain-f64 loop of z² + c takes quadratic steps instead ([`super::bla_quad`]), whose
+//! radius is about √(ε·|Z|) per step rather than ε·|2Z|.
 
 use super::complex::C;
 use super::fx::{Cx, Fx};
 
-/// The default relative size ε below which a non-linear term is dropped. f64's unit
-/// round-off (2^-53) drops nothing f64 would keep, but admits so few steps that half of the
-/// iterations of a seahorse-valley view at 1e-25 (30,000 iterations) are taken one by one;
-/// 2^-44 skips about half of those and keeps its continuous counts as close to exact
-/// iteration as no approximation at all: on a 16×12 grid of that view the same 181 pixels
-/// agree within 0.05 as with every iteration perturbed singly (ε = 0), or without rebasing;
-/// the other 11 are lost to f64 rounding of the differences. 2^-43 already loses a pixel.
-/// Larger values trade correctness for speed: 1e-10 loses 6 more pixels and Fractalshades'
-/// default 1e-6 32 more, and on that view they leave 2.2 and 8 times fewer iterations to take
-/// one by one. (Fractalshades itself, at its default 1e-6, has 85 % of a grid of that view
-/// within 0.05 of exact iteration; it reaches its unapproximated 99 % at 1e-14.)
+/// The default relative size ε below which a non-linear term is dropped (by the bilinear
+/// steps; by the quadratic ones of [`super::bla_quad`], the terms of degree three). f64's unit
+/// round-off (2^-53) drops nothing f64 would keep, but admits few bilinear steps. On a 16×12
+/// grid of a seahorse-valley view at 1e-25 (30,000 iterations, the plain loop's quadratic
+/// steps) 2^-44 leaves 190 pixels within 0.05 of exact iteration, as do 2^-43, 2^-42 and
+/// 1e-12; 1e-10 leaves 188 and Fractalshades' default 1e-6 178, and at 640×480 they take
+/// 0.58 and 0.37 times the CPU time. (Fractalshades itself, at its default 1e-6, has 85 % of a grid of
+/// that view within 0.05 of exact iteration; it reaches its unapproximated 99 % at 1e-14.)
 pub const EPSILON: f64 = 1.0 / (1u64 << 44) as f64;
 
 /// The range a user may choose ε from: f64's unit round-off to a thousandth.
@@ -55,6 +56,9 @@ pub struct Bla {
     /// the test most iterations make touches 8 bytes.
     radii: Vec<Vec<f64>>,
     coeffs: Vec<Vec<[C; 2]>>,
+    /// z² + c: the plain loop's steps are quadratic ([`super::bla_quad`]): `radii` are
+    /// theirs, `coeffs` their A and B, and these their C, D and E (empty for other maps).
+    quad: Vec<Vec<[C; 3]>>,
     /// The radius of the first level by starting index (0 at even indices, where no step
     /// starts): one load and comparison turn down the iterations that take no step.
     first: Vec<f64>,
@@ -83,9 +87,9 @@ fn merge(x: &Step, y: &Step, dc_max: Fx) -> Step {
 }
 
 /// Bytes the table of an orbit of `len` points takes (about one merged step per point, its
-/// f64 copy and the first level's radii by index).
+/// f64 copy with the quadratic coefficients and the first level's radii by index).
 pub fn table_bytes(len: u64) -> u64 {
-    len * (std::mem::size_of::<Step>() + std::mem::size_of::<[C; 2]>() + 16) as u64
+    len * (std::mem::size_of::<Step>() + std::mem::size_of::<[C; 5]>() + 16) as u64
 }
 
 impl Bla {
@@ -139,24 +143,29 @@ impl Bla {
         }
         levels.push(prev);
         let in_f64 = |c: &Cx| c.is_zero() || (-1000..1000).contains(&c.e);
-        let radii: Vec<Vec<f64>> = levels
-            .iter()
-            .map(|l| {
-                l.iter()
-                    .map(|st| {
-                        if in_f64(&st.a) && in_f64(&st.b) {
-                            st.r64
-                        } else {
-                            0.0
-                        }
-                    })
-                    .collect()
-            })
-            .collect();
-        let coeffs = levels
-            .iter()
-            .map(|l| l.iter().map(|st| [st.a.to_c(), st.b.to_c()]).collect())
-            .collect();
+        let (radii, coeffs, quad) = if degree == 2 {
+            super::bla_quad::table(z, dc_max, with_c, eps)
+        } else {
+            let radii: Vec<Vec<f64>> = levels
+                .iter()
+                .map(|l| {
+                    l.iter()
+                        .map(|st| {
+                            if in_f64(&st.a) && in_f64(&st.b) {
+                                st.r64
+                            } else {
+                                0.0
+                            }
+                        })
+                        .collect()
+                })
+                .collect();
+            let coeffs = levels
+                .iter()
+                .map(|l| l.iter().map(|st| [st.a.to_c(), st.b.to_c()]).collect())
+                .collect();
+            (radii, coeffs, Vec::new())
+        };
         let mut first = vec![0.0; last + 1];
         for (j, &r) in radii.first().into_iter().flatten().enumerate() {
             first[1 + 2 * j] = r;
@@ -166,6 +175,7 @@ impl Bla {
             first,
             radii,
             coeffs,
+            quad,
             last,
         }
     }
@@ -209,10 +219,12 @@ impl Bla {
         best
     }
 
-    /// As [`Bla::find_f64`] with the coefficients in f64: (A, B, length). `m` must be odd
-    /// (the steps start at m = 1 + j·2^k) and `d1` is |re| + |im| of the difference.
+    /// The plain loop's step from reference index m admitting |re| + |im| = `d1` of the
+    /// difference and at most `room` iterations, as its level, place and length. `m` must be
+    /// odd (the steps start at m = 1 + j·2^k). For z² + c these are the quadratic steps, for
+    /// z³ + c the bilinear ones of [`Bla::find_f64`].
     #[inline(always)]
-    pub fn find_plain(&self, m: usize, d1: f64, room: u32) -> Option<(C, C, u32)> {
+    pub fn find_plain(&self, m: usize, d1: f64, room: u32) -> Option<(usize, usize, u32)> {
         let k0 = ((m - 1).trailing_zeros() as usize).min(self.radii.len());
         let mut found = None;
         for k in 0..k0 {
@@ -224,10 +236,37 @@ impl Bla {
             }
             found = Some((k, j, len));
         }
-        found.map(|(k, j, len)| {
-            let [a, b] = self.coeffs[k][j];
-            (a, b, len)
-        })
+        found
+    }
+
+    /// The coefficients A and B of the plain loop's step at level k, place j (0 past the table).
+    #[inline(always)]
+    pub fn plain_linear(&self, k: usize, j: usize) -> [C; 2] {
+        self.coeffs
+            .get(k)
+            .and_then(|l| l.get(j))
+            .copied()
+            .unwrap_or([C::ZERO; 2])
+    }
+
+    /// The radius (|re| + |im|) of the plain loop's step at level k, place j (0 past the table).
+    #[cfg(test)]
+    pub fn plain_radius(&self, k: usize, j: usize) -> f64 {
+        self.radii
+            .get(k)
+            .and_then(|l| l.get(j))
+            .copied()
+            .unwrap_or(0.0)
+    }
+
+    /// The quadratic coefficients C, D and E of the same step (0 but for z² + c).
+    #[inline(always)]
+    pub fn plain_quad(&self, k: usize, j: usize) -> [C; 3] {
+        self.quad
+            .get(k)
+            .and_then(|l| l.get(j))
+            .copied()
+            .unwrap_or([C::ZERO; 3])
     }
 
     /// The radius of the first level's step from reference index m (0 where none starts:

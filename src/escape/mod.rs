@@ -8,6 +8,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub(crate) mod bla;
+mod bla_quad;
 pub mod centre;
 mod color;
 mod complex;
