@@ -8,12 +8,14 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub(crate) mod bla;
+mod bla_ship;
 pub mod centre;
 mod color;
 mod complex;
 pub(crate) mod dd;
 mod deep;
 mod deep_plain;
+mod deep_ship;
 mod doc;
 pub(crate) mod family;
 pub mod fx;
