@@ -15,7 +15,8 @@
 //! Where δ is too small for f64 (offsets below about 1e-300) it is kept as an extended-
 //! exponent number ([`Cx`]) until it has grown into f64's range.
 //!
-//! Most iterations are skipped by bilinear approximation ([`super::bla`]). Glitches are
+//! Most iterations are skipped by bilinear approximation ([`super::bla`]; the Burning
+//! Ship's, with real 2×2 matrices, [`super::bla_ship`]). Glitches are
 //! avoided by rebasing (Zhuoran): when the pixel's orbit comes closer to 0 than its
 //! difference (|Z + δ| < |δ|), or the reference ends, the pixel continues from the start of
 //! an orbit that begins at 0 (δ := Z + δ, n_ref := 0): the reference itself for the
@@ -26,9 +27,11 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use dashu_int::IBig;
 
 use super::bla::Bla;
+use super::bla_ship::ShipBla;
 use super::centre::{Centre, ibig_to_fx};
 use super::complex::C;
 use super::deep_plain;
+use super::deep_ship;
 use super::family::{IterSettings, Sample, ship_fold, smooth_count};
 use super::fx::{Cx, Fx, ldexp};
 
@@ -62,6 +65,8 @@ pub struct Orbit {
     /// Z(0), Z(1), … until the orbit escaped or reached the iteration limit.
     pub z: Vec<C>,
     pub bla: Bla,
+    /// The Burning Ship's bilinear table (empty for the other maps, whose table is `bla`).
+    pub ship: ShipBla,
 }
 
 /// The reference of a deep view.
@@ -190,16 +195,15 @@ impl Reference {
         let bits = bits_for(pixel) * if julia.is_some() { 2 } else { 1 };
         let c0 = centre.to_binary(bits);
         let zero = || [IBig::ZERO, IBig::ZERO];
+        let dc_max = |with_c: bool| if with_c { radius } else { Fx::ZERO };
         let table = |z: Vec<C>, with_c: bool| Orbit {
+            ship: match map {
+                Map::Ship => ShipBla::new(&z, dc_max(with_c), with_c, bla_eps),
+                _ => ShipBla::default(),
+            },
             bla: match map {
                 Map::Ship => Bla::default(),
-                _ => Bla::new(
-                    &z,
-                    map.degree(),
-                    if with_c { radius } else { Fx::ZERO },
-                    with_c,
-                    bla_eps,
-                ),
+                _ => Bla::new(&z, map.degree(), dc_max(with_c), with_c, bla_eps),
             },
             z,
         };
@@ -283,6 +287,24 @@ impl Pixel<'_> {
         self.der = self.der.mul_c(k).add(Cx::new(one, 0.0, 0));
     }
 
+    /// The Burning Ship's longest bilinear step admitting difference `d` from here, taken:
+    /// the new difference (None for the other maps, and where no step admits `d`).
+    fn ship_skip(&mut self, d: Cx, s: &IterSettings) -> Option<Cx> {
+        if self.r.map != Map::Ship {
+            return None;
+        }
+        let st = self.orbit.ship.find(self.m, d.abs(), s.max_iter - self.n)?;
+        if s.want_de {
+            // The Jacobian's columns: J ← A·J + B.
+            let col = |v: f64, w: f64| st.b.apply(Cx::new(v, w, 0));
+            self.der = st.a.apply(self.der).add(col(1.0, 0.0));
+            self.der_im = st.a.apply(self.der_im).add(col(0.0, 1.0));
+        }
+        self.m += st.len as usize;
+        self.n += st.len;
+        Some(st.a.apply(d).add(st.b.apply(self.dc)))
+    }
+
     /// Rebase onto the orbit that starts at 0.
     fn rebase(&mut self) {
         self.m = 0;
@@ -318,7 +340,9 @@ impl Pixel<'_> {
                 return Outcome::Done(Sample::inside(s.max_iter));
             }
             let z = self.orbit.z[self.m];
-            if let Some(st) = self.orbit.bla.find(self.m, d.abs(), s.max_iter - self.n) {
+            if let Some(next) = self.ship_skip(d, s) {
+                d = next;
+            } else if let Some(st) = self.orbit.bla.find(self.m, d.abs(), s.max_iter - self.n) {
                 d = st.a.mul(d).add(st.b.mul(self.dc));
                 if s.want_de {
                     self.der = st.a.mul(self.der).add(st.b);
@@ -367,7 +391,9 @@ impl Pixel<'_> {
             } else {
                 None
             };
-            if let Some(st) = step {
+            if let Some(next) = self.ship_skip(Cx::from_c(d), s) {
+                d = next.to_c();
+            } else if let Some(st) = step {
                 d = st.a.mul_c(d).add(st.b.mul(self.dc)).to_c();
                 if s.want_de {
                     self.der = st.a.mul(self.der).add(st.b);
@@ -485,12 +511,21 @@ pub fn iterate_many(r: &Reference, dcs: &[Cx], s: &IterSettings, pixel: Fx) -> V
         })
     };
     let deg = r.map.degree() as f64;
-    deep_plain::run(&orbits, r.map, s, next, |k, end| {
+    let done = |k: usize, end| {
         out[k] = match end {
             deep_plain::End::Escaped { n, z, r2 } => s.escape_sample(n, z, r2, C::ONE, deg),
             deep_plain::End::Inside => Sample::inside(s.max_iter),
         }
-    });
+    };
+    if r.map == Map::Ship {
+        let orbits = deep_ship::ShipOrbits {
+            main: (&r.main.z, &r.main.ship),
+            base: (&base.z, &base.ship),
+        };
+        deep_ship::run(&orbits, s, next, done);
+    } else {
+        deep_plain::run(&orbits, r.map, s, next, done);
+    }
     out
 }
 

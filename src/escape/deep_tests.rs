@@ -199,6 +199,112 @@ fn burning_ship_agrees_with_exact_iteration() {
     }
 }
 
+/// The centre of Fractalshades' example "12 - Burning ship deep" (a period-9,622 miniship of
+/// size 3.4e-265), its imaginary part negated: Fractalshades iterates y ← 2|xy| − b.
+const SHIP_DEEP_X: &str = "-1.99638112292592965329403782831125346996664185255135402827974584999638456165654\
+     33002317348463723892008844734003260474022592153652996510000493079672207971742209203082500\
+     39037884064184875313550754352410343246674089430454249309097057276774162871180276065193880\
+     170743903875782";
+const SHIP_DEEP_Y: &str = "-0.00000476330372839277074601469236202986586671169161209597457133172150779470960\
+     76040509814670657369206760374813788282766429440720697568351829534511099050778810611398876\
+     61561617020726899218853890425452233104923366681895875677542245236396274857406762304353824\
+     848557938906613374564";
+
+#[test]
+fn burning_ship_bilinear_steps_agree_with_exact_iteration() {
+    // On the way to a deep miniship: at 1e-30 pixels escape after 600–1,000 iterations, at
+    // 1e-100 after 4,700–5,300, most of them skipped by the ship's matrix steps.
+    let s = settings(20_000, false);
+    for half in ["1e-30", "1e-100"] {
+        let view = deep_view(SHIP_DEEP_X, SHIP_DEEP_Y, half);
+        let (frac, distinct) = agreement(&Family::BurningShip, &view, 16, 12, &s);
+        assert!(distinct >= 10, "{half}: {distinct} counts");
+        assert!(frac >= 0.99, "{half}: {frac}");
+    }
+}
+
+#[test]
+fn the_cubic_zooms_deep_with_its_bilinear_steps() {
+    // The Misiurewicz point of z³ + c with c² = ω − 1, ω = e^(2πi/3) (0 → c → cω, a fixed
+    // point repelling by 3√3), here to 210 digits: its structure repeats at every depth.
+    let x = "0.34062501931660664019439424403783088897721010254912530311970263261451737734879523\
+             43630988949291399753177594601305713199721022589856485166787850209875432320051377\
+             24559654474662298990842181784879059644210903965593";
+    let y = "1.27122987841870623913561299102106497672841432822677767821367914369348079134474419\
+             69146767160282631933396985181626638437283262450381644243328982863195606645889473\
+             2239665737140153026796895069189345277005717120038";
+    let s = settings(3000, false);
+    for half in ["1e-60", "1e-200"] {
+        let view = deep_view(x, y, half);
+        // The bilinear steps cover the first iterations of every pixel.
+        let (r, _) = reference_of(Map::Cube, None, &view, 12, 9, &s);
+        let dc = view.offset_from_pixel_fx(0.0, 0.0, 12, 9);
+        assert!(
+            r.main.bla.find(1, dc.abs(), 3000).unwrap().len >= 16,
+            "{half}"
+        );
+        let (frac, distinct) = agreement(&Family::Mandelbrot { power: 3 }, &view, 12, 9, &s);
+        assert!(distinct >= 5, "cubic {half}: {distinct} counts");
+        assert!(frac >= 0.99, "cubic {half}: {frac}");
+    }
+}
+
+#[test]
+fn burning_ship_agrees_with_exact_iteration_with_extended_differences() {
+    // The preperiodic point of `burning_ship_agrees_with_exact_iteration`, refined by Newton's
+    // method to 420 digits, at 1e-330: offsets below f64's range, so the first hundred-odd
+    // iterations take the extended loop and its matrix steps.
+    let x = "-1.13597043506866938274084125173067393331192487087676672568587512762188968876712\
+             14050722749752767500239211564794464289730902127573963852139384178347568496371072\
+             66137647023656531165227992031188066647728934534275054232848671953679689359348862\
+             33917858662586860583909102189897166095959350578499009400554486824178550889798994\
+             51419198999470641572881975390534817687734279811309181928150625797318206589839585\
+             32347081713399691153";
+    let y = "-0.62004338639964820097802888287607772101304192405303161456394601330533148794299\
+             67831022139600616465476030874385780529112318004806020983347947941662108983726245\
+             75163846941793646094380205244377968751786864653958163894484187501979079856952099\
+             51909275514907110540722902288055286560653902057444365913195526154158586999381011\
+             58751318059234965050835604834362185707178988736111087699810220183771449838939249\
+             82203047980704727236";
+    let s = settings(3000, false);
+    let view = deep_view(x, y, "1e-330");
+    let (frac, distinct) = agreement(&Family::BurningShip, &view, 16, 12, &s);
+    assert!(distinct >= 10, "{distinct} counts");
+    // 190 of 192 pixels, the same with every iteration perturbed singly (no bilinear steps):
+    // the two others leave the cycle at a full-size distance, where f64 rounding of their
+    // differences grows (see `burning_ship_agrees_with_exact_iteration`).
+    assert!(frac >= 0.98, "{frac}");
+}
+
+#[test]
+fn burning_ship_steps_skip_most_iterations() {
+    let s = settings(20_000, true);
+    let view = deep_view(SHIP_DEEP_X, SHIP_DEEP_Y, "1e-100");
+    let (w, h) = (8, 6);
+    let (r, pixel) = reference_of(Map::Ship, None, &view, w, h, &s);
+    assert!(r.main.ship.len() > 4000, "{}", r.main.ship.len());
+    let dc = view.offset_from_pixel_fx(1.0, 1.0, w, h);
+    let st = r.main.ship.find(1, dc.abs(), 10_000).unwrap();
+    assert!(st.len >= 64, "first step {}", st.len);
+    // Distance estimates through the matrix steps: pixels next to the boundary are within
+    // a few pixels of it.
+    let des: Vec<f32> = (0..w)
+        .map(|i| {
+            iterate(
+                &r,
+                view.offset_from_pixel_fx(i as f64, 2.0, w, h),
+                &s,
+                pixel,
+            )
+            .de
+        })
+        .collect();
+    assert!(
+        des.iter().all(|d| d.is_finite() && *d > 0.0 && *d < 50.0),
+        "{des:?}"
+    );
+}
+
 #[test]
 fn bilinear_steps_skip_most_iterations() {
     // At 1e-100 near i, pixels escape after about 270 iterations; the table covers them in

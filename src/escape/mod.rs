@@ -9,12 +9,14 @@
 
 pub(crate) mod bla;
 mod bla_quad;
+mod bla_ship;
 pub mod centre;
 mod color;
 mod complex;
 pub(crate) mod dd;
 mod deep;
 mod deep_plain;
+mod deep_ship;
 mod doc;
 pub(crate) mod family;
 pub mod fx;

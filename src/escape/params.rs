@@ -137,7 +137,12 @@ pub fn estimate_memory(params: &EscapeParams, view: &View, w: u32, h: u32) -> u6
         } else {
             1
         };
-        copies * (iters * std::mem::size_of::<C>() as u64 + super::bla::table_bytes(iters))
+        let table = if matches!(params.family, Family::BurningShip) {
+            super::bla_ship::table_bytes(iters)
+        } else {
+            super::bla::table_bytes(iters)
+        };
+        copies * (iters * std::mem::size_of::<C>() as u64 + table)
     } else {
         0
     };
