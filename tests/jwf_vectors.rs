@@ -56,10 +56,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
     ),
     (
-        "sunvoroni",
-        "not implemented: its colours follow the orientation of each Voronoi cell, which comes from QuickHull3D's face order (megamu.mesh)",
-    ),
-    (
         "svg_wf",
         "not implemented: rasterises its SVG with Java2D antialiasing and samples the pixels (the raster cannot be reproduced exactly)",
     ),

@@ -111,7 +111,7 @@ fn f32r(x: f64) -> f64 {
 /// A random point of the segment from (x1, y1) to (x2, y2), as JWildfire's `plotLine` draws it
 /// (its slope capped at 10 000 for a vertical segment; no thickness: the drawings here never
 /// set one).
-fn line_point(rng: &mut FastRng, x1: f64, y1: f64, x2: f64, y2: f64) -> (f64, f64) {
+pub(super) fn line_point(rng: &mut FastRng, x1: f64, y1: f64, x2: f64, y2: f64) -> (f64, f64) {
     let (dx, dy) = (x2 - x1, y2 - y1);
     let m = if dx == 0.0 { 10000.0 } else { dy / dx };
     let len = (dx * dx + dy * dy).sqrt();

@@ -159,6 +159,7 @@
 //! | `jwf_z_figures` | figures and mirrors (`meeple`, `tqmirror`, `rhodonea`) |
 //! | `jwf_s10_geo_mesh` | JWildfire's built-in meshes built from their geometry (`obj_mesh_primitive_wf`) |
 //! | `jwf_s10_geo_attractor` | a tube around a strange attractor's orbit, as a mesh (`sattractor3D`) |
+//! | `jwf_sv_sunvoroni` | a sunflower's Voronoi diagram, cells filled and edges drawn (`sunvoroni`; its convex hull by QuickHull3D in `jwf_sv_quickhull`) |
 
 pub use crate::flame::affine::Affine;
 
@@ -289,6 +290,8 @@ mod jwf_s10_quad_subs;
 #[cfg(test)]
 mod jwf_s10_quad_tests;
 mod jwf_s10_tritile;
+mod jwf_sv_quickhull;
+mod jwf_sv_sunvoroni;
 mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;

@@ -49,6 +49,8 @@ use super::{
 use super::{jwf_h9a_code, jwf_h9a_fract, jwf_h9a_plots};
 // JWildfire variations driven by Java code, their default code (session 10).
 use super::{jwf_s10_code, jwf_s10_code_dc};
+// JWildfire's sunflower Voronoi diagram (helper h3, session 11).
+use super::jwf_sv_sunvoroni;
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -112,7 +114,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 119] = [
+const FILES: [&[VarDef]; 120] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -242,6 +244,8 @@ const FILES: [&[VarDef]; 119] = [
     jwf_pal_kaleido::DEFS,
     jwf_s10_code::DEFS,
     jwf_s10_code_dc::DEFS,
+    // JWildfire's sunflower Voronoi diagram (helper h3, session 11).
+    jwf_sv_sunvoroni::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -757,6 +761,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "f_complex",
     "ducks",
     "dc_code",
+    "sunvoroni",
 ];
 
 /// Every JWildfire variation's name in registry order.
