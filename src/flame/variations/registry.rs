@@ -49,6 +49,8 @@ use super::{
 use super::{jwf_h9a_code, jwf_h9a_fract, jwf_h9a_plots};
 // JWildfire variations driven by Java code, their default code (session 10).
 use super::{jwf_s10_code, jwf_s10_code_dc};
+// JWildfire variations that sample an anti-aliased drawing (session 11).
+use super::{jwf_aa_svg, jwf_aa_truchet};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -112,7 +114,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 119] = [
+const FILES: [&[VarDef]; 121] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -242,6 +244,9 @@ const FILES: [&[VarDef]; 119] = [
     jwf_pal_kaleido::DEFS,
     jwf_s10_code::DEFS,
     jwf_s10_code_dc::DEFS,
+    // JWildfire's variations that sample an anti-aliased drawing (helper h4, session 11).
+    jwf_aa_svg::DEFS,
+    jwf_aa_truchet::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -757,6 +762,8 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "f_complex",
     "ducks",
     "dc_code",
+    "svg_wf",
+    "msTruchet",
 ];
 
 /// Every JWildfire variation's name in registry order.
