@@ -421,7 +421,7 @@ mod tests {
             .iter()
             .map(|&(x, y)| (100.0 + x * co - y * s, 100.0 + x * s + y * co))
             .collect();
-        let got = covered(&[sq.clone()], FillRule::NonZero);
+        let got = covered(std::slice::from_ref(&sq), FillRule::NonZero);
         assert!((got - 6400.0).abs() < 1e-3 * 6400.0, "{got}");
         // Without anti-aliasing: whole pixels, about as many as the area.
         let mut n = 0.0;

@@ -212,6 +212,7 @@ mod jwf_a_warps;
 mod jwf_aa_raster;
 mod jwf_aa_svg;
 mod jwf_aa_svgdoc;
+mod jwf_aa_svgpath;
 mod jwf_aa_truchet;
 mod jwf_b_3d;
 mod jwf_b_complex;
