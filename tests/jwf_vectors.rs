@@ -44,10 +44,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
     ),
     (
-        "msTruchet",
-        "not implemented: draws its tiles into a Java2D antialiased image and samples its pixels (the antialiased raster cannot be reproduced exactly)",
-    ),
-    (
         "obj_mesh_primitive_wf",
         "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
     ),
@@ -57,7 +53,7 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
     (
         "svg_wf",
-        "not implemented: rasterises its SVG with Java2D antialiasing and samples the pixels (the raster cannot be reproduced exactly)",
+        "implemented (its own anti-aliased rasteriser and SVG reader); its built-in default drawing is JWildfire's (an Inkscape drawing in SVGWFFunc's LGPL source), which ugnis does not copy: it draws a drawing of its own by default. With JWildfire's drawing given as the SVG text, every row passed (checked when it was written, 2026-11-28)",
     ),
     (
         "taprats",

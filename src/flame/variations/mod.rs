@@ -132,6 +132,8 @@
 //! | `jwf_s10_tritile` | a random point of a random tile of a triangle substitution tiling (`dc_triTile`) |
 //! | `jwf_s10_code` | Java-code escape-time pictures, their default code (`glsl_code`, `f_complex`, `ducks`) |
 //! | `jwf_s10_code_dc` | a direct-colour stamp of a program written from a seed (`dc_code`) |
+//! | `jwf_aa_svg` | the lit pixels of an SVG drawing (`svg_wf`; its reader in `jwf_aa_svgdoc`, the anti-aliased rasteriser in `jwf_aa_raster`) |
+//! | `jwf_aa_truchet` | multi-scale Truchet tiles drawn into an image, looked up under the point (`msTruchet`) |
 //! | `jwf_m_ifs3d` | the chaos game of 3-D cube fractals (`chaosCubes`) |
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
@@ -208,6 +210,11 @@ mod jwf_a_sdf3d;
 mod jwf_a_shapes;
 mod jwf_a_surfaces;
 mod jwf_a_warps;
+mod jwf_aa_raster;
+mod jwf_aa_svg;
+mod jwf_aa_svgdoc;
+mod jwf_aa_svgpath;
+mod jwf_aa_truchet;
 mod jwf_b_3d;
 mod jwf_b_complex;
 mod jwf_b_crops;

@@ -51,6 +51,8 @@ use super::{jwf_h9a_code, jwf_h9a_fract, jwf_h9a_plots};
 use super::{jwf_s10_code, jwf_s10_code_dc};
 // JWildfire's sunflower Voronoi diagram (helper h3, session 11).
 use super::jwf_sv_sunvoroni;
+// JWildfire variations that sample an anti-aliased drawing (session 11).
+use super::{jwf_aa_svg, jwf_aa_truchet};
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -114,7 +116,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 120] = [
+const FILES: [&[VarDef]; 122] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -246,6 +248,9 @@ const FILES: [&[VarDef]; 120] = [
     jwf_s10_code_dc::DEFS,
     // JWildfire's sunflower Voronoi diagram (helper h3, session 11).
     jwf_sv_sunvoroni::DEFS,
+    // JWildfire's variations that sample an anti-aliased drawing (helper h4, session 11).
+    jwf_aa_svg::DEFS,
+    jwf_aa_truchet::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -762,6 +767,8 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "ducks",
     "dc_code",
     "sunvoroni",
+    "svg_wf",
+    "msTruchet",
 ];
 
 /// Every JWildfire variation's name in registry order.
