@@ -40,10 +40,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: shapes sampled from an image's structure, each drawn as an embedded flame (iflames' machinery)",
     ),
     (
-        "lsystem3D_js",
-        "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
-    ),
-    (
         "msTruchet",
         "not implemented: draws its tiles into a Java2D antialiased image and samples its pixels (the antialiased raster cannot be reproduced exactly)",
     ),
