@@ -171,5 +171,35 @@ mod tests {
         // A text of its own: one block.
         let m = chosen_mesh(19.0, 0, &["shape 0\naxiom FF".to_string()]).unwrap();
         assert_eq!(m.faces.len(), 12);
+        // A production past the limits is drawn up to them, with a warning.
+        let big = "recursion 40\naxiom FF\nrule F = FF".to_string();
+        let m = build(&big, 0).unwrap();
+        assert!(m.cut && m.faces.len() <= MAX_FACES + 16);
+        assert!(grammar_problem("lsystem3D_js", &[19.0], &[big]).is_some());
+    }
+
+    #[test]
+    fn points_lie_on_the_scaled_block_with_its_colour() {
+        // One block from (0, 0, 0) to (0, 0, 1), 0.2 wide, colour 5 (palette position 0.05),
+        // scaled by 2 and moved by (1, 0, 0), at weight 0.5.
+        let id = super::super::by_name("lsystem3D_js").unwrap();
+        let mut p = DEFS[0].defaults();
+        p[1] = 2.0;
+        p[4] = 1.0;
+        p[7] = 1.0;
+        let texts = [
+            "thickness 20\nshape 0\naxiom c(5)FF".to_string(),
+            String::new(),
+        ];
+        let v = Prepared::with_texts(id, Form::Regular, 0.5, &p, &texts, Default::default(), true);
+        let mut rng = FastRng::new(11);
+        for _ in 0..2000 {
+            let mut acc = Acc::default();
+            let o = lsystem3d_js(&v, &VarIn::default(), &mut acc, &mut rng);
+            assert_eq!(acc.color, 0.05);
+            assert!((0.3999..=0.6001).contains(&o[0]), "{o:?}");
+            assert!((-0.0501..=0.0501).contains(&o[1]), "{o:?}");
+            assert!((-1e-6..=0.5001).contains(&o[2]), "{o:?}");
+        }
     }
 }
