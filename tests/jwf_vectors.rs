@@ -40,10 +40,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: shapes sampled from an image's structure, each drawn as an embedded flame (iflames' machinery)",
     ),
     (
-        "lsystem3D_js",
-        "not implemented: a port of Laurens Lapre's LParser (2,359 lines of Java: its grammar format, a 3-D turtle building blocks, closed cylinders and polygons, three colour modes), not reached in the time",
-    ),
-    (
         "obj_mesh_primitive_wf",
         "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
     ),

@@ -162,6 +162,7 @@
 //! | `jwf_s10_geo_mesh` | JWildfire's built-in meshes built from their geometry (`obj_mesh_primitive_wf`) |
 //! | `jwf_s10_geo_attractor` | a tube around a strange attractor's orbit, as a mesh (`sattractor3D`) |
 //! | `jwf_sv_sunvoroni` | a sunflower's Voronoi diagram, cells filled and edges drawn (`sunvoroni`; its convex hull by QuickHull3D in `jwf_sv_quickhull`) |
+//! | `jwf_ls_mesh` | a 3-D L-system (Lapre's LParser) drawn as a mesh, random points of it (`lsystem3D_js`; grammar, turtle and presets in `jwf_ls_grammar`, `jwf_ls_turtle`, `jwf_ls_presets`) |
 
 pub use crate::flame::affine::Affine;
 
@@ -269,6 +270,10 @@ mod jwf_h9b_meshes;
 mod jwf_h9c_lsystem;
 mod jwf_h9c_subflame;
 mod jwf_knots;
+mod jwf_ls_grammar;
+mod jwf_ls_mesh;
+mod jwf_ls_presets;
+mod jwf_ls_turtle;
 mod jwf_m_crops;
 mod jwf_m_curves;
 mod jwf_m_cuts;

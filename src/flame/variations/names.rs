@@ -103,6 +103,7 @@ pub fn text_problem(id: VarId, params: &[f64], texts: &[String]) -> Option<Strin
     super::jwf_h9a_plots::formula_problem(name, texts)
         .or_else(|| super::jwf_h9a_code::code_problem(name, texts))
         .or_else(|| super::jwf_aa_svg::svg_problem(name, texts))
+        .or_else(|| super::jwf_ls_mesh::grammar_problem(name, params, texts))
 }
 
 /// If `attr` names a text parameter — `TEXT`, `pre_TEXT` or `post_TEXT` — the variation, form

@@ -75,6 +75,8 @@ use super::jwf_s10_maurer;
 use super::{jwf_s10_quad, jwf_s10_tritile};
 // JWildfire's kaleidoscope over an image (helper h1, session 10).
 use super::jwf_pal_kaleido;
+// JWildfire's 3-D L-systems (helper h6, session 11).
+use super::jwf_ls_mesh;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -116,7 +118,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 122] = [
+const FILES: [&[VarDef]; 123] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -251,6 +253,8 @@ const FILES: [&[VarDef]; 122] = [
     // JWildfire's variations that sample an anti-aliased drawing (helper h4, session 11).
     jwf_aa_svg::DEFS,
     jwf_aa_truchet::DEFS,
+    // JWildfire's 3-D L-systems (helper h6, session 11).
+    jwf_ls_mesh::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -769,6 +773,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "sunvoroni",
     "svg_wf",
     "msTruchet",
+    "lsystem3D_js",
 ];
 
 /// Every JWildfire variation's name in registry order.
