@@ -71,6 +71,8 @@ use super::jwf_s10_maurer;
 use super::{jwf_s10_quad, jwf_s10_tritile};
 // JWildfire's kaleidoscope over an image (helper h1, session 10).
 use super::jwf_pal_kaleido;
+// JWildfire's IFlames (helper h5, session 11).
+use super::jwf_tx_iflames;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -112,7 +114,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 119] = [
+const FILES: [&[VarDef]; 120] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -242,6 +244,8 @@ const FILES: [&[VarDef]; 119] = [
     jwf_pal_kaleido::DEFS,
     jwf_s10_code::DEFS,
     jwf_s10_code_dc::DEFS,
+    // JWildfire's IFlames, its image part (helper h5, session 11).
+    jwf_tx_iflames::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -757,6 +761,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "f_complex",
     "ducks",
     "dc_code",
+    "iflames_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.
