@@ -36,10 +36,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
     ),
     (
-        "iflames_wf",
-        "not implemented: shapes sampled from an image's structure, each drawn as an embedded flame (iflames' machinery)",
-    ),
-    (
         "obj_mesh_primitive_wf",
         "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
     ),
@@ -54,10 +50,6 @@ const NOT_YET: &[(&str, &str)] = &[
     (
         "taprats",
         "not implemented: each call draws one primitive picked uniformly from the list Craig Kaplan's Taprats (in JWildfire's source, GPL) renders: the sets' tilings (csk_7, 4.8^2, 10: data in its 3,500-line Tiling class), star and rosette figures in the regular tiles and, with Infer on (alt sets), figures inferred for the others (650 lines), the planar map of the tiling filled over the view window (-1.5 to 1.5), then the interlace, emboss or filled style (200 to 480 lines each, filled regions triangulated); the statistics depend on that list primitive for primitive, so the whole pipeline must be reproduced; not reached in the time",
-    ),
-    (
-        "text_wf",
-        "statistics differ: ugnis draws the text with its bundled sans-serif, JWildfire with the system font (Arial or the fallback)",
     ),
     (
         "wangtiles",

@@ -108,6 +108,12 @@ pub(super) fn gradient_map(_p: &[f64], texts: &[String]) -> Vec<f64> {
     image_data(texts, || corner_gradient(256, 256))
 }
 
+/// The shared data of an image variation whose default image is JWildfire's corner gradient
+/// of `w` × `h` pixels (`iflames_wf`'s is 128 × 128).
+pub(super) fn gradient_map_of_size(texts: &[String], w: i32, h: i32) -> Vec<f64> {
+    image_data(texts, || corner_gradient(w, h))
+}
+
 /// Shared data of the bump map: its default is blank.
 fn bump_map(_p: &[f64], texts: &[String]) -> Vec<f64> {
     image_data(texts, || Image {

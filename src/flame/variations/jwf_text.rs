@@ -6,17 +6,13 @@
 //! Each sample picks one of those points, moves it by a small random amount (`antialias`) and
 //! scales it: (x·scale_x + offset_x)·3, (y·scale_y + offset_y)·3. The weight does not scale it.
 //!
-//! JWildfire uses the font named by `font_name` from the system. ugnis draws every font name
-//! with one bundled sans-serif (Ubuntu Light, the editor's own font), so that a flame renders
-//! the same on every machine; the letters' proportions differ a little from those of, say,
-//! Arial. Kerning is not applied (Java's default text drawing does not apply it either).
+//! JWildfire uses the font named by `font_name` from the system; ugnis draws every font name
+//! with the font a Java VM without Arial uses for JWildfire's default "Arial", DejaVu Sans,
+//! bundled, laid out and filled as Java 2D does it ([`jwf_text_raster`]).
 
 use std::f64::consts::PI;
 
-use skrifa::instance::{LocationRef, Size};
-use skrifa::outline::{DrawSettings, OutlinePen};
-use skrifa::{FontRef, MetadataProvider};
-
+use super::jwf_text_raster;
 use super::*;
 
 /// Most pixels of the image the text is drawn into: larger font sizes or longer texts are
@@ -24,7 +20,7 @@ use super::*;
 /// image), so the memory they take stays below 16 bytes × this.
 const MAX_PIXELS: f64 = 4.0e6;
 
-/// Most bytes of text drawn.
+/// Most bytes of text kept.
 const MAX_TEXT: usize = 1000;
 
 const TEXTS: &[TextParam] = &[
@@ -80,170 +76,12 @@ fn text_wf(v: &Prepared, _t: &VarIn, _acc: &mut Acc, rng: &mut FastRng) -> V3 {
     ]
 }
 
-/// The drawn text's points, x and y interleaved (see the module documentation). Built once per
-/// text, font size and baseline ([`super::shared`]).
+/// The drawn text's points, x and y interleaved (see [`jwf_text_raster::text_points`]). Built
+/// once per text, font size and baseline ([`super::shared`]).
 fn text_points(p: &[f64], texts: &[String]) -> Vec<f64> {
     let text = texts.first().map_or("", |t| t.as_str());
     let [font_size, _, _, _, _, _, baseline] = params_of(p);
-    let font_size = font_size.max(1.0);
-    let Ok(font) = FontRef::new(epaint_default_fonts::UBUNTU_LIGHT) else {
-        return Vec::new();
-    };
-    // Lay the text out at one pixel per em unit of the font size, then scale it to fit.
-    let unit = Size::new(1.0);
-    let charmap = font.charmap();
-    let gm = font.glyph_metrics(unit, LocationRef::default());
-    let m = font.metrics(unit, LocationRef::default());
-    let (ascent, descent) = (m.ascent as f64, -(m.descent as f64));
-    let glyphs: Vec<_> = text
-        .chars()
-        .filter(|c| !c.is_control())
-        .map(|c| charmap.map(c).unwrap_or_default())
-        .collect();
-    let advance: f64 = glyphs
-        .iter()
-        .map(|&g| gm.advance_width(g).unwrap_or(0.0) as f64)
-        .sum();
-    // Image size in em: the text plus one font size of margin on each side.
-    let (w_em, h_em) = (advance + 2.0, ascent + descent + 2.0);
-    let px = font_size.min((MAX_PIXELS / (w_em * h_em)).sqrt()).max(1.0);
-    let (w, h) = ((w_em * px).ceil() as usize, (h_em * px).ceil() as usize);
-    // The text box centred; `baseline` moves it down by that many pixels of the font size.
-    let x0 = (w as f64 - advance * px) / 2.0;
-    let base = (h as f64 - (ascent + descent) * px) / 2.0 + ascent * px + baseline * px / font_size;
-    let mut edges = Edges::default();
-    let outlines = font.outline_glyphs();
-    let mut pen_x = x0;
-    for &g in &glyphs {
-        if let Some(glyph) = outlines.get(g) {
-            edges.origin = (pen_x, base);
-            edges.scale = px;
-            let settings = DrawSettings::unhinted(unit, LocationRef::default());
-            let _ = glyph.draw(settings, &mut edges);
-            edges.close();
-        }
-        pen_x += gm.advance_width(g).unwrap_or(0.0) as f64 * px;
-    }
-    let (wf, hf) = (w as f64, h as f64);
-    let mut out = Vec::new();
-    edges.fill(w, h, |col, row| {
-        out.push((col as f64 - wf / 2.0) / wf);
-        out.push((row as f64 - hf / 2.0) / hf);
-    });
-    out
-}
-
-/// The edges of glyph outlines in image pixels (y down), for a non-zero winding fill.
-#[derive(Default)]
-struct Edges {
-    /// (x0, y0, x1, y1) per edge.
-    lines: Vec<[f64; 4]>,
-    /// Pen position of the glyph on the baseline, and pixels per font unit of the outline.
-    origin: (f64, f64),
-    scale: f64,
-    start: (f64, f64),
-    at: (f64, f64),
-}
-
-impl Edges {
-    fn to_image(&self, x: f32, y: f32) -> (f64, f64) {
-        (
-            self.origin.0 + x as f64 * self.scale,
-            self.origin.1 - y as f64 * self.scale,
-        )
-    }
-
-    fn segment(&mut self, to: (f64, f64)) {
-        if to.1 != self.at.1 {
-            self.lines.push([self.at.0, self.at.1, to.0, to.1]);
-        }
-        self.at = to;
-    }
-
-    /// Calls `lit(column, row)` for every pixel whose centre lies inside the outlines
-    /// (non-zero winding), row by row.
-    fn fill(&self, w: usize, h: usize, mut lit: impl FnMut(usize, usize)) {
-        let mut cross: Vec<(f64, i32)> = Vec::new();
-        for row in 0..h {
-            let yc = row as f64 + 0.5;
-            cross.clear();
-            for &[x0, y0, x1, y1] in &self.lines {
-                let (lo, hi) = if y0 < y1 { (y0, y1) } else { (y1, y0) };
-                if yc < lo || yc >= hi {
-                    continue;
-                }
-                let x = x0 + (yc - y0) / (y1 - y0) * (x1 - x0);
-                cross.push((x, if y1 > y0 { 1 } else { -1 }));
-            }
-            cross.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let mut wind = 0;
-            for pair in cross.windows(2) {
-                wind += pair[0].1;
-                if wind == 0 {
-                    continue;
-                }
-                // Pixels with centre in [pair[0].x, pair[1].x).
-                let c0 = (pair[0].0 - 0.5).ceil().max(0.0) as usize;
-                let c1 = ((pair[1].0 - 0.5).ceil().max(0.0) as usize).min(w);
-                for col in c0..c1 {
-                    lit(col, row);
-                }
-            }
-        }
-    }
-}
-
-impl OutlinePen for Edges {
-    fn move_to(&mut self, x: f32, y: f32) {
-        self.close();
-        let p = self.to_image(x, y);
-        self.start = p;
-        self.at = p;
-    }
-
-    fn line_to(&mut self, x: f32, y: f32) {
-        let p = self.to_image(x, y);
-        self.segment(p);
-    }
-
-    fn quad_to(&mut self, cx0: f32, cy0: f32, x: f32, y: f32) {
-        const STEPS: usize = 8;
-        let (a, c, b) = (self.at, self.to_image(cx0, cy0), self.to_image(x, y));
-        for i in 1..=STEPS {
-            let t = i as f64 / STEPS as f64;
-            let u = 1.0 - t;
-            let q = (
-                u * u * a.0 + 2.0 * u * t * c.0 + t * t * b.0,
-                u * u * a.1 + 2.0 * u * t * c.1 + t * t * b.1,
-            );
-            self.segment(q);
-        }
-    }
-
-    fn curve_to(&mut self, cx0: f32, cy0: f32, cx1: f32, cy1: f32, x: f32, y: f32) {
-        const STEPS: usize = 12;
-        let a = self.at;
-        let (c0, c1, b) = (
-            self.to_image(cx0, cy0),
-            self.to_image(cx1, cy1),
-            self.to_image(x, y),
-        );
-        for i in 1..=STEPS {
-            let t = i as f64 / STEPS as f64;
-            let u = 1.0 - t;
-            let (k0, k1, k2, k3) = (u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t);
-            let q = (
-                k0 * a.0 + k1 * c0.0 + k2 * c1.0 + k3 * b.0,
-                k0 * a.1 + k1 * c0.1 + k2 * c1.1 + k3 * b.1,
-            );
-            self.segment(q);
-        }
-    }
-
-    fn close(&mut self) {
-        let s = self.start;
-        self.segment(s);
-    }
+    jwf_text_raster::text_points(text, font_size as i64, baseline as i64, MAX_PIXELS)
 }
 
 #[cfg(test)]

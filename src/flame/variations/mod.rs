@@ -150,6 +150,8 @@
 //! | `jwf_prepost` | JWildfire's own `pre_`/`post_` classes and its prepost variations (`pre_affine3D`, `post_crosscrop`, `prepost_mobius`, `ringtile`, …) |
 //! | `jwf_symmetry` | the symmetry groups `sym_ng*` and `sym_bg*` |
 //! | `jwf_text` | `text_wf` |
+//! | `jwf_tx_iflames` | `iflames_wf` (its image part; the embedded flames are not built) |
+//! | `jwf_text_raster` | the image `text_wf` samples: a line of text in DejaVu Sans, drawn as Java 2D draws it |
 //! | `jwf_z_3d` | JWildfire's 3-D curves and maps (`spirograph3D`, `mobiqN`, `hypertile3Db`, `juliascope3Db`, `checkerboard_wf`, …) |
 //! | `jwf_z_solids` | JWildfire's 3-D figures (`mobius_dragon_3D`, `polySurf`, `primitives_wf`, `glynnSim2B`) |
 //! | `jwf_z_warps` | JWildfire's warps by cells and shapes (`shape_warp`, `drunken_tiles`, `bwrands`, `de_stijl`, `glitchy2`) |
@@ -308,6 +310,8 @@ mod jwf_symmetry;
 #[cfg(test)]
 mod jwf_testing;
 mod jwf_text;
+mod jwf_text_raster;
+mod jwf_tx_iflames;
 // JWildfire variations, from the end of the alphabet.
 mod jwf_z_3d;
 mod jwf_z_drawings;

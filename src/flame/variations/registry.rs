@@ -77,6 +77,8 @@ use super::{jwf_s10_quad, jwf_s10_tritile};
 use super::jwf_pal_kaleido;
 // JWildfire's 3-D L-systems (helper h6, session 11).
 use super::jwf_ls_mesh;
+// JWildfire's IFlames (helper h5, session 11).
+use super::jwf_tx_iflames;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -118,7 +120,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 123] = [
+const FILES: [&[VarDef]; 124] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -255,6 +257,8 @@ const FILES: [&[VarDef]; 123] = [
     jwf_aa_truchet::DEFS,
     // JWildfire's 3-D L-systems (helper h6, session 11).
     jwf_ls_mesh::DEFS,
+    // JWildfire's IFlames, its image part (helper h5, session 11).
+    jwf_tx_iflames::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -774,6 +778,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "svg_wf",
     "msTruchet",
     "lsystem3D_js",
+    "iflames_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.
