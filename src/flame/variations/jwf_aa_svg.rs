@@ -246,8 +246,8 @@ mod tests {
         let d = svg_points(&[0.5, 2.0, 1.0, 1.0], &[DEFAULT_SVG.to_string()]);
         let n = d.len() - HEADER;
         assert!(n > 10_000, "{n}");
-        // Width FTOI(744.0945·2) (single precision), as JWildfire's image.
-        assert_eq!(d[0], 1488.0);
+        // The image is the document's width times the multiplier, as JWildfire's.
+        assert_eq!(d[0], 480.0);
         let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
         let mut purple = 0;
         for k in 0..n {
@@ -256,12 +256,12 @@ mod tests {
             hi = [hi[0].max(x), hi[1].max(y)];
             purple += usize::from(rgb == [128, 0, 128]);
         }
-        // The box's longer side spans −1/2 … 1/2.
+        // The box's longer side (the height: the wave hangs below the ring) spans −1/2 … 1/2.
         assert!(
-            (lo[0] + 0.5).abs() < 1e-9 && (hi[0] - 0.5).abs() < 1e-9,
+            (lo[1] + 0.5).abs() < 1e-9 && (hi[1] - 0.5).abs() < 1e-9,
             "{lo:?} {hi:?}"
         );
-        assert!(lo[1] > -0.5 && hi[1] < 0.5);
+        assert!(lo[0] > -0.5 && hi[0] < 0.5, "{lo:?} {hi:?}");
         // Most points are inside the purple shape.
         assert!(purple * 2 > n, "{purple} of {n}");
     }
