@@ -166,6 +166,35 @@ fn failed_output_leaves_existing_file_intact() {
 }
 
 #[test]
+fn info_lists_every_variation_on_one_line() {
+    let (code, out, err) = ugnis(&["info", "--variations"]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = out.lines().collect();
+    let n = ugnis::flame::variations::all()
+        .iter()
+        .filter(|d| !d.has(ugnis::flame::variations::flag::HIDDEN))
+        .count();
+    // One line per variation and the summary: a text default of several lines (svg_wf's
+    // drawing, lsystem_js' grammar) is shown by its size.
+    assert_eq!(lines.len(), n + 1, "{}", lines.len());
+    assert!(
+        lines[n].starts_with(&format!("{n} variations")),
+        "{}",
+        lines[n]
+    );
+    let svg = lines
+        .iter()
+        .find(|l| l.starts_with("svg_wf "))
+        .expect("svg_wf listed");
+    assert!(svg.contains("svg_wf_svg=<text of "), "{svg}");
+    let text = lines
+        .iter()
+        .find(|l| l.starts_with("text_wf "))
+        .expect("text_wf listed");
+    assert!(text.contains("text_wf_text=\"JWildfire\""), "{text}");
+}
+
+#[test]
 fn info_lists_file_contents_and_fails_cleanly() {
     let (code, out, err) = ugnis(&["info", common::fixture("library.ifs").to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");

@@ -19,6 +19,17 @@ pub struct InfoArgs {
     pub variations: bool,
 }
 
+/// A text parameter's default as the variation list shows it: quoted, or its size when it is
+/// a whole document (more than one line or 60 characters), which would break the list's one
+/// line per variation.
+fn text_default(t: &str) -> String {
+    if t.contains('\n') || t.chars().count() > 60 {
+        format!("<text of {} lines, {} bytes>", t.lines().count(), t.len())
+    } else {
+        format!("\"{t}\"")
+    }
+}
+
 /// One line per variation: name, origin, properties and parameters with their defaults.
 fn list_variations() {
     use ugnis::flame::variations::{self, flag};
@@ -66,7 +77,7 @@ fn list_variations() {
             .chain(
                 d.texts
                     .iter()
-                    .map(|t| format!("{}=\"{}\"", t.name, t.default)),
+                    .map(|t| format!("{}={}", t.name, text_default(t.default))),
             )
             .collect();
         out.push_str(&format!(
