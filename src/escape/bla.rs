@@ -86,6 +86,46 @@ fn merge(x: &Step, y: &Step, dc_max: Fx) -> Step {
     }
 }
 
+/// The levels of a step table over an orbit whose last index is `last`: level 0 holds the
+/// steps of two iterations from m = 1, 3, 5, … (each made by `merge` of the single steps
+/// `single(m)` and `single(m + 1)`; a single step alone where m + 1 would land on the last
+/// point), and each further level merges the steps of the one below in pairs (a lone last
+/// step is carried up as it is), up to one step.
+pub(super) fn levels<S: Copy>(
+    last: usize,
+    single: impl Fn(usize) -> S,
+    merge: impl Fn(&S, &S) -> S,
+) -> Vec<Vec<S>> {
+    let mut levels = Vec::new();
+    let mut prev: Vec<S> = (1..last)
+        .step_by(2)
+        .map(|m| {
+            let x = single(m);
+            if m + 1 < last {
+                merge(&x, &single(m + 1))
+            } else {
+                x
+            }
+        })
+        .collect();
+    while prev.len() > 1 {
+        let next: Vec<S> = prev
+            .chunks(2)
+            .filter_map(|p| match p {
+                [x, y] => Some(merge(x, y)),
+                [x] => Some(*x),
+                _ => None,
+            })
+            .collect();
+        levels.push(prev);
+        prev = next;
+    }
+    if !prev.is_empty() {
+        levels.push(prev);
+    }
+    levels
+}
+
 /// Bytes the table of an orbit of `len` points takes (about one merged step per point, its
 /// f64 copy with the quadratic coefficients and the first level's radii by index).
 pub fn table_bytes(len: u64) -> u64 {
@@ -117,31 +157,7 @@ impl Bla {
             }
         };
         // Single steps from m = 1 to last − 1 (the last lands on the final point).
-        let mut levels = Vec::new();
-        let mut prev: Vec<Step> = (1..last)
-            .step_by(2)
-            .map(|m| {
-                let x = single(m);
-                if m + 1 < last {
-                    merge(&x, &single(m + 1), dc_max)
-                } else {
-                    x
-                }
-            })
-            .collect();
-        while prev.len() > 1 {
-            let next: Vec<Step> = prev
-                .chunks(2)
-                .map(|p| match p {
-                    [x, y] => merge(x, y, dc_max),
-                    [x] => *x,
-                    _ => unreachable!(),
-                })
-                .collect();
-            levels.push(prev);
-            prev = next;
-        }
-        levels.push(prev);
+        let levels = levels(last, single, |x, y| merge(x, y, dc_max));
         let in_f64 = |c: &Cx| c.is_zero() || (-1000..1000).contains(&c.e);
         let (radii, coeffs, quad) = if degree == 2 {
             super::bla_quad::table(z, dc_max, with_c, eps)

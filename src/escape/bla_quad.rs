@@ -160,33 +160,7 @@ pub fn table(
         r: Fx::ZERO,
         exact: true,
     };
-    let mut levels = Vec::new();
-    let mut prev: Vec<Step> = (1..last)
-        .step_by(2)
-        .map(|m| {
-            let x = single(m);
-            if m + 1 < last {
-                merge(&x, &single(m + 1), g, eps)
-            } else {
-                x
-            }
-        })
-        .collect();
-    while prev.len() > 1 {
-        let next: Vec<Step> = prev
-            .chunks(2)
-            .filter_map(|p| match p {
-                [x, y] => Some(merge(x, y, g, eps)),
-                [x] => Some(*x),
-                _ => None,
-            })
-            .collect();
-        levels.push(prev);
-        prev = next;
-    }
-    if !prev.is_empty() {
-        levels.push(prev);
-    }
+    let levels = super::bla::levels(last, single, |x, y| merge(x, y, g, eps));
     let in_f64 = |c: &Cx| c.is_zero() || (-1000..1000).contains(&c.e);
     let mut radii = Vec::with_capacity(levels.len());
     let mut lin = Vec::with_capacity(levels.len());

@@ -207,31 +207,7 @@ impl ShipBla {
         }
         let one = |m: usize| single(z[m], with_c, eps);
         // Single steps from m = 1 to last − 1 (the last lands on the final point).
-        let mut levels = Vec::new();
-        let mut prev: Vec<ShipStep> = (1..last)
-            .step_by(2)
-            .map(|m| {
-                let x = one(m);
-                if m + 1 < last {
-                    merge(&x, &one(m + 1), dc_max)
-                } else {
-                    x
-                }
-            })
-            .collect();
-        while prev.len() > 1 {
-            let next: Vec<ShipStep> = prev
-                .chunks(2)
-                .map(|p| match p {
-                    [x, y] => merge(x, y, dc_max),
-                    [x] => *x,
-                    _ => unreachable!(),
-                })
-                .collect();
-            levels.push(prev);
-            prev = next;
-        }
-        levels.push(prev);
+        let levels = super::bla::levels(last, one, |x, y| merge(x, y, dc_max));
         let radii: Vec<Vec<f64>> = levels
             .iter()
             .map(|l| {

@@ -139,6 +139,21 @@ fn step<const MAP: u8, const STRICT: bool>(
             (d, l.m + 1)
         }
     };
+    land::<STRICT>(l, z, d, m, s)
+}
+
+/// The end of a lane's step that brought its difference to `d` at index `m` of its orbit `z`:
+/// Some when the pixel escapes (STRICT: the bailout test of [`IterSettings::escaped`] with
+/// `s.strict`); a rebase onto the base orbit's start when the full point is smaller than the
+/// difference or the orbit ends; else the lane moves on.
+#[inline(always)]
+pub(super) fn land<const STRICT: bool>(
+    l: &mut Lane,
+    z: &[C],
+    d: C,
+    m: usize,
+    s: &IterSettings,
+) -> Option<End> {
     let full = z[m] + d;
     let r2 = full.norm2();
     let escaped = if STRICT {

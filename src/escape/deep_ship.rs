@@ -4,7 +4,7 @@
 
 use super::bla_ship::{ShipBla, apply_plain};
 use super::complex::C;
-use super::deep_plain::{End, LANES, Lane, ship_step};
+use super::deep_plain::{End, LANES, Lane, land, ship_step};
 use super::family::IterSettings;
 
 /// The orbits a pixel iterates around: the one it starts on and the one it rebases onto.
@@ -39,29 +39,7 @@ fn step<const STRICT: bool>(o: &ShipOrbits, l: &mut Lane, s: &IterSettings) -> O
             (ship_step(z[l.m], d, l.dc), l.m + 1)
         }
     };
-    let full = z[m] + d;
-    let r2 = full.norm2();
-    let escaped = if STRICT {
-        !(r2 <= s.bailout2)
-    } else {
-        !(r2 < s.bailout2)
-    };
-    if escaped {
-        return Some(End::Escaped {
-            n: l.n,
-            z: full,
-            r2,
-        });
-    }
-    if r2 < d.norm2() || m == z.len() - 1 {
-        l.d = full;
-        l.m = 0;
-        l.on_base = true;
-    } else {
-        l.d = d;
-        l.m = m;
-    }
-    None
+    land::<STRICT>(l, z, d, m, s)
 }
 
 /// Iterate the pixels `next()` hands out, LANES at a time, to their ends; `done(id, end)`
