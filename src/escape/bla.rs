@@ -126,6 +126,63 @@ pub(super) fn levels<S: Copy>(
     levels
 }
 
+/// The longest step of `levels` (as [`levels`] builds them) from reference index m that
+/// `admits`: a merged radius is at most the radius of its first half, which starts at the same
+/// index one level down, and its length is larger, so the search climbs from the single steps
+/// and stops at the first that does not admit the difference.
+#[inline(always)]
+pub(super) fn climb<S>(levels: &[Vec<S>], m: usize, admits: impl Fn(&S) -> bool) -> Option<&S> {
+    if m == 0 {
+        return None;
+    }
+    let k0 = (m - 1).trailing_zeros() as usize;
+    let mut best = None;
+    for (k, level) in levels.iter().enumerate().take(k0) {
+        match level.get((m - 1) >> (k + 1)) {
+            Some(st) if admits(st) => best = Some(st),
+            _ => break,
+        }
+    }
+    best
+}
+
+/// [`climb`] over the plain loop's radii (|re| + |im|, 0 where a step is not used) of an
+/// orbit whose last index is `last`: the level, place and length of the longest step from
+/// odd m admitting `d1` (|re| + |im| of the difference) and at most `room` iterations.
+#[inline(always)]
+pub(super) fn climb_plain(
+    radii: &[Vec<f64>],
+    last: usize,
+    m: usize,
+    d1: f64,
+    room: u32,
+) -> Option<(usize, usize, u32)> {
+    let k0 = (m - 1).trailing_zeros() as usize;
+    let mut found = None;
+    for (k, level) in radii.iter().enumerate().take(k0) {
+        let j = (m - 1) >> (k + 1);
+        let admits = matches!(level.get(j), Some(&r) if d1 < r);
+        let len = (2usize << k).min(last - m) as u32;
+        if !admits || len > room {
+            break;
+        }
+        found = Some((k, j, len));
+    }
+    found
+}
+
+/// The first level's radius at every reference index up to `last` (0 where no step starts):
+/// one load turns most iterations down before the level search.
+pub(super) fn first_radii(last: usize, radii: &[Vec<f64>]) -> Vec<f64> {
+    let mut first = vec![0.0; last + 1];
+    for (j, &r) in radii.first().into_iter().flatten().enumerate() {
+        if let Some(f) = first.get_mut(1 + 2 * j) {
+            *f = r;
+        }
+    }
+    first
+}
+
 /// Bytes the table of an orbit of `len` points takes (about one merged step per point, its
 /// f64 copy with the quadratic coefficients and the first level's radii by index).
 pub fn table_bytes(len: u64) -> u64 {
@@ -182,10 +239,7 @@ impl Bla {
                 .collect();
             (radii, coeffs, Vec::new())
         };
-        let mut first = vec![0.0; last + 1];
-        for (j, &r) in radii.first().into_iter().flatten().enumerate() {
-            first[1 + 2 * j] = r;
-        }
+        let first = first_radii(last, &radii);
         Bla {
             levels,
             first,
@@ -205,18 +259,7 @@ impl Bla {
     /// that does not admit δ (most iterations that take no step cost one comparison).
     #[inline]
     pub fn find(&self, m: usize, d: Fx, room: u32) -> Option<&Step> {
-        if m == 0 {
-            return None;
-        }
-        let k0 = (m - 1).trailing_zeros() as usize;
-        let mut best = None;
-        for k in 0..self.levels.len().min(k0) {
-            match self.levels[k].get((m - 1) >> (k + 1)) {
-                Some(st) if st.len <= room && d.lt(st.r) => best = Some(st),
-                _ => break,
-            }
-        }
-        best
+        climb(&self.levels, m, |st| st.len <= room && d.lt(st.r))
     }
 
     /// As [`Bla::find`] for a difference `d` in f64's range, measured by |re| + |im| (at most
@@ -224,15 +267,7 @@ impl Bla {
     #[inline]
     pub fn find_f64(&self, m: usize, d: C, room: u32) -> Option<&Step> {
         let d = d.re.abs() + d.im.abs();
-        let k0 = (m - 1).trailing_zeros() as usize;
-        let mut best = None;
-        for k in 0..self.levels.len().min(k0) {
-            match self.levels[k].get((m - 1) >> (k + 1)) {
-                Some(st) if d < st.r64 && st.len <= room => best = Some(st),
-                _ => break,
-            }
-        }
-        best
+        climb(&self.levels, m, |st| d < st.r64 && st.len <= room)
     }
 
     /// The plain loop's step from reference index m admitting |re| + |im| = `d1` of the
@@ -241,18 +276,7 @@ impl Bla {
     /// z³ + c the bilinear ones of [`Bla::find_f64`].
     #[inline(always)]
     pub fn find_plain(&self, m: usize, d1: f64, room: u32) -> Option<(usize, usize, u32)> {
-        let k0 = ((m - 1).trailing_zeros() as usize).min(self.radii.len());
-        let mut found = None;
-        for k in 0..k0 {
-            let j = (m - 1) >> (k + 1);
-            let admits = matches!(self.radii[k].get(j), Some(&r) if d1 < r);
-            let len = (2usize << k).min(self.last - m) as u32;
-            if !admits || len > room {
-                break;
-            }
-            found = Some((k, j, len));
-        }
-        found
+        climb_plain(&self.radii, self.last, m, d1, room)
     }
 
     /// The coefficients A and B of the plain loop's step at level k, place j (0 past the table).

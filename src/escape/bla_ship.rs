@@ -233,10 +233,7 @@ impl ShipBla {
                     .collect()
             })
             .collect();
-        let mut first = vec![0.0; last + 1];
-        for (j, &r) in radii.first().into_iter().flatten().enumerate() {
-            first[1 + 2 * j] = r;
-        }
+        let first = super::bla::first_radii(last, &radii);
         ShipBla {
             levels,
             radii,
@@ -250,54 +247,22 @@ impl ShipBla {
     /// iterations (the search of [`super::bla::Bla::find`]).
     #[inline]
     pub fn find(&self, m: usize, d: Fx, room: u32) -> Option<&ShipStep> {
-        if m == 0 {
-            return None;
-        }
-        let k0 = (m - 1).trailing_zeros() as usize;
-        let mut best = None;
-        for k in 0..self.levels.len().min(k0) {
-            match self.levels[k].get((m - 1) >> (k + 1)) {
-                Some(st) if st.len <= room && d.lt(st.r) => best = Some(st),
-                _ => break,
-            }
-        }
-        best
+        super::bla::climb(&self.levels, m, |st| st.len <= room && d.lt(st.r))
     }
 
     /// As [`ShipBla::find`] for a difference in f64's range, measured by |re| + |im| (at
     /// least |δ|): the oracle of [`ShipBla::find_plain`] in tests.
     #[cfg(test)]
     pub fn find_f64(&self, m: usize, d: C, room: u32) -> Option<&ShipStep> {
-        if m == 0 {
-            return None;
-        }
         let d = d.re.abs() + d.im.abs();
-        let k0 = (m - 1).trailing_zeros() as usize;
-        let mut best = None;
-        for k in 0..self.levels.len().min(k0) {
-            match self.levels[k].get((m - 1) >> (k + 1)) {
-                Some(st) if d < st.r64 && st.len <= room => best = Some(st),
-                _ => break,
-            }
-        }
-        best
+        super::bla::climb(&self.levels, m, |st| d < st.r64 && st.len <= room)
     }
 
     /// As [`ShipBla::find_f64`] with the coefficients in f64 (A's and B's entries, length).
     /// `m` must be odd and `d1` is |re| + |im| of the difference.
     #[inline(always)]
     pub fn find_plain(&self, m: usize, d1: f64, room: u32) -> Option<(&Coeffs, u32)> {
-        let k0 = ((m - 1).trailing_zeros() as usize).min(self.radii.len());
-        let mut found = None;
-        for k in 0..k0 {
-            let j = (m - 1) >> (k + 1);
-            let admits = matches!(self.radii[k].get(j), Some(&r) if d1 < r);
-            let len = (2usize << k).min(self.last - m) as u32;
-            if !admits || len > room {
-                break;
-            }
-            found = Some((k, j, len));
-        }
+        let found = super::bla::climb_plain(&self.radii, self.last, m, d1, room);
         found.map(|(k, j, len)| (&self.coeffs[k][j], len))
     }
 
