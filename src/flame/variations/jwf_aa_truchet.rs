@@ -22,7 +22,7 @@
 
 use super::jwf_a_cuts::JavaRandom;
 use super::jwf_aa_raster::{FillRule, Pt, circle, ellipse_arc, fill};
-use super::jwf_h9b_images::{ftoi, tile};
+use super::jwf_h9b_images::{image_axis, intensity};
 use super::*;
 
 /// JWildfire's `EPSILON`.
@@ -79,15 +79,8 @@ fn ms_truchet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let dy = v.w * (rng.f01() - 0.5);
     let (x_in, y_in) = (acc.x + dx, acc.y + dy);
     let n = SIDE as i32;
-    let x = (x_in - (offset_x + 0.5) + 1.0) / scale_x * f64::from(n - 2);
-    let y = (y_in - (offset_y + 0.5) + 1.0) / scale_y * f64::from(n - 2);
-    let (mut ix, mut iy) = (ftoi(x), ftoi(y));
-    if tile_x == 1.0 {
-        ix = tile(ix, n);
-    }
-    if tile_y == 1.0 {
-        iy = tile(iy, n);
-    }
+    let (_, ix) = image_axis(x_in, offset_x, scale_x, n, tile_x, false);
+    let (_, iy) = image_axis(y_in, offset_y, scale_y, n, tile_y, false);
     let grey = if (0..n).contains(&ix) && (0..n).contains(&iy) {
         f64::from(grey_at(v.data(), ix as usize, iy as usize))
     } else {
@@ -99,7 +92,7 @@ fn ms_truchet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     }
     let mut dz = offset_z;
     if scale_z.abs() > EPS {
-        dz += scale_z * (0.299 * grey + 0.588 * grey + 0.113 * grey) / 255.0;
+        dz += scale_z * intensity(grey, grey, grey) / 255.0;
     }
     if reset_z != 0.0 {
         acc.z = 0.0;

@@ -180,8 +180,24 @@ pub(super) fn tile(i: i32, n: i32) -> i32 {
     }
 }
 
+/// One axis of JWildfire's image lookup (`ColorMapHolder`): the continuous pixel coordinate
+/// of `v` in an image of `n` pixels, offset and scaled, and its pixel index (truncated for
+/// blending, else rounded as [`ftoi`] does), tiled when `tile_on` is 1.
+pub(super) fn image_axis(
+    v: f64,
+    offset: f64,
+    scale: f64,
+    n: i32,
+    tile_on: f64,
+    trunc: bool,
+) -> (f64, i32) {
+    let x = (v - (offset + 0.5) + 1.0) / scale * f64::from(n - 2);
+    let i = if trunc { x.trunc() as i32 } else { ftoi(x) };
+    (x, if tile_on == 1.0 { tile(i, n) } else { i })
+}
+
 /// JWildfire's brightness weights.
-fn intensity(r: f64, g: f64, b: f64) -> f64 {
+pub(super) fn intensity(r: f64, g: f64, b: f64) -> f64 {
     0.299 * r + 0.588 * g + 0.113 * b
 }
 
@@ -306,20 +322,9 @@ fn colormap(v: &Prepared, x_in: f64, y_in: f64, acc: &mut Acc) -> (f64, bool) {
     ] = v.params();
     let img = View::of(v.data());
     let (w, h) = (img.w, img.h);
-    let x = (x_in - (offset_x + 0.5) + 1.0) / scale_x * f64::from(w - 2);
-    let y = (y_in - (offset_y + 0.5) + 1.0) / scale_y * f64::from(h - 2);
     let blend = blend > 0.0;
-    let (mut ix, mut iy) = if blend {
-        (x.trunc() as i32, y.trunc() as i32)
-    } else {
-        (ftoi(x), ftoi(y))
-    };
-    if tile_x == 1.0 {
-        ix = tile(ix, w);
-    }
-    if tile_y == 1.0 {
-        iy = tile(iy, h);
-    }
+    let (x, ix) = image_axis(x_in, offset_x, scale_x, w, tile_x, blend);
+    let (y, iy) = image_axis(y_in, offset_y, scale_y, h, tile_y, blend);
     let [r, g, b, a] = if (0..w).contains(&ix) && (0..h).contains(&iy) {
         let px = |dx: i32, dy: i32| {
             let (cx, cy) = (ix + dx, iy + dy);
