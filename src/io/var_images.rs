@@ -28,9 +28,28 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
     let dir = flame_path.parent().unwrap_or(Path::new(""));
     let mut warnings = Vec::new();
     let mut done: Vec<String> = Vec::new();
+    let installed = resources::has_jwildfire_reader();
     for x in flames.iter().flat_map(all_xforms) {
         for v in &x.vars {
             let def = variations::info(v.id);
+            if !installed
+                && needs_jwildfire(def.name, &v.params)
+                && !done.contains(&def.name.into())
+            {
+                done.push(def.name.into());
+                warnings.push(Diagnostic::warning(
+                    file,
+                    Pos::File,
+                    "IMG011",
+                    format!(
+                        "{}: draws resources that ship with JWildfire; set {} to JWildfire's \
+                         j-wildfire.jar (or its resources folder) to draw it as JWildfire does; \
+                         a stand-in is drawn",
+                        def.name,
+                        crate::io::jwf_install::ENV
+                    ),
+                ));
+            }
             for (tp, name) in def.texts.iter().zip(&v.texts) {
                 let image = tp.name.ends_with(IMAGE_TEXT);
                 let mesh = tp.name.ends_with(MESH_TEXT);
@@ -56,6 +75,18 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
         }
     }
     warnings
+}
+
+/// Whether the variation `name` with parameters `params` draws one of JWildfire's own
+/// resources that ugnis can only take from a JWildfire installation: the brush images, the
+/// wang tiles, and the primitive meshes other than the ball and the capsule (which ugnis
+/// builds exactly).
+fn needs_jwildfire(name: &str, params: &[f64]) -> bool {
+    match name {
+        "brush_stroke_wf" | "post_brush_stroke_wf" | "wangtiles" => true,
+        "obj_mesh_primitive_wf" => params.first().is_some_and(|&p| p != 0.0 && p != 1.0),
+        _ => false,
+    }
 }
 
 /// Every xform of a flame: its own, its final ones and those of its other layers.
@@ -102,7 +133,7 @@ fn load_mesh(dir: &Path, name: &str) -> Result<(), String> {
 /// at the same place (to 10⁻⁴) merged, and the faces (`f`, indices from 1, negative ones
 /// counted back from the last vertex read, texture and normal indices ignored) of three
 /// corners, and of four split along their first diagonal; other faces are skipped.
-fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
+pub(crate) fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
     let mut all: Vec<[f32; 3]> = Vec::new();
     let mut mesh = resources::ResourceMesh {
         vertices: Vec::new(),
