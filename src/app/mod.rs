@@ -79,6 +79,9 @@ pub fn run(file: Option<PathBuf>) -> Result<(), eframe::Error> {
             if let Some(p) = problem {
                 app.flame.notices.message("Options", p);
             }
+            if let Some(p) = app.options.apply_jwildfire() {
+                app.flame.notices.message("Options", p);
+            }
             Ok(Box::new(app))
         }),
     )
