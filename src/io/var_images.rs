@@ -42,9 +42,10 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
                     Pos::File,
                     "IMG011",
                     format!(
-                        "{}: draws resources that ship with JWildfire; set {} to JWildfire's \
-                         j-wildfire.jar (or its resources folder) to draw it as JWildfire does; \
-                         a stand-in is drawn",
+                        "{}: draws resources that ship with JWildfire; name JWildfire's \
+                         j-wildfire.jar (Options › General › JWildfire installation, or the \
+                         environment variable {}) to draw it as JWildfire does; a stand-in is \
+                         drawn",
                         def.name,
                         crate::io::jwf_install::ENV
                     ),
