@@ -40,10 +40,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
     ),
     (
-        "taprats",
-        "not implemented: each call draws one primitive picked uniformly from the list Craig Kaplan's Taprats (in JWildfire's source, GPL) renders: the sets' tilings (csk_7, 4.8^2, 10: data in its 3,500-line Tiling class), star and rosette figures in the regular tiles and, with Infer on (alt sets), figures inferred for the others (650 lines), the planar map of the tiling filled over the view window (-1.5 to 1.5), then the interlace, emboss or filled style (200 to 480 lines each, filled regions triangulated); the statistics depend on that list primitive for primitive, so the whole pipeline must be reproduced; not reached in the time",
-    ),
-    (
         "wangtiles",
         "not implemented: it draws the tiles of JWildfire's tile sets, GIF images shipped in its jar (`WangTilesFunc` loads `<set>/<n>.gif`), which ugnis does not have (the palette index nearest to a pixel it sets is available: `PaletteIndex`)",
     ),

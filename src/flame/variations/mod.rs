@@ -138,6 +138,7 @@
 //! | `jwf_m_polylog` | the polylogarithm Li_n (`polylogarithm`) |
 //! | `jwf_m_quaternion` | the quaternion functions summed (`quaternion`) |
 //! | `jwf_m_stabilize` | restarts from fixed points (`pre_stabilize`) |
+//! | `jwf_tp` | Craig S. Kaplan's Taprats star patterns drawn in one of its styles, one segment or triangle per call (`taprats`; planar maps in `jwf_tp_map`, figures in `jwf_tp_figures` and `jwf_tp_infer`, styles in `jwf_tp_render`, tilings in `jwf_tp_tiling`) |
 //! | `jwf_m_tiles` | tilings drawn at random (`arctruchet`) |
 //! | `jwf_m_trig` | sums of complex functions before or after the variations (`pre_recip`, `post_trig`) |
 //! | `jwf_3d` | JWildfire's 3-D variations (`exblur`, `glitchy1`, `plane_wf`, `polarplot3d_wf`, `dla3d_wf`, …) |
@@ -311,6 +312,12 @@ mod jwf_symmetry;
 mod jwf_testing;
 mod jwf_text;
 mod jwf_text_raster;
+mod jwf_tp;
+mod jwf_tp_figures;
+mod jwf_tp_infer;
+mod jwf_tp_map;
+mod jwf_tp_render;
+mod jwf_tp_tiling;
 mod jwf_tx_iflames;
 // JWildfire variations, from the end of the alphabet.
 mod jwf_z_3d;

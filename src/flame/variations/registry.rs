@@ -53,6 +53,8 @@ use super::{jwf_s10_code, jwf_s10_code_dc};
 use super::jwf_sv_sunvoroni;
 // JWildfire variations that sample an anti-aliased drawing (session 11).
 use super::{jwf_aa_svg, jwf_aa_truchet};
+// JWildfire's Taprats star patterns (helper h1, session 12).
+use super::jwf_tp;
 // JWildfire variations, from the end of the alphabet.
 use super::{
     jwf_z_3d, jwf_z_drawings, jwf_z_figures, jwf_z_flora, jwf_z_noise, jwf_z_orbits, jwf_z_plane,
@@ -120,7 +122,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 124] = [
+const FILES: [&[VarDef]; 125] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -259,6 +261,8 @@ const FILES: [&[VarDef]; 124] = [
     jwf_ls_mesh::DEFS,
     // JWildfire's IFlames, its image part (helper h5, session 11).
     jwf_tx_iflames::DEFS,
+    // JWildfire's Taprats star patterns (helper h1, session 12).
+    jwf_tp::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -779,6 +783,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "msTruchet",
     "lsystem3D_js",
     "iflames_wf",
+    "taprats",
 ];
 
 /// Every JWildfire variation's name in registry order.
