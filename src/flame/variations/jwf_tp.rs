@@ -193,6 +193,36 @@ mod tests {
         }
     }
 
+    /// Every tiling, with inference, in the interlaced and the filled style (and stars
+    /// instead of rosettes): a bounded list of finite figures, built in bounded time.
+    #[test]
+    fn every_tiling_draws() {
+        let defaults: Vec<f64> = DEFS[0].params.iter().map(|p| p.default).collect();
+        let start = std::time::Instant::now();
+        let mut slowest = (0.0, 0);
+        for id in 0..TILINGS.len() {
+            for (style, fill, rosette) in [(2.0, 0.0, 1.0), (4.0, 1.0, 0.0)] {
+                let mut p = defaults.clone();
+                (p[0], p[1], p[4], p[7], p[10]) = (id as f64, style, fill, rosette, 1.0);
+                let t0 = std::time::Instant::now();
+                let table = taprats_figures(&p, &[]);
+                let took = t0.elapsed().as_secs_f64();
+                if took > slowest.0 {
+                    slowest = (took, id);
+                }
+                assert!(!table.is_empty(), "Id {id} style {style}: nothing drawn");
+                assert!(table.len() <= FIG * super::super::jwf_tp_render::MAX_FIGURES);
+                assert!(table.iter().all(|v| v.is_finite()), "Id {id}");
+            }
+        }
+        println!(
+            "98 designs in {:.2} s, slowest {:.2} s (Id {})",
+            start.elapsed().as_secs_f64(),
+            slowest.0,
+            slowest.1
+        );
+    }
+
     /// The default design (csk_7, rosettes): the heptagons' rosettes repeated; the map has
     /// no duplicate vertices and its tiles' rosettes meet at their tips (the vertices of
     /// degree 4 are crossings inside a rosette or tips shared by two).

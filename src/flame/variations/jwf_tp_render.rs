@@ -34,15 +34,17 @@ impl Figures {
         self.0.len() >= MAX_FIGURES * FIG
     }
 
+    /// Adds a segment; one with a non-finite end (a mitre of two edges lying on each other,
+    /// infinitely long in Taprats) is left out.
     fn line(&mut self, a: P, b: P, color: f64) {
-        if !self.full() {
+        if !self.full() && a.iter().chain(&b).all(|v| v.is_finite()) {
             self.0
                 .extend_from_slice(&[2.0, a[0], a[1], b[0], b[1], 0.0, 0.0, color]);
         }
     }
 
     fn triangle(&mut self, a: P, b: P, c: P, color: f64) {
-        if !self.full() {
+        if !self.full() && a.iter().chain(&b).chain(&c).all(|v| v.is_finite()) {
             self.0
                 .extend_from_slice(&[3.0, a[0], a[1], b[0], b[1], c[0], c[1], color]);
         }
