@@ -68,7 +68,19 @@ pub fn set_jwildfire_reader(reader: Option<JwildfireReader>) {
     *READER.lock().unwrap_or_else(|e| e.into_inner()) = reader.map(Arc::new);
     let mut b = BUILTINS.lock().unwrap_or_else(|e| e.into_inner());
     *b = (HashMap::new(), 0);
+    drop(b);
+    // What those variations built from the previous reader's resources (or their stand-ins).
+    super::shared::forget(|id| READERS.contains(&super::info(id).name));
 }
+
+/// The variations whose shared data is built from JWildfire's own resources.
+const READERS: [&str; 5] = [
+    "brush_stroke_wf",
+    "obj_mesh_primitive_wf",
+    "post_brush_stroke_wf",
+    "svg_wf",
+    "wangtiles",
+];
 
 /// Whether a reader of JWildfire's resources is installed.
 pub fn has_jwildfire_reader() -> bool {

@@ -151,6 +151,12 @@ fn data_in(
     data
 }
 
+/// Forget the cached data of the variations `which` says yes to (data built from resources
+/// that have since changed); prepared variations keep the data they hold.
+pub(super) fn forget(which: impl Fn(VarId) -> bool) {
+    with_cache(&CACHE, |c| c.entries.retain(|e| !which(e.id)));
+}
+
 /// Number of entries in the process-wide cache.
 #[cfg(test)]
 pub fn cached_entries() -> usize {
