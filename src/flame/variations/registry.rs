@@ -78,6 +78,7 @@ use super::jwf_pal_kaleido;
 // JWildfire's 3-D L-systems (helper h6, session 11).
 use super::jwf_ls_mesh;
 // JWildfire's IFlames (helper h5, session 11).
+use super::jwf_br_brush;
 use super::jwf_tx_iflames;
 
 /// Every variation, by id.
@@ -120,7 +121,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 124] = [
+const FILES: [&[VarDef]; 125] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -259,6 +260,8 @@ const FILES: [&[VarDef]; 124] = [
     jwf_ls_mesh::DEFS,
     // JWildfire's IFlames, its image part (helper h5, session 11).
     jwf_tx_iflames::DEFS,
+    // JWildfire's brush strokes (helper h2, session 12).
+    jwf_br_brush::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -779,6 +782,8 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "msTruchet",
     "lsystem3D_js",
     "iflames_wf",
+    "brush_stroke_wf",
+    "post_brush_stroke_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.
