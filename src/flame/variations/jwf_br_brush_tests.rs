@@ -167,13 +167,36 @@ fn put_brush(id: &str) -> bool {
     )
 }
 
+/// JWildfire 9.00's variants of its default brushes (001, 005, 012) with the default
+/// parameters, as its `AbstractBrushStrokeWFFunc.createPointsMap` builds them (found by
+/// running JWildfire's classes): per variant, the entries of its list (copies), the distinct
+/// pixels, and the mean position of the entries (x, y, to six decimals).
+const JWILDFIRE_VARIANTS: [(f64, usize, f64, f64); 15] = [
+    (65022.0, 9726, -0.026425, -0.021285),
+    (63344.0, 5513, 0.041475, -0.031444),
+    (64720.0, 5782, 0.045275, -0.026699),
+    (61986.0, 9153, -0.033351, 0.097968),
+    (63830.0, 1990, 0.080791, -0.216983),
+    (63775.0, 15153, -0.026490, 0.009994),
+    (63881.0, 5286, 0.090087, -0.150979),
+    (63953.0, 3421, 0.042060, 0.050026),
+    (63978.0, 1798, 0.137424, 0.215921),
+    (64420.0, 10760, 0.115614, 0.041375),
+    (64303.0, 12062, -0.011060, 0.030212),
+    (64010.0, 1193, -0.132957, 0.141811),
+    (63982.0, 8093, -0.035515, -0.129954),
+    (64294.0, 5373, -0.189505, -0.122442),
+    (62814.0, 12784, 0.079166, -0.231369),
+];
+
 #[test]
 fn jwildfires_default_brushes_give_its_variants() {
     if !["001", "005", "012"].iter().all(|i| put_brush(i)) {
         return;
     }
     let d = build(&defaults(), &texts("001, 005, 012"));
-    for g in 0..d[0] as usize {
+    assert_eq!(d[0] as usize, JWILDFIRE_VARIANTS.len());
+    for (g, &(total, distinct, mx, my)) in JWILDFIRE_VARIANTS.iter().enumerate() {
         let b = variant(&d, g).unwrap();
         let m = b[0] as usize;
         let (w, h, side) = (b[2], b[3], b[4]);
@@ -187,6 +210,12 @@ fn jwildfires_default_brushes_give_its_variants() {
             sx += c * (col - w / 2.0) / side;
             sy += c * (row - h / 2.0) / side;
         }
-        eprintln!("{g} {} {m} {:.6} {:.6}", b[1], sx / b[1], sy / b[1]);
+        assert_eq!((b[1], m), (total, distinct), "variant {g}");
+        assert!(
+            (sx / total - mx).abs() < 1e-6 && (sy / total - my).abs() < 1e-6,
+            "variant {g}: {} {}",
+            sx / total,
+            sy / total
+        );
     }
 }
