@@ -32,14 +32,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
     ),
     (
-        "obj_mesh_primitive_wf",
-        "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
-    ),
-    (
-        "svg_wf",
-        "implemented (its own anti-aliased rasteriser and SVG reader); its built-in default drawing is JWildfire's (an Inkscape drawing in SVGWFFunc's LGPL source), which ugnis does not copy: it draws a drawing of its own by default. With JWildfire's drawing given as the SVG text, every row passed (checked when it was written, 2026-11-28)",
-    ),
-    (
         "taprats",
         "not implemented: each call draws one primitive picked uniformly from the list Craig Kaplan's Taprats (in JWildfire's source, GPL) renders: the sets' tilings (csk_7, 4.8^2, 10: data in its 3,500-line Tiling class), star and rosette figures in the regular tiles and, with Infer on (alt sets), figures inferred for the others (650 lines), the planar map of the tiling filled over the view window (-1.5 to 1.5), then the interlace, emboss or filled style (200 to 480 lines each, filled regions triangulated); the statistics depend on that list primitive for primitive, so the whole pipeline must be reproduced; not reached in the time",
     ),
@@ -49,18 +41,27 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
 ];
 
-/// The JWildfire variations that draw with JWildfire's own resource files (its brush images),
-/// which ugnis takes from a JWildfire installation: they are checked when UGNIS_JWILDFIRE names
-/// JWildfire's resource folder (see [`load_brushes`]), and otherwise count as not yet checked.
+/// The JWildfire variations that match their vectors only with JWildfire's own resources
+/// (its brush images, tiles, meshes, default drawing), which ugnis reads from a JWildfire
+/// installation named by `UGNIS_JWILDFIRE` (its j-wildfire.jar, or its resource and class
+/// folders). With it set they are checked like the others; without it they are not checked.
 /// Sorted, one name per line.
 const NEEDS_JWILDFIRE: &[(&str, &str)] = &[
     (
         "brush_stroke_wf",
-        "its default brushes are JWildfire's brush images (brush001.png, …); without them it draws a round brush",
+        "its default brushes, JWildfire's brush images (brush001.png, …); a round brush without them",
+    ),
+    (
+        "obj_mesh_primitive_wf",
+        "alt2's cone: the irregular triangulation of the base in JWildfire's cone.obj",
     ),
     (
         "post_brush_stroke_wf",
-        "its default brushes are JWildfire's brush images (brush001.png, …); without them it draws a round brush",
+        "its default brushes, JWildfire's brush images (brush001.png, …); a round brush without them",
+    ),
+    (
+        "svg_wf",
+        "the default drawing, a string in SVGWFFunc's class",
     ),
 ];
 
@@ -180,43 +181,6 @@ fn prepared(var: &str, ps: &str, s: &Set) -> Prepared {
     let mut v = Prepared::for_flame(s.id, s.form, s.weight, &params, &texts, s.aff, RULES);
     v.give_palette(&UNSET_PALETTE);
     v
-}
-
-/// Temporary, until ugnis reads a JWildfire installation itself: the brush images the brush
-/// variations' parameter sets use (the default list, and the random choices of
-/// `rnd_brush_seed` 1 with 2 to 6 brushes and 2 with 3 to 7, as the `alt` and `alt2` sets
-/// have them), decoded from the JWildfire resource folder UGNIS_JWILDFIRE (e.g. JWildfire's
-/// `src/resources`) into the resource store, once, before any test prepares a variation (a
-/// variation's shared data is built from the store when first prepared). Without it the
-/// brushes stay missing and the variations draw their round fallback brush.
-fn load_brushes() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        let Ok(dir) = std::env::var("UGNIS_JWILDFIRE") else {
-            return;
-        };
-        let (id, _) = variations::parse_name("brush_stroke_wf").expect("brush_stroke_wf");
-        let def = variations::info(id);
-        let texts: Vec<String> = def.texts.iter().map(|t| t.default.to_string()).collect();
-        let mut p: Vec<f64> = def.params.iter().map(|q| q.default).collect();
-        let mut names = variations::brush_resources(&p, &texts);
-        for (seed, lo, hi) in [(1.0, 2.0, 6.0), (2.0, 3.0, 7.0)] {
-            (p[17], p[18], p[19]) = (seed, lo, hi);
-            names.extend(variations::brush_resources(&p, &texts));
-        }
-        for name in names {
-            let path = std::path::Path::new(&dir).join(name.trim_start_matches("jwildfire:"));
-            let Ok(img) = image::open(&path) else {
-                eprintln!("brush image {} not readable", path.display());
-                continue;
-            };
-            let img = img.to_rgba8();
-            let (w, h) = img.dimensions();
-            let rgba = img.pixels().map(|p| p.0).collect();
-            let img = variations::resources::ResourceImage { w, h, rgba };
-            variations::resources::put_image(&name, img);
-        }
-    });
 }
 
 /// The palette the vectors' variations see: a fresh layer's, every entry black (handed over
@@ -731,24 +695,37 @@ fn check_stateful(
 
 #[test]
 fn jwildfire_variations_match_their_vectors() {
-    load_brushes();
     let vars = jwildfire_variations();
+    let installed = match ugnis::io::jwf_install::install_from_env() {
+        Some(r) => {
+            r.expect("UGNIS_JWILDFIRE names a JWildfire installation that opens");
+            true
+        }
+        None => false,
+    };
     let listed: BTreeMap<&str, &str> = NOT_YET.iter().copied().collect();
-    let names: Vec<&str> = NOT_YET.iter().map(|(n, _)| *n).collect();
-    let needs: Vec<&str> = NEEDS_JWILDFIRE.iter().map(|(n, _)| *n).collect();
-    assert!(needs.is_sorted(), "NEEDS_JWILDFIRE must be sorted");
-    for n in &needs {
-        assert!(
-            vars.contains_key(*n) && !listed.contains_key(n),
-            "{n} (in NEEDS_JWILDFIRE) is not a JWildfire variation, or is in NOT_YET too"
-        );
-    }
+    let mut names: Vec<&str> = NOT_YET.iter().map(|(n, _)| *n).collect();
     assert!(names.is_sorted(), "NOT_YET must be sorted");
     assert_eq!(
         listed.len(),
         NOT_YET.len(),
         "NOT_YET names a variation twice"
     );
+    let needs: Vec<&str> = NEEDS_JWILDFIRE.iter().map(|(n, _)| *n).collect();
+    assert!(needs.is_sorted(), "NEEDS_JWILDFIRE must be sorted");
+    for n in &needs {
+        assert!(!listed.contains_key(n), "{n} is on both lists");
+    }
+    if !installed {
+        eprintln!(
+            "{} variations need JWildfire's own resources and are not checked: {} \
+             (set UGNIS_JWILDFIRE to JWildfire's jar or resource folders)",
+            needs.len(),
+            needs.join(", ")
+        );
+    }
+    let skipped: Vec<&str> = if installed { Vec::new() } else { needs };
+    names.extend(&skipped);
     for n in &names {
         assert!(
             vars.contains_key(*n),
@@ -776,15 +753,13 @@ fn jwildfire_variations_match_their_vectors() {
     let rows = check_random(&by_set, &inputs, &mut fails);
     check_stateful(&by_set, &inputs, &vars, &mut fails);
 
-    let considered: Vec<&String> = vars.keys().filter(|n| selected(n)).collect();
-    let with_resources = std::env::var_os("UGNIS_JWILDFIRE").is_some();
-    let unchecked: Vec<&str> = if with_resources { Vec::new() } else { needs };
+    let considered: Vec<&String> = vars
+        .keys()
+        .filter(|n| selected(n) && !skipped.contains(&n.as_str()))
+        .collect();
     let mut problems = Vec::new();
     let mut passing = 0;
     for name in &considered {
-        if unchecked.contains(&name.as_str()) {
-            continue;
-        }
         match (fails.0.get(*name), listed.get(name.as_str())) {
             (None, None) => passing += 1,
             (None, Some(_)) => problems.push(format!("{name} passes: take it off NOT_YET")),
@@ -794,7 +769,7 @@ fn jwildfire_variations_match_their_vectors() {
     }
     let listed_here = considered
         .iter()
-        .filter(|n| listed.contains_key(n.as_str()) || unchecked.contains(&n.as_str()))
+        .filter(|n| listed.contains_key(n.as_str()))
         .count();
     eprintln!(
         "JWildfire variations: {passing} of {} pass, {listed_here} listed as not yet \
@@ -814,7 +789,6 @@ fn jwildfire_variations_match_their_vectors() {
 /// reads back as that variation and form), so typing JWildfire's name finds it.
 #[test]
 fn jwildfire_names_are_listed_as_jwildfire_writes_them() {
-    load_brushes();
     let mut unlisted = Vec::new();
     let mut known = 0;
     for name in jwildfire_variations().keys() {
@@ -840,7 +814,6 @@ fn jwildfire_names_are_listed_as_jwildfire_writes_them() {
 /// any case.
 #[test]
 fn jwildfire_variations_spell_parameters_as_jwildfire() {
-    load_brushes();
     let t = Table::parse(&fixture("vectors"));
     let mut wrong = std::collections::BTreeSet::new();
     for r in &t.rows {

@@ -28,9 +28,29 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
     let dir = flame_path.parent().unwrap_or(Path::new(""));
     let mut warnings = Vec::new();
     let mut done: Vec<String> = Vec::new();
+    let installed = resources::has_jwildfire_reader();
     for x in flames.iter().flat_map(all_xforms) {
         for v in &x.vars {
             let def = variations::info(v.id);
+            if !installed
+                && needs_jwildfire(def.name, &v.params)
+                && !done.contains(&def.name.into())
+            {
+                done.push(def.name.into());
+                warnings.push(Diagnostic::warning(
+                    file,
+                    Pos::File,
+                    "IMG011",
+                    format!(
+                        "{}: draws resources that ship with JWildfire; name JWildfire's \
+                         j-wildfire.jar (Options › General › JWildfire installation, or the \
+                         environment variable {}) to draw it as JWildfire does; a stand-in is \
+                         drawn",
+                        def.name,
+                        crate::io::jwf_install::ENV
+                    ),
+                ));
+            }
             for (tp, name) in def.texts.iter().zip(&v.texts) {
                 // `brush_stroke_wf_image_filename1` … `6` name images too.
                 let image = tp
@@ -59,58 +79,19 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
             }
         }
     }
-    warnings.extend(missing_brushes(flames, file));
     warnings
 }
 
-/// One warning for the flames' brush-stroke variations whose JWildfire brush images are not
-/// in the store (no JWildfire installation configured, or brushes it lacks): they draw a
-/// round brush in their place.
-fn missing_brushes(flames: &[Flame], file: &str) -> Option<Diagnostic> {
-    let mut names: Vec<&str> = Vec::new();
-    let mut missing: Vec<String> = Vec::new();
-    for x in flames.iter().flat_map(all_xforms) {
-        for v in &x.vars {
-            let def = variations::info(v.id);
-            if !def.name.ends_with("brush_stroke_wf") {
-                continue;
-            }
-            let texts: Vec<String> = if v.texts.is_empty() {
-                def.texts.iter().map(|t| t.default.to_string()).collect()
-            } else {
-                v.texts.clone()
-            };
-            for r in variations::brush_resources(&v.params, &texts) {
-                if resources::image(&r).is_none() && !missing.contains(&r) {
-                    missing.push(r);
-                }
-            }
-            if !names.contains(&def.name) {
-                names.push(def.name);
-            }
-        }
+/// Whether the variation `name` with parameters `params` draws one of JWildfire's own
+/// resources that ugnis can only take from a JWildfire installation: the brush images, the
+/// wang tiles, and the primitive meshes other than the ball and the capsule (which ugnis
+/// builds exactly).
+fn needs_jwildfire(name: &str, params: &[f64]) -> bool {
+    match name {
+        "brush_stroke_wf" | "post_brush_stroke_wf" | "wangtiles" => true,
+        "obj_mesh_primitive_wf" => params.first().is_some_and(|&p| p != 0.0 && p != 1.0),
+        _ => false,
     }
-    if missing.is_empty() {
-        return None;
-    }
-    let ids: Vec<&str> = missing
-        .iter()
-        .map(|r| {
-            r.trim_start_matches(variations::BRUSH_PREFIX)
-                .trim_end_matches(".png")
-        })
-        .collect();
-    Some(Diagnostic::warning(
-        file,
-        Pos::File,
-        "IMG011",
-        format!(
-            "{}: JWildfire's brush images {} are not available (no JWildfire installation \
-             configured: UGNIS_JWILDFIRE); a round brush is drawn in their place",
-            names.join(", "),
-            ids.join(", ")
-        ),
-    ))
 }
 
 /// Every xform of a flame: its own, its final ones and those of its other layers.
@@ -157,7 +138,7 @@ fn load_mesh(dir: &Path, name: &str) -> Result<(), String> {
 /// at the same place (to 10⁻⁴) merged, and the faces (`f`, indices from 1, negative ones
 /// counted back from the last vertex read, texture and normal indices ignored) of three
 /// corners, and of four split along their first diagonal; other faces are skipped.
-fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
+pub(crate) fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
     let mut all: Vec<[f32; 3]> = Vec::new();
     let mut mesh = resources::ResourceMesh {
         vertices: Vec::new(),
@@ -278,31 +259,6 @@ mod tests {
         );
         assert!(
             !msgs.iter().any(|m| m.contains("h9b-io-test.png")),
-            "{msgs:?}"
-        );
-        let _ = std::fs::remove_dir_all(&dir);
-    }
-
-    #[test]
-    fn brush_strokes_without_their_brushes_get_one_warning() {
-        let dir = std::env::temp_dir().join(format!("ugnis-brush-warn-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let hex = |s: &str| s.bytes().map(|b| format!("{b:02X}")).collect::<String>();
-        // Brushes 241 and 243 are in no store here; two variations share one warning.
-        let text = format!(
-            r#"<flame name="a" size="10 10" center="0 0" scale="1"><xform weight="1" color="0" brush_stroke_wf="1" brush_stroke_wf_brush_list="{}" coefs="1 0 0 1 0 0"/><xform weight="1" color="0" post_brush_stroke_wf="1" post_brush_stroke_wf_brush_list="{}" coefs="1 0 0 1 0 0"/><palette count="1" format="RGB">000000</palette></flame>"#,
-            hex("241"),
-            hex("243, 241")
-        );
-        let flame_path = dir.join("b.flame");
-        std::fs::write(&flame_path, text).unwrap();
-        let opts = crate::io::flam3_xml::ReadOptions::default();
-        let parsed = crate::io::read_flames(&flame_path, &opts).unwrap();
-        let msgs: Vec<String> = parsed.warnings.iter().map(|w| format!("{w:?}")).collect();
-        let brush: Vec<&String> = msgs.iter().filter(|m| m.contains("IMG011")).collect();
-        assert_eq!(brush.len(), 1, "{msgs:?}");
-        assert!(
-            brush[0].contains("241, 243") && brush[0].contains("post_brush_stroke_wf"),
             "{msgs:?}"
         );
         let _ = std::fs::remove_dir_all(&dir);
