@@ -28,16 +28,8 @@ use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId}
 /// Sorted, one name per line.
 const NOT_YET: &[(&str, &str)] = &[
     (
-        "brush_stroke_wf",
-        "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
-    ),
-    (
         "grid3d_wf",
         "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
-    ),
-    (
-        "post_brush_stroke_wf",
-        "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
     ),
     (
         "wangtiles",
@@ -52,8 +44,16 @@ const NOT_YET: &[(&str, &str)] = &[
 /// Sorted, one name per line.
 const NEEDS_JWILDFIRE: &[(&str, &str)] = &[
     (
+        "brush_stroke_wf",
+        "its default brushes, JWildfire's brush images (brush001.png, …); a round brush without them",
+    ),
+    (
         "obj_mesh_primitive_wf",
         "alt2's cone: the irregular triangulation of the base in JWildfire's cone.obj",
+    ),
+    (
+        "post_brush_stroke_wf",
+        "its default brushes, JWildfire's brush images (brush001.png, …); a round brush without them",
     ),
     (
         "svg_wf",

@@ -52,7 +52,11 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
                 ));
             }
             for (tp, name) in def.texts.iter().zip(&v.texts) {
-                let image = tp.name.ends_with(IMAGE_TEXT);
+                // `brush_stroke_wf_image_filename1` … `6` name images too.
+                let image = tp
+                    .name
+                    .trim_end_matches(|c: char| c.is_ascii_digit())
+                    .ends_with(IMAGE_TEXT);
                 let mesh = tp.name.ends_with(MESH_TEXT);
                 if !(image || mesh) || name.is_empty() || done.contains(name) {
                     continue;

@@ -152,6 +152,7 @@
 //! | `jwf_symmetry` | the symmetry groups `sym_ng*` and `sym_bg*` |
 //! | `jwf_text` | `text_wf` |
 //! | `jwf_tx_iflames` | `iflames_wf` (its image part; the embedded flames are not built) |
+//! | `jwf_br_brush` | strokes of JWildfire's brush images, per grid cell (`brush_stroke_wf`, `post_brush_stroke_wf`; image turning in `jwf_br_raster`) |
 //! | `jwf_text_raster` | the image `text_wf` samples: a line of text in DejaVu Sans, drawn as Java 2D draws it |
 //! | `jwf_z_3d` | JWildfire's 3-D curves and maps (`spirograph3D`, `mobiqN`, `hypertile3Db`, `juliascope3Db`, `checkerboard_wf`, …) |
 //! | `jwf_z_solids` | JWildfire's 3-D figures (`mobius_dragon_3D`, `polySurf`, `primitives_wf`, `glynnSim2B`) |
@@ -226,6 +227,8 @@ mod jwf_b_cuts;
 mod jwf_b_dc;
 mod jwf_b_ifs;
 mod jwf_b_shapes;
+mod jwf_br_brush;
+mod jwf_br_raster;
 mod jwf_c_escape;
 mod jwf_c_glsl;
 mod jwf_c_orbits;
@@ -345,6 +348,7 @@ pub use def::{
 };
 pub(crate) use flam3::Draws;
 pub use flam3::*;
+pub use jwf_br_brush::{BRUSH_PREFIX, brush_name, brush_resources};
 pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
     param_attr_name_in, param_of, parse_name, text_attr_name, text_of, text_problem,

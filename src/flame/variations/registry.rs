@@ -80,6 +80,7 @@ use super::jwf_pal_kaleido;
 // JWildfire's 3-D L-systems (helper h6, session 11).
 use super::jwf_ls_mesh;
 // JWildfire's IFlames (helper h5, session 11).
+use super::jwf_br_brush;
 use super::jwf_tx_iflames;
 
 /// Every variation, by id.
@@ -122,7 +123,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 125] = [
+const FILES: [&[VarDef]; 126] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -263,6 +264,8 @@ const FILES: [&[VarDef]; 125] = [
     jwf_tx_iflames::DEFS,
     // JWildfire's Taprats star patterns (helper h1, session 12).
     jwf_tp::DEFS,
+    // JWildfire's brush strokes (helper h2, session 12).
+    jwf_br_brush::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -784,6 +787,8 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "lsystem3D_js",
     "iflames_wf",
     "taprats",
+    "brush_stroke_wf",
+    "post_brush_stroke_wf",
 ];
 
 /// Every JWildfire variation's name in registry order.
