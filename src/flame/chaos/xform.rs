@@ -38,6 +38,13 @@ pub struct CompiledXform {
     pub linear_only: Option<f64>,
     /// Some variation may hide the point ([`variations::flag::HIDES`]).
     pub hides: bool,
+    /// Under JWildfire's rule the hide flag travels with the point (its `XYZPoint.doHide`,
+    /// copied from the point an xform reads to the point it writes): whether this xform
+    /// passes a hidden point's flag on. True when no variation here hides (nothing touches
+    /// the flag) and when one only ever sets it (JWildfire 9.00's `RhodoneaFunc`); false
+    /// when its hiding variations decide afresh for every point (the crops, `cut_fun`, …:
+    /// they clear the flag where they draw).
+    pub hide_passes_on: bool,
     /// Some variation may give the point a colour of its own (JWildfire's direct colour);
     /// the lane runner carries it only for flames JWildfire's renderer draws.
     pub own_rgb: bool,
@@ -48,6 +55,11 @@ pub struct CompiledXform {
     /// the xform moved it (set for flames JWildfire's renderer draws).
     pub distance: Option<DistanceColour>,
 }
+
+/// The hiding variations that, in JWildfire 9.00, set the point's hide flag and never clear
+/// it: a point they hide stays hidden through the next xforms until some variation clears the
+/// flag (see [`CompiledXform::hide_passes_on`]).
+const ONLY_SET_HIDE: &[&str] = &["rhodonea"];
 
 /// |v| ≤ limit; false for NaN (which fails every comparison).
 #[inline(always)]
@@ -128,12 +140,19 @@ impl CompiledXform {
             .chain(&vars)
             .chain(&post_vars)
             .any(|v| v.def.has(variations::flag::HIDES));
+        let hide_passes_on = !hides
+            || pre_vars
+                .iter()
+                .chain(&vars)
+                .chain(&post_vars)
+                .any(|v| ONLY_SET_HIDE.contains(&v.def.name));
         let own_rgb = pre_vars.iter().chain(&vars).chain(&post_vars).any(|v| {
             v.def.has(variations::flag::JWILDFIRE) && v.def.has(variations::flag::SETS_COLOR)
         });
         CompiledXform {
             linear_only,
             hides,
+            hide_passes_on,
             own_rgb,
             keeps_rgb: false,
             distance: None,
@@ -163,6 +182,13 @@ impl CompiledXform {
     pub fn apply(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
         let (q, bad, _) = self.apply_hiding(p, rng);
         (q, bad)
+    }
+
+    /// Under JWildfire's rule, whether the point this xform wrote is hidden: `here`, a
+    /// variation of this xform hid it; `carried`, the point it read was hidden.
+    #[inline(always)]
+    pub fn hidden_after(&self, here: bool, carried: bool) -> bool {
+        here || (carried && self.hide_passes_on)
     }
 
     /// [`CompiledXform::apply`], also saying whether a variation hid the point (the orbit
