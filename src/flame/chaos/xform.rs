@@ -4,6 +4,7 @@
 
 use super::{BAD_LIMIT, Pt};
 use crate::flame::jwf_render::colour_type::DistanceColour;
+use crate::flame::jwf_render::planes::XformPlanes;
 use crate::flame::model::{Affine, Xform};
 use crate::flame::rng::FastRng;
 use crate::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarIn, ZRule};
@@ -54,6 +55,9 @@ pub struct CompiledXform {
     /// JWildfire's colour type DISTANCE: the point gets the palette entry of the distance
     /// the xform moved it (set for flames JWildfire's renderer draws).
     pub distance: Option<DistanceColour>,
+    /// JWildfire's maps of the yz and zx planes, with the affine map and with the post map
+    /// (for a flame of JWildfire's variations; see [`XformPlanes`]).
+    pub planes: Option<XformPlanes>,
 }
 
 /// The hiding variations that, in JWildfire 9.00, set the point's hide flag and never clear
@@ -124,10 +128,16 @@ impl CompiledXform {
                 Form::Post => post_vars.push(p),
             }
         }
+        let planes = if rules.dialect == Dialect::JWildfire {
+            XformPlanes::of(x)
+        } else {
+            None
+        };
         // The short path computes flam3's linear, z carried along.
         let linear_only = match (&pre_vars[..], &vars[..], &post_vars[..]) {
             ([], [v], [])
                 if v.id == variations::LINEAR
+                    && planes.is_none()
                     && !sets_color
                     && (v.def.has(variations::flag::WRITES_Z) || v.zrule == ZRule::Weighted) =>
             {
@@ -156,6 +166,7 @@ impl CompiledXform {
             own_rgb,
             keeps_rgb: false,
             distance: None,
+            planes,
             coefs: x.coefs,
             post: if x.post.is_identity() {
                 None
@@ -196,12 +207,20 @@ impl CompiledXform {
     #[inline(always)]
     pub fn apply_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
         let blended = self.color_speed * self.color + (1.0 - self.color_speed) * p.c;
-        let (tx, ty) = self.coefs.apply(p.x, p.y);
+        let mut tr = match self.planes.as_ref().and_then(|m| m.pre.as_ref()) {
+            Some(m) => {
+                let (tx, ty, tz) = m.apply(&self.coefs, p.x, p.y, p.z);
+                [tx, ty, tz]
+            }
+            None => {
+                let (tx, ty) = self.coefs.apply(p.x, p.y);
+                [tx, ty, p.z]
+            }
+        };
         let mut acc = Acc {
             color: blended,
             ..Acc::default()
         };
-        let mut tr = [tx, ty, p.z];
         for v in &self.pre_vars {
             v.apply_pre(&mut tr, &mut acc, blended, rng);
         }
@@ -222,7 +241,10 @@ impl CompiledXform {
         for v in &self.post_vars {
             v.apply_post_after(&tr, &mut acc, blended, rng);
         }
-        if let Some(post) = &self.post {
+        if let Some(m) = self.planes.as_ref().and_then(|m| m.post.as_ref()) {
+            let post = self.post.unwrap_or(Affine::IDENTITY);
+            (acc.x, acc.y, acc.z) = m.apply(&post, acc.x, acc.y, acc.z);
+        } else if let Some(post) = &self.post {
             (acc.x, acc.y) = post.apply(acc.x, acc.y);
         }
         let mut nc = blended;
