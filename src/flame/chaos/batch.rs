@@ -6,6 +6,7 @@
 use super::xform::within;
 use super::{CompiledXform, LANES};
 use crate::flame::fastmath;
+use crate::flame::model::Affine;
 use crate::flame::rng::FastRng;
 use crate::flame::variations::{self, Acc, Prepared, SoaAcc, SoaIn, need};
 
@@ -128,7 +129,7 @@ impl CompiledXform {
             g.old[1][..n].copy_from_slice(y);
             g.old[2][..n].copy_from_slice(z);
         }
-        self.blend_and_map(x, y, c);
+        self.blend_and_map(x, y, z, c);
         if let Some(w) = self.linear_only {
             self.linear_and_post(w, x, y, z);
             self.mark_bad(x, y, z, &mut g.bad[..n], rng);
@@ -156,12 +157,19 @@ impl CompiledXform {
 
     /// Blend the colours towards the xform's colour and apply the affine map to the points.
     #[inline(always)]
-    fn blend_and_map(&self, x: &mut [f64], y: &mut [f64], c: &mut [f64]) {
+    fn blend_and_map(&self, x: &mut [f64], y: &mut [f64], z: &mut [f64], c: &mut [f64]) {
         let n = x.len();
         let a = self.coefs;
         let (s, col) = (self.color_speed, self.color);
         for cj in c[..n].iter_mut() {
             *cj = s * col + (1.0 - s) * *cj;
+        }
+        if let Some(m) = self.planes.as_ref().and_then(|m| m.pre.as_ref()) {
+            let z = &mut z[..n];
+            for j in 0..n {
+                (x[j], y[j], z[j]) = m.apply(&a, x[j], y[j], z[j]);
+            }
+            return;
         }
         for j in 0..n {
             let (tx, ty) = a.apply(x[j], y[j]);
@@ -378,8 +386,13 @@ impl CompiledXform {
         rng: &mut FastRng,
     ) {
         let n = x.len();
-        let (px, py) = (&mut g.px[..n], &mut g.py[..n]);
-        if let Some(post) = &self.post {
+        let (px, py, pz) = (&mut g.px[..n], &mut g.py[..n], &mut g.pz[..n]);
+        if let Some(m) = self.planes.as_ref().and_then(|m| m.post.as_ref()) {
+            let post = self.post.unwrap_or(Affine::IDENTITY);
+            for j in 0..n {
+                (px[j], py[j], pz[j]) = m.apply(&post, px[j], py[j], pz[j]);
+            }
+        } else if let Some(post) = &self.post {
             for j in 0..n {
                 (px[j], py[j]) = post.apply(px[j], py[j]);
             }
@@ -394,7 +407,7 @@ impl CompiledXform {
         }
         x[..n].copy_from_slice(px);
         y[..n].copy_from_slice(py);
-        z[..n].copy_from_slice(&g.pz[..n]);
+        z[..n].copy_from_slice(pz);
         self.mark_bad(&mut x[..n], &mut y[..n], &mut z[..n], &mut g.bad[..n], rng);
     }
 

@@ -108,6 +108,7 @@ impl Chaos {
                 let p = Self::start_point(rng);
                 (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
                 o.rgb[l] = 0;
+                o.hid[l] = false;
                 o.step[l] = fuse;
             }
             ln.started = true;
@@ -118,11 +119,12 @@ impl Chaos {
             // orbit then lives for ~LANES calls, about 10 000 of its own samples, the same
             // share of fresh starts.
             let l = rng.u32() as usize % LANES;
-            let (p, last) = self.fused_start(rng);
+            let (p, last, hid) = self.fused_start(rng);
             let o = &mut ln.sets[ln.cur & 1];
             (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
             (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
             o.rgb[l] = 0;
+            o.hid[l] = hid;
         }
     }
 
@@ -132,10 +134,11 @@ impl Chaos {
         let o = &mut ln.sets[ln.cur & 1];
         for l in 0..LANES {
             if o.consec[l] == WAITING {
-                let (p, last) = self.fused_start(rng);
+                let (p, last, hid) = self.fused_start(rng);
                 (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
                 (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
                 o.rgb[l] = 0;
+                o.hid[l] = hid;
             }
         }
     }
@@ -275,6 +278,11 @@ impl Chaos {
                 dst.rgb[p] = src.rgb[l as usize & M];
             }
         }
+        if self.carry_hide {
+            for (p, &l) in ln.order.iter().enumerate() {
+                dst.hid[p] = src.hid[l as usize & M];
+            }
+        }
         if !ln.clean {
             for (p, &l) in ln.order.iter().enumerate() {
                 let l = l as usize & M;
@@ -306,7 +314,19 @@ impl Chaos {
                     rng,
                 );
                 ln.bad[r.clone()].copy_from_slice(&ln.g.bad[..end - start]);
-                if self.hides {
+                if self.carry_hide {
+                    // JWildfire's rule: the flag travels with the point.
+                    let x = &self.xforms[i];
+                    let here = &ln.g.hide[..end - start];
+                    for ((h, c), &hh) in ln.hide[r.clone()]
+                        .iter_mut()
+                        .zip(&mut dst.hid[r.clone()])
+                        .zip(here)
+                    {
+                        *h = x.hidden_after(x.hides && hh, *c);
+                        *c = *h;
+                    }
+                } else if self.hides {
                     if self.xforms[i].hides {
                         ln.hide[r.clone()].copy_from_slice(&ln.g.hide[..end - start]);
                     } else {
@@ -374,7 +394,9 @@ impl Chaos {
             dst.last[p] = ch;
             if dst.step[p] >= 0 {
                 if took < left {
-                    let v = if self.hides && ln.hide[p] {
+                    // Under JWildfire's rule the final xforms may show a hidden point again:
+                    // its visibility waits for them (`fin_hide`).
+                    let v = if self.hides && ln.hide[p] && (direct || !self.carry_hide) {
                         0.0
                     } else {
                         self.xforms[ch as usize].vis
@@ -390,6 +412,7 @@ impl Chaos {
                         ln.fin.c[k] = dst.c[p];
                         ln.fin.rgb[k] = dst.rgb[p];
                         ln.fin_vis[k] = v;
+                        ln.fin_hide[k] = self.carry_hide && ln.hide[p];
                         nf += 1;
                     }
                 }
@@ -425,7 +448,11 @@ impl Chaos {
                     &mut ln.g,
                     rng,
                 );
-                if f.hides {
+                if self.carry_hide {
+                    for (c, &h) in ln.fin_hide[..m].iter_mut().zip(&ln.g.hide[..m]) {
+                        *c = f.hidden_after(f.hides && h, *c);
+                    }
+                } else if f.hides {
                     for (v, &h) in ln.fin_vis[..m].iter_mut().zip(&ln.g.hide[..m]) {
                         if h {
                             *v = 0.0;
@@ -441,7 +468,16 @@ impl Chaos {
                     }
                 }
             } else {
-                Self::final_by_opacity(f, ln, m, self.rgb, self.jwf_bad_values, rng);
+                let rules = (self.jwf_bad_values, self.carry_hide);
+                Self::final_by_opacity(f, ln, m, self.rgb, rules, rng);
+            }
+        }
+        if self.carry_hide {
+            // A hidden sample counts, and adds nothing.
+            for (v, &h) in ln.fin_vis[..m].iter_mut().zip(&ln.fin_hide[..m]) {
+                if h && *v > 0.0 {
+                    *v = 0.0;
+                }
             }
         }
         if let Some(pr) = &self.projection {
@@ -454,13 +490,14 @@ impl Chaos {
 
     /// The final xform `f` applied to each of the first `m` samples of `ln.fin` with
     /// probability = its opacity: the chosen points are compacted, transformed and put back.
+    /// `(drop_bad, carry_hide)`: JWildfire's rules for bad values and hidden points.
     #[inline(always)]
     fn final_by_opacity(
         f: &CompiledXform,
         ln: &mut Lanes,
         m: usize,
         own_rgb: bool,
-        drop_bad: bool,
+        (drop_bad, carry_hide): (bool, bool),
         rng: &mut FastRng,
     ) {
         ln.chosen.clear();
@@ -489,7 +526,10 @@ impl Chaos {
             rng,
         );
         for (k, &j) in ln.chosen.iter().enumerate() {
-            if f.hides && ln.g.hide[k & M] {
+            if carry_hide {
+                let c = &mut ln.fin_hide[j & M];
+                *c = f.hidden_after(f.hides && ln.g.hide[k & M], *c);
+            } else if f.hides && ln.g.hide[k & M] {
                 ln.fin_vis[j & M] = 0.0;
             }
             if drop_bad && ln.g.bad[k & M] {

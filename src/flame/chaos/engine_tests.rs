@@ -230,3 +230,75 @@ fn affine_ifs_replaces_bad_values_and_keeps_plotting() {
     assert_eq!(n, 300_000.0);
     assert!(bad > 1000, "{bad} bad values");
 }
+
+/// Under JWildfire's rule a point's hide flag travels with it (JWildfire 9.00's
+/// `XYZPoint.doHide`, copied by `XForm.transformPoint` from the point read to the point
+/// written): an xform without hiding variations passes it on, a crop decides afresh.
+/// Map 0 sends every point to (5, 5) through a crop that hides it, map 1 sends every point
+/// to the origin through a crop that shows it, and map 2 (linear) keeps the point where it
+/// is, hidden or not. So every sample at (5, 5) is hidden (map 0's third of them and map 2's
+/// sixth, after map 0), and every sample at the origin is drawn (map 1's third and map 2's
+/// sixth); a flag per step would draw map 2's samples at (5, 5).
+#[test]
+fn jwildfire_carries_the_hide_flag_with_the_point() {
+    use crate::flame::PaletteIndex;
+    use crate::flame::model::Var;
+    let crop = variations::by_name("crop").unwrap();
+    let zero = variations::info(crop)
+        .params
+        .iter()
+        .position(|p| p.name == "crop_zero")
+        .unwrap();
+    let cropped = |e: f64| {
+        let mut x = Xform::linear(Affine::new(0.0, 0.0, 0.0, 0.0, e, e), 1.0, 0.0);
+        let mut v = Var::new(crop, 1.0);
+        v.params[zero] = 1.0;
+        x.vars = vec![v];
+        // The crop gives the origin for a point it hides: the post map moves it to (5, 5).
+        x.post = Affine::new(1.0, 0.0, 0.0, 1.0, e, e);
+        x
+    };
+    let f = Flame {
+        xforms: vec![
+            cropped(5.0),
+            cropped(0.0),
+            Xform::linear(Affine::IDENTITY, 1.0, 0.5),
+        ],
+        palette_index: PaletteIndex::JWildfire,
+        ..Flame::default()
+    };
+    let ch = Chaos::new(&f).unwrap();
+    assert!(ch.carry_hide);
+    assert!(ch.xforms[0].hides && ch.xforms[1].hides && !ch.xforms[2].hides);
+    // (hidden at (5, 5), drawn at (5, 5), drawn at the origin, anything else)
+    let mut lanes = [0u64; 4];
+    let mut scalar = [0u64; 4];
+    let tally = |t: &mut [u64; 4], x: f64, y: f64, v: f64| {
+        let k = match (x, y, v > 0.0) {
+            (5.0, 5.0, false) => 0,
+            (5.0, 5.0, true) => 1,
+            (0.0, 0.0, true) => 2,
+            _ => 3,
+        };
+        t[k] += 1;
+    };
+    let mut rng = FastRng::new(4);
+    let mut ln = Lanes::new();
+    for _ in 0..4 {
+        ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs, _rgb| {
+            for j in 0..xs.len() {
+                if vs[j] >= 0.0 {
+                    tally(&mut lanes, xs[j], ys[j], vs[j]);
+                }
+            }
+        });
+        ch.run_sub_batch(10_000, &mut rng, |p, v| tally(&mut scalar, p.x, p.y, v));
+    }
+    for t in [lanes, scalar] {
+        assert_eq!(t.iter().sum::<u64>(), 40_000);
+        assert_eq!((t[1], t[3]), (0, 0), "{t:?}");
+        for k in [0, 2] {
+            assert!((t[k] as f64 / 40_000.0 - 0.5).abs() < 0.03, "{t:?}");
+        }
+    }
+}

@@ -19,6 +19,9 @@ pub(super) struct Orbits {
     pub(super) last: [u16; LANES],
     pub(super) consec: [u8; LANES],
     pub(super) step: [i32; LANES],
+    /// The point is hidden (carried only for a flame JWildfire's renderer draws,
+    /// whose points keep their hide flag from xform to xform).
+    pub(super) hid: [bool; LANES],
 }
 
 /// The consecutive bad values of an orbit that met one under JWildfire's rule and waits for
@@ -36,6 +39,7 @@ impl Orbits {
             last: [u16::MAX; LANES],
             consec: [0; LANES],
             step: [-(FUSE as i32); LANES],
+            hid: [false; LANES],
         }
     }
 }
@@ -76,6 +80,9 @@ pub struct Lanes {
     pub(super) g: Scratch,
     pub(super) fin: Group,
     pub(super) fin_vis: [f64; LANES],
+    /// Under JWildfire's rule: the sample in `fin` at each place is hidden (the final xforms
+    /// may hide it or show it again).
+    pub(super) fin_hide: [bool; LANES],
     pub(super) chosen: Vec<usize>,
     pub(super) tmp: Group,
 }
@@ -185,6 +192,7 @@ impl Lanes {
             g: Scratch::new(),
             fin: Group::new(),
             fin_vis: [0.0; LANES],
+            fin_hide: [false; LANES],
             chosen: Vec::with_capacity(LANES),
             tmp: Group::new(),
         })

@@ -101,6 +101,13 @@ pub struct Chaos {
     /// check (every [`JWF_CHECK_STEPS`] steps) restarts it; a final xform's bad value is a
     /// sample that draws nothing.
     jwf_bad_values: bool,
+    /// JWildfire's rule for hidden points (a flame its renderer draws, some xform of which
+    /// may hide points): the hide flag travels with the point, as JWildfire's
+    /// `XYZPoint.doHide` does, so the orbit's samples stay hidden through xforms that do not
+    /// touch the flag until a hiding variation shows the point again
+    /// ([`CompiledXform::hide_passes_on`]); a final xform's hiding variations decide for the
+    /// sample in the same way.
+    carry_hide: bool,
     /// Some variation gives points the palette position of a colour: the colour coordinates
     /// depend on the palette, so a palette change needs the chaos game run again.
     pub reads_palette: bool,
@@ -347,6 +354,7 @@ impl Chaos {
             tables,
             xaos,
             jwf_bad_values,
+            carry_hide: jwf_bad_values && hides,
             reads_palette,
         })
     }
@@ -372,12 +380,24 @@ impl Chaos {
     /// [`Chaos::finalise`], also saying whether a final xform hid the point.
     #[inline(always)]
     pub fn finalise_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool) {
-        let (mut p, mut hidden) = (p, false);
+        self.finalise_carrying(p, false, rng)
+    }
+
+    /// [`Chaos::finalise_hiding`] of a point that comes `hidden` or not: under JWildfire's
+    /// rule ([`Chaos::carry_hide`]) the final xforms pass the flag on or decide afresh,
+    /// otherwise any hiding (the point's or a final xform's) hides the sample.
+    #[inline(always)]
+    fn finalise_carrying(&self, p: Pt, hidden: bool, rng: &mut FastRng) -> (Pt, bool) {
+        let (mut p, mut hidden) = (p, hidden);
         for f in self.final_xform.iter().chain(&self.more_finals) {
             if f.opacity >= 1.0 || rng.f01() < f.opacity {
                 let (q, _, hide) = f.apply_hiding(p, rng);
                 p = q;
-                hidden |= hide;
+                hidden = if self.carry_hide {
+                    f.hidden_after(hide, hidden)
+                } else {
+                    hidden | hide
+                };
             }
         }
         (p, hidden)
@@ -410,16 +430,22 @@ impl Chaos {
         if self.jwf_bad_values { JWF_FUSE } else { FUSE }
     }
 
-    /// A random start point iterated through the fuse, and the xform applied last.
-    fn fused_start(&self, rng: &mut FastRng) -> (Pt, usize) {
+    /// A random start point iterated through the fuse, the xform applied last, and whether
+    /// the point is hidden at the end (under JWildfire's rule, [`Chaos::carry_hide`]: its
+    /// fuse carries the flag as its render does).
+    fn fused_start(&self, rng: &mut FastRng) -> (Pt, usize, bool) {
         let mut p = Self::start_point(rng);
         let mut last = None;
+        let mut hidden = false;
         for _ in 0..self.fuse() {
             let i = self.choose(last, rng);
-            p = self.xforms[i].apply(p, rng).0;
+            let x = &self.xforms[i];
+            let (q, bad, here) = x.apply_hiding(p, rng);
+            p = q;
+            hidden = self.carry_hide && !bad && x.hidden_after(here, hidden);
             last = Some(i);
         }
-        (p, last.unwrap_or(0))
+        (p, last.unwrap_or(0), hidden)
     }
 
     /// Run one sub-batch of `n` plotted samples. `plot(p, vis)` receives
@@ -431,15 +457,23 @@ impl Chaos {
         let mut consec = 0u32;
         let mut bad = 0u64;
         let mut last = None;
+        // The point's hide flag, under JWildfire's rule (see `carry_hide`).
+        let mut carried = false;
         let n = n as i64;
         while k < n {
             let i = self.choose(last, rng);
             let xf = &self.xforms[i];
-            let (np, is_bad, hidden) = xf.apply_hiding(p, rng);
+            let (np, is_bad, mut hidden) = xf.apply_hiding(p, rng);
             p = np;
+            if self.carry_hide {
+                hidden = xf.hidden_after(hidden, carried);
+                carried = hidden;
+            }
             if is_bad {
                 consec += 1;
                 bad += 1;
+                // The point starts again (in the plane, shown).
+                carried = false;
                 if consec < 5 {
                     continue;
                 }
@@ -448,8 +482,8 @@ impl Chaos {
             last = Some(i);
             if k >= 0 {
                 // A hidden sample counts, and adds nothing.
-                let (q, fin_hidden) = self.finalise_hiding(p, rng);
-                let v = if hidden || fin_hidden { 0.0 } else { xf.vis };
+                let (q, hidden) = self.finalise_carrying(p, hidden, rng);
+                let v = if hidden { 0.0 } else { xf.vis };
                 plot(self.project(q, rng), v);
             }
             k += 1;

@@ -4,6 +4,7 @@
 
 use super::{BAD_LIMIT, Pt};
 use crate::flame::jwf_render::colour_type::DistanceColour;
+use crate::flame::jwf_render::planes::XformPlanes;
 use crate::flame::model::{Affine, Xform};
 use crate::flame::rng::FastRng;
 use crate::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarIn, ZRule};
@@ -38,6 +39,13 @@ pub struct CompiledXform {
     pub linear_only: Option<f64>,
     /// Some variation may hide the point ([`variations::flag::HIDES`]).
     pub hides: bool,
+    /// Under JWildfire's rule the hide flag travels with the point (its `XYZPoint.doHide`,
+    /// copied from the point an xform reads to the point it writes): whether this xform
+    /// passes a hidden point's flag on. True when no variation here hides (nothing touches
+    /// the flag) and when one only ever sets it (JWildfire 9.00's `RhodoneaFunc`); false
+    /// when its hiding variations decide afresh for every point (the crops, `cut_fun`, …:
+    /// they clear the flag where they draw).
+    pub hide_passes_on: bool,
     /// Some variation may give the point a colour of its own (JWildfire's direct colour);
     /// the lane runner carries it only for flames JWildfire's renderer draws.
     pub own_rgb: bool,
@@ -47,7 +55,15 @@ pub struct CompiledXform {
     /// JWildfire's colour type DISTANCE: the point gets the palette entry of the distance
     /// the xform moved it (set for flames JWildfire's renderer draws).
     pub distance: Option<DistanceColour>,
+    /// JWildfire's maps of the yz and zx planes, with the affine map and with the post map
+    /// (for a flame of JWildfire's variations; see [`XformPlanes`]).
+    pub planes: Option<XformPlanes>,
 }
+
+/// The hiding variations that, in JWildfire 9.00, set the point's hide flag and never clear
+/// it: a point they hide stays hidden through the next xforms until some variation clears the
+/// flag (see [`CompiledXform::hide_passes_on`]).
+const ONLY_SET_HIDE: &[&str] = &["rhodonea"];
 
 /// |v| ≤ limit; false for NaN (which fails every comparison).
 #[inline(always)]
@@ -112,10 +128,16 @@ impl CompiledXform {
                 Form::Post => post_vars.push(p),
             }
         }
+        let planes = if rules.dialect == Dialect::JWildfire {
+            XformPlanes::of(x)
+        } else {
+            None
+        };
         // The short path computes flam3's linear, z carried along.
         let linear_only = match (&pre_vars[..], &vars[..], &post_vars[..]) {
             ([], [v], [])
                 if v.id == variations::LINEAR
+                    && planes.is_none()
                     && !sets_color
                     && (v.def.has(variations::flag::WRITES_Z) || v.zrule == ZRule::Weighted) =>
             {
@@ -128,15 +150,23 @@ impl CompiledXform {
             .chain(&vars)
             .chain(&post_vars)
             .any(|v| v.def.has(variations::flag::HIDES));
+        let hide_passes_on = !hides
+            || pre_vars
+                .iter()
+                .chain(&vars)
+                .chain(&post_vars)
+                .any(|v| ONLY_SET_HIDE.contains(&v.def.name));
         let own_rgb = pre_vars.iter().chain(&vars).chain(&post_vars).any(|v| {
             v.def.has(variations::flag::JWILDFIRE) && v.def.has(variations::flag::SETS_COLOR)
         });
         CompiledXform {
             linear_only,
             hides,
+            hide_passes_on,
             own_rgb,
             keeps_rgb: false,
             distance: None,
+            planes,
             coefs: x.coefs,
             post: if x.post.is_identity() {
                 None
@@ -165,17 +195,32 @@ impl CompiledXform {
         (q, bad)
     }
 
+    /// Under JWildfire's rule, whether the point this xform wrote is hidden: `here`, a
+    /// variation of this xform hid it; `carried`, the point it read was hidden.
+    #[inline(always)]
+    pub fn hidden_after(&self, here: bool, carried: bool) -> bool {
+        here || (carried && self.hide_passes_on)
+    }
+
     /// [`CompiledXform::apply`], also saying whether a variation hid the point (the orbit
     /// goes on from it, the sample is not drawn).
     #[inline(always)]
     pub fn apply_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
         let blended = self.color_speed * self.color + (1.0 - self.color_speed) * p.c;
-        let (tx, ty) = self.coefs.apply(p.x, p.y);
+        let mut tr = match self.planes.as_ref().and_then(|m| m.pre.as_ref()) {
+            Some(m) => {
+                let (tx, ty, tz) = m.apply(&self.coefs, p.x, p.y, p.z);
+                [tx, ty, tz]
+            }
+            None => {
+                let (tx, ty) = self.coefs.apply(p.x, p.y);
+                [tx, ty, p.z]
+            }
+        };
         let mut acc = Acc {
             color: blended,
             ..Acc::default()
         };
-        let mut tr = [tx, ty, p.z];
         for v in &self.pre_vars {
             v.apply_pre(&mut tr, &mut acc, blended, rng);
         }
@@ -196,7 +241,10 @@ impl CompiledXform {
         for v in &self.post_vars {
             v.apply_post_after(&tr, &mut acc, blended, rng);
         }
-        if let Some(post) = &self.post {
+        if let Some(m) = self.planes.as_ref().and_then(|m| m.post.as_ref()) {
+            let post = self.post.unwrap_or(Affine::IDENTITY);
+            (acc.x, acc.y, acc.z) = m.apply(&post, acc.x, acc.y, acc.z);
+        } else if let Some(post) = &self.post {
             (acc.x, acc.y) = post.apply(acc.x, acc.y);
         }
         let mut nc = blended;

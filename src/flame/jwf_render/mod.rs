@@ -5,7 +5,8 @@
 //! kernel and the density through a small Gaussian), and its tone map (white level, gamma
 //! threshold, vibrancy, colour balance, saturation, foreground opacity, gradient backgrounds);
 //! the plot of points that carry a colour of their own ([`own_colour`]), and its colour type
-//! DISTANCE ([`colour_type`]).
+//! DISTANCE ([`colour_type`]); the affine maps of the yz and zx planes a JWildfire xform may
+//! carry ([`planes`]).
 //!
 //! Which renderer draws a flame follows the program that wrote it, as the palette rule does
 //! ([`crate::flame::PaletteIndex::JWildfire`]). The facts come from JWildfire 9.00's
@@ -16,6 +17,7 @@ pub(crate) mod colour_type;
 pub(crate) mod develop;
 pub mod kernel;
 pub(crate) mod own_colour;
+pub mod planes;
 
 pub(crate) use develop::JwfRaster;
 pub use kernel::JwfKernel;
