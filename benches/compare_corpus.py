@@ -10,7 +10,9 @@ program that wrote it, from its attributes:
   version="0.16 (06.11.2011)" (JWildfire's first releases, 2011)             -> JWildfire
   version="JWildfire …", <jwf-flame>                                         -> skipped
 
-(Apophysis itself does not run here; Fractorium, which reads its files, stands in for it.) The
+(Apophysis itself does not run here; Fractorium, which reads its files, stands in for it; ugnis
+indexes an Apophysis palette by Apophysis' rule, Fractorium by its own, so --ugnis-rule
+fractorium shows the rendering differences alone.) The
 flame is cut out of its file and rewritten to --width px (height from its aspect, pixels per unit
 scaled with the width) at --quality; the reference program renders it twice, with two seeds, and
 ugnis once at the same size and quality. Printed per flame: PSNR (RGB, 8 bit, after a 3x3 box
