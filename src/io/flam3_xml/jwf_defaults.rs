@@ -10,8 +10,9 @@ use crate::flame::model::Xform;
 use crate::flame::variations;
 
 /// Variation name, then (parameter attribute, JWildfire's default) where it differs from the
-/// registry's.
+/// registry's. The values are JWildfire's own numbers (its 1.5708 is not π/2), as written.
 #[rustfmt::skip]
+#[allow(clippy::approx_constant)]
 const DEFAULTS: &[(&str, &[(&str, f64)])] = &[
     ("curl", &[("curl_c1", 0.1)]),
     ("curl3D", &[("curl3D_cy", 0.05), ("curl3D_cz", 0.05)]),
