@@ -12,8 +12,10 @@
 //! final xform), bad values as JWildfire meets them (an orbit
 //! gone to NaN draws nothing until JWildfire's next check restarts it; a pre_blur marked with
 //! priority 0 does nothing), and the colour type DISTANCE (the palette entry of how far an
-//! xform moved the point), and hidden points as JWildfire carries them (the hide flag stays
-//! with the point through xforms that do not touch it).
+//! xform moved the point), hidden points as JWildfire carries them (the hide flag stays
+//! with the point through xforms that do not touch it), and a file of JWildfire's first
+//! releases (2011: a bare version, flam3's density-estimator attributes, which JWildfire
+//! ignores, variations without their parameters, which take JWildfire's defaults).
 //!
 //! Tolerance: JWildfire itself at quality 300 (another seed) against the reference, the number
 //! in the table; ugnis at quality 300 must reach it minus 2.5 dB. Drawn by flam3's rules these
@@ -37,6 +39,7 @@ const FIXTURES: &[(&str, f64)] = &[
     ("broken", 32.91),
     ("distance", 41.07),
     ("hidden", 45.44),
+    ("early", 49.69),
 ];
 
 fn fixture(name: &str) -> std::path::PathBuf {

@@ -227,7 +227,7 @@ mod tests {
             ("EMBER-WIN-1.0.0.7", Fractorium),
             ("JWildfire V5.60 (07.05.2020)", JWildfire),
             ("JWildfire V7.00 (07.08.2021)", JWildfire),
-            ("0.16 (06.11.2011)", Apophysis),
+            ("0.16 (06.11.2011)", JWildfire),
             ("Apophysis 7x 2010 (R12)", Apophysis),
             ("Apophysis 2.09", Apophysis),
             ("FLAM3-LNX-3.1.1", Flam3),

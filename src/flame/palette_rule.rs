@@ -72,7 +72,8 @@ impl PaletteIndex {
     }
     /// The rule of the program named by a flame's `version` attribute: Apophysis writes
     /// "Apophysis 7x …", Fractorium "EMBER-…", JWildfire "JWildfire V…" (its first releases of
-    /// 2011 only "0.16 (06.11.2011)"; they indexed as Apophysis does).
+    /// 2011 only "0.16 (06.11.2011)": JWildfire, the one program that still reads them as its
+    /// own, draws them by its rules, without flam3's density estimation).
     pub fn from_version(v: &str) -> Self {
         let v = v.trim();
         // Dot-separated groups of digits of the given lengths (0: any length but empty).
@@ -95,9 +96,9 @@ impl PaletteIndex {
         let starts = |p: &str| v.get(..p.len()).is_some_and(|q| q.eq_ignore_ascii_case(p));
         if starts("ember") {
             PaletteIndex::Fractorium
-        } else if starts("jwildfire") {
+        } else if starts("jwildfire") || early_jwildfire {
             PaletteIndex::JWildfire
-        } else if starts("apophysis") || early_jwildfire {
+        } else if starts("apophysis") {
             PaletteIndex::Apophysis
         } else {
             PaletteIndex::Flam3

@@ -31,6 +31,9 @@ pub(super) struct Ctx<'t, 'o> {
     /// The flame being read is drawn as JWildfire draws it (JWildfire wrote it, or ugnis copied
     /// one JWildfire wrote): variations that colour or hide points act at amount 0.
     pub(super) jwildfire_flame: bool,
+    /// The flame being read was written by Apophysis, whose plugins may name their parameters
+    /// without the variation's prefix (pixel_flow's `angle` for `pixel_flow_angle`).
+    pub(super) apophysis_names: bool,
     pub(super) library: OnceCell<Result<PaletteLibrary, String>>,
 }
 
@@ -56,6 +59,7 @@ impl<'t, 'o: 't> Ctx<'t, 'o> {
             opts,
             jwildfire_names: false,
             jwildfire_flame: false,
+            apophysis_names: false,
             library: OnceCell::new(),
         }
     }

@@ -95,10 +95,12 @@ pub(super) fn read_flame(
     let gradient_name = std::mem::take(&mut f.palette.name);
     if !is_empty {
         cx.jwildfire_names = st.version_index == PaletteIndex::JWildfire;
+        cx.apophysis_names = st.version_index == PaletteIndex::Apophysis;
         cx.jwildfire_flame =
             st.palette_index.unwrap_or(st.version_index) == PaletteIndex::JWildfire;
         let read = read_flame_children(cx, cur, text, &mut f, &mut pal);
         cx.jwildfire_names = false;
+        cx.apophysis_names = false;
         cx.jwildfire_flame = false;
         read?;
     }

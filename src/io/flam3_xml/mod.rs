@@ -21,6 +21,7 @@ mod children;
 mod context;
 mod flame;
 mod jwf_curves;
+mod jwf_defaults;
 mod jwf_look;
 mod layers;
 mod palette;
@@ -34,6 +35,8 @@ mod xform;
 mod tests;
 #[cfg(test)]
 mod tests_jwf;
+#[cfg(test)]
+mod tests_writers;
 
 pub use read::read;
 pub use template::{Template, read_template};

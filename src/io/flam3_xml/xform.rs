@@ -97,7 +97,18 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
         (None, Some(sig)) if sig > 0.0 => 0.0,
         _ => 1.0,
     };
+    if cx.apophysis_names && !motion {
+        unprefixed_params(cx, &mut x, &mut st);
+    }
     apply_priorities(attrs, &mut x, &mut st, cx.jwildfire_flame);
+    if cx.jwildfire_flame && !motion {
+        let given = |id: VarId, index: usize, k: u32| {
+            st.params
+                .iter()
+                .any(|p| p.id == id && p.index == index && p.instance == k)
+        };
+        super::jwf_defaults::apply(&mut x, &st.instances, given);
+    }
     let has_texts = !st.texts.is_empty();
     attach_params(&mut x, st);
     if has_texts {
@@ -109,6 +120,46 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
         }
     }
     Ok(x)
+}
+
+/// Apophysis plugins may name their parameters without the variation's prefix (pixel_flow's
+/// `angle`, `len`, `width`, `seed` for `pixel_flow_angle` …), and Apophysis writes them so;
+/// Fractorium reads such an attribute as the parameter `VAR_name` of a variation VAR of the
+/// xform (`XmlToEmber`, for files it did not write). The kept attributes that name such a
+/// parameter become it; a prefixed attribute of the same parameter wins.
+fn unprefixed_params(cx: &mut Ctx, x: &mut Xform, st: &mut Pending) {
+    let mut k = 0;
+    while k < x.extra_attrs.len() {
+        let (name, raw) = x.extra_attrs[k].clone();
+        let found = parse_number(raw.trim()).ok().and_then(|value| {
+            x.vars.iter().find_map(|v| {
+                let full = format!("{}_{}", variations::info(v.id).name, name);
+                let (id, _, index) = variations::param_of(&full)?;
+                (id == v.id).then_some((id, v.form, index, value))
+            })
+        });
+        let Some((id, form, index, value)) = found else {
+            k += 1;
+            continue;
+        };
+        let given = st
+            .params
+            .iter()
+            .any(|p| p.id == id && p.index == index && p.instance == 0);
+        if !given {
+            st.params.push(Param {
+                id,
+                form,
+                instance: 0,
+                index,
+                value,
+                name: name.clone(),
+                raw,
+            });
+        }
+        cx.interpreted(&name);
+        x.extra_attrs.remove(k);
+    }
 }
 
 /// The names that are taken as variations (to tell a foreign variation from another
