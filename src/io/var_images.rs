@@ -55,7 +55,42 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
             }
         }
     }
+    warnings.extend(missing_jwildfire_resources(flames, file));
     warnings
+}
+
+/// One warning when variations of `flames` read JWildfire's own resources (`wangtiles`' tile
+/// images) that were not handed over, as when no JWildfire installation was read: they then
+/// draw stand-ins.
+fn missing_jwildfire_resources(flames: &[Flame], file: &str) -> Option<Diagnostic> {
+    let mut users: Vec<&str> = Vec::new();
+    let mut missing = 0;
+    for x in flames.iter().flat_map(all_xforms) {
+        for v in &x.vars {
+            let names = variations::jwildfire_resources(v.id, &v.params);
+            let lacking = names
+                .iter()
+                .filter(|n| resources::image(n).is_none())
+                .count();
+            let name = variations::info(v.id).name;
+            if lacking > 0 && !users.contains(&name) {
+                users.push(name);
+            }
+            missing += lacking;
+        }
+    }
+    (missing > 0).then(|| {
+        Diagnostic::warning(
+            file,
+            Pos::File,
+            "IMG011",
+            format!(
+                "{}: {missing} of JWildfire's own images it draws are not available (they are \
+                 read from a JWildfire installation); stand-ins are drawn in their place",
+                users.join(", ")
+            ),
+        )
+    })
 }
 
 /// Every xform of a flame: its own, its final ones and those of its other layers.
@@ -225,6 +260,36 @@ mod tests {
             !msgs.iter().any(|m| m.contains("h9b-io-test.png")),
             "{msgs:?}"
         );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn wangtiles_without_its_tile_images_is_reported_once() {
+        let dir = std::env::temp_dir().join(format!("ugnis-wt-images-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        // Two xforms with sets (70: corn2/roof, 84: truch/tru1) no other test stores.
+        let x = |id: u32| {
+            format!(
+                r#"<xform weight="1" color="0" wangtiles="1" wangtiles_id="{id}" wangtiles_seed="5" coefs="1 0 0 1 0 0"/>"#
+            )
+        };
+        let text = format!(
+            r#"<flame name="a" size="10 10" center="0 0" scale="1">{}{}<palette count="1" format="RGB">000000</palette></flame>"#,
+            x(70),
+            x(84)
+        );
+        let flame_path = dir.join("wt.flame");
+        std::fs::write(&flame_path, text).unwrap();
+        let opts = crate::io::flam3_xml::ReadOptions::default();
+        let parsed = crate::io::read_flames(&flame_path, &opts).unwrap();
+        let msgs: Vec<String> = parsed
+            .warnings
+            .iter()
+            .filter(|w| w.code == "IMG011")
+            .map(|w| w.message.clone())
+            .collect();
+        assert_eq!(msgs.len(), 1, "{msgs:?}");
+        assert!(msgs[0].starts_with("wangtiles: "), "{msgs:?}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 

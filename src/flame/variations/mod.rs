@@ -312,6 +312,8 @@ mod jwf_testing;
 mod jwf_text;
 mod jwf_text_raster;
 mod jwf_tx_iflames;
+mod jwf_wt_tiling;
+mod jwf_wt_wangtiles;
 // JWildfire variations, from the end of the alphabet.
 mod jwf_z_3d;
 mod jwf_z_drawings;
@@ -338,6 +340,7 @@ pub use def::{
 };
 pub(crate) use flam3::Draws;
 pub use flam3::*;
+pub use jwf_wt_wangtiles::jwildfire_resources;
 pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
     param_attr_name_in, param_of, parse_name, text_attr_name, text_of, text_problem,

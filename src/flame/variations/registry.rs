@@ -79,6 +79,7 @@ use super::jwf_pal_kaleido;
 use super::jwf_ls_mesh;
 // JWildfire's IFlames (helper h5, session 11).
 use super::jwf_tx_iflames;
+use super::jwf_wt_wangtiles;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -120,7 +121,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 124] = [
+const FILES: [&[VarDef]; 125] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -259,6 +260,8 @@ const FILES: [&[VarDef]; 124] = [
     jwf_ls_mesh::DEFS,
     // JWildfire's IFlames, its image part (helper h5, session 11).
     jwf_tx_iflames::DEFS,
+    // JWildfire's Wang tiles (helper h3, session 12).
+    jwf_wt_wangtiles::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -779,6 +782,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "msTruchet",
     "lsystem3D_js",
     "iflames_wf",
+    "wangtiles",
 ];
 
 /// Every JWildfire variation's name in registry order.

@@ -5,14 +5,19 @@
 //! variation's shared data is then built from the stored resource, or from the variation's
 //! default when none is stored under that name.
 //!
-//! At most [`MAX_IMAGES`] images and as many meshes are kept (the oldest stored is dropped
-//! first), each image of at most [`MAX_IMAGE_PIXELS`] pixels, each mesh of at most
-//! [`MAX_MESH_FACES`] triangles.
+//! At most [`MAX_IMAGES`] meshes are kept, and images of at most [`MAX_IMAGES`] ×
+//! [`MAX_IMAGE_PIXELS`] pixels together, no more than [`MAX_IMAGE_COUNT`] of them (the oldest
+//! stored is dropped first: as many small images, such as `wangtiles`' 32 × 32 tiles, fit as
+//! 16 of the largest), each image of at most [`MAX_IMAGE_PIXELS`] pixels, each mesh of at
+//! most [`MAX_MESH_FACES`] triangles.
 
 use std::sync::{Arc, LazyLock, Mutex};
 
-/// Most images kept.
+/// Most meshes kept, and most images of the largest size.
 pub const MAX_IMAGES: usize = 16;
+
+/// Most images kept, whatever their size.
+pub const MAX_IMAGE_COUNT: usize = 4096;
 
 /// Most pixels of a stored image (2048 × 2048): a variation keeps 8 bytes per pixel.
 pub const MAX_IMAGE_PIXELS: usize = 2048 * 2048;
@@ -83,8 +88,11 @@ pub fn put_image(name: &str, img: ResourceImage) -> bool {
     }
     let mut v = IMAGES.lock().unwrap_or_else(|e| e.into_inner());
     v.retain(|(k, _)| k != name);
-    if v.len() >= MAX_IMAGES {
-        v.remove(0);
+    let mut pixels: usize = v.iter().map(|(_, i)| i.rgba.len()).sum();
+    while !v.is_empty()
+        && (v.len() >= MAX_IMAGE_COUNT || pixels + n > MAX_IMAGES * MAX_IMAGE_PIXELS)
+    {
+        pixels -= v.remove(0).1.rgba.len();
     }
     v.push((name.to_string(), Arc::new(img)));
     true
@@ -116,5 +124,21 @@ mod tests {
         };
         assert!(!put_image("resources-test-b", bad));
         assert!(image("resources-test-b").is_none());
+    }
+
+    /// Small images are kept by the hundred (the store's pixel budget holds 16 of the
+    /// largest; other tests' images may be in the store too, and all are small).
+    #[test]
+    fn many_small_images_are_kept() {
+        let tile = ResourceImage {
+            w: 32,
+            h: 32,
+            rgba: vec![[9, 8, 7, 255]; 32 * 32],
+        };
+        let name = |i: usize| format!("resources-test-small-{i}");
+        for i in 0..300 {
+            assert!(put_image(&name(i), tile.clone()));
+        }
+        assert!((0..300).all(|i| image(&name(i)).is_some()));
     }
 }
