@@ -64,6 +64,10 @@ fn main() {
         }
     };
     cli::set_progress_mode(cli.progress);
+    // JWildfire's own resources (brushes, tiles, meshes), from the installation the user names.
+    if let Some(Err(e)) = ugnis::io::jwf_install::install_from_env() {
+        stderr!("warning: {e}; JWildfire's own resources are not available");
+    }
     if cli.command.is_some() {
         cli::signals::install();
     }

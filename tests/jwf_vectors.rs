@@ -10,8 +10,7 @@
 //! The fixtures are trimmed copies of those vectors (tests/fixtures/jwildfire/, see its
 //! make_fixtures.py). To check against the full files instead, set UGNIS_JWF_VECTORS_DIR to
 //! their folder; to check only some variations, UGNIS_VARS=name,name,…; UGNIS_VEC_ALL=1 prints
-//! every mismatch; UGNIS_JWF_RESOURCES=folder gives the variations JWildfire's own resource
-//! files from that folder (see [`NEEDS_JWILDFIRE_RESOURCES`]).
+//! every mismatch.
 
 mod common;
 
@@ -37,16 +36,8 @@ const NOT_YET: &[(&str, &str)] = &[
         "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
     ),
     (
-        "obj_mesh_primitive_wf",
-        "alt2 only: the cone subdivided twice with strong smoothing (lambda 1.33) follows the edges of its base's triangulation, which in JWildfire's cone.obj is irregular (not generated here); default (ball) and alt (capsule) pass",
-    ),
-    (
         "post_brush_stroke_wf",
         "not implemented: its default brushes are JWildfire's brush images (PNG resources), not reproducible procedurally",
-    ),
-    (
-        "svg_wf",
-        "implemented (its own anti-aliased rasteriser and SVG reader); its built-in default drawing is JWildfire's (an Inkscape drawing in SVGWFFunc's LGPL source), which ugnis does not copy: it draws a drawing of its own by default. With JWildfire's drawing given as the SVG text, every row passed (checked when it was written, 2026-11-28)",
     ),
     (
         "taprats",
@@ -54,14 +45,25 @@ const NOT_YET: &[(&str, &str)] = &[
     ),
 ];
 
-/// The JWildfire variations that match their vectors only with JWildfire's own resource files
-/// (from its jar, which ugnis does not ship), each with why. Without the resources given
-/// (UGNIS_JWF_RESOURCES naming JWildfire's `src/resources` folder) they draw stand-ins and
-/// their mismatches are not counted; with them they must pass.
-const NEEDS_JWILDFIRE_RESOURCES: &[(&str, &str)] = &[(
-    "wangtiles",
-    "the heights of its alt and alt2 sets are the brightness of JWildfire's tile images (GIFs under org/jwildfire/icons/); all four sets pass with them",
-)];
+/// The JWildfire variations that match their vectors only with JWildfire's own resources
+/// (its brush images, tiles, meshes, default drawing), which ugnis reads from a JWildfire
+/// installation named by `UGNIS_JWILDFIRE` (its j-wildfire.jar, or its resource and class
+/// folders). With it set they are checked like the others; without it they are not checked.
+/// Sorted, one name per line.
+const NEEDS_JWILDFIRE: &[(&str, &str)] = &[
+    (
+        "obj_mesh_primitive_wf",
+        "alt2's cone: the irregular triangulation of the base in JWildfire's cone.obj",
+    ),
+    (
+        "svg_wf",
+        "the default drawing, a string in SVGWFFunc's class",
+    ),
+    (
+        "wangtiles",
+        "alt and alt2: the heights are the brightness of JWildfire's tile images (GIFs under org/jwildfire/icons/); without them it draws grey stand-in tiles",
+    ),
+];
 
 /// A table of the vectors: from UGNIS_JWF_VECTORS_DIR, else the committed fixture.
 fn fixture(name: &str) -> String {
@@ -176,35 +178,9 @@ fn prepared(var: &str, ps: &str, s: &Set) -> Prepared {
         .iter()
         .map(|t| t.to_string())
         .collect();
-    give_jwildfire_resources(s.id, &params);
     let mut v = Prepared::for_flame(s.id, s.form, s.weight, &params, &texts, s.aff, RULES);
     v.give_palette(&UNSET_PALETTE);
     v
-}
-
-/// Hands the JWildfire resources variation `id` reads (wangtiles' tile images) to the engine,
-/// decoded from the folder UGNIS_JWF_RESOURCES names (JWildfire's `src/resources`, whose
-/// paths are those inside its jar); without it the variations draw their stand-ins.
-/// (Temporary: to be replaced by ugnis' own loader of a JWildfire installation.)
-fn give_jwildfire_resources(id: VarId, params: &[f64]) {
-    let Some(dir) = std::env::var_os("UGNIS_JWF_RESOURCES") else {
-        return;
-    };
-    for name in variations::jwildfire_resources(id, params) {
-        if variations::resources::image(&name).is_some() {
-            continue;
-        }
-        let path = std::path::Path::new(&dir).join(name.trim_start_matches("jwildfire:"));
-        let Ok(img) = image::open(&path) else {
-            eprintln!("{}: not read", path.display());
-            continue;
-        };
-        let img = img.to_rgba8();
-        let (w, h) = img.dimensions();
-        let rgba = img.pixels().map(|p| p.0).collect();
-        let img = variations::resources::ResourceImage { w, h, rgba };
-        variations::resources::put_image(&name, img);
-    }
 }
 
 /// The palette the vectors' variations see: a fresh layer's, every entry black (handed over
@@ -720,14 +696,36 @@ fn check_stateful(
 #[test]
 fn jwildfire_variations_match_their_vectors() {
     let vars = jwildfire_variations();
+    let installed = match ugnis::io::jwf_install::install_from_env() {
+        Some(r) => {
+            r.expect("UGNIS_JWILDFIRE names a JWildfire installation that opens");
+            true
+        }
+        None => false,
+    };
     let listed: BTreeMap<&str, &str> = NOT_YET.iter().copied().collect();
-    let names: Vec<&str> = NOT_YET.iter().map(|(n, _)| *n).collect();
+    let mut names: Vec<&str> = NOT_YET.iter().map(|(n, _)| *n).collect();
     assert!(names.is_sorted(), "NOT_YET must be sorted");
     assert_eq!(
         listed.len(),
         NOT_YET.len(),
         "NOT_YET names a variation twice"
     );
+    let needs: Vec<&str> = NEEDS_JWILDFIRE.iter().map(|(n, _)| *n).collect();
+    assert!(needs.is_sorted(), "NEEDS_JWILDFIRE must be sorted");
+    for n in &needs {
+        assert!(!listed.contains_key(n), "{n} is on both lists");
+    }
+    if !installed {
+        eprintln!(
+            "{} variations need JWildfire's own resources and are not checked: {} \
+             (set UGNIS_JWILDFIRE to JWildfire's jar or resource folders)",
+            needs.len(),
+            needs.join(", ")
+        );
+    }
+    let skipped: Vec<&str> = if installed { Vec::new() } else { needs };
+    names.extend(&skipped);
     for n in &names {
         assert!(
             vars.contains_key(*n),
@@ -755,15 +753,15 @@ fn jwildfire_variations_match_their_vectors() {
     let rows = check_random(&by_set, &inputs, &mut fails);
     check_stateful(&by_set, &inputs, &vars, &mut fails);
 
-    let considered: Vec<&String> = vars.keys().filter(|n| selected(n)).collect();
+    let considered: Vec<&String> = vars
+        .keys()
+        .filter(|n| selected(n) && !skipped.contains(&n.as_str()))
+        .collect();
     let mut problems = Vec::new();
     let mut passing = 0;
     for name in &considered {
-        let stand_in = std::env::var_os("UGNIS_JWF_RESOURCES").is_none()
-            && NEEDS_JWILDFIRE_RESOURCES.iter().any(|(n, _)| n == name);
         match (fails.0.get(*name), listed.get(name.as_str())) {
             (None, None) => passing += 1,
-            (Some(_), None) if stand_in => {}
             (None, Some(_)) => problems.push(format!("{name} passes: take it off NOT_YET")),
             (Some(_), Some(_)) => {}
             (Some(f), None) => problems.push(format!("{name}:\n    {}", f.join("\n    "))),

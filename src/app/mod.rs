@@ -74,9 +74,14 @@ pub fn run(file: Option<PathBuf>) -> Result<(), eframe::Error> {
                 None => Start::Random(shell::seed_from_time()),
             };
             let (options, problem) = options::Options::load();
+            // Before the first file is read: its variations may draw JWildfire's resources.
+            let jwildfire = options.apply_jwildfire();
             let mut app = UgnisApp::new(options, start, Some(ctx));
             app.persist_options(true);
             if let Some(p) = problem {
+                app.flame.notices.message("Options", p);
+            }
+            if let Some(p) = jwildfire {
                 app.flame.notices.message("Options", p);
             }
             Ok(Box::new(app))

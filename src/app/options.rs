@@ -75,6 +75,10 @@ pub struct Options {
     pub use_variation_filter: bool,
     /// Files opened or saved lately, newest first.
     pub recent_files: Vec<PathBuf>,
+    /// JWildfire's jar or resource folders (separated as in `PATH`), where JWildfire's own
+    /// resources are read from; empty: none (the environment variable `UGNIS_JWILDFIRE`,
+    /// when set, wins).
+    pub jwildfire: String,
 }
 
 /// The preview's noise target by default (8-bit levels of grain): a little less grain than
@@ -117,6 +121,7 @@ impl Default for Options {
             variation_filter: Vec::new(),
             use_variation_filter: false,
             recent_files: Vec::new(),
+            jwildfire: String::new(),
         }
     }
 }
@@ -284,6 +289,25 @@ impl Options {
     /// `$XDG_CONFIG_HOME/ugnis/options.toml` (or `~/.config/ugnis/options.toml`).
     pub fn path() -> Option<PathBuf> {
         config_dir().map(|d| d.join("options.toml"))
+    }
+
+    /// Read JWildfire's resources from the installation these options name, unless the
+    /// environment names one; a message when it cannot be opened.
+    pub fn apply_jwildfire(&self) -> Option<String> {
+        use crate::io::jwf_install;
+        if jwf_install::paths_from_env().is_some() {
+            return None;
+        }
+        let paths: Vec<PathBuf> = std::env::split_paths(self.jwildfire.trim())
+            .filter(|p| !p.as_os_str().is_empty())
+            .collect();
+        if paths.is_empty() {
+            crate::flame::variations::resources::set_jwildfire_reader(None);
+            return None;
+        }
+        jwf_install::install(&paths)
+            .err()
+            .map(|e| format!("JWildfire installation: {e}; JWildfire's own resources are not read"))
     }
 
     /// The saved options, or the defaults when there are none. A file that cannot be used

@@ -224,5 +224,18 @@ fn general_tab(ui: &mut egui::Ui, draft: &mut Options) {
                     "for new and random flames; a typed weight turns it off for that flame",
                 );
             ui.end_row();
+            let l = ui.label("JWildfire installation");
+            ui.add(
+                egui::TextEdit::singleline(&mut draft.jwildfire)
+                    .hint_text("…/j-wildfire.jar")
+                    .desired_width(260.0),
+            )
+            .labelled_by(l.id)
+            .on_hover_text(
+                "JWildfire's jar (or its resource folders, separated by ':'): brush_stroke_wf, \
+                 wangtiles, obj_mesh_primitive_wf and svg_wf read JWildfire's own images, meshes \
+                 and drawing from it, for flames opened afterwards",
+            );
+            ui.end_row();
         });
 }

@@ -322,6 +322,9 @@ impl UgnisApp {
                     self.options = draft.clone();
                     self.save_options();
                     self.options_dialog = None;
+                    if let Some(p) = self.options.apply_jwildfire() {
+                        self.flame.notices.message("Options", p);
+                    }
                 }
                 Some(false) => self.options_dialog = None,
                 None => {}

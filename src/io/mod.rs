@@ -15,6 +15,7 @@ mod fractint_text;
 pub mod ggr;
 pub mod ifs;
 pub mod image_in;
+pub mod jwf_install;
 pub mod lsystem;
 pub mod map;
 mod open;

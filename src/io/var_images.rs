@@ -28,9 +28,29 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
     let dir = flame_path.parent().unwrap_or(Path::new(""));
     let mut warnings = Vec::new();
     let mut done: Vec<String> = Vec::new();
+    let installed = resources::has_jwildfire_reader();
     for x in flames.iter().flat_map(all_xforms) {
         for v in &x.vars {
             let def = variations::info(v.id);
+            if !installed
+                && needs_jwildfire(def.name, &v.params)
+                && !done.contains(&def.name.into())
+            {
+                done.push(def.name.into());
+                warnings.push(Diagnostic::warning(
+                    file,
+                    Pos::File,
+                    "IMG011",
+                    format!(
+                        "{}: draws resources that ship with JWildfire; name JWildfire's \
+                         j-wildfire.jar (Options › General › JWildfire installation, or the \
+                         environment variable {}) to draw it as JWildfire does; a stand-in is \
+                         drawn",
+                        def.name,
+                        crate::io::jwf_install::ENV
+                    ),
+                ));
+            }
             for (tp, name) in def.texts.iter().zip(&v.texts) {
                 let image = tp.name.ends_with(IMAGE_TEXT);
                 let mesh = tp.name.ends_with(MESH_TEXT);
@@ -55,42 +75,19 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
             }
         }
     }
-    warnings.extend(missing_jwildfire_resources(flames, file));
     warnings
 }
 
-/// One warning when variations of `flames` read JWildfire's own resources (`wangtiles`' tile
-/// images) that were not handed over, as when no JWildfire installation was read: they then
-/// draw stand-ins.
-fn missing_jwildfire_resources(flames: &[Flame], file: &str) -> Option<Diagnostic> {
-    let mut users: Vec<&str> = Vec::new();
-    let mut missing = 0;
-    for x in flames.iter().flat_map(all_xforms) {
-        for v in &x.vars {
-            let names = variations::jwildfire_resources(v.id, &v.params);
-            let lacking = names
-                .iter()
-                .filter(|n| resources::image(n).is_none())
-                .count();
-            let name = variations::info(v.id).name;
-            if lacking > 0 && !users.contains(&name) {
-                users.push(name);
-            }
-            missing += lacking;
-        }
+/// Whether the variation `name` with parameters `params` draws one of JWildfire's own
+/// resources that ugnis can only take from a JWildfire installation: the brush images, the
+/// wang tiles, and the primitive meshes other than the ball and the capsule (which ugnis
+/// builds exactly).
+fn needs_jwildfire(name: &str, params: &[f64]) -> bool {
+    match name {
+        "brush_stroke_wf" | "post_brush_stroke_wf" | "wangtiles" => true,
+        "obj_mesh_primitive_wf" => params.first().is_some_and(|&p| p != 0.0 && p != 1.0),
+        _ => false,
     }
-    (missing > 0).then(|| {
-        Diagnostic::warning(
-            file,
-            Pos::File,
-            "IMG011",
-            format!(
-                "{}: {missing} of JWildfire's own images it draws are not available (they are \
-                 read from a JWildfire installation); stand-ins are drawn in their place",
-                users.join(", ")
-            ),
-        )
-    })
 }
 
 /// Every xform of a flame: its own, its final ones and those of its other layers.
@@ -137,7 +134,7 @@ fn load_mesh(dir: &Path, name: &str) -> Result<(), String> {
 /// at the same place (to 10⁻⁴) merged, and the faces (`f`, indices from 1, negative ones
 /// counted back from the last vertex read, texture and normal indices ignored) of three
 /// corners, and of four split along their first diagonal; other faces are skipped.
-fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
+pub(crate) fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
     let mut all: Vec<[f32; 3]> = Vec::new();
     let mut mesh = resources::ResourceMesh {
         vertices: Vec::new(),
@@ -260,36 +257,6 @@ mod tests {
             !msgs.iter().any(|m| m.contains("h9b-io-test.png")),
             "{msgs:?}"
         );
-        let _ = std::fs::remove_dir_all(&dir);
-    }
-
-    #[test]
-    fn wangtiles_without_its_tile_images_is_reported_once() {
-        let dir = std::env::temp_dir().join(format!("ugnis-wt-images-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        // Two xforms with sets (70: corn2/roof, 84: truch/tru1) no other test stores.
-        let x = |id: u32| {
-            format!(
-                r#"<xform weight="1" color="0" wangtiles="1" wangtiles_id="{id}" wangtiles_seed="5" coefs="1 0 0 1 0 0"/>"#
-            )
-        };
-        let text = format!(
-            r#"<flame name="a" size="10 10" center="0 0" scale="1">{}{}<palette count="1" format="RGB">000000</palette></flame>"#,
-            x(70),
-            x(84)
-        );
-        let flame_path = dir.join("wt.flame");
-        std::fs::write(&flame_path, text).unwrap();
-        let opts = crate::io::flam3_xml::ReadOptions::default();
-        let parsed = crate::io::read_flames(&flame_path, &opts).unwrap();
-        let msgs: Vec<String> = parsed
-            .warnings
-            .iter()
-            .filter(|w| w.code == "IMG011")
-            .map(|w| w.message.clone())
-            .collect();
-        assert_eq!(msgs.len(), 1, "{msgs:?}");
-        assert!(msgs[0].starts_with("wangtiles: "), "{msgs:?}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 

@@ -27,8 +27,14 @@ use super::*;
 
 /// The SVG drawn by default: a drawing of ugnis' own. JWildfire's default (an Inkscape
 /// drawing in `SVGWFFunc`'s source) is not copied, so a flame that relies on it draws this
-/// one instead; a flame that carries its SVG draws that.
+/// one instead — unless the user names a JWildfire installation to read it from
+/// ([`JWILDFIRE_DEFAULT`]); a flame that carries its SVG draws that.
 const DEFAULT_SVG: &str = include_str!("jwf_aa_svg_default.svg");
+
+/// Where JWildfire's own default drawing is: the longest string constant of `SVGWFFunc`'s
+/// class, read from the user's JWildfire installation when one is named. It replaces ugnis'
+/// default drawing there.
+const JWILDFIRE_DEFAULT: &str = "jwildfire:org/jwildfire/create/tina/variation/SVGWFFunc.class";
 
 /// Most bytes of SVG text read.
 const MAX_SVG: usize = 8 << 20;
@@ -127,7 +133,13 @@ fn point_at(d: &[f64], k: usize) -> (f64, f64, [u8; 3]) {
 /// multiplier and anti-aliasing switch.
 fn svg_points(p: &[f64], texts: &[String]) -> Vec<f64> {
     let [_, multiplier, _, pre_antialias] = params_of(p);
-    let text = texts.first().map_or(DEFAULT_SVG, |t| t.as_str());
+    let mut text = texts.first().map_or(DEFAULT_SVG, |t| t.as_str());
+    let jwildfire = (text == DEFAULT_SVG)
+        .then(|| super::resources::text(JWILDFIRE_DEFAULT))
+        .flatten();
+    if let Some(t) = &jwildfire {
+        text = t.as_str();
+    }
     // The document's size first (at scale 1), then the multiplier that fits.
     let size = read(text, 1.0);
     let area = size.width * size.height;

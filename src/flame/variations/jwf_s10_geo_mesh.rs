@@ -13,8 +13,10 @@
 //! * 2, the cone: apex (0, 1/2, 0), base circle of radius 1/2 at y = −1/2 through 24 points
 //!   (the first at −z, then towards −x), the base cut into a zigzag strip of triangles.
 //!
-//! The other primitives JWildfire ships (diamond, torus, gears, polyhedra, …) and indices
-//! outside its list take JWildfire's fallback mesh, the cube [−1, 1]³.
+//! The other primitives JWildfire ships (diamond, torus, gears, polyhedra, …), and JWildfire's
+//! own cone, are read from the user's JWildfire installation when one is named
+//! ([`resources::JWILDFIRE`]); without one they, and indices outside the list, take
+//! JWildfire's fallback mesh, the cube [−1, 1]³ (the cone: the one built here).
 //! The mesh is then prepared as `obj_mesh_wf` prepares a loaded one: sampled by area with
 //! `subdiv_level` 0, else subdivided and smoothed (Taubin's λ|μ smoothing) that many times,
 //! stopping before the mesh would exceed [`MAX_FACES`] triangles.
@@ -25,8 +27,44 @@
 //! strongly smoothed cone differs from JWildfire's.
 
 use super::jwf_h9b_meshes::{area_counts, mesh_point, subdivide, taubin};
-use super::resources::ResourceMesh;
+use super::resources::{self, ResourceMesh};
 use super::*;
+
+/// JWildfire's primitives by index, each shipped as `<name>.obj` in JWildfire's jar
+/// (JWildfire 9.00, `OBJMeshPrimitiveWFFunc`); the mandelbulb has no file and takes the
+/// fallback cube.
+const PRIMITIVES: [&str; 26] = [
+    "ball",
+    "capsule",
+    "cone",
+    "diamond",
+    "torus",
+    "box",
+    "gear15",
+    "icosahedron",
+    "tetrahedron",
+    "octahedron",
+    "dodecahedron",
+    "wedge",
+    "icosidodecahedron",
+    "cubeoctahedron",
+    "gears6a",
+    "gears6s",
+    "gears8a",
+    "gears8s",
+    "gears12a",
+    "gears12s",
+    "gears16a",
+    "gears16s",
+    "gears24a",
+    "gears24s",
+    "mandelbulb",
+    "drop",
+];
+
+/// Where JWildfire's jar keeps the primitives (read from a JWildfire installation, when the
+/// user names one).
+const MESH_PATH: &str = "jwildfire:org/jwildfire/create/tina/variation/mesh/";
 
 /// Sectors around the capsule and the cone.
 const SECTORS: usize = 24;
@@ -221,10 +259,16 @@ fn cube() -> ResourceMesh {
 /// totals of how often each is picked (n values), then each triangle's corners (9 values).
 fn mesh_data(p: &[f64], _texts: &[String]) -> Vec<f64> {
     let [primitive, _, _, _, _, _, _, level, passes, lambda, mu] = params_of(p);
+    let shipped = PRIMITIVES
+        .get(primitive as usize)
+        .filter(|_| primitive >= 0.0)
+        .and_then(|name| resources::mesh(&format!("{MESH_PATH}{name}.obj")));
     let (m, fallback) = if primitive == 0.0 {
         (ball(), false)
     } else if primitive == 1.0 {
         (capsule(), false)
+    } else if let Some(m) = shipped {
+        (m.as_ref().clone(), false)
     } else if primitive == 2.0 {
         (cone(), false)
     } else {

@@ -141,20 +141,9 @@ fn set_and_seed(p: &[f64]) -> (TileSet, i64) {
     (TileSet::of(id as usize), seed as i64)
 }
 
-/// The names of JWildfire's resources (`jwildfire:` and the path in JWildfire's jar) that
-/// the variation `id` with parameters `params` (in [`VarDef::params`] order) reads, each
-/// once; empty for the variations that read none. A `wangtiles` reads the images of the tiles
-/// its tiling uses, in the order it first uses them (row by row).
-pub fn jwildfire_resources(id: VarId, params: &[f64]) -> Vec<String> {
-    if super::info(id).name == "wangtiles" {
-        tile_names(params)
-    } else {
-        Vec::new()
-    }
-}
-
-/// The resource names of the tile images a `wangtiles` with parameters `p` reads (see
-/// [`jwildfire_resources`]).
+/// The resource names of the tile images a `wangtiles` with parameters `p` reads, each once,
+/// in the order the tiling first uses them (row by row).
+#[cfg(test)]
 fn tile_names(p: &[f64]) -> Vec<String> {
     let (set, seed) = set_and_seed(p);
     let t = tiling(&set, seed);

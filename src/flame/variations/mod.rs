@@ -340,7 +340,6 @@ pub use def::{
 };
 pub(crate) use flam3::Draws;
 pub use flam3::*;
-pub use jwf_wt_wangtiles::jwildfire_resources;
 pub use names::{
     attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
     param_attr_name_in, param_of, parse_name, text_attr_name, text_of, text_problem,
