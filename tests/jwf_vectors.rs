@@ -31,10 +31,6 @@ const NOT_YET: &[(&str, &str)] = &[
         "grid3d_wf",
         "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
     ),
-    (
-        "wangtiles",
-        "not implemented: it draws the tiles of JWildfire's tile sets, GIF images shipped in its jar (`WangTilesFunc` loads `<set>/<n>.gif`), which ugnis does not have (the palette index nearest to a pixel it sets is available: `PaletteIndex`)",
-    ),
 ];
 
 /// The JWildfire variations that match their vectors only with JWildfire's own resources
@@ -58,6 +54,10 @@ const NEEDS_JWILDFIRE: &[(&str, &str)] = &[
     (
         "svg_wf",
         "the default drawing, a string in SVGWFFunc's class",
+    ),
+    (
+        "wangtiles",
+        "alt and alt2: the heights are the brightness of JWildfire's tile images (GIFs under org/jwildfire/icons/); without them it draws grey stand-in tiles",
     ),
 ];
 

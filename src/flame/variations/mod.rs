@@ -322,6 +322,8 @@ mod jwf_tp_map;
 mod jwf_tp_render;
 mod jwf_tp_tiling;
 mod jwf_tx_iflames;
+mod jwf_wt_tiling;
+mod jwf_wt_wangtiles;
 // JWildfire variations, from the end of the alphabet.
 mod jwf_z_3d;
 mod jwf_z_drawings;

@@ -82,6 +82,7 @@ use super::jwf_ls_mesh;
 // JWildfire's IFlames (helper h5, session 11).
 use super::jwf_br_brush;
 use super::jwf_tx_iflames;
+use super::jwf_wt_wangtiles;
 
 /// Every variation, by id.
 pub fn all() -> &'static [&'static VarDef] {
@@ -123,7 +124,7 @@ pub fn param_defaults(id: VarId) -> Vec<f64> {
 }
 
 /// The formulas' files, each with its table of variations.
-const FILES: [&[VarDef]; 126] = [
+const FILES: [&[VarDef]; 127] = [
     fr_3d::DEFS,
     fr_bipolar_elliptic::DEFS,
     fr_blurs::DEFS,
@@ -266,6 +267,8 @@ const FILES: [&[VarDef]; 126] = [
     jwf_tp::DEFS,
     // JWildfire's brush strokes (helper h2, session 12).
     jwf_br_brush::DEFS,
+    // JWildfire's Wang tiles (helper h3, session 12).
+    jwf_wt_wangtiles::DEFS,
 ];
 
 /// The JWildfire variations, in the order ugnis took them in (which gives them their ids). A
@@ -789,6 +792,7 @@ const JWILDFIRE_ORDER_M: &[&str] = &[
     "taprats",
     "brush_stroke_wf",
     "post_brush_stroke_wf",
+    "wangtiles",
 ];
 
 /// Every JWildfire variation's name in registry order.
