@@ -26,12 +26,10 @@ use ugnis::flame::variations::{self, Acc, Dialect, Form, Prepared, Rules, VarId}
 /// The JWildfire variations that do not match their vectors yet, each with why. The test fails
 /// when one of them passes (take it off the list) and when a variation off the list fails.
 /// Sorted, one name per line.
-const NOT_YET: &[(&str, &str)] = &[
-    (
-        "grid3d_wf",
-        "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
-    ),
-];
+const NOT_YET: &[(&str, &str)] = &[(
+    "grid3d_wf",
+    "implemented; alt sets differ: JWildfire keeps a cell's spreads in a map shared by the whole session (its RessourceManager, keyed by the spread's value), filled from a java.util.Random(123) per object in the order cells are first reached anywhere in the session (for the vectors, by the harness' earlier calls); ugnis draws a cell's spreads from a hash of the cell, the same in every thread and every render",
+)];
 
 /// The JWildfire variations that match their vectors only with JWildfire's own resources
 /// (its brush images, tiles, meshes, default drawing), which ugnis reads from a JWildfire
