@@ -38,8 +38,8 @@
 //! bilinearly). None of JWildfire's brushes but `brush009` is larger than the default 320.
 //!
 //! Bounds (ugnis's, JWildfire has none): at most [`MAX_IMAGES`] images, [`MAX_VARIANTS`]
-//! variants per image and [`MAX_POINTS`] stored pixels over all variants (later variants
-//! then stay empty and draw nothing).
+//! variants over all images (each image's share of them) and [`MAX_POINTS`] stored pixels
+//! over all variants (later variants then stay empty, are not even drawn, and draw nothing).
 
 use super::jwf_br_raster::{Raster, rotate, scale_to};
 use super::jwf_h9b_images::{View, ftoi, gradient_map_of_size};
@@ -61,7 +61,7 @@ const MAX_BRUSH: i32 = 245;
 
 /// Most images a brush variation uses.
 pub const MAX_IMAGES: usize = 64;
-/// Most variants built per image (besides the image itself).
+/// Most variants built over all images (besides the images themselves), shared out evenly.
 pub const MAX_VARIANTS: i64 = 256;
 /// Most pixels stored over all variants.
 pub const MAX_POINTS: usize = 4_000_000;
@@ -346,7 +346,11 @@ fn build(p: &[f64], texts: &[String]) -> Vec<f64> {
         } else {
             share
         };
-        for generation in 0..=count.min(MAX_VARIANTS) {
+        for generation in 0..=count.min((MAX_VARIANTS / n).max(1)) {
+            if stored_points >= MAX_POINTS {
+                blocks.push(vec![0.0, 0.0, 1.0, 1.0, 1.0]);
+                continue;
+            }
             let (map, dx, dy, erode) = if generation == 0 {
                 (None, 0, 0, 0.0)
             } else {
