@@ -20,7 +20,7 @@ use std::io::{Read, Seek, SeekFrom};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
-use crate::flame::variations::resources::{self, Builtin, ResourceImage};
+use crate::flame::variations::resources::{self, Builtin};
 
 /// The environment variable naming JWildfire's jar or resource folders.
 pub const ENV: &str = "UGNIS_JWILDFIRE";
@@ -138,7 +138,7 @@ impl Install {
             "txt" | "svg" | "xml" => Ok(Builtin::Text(Arc::new(
                 String::from_utf8_lossy(&bytes).into_owned(),
             ))),
-            _ => decode_image(&bytes).map(|i| Builtin::Image(Arc::new(i))),
+            _ => crate::io::var_images::decode_image(&bytes).map(|i| Builtin::Image(Arc::new(i))),
         };
         match got {
             Ok(b) => Some(b),
@@ -172,31 +172,6 @@ pub fn install(paths: &[PathBuf]) -> Result<(), String> {
 pub fn install_from_env() -> Option<Result<(), String>> {
     let paths = paths_from_env()?;
     Some(install(&paths).map_err(|e| format!("{ENV}: {e}")))
-}
-
-/// Decode an image as variations take it (RGBA, rows from the top).
-fn decode_image(bytes: &[u8]) -> Result<ResourceImage, String> {
-    let mut r = image::ImageReader::new(std::io::Cursor::new(bytes))
-        .with_guessed_format()
-        .map_err(|e| format!("cannot be read: {e}"))?;
-    let mut limits = image::Limits::default();
-    limits.max_image_width = Some(1 << 14);
-    limits.max_image_height = Some(1 << 14);
-    limits.max_alloc = Some(1 << 28);
-    r.limits(limits);
-    let img = r
-        .decode()
-        .map_err(|e| format!("cannot be decoded: {e}"))?
-        .to_rgba8();
-    let (w, h) = img.dimensions();
-    if w as usize * h as usize > resources::MAX_IMAGE_PIXELS || w == 0 || h == 0 {
-        return Err(format!("has {w}×{h} pixels"));
-    }
-    Ok(ResourceImage {
-        w,
-        h,
-        rgba: img.pixels().map(|p| p.0).collect(),
-    })
 }
 
 /// Little-endian u16 at `at`.

@@ -196,11 +196,25 @@ pub(crate) fn parse_obj(text: &str) -> Result<resources::ResourceMesh, String> {
     Ok(mesh)
 }
 
+/// Largest image file read (bytes).
+const MAX_IMAGE_FILE: u64 = 256 << 20;
+
 /// Read, decode and hand over the image `name`; why not, otherwise.
 fn load(dir: &Path, name: &str) -> Result<(), String> {
     let path = find(dir, name)?;
-    let mut r = ImageReader::open(&path)
-        .and_then(|r| r.with_guessed_format())
+    let bytes = crate::io::read_bytes_limited(&path, MAX_IMAGE_FILE).map_err(|d| d.message)?;
+    if resources::put_image(name, decode_image(&bytes)?) {
+        Ok(())
+    } else {
+        Err("is empty".into())
+    }
+}
+
+/// Decode an image file's bytes as variations take it (RGBA, rows from the top), within the
+/// size a variation takes; why not, otherwise.
+pub(crate) fn decode_image(bytes: &[u8]) -> Result<resources::ResourceImage, String> {
+    let mut r = ImageReader::new(std::io::Cursor::new(bytes))
+        .with_guessed_format()
         .map_err(|e| format!("cannot be read: {e}"))?;
     let mut limits = Limits::default();
     limits.max_image_width = Some(1 << 16);
@@ -219,11 +233,7 @@ fn load(dir: &Path, name: &str) -> Result<(), String> {
         ));
     }
     let rgba = img.pixels().map(|p| p.0).collect();
-    if resources::put_image(name, resources::ResourceImage { w, h, rgba }) {
-        Ok(())
-    } else {
-        Err("is empty".into())
-    }
+    Ok(resources::ResourceImage { w, h, rgba })
 }
 
 #[cfg(test)]

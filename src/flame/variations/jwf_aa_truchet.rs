@@ -77,31 +77,80 @@ fn ms_truchet(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     ] = v.params();
     let dx = v.w * (rng.f01() - 0.5);
     let dy = v.w * (rng.f01() - 0.5);
-    let (x_in, y_in) = (acc.x + dx, acc.y + dy);
     let n = SIDE as i32;
-    let (_, ix) = image_axis(x_in, offset_x, scale_x, n, tile_x, false);
-    let (_, iy) = image_axis(y_in, offset_y, scale_y, n, tile_y, false);
-    let grey = if (0..n).contains(&ix) && (0..n).contains(&iy) {
-        f64::from(grey_at(v.data(), ix as usize, iy as usize))
-    } else {
-        0.0
+    let place = ImagePlace {
+        size: [n, n],
+        offset: [offset_x, offset_y, offset_z],
+        scale: [scale_x, scale_y, scale_z],
+        tile: [tile_x, tile_y],
+        reset_z,
     };
-    acc.rgb = Some([grey; 3]);
-    if let Some(c) = v.palette_coordinate(grey, grey, grey) {
-        acc.color = c;
+    place.step(v, t, acc, [dx, dy], |x, y| {
+        [f64::from(grey_at(v.data(), x, y)); 3]
+    })
+}
+
+/// Where a JWildfire image variation (msTruchet, wangtiles) finds the sum moved by (dx, dy)
+/// on its image: the image's size, offsets and scales (x, y, z), tiling and `reset_z`.
+pub(super) struct ImagePlace {
+    pub size: [i32; 2],
+    pub offset: [f64; 3],
+    pub scale: [f64; 3],
+    pub tile: [f64; 2],
+    pub reset_z: f64,
+}
+
+impl ImagePlace {
+    /// The step of the pixel under the sum moved by `d`: the pixel (`rgb_at` of its column
+    /// and row; black outside the image) is the point's own colour and its nearest palette
+    /// entry, its brightness the height; `reset_z` clears the sum's z.
+    pub fn step(
+        &self,
+        v: &Prepared,
+        t: &VarIn,
+        acc: &mut Acc,
+        [dx, dy]: [f64; 2],
+        rgb_at: impl Fn(usize, usize) -> [f64; 3],
+    ) -> V3 {
+        let [w, h] = self.size;
+        let (_, ix) = image_axis(
+            acc.x + dx,
+            self.offset[0],
+            self.scale[0],
+            w,
+            self.tile[0],
+            false,
+        );
+        let (_, iy) = image_axis(
+            acc.y + dy,
+            self.offset[1],
+            self.scale[1],
+            h,
+            self.tile[1],
+            false,
+        );
+        let [r, g, b] = if (0..w).contains(&ix) && (0..h).contains(&iy) {
+            rgb_at(ix as usize, iy as usize)
+        } else {
+            [0.0; 3]
+        };
+        acc.rgb = Some([r, g, b]);
+        if let Some(c) = v.palette_coordinate(r, g, b) {
+            acc.color = c;
+        }
+        let mut dz = self.offset[2];
+        if self.scale[2].abs() > EPS {
+            dz += self.scale[2] * intensity(r, g, b) / 255.0;
+        }
+        if self.reset_z != 0.0 {
+            acc.z = 0.0;
+        }
+        if v.zrule == ZRule::Weighted {
+            // JWildfire's "preserve Z" adds the weighted input z after the image's height.
+            dz += v.w * t.z;
+        }
+        [dx, dy, dz]
     }
-    let mut dz = offset_z;
-    if scale_z.abs() > EPS {
-        dz += scale_z * intensity(grey, grey, grey) / 255.0;
-    }
-    if reset_z != 0.0 {
-        acc.z = 0.0;
-    }
-    if v.zrule == ZRule::Weighted {
-        // JWildfire's "preserve Z" adds the weighted input z after the image's height.
-        dz += v.w * t.z;
-    }
-    [dx, dy, dz]
 }
 
 /// The grey level of pixel (x, y) of the shared image (four pixels packed per value).

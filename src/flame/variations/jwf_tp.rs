@@ -111,24 +111,13 @@ fn taprats_figures(p: &[f64], _texts: &[String]) -> Vec<f64> {
     )
 }
 
-/// A random point of the segment a–b as JWildfire's `plotLine` draws it (its slope capped at
-/// 10 000 for a vertical segment), moved by up to half of `thick` across each axis.
+/// A random point of the segment a–b as JWildfire's `plotLine` draws it, moved by up to half
+/// of `thick` across each axis.
 fn line_point(rng: &mut FastRng, [x1, y1, x2, y2]: [f64; 4], thick: f64) -> (f64, f64) {
-    let (dx, dy) = (x2 - x1, y2 - y1);
-    let m = if dx == 0.0 { 10000.0 } else { dy / dx };
-    let len = (dx * dx + dy * dy).sqrt();
-    let d = rng.f01() * len;
-    let mut xo = d / (1.0 + m * m).sqrt();
-    if x2 < x1 {
-        xo = -xo;
-    }
-    let mut yo = (m * xo).abs();
-    if y2 < y1 {
-        yo = -yo;
-    }
-    xo += (rng.f01() - 0.5) * thick;
-    yo += (rng.f01() - 0.5) * thick;
-    (x1 + xo, y1 + yo)
+    let (x, y) = super::jwf_h5_draw::line_point(rng, x1, y1, x2, y2);
+    let xo = (rng.f01() - 0.5) * thick;
+    let yo = (rng.f01() - 0.5) * thick;
+    (x + xo, y + yo)
 }
 
 /// A uniform random point of a triangle.

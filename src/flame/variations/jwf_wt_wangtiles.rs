@@ -23,14 +23,11 @@
 //! middle; the block and Truchet sets' in one grey for the tile's number. Neighbouring
 //! tiles then still match along their shared edges and corners.
 
-use super::jwf_h9b_images::{image_axis, intensity};
+use super::jwf_aa_truchet::ImagePlace;
 use super::jwf_wt_tiling::{HIGH, Kind, SET_COUNT, TileSet, Tiling, WIDE, tiling};
 use super::resources::ResourceImage;
 use super::*;
 use std::sync::Arc;
-
-/// JWildfire's `EPSILON`.
-const EPS: f64 = 1e-8;
 
 /// A tile's side in pixels.
 const TILE: usize = 32;
@@ -89,29 +86,16 @@ fn wangtiles(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let rect = if square == 0.0 { 1.5 } else { 1.0 };
     let dx = v.w * rect * (rng.f01() - 0.5);
     let dy = v.w * (rng.f01() - 0.5);
-    let (_, ix) = image_axis(acc.x + dx, offset_x, scale_x, IMG_W as i32, tile_x, false);
-    let (_, iy) = image_axis(acc.y + dy, offset_y, scale_y, IMG_H as i32, tile_y, false);
-    let [r, g, b] = if (0..IMG_W as i32).contains(&ix) && (0..IMG_H as i32).contains(&iy) {
-        rgb_at(v.data(), ix as usize, iy as usize).map(f64::from)
-    } else {
-        [0.0; 3]
+    let place = ImagePlace {
+        size: [IMG_W as i32, IMG_H as i32],
+        offset: [offset_x, offset_y, offset_z],
+        scale: [scale_x, scale_y, scale_z],
+        tile: [tile_x, tile_y],
+        reset_z,
     };
-    acc.rgb = Some([r, g, b]);
-    if let Some(c) = v.palette_coordinate(r, g, b) {
-        acc.color = c;
-    }
-    let mut dz = offset_z;
-    if scale_z.abs() > EPS {
-        dz += scale_z * intensity(r, g, b) / 255.0;
-    }
-    if reset_z != 0.0 {
-        acc.z = 0.0;
-    }
-    if v.zrule == ZRule::Weighted {
-        // JWildfire's "preserve Z" adds the weighted input z after the image's height.
-        dz += v.w * t.z;
-    }
-    [dx, dy, dz]
+    place.step(v, t, acc, [dx, dy], |x, y| {
+        rgb_at(v.data(), x, y).map(f64::from)
+    })
 }
 
 /// The colour of pixel (x, y) of the shared image (one packed 0xRRGGBB per value; black
