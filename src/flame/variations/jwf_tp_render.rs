@@ -17,6 +17,7 @@
 //! With `fill` a band or region is its triangles (ear clipping) instead of its sides.
 
 use super::jwf_a_cuts::JavaRandom;
+use super::jwf_sv_sunvoroni::ear_clip;
 use super::jwf_tp_map::{Map, P, add, convex_sum, normalize, perp, scale, sub, sweep};
 
 /// The values one figure takes: its kind (2 segment, 3 triangle), three points, its colour.
@@ -64,67 +65,14 @@ impl Figures {
     }
 }
 
-/// Twice the signed area of a polygon, halved (positive counter-clockwise).
-pub(super) fn area(pts: &[P]) -> f64 {
-    let n = pts.len();
-    let mut a = 0.0;
-    for q in 0..n {
-        let p = (q + n - 1) % n;
-        a += pts[p][0] * pts[q][1] - pts[q][0] * pts[p][1];
-    }
-    a * 0.5
-}
-
-/// Whether `p` lies in the triangle a, b, c (counter-clockwise, boundary included).
-fn inside(a: P, b: P, c: P, p: P) -> bool {
-    let (ax, ay) = (c[0] - b[0], c[1] - b[1]);
-    let (bx, by) = (a[0] - c[0], a[1] - c[1]);
-    let (cx, cy) = (b[0] - a[0], b[1] - a[1]);
-    let (apx, apy) = (p[0] - a[0], p[1] - a[1]);
-    let (bpx, bpy) = (p[0] - b[0], p[1] - b[1]);
-    let (cpx, cpy) = (p[0] - c[0], p[1] - c[1]);
-    ax * bpy - ay * bpx >= 0.0 && cx * apy - cy * apx >= 0.0 && bx * cpy - by * cpx >= 0.0
-}
-
-/// A simple polygon's triangles by ear clipping (John W. Ratcliff's `Triangulate`, as Taprats
-/// has it): an ear needs a left turn of more than 1e-10 (single precision) and no other corner
-/// in it. A polygon that finds no ear for a while (not simple) keeps the triangles found.
+/// A simple polygon's triangles by ear clipping (John W. Ratcliff's `Triangulate`, which
+/// Taprats has too; a polygon that finds no ear for a while, not simple, keeps the triangles
+/// found).
 pub(super) fn triangulate(contour: &[P]) -> Vec<[P; 3]> {
-    let n = contour.len();
-    let mut out = Vec::new();
-    if n < 3 {
-        return out;
-    }
-    let mut v: Vec<usize> = if area(contour) > 0.0 {
-        (0..n).collect()
-    } else {
-        (0..n).rev().collect()
-    };
-    let eps = f64::from(1e-10_f32);
-    let mut nv = n;
-    let mut count = 2 * nv;
-    let mut vi = nv - 1;
-    while nv > 2 {
-        if count == 0 {
-            return out;
-        }
-        count -= 1;
-        let u = if nv <= vi { 0 } else { vi };
-        vi = if nv <= u + 1 { 0 } else { u + 1 };
-        let w = if nv <= vi + 1 { 0 } else { vi + 1 };
-        let (a, b, c) = (contour[v[u]], contour[v[vi]], contour[v[w]]);
-        let ear = ((b[0] - a[0]) * (c[1] - a[1])) - ((b[1] - a[1]) * (c[0] - a[0])) >= eps
-            && !(0..nv)
-                .filter(|&p| p != u && p != vi && p != w)
-                .any(|p| inside(a, b, c, contour[v[p]]));
-        if ear {
-            out.push([a, b, c]);
-            v.remove(vi);
-            nv -= 1;
-            count = 2 * nv;
-        }
-    }
-    out
+    ear_clip(contour)
+        .into_iter()
+        .map(|t| t.map(|k| contour[k]))
+        .collect()
 }
 
 /// A map's vertices' edges in counter-clockwise order (Taprats' order by a monotone stand-in
@@ -545,6 +493,7 @@ fn emboss_half(f: &mut Figures, [a, b, c, d]: [P; 4], fill: bool) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flame::variations::jwf_sv_sunvoroni::signed_area;
 
     /// Ear clipping covers the polygon: the triangles' areas add up to its area, for convex
     /// and non-convex polygons either way round.
@@ -561,8 +510,8 @@ mod tests {
         for poly in [star, square] {
             let tris = triangulate(&poly);
             assert_eq!(tris.len(), poly.len() - 2);
-            let sum: f64 = tris.iter().map(|t| area(t).abs()).sum();
-            assert!((sum - area(&poly).abs()).abs() < 1e-12, "{sum}");
+            let sum: f64 = tris.iter().map(|t| signed_area(t).abs()).sum();
+            assert!((sum - signed_area(&poly).abs()).abs() < 1e-12, "{sum}");
         }
     }
 
