@@ -154,6 +154,121 @@ fn a_resumed_affine_ifs_continues_the_same_orbits() {
 }
 
 #[test]
+fn a_render_resumed_after_a_partial_sub_batch_draws_every_sample() {
+    // 81×50 at quality 5 is 20 250 samples: the last of its three sub-batches holds 250. The
+    // added quality's samples come in whole sub-batches after it, none lost.
+    let f = |q: f64| {
+        let mut f = flame(80, 50, q);
+        f.resize_keep_framing(81, 50);
+        f
+    };
+    let mut r = Renderer::new(&f(5.0), &opts(7, 2)).unwrap();
+    run(&mut r);
+    let (st, hist) = r.into_state().unwrap();
+    assert_eq!((st.samples_done, st.batches_done), (20_250, 3));
+    let mut r2 = Renderer::resume(&st, hist, 5.0, &opts(7, 2), None).unwrap();
+    assert_eq!(r2.total_samples(), 40_500);
+    run(&mut r2);
+    assert_eq!(r2.samples_done(), 40_500);
+    assert!((r2.fraction() - 1.0).abs() < 1e-12);
+    // Extended again, in a running renderer.
+    r2.extend(5.0).unwrap();
+    run(&mut r2);
+    assert_eq!(r2.samples_done(), 60_750);
+    assert!((r2.quality_done() - 15.0).abs() < 1e-9);
+    let (st2, _) = r2.snapshot().unwrap();
+    let mut whole = Renderer::new(&f(15.0), &opts(7, 2)).unwrap();
+    run(&mut whole);
+    let resumed = r2.finish();
+    let p = psnr(&rgb(&resumed), &rgb(&whole.finish()));
+    assert!(p > 25.0, "resumed render is {p:.1} dB from one run on");
+    // A state saved after the extensions resumes after its last sub-batch too.
+    assert!(st2.is_finished());
+    assert_eq!(st2.samples_done, 60_750);
+}
+
+/// The JWildfire fixture whose crop hides points, at a test size.
+fn hidden(quality: f64) -> Flame {
+    let path = common::fixture("jwildfire_render/hidden.flame");
+    let mut f = ugnis::io::read_flames(&path, &Default::default())
+        .unwrap()
+        .value
+        .remove(0);
+    // JWildfire's renderer draws a border of 2 pixels around the image (its filter's reach),
+    // so 96×46 at quality 4 is (96 + 4)·(46 + 4)·4 samples, two whole sub-batches (see
+    // resume_continues_the_same_render).
+    f.resize_keep_framing(96, 46);
+    f.quality = quality;
+    f
+}
+
+#[test]
+fn a_resumed_jwildfire_render_keeps_its_hidden_points_hidden() {
+    // Under JWildfire's rule a point's hide flag travels with it from xform to xform: the
+    // state keeps it, so the resumed render draws what one run on draws.
+    let mut r = Renderer::new(&hidden(4.0), &opts(5, 2)).unwrap();
+    run(&mut r);
+    let (st, hist) = r.into_state().unwrap();
+    assert_eq!(st.samples_done, 20_000);
+    assert!(
+        st.lanes.iter().any(|l| l.hid.iter().any(|&h| h)),
+        "some orbits are hidden when the render stops"
+    );
+    let dir = scratch("hidden");
+    let path = dir.join("h.ugnis-state");
+    render_state::save(&path, &st, &hist).unwrap();
+    let mut rd = StateReader::open(&path).unwrap();
+    assert_eq!(rd.state, st, "the hide flags read back as written");
+    let back = rd.read_all().unwrap();
+    let mut r2 = Renderer::resume(&rd.state, back, 4.0, &opts(5, 2), None).unwrap();
+    run(&mut r2);
+    let mut whole = Renderer::new(&hidden(8.0), &opts(5, 2)).unwrap();
+    run(&mut whole);
+    let resumed = r2.finish();
+    let whole = whole.finish();
+    let d = max_diff(&rgb(&resumed), &rgb(&whole));
+    assert!(
+        d <= 1,
+        "resumed render differs from the longer render by {d}"
+    );
+}
+
+#[test]
+fn version_2_states_read_with_no_hidden_points() {
+    // Version 2 kept no own colours, hide flags and steps: its orbit sets are 5 bytes per
+    // orbit and 8 bytes shorter and read as all shown.
+    let mut r = Renderer::new(&hidden(2.0), &opts(1, 1)).unwrap();
+    run(&mut r);
+    let (st, hist) = r.into_state().unwrap();
+    let dir = scratch("v2");
+    let v3 = dir.join("v3.ugnis-state");
+    render_state::save(&v3, &st, &hist).unwrap();
+    let b = std::fs::read(&v3).unwrap();
+    let lanes = st.lanes[0].x.len();
+    let hlen = u32::from_le_bytes(b[12..16].try_into().unwrap()) as usize;
+    let at = 16 + hlen;
+    let sets = u32::from_le_bytes(b[at..at + 4].try_into().unwrap()) as usize;
+    let v2_set = lanes * (4 * 8 + 2 + 1 + 4) + 1;
+    let v3_set = v2_set + 5 * lanes + 8;
+    let mut old = b[..at + 4].to_vec();
+    old[8..12].copy_from_slice(&2u32.to_le_bytes());
+    for k in 0..sets {
+        let o = at + 4 + k * v3_set;
+        old.extend_from_slice(&b[o..o + v2_set]);
+    }
+    old.extend_from_slice(&b[at + 4 + sets * v3_set..]);
+    let v2 = dir.join("v2.ugnis-state");
+    std::fs::write(&v2, &old).unwrap();
+    let mut rd = StateReader::open(&v2).unwrap();
+    assert_eq!(rd.state.lanes.len(), sets);
+    for (a, b) in rd.state.lanes.iter().zip(&st.lanes) {
+        assert_eq!((&a.x, &a.step, a.started), (&b.x, &b.step, b.started));
+        assert!(a.hid.iter().all(|&h| !h) && a.rgb.iter().all(|&c| c == 0));
+    }
+    assert_eq!(rd.read_all().unwrap().data, hist.data);
+}
+
+#[test]
 fn states_of_other_versions_and_damaged_states_are_refused() {
     let f = flame(32, 24, 2.0);
     let mut r = Renderer::new(&f, &opts(1, 1)).unwrap();
@@ -163,7 +278,7 @@ fn states_of_other_versions_and_damaged_states_are_refused() {
     let good = dir.join("good.ugnis-state");
     render_state::save(&good, &st, &hist).unwrap();
     let bytes = std::fs::read(&good).unwrap();
-    for v in [0u32, 1, 3] {
+    for v in [0u32, 1, 4] {
         let mut b = bytes.clone();
         b[8..12].copy_from_slice(&v.to_le_bytes());
         let p = dir.join(format!("v{v}.ugnis-state"));
@@ -175,7 +290,7 @@ fn states_of_other_versions_and_damaged_states_are_refused() {
         );
         let (code, _, err) = ugnis(&["info", s(&p)]);
         assert_eq!(code, 1);
-        assert!(err.contains("reads version 2 only"), "{err}");
+        assert!(err.contains("reads versions 2 to 3 only"), "{err}");
     }
     // Truncated: the end marker is missing.
     let p = dir.join("cut.ugnis-state");

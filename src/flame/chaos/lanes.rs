@@ -60,10 +60,9 @@ pub struct Lanes {
     /// Every orbit is past its fuse and none is retrying a bad value, in both sets: a step
     /// then needs neither the retry counters nor the step counters.
     pub(super) clean: bool,
-    /// Steps taken since the orbits were made or restored (the clock of JWildfire's checks
-    /// for bad values). A saved render state does not keep it: a resumed render of a flame
-    /// JWildfire's renderer draws restarts its waiting orbits on a clock of its own, so it
-    /// matches an uninterrupted one only while no orbit waits.
+    /// Steps taken since the orbits were made (the clock of JWildfire's checks for bad
+    /// values; a saved render state keeps it, so a resumed render restarts its waiting orbits
+    /// when the uninterrupted one does).
     pub(super) steps: u64,
     // Scratch space.
     pub(super) choice: [u16; LANES],
@@ -120,6 +119,13 @@ pub struct LaneState {
     pub last: Vec<u16>,
     pub consec: Vec<u8>,
     pub step: Vec<i32>,
+    /// Each orbit's own colour (see [`crate::flame::variations::own_rgb`]; 0 for flames
+    /// without them).
+    pub rgb: Vec<u32>,
+    /// Each orbit's point is hidden (JWildfire's renderer: the flag travels with the point).
+    pub hid: Vec<bool>,
+    /// Steps taken (the clock of JWildfire's checks for bad values).
+    pub steps: u64,
     pub started: bool,
 }
 
@@ -135,6 +141,9 @@ impl Lanes {
             last: o.last.to_vec(),
             consec: o.consec.to_vec(),
             step: o.step.to_vec(),
+            rgb: o.rgb.to_vec(),
+            hid: o.hid.to_vec(),
+            steps: self.steps,
             started: self.started,
         }
     }
@@ -151,6 +160,9 @@ impl Lanes {
         o.last = st.last.as_slice().try_into().ok()?;
         o.consec = st.consec.as_slice().try_into().ok()?;
         o.step = st.step.as_slice().try_into().ok()?;
+        o.rgb = st.rgb.as_slice().try_into().ok()?;
+        o.hid = st.hid.as_slice().try_into().ok()?;
+        l.steps = st.steps;
         l.started = st.started;
         // At the end of every step `clean` says whether the counters are all clear; both sets
         // then read as clean (the other one's counters are not gathered). Restored the same

@@ -118,10 +118,14 @@ pub struct Renderer {
     seed: u64,
     format: OutputFormat,
     part: Part,
-    /// Samples of the whole render (every part).
+    /// Samples of the whole render (every part), counting `gap`: sub-batch g draws samples
+    /// g·SUB_BATCH.. of it.
     total: u64,
-    /// Samples of this part.
+    /// Samples of this part (without `gap`).
     part_total: u64,
+    /// Samples in `total` that are never drawn: a render in one part that finished on a
+    /// partial sub-batch and was then extended goes on with whole sub-batches after it.
+    gap: u64,
     /// Sub-batches of this part; `next_batch` counts them too (local indices).
     batches_total: u64,
     next_batch: u64,
@@ -246,6 +250,7 @@ impl Renderer {
             part,
             total,
             part_total: part.samples(total),
+            gap: 0,
             batches_total: part.local_batches(total.div_ceil(SUB_BATCH)),
             next_batch: 0,
             samples_done: 0,
@@ -354,6 +359,11 @@ impl Renderer {
         let mut r = Self::with_plan(&flame, opts, &Plan { part, strip })?;
         fill(&mut r.hists[0]).map_err(RenderError::Saved)?;
         r.logs = None;
+        if part.count == 1 && state.is_finished() {
+            // A finished render (perhaps extended before, with gaps after partial sub-batches)
+            // goes on after its last sub-batch.
+            r.batches_total = r.batches_total.max(next);
+        }
         r.next_batch = next.min(r.batches_total);
         r.samples_done = state.samples_done;
         r.badvals = state.bad_values;
@@ -404,10 +414,23 @@ impl Renderer {
             self.batches_total = self.batches_total.max(self.next_batch);
             return Ok(());
         }
+        let add = f.total_samples().saturating_sub(self.flame.total_samples());
         self.flame.quality = f.quality;
         self.logs = None;
-        self.total = self.flame.total_samples().max(1);
-        self.part_total = self.part.samples(self.total);
+        if self.part.count == 1 {
+            // The added samples follow the ones drawn; a render that finished on a partial
+            // sub-batch goes on with the next whole one (else the rest of that sub-batch's
+            // range would never be drawn, and the extended render would fall short).
+            let boundary = self.next_batch * SUB_BATCH;
+            if self.next_batch >= self.batches_total && boundary > self.total {
+                self.gap += boundary - self.total;
+                self.total = boundary;
+            }
+            self.total = (self.total + add).max(1);
+        } else {
+            self.total = self.flame.total_samples().max(1);
+        }
+        self.part_total = self.part.samples(self.total) - self.gap.min(self.total);
         self.batches_total = self
             .part
             .local_batches(self.total.div_ceil(SUB_BATCH))

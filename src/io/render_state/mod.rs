@@ -9,7 +9,9 @@
 //! u32 n, n bytes                       header: UTF-8 lines "key value", then "flame" and the
 //!                                      flame's XML element on the following lines
 //! u32 k, k × lane set                  each worker's orbits: 256 × (x, y, z, c as f64, last
-//!                                      as u16, consec as u8, step as i32), then started as u8
+//!                                      as u16, consec as u8, step as i32), started as u8,
+//!                                      then 256 × own colour as u32, 256 × hidden as u8 and
+//!                                      the steps taken as u64
 //! repeated: "ROWS" u32 row0 u32 rows u64 n, n bytes
 //!                                      bucket rows row0.. of the grid: deflate of a bit per
 //!                                      bucket (empty or not), then the non-empty buckets'
@@ -41,18 +43,26 @@ pub use write::StateWriter;
 
 /// The file's first eight bytes.
 pub const MAGIC: &[u8; 8] = b"UGNISRS\x1a";
-/// The version this ugnis writes and reads.
+/// The version this ugnis writes.
+/// 3: each orbit's own colour and hide flag, and the steps taken, follow the orbits' other
+/// state (a resumed render of a flame JWildfire's renderer draws keeps which points are
+/// hidden and when waiting orbits restart).
 /// 2: colours in palette units (whole numbers for 8-bit palettes), stored as integers when
 /// whole. Version 1 held them in units of 1.0.
-pub const FORMAT_VERSION: u32 = 2;
+pub const FORMAT_VERSION: u32 = 3;
+/// The oldest version this ugnis reads: version 2 differs only in its orbits (read with no
+/// own colours and no hidden points).
+pub const OLDEST_READ_VERSION: u32 = 2;
 /// Rows per compressed chunk.
 pub const CHUNK_ROWS: usize = 32;
 /// Longest header accepted.
 const MAX_HEADER: u32 = 64 << 20;
 /// Most orbit sets accepted.
 const MAX_LANE_SETS: u32 = 4096;
+/// Bytes of one orbit set in version 2.
+const LANE_SET_BYTES_V2: usize = LANES * (4 * 8 + 2 + 1 + 4) + 1;
 /// Bytes of one orbit set.
-const LANE_SET_BYTES: usize = LANES * (4 * 8 + 2 + 1 + 4) + 1;
+const LANE_SET_BYTES: usize = LANE_SET_BYTES_V2 + LANES * (4 + 1) + 8;
 
 fn err(file: &str, pos: Pos, msg: impl Into<String>) -> Diagnostic {
     Diagnostic::error(file, pos, "STATE001", msg)

@@ -9,7 +9,10 @@ use std::path::Path;
 use rayon::prelude::*;
 
 use super::chunk::decompress;
-use super::{FORMAT_VERSION, LANE_SET_BYTES, MAGIC, MAX_HEADER, MAX_LANE_SETS, err, io_err};
+use super::{
+    FORMAT_VERSION, LANE_SET_BYTES, LANE_SET_BYTES_V2, MAGIC, MAX_HEADER, MAX_LANE_SETS,
+    OLDEST_READ_VERSION, err, io_err,
+};
 use crate::flame::chaos::{LANES, LaneState};
 use crate::flame::histogram::{Bucket, Histogram};
 use crate::flame::render::{RenderOptions, Renderer};
@@ -91,12 +94,12 @@ impl StateReader {
             ));
         }
         let version = read_u32(&mut file).map_err(e)?;
-        if version != FORMAT_VERSION {
+        if !(OLDEST_READ_VERSION..=FORMAT_VERSION).contains(&version) {
             return Err(err(
                 &name,
                 Pos::Byte(8),
                 format!(
-                    "render state format version {version}, but ugnis {} reads version {FORMAT_VERSION} only; render the part again with this ugnis (a state cannot be converted: its histogram layout differs between versions)",
+                    "render state format version {version}, but ugnis {} reads versions {OLDEST_READ_VERSION} to {FORMAT_VERSION} only; render the part again with this ugnis (a state cannot be converted: its histogram layout differs between versions)",
                     crate::VERSION
                 ),
             ));
@@ -125,8 +128,13 @@ impl StateReader {
             ));
         }
         let mut state = state;
+        let set_bytes = if version >= 3 {
+            LANE_SET_BYTES
+        } else {
+            LANE_SET_BYTES_V2
+        };
         for _ in 0..n_lanes {
-            let mut b = vec![0u8; LANE_SET_BYTES];
+            let mut b = vec![0u8; set_bytes];
             file.read_exact(&mut b).map_err(e)?;
             state.lanes.push(parse_lanes(&b));
         }
@@ -359,6 +367,24 @@ fn parse_lanes(b: &[u8]) -> LaneState {
         })
         .collect();
     at += 4 * LANES;
+    let started = b[at] != 0;
+    at += 1;
+    // Version 3 on: own colours, hide flags and steps; a version 2 set ends here.
+    let (rgb, hid, steps) = if b.len() >= at + 5 * LANES + 8 {
+        let rgb = (0..LANES)
+            .map(|i| {
+                let o = at + 4 * i;
+                u32::from_le_bytes([b[o], b[o + 1], b[o + 2], b[o + 3]])
+            })
+            .collect();
+        at += 4 * LANES;
+        let hid = b[at..at + LANES].iter().map(|&h| h != 0).collect();
+        at += LANES;
+        let steps = u64::from_le_bytes(b[at..at + 8].try_into().unwrap_or([0; 8]));
+        (rgb, hid, steps)
+    } else {
+        (vec![0; LANES], vec![false; LANES], 0)
+    };
     LaneState {
         x,
         y,
@@ -367,7 +393,10 @@ fn parse_lanes(b: &[u8]) -> LaneState {
         last,
         consec,
         step,
-        started: b[at] != 0,
+        rgb,
+        hid,
+        steps,
+        started,
     }
 }
 

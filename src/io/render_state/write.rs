@@ -65,6 +65,11 @@ impl<W: Write> StateWriter<W> {
                 b.extend_from_slice(&x.to_le_bytes());
             }
             b.push(l.started as u8);
+            for x in &l.rgb {
+                b.extend_from_slice(&x.to_le_bytes());
+            }
+            b.extend(l.hid.iter().map(|&h| h as u8));
+            b.extend_from_slice(&l.steps.to_le_bytes());
             if b.len() != LANE_SET_BYTES {
                 return Err(std::io::Error::other("orbit state of the wrong size"));
             }
