@@ -271,7 +271,14 @@ impl Chaos {
                     })
                     .collect::<Result<_, _>>()?;
                 if row.iter().sum::<f64>() <= 0.0 {
-                    return Err(ChaosError::XaosRowZero(i));
+                    // Fractorium 23.23 (`Iterator::InitDistributions`) allows a row of zero
+                    // total: its table is left all zeros, so the first xform always follows.
+                    // flam3 refuses the flame (`flam3_create_xform_distrib`).
+                    if rules.dialect != variations::Dialect::Fractorium {
+                        return Err(ChaosError::XaosRowZero(i));
+                    }
+                    tables.extend(std::iter::repeat_n(0u16, CHOOSE_GRAIN));
+                    continue;
                 }
                 tables.extend_from_slice(&selection_table(&row));
             }
