@@ -231,6 +231,8 @@ mod tests {
             ("Apophysis 7x 2010 (R12)", Apophysis),
             ("Apophysis 2.09", Apophysis),
             ("FLAM3-LNX-3.1.1", Flam3),
+            ("FLAM3H-WIN-1.1.0", Fractorium),
+            ("FLAM3H-LNX-1.9.5", Fractorium),
             ("ugnis-0.1.0", Flam3),
             ("1.0 (beta)", Flam3),
             ("", Flam3),

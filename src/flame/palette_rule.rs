@@ -73,7 +73,10 @@ impl PaletteIndex {
     /// The rule of the program named by a flame's `version` attribute: Apophysis writes
     /// "Apophysis 7x …", Fractorium "EMBER-…", JWildfire "JWildfire V…" (its first releases of
     /// 2011 only "0.16 (06.11.2011)": JWildfire, the one program that still reads them as its
-    /// own, draws them by its rules, without flam3's density estimation).
+    /// own, draws them by its rules, without flam3's density estimation). FLAM3H (Houdini,
+    /// "FLAM3H-WIN-1.1.0") renders point clouds of its own and leaves pictures of its files to
+    /// Fractorium (its README: "create your Flames in Houdini and render them inside other
+    /// applications", framed by "Camera sensor: FLAM3H to Fractorium"): Fractorium's rule.
     pub fn from_version(v: &str) -> Self {
         let v = v.trim();
         // Dot-separated groups of digits of the given lengths (0: any length but empty).
@@ -94,7 +97,7 @@ impl PaletteIndex {
                     .is_some_and(|d| digits(d, &[2, 2, 4]))
         });
         let starts = |p: &str| v.get(..p.len()).is_some_and(|q| q.eq_ignore_ascii_case(p));
-        if starts("ember") {
+        if starts("ember") || starts("flam3h") {
             PaletteIndex::Fractorium
         } else if starts("jwildfire") || early_jwildfire {
             PaletteIndex::JWildfire

@@ -138,7 +138,7 @@ impl CompiledXform {
         self.pre_forms(x, y, z, c, rgb.as_deref_mut(), g, rng);
         if !self.vars.is_empty() {
             self.regular_forms(x, y, z, c, rgb.as_deref_mut(), g, rng);
-        } else if !self.pre_vars.is_empty() {
+        } else if self.pre_only_passes && !self.pre_vars.is_empty() {
             g.px[..n].copy_from_slice(x);
             g.py[..n].copy_from_slice(y);
             g.pz[..n].copy_from_slice(z);
@@ -485,6 +485,51 @@ mod tests {
         let mut s = Scratch::new();
         ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, None, &mut s, &mut rng);
         assert!((gx[0] - q.x).abs() < 1e-12 && (gy[0] - q.y).abs() < 1e-12);
+    }
+
+    /// An xform of `pre_` forms alone: flam3 and Apophysis sum no variation (the point goes
+    /// to the origin, then through the post map), Fractorium hands the moved point on; the
+    /// same in the point-by-point and the batched runs.
+    #[test]
+    fn pre_forms_alone_give_the_origin_under_flam3() {
+        use crate::flame::model::{PaletteIndex, Var};
+        use crate::flame::variations::{Form, SINUSOIDAL};
+        let mut x = Xform::linear(Affine::new(0.8, 0.2, -0.3, 0.9, 0.1, -0.2), 1.0, 0.0);
+        x.vars = vec![Var::with_form(SINUSOIDAL, Form::Pre, 1.0)];
+        x.post = Affine::new(1.0, 0.0, 0.0, 1.0, 0.25, -0.5);
+        let p = Pt {
+            x: 0.4,
+            y: -0.7,
+            z: 0.0,
+            c: 0.5,
+        };
+        let (tx, ty) = x.coefs.apply(p.x, p.y);
+        for (rule, want) in [
+            (PaletteIndex::Flam3, (0.25, -0.5)),
+            (PaletteIndex::Apophysis, (0.25, -0.5)),
+            (PaletteIndex::Fractorium, (tx.sin() + 0.25, ty.sin() - 0.5)),
+        ] {
+            let f = Flame {
+                xforms: vec![x.clone()],
+                palette_index: rule,
+                ..Flame::default()
+            };
+            let ch = Chaos::new(&f).unwrap();
+            let mut rng = FastRng::new(3);
+            let (q, bad) = ch.xforms[0].apply(p, &mut rng);
+            assert!(!bad);
+            assert!(
+                (q.x - want.0).abs() < 1e-12 && (q.y - want.1).abs() < 1e-12,
+                "{rule:?} {q:?}"
+            );
+            let (mut gx, mut gy, mut gz, mut gc) = ([p.x], [p.y], [p.z], [p.c]);
+            let mut s = Scratch::new();
+            ch.xforms[0].apply_soa(&mut gx, &mut gy, &mut gz, &mut gc, None, &mut s, &mut rng);
+            assert!(
+                (gx[0] - want.0).abs() < 1e-12 && (gy[0] - want.1).abs() < 1e-12,
+                "{rule:?} batched {gx:?} {gy:?}"
+            );
+        }
     }
 
     /// JWildfire's post_depth reads the point the regular variations saw (the affine point)

@@ -29,6 +29,28 @@ fn empty_and_bad_flames_are_rejected() {
 }
 
 #[test]
+fn a_fractorium_xaos_row_of_zero_total_picks_the_first_xform() {
+    // Fractorium draws the first xform after one whose xaos row sums to 0; flam3 refuses.
+    let mut f = Flame::default();
+    for e in [0.0, 0.5, 0.25] {
+        f.xforms.push(Xform::linear(
+            Affine::new(0.5, 0.0, 0.0, 0.5, e, 0.0),
+            1.0,
+            0.0,
+        ));
+    }
+    f.xforms[2].chaos = vec![0.0, 0.0, 0.0];
+    assert_eq!(Chaos::new(&f).unwrap_err(), ChaosError::XaosRowZero(2));
+    f.palette_index = crate::flame::model::PaletteIndex::Fractorium;
+    let ch = Chaos::new(&f).unwrap();
+    let mut rng = FastRng::new(5);
+    for _ in 0..1000 {
+        assert_eq!(ch.choose(Some(2), &mut rng), 0);
+    }
+    assert!((0..1000).any(|_| ch.choose(Some(0), &mut rng) == 2));
+}
+
+#[test]
 fn sierpinski_points_stay_on_the_attractor() {
     let mut f = Flame::default();
     for (e, ff) in [(0.0, 0.0), (0.5, 0.0), (0.25, 0.5)] {

@@ -6,7 +6,7 @@
 
 use super::lanes::{Lanes, Orbits, WAITING};
 use super::xform::within;
-use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, JWF_CHECK_STEPS, LANES};
+use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, FIRST_FUSE, JWF_CHECK_STEPS, LANES};
 use crate::flame::rng::FastRng;
 
 /// Mask of a lane index: indices masked by it are provably in range.
@@ -96,13 +96,14 @@ impl Chaos {
         bad
     }
 
-    /// Start every orbit at a random point on the first call; on later calls restart one
-    /// orbit, chosen at random, fused (not for a flame JWildfire's renderer draws, whose
-    /// orbits live for the whole render: see [`JWF_FUSE`](super::JWF_FUSE)).
+    /// Start every orbit at a random point on the first call, fused [`FIRST_FUSE`] steps
+    /// (or [`JWF_FUSE`](super::JWF_FUSE)); at every call restart one orbit, chosen at random,
+    /// fused as flam3 fuses (not for a flame JWildfire's renderer draws, whose orbits live for
+    /// the whole render).
     #[inline(always)]
     fn start_orbits(&self, ln: &mut Lanes, rng: &mut FastRng) {
         if !ln.started {
-            let fuse = -(self.fuse() as i32);
+            let fuse = -(self.fuse().max(FIRST_FUSE) as i32);
             let o = &mut ln.sets[ln.cur & 1];
             for l in 0..LANES {
                 let p = Self::start_point(rng);
@@ -112,7 +113,8 @@ impl Chaos {
                 o.step[l] = fuse;
             }
             ln.started = true;
-        } else if !self.jwf_bad_values {
+        }
+        if !self.jwf_bad_values {
             // flam3 starts a new orbit for every sub-batch of 10 000 samples; a flame that
             // converges slowly (one contracting xform, say) shows the path towards its
             // attractor from each start. Restart one orbit per call, chosen at random: every

@@ -41,6 +41,15 @@ pub const FUSE: i64 = 15;
 /// long enough to reach the attractor (a contraction of 0.97 per step shrinks a start's
 /// distance by 10⁻¹³ in 1000 steps), and they live for the whole render.
 pub const JWF_FUSE: i64 = 1000;
+/// Fuse of the [`LANES`] orbits the lane runner starts with (flam3's flames; JWildfire's take
+/// [`JWF_FUSE`]). flam3 3.1.1 (`rect.c`) starts one orbit per sub-batch of [`SUB_BATCH`]
+/// samples, fused [`FUSE`] steps, and the lane runner restarts one orbit per sub-batch to
+/// match; fused as briefly, its first orbits would draw hundreds more paths towards the
+/// attractor per thread, a haze around a slowly converging flame that grows with the thread
+/// count (flam3's own test flame render031, a slow xform among two mirrors: mean level
+/// 14.28 in flam3, 14.60 / 14.87 / 15.83 / 17.09 in ugnis with 1 / 2 / 4 / 8 threads). They
+/// are fused long enough to reach the attractor instead (see [`JWF_FUSE`]).
+pub const FIRST_FUSE: i64 = 1000;
 /// Samples per sub-batch.
 pub const SUB_BATCH: u64 = 10_000;
 /// Number of independent orbits iterated together by [`Chaos::run_lanes`].
@@ -262,7 +271,14 @@ impl Chaos {
                     })
                     .collect::<Result<_, _>>()?;
                 if row.iter().sum::<f64>() <= 0.0 {
-                    return Err(ChaosError::XaosRowZero(i));
+                    // Fractorium 23.23 (`Iterator::InitDistributions`) allows a row of zero
+                    // total: its table is left all zeros, so the first xform always follows.
+                    // flam3 refuses the flame (`flam3_create_xform_distrib`).
+                    if rules.dialect != variations::Dialect::Fractorium {
+                        return Err(ChaosError::XaosRowZero(i));
+                    }
+                    tables.extend(std::iter::repeat_n(0u16, CHOOSE_GRAIN));
+                    continue;
                 }
                 tables.extend_from_slice(&selection_table(&row));
             }

@@ -58,6 +58,11 @@ pub struct CompiledXform {
     /// JWildfire's maps of the yz and zx planes, with the affine map and with the post map
     /// (for a flame of JWildfire's variations; see [`XformPlanes`]).
     pub planes: Option<XformPlanes>,
+    /// An xform whose only variations are `pre_` forms hands the moved point on (Fractorium
+    /// 23.23, `Xform::Apply`: "only pre variations are present"; JWildfire). flam3 3.1.1
+    /// (`apply_xform`) and Apophysis (`TXForm.NextPoint`) start the variation sum at 0 and
+    /// add nothing to it: the point is the origin (then the post map).
+    pub pre_only_passes: bool,
 }
 
 /// The hiding variations that, in JWildfire 9.00, set the point's hide flag and never clear
@@ -184,6 +189,7 @@ impl CompiledXform {
             vis: adjust_opacity(opacity),
             opacity,
             bad_limit: BAD_LIMIT,
+            pre_only_passes: rules.dialect != Dialect::Flam3,
         }
     }
 
@@ -235,7 +241,7 @@ impl CompiledXform {
                 acc.y += o[1];
                 acc.z += o[2];
             }
-        } else if !self.pre_vars.is_empty() {
+        } else if self.pre_only_passes && !self.pre_vars.is_empty() {
             (acc.x, acc.y, acc.z) = (tr[0], tr[1], tr[2]);
         }
         for v in &self.post_vars {
