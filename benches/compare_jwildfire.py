@@ -33,7 +33,10 @@ import sys
 import tempfile
 
 import numpy as np
-from PIL import Image
+from PIL import Image, PngImagePlugin
+
+# ugnis's pictures carry their flame; one with an image given inline holds megabytes of text.
+PngImagePlugin.MAX_TEXT_CHUNK = 256 << 20
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TARGET = os.environ.get("CARGO_TARGET_DIR", os.path.join(ROOT, "target"))

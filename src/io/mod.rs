@@ -230,7 +230,7 @@ fn read_flame_file_with(
     let mut p = flam3_xml::read(&text, &o)?;
     // The image files the flame's variations name (JWildfire's image resources).
     if !is_stdin(path) {
-        let w = var_images::load_variation_images(&p.value.flames, path, &o.file);
+        let w = var_images::load_variation_images(&mut p.value.flames, path, &o.file);
         p.warnings.extend(w);
     }
     Ok(p)

@@ -22,12 +22,33 @@ const MESH_TEXT: &str = "_obj_filename";
 /// Largest mesh file read (bytes).
 const MAX_MESH_FILE: u64 = 256 << 20;
 
+/// The start of the name under which an image JWildfire wrote inline (its resource
+/// `<variation>_inlined_image`) is handed over, followed by a hash of the image file's bytes.
+/// The variation's `image_filename` holds this name while the flame is loaded; it is written
+/// back empty, next to the inline image kept as it was read.
+pub const INLINED_IMAGE: &str = "inlined_image:";
+
+/// The suffix of JWildfire's resource holding an image file inline.
+const INLINED_ATTR: &str = "_inlined_image";
+
+/// Most hex digits of an inline image read (the size of [`MAX_IMAGE_FILE`] bytes).
+const MAX_INLINED_HEX: usize = 2 * MAX_IMAGE_FILE as usize;
+
 /// Load the images named by the variations of `flames`, read from the file `flame_path`
 /// (shown as `file` in messages), and hand them over; one warning per image not loaded.
-pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) -> Vec<Diagnostic> {
+/// Images given inline (`<variation>_inlined_image`, kept among the xform's other
+/// attributes) are decoded first and take the place of a named file, as in JWildfire.
+pub fn load_variation_images(
+    flames: &mut [Flame],
+    flame_path: &Path,
+    file: &str,
+) -> Vec<Diagnostic> {
     let dir = flame_path.parent().unwrap_or(Path::new(""));
     let mut warnings = Vec::new();
     let mut done: Vec<String> = Vec::new();
+    for x in flames.iter_mut().flat_map(all_xforms_mut) {
+        take_inlined_images(x, file, &mut done, &mut warnings);
+    }
     let installed = resources::has_jwildfire_reader();
     for x in flames.iter().flat_map(all_xforms) {
         for v in &x.vars {
@@ -58,7 +79,11 @@ pub fn load_variation_images(flames: &[Flame], flame_path: &Path, file: &str) ->
                     .trim_end_matches(|c: char| c.is_ascii_digit())
                     .ends_with(IMAGE_TEXT);
                 let mesh = tp.name.ends_with(MESH_TEXT);
-                if !(image || mesh) || name.is_empty() || done.contains(name) {
+                if !(image || mesh)
+                    || name.is_empty()
+                    || name.starts_with(INLINED_IMAGE)
+                    || done.contains(name)
+                {
                     continue;
                 }
                 done.push(name.clone());
@@ -92,6 +117,116 @@ fn needs_jwildfire(name: &str, params: &[f64]) -> bool {
         "obj_mesh_primitive_wf" => params.first().is_some_and(|&p| p != 0.0 && p != 1.0),
         _ => false,
     }
+}
+
+/// Decode the images JWildfire wrote inline for the variations of `x` (JWildfire 9.00's
+/// `AbstractFlameWriter` writes a resource as the hex digits of its bytes, two a byte, and
+/// `Tools.hexStringToByteArray` reads them back), hand each over under [`INLINED_IMAGE`] and a
+/// hash of its bytes, and name it in the variation's image text in place of a file, as
+/// JWildfire's `setRessource` lets an inline image replace the file name. `done` holds the
+/// names handed over already; an image that cannot be read is reported and the variation
+/// keeps its file name or default image.
+fn take_inlined_images(
+    x: &mut Xform,
+    file: &str,
+    done: &mut Vec<String>,
+    warnings: &mut Vec<Diagnostic>,
+) {
+    let mut found: Vec<(usize, usize, String)> = Vec::new();
+    for (attr, hex) in &x.extra_attrs {
+        let (plain, instance) =
+            crate::io::xml::split_jwf_index(attr).unwrap_or_else(|| (attr.clone(), 0));
+        let Some(stem) = plain.strip_suffix(INLINED_ATTR) else {
+            continue;
+        };
+        let hex = hex.trim();
+        if hex.is_empty() {
+            continue;
+        }
+        let Some((id, form, index)) = variations::text_of(&format!("{stem}{IMAGE_TEXT}")) else {
+            continue;
+        };
+        // The variation it belongs to: the `instance`-th of that name and form (JWildfire's
+        // `#k#` counts the uses of a variation in an xform).
+        let Some(v) = (0..x.vars.len())
+            .filter(|&i| x.vars[i].id == id && x.vars[i].form == form)
+            .nth(instance as usize)
+        else {
+            continue;
+        };
+        match inlined_image(hex) {
+            Ok((key, img)) => {
+                if !done.contains(&key) {
+                    if !resources::put_image(&key, img) {
+                        warnings.push(inline_warning(file, attr, "is empty"));
+                        continue;
+                    }
+                    done.push(key.clone());
+                }
+                found.push((v, index, key));
+            }
+            Err(why) => warnings.push(inline_warning(file, attr, &why)),
+        }
+    }
+    for (v, index, key) in found {
+        if let Some(t) = x.vars[v].texts.get_mut(index) {
+            *t = key;
+        }
+    }
+}
+
+fn inline_warning(file: &str, attr: &str, why: &str) -> Diagnostic {
+    Diagnostic::warning(
+        file,
+        Pos::File,
+        "IMG012",
+        format!("{attr}: the image given inline {why}; it is not drawn"),
+    )
+}
+
+/// The image whose file's bytes `hex` holds as hex digits, and the name to hand it over
+/// under; why not, otherwise.
+fn inlined_image(hex: &str) -> Result<(String, resources::ResourceImage), String> {
+    if hex.len() > MAX_INLINED_HEX {
+        return Err(format!("has more than {MAX_IMAGE_FILE} bytes"));
+    }
+    if !hex.len().is_multiple_of(2) || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return Err("is not an even number of hex digits".into());
+    }
+    let bytes: Vec<u8> = hex
+        .as_bytes()
+        .chunks_exact(2)
+        .map(|p| (hex_digit(p[0]) << 4) | hex_digit(p[1]))
+        .collect();
+    // FNV-1a, 64 bits: names the image by its contents.
+    let hash = bytes.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    });
+    let img = decode_image(&bytes)?;
+    Ok((format!("{INLINED_IMAGE}{hash:016x}"), img))
+}
+
+/// The value of an ASCII hex digit (0 for anything else).
+fn hex_digit(c: u8) -> u8 {
+    match c {
+        b'0'..=b'9' => c - b'0',
+        b'a'..=b'f' => c - b'a' + 10,
+        b'A'..=b'F' => c - b'A' + 10,
+        _ => 0,
+    }
+}
+
+/// Every xform of a flame, to change: as [`all_xforms`].
+fn all_xforms_mut(f: &mut Flame) -> impl Iterator<Item = &mut Xform> {
+    let layers = f
+        .more_layers
+        .iter_mut()
+        .flat_map(|l| l.xforms.iter_mut().chain(l.finals.iter_mut()));
+    f.xforms
+        .iter_mut()
+        .chain(f.final_xform.as_mut())
+        .chain(f.more_finals.iter_mut())
+        .chain(layers)
 }
 
 /// Every xform of a flame: its own, its final ones and those of its other layers.
@@ -271,6 +406,59 @@ mod tests {
             !msgs.iter().any(|m| m.contains("h9b-io-test.png")),
             "{msgs:?}"
         );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// An image JWildfire wrote inline (the hex digits of a PNG file's bytes) is decoded and
+    /// handed over in place of the (empty) file name; its pixels reach the variation. Written
+    /// back, the file name stays empty and the image is kept; a bad one is reported.
+    #[test]
+    fn inlined_images_are_decoded_and_handed_over() {
+        let dir = std::env::temp_dir().join(format!("ugnis-inline-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut png = Vec::new();
+        let mut pic = image::RgbaImage::from_pixel(2, 2, image::Rgba([1, 2, 3, 255]));
+        pic.put_pixel(1, 1, image::Rgba([200, 100, 50, 255]));
+        pic.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+            .unwrap();
+        let hex: String = png.iter().map(|b| format!("{b:02X}")).collect();
+        let text = format!(
+            r#"<flame name="a" version="JWildfire V6.00" size="10 10" center="0 0" scale="1"><xform weight="1" color="0" post_bumpmap_wf="1" post_bumpmap_wf_image_filename="" post_bumpmap_wf_inlined_image="{hex}" coefs="1 0 0 1 0 0"/><xform weight="1" color="0" colormap_wf="1" colormap_wf_inlined_image="0A1" coefs="1 0 0 1 0 0"/><palette count="1" format="RGB">000000</palette></flame>"#
+        );
+        let flame_path = dir.join("inline.flame");
+        std::fs::write(&flame_path, &text).unwrap();
+        let opts = crate::io::flam3_xml::ReadOptions::default();
+        let parsed = crate::io::read_flame_file(&flame_path, &opts).unwrap();
+        let f = &parsed.value.flames[0];
+        let key = &f.xforms[0].vars[0].texts[0];
+        assert!(key.starts_with(INLINED_IMAGE), "{key}");
+        let img = resources::image(key).expect("handed over");
+        assert_eq!((img.w, img.h), (2, 2));
+        assert_eq!(img.rgba[0], [1, 2, 3, 255]);
+        assert_eq!(img.rgba[3], [200, 100, 50, 255]);
+        // The variation's own image data is that image (width, height, then 0xAARRGGBB).
+        let v = &f.xforms[0].vars[0];
+        let build = variations::info(v.id)
+            .shared
+            .expect("an image variation")
+            .build;
+        let data = build(&v.params, &v.texts);
+        assert_eq!(&data[..2], [2.0, 2.0]);
+        assert_eq!(data[5], f64::from(0xFFC8_6432_u32));
+        // The odd number of digits is reported; that variation keeps its default image.
+        let msgs: Vec<String> = parsed.warnings.iter().map(|w| w.message.clone()).collect();
+        assert!(
+            msgs.iter()
+                .any(|m| m.contains("colormap_wf_inlined_image") && m.contains("even number")),
+            "{msgs:?}"
+        );
+        assert_eq!(f.xforms[1].vars[0].texts[0], "");
+        let out = crate::io::flam3_xml::write(&parsed.value);
+        assert!(
+            out.contains(r#"post_bumpmap_wf_image_filename="""#),
+            "{out}"
+        );
+        assert!(out.contains(&format!(r#"post_bumpmap_wf_inlined_image="{hex}""#)));
         let _ = std::fs::remove_dir_all(&dir);
     }
 

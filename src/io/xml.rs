@@ -36,15 +36,11 @@ pub fn scan_attrs_jwf<'a>(
     scan(content, base, Some(notes))
 }
 
-/// A name's end: the first `=`, blank or `/` from `i`; with `slash_inside`, a `/` followed by
-/// a letter, digit or `_` belongs to the name (JWildfire writes parameter names such as
-/// `hamid_js_number_lines/circles`).
+/// A name's end: the first `=`, blank or `/` from `i`; with `slash_inside`, a `/` that is not
+/// the tag's closing one (only blanks after it) belongs to the name (JWildfire writes
+/// parameter names such as `hamid_js_number_lines/circles` and `dc_booleans_^/&/|`).
 fn name_end(b: &[u8], mut i: usize, slash_inside: bool) -> usize {
-    let inside = |i: usize| {
-        slash_inside
-            && b.get(i + 1)
-                .is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_')
-    };
+    let inside = |i: usize| slash_inside && b[i + 1..].iter().any(|c| !c.is_ascii_whitespace());
     while i < b.len() && b[i] != b'=' && !b[i].is_ascii_whitespace() && (b[i] != b'/' || inside(i))
     {
         i += 1;
@@ -85,7 +81,19 @@ fn scan<'a>(
         } else {
             is_xml_name
         };
-        if !valid(first) {
+        if !valid(first)
+            && let Some(notes) = notes.as_deref_mut()
+            && !first.is_empty()
+            && !first.contains(['"', '\'', '<', '>'])
+        {
+            // JWildfire's reader takes a name as all that stands before `="` (`Tools.
+            // parseAttributes`); older JWildfire versions wrote names such as
+            // `dc_booleans_^/&/|`. Kept as they stand, and written back so.
+            notes.push((
+                base + ns,
+                format!("attribute name '{first}' is not XML; read as JWildfire reads it"),
+            ));
+        } else if !valid(first) {
             return Err((
                 base + ns,
                 format!("'{first}' is not an attribute name (letters, digits, '_', '-', '.', ':')"),

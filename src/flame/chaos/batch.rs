@@ -150,6 +150,12 @@ impl CompiledXform {
         self.post_forms(x, y, z, c, rgb.as_deref_mut(), g, rng);
         self.finish_group(x, y, z, c, g, rng);
         if let (Some(d), Some(r)) = (distance, rgb) {
+            if d.chained && n > 1 {
+                // Each point from the one before it in the group (the first from its own).
+                g.old[0][1..n].copy_from_slice(&x[..n - 1]);
+                g.old[1][1..n].copy_from_slice(&y[..n - 1]);
+                g.old[2][1..n].copy_from_slice(&z[..n - 1]);
+            }
             let old = [&g.old[0][..n], &g.old[1][..n], &g.old[2][..n]];
             d.paint(old, [x, y, z], r);
         }
@@ -161,8 +167,14 @@ impl CompiledXform {
         let n = x.len();
         let a = self.coefs;
         let (s, col) = (self.color_speed, self.color);
-        for cj in c[..n].iter_mut() {
-            *cj = s * col + (1.0 - s) * *cj;
+        if let Some(sym) = self.cyclic {
+            for cj in c[..n].iter_mut() {
+                *cj = super::xform::cycle_colour(*cj, sym);
+            }
+        } else {
+            for cj in c[..n].iter_mut() {
+                *cj = s * col + (1.0 - s) * *cj;
+            }
         }
         if let Some(m) = self.planes.as_ref().and_then(|m| m.pre.as_ref()) {
             let z = &mut z[..n];

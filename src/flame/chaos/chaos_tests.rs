@@ -259,3 +259,15 @@ fn a_variation_used_twice_sums() {
         assert!((u - v).abs() < 1e-12, "{a:?} {b:?}");
     }
 }
+
+/// JWildfire's colour type CYCLIC moves the gradient position on by the colour symmetry,
+/// modulo 1 as Java's `%` (keeping the sign), then into [0, 1).
+#[test]
+fn cyclic_colour_moves_on_by_the_symmetry() {
+    use super::xform::cycle_colour;
+    assert!((cycle_colour(0.9, 0.125) - 0.025).abs() < 1e-15);
+    assert!((cycle_colour(0.25, 0.125) - 0.375).abs() < 1e-15);
+    assert!((cycle_colour(0.1, -0.3) - 0.8).abs() < 1e-15);
+    assert_eq!(cycle_colour(0.5, 0.5), 0.0);
+    assert!(cycle_colour(f64::NAN, 0.1).is_nan());
+}

@@ -193,6 +193,24 @@ fn colour_by_distance(
     }
 }
 
+/// The xforms of JWildfire's colour type CYCLIC: they move the gradient position on by
+/// their colour symmetry (1 − 2·colour speed) and take the general path (which does so).
+fn colour_cyclic(
+    flame: &Flame,
+    xforms: &mut [CompiledXform],
+    final_xform: &mut Option<CompiledXform>,
+    more_finals: &mut [CompiledXform],
+) {
+    let compiled = xforms.iter_mut().chain(final_xform).chain(more_finals);
+    for (c, x) in compiled.zip(flame.xforms.iter().chain(flame.finals())) {
+        let kind = x.extra_attrs.iter().find(|(k, _)| k == "color_type");
+        if kind.is_some_and(|(_, v)| v.trim() == "CYCLIC") {
+            c.cyclic = Some(1.0 - 2.0 * x.color_speed);
+            c.linear_only = None;
+        }
+    }
+}
+
 /// Hand the flame's palette (as its renderer colours the picture) to the variations that look
 /// colours up in it ([`variations::flag::PALETTE`]); the table is built only when one does.
 /// Returns whether one does.
@@ -311,6 +329,7 @@ impl Chaos {
         }
         if flame.renders_as_jwildfire() {
             colour_by_distance(flame, &mut xforms, &mut final_xform, &mut more_finals);
+            colour_cyclic(flame, &mut xforms, &mut final_xform, &mut more_finals);
         }
         let reads_palette = give_palette(flame, &mut xforms, &mut final_xform, &mut more_finals);
         let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();

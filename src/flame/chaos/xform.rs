@@ -55,6 +55,11 @@ pub struct CompiledXform {
     /// JWildfire's colour type DISTANCE: the point gets the palette entry of the distance
     /// the xform moved it (set for flames JWildfire's renderer draws).
     pub distance: Option<DistanceColour>,
+    /// JWildfire's colour type CYCLIC, with the xform's colour symmetry: the point's gradient
+    /// position moves on by the symmetry, modulo 1, instead of blending toward the xform's
+    /// colour (JWildfire 9.00's `TransformationInitStep`; set for flames JWildfire's
+    /// renderer draws).
+    pub cyclic: Option<f64>,
     /// JWildfire's maps of the yz and zx planes, with the affine map and with the post map
     /// (for a flame of JWildfire's variations; see [`XformPlanes`]).
     pub planes: Option<XformPlanes>,
@@ -171,6 +176,7 @@ impl CompiledXform {
             own_rgb,
             keeps_rgb: false,
             distance: None,
+            cyclic: None,
             planes,
             coefs: x.coefs,
             post: if x.post.is_identity() {
@@ -212,7 +218,10 @@ impl CompiledXform {
     /// goes on from it, the sample is not drawn).
     #[inline(always)]
     pub fn apply_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
-        let blended = self.color_speed * self.color + (1.0 - self.color_speed) * p.c;
+        let blended = match self.cyclic {
+            Some(sym) => cycle_colour(p.c, sym),
+            None => self.color_speed * self.color + (1.0 - self.color_speed) * p.c,
+        };
         let mut tr = match self.planes.as_ref().and_then(|m| m.pre.as_ref()) {
             Some(m) => {
                 let (tx, ty, tz) = m.apply(&self.coefs, p.x, p.y, p.z);
@@ -280,6 +289,14 @@ impl CompiledXform {
             acc.hide,
         )
     }
+}
+
+/// JWildfire's colour type CYCLIC: the gradient position `c` moved on by `sym`, as Java's
+/// `%` takes it modulo 1, then into [0, 1).
+#[inline(always)]
+pub(crate) fn cycle_colour(c: f64, sym: f64) -> f64 {
+    let m = (c + sym) % 1.0;
+    if m < 0.0 { m + 1.0 } else { m }
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 //! `TransformationDistanceColorStep`.
 
 use crate::flame::model::Xform;
-use crate::flame::variations::own_rgb;
+use crate::flame::variations::{self, flag, own_rgb};
 
 /// An xform of colour type DISTANCE, ready to colour points.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -16,6 +16,11 @@ pub struct DistanceColour {
     pub color: f64,
     /// symmetry + 1, symmetry being 1 − 2·(colour speed).
     pub mult: f64,
+    /// The xform draws an orbit of its own (a variation carrying its point from call to call, such
+    /// as `gingerbread_man`): JWildfire's render thread moves one point, so the point
+    /// such a variation is handed is the one it gave a call before; the distance is measured
+    /// from there (from the previous point of the same group).
+    pub chained: bool,
 }
 
 impl DistanceColour {
@@ -25,6 +30,10 @@ impl DistanceColour {
         (kind.1.trim() == "DISTANCE").then_some(DistanceColour {
             color: x.color,
             mult: 2.0 - 2.0 * x.color_speed,
+            chained: x
+                .vars
+                .iter()
+                .any(|v| variations::info(v.id).has(flag::STATEFUL)),
         })
     }
 

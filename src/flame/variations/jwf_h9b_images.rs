@@ -6,11 +6,12 @@
 //! The formulas follow JWildfire 9.00's (LGPL-2.1) `AbstractColorMapWFFunc`,
 //! `AbstractDisplacementMapWFFunc` and `PostBumpMapWFFunc`, written anew.
 //!
-//! A JWildfire flame names the image file in the text parameter `image_filename`. The file
-//! readers load it and hand it over ([`super::resources`]); a variation whose image was not
-//! handed over (no name, a missing file, or one given only as `inlined_image` bytes, which
-//! ugnis does not read yet) takes the image JWildfire falls back to, drawn here as JWildfire
-//! draws it —
+//! A JWildfire flame names the image file in the text parameter `image_filename`, or gives
+//! the file's bytes inline (the resource `inlined_image`). The file readers load it and hand
+//! it over ([`super::resources`]; an inline image under a name of its own, which they put in
+//! `image_filename`); a variation whose image was not handed over (no name, a missing file,
+//! an image that cannot be decoded) takes the image JWildfire falls back to, drawn here as
+//! JWildfire draws it —
 //! * colour and displacement maps: 256 × 256 pixels, a bilinear blend of red (top left),
 //!   yellow (top right), cyan (bottom left) and blue (bottom right) in JWildfire's 10-bit
 //!   fixed-point steps (`GradientCreator`, see [`corner_gradient`]);

@@ -120,8 +120,9 @@ pub fn text(name: &str) -> Option<Arc<String>> {
 /// Most images kept.
 pub const MAX_IMAGES: usize = 16;
 
-/// Most pixels of a stored image (2048 × 2048): a variation keeps 8 bytes per pixel.
-pub const MAX_IMAGE_PIXELS: usize = 2048 * 2048;
+/// Most pixels of a stored image (4096 × 2048, a photograph of 1920 × 2560 fits): a
+/// variation keeps 8 bytes per pixel.
+pub const MAX_IMAGE_PIXELS: usize = 4096 * 2048;
 
 /// An image given to a variation: `w` × `h` pixels, rows from the top, each `[r, g, b, a]`.
 #[derive(Clone, Debug, PartialEq)]

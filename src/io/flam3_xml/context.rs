@@ -134,8 +134,12 @@ impl Ctx<'_, '_> {
         let attrs =
             scan_attrs_jwf(content, base, &mut notes).map_err(|(o, m)| self.err(o, "XML001", m))?;
         for (off, m) in notes {
-            // Once per file for each name without a value.
-            let word = m.split(" has no value").next().unwrap_or("").to_string();
+            // Once per file for each name without a value, once for the first name that is not XML.
+            let word = if m.ends_with(" is not XML; read as JWildfire reads it") {
+                " is not XML".to_string()
+            } else {
+                m.split(" has no value").next().unwrap_or("").to_string()
+            };
             if self.reported_valueless.insert(word) {
                 self.warn(off, "XML024", m);
             }

@@ -119,3 +119,44 @@ fn jwildfire_priority_moves_a_regular_variation() {
         ]
     );
 }
+
+/// Older JWildfire versions wrote parameter names that are not XML names
+/// (`dc_booleans_^/&/|`, its operator): JWildfire reads a name as all that stands before
+/// `="`, and so does ugnis, with one warning; the name is kept and written back as it stands,
+/// and what follows it is read as usual.
+#[test]
+fn jwildfire_names_that_are_not_xml() {
+    let text = r#"<flame version="JWildfire V5.60"><xform weight="0.5" dc_booleans="1" dc_booleans_^/&/|="2" dc_booleans_a|b="3" dc_booleans_zoom="500" coefs="1 0 0 1 0 0.5"/></flame>"#;
+    let p = read(text, &opts()).unwrap();
+    let notes: Vec<_> = p.warnings.iter().filter(|w| w.code == "XML024").collect();
+    assert_eq!(notes.len(), 1, "{:?}", p.warnings);
+    assert!(
+        notes[0].message.contains("'dc_booleans_^/&/|'"),
+        "{notes:?}"
+    );
+    let f = &p.value.flames[0];
+    let x = &f.xforms[0];
+    assert_eq!(x.coefs.to_coefs()[5], 0.5);
+    // zoom is read after the odd names; the operator JWildfire 9.00 calls `type` keeps its
+    // default, as in JWildfire 9.00 (which no longer knows the old name).
+    assert_eq!(x.vars.len(), 1);
+    assert_eq!(x.vars[0].params[1], 1.0);
+    assert_eq!(x.vars[0].params[2], 500.0);
+    let kept: Vec<&str> = x.extra_attrs.iter().map(|(k, _)| k.as_str()).collect();
+    assert_eq!(kept, ["dc_booleans_^/&/|", "dc_booleans_a|b"]);
+    let out = write(&p.value);
+    assert!(out.contains(r#" dc_booleans_^/&/|="2""#), "{out}");
+    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(back.xforms, f.xforms);
+    // A self-closing tag still ends at its `/`; a quote or `<` in a name is refused.
+    let closed = r#"<flame version="JWildfire V5.60"><xform weight="1" a_b/c="1" coefs="1 0 0 1 0 0" /></flame>"#;
+    let f = read(closed, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(
+        f.xforms[0].extra_attrs,
+        [("a_b/c".to_string(), "1".to_string())]
+    );
+    for bad in [r#"a'b="1""#, r#"a<b="1""#] {
+        let t = format!(r#"<flame version="JWildfire V5.60"><xform weight="1" {bad}/></flame>"#);
+        assert!(read(&t, &opts()).is_err(), "{bad}");
+    }
+}

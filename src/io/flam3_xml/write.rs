@@ -247,6 +247,13 @@ fn write_xform(
         }
         for (i, t) in v.texts.iter().enumerate() {
             let tn = name.of(variations::text_attr_name(v.id, name.form, i));
+            // An image JWildfire gave inline is named so while loaded; the file name stays
+            // empty, the image itself is written back with the xform's other attributes.
+            let t = if t.starts_with(crate::io::var_images::INLINED_IMAGE) {
+                ""
+            } else {
+                t
+            };
             let _ = write!(s, " {tn}=\"{}\"", text_to_hex(t));
             written.insert(tn);
         }
