@@ -92,10 +92,13 @@ const DEFAULTS: &[(&str, &[(&str, f64)])] = &[
     ("ovoid", &[("ovoid_x", 0.94), ("ovoid_y", 0.94)]),
 ];
 
+/// (variation, derived parameter, parameter it derives from, rule).
+type DerivedRule = (&'static str, &'static str, &'static str, fn(f64) -> f64);
+
 /// Parameters JWildfire 9.00 sets as a side effect of setting another one (in the variation's
 /// `setParameter`), which flames written before the parameter existed leave out: variation,
 /// the parameter so set, the one that sets it, and how.
-const DERIVED: &[(&str, &str, &str, fn(f64) -> f64)] = &[
+const DERIVED: &[DerivedRule] = &[
     (
         "dc_warping",
         "dc_warping_x0",
