@@ -412,6 +412,20 @@ fn circle_cell_rejects(m: i64, n: i64, x: f64, y: f64, sc: f64, dens: f64, seed:
 /// (rejection sampling, at most 11 draws).
 #[inline(always)]
 fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    circle_rand_draws(v, rng, 10)
+}
+
+/// CircleRand as JWildfire 9.00 computes it (`CircleRandFunc`): the same rejection sampling
+/// with at most 101 draws (`maxIter` 100), so that a point outside every circle is all but
+/// never plotted.
+pub(super) fn circle_rand_jwildfire(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
+    circle_rand_draws(v, rng, 100)
+}
+
+/// CircleRand's sampling: draws until a point lies in a circle or `retries` draws after the
+/// first were rejected (the last draw is then kept).
+#[inline(always)]
+fn circle_rand_draws(v: &Prepared, rng: &mut FastRng, retries: u32) -> V3 {
     let [sc, dens, ax, ay, seed] = v.params();
     let mut tries = 0;
     let (mut m, mut n, mut x, mut y);
@@ -423,7 +437,7 @@ fn circle_rand(v: &Prepared, _: &VarIn, _: &mut Acc, rng: &mut FastRng) -> V3 {
         x -= m.wrapping_mul(2).wrapping_add(1) as f64 * sc;
         y -= n.wrapping_mul(2).wrapping_add(1) as f64 * sc;
         tries += 1;
-        if tries > 10 || !circle_cell_rejects(m, n, x, y, sc, dens, seed) {
+        if tries > retries || !circle_cell_rejects(m, n, x, y, sc, dens, seed) {
             break;
         }
     }

@@ -349,6 +349,15 @@ fn synth_shape<const JWF: bool>(v: &Prepared, t: &VarIn, rng: &mut FastRng, mode
             let (s, c) = synth_sin_cos(v, radius, smooth);
             [w * s * theta, w * c * theta, 0.0]
         }
+        17 if JWF => {
+            // rings as JWildfire 9.00 computes them (`SynthFunc`, MODE_RINGS): the folded
+            // radius times the waved sine and cosine of the angle.
+            let mu = sqr(power) + 1e-300;
+            let mut radius = t.sumsq.sqrt();
+            radius += -2.0 * mu * ((radius + mu) / (2.0 * mu)) as i32 as f64 + radius * (1.0 - mu);
+            let (s, c) = synth_sin_cos(v, t.atan_xy, smooth);
+            [w * s * radius, w * c * radius, 0.0]
+        }
         17 => {
             // rings
             let mut radius = t.sqrt;

@@ -8,10 +8,11 @@
 //! Each colours its points through `jwf_direct_colour`'s common part. The formulas follow
 //! JWildfire's (Andreas Maschke and contributors, LGPL-2.1) mathematics, written anew.
 
+use super::jwf_a_cuts::JavaRandom;
 use super::jwf_a_dc::rot;
 use super::jwf_dc_maths::{length2, mix3};
 use super::jwf_direct_colour::{DC_FLAGS, dc_common, dc_tail};
-use super::util::{atan2_approx, fract, smoothstep};
+use super::util::{atan2_approx, fract, smoothstep, trunc_i32};
 use super::*;
 
 const DUCKS_TAIL: [Param; 5] = dc_tail!("dc_ducks");
@@ -253,6 +254,31 @@ fn warp_map(px: f64, py: f64) -> [f64; 3] {
         [0.00, 0.00, 0.02],
         bl,
     )
+}
+
+/// dc_warping's x0 as JWildfire 9.00 sets it when the seed (`dc_warping_randomize`) is set
+/// (`DC_WarpingFunc.setParameter`): 2·u − 1, u the first `nextDouble()` of Java's generator
+/// seeded with the seed as a Java `int`. Versions before x0 existed wrote only the seed, so
+/// JWildfire reads such a flame with this x0.
+pub fn dc_warping_x0_of_seed(seed: f64) -> f64 {
+    let mut r = JavaRandom::new(i64::from(trunc_i32(seed)));
+    2.0 * r.next_f64() - 1.0
+}
+
+/// dc_fractcolor's xpar and ypar as JWildfire 9.00 sets them when the seed
+/// (`dc_fractcolor_randomize`) is set (`DC_FractColorFunc.setParameter`): the first and the
+/// second `nextDouble()` of Java's generator seeded with the seed as a Java `int`. Flames
+/// that spell them otherwise (`xPar`, as JWildfire 6 wrote) leave them to the seed in
+/// JWildfire 9.00, which reads parameters by their exact names.
+pub fn dc_fractcolor_xpar_of_seed(seed: f64) -> f64 {
+    JavaRandom::new(i64::from(trunc_i32(seed))).next_f64()
+}
+
+/// The second draw: see [`dc_fractcolor_xpar_of_seed`].
+pub fn dc_fractcolor_ypar_of_seed(seed: f64) -> f64 {
+    let mut r = JavaRandom::new(i64::from(trunc_i32(seed)));
+    r.next_f64();
+    r.next_f64()
 }
 
 /// dc_warping: the warped noise of the zoomed point (shifted by x0), lit by the gradient of

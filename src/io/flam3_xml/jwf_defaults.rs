@@ -92,6 +92,89 @@ const DEFAULTS: &[(&str, &[(&str, f64)])] = &[
     ("ovoid", &[("ovoid_x", 0.94), ("ovoid_y", 0.94)]),
 ];
 
+/// (variation, derived parameter, parameter it derives from, rule).
+type DerivedRule = (&'static str, &'static str, &'static str, fn(f64) -> f64);
+
+/// Parameters JWildfire 9.00 sets as a side effect of setting another one (in the variation's
+/// `setParameter`), which flames written before the parameter existed leave out: variation,
+/// the parameter so set, the one that sets it, and how.
+const DERIVED: &[DerivedRule] = &[
+    (
+        "dc_warping",
+        "dc_warping_x0",
+        "dc_warping_randomize",
+        variations::dc_warping_x0_of_seed,
+    ),
+    (
+        "dc_fractcolor",
+        "dc_fractcolor_xpar",
+        "dc_fractcolor_randomize",
+        variations::dc_fractcolor_xpar_of_seed,
+    ),
+    (
+        "dc_fractcolor",
+        "dc_fractcolor_ypar",
+        "dc_fractcolor_randomize",
+        variations::dc_fractcolor_ypar_of_seed,
+    ),
+];
+
+/// A derived parameter the file left out while it set the one it derives from: which of the
+/// xform's variations, the two parameters' indices, and the rule.
+pub(super) struct Derived {
+    var: usize,
+    target: usize,
+    source: usize,
+    rule: fn(f64) -> f64,
+}
+
+/// The derived parameters of `x`'s variations to compute once the file's values are attached
+/// ([`apply_derived`]); arguments as for [`apply`].
+pub(super) fn derived_missing(
+    x: &Xform,
+    instances: &[u32],
+    given: impl Fn(variations::VarId, usize, u32) -> bool,
+) -> Vec<Derived> {
+    let mut out = Vec::new();
+    for (name, target, source, rule) in DERIVED {
+        let Some((id, _)) = variations::parse_name(name) else {
+            continue;
+        };
+        let (Some((tid, _, t)), Some((sid, _, s))) =
+            (variations::param_of(target), variations::param_of(source))
+        else {
+            continue;
+        };
+        if tid != id || sid != id {
+            continue;
+        }
+        for (i, v) in x.vars.iter().enumerate() {
+            let k = instances.get(i).copied().unwrap_or(0);
+            if v.id == id && !given(id, t, k) && given(id, s, k) {
+                out.push(Derived {
+                    var: i,
+                    target: t,
+                    source: s,
+                    rule: *rule,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Set the parameters [`derived_missing`] found from the values the file gave.
+pub(super) fn apply_derived(x: &mut Xform, derived: &[Derived]) {
+    for d in derived {
+        if let Some(v) = x.vars.get_mut(d.var)
+            && d.target < v.params.len()
+            && d.source < v.params.len()
+        {
+            v.params[d.target] = (d.rule)(v.params[d.source]);
+        }
+    }
+}
+
 /// Give each of `x`'s variations that JWildfire defaults differently its JWildfire default for
 /// every parameter the file did not set. `given(id, index, k)`: whether the file set parameter
 /// `index` of use `k` of variation `id`; `instances[i]`: which use `x.vars[i]` is.
@@ -147,5 +230,17 @@ mod tests {
             }
         }
         eprintln!("entries equal to ugnis' default: {same:?}");
+    }
+
+    /// Every derived parameter names parameters of its variation.
+    #[test]
+    fn derived_entries_resolve() {
+        for (name, target, source, _) in DERIVED {
+            let (id, _) = variations::parse_name(name).unwrap_or_else(|| panic!("{name}"));
+            for p in [target, source] {
+                let (pid, _, _) = variations::param_of(p).unwrap_or_else(|| panic!("{p}"));
+                assert_eq!(pid, id, "{p}");
+            }
+        }
     }
 }

@@ -160,3 +160,55 @@ fn jwildfire_names_that_are_not_xml() {
         assert!(read(&t, &opts()).is_err(), "{bad}");
     }
 }
+
+/// A prepost variation's own priority (2, which JWildfire writes beside it) does not move it:
+/// it stays one variation called before and after the others, its parameters attached, and
+/// the mark is written back as read.
+#[test]
+fn jwildfire_prepost_variation_keeps_its_own_priority() {
+    let text = r#"<flame version="JWildfire V5.60"><xform weight="1" spherical="1" spherical_fx_priority="0" prepost_circlize="0.5" prepost_circlize_fx_priority="2" prepost_circlize_n="8" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let vars = &f.xforms[0].vars;
+    assert_eq!(vars.len(), 2);
+    assert_eq!((vars[1].form, vars[1].moved), (Form::Regular, false));
+    assert_eq!(vars[1].weight, 0.5);
+    assert_eq!(vars[1].params[0], 8.0);
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f.clone()],
+    });
+    assert!(out.contains("prepost_circlize_fx_priority=\"2\""), "{out}");
+    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(back.xforms[0].vars, f.xforms[0].vars);
+}
+
+/// dc_warping's x0, which JWildfire sets from the seed when the seed is set: a flame written
+/// before x0 existed gets the seed's (Java's `new Random(6239).nextDouble()` is
+/// 0.27607020393605808, so x0 = −0.44785959212788384); a written x0 wins.
+#[test]
+fn jwildfire_dc_warping_x0_follows_the_seed_when_left_out() {
+    let x0_of = |attrs: &str| {
+        let text = format!(
+            r#"<flame version="JWildfire V5.50"><xform weight="1" dc_warping="1" dc_warping_randomize="6239" {attrs} coefs="1 0 0 1 0 0"/></flame>"#
+        );
+        let f = read(&text, &opts()).unwrap().value.flames.remove(0);
+        f.xforms[0].vars[0].params[2]
+    };
+    assert_eq!(x0_of(""), -0.44785959212788384);
+    assert_eq!(x0_of(r#"dc_warping_x0="0.25""#), 0.25);
+    // Other programs' flames keep the registry's default.
+    let text = r#"<flame><xform weight="1" dc_warping="1" dc_warping_randomize="6239" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(f.xforms[0].vars[0].params[2], 0.0);
+}
+
+/// dc_fractcolor's xpar and ypar spelt `xPar`, `yPar` (JWildfire 6) are not read, as JWildfire
+/// 9.00 does not read them: they come from the seed (`new Random(5)` draws 0.730519863614471
+/// and 0.08825840967622589).
+#[test]
+fn jwildfire_dc_fractcolor_pars_follow_the_seed() {
+    let text = r#"<flame version="JWildfire V6.00"><xform weight="1" dc_fractcolor="1" dc_fractcolor_randomize="5" dc_fractcolor_xPar="0.1" dc_fractcolor_yPar="0.2" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let p = &f.xforms[0].vars[0].params;
+    assert_eq!((p[2], p[3]), (0.730519863614471, 0.08825840967622589));
+}

@@ -101,6 +101,7 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
         unprefixed_params(cx, &mut x, &mut st);
     }
     apply_priorities(attrs, &mut x, &mut st, cx.jwildfire_flame);
+    let mut derived = Vec::new();
     if cx.jwildfire_flame && !motion {
         let given = |id: VarId, index: usize, k: u32| {
             st.params
@@ -108,9 +109,11 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
                 .any(|p| p.id == id && p.index == index && p.instance == k)
         };
         super::jwf_defaults::apply(&mut x, &st.instances, given);
+        derived = super::jwf_defaults::derived_missing(&x, &st.instances, given);
     }
     let has_texts = !st.texts.is_empty();
     attach_params(&mut x, st);
+    super::jwf_defaults::apply_derived(&mut x, &derived);
     if has_texts {
         let at = attrs.first().map_or(0, |a| a.offset);
         for v in &x.vars {
@@ -448,6 +451,7 @@ fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending, jwildfire: 
             && let Ok(p) = parse_number(a.value.trim())
             && p != 0.0
             && let Some((id, Form::Regular)) = variations::parse_name(name)
+            && !native_prepost(id, p)
         {
             let form = if p < 0.0 { Form::Pre } else { Form::Post };
             let this = |vid: VarId, vform: Form, k: u32| {
@@ -477,6 +481,13 @@ fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending, jwildfire: 
             }
         }
     }
+}
+
+/// Whether priority `p` is a prepost variation's own (2 or −2; JWildfire 9.00's
+/// `XForm.createTransformations` runs such a variation both before and after the others for
+/// either sign): it stays where it is, called in both phases, not moved.
+fn native_prepost(id: VarId, p: f64) -> bool {
+    p.abs() == 2.0 && variations::info(id).has(variations::flag::PREPOST)
 }
 
 /// Parameters go to their variation; parameters of absent variations are kept as-is.

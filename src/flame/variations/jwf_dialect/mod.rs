@@ -129,6 +129,7 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
         0,
     ),
     ("sinusgrid", fractorium::sinusgrid, 0, flag::WRITES_Z),
+    ("CircleRand", super::fr_grids::circle_rand_jwildfire, 0, 0),
     (
         "post_crop",
         fractorium::crop,
