@@ -149,9 +149,10 @@ fn export_a_saved_state_resumes_and_adds_samples() {
     assert!(status.starts_with("Exported"), "{status}");
     let after = state_of(&state);
     assert_eq!(after.flame.quality, 50.0);
-    // The first state ended in a partial sub-batch of 1,440 samples: the continuation starts
-    // at the next whole one, so it adds 50 × 3072 − 70,000 = 83,600 samples.
-    assert_eq!(after.samples_done, before.samples_done + 83_600);
+    // The first state ended in a partial sub-batch of 1,440 samples: the continuation draws
+    // its 30 × 3072 samples in whole sub-batches after it, none lost.
+    assert_eq!(after.samples_done, before.samples_done + 30 * 64 * 48);
+    assert_eq!(after.samples_done, 50 * 64 * 48);
     assert!(after.is_complete());
 }
 
