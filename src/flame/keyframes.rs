@@ -10,6 +10,7 @@
 //! logarithm), a variation's weight or any of its parameters, and the palette's rotation and hue.
 
 use crate::flame::jwf_curve::{self, JwfInterp};
+#[cfg(feature = "gui")]
 pub(crate) use crate::flame::keyframe_target::{FLAME_PARAMS, XFORM_PARAMS};
 pub use crate::flame::keyframe_target::{FlameParam, Target, VarParam, XformParam, XformRef};
 
