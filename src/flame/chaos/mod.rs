@@ -243,6 +243,25 @@ fn give_palette(
 }
 
 impl Chaos {
+    /// Some variation carries its own state from call to call (`flag::STATEFUL`: the orbit
+    /// variations such as gingerbread_man or hopalong). Each worker thread then needs its own
+    /// copy of the compiled flame, as each of JWildfire's render threads has its own copy of
+    /// the flame: threads sharing one state would tear its steps apart.
+    pub(crate) fn has_variation_state(&self) -> bool {
+        let stateful = |x: &CompiledXform| {
+            x.pre_vars
+                .iter()
+                .chain(&x.vars)
+                .chain(&x.post_vars)
+                .any(|v| v.def.has(crate::flame::variations::flag::STATEFUL))
+        };
+        self.xforms
+            .iter()
+            .chain(&self.final_xform)
+            .chain(&self.more_finals)
+            .any(stateful)
+    }
+
     /// Compile `flame`; fails when it has no xforms, no positive weight, a weight or xaos
     /// value that is negative or not finite, or an xaos row that reaches no xform.
     pub fn new(flame: &Flame) -> Result<Self, ChaosError> {

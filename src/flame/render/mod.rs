@@ -110,6 +110,9 @@ pub struct Renderer {
     hists: Vec<Histogram>,
     /// Each worker's orbits, kept between passes.
     lanes: Vec<Box<Lanes>>,
+    /// Each worker's own copy of the compiled flame, for a flame whose variations carry state
+    /// from call to call ([`Chaos::has_variation_state`]); empty otherwise.
+    thread_chaos: Vec<Chaos>,
     /// Each worker's orbits of each layer, for a flame of layers (a layer's orbits stay on its
     /// own attractor); empty otherwise.
     layer_lanes: Vec<Vec<Box<Lanes>>>,
@@ -235,6 +238,11 @@ impl Renderer {
         } else {
             None
         };
+        let thread_chaos = if chaos.has_variation_state() {
+            (0..threads).map(|_| chaos.clone()).collect()
+        } else {
+            Vec::new()
+        };
         let mut r = Renderer {
             palette: PlotPalette::new(&flame),
             chaos,
@@ -243,6 +251,7 @@ impl Renderer {
             out_rows,
             hists,
             layer_lanes: (0..threads).map(|_| Vec::new()).collect(),
+            thread_chaos,
             lanes,
             logs,
             seed: opts.seed,
@@ -524,9 +533,20 @@ impl Renderer {
             .zip(self.lanes.par_iter_mut())
             .zip(logs.par_iter_mut())
             .zip(self.layer_lanes.par_iter_mut())
+            .zip(
+                self.thread_chaos
+                    .par_iter()
+                    .map(Some)
+                    .chain(rayon::iter::repeat_n(
+                        None,
+                        threads as usize - self.thread_chaos.len().min(threads as usize),
+                    )),
+            )
             .enumerate()
             .with_max_len(1)
-            .map(|(t, (((hist, lanes), log), layer_lanes))| {
+            .map(|(t, ((((hist, lanes), log), layer_lanes), own_chaos))| {
+                // This thread's copy, when the variations carry state.
+                let chaos = own_chaos.unwrap_or(chaos);
                 let mut done = 0u64;
                 let mut bad = 0u64;
                 // First batch index ≥ start that belongs to thread t.
