@@ -174,9 +174,10 @@ fn keeps_own_colour(x: &crate::flame::model::Xform, is_final: bool) -> bool {
     }
 }
 
-/// The xforms of JWildfire's colour type DISTANCE: they keep the gradient position, carry
-/// own colours, and take the general path (which colours them).
-fn colour_by_distance(
+/// The xforms of JWildfire's colour types DISTANCE and CYCLIC, which take the general path
+/// (which colours them): DISTANCE keeps the gradient position and carries own colours;
+/// CYCLIC moves the gradient position on by the colour symmetry (1 − 2·colour speed).
+fn jwildfire_colour_types(
     flame: &Flame,
     xforms: &mut [CompiledXform],
     final_xform: &mut Option<CompiledXform>,
@@ -190,19 +191,6 @@ fn colour_by_distance(
             c.own_rgb = true;
             c.linear_only = None;
         }
-    }
-}
-
-/// The xforms of JWildfire's colour type CYCLIC: they move the gradient position on by
-/// their colour symmetry (1 − 2·colour speed) and take the general path (which does so).
-fn colour_cyclic(
-    flame: &Flame,
-    xforms: &mut [CompiledXform],
-    final_xform: &mut Option<CompiledXform>,
-    more_finals: &mut [CompiledXform],
-) {
-    let compiled = xforms.iter_mut().chain(final_xform).chain(more_finals);
-    for (c, x) in compiled.zip(flame.xforms.iter().chain(flame.finals())) {
         let kind = x.extra_attrs.iter().find(|(k, _)| k == "color_type");
         if kind.is_some_and(|(_, v)| v.trim() == "CYCLIC") {
             c.cyclic = Some(1.0 - 2.0 * x.color_speed);
@@ -347,8 +335,7 @@ impl Chaos {
             }
         }
         if flame.renders_as_jwildfire() {
-            colour_by_distance(flame, &mut xforms, &mut final_xform, &mut more_finals);
-            colour_cyclic(flame, &mut xforms, &mut final_xform, &mut more_finals);
+            jwildfire_colour_types(flame, &mut xforms, &mut final_xform, &mut more_finals);
         }
         let reads_palette = give_palette(flame, &mut xforms, &mut final_xform, &mut more_finals);
         let vis: Vec<f64> = xforms.iter().map(|x| x.vis).collect();
