@@ -424,7 +424,8 @@ impl CompiledXform {
     }
 
     /// Flag the bad points of a group and restart them at a random point of the plane (a NaN
-    /// or infinite z must not carry over).
+    /// or infinite z must not carry over), unless the xform keeps bad values
+    /// ([`CompiledXform::keep_bad`]).
     #[inline(always)]
     fn mark_bad(
         &self,
@@ -441,7 +442,7 @@ impl CompiledXform {
             bad[j] = b;
             any_bad |= b;
         }
-        if any_bad {
+        if any_bad && !self.keep_bad {
             for j in 0..n {
                 if bad[j] {
                     x[j] = rng.f11();

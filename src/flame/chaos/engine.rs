@@ -130,8 +130,8 @@ impl Chaos {
         }
     }
 
-    /// JWildfire's check for bad values: every orbit that met one since the last check starts
-    /// again at a random point, fused.
+    /// JWildfire's check for bad values: every orbit whose point is bad starts again at a
+    /// random point, fused.
     fn restart_waiting(&self, ln: &mut Lanes, rng: &mut FastRng) {
         let o = &mut ln.sets[ln.cur & 1];
         for l in 0..LANES {
@@ -174,7 +174,7 @@ impl Chaos {
             any_bad |= b;
             ln.group[l] = i;
         }
-        if any_bad {
+        if any_bad && !self.jwf_bad_values {
             for l in 0..LANES {
                 if ln.bad[l] {
                     dst.x[l] = rng.f11();
@@ -372,9 +372,10 @@ impl Chaos {
         let (mut nf, mut took, mut bad) = (0usize, 0u64, 0u64);
         for p in 0..LANES {
             ln.vis[p] = -1.0;
-            if self.jwf_bad_values && (ln.bad[p] || dst.consec[p] == WAITING) {
-                // JWildfire's rule: the orbit's steps count, and draw nothing, until its
-                // next check restarts it.
+            if self.jwf_bad_values && ln.bad[p] {
+                // JWildfire's rule: the orbit keeps its bad point, its steps count and draw
+                // nothing, until an xform that ignores its input (`blur`, say) gives it a
+                // good point again or its next check restarts it.
                 if dst.consec[p] != WAITING {
                     dst.consec[p] = WAITING;
                     bad += 1;

@@ -341,3 +341,47 @@ fn jwildfire_carries_the_hide_flag_with_the_point() {
         }
     }
 }
+
+/// Under JWildfire's rule a bad point stays in its orbit (JWildfire 9.00's
+/// `DefaultRenderIterationState` only restarts it at its check every 1000 steps): an xform
+/// that ignores its input, as `blur` does, gives the orbit a good point again and it draws
+/// on. Map 0 scales by 1e200, map 1 is `blur`, each drawn half the time: a point is good
+/// after map 1, after map 0 once (at most 1e200), and bad after map 0 twice in a row (its
+/// coordinates overflow, then stay infinite or NaN), so a quarter of the steps draw nothing
+/// and three quarters draw a finite point. Restarting each bad point at the next check
+/// would draw only a few percent.
+#[test]
+fn jwildfire_orbits_recover_from_bad_values() {
+    use crate::flame::PaletteIndex;
+    use crate::flame::model::Var;
+    let blur = variations::by_name("blur").unwrap();
+    let mut b = Xform::linear(Affine::IDENTITY, 1.0, 1.0);
+    b.vars = vec![Var::new(blur, 1.0)];
+    let f = Flame {
+        xforms: vec![
+            Xform::linear(Affine::new(1e200, 0.0, 0.0, 1e200, 0.0, 0.0), 1.0, 0.0),
+            b,
+        ],
+        palette_index: PaletteIndex::JWildfire,
+        ..Flame::default()
+    };
+    let ch = Chaos::new(&f).unwrap();
+    assert!(ch.jwf_bad_values && ch.affine.is_none());
+    let (mut drawn, mut steps) = (0u64, 0u64);
+    let mut rng = FastRng::new(7);
+    let mut ln = Lanes::new();
+    for _ in 0..4 {
+        ch.run_lanes(50_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs, _rgb| {
+            for j in 0..xs.len() {
+                steps += 1;
+                if vs[j] >= 0.0 {
+                    assert!(xs[j].is_finite() && ys[j].is_finite());
+                    drawn += 1;
+                }
+            }
+        });
+    }
+    let share = drawn as f64 / 200_000.0;
+    assert!(steps >= 200_000);
+    assert!((share - 0.75).abs() < 0.02, "{share}");
+}

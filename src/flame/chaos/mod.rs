@@ -334,6 +334,11 @@ impl Chaos {
                 x.bad_limit = BAD_LIMIT_WIDE;
             }
         }
+        if jwf_bad_values {
+            for x in &mut xforms {
+                x.keep_bad = true;
+            }
+        }
         if flame.renders_as_jwildfire() {
             jwildfire_colour_types(flame, &mut xforms, &mut final_xform, &mut more_finals);
         }

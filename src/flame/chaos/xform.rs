@@ -34,6 +34,10 @@ pub struct CompiledXform {
     /// A coordinate of larger magnitude (or NaN) is a bad value: [`BAD_LIMIT`] or
     /// [`BAD_LIMIT_WIDE`].
     pub bad_limit: f64,
+    /// A bad value stays in the point (JWildfire's rule: its orbit draws nothing until a
+    /// later xform, one that ignores its input as `blur` does, gives a good point again, or
+    /// the next check restarts it) instead of being replaced by a random point.
+    pub keep_bad: bool,
     /// The weight of `linear` when it is the xform's only variation (no `pre_`/`post_`
     /// forms): the lane runner then skips the general variation machinery.
     pub linear_only: Option<f64>,
@@ -195,6 +199,7 @@ impl CompiledXform {
             vis: adjust_opacity(opacity),
             opacity,
             bad_limit: BAD_LIMIT,
+            keep_bad: false,
             pre_only_passes: rules.dialect != Dialect::Flam3,
         }
     }
