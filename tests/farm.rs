@@ -250,13 +250,21 @@ fn version_2_states_read_with_no_hidden_points() {
     let sets = u32::from_le_bytes(b[at..at + 4].try_into().unwrap()) as usize;
     let v2_set = lanes * (4 * 8 + 2 + 1 + 4) + 1;
     let v3_set = v2_set + 5 * lanes + 8;
-    let mut old = b[..at + 4].to_vec();
-    old[8..12].copy_from_slice(&2u32.to_le_bytes());
+    // Version 4's header line "gap" and its variation states are not in version 2.
+    let header = std::str::from_utf8(&b[16..at]).unwrap();
+    let header = header.replacen("gap 0\n", "", 1);
+    assert_eq!(header.len() + 6, hlen, "the header has a gap line");
+    let mut old = b[..8].to_vec();
+    old.extend_from_slice(&2u32.to_le_bytes());
+    old.extend_from_slice(&(header.len() as u32).to_le_bytes());
+    old.extend_from_slice(header.as_bytes());
+    old.extend_from_slice(&b[at..at + 4]);
     for k in 0..sets {
         let o = at + 4 + k * v3_set;
         old.extend_from_slice(&b[o..o + v2_set]);
     }
-    old.extend_from_slice(&b[at + 4 + sets * v3_set..]);
+    let var_states: usize = st.var_states.iter().map(|v| 4 + 8 * v.len()).sum();
+    old.extend_from_slice(&b[at + 4 + sets * v3_set + 4 + var_states..]);
     let v2 = dir.join("v2.ugnis-state");
     std::fs::write(&v2, &old).unwrap();
     let mut rd = StateReader::open(&v2).unwrap();
@@ -278,7 +286,7 @@ fn states_of_other_versions_and_damaged_states_are_refused() {
     let good = dir.join("good.ugnis-state");
     render_state::save(&good, &st, &hist).unwrap();
     let bytes = std::fs::read(&good).unwrap();
-    for v in [0u32, 1, 4] {
+    for v in [0u32, 1, 5] {
         let mut b = bytes.clone();
         b[8..12].copy_from_slice(&v.to_le_bytes());
         let p = dir.join(format!("v{v}.ugnis-state"));
@@ -290,7 +298,7 @@ fn states_of_other_versions_and_damaged_states_are_refused() {
         );
         let (code, _, err) = ugnis(&["info", s(&p)]);
         assert_eq!(code, 1);
-        assert!(err.contains("reads versions 2 to 3 only"), "{err}");
+        assert!(err.contains("reads versions 2 to 4 only"), "{err}");
     }
     // Truncated: the end marker is missing.
     let p = dir.join("cut.ugnis-state");

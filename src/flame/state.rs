@@ -106,6 +106,14 @@ pub struct RenderState {
     /// Each worker's orbits (empty after a merge): a resume with as many threads continues
     /// the same orbits, so that it gives the picture of one longer render.
     pub lanes: Vec<LaneState>,
+    /// Each worker's state of the flame's stateful variations (the orbit variations such as
+    /// gingerbread_man, see `Chaos::variation_state`), for a flame that has some; empty
+    /// otherwise and after a merge.
+    pub var_states: Vec<Vec<f64>>,
+    /// Samples of the render's range that are never drawn (a render in one part that finished
+    /// on a partial sub-batch and was then extended goes on with whole sub-batches after it):
+    /// the render's sub-batches cover the flame's samples plus these.
+    pub gap: u64,
 }
 
 impl RenderState {
@@ -122,9 +130,13 @@ impl RenderState {
         Ok((g.bw, g.bh))
     }
 
-    /// Sub-batches of the whole render at the flame's quality.
+    /// Sub-batches of the whole render at the flame's quality (with its gap).
     pub fn global_batches(&self) -> u64 {
-        self.flame.total_samples().max(1).div_ceil(SUB_BATCH)
+        self.flame
+            .total_samples()
+            .max(1)
+            .saturating_add(self.gap)
+            .div_ceil(SUB_BATCH)
     }
 
     /// Has every sub-batch of the parts held been done?
@@ -308,6 +320,9 @@ impl RenderState {
             samples_done: samples,
             bad_values: bad,
             lanes: Vec::new(),
+            var_states: Vec::new(),
+            // Only a render in one part has a gap, and its one state is the whole render.
+            gap: if states.len() == 1 { first.gap } else { 0 },
         };
         if out.parts.len() == out.part_count as usize {
             // Every sub-batch is done: from now on one render of one part.

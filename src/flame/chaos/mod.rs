@@ -250,6 +250,42 @@ impl Chaos {
             .any(stateful)
     }
 
+    /// The stateful variations of the compiled flame, in a fixed order (xforms, final xform,
+    /// further finals; in each the `pre_`, regular and `post_` forms).
+    fn stateful_vars(&self) -> impl Iterator<Item = &variations::Prepared> {
+        self.xforms
+            .iter()
+            .chain(&self.final_xform)
+            .chain(&self.more_finals)
+            .flat_map(|x| x.pre_vars.iter().chain(&x.vars).chain(&x.post_vars))
+            .filter(|v| v.def.has(variations::flag::STATEFUL))
+    }
+
+    /// The state the stateful variations carry from call to call (their orbits), every slot
+    /// of each in [`Chaos::stateful_vars`] order: what a saved render keeps so that a resumed
+    /// one continues those orbits. Empty when no variation is stateful.
+    pub fn variation_state(&self) -> Vec<f64> {
+        self.stateful_vars()
+            .flat_map(|v| (0..variations::VarState::SLOTS).map(|i| v.state.get(i)))
+            .collect()
+    }
+
+    /// Give the stateful variations the state [`Chaos::variation_state`] took (of a copy of
+    /// the same flame). Returns false, changing nothing, when `values` does not fit this
+    /// flame's stateful variations.
+    pub fn restore_variation_state(&self, values: &[f64]) -> bool {
+        let n = variations::VarState::SLOTS;
+        if values.len() != self.stateful_vars().count() * n {
+            return false;
+        }
+        for (v, vals) in self.stateful_vars().zip(values.chunks_exact(n)) {
+            for (i, &x) in vals.iter().enumerate() {
+                v.state.set(i, x);
+            }
+        }
+        true
+    }
+
     /// Compile `flame`; fails when it has no xforms, no positive weight, a weight or xaos
     /// value that is negative or not finite, or an xaos row that reaches no xform.
     pub fn new(flame: &Flame) -> Result<Self, ChaosError> {

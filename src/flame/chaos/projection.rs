@@ -1,7 +1,10 @@
 //! The 3-D camera of a flame: points turned by the camera's yaw and pitch, seen in
 //! perspective, and blurred by depth of field.
 
-use crate::flame::model::Flame;
+use crate::flame::model::{Flame, PaletteIndex};
+
+/// Pixels Fractorium's histogram reaches beyond each side of the image.
+const FRACTORIUM_GUTTER: f64 = 10.0;
 use crate::flame::rng::FastRng;
 use crate::flame::variations;
 
@@ -18,7 +21,8 @@ pub struct Projection {
     /// 0.1 · cam_dof.
     blur: f64,
     blur_curve: f64,
-    /// Half the image size in world units (the blur curve is relative to it).
+    /// Half the image size in world units, with Fractorium's gutter for its flames (the blur
+    /// curve is relative to it).
     half: [f64; 2],
     /// JWildfire's camera (for the flames it draws): z is not moved by the focal plane, the
     /// turn includes the bank (`cam_roll`), a point with 1 − p·z′ below ε is dropped, and depth
@@ -41,6 +45,15 @@ impl Projection {
         let (sp, cp) = c.pitch.sin_cos();
         let (sy, cy) = (-c.yaw).sin_cos();
         let ppu = flame.ppu();
+        // Fractorium measures the blur curve's distance against half its histogram, which is
+        // the image with a gutter of 10 pixels on each side (Fractorium 1.0.0.19,
+        // `Renderer::ComputeBounds` and `ComputeCamera`; `Ember::ProjectPitchYawDepthBlur`
+        // divides by `CarToRas::CachedCarHalfX`).
+        let gutter = if flame.palette_index == PaletteIndex::Fractorium {
+            FRACTORIUM_GUTTER
+        } else {
+            0.0
+        };
         Some(Projection {
             m: [
                 [cy, -sy, 0.0],
@@ -52,8 +65,8 @@ impl Projection {
             blur: 0.1 * c.dof,
             blur_curve: c.blur_curve,
             half: [
-                flame.width as f64 / 2.0 / ppu,
-                flame.height as f64 / 2.0 / ppu,
+                (flame.width as f64 / 2.0 + gutter) / ppu,
+                (flame.height as f64 / 2.0 + gutter) / ppu,
             ],
             jwildfire: false,
             dof_scale: 1.0,
@@ -217,6 +230,48 @@ mod tests {
             .sum::<f64>()
             / n as f64;
         assert!((mean - 0.1).abs() < 0.003, "{mean}");
+    }
+
+    /// The blur curve scales the blur by d²/(4·curve), d ten times the distance from the
+    /// origin relative to half the picture: for Fractorium's flames half its histogram, the
+    /// picture and a gutter of 10 pixels on each side.
+    #[test]
+    fn the_blur_curve_is_relative_to_half_the_histogram() {
+        use crate::flame::model::Camera3d;
+        let cam = Camera3d {
+            dof: 1.0,
+            blur_curve: 1.0,
+            ..Camera3d::default()
+        };
+        // 100×60 pixels at 10 per unit: half the picture is 5 × 3 units.
+        let mut f = Flame {
+            cam,
+            width: 100,
+            height: 60,
+            scale: 10.0,
+            ..Flame::default()
+        };
+        // The point (2.5, 0) at depth 1 is moved by 0.1·u·scale, u uniform in [0, 1).
+        let mean_move = |f: &Flame| {
+            let p = Projection::of(f).expect("a 3-D camera");
+            let mut rng = FastRng::new(9);
+            let n = 20_000;
+            (0..n)
+                .map(|_| {
+                    let (x, y) = p.project(2.5, 0.0, 1.0, &mut rng);
+                    (x - 2.5).hypot(y)
+                })
+                .sum::<f64>()
+                / n as f64
+        };
+        // flam3's rule: d = 10·2.5/5 = 5, scale 25/4; mean move 0.05·25/4.
+        let m = mean_move(&f);
+        assert!((m / (0.05 * 6.25) - 1.0).abs() < 0.02, "{m}");
+        // Fractorium's: half width (50 + 10)/10 = 6, d = 10·2.5/6, scale d²/4.
+        f.palette_index = PaletteIndex::Fractorium;
+        let d: f64 = 25.0 / 6.0;
+        let m = mean_move(&f);
+        assert!((m / (0.05 * d * d / 4.0) - 1.0).abs() < 0.02, "{m}");
     }
 
     #[test]

@@ -28,7 +28,7 @@ pub struct CompiledXform {
     pub direct_color: f64,
     /// Some variation sets the colour.
     pub sets_color: bool,
-    /// Plotted visibility o^(log2 10).
+    /// Weight of its plotted samples ([`plotted_opacity`]: o^(log2 10) in flam3).
     pub vis: f64,
     pub opacity: f64,
     /// A coordinate of larger magnitude (or NaN) is a bad value: [`BAD_LIMIT`] or
@@ -96,6 +96,19 @@ pub fn adjust_opacity(o: f64) -> f64 {
         0.0
     } else {
         o.powf(std::f64::consts::LOG2_10)
+    }
+}
+
+/// The weight a sample of an xform of opacity `o` is plotted with, by the rule of the program
+/// whose formulas the flame follows. flam3 plots it with [`adjust_opacity`]; Fractorium with
+/// the opacity itself, clamped to [0, 1] (Fractorium 1.0.0.19, `Xform::Apply` gives the point
+/// `m_Opacity` and `Renderer::Accumulate` scales the palette colour by it): an xform of
+/// opacity 0.4 draws 40 % of its points' weight there, 4.8 % in flam3.
+pub fn plotted_opacity(o: f64, dialect: Dialect) -> f64 {
+    match dialect {
+        Dialect::Fractorium if o > 0.0 => o.min(1.0),
+        Dialect::Fractorium => 0.0,
+        _ => adjust_opacity(o),
     }
 }
 impl CompiledXform {
@@ -196,7 +209,7 @@ impl CompiledXform {
             color_speed: x.color_speed,
             direct_color: x.direct_color,
             sets_color,
-            vis: adjust_opacity(opacity),
+            vis: plotted_opacity(opacity, rules.dialect),
             opacity,
             bad_limit: BAD_LIMIT,
             keep_bad: false,
@@ -357,5 +370,11 @@ mod tests {
         assert!((adjust_opacity(0.25) - 0.01).abs() < 1e-12);
         assert_eq!(adjust_opacity(1.0), 1.0);
         assert_eq!(adjust_opacity(0.0), 0.0);
+        // Fractorium plots the opacity itself.
+        assert_eq!(plotted_opacity(0.4, Dialect::Fractorium), 0.4);
+        assert_eq!(plotted_opacity(1.5, Dialect::Fractorium), 1.0);
+        assert_eq!(plotted_opacity(-0.2, Dialect::Fractorium), 0.0);
+        assert_eq!(plotted_opacity(f64::NAN, Dialect::Fractorium), 0.0);
+        assert!((plotted_opacity(0.5, Dialect::Flam3) - 0.1).abs() < 1e-12);
     }
 }

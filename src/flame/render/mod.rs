@@ -368,6 +368,14 @@ impl Renderer {
         let mut r = Self::with_plan(&flame, opts, &Plan { part, strip })?;
         fill(&mut r.hists[0]).map_err(RenderError::Saved)?;
         r.logs = None;
+        if part.count == 1 && state.gap > 0 {
+            // The render's range with the samples it skipped after a partial sub-batch: the
+            // sub-batches go on where the saved render's would have.
+            r.gap = state.gap;
+            r.total = r.total.saturating_add(state.gap);
+            r.part_total = part.samples(r.total) - r.gap.min(r.total);
+            r.batches_total = part.local_batches(r.total.div_ceil(SUB_BATCH));
+        }
         if part.count == 1 && state.is_finished() {
             // A finished render (perhaps extended before, with gaps after partial sub-batches)
             // goes on after its last sub-batch.
@@ -381,6 +389,12 @@ impl Renderer {
                 if let Some(restored) = Lanes::restore(s) {
                     *l = restored;
                 }
+            }
+        }
+        // The orbits the stateful variations of each worker's copy of the flame had reached.
+        if state.var_states.len() == r.thread_chaos.len() {
+            for (c, s) in r.thread_chaos.iter().zip(&state.var_states) {
+                c.restore_variation_state(s);
             }
         }
         r.extend(add_quality)?;

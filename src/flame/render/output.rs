@@ -170,6 +170,12 @@ impl Renderer {
             samples_done: self.samples_done,
             bad_values: self.badvals,
             lanes: self.lanes.iter().map(|l| l.state()).collect(),
+            var_states: self
+                .thread_chaos
+                .iter()
+                .map(|c| c.variation_state())
+                .collect(),
+            gap: self.gap,
         })
     }
 

@@ -237,9 +237,11 @@ impl VarDef {
 /// State carried between calls by the few stateful variations (shared by the threads of a
 /// render; relaxed atomics, as the state only decorrelates successive calls).
 #[derive(Debug, Default)]
-pub struct VarState([AtomicU64; 8]);
+pub struct VarState([AtomicU64; VarState::SLOTS]);
 
 impl VarState {
+    /// Number of slots.
+    pub const SLOTS: usize = 8;
     /// The value in slot `i` (0–7).
     pub fn get(&self, i: usize) -> f64 {
         f64::from_bits(self.0[i].load(Ordering::Relaxed))

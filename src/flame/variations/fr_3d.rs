@@ -80,7 +80,7 @@ pub(super) static DEFS: &[VarDef] = &[
         .prepare(cubic_lattice_3d_prepare),
     super::inlined!("depth", depth)
         .params(&[p("depth_power", 1.0)])
-        .flags(flag::USES_Z | flag::WRITES_Z),
+        .flags(flag::USES_Z | flag::WRITES_Z | flag::READS_AFFINE_POINT),
     super::inlined!("disc3d", disc3d)
         .params(&[p("disc3d_pi", PI)])
         .needs(need::SUMSQ | need::SQRT | need::ATAN_XY)
@@ -494,21 +494,35 @@ fn cubic_lattice_3d(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -
     [a + k[0], b + k[1], c + k[2]]
 }
 
-/// Adds to the point a copy scaled by |z|^power: a perspective-like depth push. (Fractorium
-/// reads the affine-transformed point for the first term; it equals the input unless a `pre_`
-/// variation moved it.)
+/// Adds to the point a copy scaled by |z|^power: a perspective-like depth push. The first term
+/// is the xform's affine-transformed point (after its `pre_` forms), the scaled copy the
+/// variation's input: the same point for the `pre_` and regular forms, the sum of the regular
+/// variations for `post_depth` (Fractorium 1.0.0.19 `DepthVariation` reads `m_TransX` and
+/// `In`, which differ in a post variation; [`flag::READS_AFFINE_POINT`] brings the affine point
+/// as `t`, the sum in `acc`). JWildfire's `PostDepthFunc` adds the result to the sum.
 #[inline(always)]
-fn depth(v: &Prepared, t: &VarIn, _acc: &mut Acc, _rng: &mut FastRng) -> V3 {
+fn depth(v: &Prepared, t: &VarIn, acc: &mut Acc, _rng: &mut FastRng) -> V3 {
     let [power] = v.params();
-    let mut k = t.z.abs();
+    let post = v.form == Form::Post;
+    let s = if post {
+        [acc.x, acc.y, acc.z]
+    } else {
+        [t.x, t.y, t.z]
+    };
+    let mut k = s[2].abs();
     if k != 0.0 && power != 1.0 {
         k = (k.ln() * power).exp();
     }
-    [
-        v.w * (t.x + t.x * k),
-        v.w * (t.y + t.y * k),
-        v.w * (t.z + t.z * k),
-    ]
+    let o = [
+        v.w * (t.x + s[0] * k),
+        v.w * (t.y + s[1] * k),
+        v.w * (t.z + s[2] * k),
+    ];
+    if post && v.dialect == Dialect::JWildfire {
+        [s[0] + o[0], s[1] + o[1], s[2] + o[2]]
+    } else {
+        o
+    }
 }
 
 /// disc with an adjustable "π" and a z from the radius and cos z.
@@ -914,4 +928,49 @@ fn taurus(v: &Prepared, t: &VarIn, _: &mut Acc, _: &mut FastRng) -> V3 {
         v.w * (sx * (ir + sy)),
         v.w * (sor * cy) + (one_minus_sor * t.y),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::flame::affine::Affine;
+
+    /// `post_depth` of weight 1, power 1, for a flame of `dialect`.
+    fn post_depth(dialect: Dialect) -> Prepared {
+        let (id, form) = parse_name("post_depth").expect("registered");
+        let rules = Rules {
+            dialect,
+            ..Rules::default()
+        };
+        Prepared::for_flame(id, form, 1.0, &[1.0], &[], Affine::default(), rules)
+    }
+
+    /// Fractorium's post_depth adds to the xform's affine point T the sum of its variations V
+    /// scaled by |V.z|: w·(T + V·|V.z|) replaces the point; JWildfire's adds that to V.
+    #[test]
+    fn post_depth_pushes_the_affine_point_by_the_sum() {
+        let mut rng = FastRng::new(1);
+        let affine = [1.0, 2.0, 3.0];
+        let sum = || Acc {
+            x: 0.5,
+            y: -1.0,
+            z: 2.0,
+            ..Acc::default()
+        };
+        let close = |a: &Acc, b: [f64; 3]| {
+            assert!(
+                (a.x - b[0]).abs() + (a.y - b[1]).abs() + (a.z - b[2]).abs() < 1e-12,
+                "{a:?} vs {b:?}"
+            )
+        };
+        let mut acc = sum();
+        post_depth(Dialect::Fractorium).apply_post_after(&affine, &mut acc, 0.5, &mut rng);
+        close(&acc, [2.0, 0.0, 7.0]);
+        let mut acc = sum();
+        post_depth(Dialect::Flam3).apply_post_after(&affine, &mut acc, 0.5, &mut rng);
+        close(&acc, [2.0, 0.0, 7.0]);
+        let mut acc = sum();
+        post_depth(Dialect::JWildfire).apply_post_after(&affine, &mut acc, 0.5, &mut rng);
+        close(&acc, [2.5, -1.0, 9.0]);
+    }
 }

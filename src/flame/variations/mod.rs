@@ -355,8 +355,9 @@ pub use jwf_dc_folds::{
     dc_fractcolor_xpar_of_seed, dc_fractcolor_ypar_of_seed, dc_warping_x0_of_seed,
 };
 pub use names::{
-    attr_name, by_name, from_flam3_index, is_foreign_variation_name, param_attr_name,
-    param_attr_name_in, param_of, parse_name, text_attr_name, text_of, text_problem,
+    apophysis_param_of, attr_name, by_name, from_flam3_index, is_foreign_variation_name,
+    param_attr_name, param_attr_name_in, param_of, parse_name, text_attr_name, text_of,
+    text_problem,
 };
 pub use palette_index::PaletteIndex;
 pub use params::{

@@ -69,3 +69,27 @@ fn apophysis_plugin_parameters_without_prefix() {
             .any(|(k, v)| k == "angle" && v == "130")
     );
 }
+
+/// Apophysis' octagon plugin writes its parameters as `octa_x`, `octa_y`, `octa_z`, which
+/// Fractorium reads as `octagon_x` … in the files it did not write (its table of bad parameter
+/// names); in Fractorium's own files they stay attributes ugnis does not interpret.
+#[test]
+fn apophysis_plugin_parameters_of_other_names() {
+    let xf = r#"<xform weight="1" octagon="0.3" octa_x="0.164" octa_y="0.04" octa_z="0" coefs="1 0 0 1 0 0"/>"#;
+    let f = first(&format!(
+        r#"<flame version="Apophysis 7x" size="64 48" scale="20">{xf}</flame>"#
+    ));
+    let x = &f.xforms[0];
+    assert_eq!(&x.vars[0].params[..3], &[0.164, 0.04, 0.0]);
+    assert!(x.extra_attrs.iter().all(|(k, _)| !k.starts_with("octa_")));
+    let f = first(&format!(
+        r#"<flame version="EMBER-WIN-1.0.0.19" size="64 48" scale="20">{xf}</flame>"#
+    ));
+    let x = &f.xforms[0];
+    assert_eq!(&x.vars[0].params[..3], &[0.0, 0.0, 0.0]);
+    assert!(
+        x.extra_attrs
+            .iter()
+            .any(|(k, v)| k == "octa_x" && v == "0.164")
+    );
+}

@@ -128,8 +128,10 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
 /// Apophysis plugins may name their parameters without the variation's prefix (pixel_flow's
 /// `angle`, `len`, `width`, `seed` for `pixel_flow_angle` …), and Apophysis writes them so;
 /// Fractorium reads such an attribute as the parameter `VAR_name` of a variation VAR of the
-/// xform (`XmlToEmber`, for files it did not write). The kept attributes that name such a
-/// parameter become it; a prefixed attribute of the same parameter wins.
+/// xform (`XmlToEmber`, for files it did not write). Some plugins spell a parameter otherwise
+/// (octagon's `octa_x` for `octagon_x`), which Fractorium's table of such names corrects
+/// ([`variations::apophysis_param_of`]). The kept attributes that name such a parameter of a
+/// variation of the xform become it; a prefixed attribute of the same parameter wins.
 fn unprefixed_params(cx: &mut Ctx, x: &mut Xform, st: &mut Pending) {
     let mut k = 0;
     while k < x.extra_attrs.len() {
@@ -137,7 +139,9 @@ fn unprefixed_params(cx: &mut Ctx, x: &mut Xform, st: &mut Pending) {
         let found = parse_number(raw.trim()).ok().and_then(|value| {
             x.vars.iter().find_map(|v| {
                 let full = format!("{}_{}", variations::info(v.id).name, name);
-                let (id, _, index) = variations::param_of(&full)?;
+                let (id, _, index) = variations::param_of(&full)
+                    .filter(|p| p.0 == v.id)
+                    .or_else(|| variations::apophysis_param_of(&name))?;
                 (id == v.id).then_some((id, v.form, index, value))
             })
         });

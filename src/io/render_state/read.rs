@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::chunk::decompress;
 use super::{
     FORMAT_VERSION, LANE_SET_BYTES, LANE_SET_BYTES_V2, MAGIC, MAX_HEADER, MAX_LANE_SETS,
-    OLDEST_READ_VERSION, err, io_err,
+    MAX_VAR_STATE, OLDEST_READ_VERSION, err, io_err,
 };
 use crate::flame::chaos::{LANES, LaneState};
 use crate::flame::histogram::{Bucket, Histogram};
@@ -118,7 +118,7 @@ impl StateReader {
         file.read_exact(&mut hbytes).map_err(e)?;
         let text = String::from_utf8(hbytes)
             .map_err(|_| err(&name, Pos::Byte(16), "the header is not UTF-8 text"))?;
-        let (state, bw, bh) = parse_header(&text, &name)?;
+        let (state, bw, bh) = parse_header(&text, &name, version)?;
         let n_lanes = read_u32(&mut file).map_err(e)?;
         if n_lanes > MAX_LANE_SETS {
             return Err(err(
@@ -137,6 +137,33 @@ impl StateReader {
             let mut b = vec![0u8; set_bytes];
             file.read_exact(&mut b).map_err(e)?;
             state.lanes.push(parse_lanes(&b));
+        }
+        if version >= 4 {
+            let n_sets = read_u32(&mut file).map_err(e)?;
+            if n_sets > MAX_LANE_SETS {
+                return Err(err(
+                    &name,
+                    Pos::File,
+                    format!("{n_sets} variation states (limit {MAX_LANE_SETS})"),
+                ));
+            }
+            for _ in 0..n_sets {
+                let n = read_u32(&mut file).map_err(e)?;
+                if n > MAX_VAR_STATE || n as u64 * 8 > len {
+                    return Err(err(
+                        &name,
+                        Pos::File,
+                        format!("a variation state of {n} values (limit {MAX_VAR_STATE})"),
+                    ));
+                }
+                let mut b = vec![0u8; 8 * n as usize];
+                file.read_exact(&mut b).map_err(e)?;
+                state.var_states.push(
+                    b.chunks_exact(8)
+                        .map(|c| f64::from_le_bytes(c.try_into().unwrap_or([0; 8])))
+                        .collect(),
+                );
+            }
         }
         // Index the chunks.
         let mut chunks = Vec::new();
@@ -400,7 +427,11 @@ fn parse_lanes(b: &[u8]) -> LaneState {
     }
 }
 
-fn parse_header(text: &str, file: &str) -> Result<(RenderState, usize, usize), Diagnostic> {
+fn parse_header(
+    text: &str,
+    file: &str,
+    version: u32,
+) -> Result<(RenderState, usize, usize), Diagnostic> {
     let lines: Vec<(usize, &str)> = text.lines().enumerate().map(|(i, l)| (i + 1, l)).collect();
     if lines.first().map(|l| l.1) != Some("ugnis-render-state") {
         return Err(err(
@@ -446,17 +477,46 @@ fn parse_header(text: &str, file: &str) -> Result<(RenderState, usize, usize), D
         file,
     )?;
     let bad_values = num(field(&lines, 6, "bad_values", file)?, "bad_values", file)?;
-    let grid = field(&lines, 7, "buckets", file)?;
-    let (gw, gh) = grid
-        .split_once('x')
-        .ok_or_else(|| err(file, Pos::File, "header line 8: expected 'buckets WxH'"))?;
+    // Version 4 on: the gap line follows.
+    let (gap, at) = if version >= 4 {
+        (num(field(&lines, 7, "gap", file)?, "gap", file)?, 8)
+    } else {
+        (0, 7)
+    };
+    // The skipped samples lie within the sub-batches done, of a render in one part.
+    let gap_limit = if part_count == 1 {
+        crate::flame::chaos::SUB_BATCH.saturating_mul(batches_done)
+    } else {
+        0
+    };
+    if gap > gap_limit {
+        return Err(err(
+            file,
+            Pos::File,
+            format!(
+                "header line 8: gap {gap} is more than the {gap_limit} samples of the sub-batches done"
+            ),
+        ));
+    }
+    let grid = field(&lines, at, "buckets", file)?;
+    let (gw, gh) = grid.split_once('x').ok_or_else(|| {
+        err(
+            file,
+            Pos::File,
+            format!("header line {}: expected 'buckets WxH'", at + 1),
+        )
+    })?;
     let (bw, bh): (usize, usize) = (num(gw, "buckets", file)?, num(gh, "buckets", file)?);
-    if lines.get(8).map(|l| l.1) != Some("flame") {
-        return Err(err(file, Pos::File, "header line 9: expected 'flame'"));
+    if lines.get(at + 1).map(|l| l.1) != Some("flame") {
+        return Err(err(
+            file,
+            Pos::File,
+            format!("header line {}: expected 'flame'", at + 2),
+        ));
     }
     let start = text
         .match_indices('\n')
-        .nth(8)
+        .nth(at + 1)
         .map_or(text.len(), |(i, _)| i + 1);
     let opts = crate::io::flam3_xml::ReadOptions {
         file: format!("{file} (header)"),
@@ -476,6 +536,8 @@ fn parse_header(text: &str, file: &str) -> Result<(RenderState, usize, usize), D
         samples_done,
         bad_values,
         lanes: Vec::new(),
+        var_states: Vec::new(),
+        gap,
     };
     let want = state.grid().map_err(|m| {
         err(

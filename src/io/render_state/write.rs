@@ -15,7 +15,7 @@ use crate::flame::state::RenderState;
 fn header_text(st: &RenderState, grid: (usize, usize)) -> String {
     let parts: Vec<String> = st.parts.iter().map(|p| p.to_string()).collect();
     format!(
-        "ugnis-render-state\nugnis {}\nseed {}\nparts {} of {}\nbatches_done {}\nsamples_done {}\nbad_values {}\nbuckets {}x{}\nflame\n{}\n",
+        "ugnis-render-state\nugnis {}\nseed {}\nparts {} of {}\nbatches_done {}\nsamples_done {}\nbad_values {}\ngap {}\nbuckets {}x{}\nflame\n{}\n",
         crate::VERSION,
         st.seed,
         parts.join(","),
@@ -23,6 +23,7 @@ fn header_text(st: &RenderState, grid: (usize, usize)) -> String {
         st.batches_done,
         st.samples_done,
         st.bad_values,
+        st.gap,
         grid.0,
         grid.1,
         crate::io::flam3_xml::flame_element(&st.flame)
@@ -72,6 +73,15 @@ impl<W: Write> StateWriter<W> {
             b.extend_from_slice(&l.steps.to_le_bytes());
             if b.len() != LANE_SET_BYTES {
                 return Err(std::io::Error::other("orbit state of the wrong size"));
+            }
+            out.write_all(&b)?;
+        }
+        out.write_all(&(st.var_states.len() as u32).to_le_bytes())?;
+        for v in &st.var_states {
+            let mut b = Vec::with_capacity(4 + 8 * v.len());
+            b.extend_from_slice(&(v.len() as u32).to_le_bytes());
+            for x in v {
+                b.extend_from_slice(&x.to_le_bytes());
             }
             out.write_all(&b)?;
         }
