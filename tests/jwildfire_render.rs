@@ -15,7 +15,9 @@
 //! xform moved the point), hidden points as JWildfire carries them (the hide flag stays
 //! with the point through xforms that do not touch it), and a file of JWildfire's first
 //! releases (2011: a bare version, flam3's density-estimator attributes, which JWildfire
-//! ignores, variations without their parameters, which take JWildfire's defaults).
+//! ignores, variations without their parameters, which take JWildfire's defaults), and
+//! JWildfire's solid rendering (a sphere drawn as a lit surface: nearest points, normals,
+//! two lights, two materials, ambient occlusion).
 //!
 //! Tolerance: JWildfire itself at quality 300 (another seed) against the reference, the number
 //! in the table; ugnis at quality 300 must reach it minus 2.5 dB. Drawn by flam3's rules these
@@ -40,6 +42,7 @@ const FIXTURES: &[(&str, f64)] = &[
     ("distance", 41.07),
     ("hidden", 45.44),
     ("early", 49.69),
+    ("solid", 53.38),
 ];
 
 fn fixture(name: &str) -> std::path::PathBuf {

@@ -107,8 +107,20 @@ pub fn estimate_memory_rows(
     let hist = bw.saturating_mul(bh).saturating_mul(bucket);
     let per_worker =
         std::mem::size_of::<Lanes>() as u64 + SUB_BATCH * std::mem::size_of::<Pending>() as u64;
-    let workers = (hist + per_worker).saturating_mul(threads);
-    let develop = hist.saturating_mul(2);
+    let mut workers = (hist + per_worker).saturating_mul(threads);
+    let mut develop = hist.saturating_mul(2);
+    if flame.renders_as_jwildfire() && flame.jwf.solid.enabled && rows.is_none() {
+        // JWildfire's solid rendering: each worker's nearest points, and the planes of their
+        // development.
+        use crate::flame::jwf_render::solid_draw::{SOLID_CELL_BYTES, SOLID_DEVELOP_BYTES};
+        let buckets = bw.saturating_mul(bh);
+        workers = workers.saturating_add(
+            buckets
+                .saturating_mul(SOLID_CELL_BYTES)
+                .saturating_mul(threads),
+        );
+        develop = develop.saturating_add(buckets.saturating_mul(SOLID_DEVELOP_BYTES));
+    }
     let px = flame.width as u64
         * match rows {
             Some((_, out_rows)) => out_rows,

@@ -44,6 +44,24 @@ impl Chaos {
         ln: &mut Lanes,
         mut plot: F,
     ) -> u64 {
+        self.run_lanes_world(n, rng, ln, |xs, ys, zs, cs, vs, rgb, _| {
+            plot(xs, ys, zs, cs, vs, rgb)
+        })
+    }
+
+    /// [`Chaos::run_lanes`], the plot also given the samples' x, y and z before the camera
+    /// when the flame is drawn solid ([`Chaos::solid`]; empty otherwise). The z of a solid
+    /// flame's samples is then their depth seen by the camera.
+    #[inline(always)]
+    pub(crate) fn run_lanes_world<
+        F: FnMut(&[f64], &[f64], &[f64], &[f64], &[f64], &[u32], [&[f64]; 3]),
+    >(
+        &self,
+        n: u64,
+        rng: &mut FastRng,
+        ln: &mut Lanes,
+        mut plot: F,
+    ) -> u64 {
         let nx = self.xforms.len();
         self.start_orbits(ln, rng);
         ln.counts.resize(4 * (nx + 1), 0);
@@ -68,7 +86,12 @@ impl Chaos {
                 plotted += LANES as u64;
                 let o = &ln.sets[ln.cur & 1];
                 let rgb: &[u32] = if self.rgb { &o.rgb } else { &[] };
-                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis, rgb);
+                let world: [&[f64]; 3] = if self.solid {
+                    [&o.x, &o.y, &o.z]
+                } else {
+                    [&[], &[], &[]]
+                };
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis, rgb, world);
                 continue;
             }
             let (nf, took, bad_values) = self.samples_of_step(ln, n - plotted, direct);
@@ -77,13 +100,24 @@ impl Chaos {
             if direct {
                 let o = &ln.sets[ln.cur & 1];
                 let rgb: &[u32] = if self.rgb { &o.rgb } else { &[] };
-                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis, rgb);
+                let world: [&[f64]; 3] = if self.solid {
+                    [&o.x, &o.y, &o.z]
+                } else {
+                    [&[], &[], &[]]
+                };
+                plot(&o.x, &o.y, &o.z, &o.c, &ln.vis, rgb, world);
                 continue;
             }
             let m = nf.min(LANES);
             self.finish_samples(ln, m, rng);
             let fin = &ln.fin;
             let rgb: &[u32] = if self.rgb { &fin.rgb[..m] } else { &[] };
+            let w = &ln.world;
+            let world: [&[f64]; 3] = if self.solid {
+                [&w.x[..m], &w.y[..m], &w.z[..m]]
+            } else {
+                [&[], &[], &[]]
+            };
             plot(
                 &fin.x[..m],
                 &fin.y[..m],
@@ -91,6 +125,7 @@ impl Chaos {
                 &fin.c[..m],
                 &ln.fin_vis[..m],
                 rgb,
+                world,
             );
         }
         bad
@@ -483,10 +518,22 @@ impl Chaos {
                 }
             }
         }
+        if self.solid {
+            let (fin, w) = (&ln.fin, &mut ln.world);
+            w.x[..m].copy_from_slice(&fin.x[..m]);
+            w.y[..m].copy_from_slice(&fin.y[..m]);
+            w.z[..m].copy_from_slice(&fin.z[..m]);
+        }
         if let Some(pr) = &self.projection {
             let fin = &mut ln.fin;
             for j in 0..m {
                 (fin.x[j], fin.y[j]) = pr.project(fin.x[j], fin.y[j], fin.z[j], rng);
+            }
+            if self.solid {
+                let w = &ln.world;
+                for j in 0..m {
+                    fin.z[j] = pr.depth(w.x[j], w.y[j], w.z[j]);
+                }
             }
         }
     }

@@ -84,6 +84,8 @@ pub struct Lanes {
     pub(super) fin_hide: [bool; LANES],
     pub(super) chosen: Vec<usize>,
     pub(super) tmp: Group,
+    /// For solid rendering: the samples in `fin` before the camera.
+    pub(super) world: Group,
 }
 
 /// Points as a structure of arrays, for the final xform.
@@ -207,6 +209,7 @@ impl Lanes {
             fin_hide: [false; LANES],
             chosen: Vec::with_capacity(LANES),
             tmp: Group::new(),
+            world: Group::new(),
         })
     }
 }

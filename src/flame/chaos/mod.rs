@@ -120,6 +120,9 @@ pub struct Chaos {
     /// Some variation gives points the palette position of a colour: the colour coordinates
     /// depend on the palette, so a palette change needs the chaos game run again.
     pub reads_palette: bool,
+    /// JWildfire's solid rendering: the samples also report where they were before the
+    /// camera ([`Chaos::run_lanes_world`]), and their z is the depth seen by the camera.
+    pub solid: bool,
 }
 
 /// JWildfire checks each orbit for NaN and infinity once every this many iterations
@@ -438,6 +441,7 @@ impl Chaos {
             jwf_bad_values,
             carry_hide: jwf_bad_values && hides,
             reads_palette,
+            solid: flame.renders_as_jwildfire() && flame.jwf.solid.enabled,
         })
     }
 

@@ -129,6 +129,14 @@ impl Projection {
         ((px + dr * c) / zr, (py + dr * s) / zr)
     }
 
+    /// The depth of a point seen by the camera (larger: nearer), before perspective.
+    #[inline(always)]
+    pub fn depth(&self, x: f64, y: f64, z: f64) -> f64 {
+        let m = &self.m;
+        let z = if self.jwildfire { z } else { z - self.zpos };
+        m[2][0] * x + m[2][1] * y + m[2][2] * z
+    }
+
     /// The plotted position of a point.
     #[inline(always)]
     pub fn project(&self, x: f64, y: f64, z: f64, rng: &mut FastRng) -> (f64, f64) {

@@ -66,7 +66,7 @@ impl JwfRaster {
     }
 
     /// The buckets a filter reads for pixel `p` along one axis: the first and the count.
-    fn window(&self, f: &JwfFilter, p: usize) -> (isize, usize) {
+    pub(super) fn window(&self, f: &JwfFilter, p: usize) -> (isize, usize) {
         if f.is_empty() {
             ((p * self.os + self.border) as isize, self.os)
         } else {
@@ -163,7 +163,7 @@ fn scale_buckets(flame: &Flame, hist: &Histogram, density: f64, os: usize) -> Ve
 }
 
 /// JWildfire's tone map of one pixel.
-struct ToneMap {
+pub(super) struct ToneMap {
     gamma: f64,
     threshold: f64,
     /// threshold^(gamma − 1).
@@ -176,7 +176,7 @@ struct ToneMap {
 }
 
 impl ToneMap {
-    fn new(flame: &Flame, transparent: bool) -> ToneMap {
+    pub(super) fn new(flame: &Flame, transparent: bool) -> ToneMap {
         let gamma = if flame.gamma == 0.0 {
             0.0
         } else {
@@ -249,8 +249,38 @@ impl ToneMap {
     }
 }
 
+impl ToneMap {
+    /// Colour (0..=255, unrounded) and alpha (0..=1) of a pixel of a solid flame: lit colour
+    /// `c` (0..=255 units) covering share `i` of the pixel, over background `bg`. As
+    /// JWildfire's `GammaCorrectionFilter` composes solid colours: the coverage to the power
+    /// 1 + 1/gamma is the opacity, and the colour is added to the background the rest of the
+    /// opacity lets through (no vibrancy, no gamma on the colour).
+    pub(super) fn solid_pixel(&self, c: [f64; 3], i: f64, bg: [f64; 3]) -> ([f64; 3], f64) {
+        if i.is_nan() || i <= 0.0 {
+            return self.pixel([0.0; 3], 0.0, bg);
+        }
+        let alpha = i.powf(1.0 + self.gamma);
+        let alpha_int = java_int(alpha * 255.0 * self.alpha_scale + 0.5).clamp(0.0, 255.0);
+        if self.transparent {
+            let a = alpha_int / 255.0;
+            if a <= 0.0 {
+                return ([0.0; 3], 0.0);
+            }
+            return (c.map(|v| (v / a).clamp(0.0, 255.0)), a);
+        }
+        let inverse = 255.0 - alpha_int;
+        let mut out =
+            [0, 1, 2].map(|k| java_int(c[k] + 0.5) + ((inverse * bg[k]) as i64 >> 8) as f64);
+        out = out.map(|v| v.clamp(0.0, 255.0));
+        if self.saturation != 0.0 {
+            out = saturate(out, self.saturation);
+        }
+        (out, 1.0)
+    }
+}
+
 /// Java's conversion of a double to an int (towards zero, NaN to 0), as a double.
-fn java_int(v: f64) -> f64 {
+pub(super) fn java_int(v: f64) -> f64 {
     if v.is_nan() {
         0.0
     } else {
@@ -328,7 +358,7 @@ fn hsl_to_rgb(h: f64, s: f64, l: f64) -> [f64; 3] {
 }
 
 /// The background of pixel (x, y) of a `w`×`h` picture, whole numbers 0..=255.
-fn background(
+pub(super) fn background(
     bg: &JwfBackground,
     single: [f64; 3],
     x: usize,
@@ -437,7 +467,6 @@ pub(crate) fn develop(
         s
     };
     let tm = ToneMap::new(flame, format.transparent);
-    let channels = if format.transparent { 4 } else { 3 };
     let rows: Vec<usize> = out_rows.collect();
     let pixels: Vec<Vec<([f64; 3], f64)>> = rows
         .par_iter()
@@ -461,7 +490,18 @@ pub(crate) fn develop(
     if stop.load(Ordering::Relaxed) {
         return None;
     }
-    let n = rows.len() as u32;
+    to_image(&pixels, w, rows.len(), format)
+}
+
+/// Rows of pixels (colour 0..=255 unrounded, alpha 0..=1) as an image of `w` columns.
+pub(super) fn to_image(
+    pixels: &[Vec<([f64; 3], f64)>],
+    w: usize,
+    n: usize,
+    format: OutputFormat,
+) -> Option<DynamicImage> {
+    let channels = if format.transparent { 4 } else { 3 };
+    let n = n as u32;
     let values = pixels.iter().flatten();
     Some(if format.bits16 {
         let buf: Vec<u16> = values

@@ -18,9 +18,12 @@ pub(crate) mod develop;
 pub mod kernel;
 pub(crate) mod own_colour;
 pub mod planes;
+pub mod solid;
+pub(crate) mod solid_draw;
 
 pub(crate) use develop::JwfRaster;
 pub use kernel::JwfKernel;
+pub use solid::{JwfLight, JwfLightDiff, JwfMaterial, JwfSolid};
 
 /// How JWildfire fills the background (`background_type`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -111,6 +114,8 @@ pub struct JwfLook {
     pub motion_blur_timestep: f64,
     /// How fast their colours fade with their distance in time (`motion_blur_decay`).
     pub motion_blur_decay: f64,
+    /// Solid rendering (`sld_render_*`).
+    pub solid: JwfSolid,
 }
 
 impl Default for JwfLook {
@@ -131,6 +136,7 @@ impl Default for JwfLook {
             motion_blur_length: 0,
             motion_blur_timestep: 0.05,
             motion_blur_decay: 0.03,
+            solid: JwfSolid::default(),
         }
     }
 }

@@ -23,13 +23,13 @@ const CACHE: usize = 4096;
 
 /// The palette colour nearest to a colour, with a small direct-mapped cache (a pattern
 /// repeats its colours).
-struct NearestKey {
+pub(super) struct NearestKey {
     keys: Vec<[i32; 3]>,
     cache: Vec<(u32, [u8; 3])>,
 }
 
 impl NearestKey {
-    fn new(pal: &PlotPalette) -> NearestKey {
+    pub(super) fn new(pal: &PlotPalette) -> NearestKey {
         let keys = pal
             .colors
             .iter()
@@ -42,7 +42,7 @@ impl NearestKey {
     }
 
     /// The palette colour nearest to the packed colour `p`.
-    fn find(&mut self, p: u32) -> [u8; 3] {
+    pub(super) fn find(&mut self, p: u32) -> [u8; 3] {
         let rgb = p & 0xff_ffff;
         let slot = ((rgb ^ (rgb >> 12)) as usize) & (CACHE - 1);
         if self.cache[slot].0 == rgb {

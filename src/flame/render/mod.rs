@@ -32,6 +32,7 @@ use crate::flame::framing;
 use crate::flame::geometry::Geometry;
 use crate::flame::histogram::{Histogram, PlotPalette};
 use crate::flame::ifs3d::Ifs3dSystem;
+use crate::flame::jwf_render::solid_draw::{SolidPlane, draws_solid, iterate_solid};
 use crate::flame::model::Flame;
 use crate::flame::motion_blur::MotionFrame;
 use crate::flame::plot::{Pending, accumulate, iterate_3d, iterate_into};
@@ -138,6 +139,8 @@ pub struct Renderer {
     /// Set for a motion-blurred frame or a flame of layers: the sub-frames or layers its
     /// sub-batches draw from.
     motion: Option<Arc<Sources>>,
+    /// Each worker's buckets of a flame JWildfire draws solid (all `None` otherwise).
+    solid: Vec<Option<SolidPlane>>,
 }
 
 impl Renderer {
@@ -224,6 +227,10 @@ impl Renderer {
             .map(|_| spare.histogram(geom.bw, geom.bh))
             .collect();
         let lanes = (0..threads).map(|_| Lanes::new()).collect();
+        let solid_on = draws_solid(&flame, &geom) && plan.strip.is_none() && ifs3d.is_none();
+        let solid = (0..threads)
+            .map(|_| solid_on.then(|| SolidPlane::new(geom.bw * geom.bh)))
+            .collect();
         let total_samples = flame.total_samples();
         let logs = (opts.keep_samples && total_samples <= MAX_KEPT_SAMPLES && plan.strip.is_none())
             .then(|| (0..threads).map(|_| spare.log()).collect());
@@ -266,6 +273,7 @@ impl Renderer {
             badvals: 0,
             cancelled: false,
             motion: None,
+            solid,
             flame,
         };
         if let Some(l) = layers {
@@ -547,6 +555,7 @@ impl Renderer {
             .zip(self.lanes.par_iter_mut())
             .zip(logs.par_iter_mut())
             .zip(self.layer_lanes.par_iter_mut())
+            .zip(self.solid.par_iter_mut())
             .zip(
                 self.thread_chaos
                     .par_iter()
@@ -558,67 +567,74 @@ impl Renderer {
             )
             .enumerate()
             .with_max_len(1)
-            .map(|(t, ((((hist, lanes), log), layer_lanes), own_chaos))| {
-                // This thread's copy, when the variations carry state.
-                let chaos = own_chaos.unwrap_or(chaos);
-                let mut done = 0u64;
-                let mut bad = 0u64;
-                // First batch index ≥ start that belongs to thread t.
-                let first = start + (t as u64 + threads - start % threads) % threads;
-                let mut j = first;
-                let mut buf = Vec::with_capacity(SUB_BATCH as usize);
-                // The source this thread drew its last sub-batch from (sub-frame or layer).
-                let mut tools: Option<SourceTools> = None;
-                if let Some(log) = log.as_deref_mut() {
-                    // The pass's samples, without the copies of a doubling vector.
-                    log.reserve(per_thread as usize);
-                }
-                while j < end {
-                    if cancel.load(Ordering::Relaxed) {
-                        return (done, bad, true);
+            .map(
+                |(t, (((((hist, lanes), log), layer_lanes), plane), own_chaos))| {
+                    // This thread's copy, when the variations carry state.
+                    let chaos = own_chaos.unwrap_or(chaos);
+                    let mut done = 0u64;
+                    let mut bad = 0u64;
+                    // First batch index ≥ start that belongs to thread t.
+                    let first = start + (t as u64 + threads - start % threads) % threads;
+                    let mut j = first;
+                    let mut buf = Vec::with_capacity(SUB_BATCH as usize);
+                    // The source this thread drew its last sub-batch from (sub-frame or layer).
+                    let mut tools: Option<SourceTools> = None;
+                    if let Some(log) = log.as_deref_mut() {
+                        // The pass's samples, without the copies of a doubling vector.
+                        log.reserve(per_thread as usize);
                     }
-                    // Each sub-batch has its own stream, named by its index in the
-                    // whole render (the same for every part and strip layout).
-                    let g = part.global(j);
-                    let mut n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
-                    let (mut chaos, mut geom, mut pal) = (chaos, geom, pal);
-                    let mut layer = None;
-                    if let Some(m) = motion {
-                        let (s, k) = m.batches[g as usize];
-                        n = k as u64;
-                        if tools.as_ref().is_none_or(|t| t.index != s) {
-                            let t = SourceTools::new(m, s, geom);
-                            if tools.as_ref().is_none_or(|o| o.n_xforms != t.n_xforms) {
-                                lanes.forget_last_xforms();
-                            }
-                            tools = Some(t);
+                    while j < end {
+                        if cancel.load(Ordering::Relaxed) {
+                            return (done, bad, true);
                         }
-                        let t = tools.as_ref().expect("just set");
-                        (chaos, geom, pal) = (&t.chaos, &t.geom, &t.palette);
-                        layer = Some(s as usize);
+                        // Each sub-batch has its own stream, named by its index in the
+                        // whole render (the same for every part and strip layout).
+                        let g = part.global(j);
+                        let mut n = SUB_BATCH.min(total.saturating_sub(g * SUB_BATCH));
+                        let (mut chaos, mut geom, mut pal) = (chaos, geom, pal);
+                        let mut layer = None;
+                        if let Some(m) = motion {
+                            let (s, k) = m.batches[g as usize];
+                            n = k as u64;
+                            if tools.as_ref().is_none_or(|t| t.index != s) {
+                                let t = SourceTools::new(m, s, geom);
+                                if tools.as_ref().is_none_or(|o| o.n_xforms != t.n_xforms) {
+                                    lanes.forget_last_xforms();
+                                }
+                                tools = Some(t);
+                            }
+                            let t = tools.as_ref().expect("just set");
+                            (chaos, geom, pal) = (&t.chaos, &t.geom, &t.palette);
+                            layer = Some(s as usize);
+                        }
+                        // A layer's own orbits, or the thread's.
+                        let orbits: &mut Lanes = match layer.and_then(|s| layer_lanes.get_mut(s)) {
+                            Some(l) => l,
+                            None => lanes,
+                        };
+                        let mut rng = FastRng::for_stream(seed, g);
+                        bad += match ifs3d {
+                            None if plane.is_some() => match plane.as_mut() {
+                                Some(p) => iterate_solid(chaos, geom, p, orbits, n, &mut rng),
+                                None => 0,
+                            },
+                            None => {
+                                let b = iterate_into(
+                                    chaos, geom, pal, hist, &mut buf, orbits, n, &mut rng,
+                                );
+                                if let Some(log) = log.as_deref_mut() {
+                                    log.extend_from_slice(&buf);
+                                }
+                                b
+                            }
+                            Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
+                        };
+                        done += n;
+                        j += threads;
                     }
-                    // A layer's own orbits, or the thread's.
-                    let orbits: &mut Lanes = match layer.and_then(|s| layer_lanes.get_mut(s)) {
-                        Some(l) => l,
-                        None => lanes,
-                    };
-                    let mut rng = FastRng::for_stream(seed, g);
-                    bad += match ifs3d {
-                        None => {
-                            let b =
-                                iterate_into(chaos, geom, pal, hist, &mut buf, orbits, n, &mut rng);
-                            if let Some(log) = log.as_deref_mut() {
-                                log.extend_from_slice(&buf);
-                            }
-                            b
-                        }
-                        Some(sys) => iterate_3d(sys, geom, pal, hist, n, &mut rng),
-                    };
-                    done += n;
-                    j += threads;
-                }
-                (done, bad, false)
-            })
+                    (done, bad, false)
+                },
+            )
             .collect();
         for (done, bad, cancelled) in results {
             self.samples_done += done;

@@ -27,6 +27,25 @@ impl Renderer {
         (self.samples_done.max(1) as f64) / px * weight
     }
 
+    /// The picture of a flame JWildfire draws solid, from every worker's buckets; `None` for
+    /// the other flames.
+    fn solid_image(&self) -> Option<DynamicImage> {
+        let mut planes = self.solid.iter().flatten();
+        let mut m = planes.next()?.clone();
+        for p in planes {
+            m.merge(p);
+        }
+        crate::flame::jwf_render::solid_draw::develop_solid(
+            &self.flame,
+            &self.geom,
+            self.geom.jwf.as_deref()?,
+            &m,
+            &self.palette,
+            self.format,
+            self.out_rows.clone(),
+        )
+    }
+
     fn merged(&self) -> Histogram {
         let mut m = self.hists[0].clone();
         for h in &self.hists[1..] {
@@ -44,6 +63,9 @@ impl Renderer {
     /// [`Renderer::preview`], or `None` as soon as `stop` is set (density estimation at low
     /// density takes tens of milliseconds; an editor drops a picture that an edit made stale).
     pub fn preview_until(&self, stop: &AtomicBool) -> Option<DynamicImage> {
+        if let Some(img) = self.solid_image() {
+            return Some(img);
+        }
         let m = self.merged();
         develop_rows_until(
             &self.flame,
@@ -93,6 +115,9 @@ impl Renderer {
     /// widest). Same exposure; noisier. The GUI shows it first after an edit and while
     /// dragging.
     pub fn preview_draft(&self) -> DynamicImage {
+        if let Some(img) = self.solid_image() {
+            return img;
+        }
         develop_draft(
             &self.flame,
             &self.geom,
@@ -156,7 +181,9 @@ impl Renderer {
     }
 
     fn state(&self) -> Option<RenderState> {
-        if self.cancelled || self.motion.as_ref().is_some_and(|m| !m.layers) {
+        // A solid flame's buckets are not part of a render state.
+        let solid = self.solid.iter().any(Option::is_some);
+        if self.cancelled || solid || self.motion.as_ref().is_some_and(|m| !m.layers) {
             return None;
         }
         let mut flame = self.flame.clone();
@@ -191,6 +218,9 @@ impl Renderer {
     /// Finish: merge the thread histograms in place (freeing them) and develop the image
     /// (the strip's rows for a render in strips).
     pub fn finish(mut self) -> DynamicImage {
+        if let Some(img) = self.solid_image() {
+            return img;
+        }
         let density = self.density();
         let first = self.take_merged();
         develop_rows(
@@ -205,6 +235,9 @@ impl Renderer {
 
     /// As [`Renderer::finish`], also returning the state to save (`None` after a cancel).
     pub fn finish_with_state(mut self) -> (DynamicImage, Option<(RenderState, Histogram)>) {
+        if let Some(img) = self.solid_image() {
+            return (img, None);
+        }
         let density = self.density();
         let st = self.state();
         let first = self.take_merged();

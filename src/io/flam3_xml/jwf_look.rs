@@ -21,11 +21,21 @@ const MAX_MOTION_BLUR: i64 = 1000;
 pub(super) struct Pending {
     look: JwfLook,
     names: Vec<String>,
+    /// The solid rendering attributes (name, value, offset), read when the writer is known.
+    solid: Vec<(String, String, usize)>,
 }
 
 /// Read `a` if it is one of JWildfire's picture settings (kept among the flame's attributes
 /// until the writer is known). False if it is none of them.
 pub(super) fn attr(cx: &mut Ctx, f: &mut Flame, st: &mut Pending, a: &Attr) -> R<bool> {
+    if super::jwf_solid::is_solid_attr(a.name) {
+        st.solid
+            .push((a.name.to_string(), a.value.to_string(), a.offset));
+        st.names.push(a.name.to_string());
+        f.extra_attrs
+            .push((a.name.to_string(), a.value.to_string()));
+        return Ok(true);
+    }
     let l = &mut st.look;
     let v = a.value.trim();
     let colour = |cx: &mut Ctx| -> R<[f64; 3]> { cx.fixed(a, "XML003", "numbers") };
@@ -105,6 +115,7 @@ fn positive(cx: &Ctx, a: &Attr) -> R<f64> {
 pub(super) fn settle(cx: &mut Ctx, f: &mut Flame, st: Pending) {
     if f.renders_as_jwildfire() {
         f.jwf = st.look;
+        f.jwf.solid = super::jwf_solid::read(cx, &st.solid);
         f.extra_attrs.retain(|(k, _)| !st.names.contains(k));
     } else {
         for n in &st.names {
@@ -153,6 +164,7 @@ pub(super) fn write(s: &mut String, f: &Flame) {
         n(l.motion_blur_timestep),
         n(l.motion_blur_decay),
     );
+    super::jwf_solid::write(s, &l.solid);
 }
 
 /// JWildfire's colour types, for a flame JWildfire wrote: an xform of `color_type="NONE"`

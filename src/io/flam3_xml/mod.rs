@@ -23,6 +23,7 @@ mod flame;
 mod jwf_curves;
 mod jwf_defaults;
 mod jwf_look;
+mod jwf_solid;
 mod layers;
 mod palette;
 mod read;

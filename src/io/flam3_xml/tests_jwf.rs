@@ -212,3 +212,42 @@ fn jwildfire_dc_fractcolor_pars_follow_the_seed() {
     let p = &f.xforms[0].vars[0].params;
     assert_eq!((p[2], p[3]), (0.730519863614471, 0.08825840967622589));
 }
+
+/// JWildfire's solid rendering settings are read (materials and lights by number, their
+/// counts in attributes that may come after them), written back under JWildfire's names and
+/// read again to the same settings; a flame without them keeps solid rendering off.
+#[test]
+fn jwildfire_solid_settings_round_trip() {
+    use crate::flame::jwf_render::JwfLightDiff;
+    let text = r#"<flame version="JWildfire V7.30" sld_render_material_diffuse1="0.1" sld_render_enabled="1" sld_render_ao_enabled="0" sld_render_ao_intensity="0.8" sld_render_ao_azimuth_samples="3" sld_render_shadow_type="OFF" sld_render_material_count="2" sld_render_material_ambient0="0.6" sld_render_material_phong_size0="12.0" sld_render_material_light_diif_func1="COSA_SQUARE" sld_render_ligtht_count="1" sld_render_light_altitude0="-20.5" sld_render_light_red0="0.8" sld_render_light_shadows0="0"><xform weight="1" linear="1" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let s = &f.jwf.solid;
+    assert!(s.enabled && !s.ao_enabled);
+    assert_eq!((s.ao_intensity, s.ao_azimuth_samples), (0.8, 3));
+    assert_eq!(s.ao_radius_samples, 6, "JWildfire's default");
+    assert_eq!(s.materials.len(), 2);
+    assert_eq!(
+        (s.materials[0].ambient, s.materials[0].phong_size),
+        (0.6, 12.0)
+    );
+    assert_eq!(s.materials[1].diffuse, 0.1);
+    assert_eq!(s.materials[1].light_diff, JwfLightDiff::CosaSquare);
+    assert_eq!(s.lights.len(), 1);
+    let l = &s.lights[0];
+    assert_eq!(
+        (l.altitude, l.color[0], l.cast_shadows),
+        (-20.5, 0.8, false)
+    );
+    assert!(f.extra_attrs.iter().all(|(k, _)| !k.starts_with("sld_")));
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f.clone()],
+    });
+    assert!(out.contains("sld_render_ligtht_count=\"1\""), "{out}");
+    assert_eq!(out.matches("sld_render_enabled").count(), 1, "{out}");
+    let back = read(&out, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(back.jwf.solid, f.jwf.solid);
+    let plain = r#"<flame version="JWildfire V7.30"><xform weight="1" linear="1" coefs="1 0 0 1 0 0"/></flame>"#;
+    let g = read(plain, &opts()).unwrap().value.flames.remove(0);
+    assert!(!g.jwf.solid.enabled);
+}
