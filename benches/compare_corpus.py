@@ -223,7 +223,10 @@ def main():
             src = os.path.join(tmp, "ruled" + ext)
             open(src, "wb").write(data)
         ug = os.path.join(tmp, "ug.png")
-        r = jw.ugnis(src, 0, ug, a.width, h, a.quality, a.threads)
+        # JWildfire's reference draws at oversampling 1 (see compare_jwildfire.py); flam3-render
+        # and emberrender keep the file's supersample, as ugnis does.
+        ss = 1 if program == "jwildfire" else None
+        r = jw.ugnis(src, 0, ug, a.width, h, a.quality, a.threads, supersample=ss)
         if r.returncode != 0:
             msg = (r.stderr.strip().splitlines() or ["?"])[-1][:60]
             refused.append((name, wr, f"ugnis: {msg}"))

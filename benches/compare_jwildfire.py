@@ -4,7 +4,8 @@
 For every JWildfire flame among the given files and folders (a `<flame>` whose `version` names
 JWildfire, or a `<jwf-flame>` root), renders it with JWildfire (../shared/tools/jwildfire/
 jwf-render.sh: JWildfire 9.00's FlameRenderer, fixed seed, the flame's own filter) and with
-`ugnis render`, at the same size and quality, pixels per unit scaling with the width, and prints
+`ugnis render`, at the same size and quality (oversampling 1 in both, as JWildfire's command-line
+renderer draws), pixels per unit scaling with the width, and prints
 the PSNR (RGB, 8 bit, after a 3x3 box blur, as benches/compare_flam3.py) per flame, the median,
 the share below 25 dB, the flames either program refused, and — apart — the flames for which
 ugnis warned of a variation it cannot render (their figures are listed but kept out of the
@@ -111,9 +112,11 @@ def cached_jwildfire(cache, path, index, w, h, quality, seed):
     return None, note
 
 
-def ugnis(path, index, out, w, h, quality, threads):
+def ugnis(path, index, out, w, h, quality, threads, supersample=None):
     cmd = [UGNIS, "render", path, "--index", str(index), "-o", out, "--size", f"{w}x{h}",
            "--quality", str(quality), "--threads", str(threads)]
+    if supersample is not None:
+        cmd += ["--supersample", str(supersample)]
     return subprocess.run(cmd, capture_output=True, text=True)
 
 
@@ -183,7 +186,10 @@ def main():
             print(f"{name:<64} refused by JWildfire: {note[:70]}", flush=True)
             continue
         ug = os.path.join(tmp, "ug.png")
-        r = ugnis(f, i, ug, w, h, a.quality, a.threads)
+        # JWildfire's command-line renderer (CliUtils.renderFlame, which jwf-render.sh follows)
+        # draws at spatial oversampling 1 whatever the file says; ugnis keeps the file's
+        # `oversample` (as JWildfire's editor renders it), so it is told the same here.
+        r = ugnis(f, i, ug, w, h, a.quality, a.threads, supersample=1)
         if r.returncode != 0:
             msg = (r.stderr.strip().splitlines() or ["?"])[-1][:70]
             refused.append((name, f"ugnis: {msg}"))
