@@ -767,3 +767,31 @@ fn slurm_and_kubernetes_recipes_run_locally() {
     let got = rgb(&image::open(out.join("poster.png")).unwrap());
     assert!(psnr(&got, &want) > 25.0, "{}", psnr(&got, &want));
 }
+
+#[test]
+fn a_solid_flame_keeps_no_state_and_is_not_cut_into_strips() {
+    // JWildfire's solid rendering keeps its depth buffers in memory only: a state or strips
+    // would give another picture, so both are refused before rendering, with the reason.
+    let dir = scratch("solid");
+    let fl =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/jwildfire_render/solid.flame");
+    let st = dir.join("solid.ugnis-state");
+    let png = dir.join("solid.png");
+    let base = ["--size", "40x30", "--quality", "2", "--threads", "1"];
+    let mut args = vec!["render", s(&fl), "-o", s(&png), "--save-state", s(&st)];
+    args.extend(base);
+    let (code, _, err) = ugnis(&args);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("solid") && err.contains("state"), "{err}");
+    assert!(!st.exists() && !png.exists());
+    let mut args = vec!["render", s(&fl), "-o", s(&png), "--strips", "2"];
+    args.extend(base);
+    let (code, _, err) = ugnis(&args);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("solid") && err.contains("strips"), "{err}");
+    // Whole, it renders.
+    let mut args = vec!["render", s(&fl), "-o", s(&png)];
+    args.extend(base);
+    ok(&args);
+    assert!(png.exists());
+}

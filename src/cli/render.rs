@@ -187,11 +187,22 @@ pub fn choose_strips(
     asked: Option<usize>,
     what: &str,
 ) -> Result<(usize, RenderOptions)> {
+    // Strips would draw a solid flame as a density flame: refused rather than drawn otherwise.
+    let solid_in_strips = |k: usize| -> Result<()> {
+        if k > 1 && flame.draws_solid() {
+            bail!(
+                "{what}: a flame JWildfire draws solid (sld_render_enabled) cannot be rendered in {k} strips; render it whole (a larger --memory-limit or a smaller size)"
+            );
+        }
+        Ok(())
+    };
     if let Some(k) = asked {
+        solid_in_strips(k)?;
         strips::plan(flame, k)?;
         return Ok((k, opts.clone()));
     }
     let fit = strips::fit(flame, opts)?;
+    solid_in_strips(fit.strips)?;
     if fit.strips > 1 {
         stderr!(
             "{what}: {}: rendering in {} strips (each iterates all the samples again)",
@@ -272,6 +283,11 @@ pub fn run(a: RenderArgs) -> Result<()> {
         if a.save_state.is_some() && flame.ifs3d.is_some() {
             bail!(
                 "a render state of a 3-D IFS cannot be saved (its maps have no flame XML form); render it in one go"
+            );
+        }
+        if a.save_state.is_some() && flame.draws_solid() {
+            bail!(
+                "a render state of a flame JWildfire draws solid (sld_render_enabled) cannot be saved (its depth buffers are kept in memory only); render it in one go"
             );
         }
         Source::Fresh(Box::new(flame), a.part.unwrap_or_default())

@@ -513,6 +513,12 @@ impl Flame {
         }
     }
 
+    /// Whether JWildfire's solid rendering (`sld_render_enabled`) draws this flame: its
+    /// depth buffers are kept in memory only, so it has no render state.
+    pub fn draws_solid(&self) -> bool {
+        self.renders_as_jwildfire() && self.jwf.solid.enabled
+    }
+
     /// Whether JWildfire's renderer draws the flame (its filters, tone map and plotting): for
     /// the flames JWildfire wrote, as the palette rule names the writer.
     pub fn renders_as_jwildfire(&self) -> bool {

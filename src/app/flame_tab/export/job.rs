@@ -439,9 +439,15 @@ fn write(r: &Renderer, s: &ExportSettings) -> Result<(), String> {
     io::save_flame_image(&s.path, &img, &flame, r.samples_done(), Some(rate))
         .map_err(|e| format!("cannot write {}: {e}", s.path.display()))?;
     if let Some(sp) = s.state_file() {
-        let (st, hist) = r
-            .snapshot()
-            .ok_or_else(|| "the render was cancelled; no state to save".to_string())?;
+        let (st, hist) = r.snapshot().ok_or_else(|| {
+            if r.flame().draws_solid() {
+                "the picture is saved, but a flame JWildfire draws solid keeps no render state \
+                 (its depth buffers are kept in memory only)"
+                    .to_string()
+            } else {
+                "the render was cancelled; no state to save".to_string()
+            }
+        })?;
         io::render_state::save(&sp, &st, &hist)
             .map_err(|e| format!("cannot write {}: {e}", sp.display()))?;
     }
