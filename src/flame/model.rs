@@ -24,7 +24,9 @@ pub struct Var {
     pub texts: Vec<String>,
     /// A regular variation JWildfire's priority (`NAME_fx_priority`) moved before or after the
     /// others (`form` says which): it adds its output to the point there instead of replacing
-    /// it, and is written back as the plain name with its priority.
+    /// it, and is written back as the plain name with its priority. With `form` regular: a
+    /// variation JWildfire runs after the others by default (`flatten`) that the file's
+    /// priority 0 keeps among the regular ones, in its place.
     pub moved: bool,
 }
 

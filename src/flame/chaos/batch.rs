@@ -92,7 +92,7 @@ fn batched_forms(forms: &[Prepared]) -> bool {
 // The steps of `apply_soa` take the group as slices of one length (at most `LANES`).
 impl CompiledXform {
     /// Apply to the points `x, y, z, c` (at most [`LANES`]; in place; `g.bad` flags set; a
-    /// bad point is replaced by a random point of [−1, 1]²). The pre-affine points and their
+    /// bad point is replaced by a random point of [−1, 1]², or kept under JWildfire's rule). The pre-affine points and their
     /// derived quantities are computed as arrays, then every regular variation runs over the
     /// whole group. With `rgb` (the points' own colours, [`variations::own_rgb`]) the own
     /// colours the variations set are written there, and the colour coordinate keeps its
@@ -424,8 +424,8 @@ impl CompiledXform {
     }
 
     /// Flag the bad points of a group and restart them at a random point of the plane (a NaN
-    /// or infinite z must not carry over), unless the xform keeps bad values
-    /// ([`CompiledXform::keep_bad`]).
+    /// or infinite z must not carry over); under JWildfire's rule ([`CompiledXform::keeps_bad`])
+    /// flag them only.
     #[inline(always)]
     fn mark_bad(
         &self,
@@ -436,13 +436,20 @@ impl CompiledXform {
         rng: &mut FastRng,
     ) {
         let n = bad.len().min(x.len()).min(y.len()).min(z.len());
+        if self.keeps_bad {
+            // JWildfire's rule: the point stays as it is (see `keeps_bad`).
+            for j in 0..n {
+                bad[j] = !(x[j].is_finite() & y[j].is_finite() & z[j].is_finite());
+            }
+            return;
+        }
         let mut any_bad = false;
         for j in 0..n {
             let b = !within(x[j], self.bad_limit) | !within(y[j], self.bad_limit);
             bad[j] = b;
             any_bad |= b;
         }
-        if any_bad && !self.keep_bad {
+        if any_bad {
             for j in 0..n {
                 if bad[j] {
                     x[j] = rng.f11();

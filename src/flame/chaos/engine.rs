@@ -6,7 +6,10 @@
 
 use super::lanes::{Lanes, Orbits, WAITING};
 use super::xform::within;
-use super::{AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, FIRST_FUSE, JWF_CHECK_STEPS, LANES};
+use super::{
+    AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, FIRST_FUSE, JWF_CHECK_STEPS, JWF_RESTART_FUSE,
+    LANES, Pt,
+};
 use crate::flame::rng::FastRng;
 
 /// Mask of a lane index: indices masked by it are provably in range.
@@ -166,18 +169,40 @@ impl Chaos {
     }
 
     /// JWildfire's check for bad values: every orbit whose point is bad starts again at a
-    /// random point, fused.
+    /// random point, fused as JWildfire fuses (see [`Chaos::jwf_restart`]).
     fn restart_waiting(&self, ln: &mut Lanes, rng: &mut FastRng) {
         let o = &mut ln.sets[ln.cur & 1];
         for l in 0..LANES {
             if o.consec[l] == WAITING {
-                let (p, last, hid) = self.fused_start(rng);
+                let (p, last, hid, bad) = self.jwf_restart(rng);
                 (o.x[l], o.y[l], o.z[l], o.c[l]) = (p.x, p.y, p.z, p.c);
-                (o.last[l], o.consec[l], o.step[l]) = (last as u16, 0, 0);
+                let consec = if bad { WAITING } else { 0 };
+                (o.last[l], o.consec[l], o.step[l]) = (last as u16, consec, 0);
                 o.rgb[l] = 0;
                 o.hid[l] = hid;
             }
         }
+    }
+
+    /// A restarted orbit of a flame JWildfire's renderer draws, as JWildfire 9.00 starts one
+    /// (`DefaultRenderIterationState.preFuseIter`): a random point, transformed by the first
+    /// xform, then by [`JWF_RESTART_FUSE`] xforms drawn in turn, bad values kept. Returns
+    /// the point, the xform applied last, whether the point is hidden and whether it is bad
+    /// (then it waits for the next check).
+    fn jwf_restart(&self, rng: &mut FastRng) -> (Pt, usize, bool, bool) {
+        let mut p = Self::start_point(rng);
+        let (mut i, mut hidden, mut bad) = (0usize, false, false);
+        for k in 0..=JWF_RESTART_FUSE {
+            if k > 0 {
+                i = self.choose(Some(i), rng);
+            }
+            let Some(x) = self.xforms.get(i) else { break };
+            let (q, b, here) = x.apply_keeping(p, rng);
+            p = q;
+            bad = b;
+            hidden = self.carry_hide && x.hidden_after(here, hidden);
+        }
+        (p, i, hidden, bad)
     }
 
     /// One step of an affine IFS past the fuse: every orbit steps in place by its drawn row
@@ -200,15 +225,19 @@ impl Chaos {
             let (x, y) = (src.x[l], src.y[l]);
             let (tx, ty) = (t.a * x + t.b * y + t.e, t.c * x + t.d * y + t.f);
             let (x, y) = (0.0 + t.w * tx, 0.0 + t.w * ty);
+            let z = 0.0 + t.w * src.z[l];
             dst.x[l] = x;
             dst.y[l] = y;
-            dst.z[l] = 0.0 + t.w * src.z[l];
+            dst.z[l] = z;
             dst.c[l] = t.sc + t.keep * src.c[l];
-            let b = !within(x, t.bad_limit) | !within(y, t.bad_limit);
+            let b = !within(x, t.bad_limit)
+                | !within(y, t.bad_limit)
+                | (self.jwf_bad_values & !z.is_finite());
             ln.bad[l] = b;
             any_bad |= b;
             ln.group[l] = i;
         }
+        // Under JWildfire's rule a bad point stays as it is (`CompiledXform::keeps_bad`).
         if any_bad && !self.jwf_bad_values {
             for l in 0..LANES {
                 if ln.bad[l] {
@@ -408,9 +437,9 @@ impl Chaos {
         for p in 0..LANES {
             ln.vis[p] = -1.0;
             if self.jwf_bad_values && ln.bad[p] {
-                // JWildfire's rule: the orbit keeps its bad point, its steps count and draw
-                // nothing, until an xform that ignores its input (`blur`, say) gives it a
-                // good point again or its next check restarts it.
+                // JWildfire's rule: a bad point's step counts and draws nothing; the orbit
+                // goes on from it (an xform that ignores its input brings it back) and the
+                // next check restarts it if it is still bad.
                 if dst.consec[p] != WAITING {
                     dst.consec[p] = WAITING;
                     bad += 1;

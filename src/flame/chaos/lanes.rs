@@ -24,8 +24,9 @@ pub(super) struct Orbits {
     pub(super) hid: [bool; LANES],
 }
 
-/// The consecutive bad values of an orbit whose point is bad under JWildfire's rule: it waits
-/// for a good point or its restart (its steps count as samples that draw nothing).
+/// The consecutive bad values of an orbit whose point is bad under JWildfire's rule: it waits for
+/// the next check, which restarts it unless an xform brings it back first (its steps count as
+/// samples that draw nothing).
 pub(super) const WAITING: u8 = u8::MAX;
 
 impl Orbits {

@@ -105,10 +105,11 @@ pub struct Chaos {
     /// Every xform is an affine map times `linear` (no post-affine), with no final xform,
     /// camera or xaos: orbits then need no grouping by xform (see [`AffineStep`]).
     affine: Option<Vec<AffineStep>>,
-    /// JWildfire's rule for bad values (a flame its renderer draws): only NaN and infinity are
-    /// bad; an orbit that meets one keeps counting samples that draw nothing until its next
-    /// check (every [`JWF_CHECK_STEPS`] steps) restarts it; a final xform's bad value is a
-    /// sample that draws nothing.
+    /// JWildfire's rule for bad values (a flame its renderer draws): only NaN and infinity
+    /// (in x, y or z) are bad, and a bad point is kept ([`CompiledXform::keeps_bad`]): the
+    /// orbit goes on from it, its samples count and draw nothing while its point is bad, and
+    /// the next check (every [`JWF_CHECK_STEPS`] steps) restarts it if it still is; a final
+    /// xform's bad value is a sample that draws nothing.
     jwf_bad_values: bool,
     /// JWildfire's rule for hidden points (a flame its renderer draws, some xform of which
     /// may hide points): the hide flag travels with the point, as JWildfire's
@@ -128,6 +129,13 @@ pub struct Chaos {
 /// JWildfire checks each orbit for NaN and infinity once every this many iterations
 /// (`DefaultRenderThread`); in between a broken orbit's iterations count but draw nothing.
 pub const JWF_CHECK_STEPS: u64 = 1000;
+
+/// The xforms drawn after the first when JWildfire restarts a bad orbit
+/// (`Constants.INITIAL_ITERATIONS` + 1: `DefaultRenderIterationState.preFuseIter` transforms
+/// the random start by the layer's first xform, then by 43 drawn ones). A restart takes place
+/// only where an orbit met a bad value, so its path towards the attractor is drawn as often
+/// as in JWildfire (the first orbits of a render are fused [`JWF_FUSE`] steps).
+pub const JWF_RESTART_FUSE: usize = 43;
 
 /// One linear-only xform as a table row, for stepping orbits in place: the chosen row of each
 /// orbit is read, no orbit moves. The arithmetic is the general path's, in its order.
@@ -371,11 +379,7 @@ impl Chaos {
                 .chain(&mut more_finals)
             {
                 x.bad_limit = BAD_LIMIT_WIDE;
-            }
-        }
-        if jwf_bad_values {
-            for x in &mut xforms {
-                x.keep_bad = true;
+                x.keeps_bad = jwf_bad_values;
             }
         }
         if flame.renders_as_jwildfire() {

@@ -34,10 +34,14 @@ pub struct CompiledXform {
     /// A coordinate of larger magnitude (or NaN) is a bad value: [`BAD_LIMIT`] or
     /// [`BAD_LIMIT_WIDE`].
     pub bad_limit: f64,
-    /// A bad value stays in the point (JWildfire's rule: its orbit draws nothing until a
-    /// later xform, one that ignores its input as `blur` does, gives a good point again, or
-    /// the next check restarts it) instead of being replaced by a random point.
-    pub keep_bad: bool,
+    /// JWildfire's rule for bad values (set for a flame its renderer draws): a point with a
+    /// NaN or infinite coordinate (z too) is bad, and the lane runner keeps it as it is
+    /// instead of starting again from a random point. The orbit goes on from it: NaN
+    /// propagates, but an xform whose variations ignore their input (`sineblur`,
+    /// `spirograph`, …) brings the orbit back, as in JWildfire 9.00, where
+    /// `DefaultRenderIterationState` transforms the point whatever it holds and only its
+    /// check every 1000 iterations (`validateState`) starts a bad orbit again.
+    pub keeps_bad: bool,
     /// The weight of `linear` when it is the xform's only variation (no `pre_`/`post_`
     /// forms): the lane runner then skips the general variation machinery.
     pub linear_only: Option<f64>,
@@ -130,11 +134,15 @@ impl CompiledXform {
             }
             let prepare = |form| {
                 let (w, p, t) = (v.weight, &v.params, &v.texts);
-                let prepared = Prepared::for_flame(v.id, form, w, p, t, x.coefs, rules);
-                if v.moved {
-                    prepared.moved_by_priority(rules)
+                if v.moved && form == Form::Regular {
+                    Prepared::for_flame(v.id, form, w, p, t, x.coefs, rules)
+                        .kept_among_regular(rules)
+                } else if v.moved {
+                    // The regular variation's formula, run in the phase `form` names.
+                    Prepared::for_flame(v.id, Form::Regular, w, p, t, x.coefs, rules)
+                        .moved_by_priority(form, rules)
                 } else {
-                    prepared
+                    Prepared::for_flame(v.id, form, w, p, t, x.coefs, rules)
                 }
             };
             let p = prepare(v.form);
@@ -212,7 +220,7 @@ impl CompiledXform {
             vis: plotted_opacity(opacity, rules.dialect),
             opacity,
             bad_limit: BAD_LIMIT,
-            keep_bad: false,
+            keeps_bad: false,
             pre_only_passes: rules.dialect != Dialect::Flam3,
         }
     }
@@ -236,6 +244,19 @@ impl CompiledXform {
     /// goes on from it, the sample is not drawn).
     #[inline(always)]
     pub fn apply_hiding(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
+        self.apply_with(p, false, rng)
+    }
+
+    /// [`CompiledXform::apply_hiding`] that, under JWildfire's rule ([`Self::keeps_bad`]),
+    /// returns a bad point as it is (still flagged bad).
+    #[inline(always)]
+    pub(super) fn apply_keeping(&self, p: Pt, rng: &mut FastRng) -> (Pt, bool, bool) {
+        self.apply_with(p, self.keeps_bad, rng)
+    }
+
+    /// The application to one point; `keep`: a bad point is returned as it is.
+    #[inline(always)]
+    fn apply_with(&self, p: Pt, keep: bool, rng: &mut FastRng) -> (Pt, bool, bool) {
         let blended = match self.cyclic {
             Some(sym) => cycle_colour(p.c, sym),
             None => self.color_speed * self.color + (1.0 - self.color_speed) * p.c,
@@ -286,6 +307,16 @@ impl CompiledXform {
             if nc.is_nan() {
                 nc = 0.0;
             }
+        }
+        if keep {
+            let bad = !(acc.x.is_finite() && acc.y.is_finite() && acc.z.is_finite());
+            let q = Pt {
+                x: acc.x,
+                y: acc.y,
+                z: acc.z,
+                c: nc,
+            };
+            return (q, bad, acc.hide);
         }
         if !(within(acc.x, self.bad_limit) && within(acc.y, self.bad_limit)) {
             let q = Pt {

@@ -83,14 +83,20 @@ fn extrude(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
 }
 
 /// Drops the z coordinate: as a regular variation it zeroes the xform's running z and adds
-/// nothing; as pre_/post_ it keeps x and y and sets z to 0.
+/// nothing; as pre_/post_ it keeps x and y and sets z to 0. A JWildfire flame's `flatten`
+/// moved before or after the others by its priority adds its output to the point
+/// ([`Assign::Sum`]), and still only clears z, as JWildfire 9.00's `FlattenFunc` does
+/// (`pVarTP.z = 0`).
 #[inline(always)]
 fn flatten(v: &Prepared, t: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 {
-    if v.form == Form::Regular {
-        acc.z = 0.0;
-        [0.0, 0.0, 0.0]
-    } else {
-        [t.x, t.y, 0.0]
+    match (v.form, v.assign) {
+        (Form::Regular, _) | (Form::Post, Assign::Sum) => {
+            // After the others the point is the running sum.
+            acc.z = 0.0;
+            [0.0, 0.0, 0.0]
+        }
+        (Form::Pre, Assign::Sum) => [0.0, 0.0, -t.z],
+        _ => [t.x, t.y, 0.0],
     }
 }
 

@@ -395,6 +395,11 @@ fn post_mirror_wf(v: &Prepared, t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> 
         ycolorshift,
         zcolorshift,
     ] = v.params();
+    // JWildfire 9.00 (`PostMirrorWFFunc`) mirrors nothing, and draws no random number, at a
+    // weight within its EPSILON of 0 (the variation still runs there: it sets the colour).
+    if v.w.abs() <= 1e-8 {
+        return [t.x, t.y, t.z];
+    }
     let (mut x, mut y, mut z) = (t.x, t.y, t.z);
     let mut c = acc.color;
     if xaxis > 0.0 && rng.f01() < 0.5 {

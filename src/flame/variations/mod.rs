@@ -366,7 +366,9 @@ pub use params::{
 pub use point::{Acc, VarIn, need, own_rgb};
 pub(crate) use point::{SoaAcc, SoaIn};
 pub use prepare::{eval_point, eval_prepared};
-pub use registry::{all, count, def_in, info, jwildfire_twin, param_defaults};
+pub use registry::{
+    all, count, def_in, info, jwildfire_runs_after, jwildfire_twin, param_defaults,
+};
 pub use shared::{BuildFn, SharedDef};
 
 // For the formulas' files, which import everything above with `use super::*`.

@@ -4,7 +4,7 @@
 
 use super::def::{Assign, Dialect, Form, Prepared, Rules, ZRule, flag};
 use super::point::{Acc, VarIn};
-use super::registry::{info, jwildfire_twin};
+use super::registry::{info, jwildfire_runs_after, jwildfire_twin};
 use super::{V3, VarId, shared};
 use crate::flame::affine::Affine;
 use crate::flame::rng::FastRng;
@@ -107,21 +107,44 @@ impl Prepared {
         v
     }
 
-    /// The variation as JWildfire runs a regular variation its priority moved before
-    /// (`NAME_fx_priority` −1) or after (1) the others (JWildfire 9.00's
-    /// `EnforcedPreVariationTransformationStep` and `…PostVariationTransformationStep`): the
-    /// formula is given a copy of the point and adds its output to the point, as it adds to
-    /// the sum among the regular ones, where a `pre_`/`post_` form replaces the point. The
-    /// output z follows the regular rule (0, or the weighted input z with "preserve Z").
-    pub fn moved_by_priority(mut self, rules: Rules) -> Self {
-        if self.form != Form::Regular && !self.def.has(flag::PRE_ONLY | flag::POST_ONLY) {
-            self.assign = Assign::Sum;
-            self.zrule = if rules.dialect == Dialect::JWildfire && rules.preserve_z {
+    /// A variation JWildfire runs after the others by default ([`jwildfire_runs_after`]:
+    /// `flatten`) that the flame's priority 0 puts among the regular ones: its own formula,
+    /// in its place among them (JWildfire 9.00 runs each variation in the phase its stored
+    /// priority names, in the xform's order).
+    pub fn kept_among_regular(mut self, rules: Rules) -> Self {
+        if rules.dialect == Dialect::JWildfire && jwildfire_runs_after(self.id) {
+            self.def = info(self.id);
+            self.form = Form::Regular;
+            self.assign = self.def.assign;
+            self.zrule = if rules.preserve_z {
                 ZRule::Weighted
             } else {
                 ZRule::Zero
             };
         }
+        self
+    }
+
+    /// The variation as JWildfire runs a regular variation its priority moved before
+    /// (`NAME_fx_priority` −1, `form` pre) or after (1, post) the others (JWildfire 9.00's
+    /// `EnforcedPreVariationTransformationStep` and `…PostVariationTransformationStep`):
+    /// `self`, prepared as the regular variation (its formula, not that of a `pre_`/`post_`
+    /// variation of the same name), is given a copy of the point and adds its output to the
+    /// point, as it adds to the sum among the regular ones, where a `pre_`/`post_` form
+    /// replaces the point. The output z follows the regular rule (0, or the weighted input z
+    /// with "preserve Z").
+    pub fn moved_by_priority(mut self, form: Form, rules: Rules) -> Self {
+        let own_phase = self.def.has(flag::PRE_ONLY | flag::POST_ONLY);
+        if form == Form::Regular || (own_phase && !jwildfire_runs_after(self.id)) {
+            return self;
+        }
+        self.form = form;
+        self.assign = Assign::Sum;
+        self.zrule = if rules.dialect == Dialect::JWildfire && rules.preserve_z {
+            ZRule::Weighted
+        } else {
+            ZRule::Zero
+        };
         self
     }
 }

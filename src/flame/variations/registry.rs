@@ -105,6 +105,14 @@ pub fn jwildfire_twin(id: VarId, form: Form) -> Option<&'static VarDef> {
     REGISTRY.twins.get(&(id, form)).copied()
 }
 
+/// Whether JWildfire runs variation `id`, written as a regular one, after the others unless
+/// the flame gives it another priority (its twin is post-only: `flatten`, whose
+/// `getPriority()` is +1 in JWildfire 9.00).
+pub fn jwildfire_runs_after(id: VarId) -> bool {
+    jwildfire_twin(id, Form::Regular)
+        .is_some_and(|d| d.has(flag::POST_ONLY) && !info(id).has(flag::POST_ONLY))
+}
+
 /// The registry entry whose formula and parameter names variation `id` used in `form` has in
 /// a flame of `dialect`: its JWildfire twin in a JWildfire flame, else its own.
 pub fn def_in(dialect: Dialect, id: VarId, form: Form) -> &'static VarDef {

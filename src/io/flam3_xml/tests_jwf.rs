@@ -251,3 +251,51 @@ fn jwildfire_solid_settings_round_trip() {
     let g = read(plain, &opts()).unwrap().value.flames.remove(0);
     assert!(!g.jwf.solid.enabled);
 }
+
+/// JWildfire 9.00's `flatten` only clears z (`FlattenFunc`: `pVarTP.z = 0`), before the other
+/// variations (priority -1) or after them (+1, its own). JWildfire itself maps (0.3, -0.7,
+/// 0.2) by these xforms (linear3D 0.5, preserve_z) to (0.15, -0.35, 0) both ways.
+#[test]
+fn jwildfire_flatten_moved_by_its_priority_only_clears_z() {
+    let text = r#"<flame version="JWildfire 9.00" preserve_z="1"><xform weight="1" linear3D="0.5" flatten="1" flatten_fx_priority="1" coefs="1 0 0 1 0 0"/><xform weight="1" linear3D="0.5" flatten="1" flatten_fx_priority="-1" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let ch = crate::flame::Chaos::new(&f).unwrap();
+    let mut rng = crate::flame::rng::FastRng::new(1);
+    for x in &ch.xforms {
+        let mut p = crate::flame::Chaos::start_point(&mut rng);
+        (p.x, p.y, p.z) = (0.3, -0.7, 0.2);
+        let (q, bad) = x.apply(p, &mut rng);
+        assert!(!bad);
+        assert_eq!((q.x, q.y, q.z), (0.15, -0.35, 0.0));
+    }
+}
+
+/// Given priority 0, `flatten` runs among the regular variations, in the xform's order
+/// (JWildfire 9.00 runs each variation in the phase its stored priority names): JWildfire
+/// itself maps (0.3, -0.7, 0.2) by `linear3D, flatten, zscale 0.5` to z = 0.1 and by
+/// `zscale 0.5, flatten, linear3D` to z = 0.2. Without a priority it runs after the others,
+/// its own +1; the priority is written back as read.
+#[test]
+fn jwildfire_flatten_of_priority_zero_runs_in_its_place() {
+    let text = r#"<flame version="JWildfire 9.00"><xform weight="1" linear3D="1" linear3D_fx_priority="0" flatten="1" flatten_fx_priority="0" zscale="0.5" zscale_fx_priority="0" coefs="1 0 0 1 0 0"/><xform weight="1" zscale="0.5" flatten="1" flatten_fx_priority="0" linear3D="1" coefs="1 0 0 1 0 0"/><xform weight="1" zscale="0.5" flatten="1" linear3D="1" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    let ch = crate::flame::Chaos::new(&f).unwrap();
+    let mut rng = crate::flame::rng::FastRng::new(1);
+    let z: Vec<f64> = ch
+        .xforms
+        .iter()
+        .map(|x| {
+            let mut p = crate::flame::Chaos::start_point(&mut rng);
+            (p.x, p.y, p.z) = (0.3, -0.7, 0.2);
+            let (q, _) = x.apply(p, &mut rng);
+            assert_eq!((q.x, q.y), (0.3, -0.7));
+            q.z
+        })
+        .collect();
+    assert_eq!(z, [0.1, 0.2, 0.0]);
+    let out = write(&FlameFile {
+        name: String::new(),
+        flames: vec![f],
+    });
+    assert_eq!(out.matches("flatten_fx_priority=\"0\"").count(), 2, "{out}");
+}

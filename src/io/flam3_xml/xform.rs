@@ -452,6 +452,20 @@ fn apply_priorities(attrs: &[Attr], x: &mut Xform, st: &mut Pending, jwildfire: 
                     .push((weight_name.to_string(), w.value.to_string()));
             }
         } else if let Some(name) = base.strip_suffix("_fx_priority")
+            && jwildfire
+            && let Ok(p) = parse_number(a.value.trim())
+            && p == 0.0
+            && let Some((id, Form::Regular)) = variations::parse_name(name)
+            && variations::jwildfire_runs_after(id)
+        {
+            // A variation JWildfire runs after the others by default, put among the regular
+            // ones by the file: it runs there (the priority is written back as read).
+            for (var, &k) in x.vars.iter_mut().zip(&st.instances) {
+                if var.id == id && var.form == Form::Regular && k == instance {
+                    var.moved = true;
+                }
+            }
+        } else if let Some(name) = base.strip_suffix("_fx_priority")
             && let Ok(p) = parse_number(a.value.trim())
             && p != 0.0
             && let Some((id, Form::Regular)) = variations::parse_name(name)

@@ -119,6 +119,13 @@ fn post_mirror_wf_matches_jwildfire() {
             ("post_mirror_wf", all, 1.0, 0.3, &PTS, PM_ALL),
         ],
     );
+    // At weight 0 JWildfire 9.00's `PostMirrorWFFunc` leaves the point and its colour alone
+    // and draws no random number: its whole body sits under `fabs(pAmount) > EPSILON`.
+    let mut rng = FastRng::new(SEED);
+    let got = run(&make("post_mirror_wf", all, 0.0), &PTS, 0.3, &mut rng);
+    let want: Vec<[f64; 4]> = PTS.iter().map(|p| [p[0], p[1], p[2], 0.3]).collect();
+    check("post_mirror_wf at weight 0", &got, &want);
+    assert_eq!(rng.u64(), FastRng::new(SEED).u64());
 }
 
 #[test]
