@@ -7,8 +7,7 @@
 use super::lanes::{Lanes, Orbits, WAITING};
 use super::xform::within;
 use super::{
-    AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, FIRST_FUSE, JWF_CHECK_STEPS, JWF_RESTART_FUSE,
-    LANES, Pt,
+    AffineStep, CHOOSE_GRAIN, Chaos, CompiledXform, JWF_CHECK_STEPS, JWF_RESTART_FUSE, LANES, Pt,
 };
 use crate::flame::rng::FastRng;
 
@@ -134,14 +133,14 @@ impl Chaos {
         bad
     }
 
-    /// Start every orbit at a random point on the first call, fused [`FIRST_FUSE`] steps
-    /// (or [`JWF_FUSE`](super::JWF_FUSE)); at every call restart one orbit, chosen at random,
+    /// Start every orbit at a random point on the first call, fused
+    /// [`Chaos::first_fuse`] steps; at every call restart one orbit, chosen at random,
     /// fused as flam3 fuses (not for a flame JWildfire's renderer draws, whose orbits live for
     /// the whole render).
     #[inline(always)]
     fn start_orbits(&self, ln: &mut Lanes, rng: &mut FastRng) {
         if !ln.started {
-            let fuse = -(self.fuse().max(FIRST_FUSE) as i32);
+            let fuse = -(self.first_fuse() as i32);
             let o = &mut ln.sets[ln.cur & 1];
             for l in 0..LANES {
                 let p = Self::start_point(rng);

@@ -381,3 +381,58 @@ fn jwildfire_orbits_come_back_from_bad_values() {
     let share = drawn as f64 / 400_000.0;
     assert!((share - 7.0 / 16.0).abs() < 0.01, "{share}");
 }
+
+/// A flame JWildfire draws with an orbit variation (hopalong takes the next point of
+/// Martin's map at every call, whatever its input): the first orbits are fused one step, so
+/// the picture starts near the start of the variation's orbit, as JWildfire's render thread
+/// draws it after a 44-step fuse. Fused 1000 steps, the 256 orbits skipped its first 256 000
+/// points (sidwellr's hopalong example lost its inner rings: 17.9 dB against JWildfire's
+/// picture).
+#[test]
+fn jwildfire_orbit_variations_draw_their_orbit_from_its_start() {
+    use crate::flame::PaletteIndex;
+    use crate::flame::model::Var;
+    let id = variations::by_name("hopalong").unwrap();
+    let (a, b, c, x0, y0) = (0.46, 0.8, -0.006, 0.97, 0.71);
+    let mut x = Xform::linear(Affine::IDENTITY, 1.0, 0.0);
+    let mut v = Var::new(id, 1.0);
+    v.params = vec![2.0, a, b, c, x0, y0];
+    x.vars = vec![v];
+    let f = Flame {
+        xforms: vec![x],
+        palette_index: PaletteIndex::JWildfire,
+        ..Flame::default()
+    };
+    let ch = Chaos::new(&f).unwrap();
+    // The map's orbit from the start, point k at index k − 1.
+    let mut orbit = std::collections::HashMap::new();
+    let (mut px, mut py) = (x0, y0);
+    for k in 1..=20_000u64 {
+        let s = if px > 0.0 {
+            1.0
+        } else if px < 0.0 {
+            -1.0
+        } else {
+            0.0
+        };
+        (px, py) = (py - s * (b * px - c).abs().sqrt(), a - px);
+        orbit.entry((px.to_bits(), py.to_bits())).or_insert(k);
+    }
+    let mut rng = FastRng::new(3);
+    let mut ln = Lanes::new();
+    let mut first = u64::MAX;
+    let mut drawn = 0u64;
+    ch.run_lanes(10_000, &mut rng, &mut ln, |xs, ys, _zs, _cs, vs, _rgb| {
+        for j in 0..xs.len() {
+            if vs[j] >= 0.0 {
+                let k = orbit.get(&(xs[j].to_bits(), ys[j].to_bits()));
+                assert!(k.is_some(), "({}, {}) is no early point", xs[j], ys[j]);
+                first = first.min(*k.unwrap());
+                drawn += 1;
+            }
+        }
+    });
+    assert_eq!(drawn, 10_000);
+    // One step of the 256 orbits is fused: the first point drawn is the orbit's 257th.
+    assert_eq!(first, LANES as u64 + 1);
+}

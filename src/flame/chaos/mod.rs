@@ -50,6 +50,16 @@ pub const JWF_FUSE: i64 = 1000;
 /// 14.28 in flam3, 14.60 / 14.87 / 15.83 / 17.09 in ugnis with 1 / 2 / 4 / 8 threads). They
 /// are fused long enough to reach the attractor instead (see [`JWF_FUSE`]).
 pub const FIRST_FUSE: i64 = 1000;
+/// Fuse of the first orbits of a flame JWildfire's renderer draws when some variation carries
+/// an orbit of its own from call to call (`flag::OWN_ORBIT`: hopalong, gumowski_mira,
+/// threeply, …). Such a variation takes the next point of its orbit at every call, whatever
+/// the input, so the picture is the stretch of that orbit the render draws: JWildfire's render
+/// thread fuses its one orbit for 44 steps (`DefaultRenderIterationState.preFuseIter`, see
+/// [`JWF_RESTART_FUSE`]) and draws from there, where [`LANES`] orbits fused [`JWF_FUSE`] steps
+/// would skip the first 256 000 points of the variation's orbit (hopalong's spiral of inner
+/// rings, the chaotic transient of gumowski_mira). One step per orbit skips [`LANES`], the
+/// nearest to JWildfire's 44.
+pub const JWF_STATEFUL_FUSE: i64 = 1;
 /// Samples per sub-batch.
 pub const SUB_BATCH: u64 = 10_000;
 /// Number of independent orbits iterated together by [`Chaos::run_lanes`].
@@ -518,6 +528,27 @@ impl Chaos {
     /// flam3's [`FUSE`].
     pub fn fuse(&self) -> i64 {
         if self.jwf_bad_values { JWF_FUSE } else { FUSE }
+    }
+
+    /// The fuse of the first orbits of a render: [`JWF_STATEFUL_FUSE`] for a flame
+    /// JWildfire's renderer draws with a variation carrying its own orbit
+    /// (`flag::OWN_ORBIT`), else at least [`FIRST_FUSE`]. Other stateful variations (a
+    /// stabiliser or crop keeping a few points, say) transform their input: their orbits
+    /// still need the long fuse.
+    pub(crate) fn first_fuse(&self) -> i64 {
+        let own_orbit = || {
+            self.xforms
+                .iter()
+                .chain(&self.final_xform)
+                .chain(&self.more_finals)
+                .flat_map(|x| x.pre_vars.iter().chain(&x.vars).chain(&x.post_vars))
+                .any(|v| v.def.has(variations::flag::OWN_ORBIT))
+        };
+        if self.jwf_bad_values && own_orbit() {
+            JWF_STATEFUL_FUSE
+        } else {
+            self.fuse().max(FIRST_FUSE)
+        }
     }
 
     /// A random start point iterated through the fuse, the xform applied last, and whether

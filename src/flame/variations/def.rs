@@ -59,6 +59,10 @@ pub mod flag {
     /// after the `pre_` forms), not the sum; it reads the sum from the running [`Acc`]
     /// (JWildfire's post variations see both, `pAffineTP` and `pVarTP`).
     pub const READS_AFFINE_POINT: u32 = 1 << 18;
+    /// Draws an orbit of its own (with [`STATEFUL`]): every call takes the next point of a
+    /// map's orbit kept in the state, whatever the input (hopalong, gumowski_mira, …). The
+    /// picture is the stretch of that orbit the render draws.
+    pub const OWN_ORBIT: u32 = 1 << 19;
 }
 
 /// Regular, `pre_` or `post_` use of a variation.

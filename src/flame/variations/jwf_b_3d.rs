@@ -101,7 +101,7 @@ pub(super) static DEFS: &[VarDef] = &[
             flag::JWILDFIRE | flag::USES_Z | flag::WRITES_Z | flag::SETS_COLOR | flag::READS_ACC,
         ),
     VarDef::new("gingerbread_man", gingerbread_man)
-        .flags(flag::JWILDFIRE | flag::STATEFUL | flag::WRITES_ACC)
+        .flags(flag::JWILDFIRE | flag::STATEFUL | flag::OWN_ORBIT | flag::WRITES_ACC)
         .prepare(gingerbread_prepare),
     VarDef::new("spherecrop", spherecrop)
         .params(&[

@@ -12,7 +12,7 @@
 use super::jwf_a_cuts::JavaRandom;
 use super::*;
 
-const ORBIT: u32 = flag::JWILDFIRE | flag::STATEFUL;
+const ORBIT: u32 = flag::JWILDFIRE | flag::STATEFUL | flag::OWN_ORBIT;
 
 pub(super) static DEFS: &[VarDef] = &[
     VarDef::new("macmillan", macmillan)

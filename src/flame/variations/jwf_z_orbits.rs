@@ -18,10 +18,10 @@ pub(super) static DEFS: &[VarDef] = &[
             p("gumowski_mira_a", 1e-6),
             p("gumowski_mira_b", 0.05),
         ])
-        .flags(flag::JWILDFIRE | flag::STATEFUL | flag::WRITES_ACC),
+        .flags(flag::JWILDFIRE | flag::STATEFUL | flag::OWN_ORBIT | flag::WRITES_ACC),
     VarDef::new("starfractal", starfractal)
         .params(&[p_int("starfractal_m", 3.0, 3.0, 10.0)])
-        .flags(flag::JWILDFIRE | flag::STATEFUL | flag::WRITES_ACC),
+        .flags(flag::JWILDFIRE | flag::STATEFUL | flag::OWN_ORBIT | flag::WRITES_ACC),
     VarDef::new("iconattractor_js", iconattractor_js)
         .params(&[
             p_int("iconattractor_js_presetId", 8.0, 0.0, INF),
@@ -99,6 +99,21 @@ fn gumowski_mira(v: &Prepared, _: &VarIn, acc: &mut Acc, _: &mut FastRng) -> V3 
         acc.y = 0.0;
     }
     [v.w * xn, v.w * yn, 0.0]
+}
+
+/// gumowski_mira's seed and `a` as JWildfire 9.00 renders a flame read from a file, from the
+/// file's seed (`gumowski_mira_random`). `GumowskiMiraFunc.setParameter` ignores the `a` it is
+/// given: it draws a = 10⁻⁶ + (10⁻⁶ − 10⁻⁸)·u with u the first `nextDouble()` of Java's
+/// generator seeded with the seed, which it then raises by one, and a copy of the variation
+/// is given the raised seed. JWildfire's file reader sets every parameter twice (the second
+/// time from the file again), its command-line renderer renders a copy of the flame read and
+/// each render thread a copy of that copy: the threads draw `a` with seed + 2 and hold
+/// seed + 3. Returns (seed + 3, a); the seed as Java's `(int)` of the value limited to
+/// [0, 10⁷].
+pub fn gumowski_mira_rendered(random: f64) -> (f64, f64) {
+    let seed = i64::from(super::util::trunc_i32(random.clamp(0.0, 10_000_000.0)));
+    let u = super::jwf_a_cuts::JavaRandom::new(seed + 2).next_f64();
+    ((seed + 3) as f64, 1e-6 + (1e-6 - 1e-8) * u)
 }
 
 /// Java's `java.util.Random` carried in a variation's state (slot 4 holds its 48 bits, slot 5

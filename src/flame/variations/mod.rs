@@ -354,6 +354,7 @@ pub use jwf_br_brush::{BRUSH_PREFIX, brush_name, brush_resources};
 pub use jwf_dc_folds::{
     dc_fractcolor_xpar_of_seed, dc_fractcolor_ypar_of_seed, dc_warping_x0_of_seed,
 };
+pub use jwf_z_orbits::gumowski_mira_rendered;
 pub use names::{
     apophysis_param_of, attr_name, by_name, from_flam3_index, is_foreign_variation_name,
     param_attr_name, param_attr_name_in, param_of, parse_name, text_attr_name, text_of,

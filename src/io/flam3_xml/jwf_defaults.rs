@@ -175,6 +175,27 @@ pub(super) fn apply_derived(x: &mut Xform, derived: &[Derived]) {
     }
 }
 
+/// The parameters JWildfire 9.00 draws anew whenever it reads or copies a flame, as its
+/// command-line renderer's threads hold them (variations whose `setParameter` draws from a
+/// generator it reseeds): gumowski_mira's seed and `a`
+/// ([`variations::gumowski_mira_rendered`]).
+pub(super) fn apply_rendered(x: &mut Xform) {
+    let Some((id, _)) = variations::parse_name("gumowski_mira") else {
+        return;
+    };
+    let (Some((_, _, seed)), Some((_, _, a))) = (
+        variations::param_of("gumowski_mira_random"),
+        variations::param_of("gumowski_mira_a"),
+    ) else {
+        return;
+    };
+    for v in x.vars.iter_mut().filter(|v| v.id == id) {
+        if seed < v.params.len() && a < v.params.len() {
+            (v.params[seed], v.params[a]) = variations::gumowski_mira_rendered(v.params[seed]);
+        }
+    }
+}
+
 /// Give each of `x`'s variations that JWildfire defaults differently its JWildfire default for
 /// every parameter the file did not set. `given(id, index, k)`: whether the file set parameter
 /// `index` of use `k` of variation `id`; `instances[i]`: which use `x.vars[i]` is.

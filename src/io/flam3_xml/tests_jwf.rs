@@ -299,3 +299,25 @@ fn jwildfire_flatten_of_priority_zero_runs_in_its_place() {
     });
     assert_eq!(out.matches("flatten_fx_priority=\"0\"").count(), 2, "{out}");
 }
+
+/// gumowski_mira's `a` as JWildfire 9.00's command-line renderer draws it: its threads' copies
+/// hold a = 10⁻⁶ + (10⁻⁶ − 10⁻⁸)·u, u drawn by Java's generator seeded with the file's seed + 2,
+/// whatever `a` the file gives, and seed + 3 (the numbers printed by an instrumented
+/// `GumowskiMiraFunc` in JWildfire's own render of these flames).
+#[test]
+fn jwildfire_gumowski_mira_draws_a_from_its_seed() {
+    let read_a = |seed: &str| {
+        let text = format!(
+            r#"<flame version="JWildfire V5.60"><xform weight="1" gumowski_mira="1" gumowski_mira_random="{seed}" gumowski_mira_step="0.001" gumowski_mira_a="1.7235694087962579E-6" gumowski_mira_b="0.05" coefs="1 0 0 1 0 0"/></flame>"#
+        );
+        let f = read(&text, &opts()).unwrap().value.flames.remove(0);
+        let p = &f.xforms[0].vars[0].params;
+        (p[0], p[2])
+    };
+    assert_eq!(read_a("2"), (5.0, 1.7233033656849586e-6));
+    assert_eq!(read_a("7"), (10.0, 1.7228599359125443e-6));
+    // Other programs' flames keep what they say.
+    let text = r#"<flame><xform weight="1" gumowski_mira="1" gumowski_mira_random="2" gumowski_mira_a="2e-6" coefs="1 0 0 1 0 0"/></flame>"#;
+    let f = read(text, &opts()).unwrap().value.flames.remove(0);
+    assert_eq!(f.xforms[0].vars[0].params[2], 2e-6);
+}

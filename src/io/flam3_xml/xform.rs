@@ -114,6 +114,9 @@ fn read_xform_as(cx: &mut Ctx, attrs: &[Attr], fin: bool, parity: f64, motion: b
     let has_texts = !st.texts.is_empty();
     attach_params(&mut x, st);
     super::jwf_defaults::apply_derived(&mut x, &derived);
+    if cx.jwildfire_flame && !motion {
+        super::jwf_defaults::apply_rendered(&mut x);
+    }
     if has_texts {
         let at = attrs.first().map_or(0, |a| a.offset);
         for v in &x.vars {
