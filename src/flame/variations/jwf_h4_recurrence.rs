@@ -220,7 +220,7 @@ mod tests {
 
     /// JWildfire 9.00's classes on the corpus flame's settings (func 0, a 0.5, b 10, k 5, N
     /// 700, dc 1, scale 0.124, angle 1, offset 0.272, tolerance 5), one orbit from colour 0.5
-    /// under colour symmetry 1: the plotted point (i, j) = (432, 397) is
+    /// under colour symmetry 1: the plotted point (i, j) = (422, 397) is
     /// (0.10285714285714287, 0.06714285714285717) with colour 0.2998472679394339, and the
     /// next (missed) pair repeats it with that colour.
     #[test]
@@ -264,8 +264,8 @@ mod tests {
             last = Some(o);
         }
         assert!(hits > 50 && repeats > 1000, "{hits} {repeats}");
-        // JWildfire's point and colour for the pair (432, 397).
-        let (x, y) = (432.0 / 700.0 - 0.5, 397.0 / 700.0 - 0.5);
+        // JWildfire's point and colour for the pair (422, 397).
+        let (x, y) = (422.0 / 700.0 - 0.5, 397.0 / 700.0 - 0.5);
         assert!((x - 0.10285714285714287f64).abs() < 1e-15);
         assert!((y - 0.06714285714285717f64).abs() < 1e-15);
         let c = (0.5 / 0.12399999999999997 * x * y + 0.272f64).abs() % 1.0;
