@@ -154,12 +154,21 @@ fn signal(id: i64, a: f64, b: f64, k: i64, n: f64, i: f64) -> f64 {
     }
 }
 
-/// State slots: the point plotted last (x, y).
+/// State slots: the point plotted last (x, y), the colour `dc` gave it and whether a point
+/// was plotted yet (1).
 const ST_X: usize = 0;
 const ST_Y: usize = 1;
+const ST_C: usize = 2;
+const ST_HIT: usize = 3;
 
 /// recurrenceplot: a random pair of samples, plotted when their values are close (coloured
 /// by x·y with `dc` 1, along the direction `angle` with `dc` 2); else the last plotted point.
+///
+/// JWildfire draws each render thread's one orbit through its own copy of the variation, so a
+/// repeated point comes with the colour the orbit had when the variation plotted it (exactly
+/// so when the xform keeps colours, colour symmetry 1). ugnis advances many orbits through one
+/// shared state, so a repeated point may be another orbit's: with `dc` on, it takes the colour
+/// stored with it; without, colour and position were never tied.
 fn recurrenceplot(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) -> V3 {
     let [id, a, b, k, density, dc, scale, angle, offset, tolerance] = v.params();
     let n = density.trunc();
@@ -181,9 +190,14 @@ fn recurrenceplot(v: &Prepared, _t: &VarIn, acc: &mut Acc, rng: &mut FastRng) ->
             let (s, c) = angle.sin_cos();
             acc.color = (0.5 * (ldcs * (c * acc.x + s * acc.y + offset) + 1.0)).abs() % 1.0;
         }
+        v.state.set(ST_C, acc.color);
+        v.state.set(ST_HIT, 1.0);
     } else {
         acc.x = v.state.get(ST_X);
         acc.y = v.state.get(ST_Y);
+        if (dc == 1.0 || dc == 2.0) && v.state.get(ST_HIT) == 1.0 {
+            acc.color = v.state.get(ST_C);
+        }
     }
     [0.0; 3]
 }
@@ -202,5 +216,59 @@ mod tests {
         }
         assert_eq!(legendre(11, 0.5), 0.0);
         assert_eq!(chebyshev(0, 0.5), 1.0);
+    }
+
+    /// JWildfire 9.00's classes on the corpus flame's settings (func 0, a 0.5, b 10, k 5, N
+    /// 700, dc 1, scale 0.124, angle 1, offset 0.272, tolerance 5), one orbit from colour 0.5
+    /// under colour symmetry 1: the plotted point (i, j) = (422, 397) is
+    /// (0.10285714285714287, 0.06714285714285717) with colour 0.2998472679394339, and the
+    /// next (missed) pair repeats it with that colour.
+    #[test]
+    fn a_repeated_point_keeps_the_colour_it_was_plotted_with() {
+        use crate::flame::variations::jwf_testing::{make, run};
+        let v = make(
+            "recurrenceplot",
+            &[
+                ("recurrenceplot_func_id", 0.0),
+                ("recurrenceplot_a", 0.5),
+                ("recurrenceplot_b", 10.0),
+                ("recurrenceplot_k", 5.0),
+                ("recurrenceplot_Density", 700.0),
+                ("recurrenceplot_dc", 1.0),
+                ("recurrenceplot_scale", 0.12399999999999997),
+                ("recurrenceplot_angle", 1.0),
+                ("recurrenceplot_offset", 0.272),
+                ("recurrenceplot_tolerance", 5.0),
+            ],
+            1.0,
+        );
+        let mut rng = FastRng::new(7);
+        let (mut hits, mut repeats) = (0, 0);
+        let mut last: Option<[f64; 4]> = None;
+        for _ in 0..4000 {
+            let o = run(&v, &[[0.1, 0.2, 0.0]], 0.5, &mut rng)[0];
+            if hits == 0 && o[..2] == [0.0, 0.0] {
+                // Nothing plotted yet: the origin, with the colour the point came with.
+                assert_eq!(o[3], 0.5);
+                continue;
+            }
+            let expect = (0.5 / 0.12399999999999997 * o[0] * o[1] + 0.272).abs() % 1.0;
+            if let Some(l) = last.filter(|l| l[0] == o[0] && l[1] == o[1]) {
+                // A repeat (or the same pair drawn again): the colour of the plotted point.
+                assert_eq!(o[3], l[3]);
+                repeats += 1;
+            } else {
+                assert!((o[3] - expect).abs() < 1e-12, "{o:?}");
+                hits += 1;
+            }
+            last = Some(o);
+        }
+        assert!(hits > 50 && repeats > 1000, "{hits} {repeats}");
+        // JWildfire's point and colour for the pair (422, 397).
+        let (x, y) = (422.0 / 700.0 - 0.5, 397.0 / 700.0 - 0.5);
+        assert!((x - 0.10285714285714287f64).abs() < 1e-15);
+        assert!((y - 0.06714285714285717f64).abs() < 1e-15);
+        let c = (0.5 / 0.12399999999999997 * x * y + 0.272f64).abs() % 1.0;
+        assert!((c - 0.2998472679394339).abs() < 1e-15);
     }
 }

@@ -20,6 +20,7 @@ mod fractorium;
 mod h9c_glynn;
 mod origin;
 mod phases;
+mod pv_guards;
 mod quaternions;
 mod renamed;
 mod stats_crops;
@@ -192,6 +193,13 @@ pub(super) const FORMULAS: &[(&str, EvalFn, u32, u32)] = &[
         0,
         flag::READS_AFFINE_POINT | flag::READS_ACC,
     ),
+    ("csc", pv_guards::csc, flag::WRITES_Z, 0),
+    ("csch", pv_guards::csch, flag::WRITES_Z, 0),
+    ("sec", pv_guards::sec, flag::WRITES_Z, 0),
+    ("sech", pv_guards::sech, flag::WRITES_Z, 0),
+    ("tan", pv_guards::tan, flag::WRITES_Z, 0),
+    ("tanh", pv_guards::tanh, flag::WRITES_Z, 0),
+    ("coth", pv_guards::coth, flag::WRITES_Z, 0),
 ];
 
 /// JWildfire's crop replaces the sum so far and hides or shows the point.
