@@ -5,14 +5,15 @@ mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::atomic::AtomicBool;
 
 use ugnis::flame::Flame;
 use ugnis::flame::Histogram;
-use ugnis::flame::render::{Plan, RenderOptions, Renderer, develop, geometry_of};
+use ugnis::flame::render::{Plan, Renderer, develop, geometry_of};
 use ugnis::flame::strips;
 use ugnis::flame::{Part, RenderState};
 use ugnis::io::render_state::{self, StateReader};
+
+use common::{opts, run};
 
 fn ugnis(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_ugnis"))
@@ -53,18 +54,6 @@ fn flame(w: u32, h: u32, quality: f64) -> Flame {
     f.resize_keep_framing(w, h);
     f.quality = quality;
     f
-}
-
-fn opts(seed: u64, threads: usize) -> RenderOptions {
-    RenderOptions {
-        seed,
-        threads,
-        ..RenderOptions::default()
-    }
-}
-
-fn run(r: &mut Renderer) {
-    assert!(r.run_all(3, &AtomicBool::new(false), |_| {}));
 }
 
 fn rgb(img: &image::DynamicImage) -> Vec<i32> {
@@ -773,8 +762,7 @@ fn a_solid_flame_keeps_no_state_and_is_not_cut_into_strips() {
     // JWildfire's solid rendering keeps its depth buffers in memory only: a state or strips
     // would give another picture, so both are refused before rendering, with the reason.
     let dir = scratch("solid");
-    let fl =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/jwildfire_render/solid.flame");
+    let fl = common::fixture("jwildfire_render/solid.flame");
     let st = dir.join("solid.ugnis-state");
     let png = dir.join("solid.png");
     let base = ["--size", "40x30", "--quality", "2", "--threads", "1"];

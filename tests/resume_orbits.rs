@@ -7,22 +7,12 @@ mod common;
 
 use std::sync::atomic::AtomicBool;
 
-use ugnis::flame::render::{RenderOptions, Renderer};
+use ugnis::flame::render::Renderer;
 use ugnis::flame::{Flame, Histogram, RenderState};
 use ugnis::gradient::Gradient;
 use ugnis::io::render_state::{self, StateReader};
 
-fn opts(seed: u64, threads: usize) -> RenderOptions {
-    RenderOptions {
-        seed,
-        threads,
-        ..RenderOptions::default()
-    }
-}
-
-fn run(r: &mut Renderer) {
-    assert!(r.run_all(3, &AtomicBool::new(false), |_| {}));
-}
+use common::{opts, run};
 
 /// The histogram's bits. With an 8-bit palette every sum is a whole number (exact in any
 /// order of the adds), so a resumed render's histogram equals the uninterrupted one's.

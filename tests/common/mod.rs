@@ -81,3 +81,17 @@ pub fn temp_dir(tag: &str) -> PathBuf {
     std::fs::create_dir_all(&d).unwrap();
     d
 }
+
+/// Render options with this seed and thread count, the rest at their defaults.
+pub fn opts(seed: u64, threads: usize) -> ugnis::flame::render::RenderOptions {
+    ugnis::flame::render::RenderOptions {
+        seed,
+        threads,
+        ..Default::default()
+    }
+}
+
+/// Run a render to its end (never cancelled).
+pub fn run(r: &mut ugnis::flame::render::Renderer) {
+    assert!(r.run_all(3, &std::sync::atomic::AtomicBool::new(false), |_| {}));
+}
